@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages shadelab needs, skipping those already present (design.md §6).
+# Usage: scripts/install-deps.sh [--with-embree]   (needs root or sudo when something is missing)
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config libgtest-dev        # build and test
+  libglfw3-dev                                          # window
+  libglm-dev                                            # math
+  libegl-dev libopengl-dev libgl-dev libosmesa6-dev     # OpenGL headers and loaders
+  libegl-mesa0 libgl1-mesa-dri                          # Mesa drivers (llvmpipe) at run time
+  libimgui-dev                                          # UI
+  libtinygltf-dev libstb-dev                            # glTF and images
+  zlib1g-dev                                            # PNG compression
+  nlohmann-json3-dev                                    # JSON
+  xvfb xauth assimp-testmodels                          # test tools and real glTF test data
+)
+[[ "${1:-}" == "--with-embree" ]] && packages+=(libembree-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-deps: all ${#packages[@]} packages present" >&2
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+sudo=""
+[[ $(id -u) -eq 0 ]] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done" >&2

@@ -1,0 +1,14 @@
+// Per-frame uniform block shared by every raster pass. Mirrored by src/raster/frame_block.h (std140).
+layout(std140) uniform Frame {
+    mat4 u_viewProj;
+    vec4 u_eye;                         // xyz: camera position
+    vec4 u_forward;                     // xyz: camera basis, unit
+    vec4 u_right;
+    vec4 u_up;
+    vec4 u_viewport;                    // width, height (pixels), tan(fovY/2), unused
+    vec4 u_ambient;                     // xyz: Ia
+    ivec4 u_flags;                      // model, term bits (1 ambient, 2 diffuse, 4 specular), light count, 0
+    vec4 u_lightPos[SL_MAX_LIGHTS];     // xyz: position (w = 1) or direction of travel (w = 0)
+    vec4 u_lightColor[SL_MAX_LIGHTS];   // xyz: Il
+    vec4 u_lightAtten[SL_MAX_LIGHTS];   // xyz: kc, kl, kq
+};

@@ -1,0 +1,136 @@
+// The lecture's lighting equations (design.md §1), written once in the subset of GLSL that is also C++
+// with GLM. shaders/*.frag include this file; src/shading/lighting.h compiles the same text as C++.
+// Rules for this file: float literals carry an f suffix, no swizzles, no out-parameters, SL_FN on functions.
+
+const int SL_MODEL_PHONG = 0;
+const int SL_MODEL_BLINN_PHONG = 1;
+
+// x^s with x^0 = 1 for every x (design.md §1): GLSL leaves pow(0, 0) undefined, so s = 0 never reaches pow.
+SL_FN float shininessPow(float x, float s) {
+    if (s <= 0.0f) return 1.0f;
+    if (x <= 0.0f) return 0.0f;
+    return pow(x, s);
+}
+
+// Phong 1975: mirror of L about N, R = 2N(N·L) − L.
+SL_FN vec3 reflectLight(vec3 N, vec3 L) {
+    return 2.0f * dot(N, L) * N - L;
+}
+
+// Phong 1975 specular factor max(R·V, 0)^s, zero on the unlit side (N·L <= 0).
+SL_FN float specularPhong(vec3 N, vec3 L, vec3 V, float s) {
+    if (dot(N, L) <= 0.0f) return 0.0f;
+    vec3 R = reflectLight(N, L);
+    return shininessPow(max(dot(R, V), 0.0f), s);
+}
+
+// Blinn 1977, half-way vector: max(N·H, 0)^s with H = normalize(L + V), zero on the unlit side.
+SL_FN float specularBlinnPhong(vec3 N, vec3 L, vec3 V, float s) {
+    if (dot(N, L) <= 0.0f) return 0.0f;
+    vec3 H = normalize(L + V);
+    return shininessPow(max(dot(N, H), 0.0f), s);
+}
+
+// One light's contribution Il ⊙ (md·max(N·L,0) + ms·spec), before visibility. N, L, V need not be unit:
+// both renderers hand in raw vectors and this normalises them, so the order of operations is shared.
+SL_FN vec3 shadeLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s, int model,
+                      bool diffuseOn, bool specularOn) {
+    N = normalize(N);
+    L = normalize(L);
+    V = normalize(V);
+    float NoL = dot(N, L);
+    vec3 I = vec3(0.0f);
+    if (diffuseOn) I = I + md * max(NoL, 0.0f);
+    if (specularOn) {
+        float spec = model == SL_MODEL_PHONG ? specularPhong(N, L, V, s) : specularBlinnPhong(N, L, V, s);
+        I = I + ms * spec;
+    }
+    return Il * I;
+}
+
+// Ambient term Ia ⊙ ma.
+SL_FN vec3 shadeAmbient(vec3 Ia, vec3 ma, bool ambientOn) {
+    return ambientOn ? Ia * ma : vec3(0.0f);
+}
+
+// Optional distance attenuation 1 / (kc + kl·d + kq·d²); (1, 0, 0) is none.
+SL_FN float distanceAttenuation(vec3 k, float d) {
+    return 1.0f / max(k.x + k.y * d + k.z * d * d, 1e-8f);
+}
+
+// Vector from P toward a light: point lights sit at posOrDir, directional lights travel along posOrDir.
+SL_FN vec3 lightVector(vec3 posOrDir, bool isPoint, vec3 P) {
+    return isPoint ? posOrDir - P : -posOrDir;
+}
+
+// Intensity arriving at the point: Il, attenuated by distance for point lights (L = lightVector()).
+SL_FN vec3 lightIntensityAt(vec3 Il, bool isPoint, vec3 attenuation, vec3 L) {
+    return isPoint ? Il * distanceAttenuation(attenuation, length(L)) : Il;
+}
+
+// Two-sided lighting: N flipped to face the viewer.
+SL_FN vec3 faceForward(vec3 N, vec3 V) {
+    return dot(N, V) < 0.0f ? -N : N;
+}
+
+// Primary ray direction through pixel-space point (px, py), with py measured from the top of the image
+// and pixel centres at +0.5 (design.md §1). forward/right/up are the camera's orthonormal basis.
+SL_FN vec3 cameraRayDirection(vec3 forward, vec3 right, vec3 up, float tanHalfFovY, float width,
+                              float height, float px, float py) {
+    float aspect = width / height;
+    float x = (2.0f * px / width - 1.0f) * tanHalfFovY * aspect;
+    float y = (1.0f - 2.0f * py / height) * tanHalfFovY;
+    return normalize(forward + x * right + y * up);
+}
+
+// Ray–sphere intersection, the nearest t > tMin, or -1 on a miss. dir must be unit length.
+// Uses the half-b form and Vieta's second root to avoid cancellation (Hearn & Baker; pbrt §3.2.2).
+SL_FN float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius, float tMin) {
+    vec3 oc = origin - center;
+    float b = dot(oc, dir);
+    vec3 perp = oc - b * dir;   // distance of the line from the centre, computed without cancellation
+    float disc = radius * radius - dot(perp, perp);
+    if (disc < 0.0f) return -1.0f;
+    float sq = sqrt(disc);
+    float c = dot(oc, oc) - radius * radius;
+    float q = b > 0.0f ? -b - sq : -b + sq;
+    float t0 = q != 0.0f ? c / q : 0.0f;
+    float t1 = q;
+    float tNear = min(t0, t1);
+    float tFar = max(t0, t1);
+    if (tNear > tMin) return tNear;
+    if (tFar > tMin) return tFar;
+    return -1.0f;
+}
+
+// Ray–plane intersection for {x : dot(n, x) = offset}, t > tMin or -1 (parallel or behind).
+SL_FN float intersectPlane(vec3 origin, vec3 dir, vec3 n, float offset, float tMin) {
+    float denom = dot(n, dir);
+    if (abs(denom) < 1e-12f) return -1.0f;
+    float t = (offset - dot(n, origin)) / denom;
+    return t > tMin ? t : -1.0f;
+}
+
+// A fixed tangent basis on a plane with unit normal n (Duff et al. 2017, "Building an Orthonormal
+// Basis, Revisited"), used to lay the checker pattern identically in both renderers.
+SL_FN vec3 planeTangent(vec3 n) {
+    float sgn = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (sgn + n.z);
+    float b = n.x * n.y * a;
+    return vec3(1.0f + sgn * n.x * n.x * a, sgn * b, -sgn * n.x);
+}
+
+SL_FN vec3 planeBitangent(vec3 n) {
+    float sgn = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (sgn + n.z);
+    float b = n.x * n.y * a;
+    return vec3(b, sgn + n.y * n.y * a, -n.y);
+}
+
+// Checker parity at point P on a plane: 0 for material.md tiles, 1 for checker md2 tiles.
+SL_FN int checkerParity(vec3 P, vec3 n, float size) {
+    float u = floor(dot(P, planeTangent(n)) / size);
+    float v = floor(dot(P, planeBitangent(n)) / size);
+    float sum = u + v;
+    return sum - 2.0f * floor(sum * 0.5f) > 0.5f ? 1 : 0;
+}

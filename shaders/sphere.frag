@@ -1,0 +1,18 @@
+// Sphere impostor: intersect the pixel's primary ray with the exact sphere, as the tracer does, and write
+// its depth. Exact silhouette and normal, no tessellation.
+#include "surface.glsl"
+
+uniform vec3 u_center;
+uniform float u_radius;
+
+void main() {
+    vec3 dir = fragmentRay();
+    float t = intersectSphere(u_eye.xyz, dir, u_center, u_radius, 0.0f);
+    if (t < 0.0f) discard;
+    vec3 P = u_eye.xyz + t * dir;
+    vec3 V = -dir;
+    vec3 N = faceForward((P - u_center) / u_radius, V);
+    gl_FragDepth = depthOf(P);
+    o_color = vec4(shadeSurface(P, N, V, u_md), 1.0f);
+    o_coverage = u_objectId;
+}

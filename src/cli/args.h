@@ -1,0 +1,29 @@
+// A small command-line parser: positionals, --flag, --option value (or --option=value). Unknown options
+// and missing values are UsageErrors (exit code 2).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadelab::cli {
+
+class Args {
+public:
+    // `valued` lists the options that take a value; every other --name is a flag.
+    Args(int argc, char** argv, int first, std::vector<std::string> valued, std::vector<std::string> flags);
+
+    bool flag(const std::string& name) const;
+    std::optional<std::string> value(const std::string& name) const;
+    const std::vector<std::string>& positionals() const { return positionals_; }
+
+private:
+    std::vector<std::string> valued_, flags_, seenFlags_;
+    std::vector<std::pair<std::string, std::string>> values_;
+    std::vector<std::string> positionals_;
+};
+
+// "1920x1080" → {1920, 1080}; each side in [1, 16384]. Throws UsageError.
+std::pair<int, int> parseSize(const std::string& s);
+
+}  // namespace shadelab::cli

@@ -1,0 +1,75 @@
+// Backend selection for headless contexts: the order of design.md §3, the override, the error that
+// lists what was tried.
+#include "gl/headless_context.h"
+
+#include "gl/gl_api.h"
+#include "util/input_error.h"
+
+#include <cstdlib>
+#include <string>
+
+namespace shadelab::gl {
+
+GlBackend parseGlBackend(const std::string& name) {
+    if (name == "auto" || name.empty()) return GlBackend::Auto;
+    if (name == "egl-device") return GlBackend::EglDevice;
+    if (name == "egl-surfaceless") return GlBackend::EglSurfaceless;
+    if (name == "osmesa") return GlBackend::OSMesa;
+    throw UsageError("unknown GL backend '" + name + "'; expected auto, egl-device, egl-surfaceless or osmesa");
+}
+
+const char* toString(GlBackend b) {
+    switch (b) {
+        case GlBackend::Auto: return "auto";
+        case GlBackend::EglDevice: return "egl-device";
+        case GlBackend::EglSurfaceless: return "egl-surfaceless";
+        case GlBackend::OSMesa: return "osmesa";
+    }
+    return "?";
+}
+
+void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*)) {
+    if (const char* missing = loadFunctions(getProc))
+        throw std::runtime_error(std::string("OpenGL entry point ") + missing + " not found");
+    auto str = [](GLenum e) {
+        const GLubyte* s = glGetString(e);
+        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+    };
+    info.renderer = str(GL_RENDERER);
+    info.version = str(GL_VERSION);
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major * 10 + minor < 33)
+        throw std::runtime_error("OpenGL " + info.version + " is older than the 3.3 core profile shadelab needs");
+}
+
+std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced, std::vector<std::string>* log) {
+    if (forced == GlBackend::Auto) {
+        if (const char* env = std::getenv(kGlBackendEnv)) forced = parseGlBackend(env);
+    }
+    struct Attempt {
+        GlBackend backend;
+        std::unique_ptr<HeadlessContext> (*create)();
+    };
+    const Attempt order[] = {{GlBackend::EglDevice, createEglDeviceContext},
+                             {GlBackend::EglSurfaceless, createEglSurfacelessContext},
+                             {GlBackend::OSMesa, createOSMesaContext}};
+    std::string tried;
+    for (const Attempt& a : order) {
+        if (forced != GlBackend::Auto && forced != a.backend) continue;
+        try {
+            std::unique_ptr<HeadlessContext> ctx = a.create();
+            if (log) log->push_back(std::string("gl: ") + toString(a.backend) + ": ok, " + ctx->info().device);
+            return ctx;
+        } catch (const std::exception& e) {
+            if (log) log->push_back(std::string("gl: ") + toString(a.backend) + ": " + e.what());
+            if (!tried.empty()) tried += "; ";
+            tried += std::string(toString(a.backend)) + " (" + e.what() + ")";
+        }
+    }
+    throw ContextError("no headless OpenGL context could be created; tried " + tried +
+                       ". Install Mesa's drivers: apt-get install libegl-mesa0 libgl1-mesa-dri libosmesa6");
+}
+
+}  // namespace shadelab::gl

@@ -1,0 +1,58 @@
+// A current OpenGL 3.3+ core context with no window and no X server (design.md §3). Tries the EGL device
+// platform (hardware first, then Mesa's software device), EGL surfaceless, then OSMesa.
+// Rendering goes into the renderer's own framebuffer objects; these contexts have no default surface.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace shadelab::gl {
+
+enum class GlBackend { Auto, EglDevice, EglSurfaceless, OSMesa };
+
+// "auto", "egl-device", "egl-surfaceless", "osmesa". Throws UsageError otherwise.
+GlBackend parseGlBackend(const std::string& name);
+const char* toString(GlBackend b);
+
+// The environment variable that forces a backend when no flag does.
+inline constexpr const char* kGlBackendEnv = "SHADELAB_GL_BACKEND";
+
+struct ContextInfo {
+    GlBackend backend = GlBackend::Auto;
+    std::string device;     // what the backend picked, e.g. "EGL device 0 (software)"
+    std::string renderer;   // GL_RENDERER
+    std::string version;    // GL_VERSION
+};
+
+// No backend worked. The message lists every backend tried and why it failed.
+class ContextError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class HeadlessContext {
+public:
+    virtual ~HeadlessContext() = default;
+    const ContextInfo& info() const { return info_; }
+
+protected:
+    ContextInfo info_;
+};
+
+// Creates and makes current. `forced` = Auto reads kGlBackendEnv, then tries all in order.
+// `log`, when set, receives one line per attempt.
+std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced = GlBackend::Auto,
+                                                       std::vector<std::string>* log = nullptr);
+
+// Backend implementations (egl_context.cpp, osmesa_context.cpp). Each throws std::runtime_error with
+// a short reason on failure and leaves nothing current.
+std::unique_ptr<HeadlessContext> createEglDeviceContext();
+std::unique_ptr<HeadlessContext> createEglSurfacelessContext();
+std::unique_ptr<HeadlessContext> createOSMesaContext();
+
+// Loads GL entry points and fills renderer/version after a backend made its context current.
+void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*));
+
+}  // namespace shadelab::gl

@@ -1,0 +1,96 @@
+// Shader compilation and linking with file-and-line error messages (Dear ImGui's CheckShader does the same).
+#include "gl/program.h"
+
+#include "util/input_error.h"
+
+#include <regex>
+#include <sstream>
+#include <vector>
+
+namespace shadelab::gl {
+namespace {
+
+std::string infoLog(GLuint object, bool isShader) {
+    GLint length = 0;
+    if (isShader) glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    else glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> buf(size_t(length) + 1, '\0');
+    if (isShader) glGetShaderInfoLog(object, length, nullptr, buf.data());
+    else glGetProgramInfoLog(object, length, nullptr, buf.data());
+    return buf.data();
+}
+
+GLuint compile(GLenum stage, const ShaderSource& src, const std::string& name) {
+    GLuint shader = glCreateShader(stage);
+    const char* text = src.text.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok) return shader;
+    std::string log = infoLog(shader, true);
+    glDeleteShader(shader);
+    std::string file = name;
+    int line = 0;
+    std::string message = firstLogError(log, src, &file, &line);
+    throw InputError("shaders/" + file, line > 0 ? "line " + std::to_string(line) : "", message);
+}
+
+}  // namespace
+
+std::string firstLogError(const std::string& log, const ShaderSource& src, std::string* file, int* line) {
+    // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C1008: ...".
+    static const std::regex mesa(R"(^\s*(\d+):(\d+)\(\d+\):\s*(.*)$)");
+    static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
+    std::istringstream in(log);
+    std::string l, first;
+    while (std::getline(in, l)) {
+        std::smatch m;
+        if (std::regex_match(l, m, mesa) || std::regex_match(l, m, nvidia)) {
+            if (m[3].str().find("error") == std::string::npos) continue;
+            size_t index = std::stoul(m[1].str());
+            if (index < src.files.size()) *file = src.files[index];
+            *line = std::stoi(m[2].str());
+            return m[3].str();
+        }
+        if (first.empty() && !l.empty()) first = l;
+    }
+    *line = 0;
+    return first.empty() ? "compilation failed with no log" : first;
+}
+
+Program Program::build(const ShaderLibrary& lib, const std::string& vertexFile, const std::string& fragmentFile,
+                       const std::string& defines) {
+    ShaderSource vs = lib.load(vertexFile, defines);
+    ShaderSource fs = lib.load(fragmentFile, defines);
+    GLuint v = compile(GL_VERTEX_SHADER, vs, vertexFile);
+    GLuint f = 0;
+    try {
+        f = compile(GL_FRAGMENT_SHADER, fs, fragmentFile);
+    } catch (...) {
+        glDeleteShader(v);
+        throw;
+    }
+    Program p;
+    p.handle_ = ProgramHandle::create();
+    GLuint id = p.handle_.id();
+    glAttachShader(id, v);
+    glAttachShader(id, f);
+    glLinkProgram(id);
+    glDeleteShader(v);
+    glDeleteShader(f);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        std::string log = infoLog(id, false);
+        throw InputError("shaders/" + vertexFile + " + " + fragmentFile, "link failed: " + log.substr(0, log.find('\n')));
+    }
+    return p;
+}
+
+void Program::bindBlock(const char* blockName, GLuint binding) const {
+    GLuint index = glGetUniformBlockIndex(handle_.id(), blockName);
+    if (index != GL_INVALID_INDEX) glUniformBlockBinding(handle_.id(), index, binding);
+}
+
+}  // namespace shadelab::gl

@@ -1,0 +1,28 @@
+// The one conversion from float images to 8-bit pixels (design.md §2): clamp to [0,1], then the exact
+// sRGB curve (default) or no curve ("linear", lecture-style images). Both renderers go through it.
+#pragma once
+
+#include "image/image.h"
+
+#include <cstdint>
+#include <string>
+
+namespace shadelab {
+
+enum class Encoding { Srgb, Linear };
+
+// Exact IEC 61966-2-1 sRGB transfer function on a linear value in [0, 1].
+float linearToSrgb(float linear);
+float srgbToLinear(float encoded);
+
+// One channel: clamp, encode, round to nearest 8-bit value. NaN maps to 0.
+uint8_t encodeChannel(float linear, Encoding e);
+
+// RGB8 image (alpha dropped) from a float image.
+Image8 toImage8(const ImageF& img, Encoding e);
+
+// "srgb" / "linear"; throws UsageError on anything else.
+Encoding parseEncoding(const std::string& s);
+const char* toString(Encoding e);
+
+}  // namespace shadelab

@@ -1,0 +1,37 @@
+// C++ mirror of the std140 `Frame` uniform block in shaders/frame.glsl, with its layout pinned by
+// static_asserts (Filament's UibStructs.h does the same).
+#pragma once
+
+#include "scene/scene.h"
+
+#include <cstddef>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+namespace shadelab::raster {
+
+struct FrameBlock {
+    glm::mat4 viewProj;
+    glm::vec4 eye;
+    glm::vec4 forward;
+    glm::vec4 right;
+    glm::vec4 up;
+    glm::vec4 viewport;          // width, height, tan(fovY/2), 0
+    glm::vec4 ambient;           // Ia
+    glm::ivec4 flags;            // model, term bits, light count, 0
+    glm::vec4 lightPos[kMaxLights];
+    glm::vec4 lightColor[kMaxLights];
+    glm::vec4 lightAtten[kMaxLights];
+};
+
+static_assert(offsetof(FrameBlock, eye) == 64);
+static_assert(offsetof(FrameBlock, viewport) == 128);
+static_assert(offsetof(FrameBlock, flags) == 160);
+static_assert(offsetof(FrameBlock, lightPos) == 176);
+static_assert(offsetof(FrameBlock, lightColor) == 176 + 16 * kMaxLights);
+static_assert(offsetof(FrameBlock, lightAtten) == 176 + 32 * kMaxLights);
+static_assert(sizeof(FrameBlock) == 176 + 48 * kMaxLights);
+
+enum TermBits : int { kTermAmbient = 1, kTermDiffuse = 2, kTermSpecular = 4 };
+
+}  // namespace shadelab::raster

@@ -1,0 +1,87 @@
+// RenderTarget allocation and readback.
+#include "raster/render_target.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace shadelab::raster {
+namespace {
+
+gl::Texture makeTexture(GLint internalFormat, GLenum format, GLenum type, int w, int h) {
+    gl::Texture t = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_2D, t.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, w, h, 0, format, type, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+// glReadPixels returns the bottom row first; image files start at the top.
+template <typename T>
+void flipRows(T* data, int width, int height, int channels) {
+    size_t row = size_t(width) * size_t(channels);
+    std::vector<T> tmp(row);
+    for (int y = 0; y < height / 2; ++y) {
+        T* a = data + size_t(y) * row;
+        T* b = data + size_t(height - 1 - y) * row;
+        std::memcpy(tmp.data(), a, row * sizeof(T));
+        std::memcpy(a, b, row * sizeof(T));
+        std::memcpy(b, tmp.data(), row * sizeof(T));
+    }
+}
+
+}  // namespace
+
+void RenderTarget::resize(int width, int height) {
+    if (width == width_ && height == height_ && fbo_) return;
+    width_ = width;
+    height_ = height;
+    color_ = makeTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
+    coverage_ = makeTexture(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, width, height);
+    depth_ = gl::Renderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+
+    fbo_ = gl::Framebuffer::create();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, coverage_.id(), 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, buffers);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("raster framebuffer incomplete (status 0x" + std::to_string(status) + ") at " +
+                                 std::to_string(width) + "x" + std::to_string(height));
+    gl::checkError("RenderTarget::resize");
+}
+
+void RenderTarget::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::readColor(ImageF& out) const {
+    out = ImageF(width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.rgba.data());
+    gl::checkError("RenderTarget::readColor");
+    flipRows(out.rgba.data(), width_, height_, 4);
+}
+
+void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
+    out.assign(size_t(width_) * size_t(height_), 0u);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, out.data());
+    gl::checkError("RenderTarget::readCoverage");
+    flipRows(out.data(), width_, height_, 1);
+}
+
+}  // namespace shadelab::raster

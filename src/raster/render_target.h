@@ -1,0 +1,34 @@
+// RenderTarget: the rasterizer's own framebuffer (design.md §2): RGBA32F linear colour, R32UI coverage
+// ids and a 32-bit float depth buffer. Never the default framebuffer or an EGL surface.
+#pragma once
+
+#include "gl/objects.h"
+#include "image/image.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace shadelab::raster {
+
+class RenderTarget {
+public:
+    // Reallocates only when the size changes. Needs a current context.
+    void resize(int width, int height);
+    void bind() const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+    GLuint colorTexture() const { return color_.id(); }
+
+    // Read back with row 0 at the top.
+    void readColor(ImageF& out) const;
+    void readCoverage(std::vector<uint32_t>& out) const;
+
+private:
+    int width_ = 0, height_ = 0;
+    gl::Framebuffer fbo_;
+    gl::Texture color_;
+    gl::Texture coverage_;
+    gl::Renderbuffer depth_;
+};
+
+}  // namespace shadelab::raster

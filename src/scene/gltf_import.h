@@ -1,0 +1,31 @@
+// glTF 2.0 import (.gltf, .glb, embedded buffers) through tinygltf: triangles in world space, lights
+// from KHR_lights_punctual, cameras, and the documented metallic-roughness → Phong mapping
+// (docs/gltf-import.md). Not a general glTF viewer: skins, morphs and animation are ignored.
+#pragma once
+
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/objects.h"
+
+#include <glm/mat4x4.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+struct GltfImport {
+    std::vector<MeshPart> parts;        // one per triangle primitive, world space
+    std::vector<Light> lights;          // KHR_lights_punctual, world space
+    std::optional<Camera> camera;       // the first camera in the node hierarchy, if any
+    std::vector<std::string> warnings;  // things skipped (points, lines, unsupported extensions)
+};
+
+// Imports `path`, placing everything under `transform`. Throws InputError naming the file, the place
+// (e.g. "accessors[3]") and the reason.
+GltfImport importGltf(const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
+
+// Metallic-roughness → Phong (docs/gltf-import.md).
+Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, float roughness);
+
+}  // namespace shadelab

@@ -1,0 +1,47 @@
+// Scene: everything both renderers need to draw one image, as plain data (design.md §1, §5).
+// Loading and saving live in scene_json.h; glTF import in gltf_import.h.
+#pragma once
+
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/objects.h"
+
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+enum class ShadingModel { Phong, BlinnPhong };
+
+// The lecture's term switches (design.md §1). A switched-off term contributes nothing.
+struct Terms {
+    bool ambient = true;
+    bool diffuse = true;
+    bool specular = true;
+    bool shadows = true;        // tracer; rasterizer from issue 5
+    bool reflections = true;    // includes refraction; tracer; rasterizer from issue 5
+};
+
+struct Scene {
+    std::string title;                       // shown by the viewer
+    std::string notes;                       // free text for a lesson
+    Camera camera;
+    ShadingModel model = ShadingModel::Phong;
+    Terms terms;
+    glm::vec3 ambient{0.2f};                 // Ia, linear RGB intensity
+    glm::vec3 background{0.0f};              // colour of rays that leave the scene, linear RGB
+    int maxDepth = 5;                        // secondary-ray depth for the tracer, >= 0
+    std::vector<Light> lights;
+    std::vector<Sphere> spheres;
+    std::vector<Plane> planes;
+    std::vector<Mesh> meshes;
+};
+
+// Largest number of lights either renderer accepts (the rasterizer's uniform block size).
+inline constexpr int kMaxLights = 32;
+
+const char* toString(ShadingModel m);
+// The inverse of toString: "phong" or "blinn-phong". Throws std::invalid_argument naming the choices.
+ShadingModel parseShadingModel(const std::string& name);
+
+}  // namespace shadelab

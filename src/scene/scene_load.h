@@ -1,0 +1,35 @@
+// loadScene: the one entry point that turns a path into a ready Scene. A .json file is parsed and its
+// meshes imported; a .gltf/.glb file becomes a scene of its own with a camera framing its bounds
+// (or its own glTF camera) and a default light rig (or its own KHR_lights_punctual lights).
+#pragma once
+
+#include "scene/scene.h"
+
+#include <glm/vec3.hpp>
+#include <string>
+
+namespace shadelab {
+
+struct Bounds {
+    glm::vec3 lo{1e30f};
+    glm::vec3 hi{-1e30f};
+    bool empty() const { return lo.x > hi.x; }
+    void extend(const glm::vec3& p);
+};
+
+// Throws InputError naming the file and problem.
+Scene loadScene(const std::string& path, void (*warn)(const std::string& line) = nullptr);
+
+// Imports every mesh's glTF source (relative to `baseDir`) into its parts, applying the override.
+void importSceneMeshes(Scene& scene, const std::string& baseDir);
+
+// Bounds of spheres and mesh triangles (planes are unbounded and ignored).
+Bounds sceneBounds(const Scene& scene);
+
+// A camera looking at `b` from the front and slightly above, with the whole box in view.
+Camera frameBounds(const Bounds& b, float fovY = 45.0f);
+
+// Two lights for a model with no lights of its own: a warm key and a cool fill, placed from `b`.
+std::vector<Light> defaultLightRig(const Bounds& b);
+
+}  // namespace shadelab

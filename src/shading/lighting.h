@@ -1,0 +1,27 @@
+// C++ view of shaders/lighting.glsl: the same text compiled with GLM, so the rasterizer's GLSL and the
+// tracer's C++ evaluate one set of equations (design.md §1). No GL and no scene types here.
+#pragma once
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/common.hpp>
+#include <glm/exponential.hpp>
+
+namespace shadelab::shading {
+
+using glm::vec3;
+using glm::dot;
+using glm::normalize;
+using glm::max;
+using glm::min;
+using glm::pow;
+using glm::sqrt;
+using glm::abs;
+using glm::floor;
+using glm::length;
+
+#define SL_FN inline
+#include "shaders/lighting.glsl"
+#undef SL_FN
+
+}  // namespace shadelab::shading

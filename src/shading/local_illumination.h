@@ -1,0 +1,38 @@
+// Local illumination summed over lights (design.md §1): I = Ia⊙ma + Σ vis·Il⊙(md·max(N·L,0) + ms·spec).
+// The per-light maths is shaders/lighting.glsl; this is the C++ loop, mirrored by the loop in
+// shaders/surface.glsl. No scene types: callers hand in light samples already evaluated at the point.
+#pragma once
+
+#include "shading/lighting.h"
+
+#include <cstddef>
+
+namespace shadelab::shading {
+
+struct LightSample {
+    vec3 L;                     // from the point toward the light, any length > 0
+    vec3 Il;                    // intensity arriving at the point (attenuation applied), linear RGB
+    float visibility = 1.0f;    // 0 when shadowed
+};
+
+struct SurfaceParams {
+    vec3 ma, md, ms;
+    float s;
+};
+
+struct TermFlags {
+    bool ambient = true, diffuse = true, specular = true;
+};
+
+inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCount, const SurfaceParams& m,
+                       vec3 Ia, int model, TermFlags t) {
+    vec3 I = shadeAmbient(Ia, m.ma, t.ambient);
+    for (size_t i = 0; i < lightCount; ++i) {
+        const LightSample& l = lights[i];
+        if (l.visibility <= 0.0f) continue;
+        I += l.visibility * shadeLight(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular);
+    }
+    return I;
+}
+
+}  // namespace shadelab::shading

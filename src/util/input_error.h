@@ -1,0 +1,34 @@
+// InputError: a problem with something the user gave us (a file, a flag), reported as one line.
+// Not for programmer errors; those are CHECKs (util/check.h).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace shadelab {
+
+// Message format: "<file>: <place>: <reason>", with place omitted when unknown.
+class InputError : public std::runtime_error {
+public:
+    InputError(const std::string& file, const std::string& place, const std::string& reason)
+        : std::runtime_error(format(file, place, reason)), file_(file) {}
+    InputError(const std::string& file, const std::string& reason) : InputError(file, "", reason) {}
+
+    const std::string& file() const { return file_; }
+
+private:
+    static std::string format(const std::string& file, const std::string& place, const std::string& reason) {
+        std::string s = file.empty() ? std::string() : file + ": ";
+        if (!place.empty()) s += place + ": ";
+        return s + reason;
+    }
+    std::string file_;
+};
+
+// A usage error (bad flag or argument): exit code 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace shadelab
