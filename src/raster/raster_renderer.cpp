@@ -75,7 +75,7 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) {
     const std::string defines = programDefines();
     meshProgram_ = gl::Program::build(shaders, "mesh.vert", "mesh.frag", defines);
     sphereProgram_ = gl::Program::build(shaders, "sphere.vert", "sphere.frag", defines);
-    planeProgram_ = gl::Program::build(shaders, "plane.vert", "plane.frag", defines);
+    planeProgram_ = gl::Program::build(shaders, "fullscreen.vert", "plane.frag", defines);
     for (const gl::Program* p : {&meshProgram_, &sphereProgram_, &planeProgram_}) p->bindBlock("Frame", kFrameBinding);
 
     frameUbo_ = gl::Buffer::create();

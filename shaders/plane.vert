@@ -1,5 +1,0 @@
-// Infinite plane: one triangle covering the screen; the fragment shader ray-casts the plane.
-void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(2.0f * p - 1.0f, 0.0f, 1.0f);
-}

@@ -1,0 +1,151 @@
+// Float → 8-bit conversion (design.md §2). encodeChannel is the exact reference; toImage8 gets the
+// same answer for every float through a table of the 256 decision thresholds, built from encodeChannel.
+#include "image/encode.h"
+
+#include "util/check.h"
+#include "util/input_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+namespace shadelab {
+
+namespace {
+
+// IEC 61966-2-1 sRGB transfer function, in double so the 8-bit rounding below is decided exactly.
+double srgbCurve(double x) { return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055; }
+
+// NaN and negatives → 0, above 1 → 1. Written so that NaN fails both comparisons.
+inline float clamp01(float x) {
+    x = x > 0.0f ? x : 0.0f;
+    return x < 1.0f ? x : 1.0f;
+}
+
+float floatFromBits(uint32_t b) {
+    float f;
+    std::memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+// Coarse cells of width 1/kCells. The steepest part of the sRGB curve gains 12.92*255 ≈ 3295 codes per
+// unit, below one per cell, so one comparison after the lookup is nearly always the last.
+constexpr int kCells = 4096;
+
+// For one encoding: threshold[k] is the smallest float in [0,1] whose code is >= k (threshold[256] is
+// above 1), and cellCode[i] is the code at i/kCells. Codes grow with the input, so the code of x is
+// the number of thresholds above 0 at or below x.
+struct Thresholds {
+    float threshold[257];
+    uint8_t cellCode[kCells + 1];
+
+    explicit Thresholds(Encoding e) {
+        const uint32_t oneBits = 0x3F800000u;  // positive floats order like their bit patterns
+        threshold[0] = 0.0f;
+        for (int k = 1; k <= 255; ++k) {
+            uint32_t lo = 0, hi = oneBits;  // encode(hi) >= k always holds: encode(1) == 255
+            while (lo < hi) {
+                uint32_t mid = lo + (hi - lo) / 2;
+                if (encodeChannel(floatFromBits(mid), e) >= k) hi = mid;
+                else lo = mid + 1;
+            }
+            threshold[k] = floatFromBits(lo);
+        }
+        threshold[256] = 2.0f;
+        for (int i = 0; i <= kCells; ++i) cellCode[i] = encodeChannel(float(i) / float(kCells), e);
+    }
+
+    uint8_t code(float linear) const {
+        float x = clamp01(linear);
+        // x*kCells is exact (power of two), so the cell start i/kCells is at or below x.
+        int code = cellCode[int(x * float(kCells))];
+        while (x >= threshold[code + 1]) ++code;
+        return uint8_t(code);
+    }
+};
+
+const Thresholds& thresholdsFor(Encoding e) {
+    static const Thresholds srgb(Encoding::Srgb);
+    static const Thresholds linear(Encoding::Linear);
+    return e == Encoding::Srgb ? srgb : linear;
+}
+
+struct JoinAll {
+    std::vector<std::thread>& pool;
+    ~JoinAll() {
+        for (auto& t : pool)
+            if (t.joinable()) t.join();
+    }
+};
+
+void encodeRows(const ImageF& img, const Thresholds& t, Image8& out, int y0, int y1) {
+    const size_t w = size_t(img.width);
+    for (int y = y0; y < y1; ++y) {
+        const float* src = img.rgba.data() + size_t(y) * w * 4;
+        uint8_t* dst = out.data.data() + size_t(y) * w * 3;
+        for (size_t x = 0; x < w; ++x) {
+            dst[3 * x + 0] = t.code(src[4 * x + 0]);
+            dst[3 * x + 1] = t.code(src[4 * x + 1]);
+            dst[3 * x + 2] = t.code(src[4 * x + 2]);
+        }
+    }
+}
+
+}  // namespace
+
+float linearToSrgb(float linear) { return float(srgbCurve(double(linear))); }
+
+// IEC 61966-2-1 inverse transfer function.
+float srgbToLinear(float encoded) {
+    double v = encoded;
+    return float(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+}
+
+uint8_t encodeChannel(float linear, Encoding e) {
+    double x = clamp01(linear);
+    double v = e == Encoding::Srgb ? srgbCurve(x) : x;
+    double code = std::floor(v * 255.0 + 0.5);  // round half up
+    return uint8_t(std::min(255.0, std::max(0.0, code)));
+}
+
+Image8 toImage8(const ImageF& img, Encoding e) {
+    SHADELAB_CHECK_EQ(img.rgba.size(), size_t(img.width) * size_t(img.height) * 4);
+    Image8 out;
+    out.width = img.width;
+    out.height = img.height;
+    out.channels = 3;
+    out.data.resize(size_t(img.width) * size_t(img.height) * 3);
+    const Thresholds& t = thresholdsFor(e);
+
+    // Threads pay off only above ~100k pixels; each costs tens of microseconds to start.
+    const size_t pixels = size_t(img.width) * size_t(img.height);
+    int threads = int(std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), 8));
+    threads = std::min(threads, std::max(1, int(pixels / 131072)));
+    threads = std::min(threads, std::max(1, img.height));
+    if (threads <= 1) {
+        encodeRows(img, t, out, 0, img.height);
+        return out;
+    }
+    {
+        std::vector<std::thread> pool;
+        JoinAll joinAll{pool};  // joins even if starting a thread throws
+        for (int i = 1; i < threads; ++i) {
+            int y0 = int(int64_t(img.height) * i / threads), y1 = int(int64_t(img.height) * (i + 1) / threads);
+            pool.emplace_back(encodeRows, std::cref(img), std::cref(t), std::ref(out), y0, y1);
+        }
+        encodeRows(img, t, out, 0, int(int64_t(img.height) / threads));
+    }
+    return out;
+}
+
+Encoding parseEncoding(const std::string& s) {
+    if (s == "srgb") return Encoding::Srgb;
+    if (s == "linear") return Encoding::Linear;
+    throw UsageError("--encoding: expected srgb or linear, got '" + s + "'");
+}
+
+const char* toString(Encoding e) { return e == Encoding::Srgb ? "srgb" : "linear"; }
+
+}  // namespace shadelab

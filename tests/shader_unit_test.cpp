@@ -1,0 +1,145 @@
+// Shader-unit test (issue 2): the GLSL lighting functions, run on the GPU over a sweep of N, L, V and s,
+// must equal the same functions compiled as C++ within 1e-4. This proves the two are one implementation.
+#include "gl/program.h"
+#include "raster/render_target.h"
+#include "shading/lighting.h"
+#include "gl_fixture.h"
+#include "test_output.h"
+
+#include <cmath>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <random>
+#include <vector>
+
+using namespace shadelab;
+
+namespace {
+
+constexpr int kW = 64, kH = 32;  // 2048 cases
+
+gl::Texture floatTexture(const std::vector<glm::vec4>& data) {
+    gl::Texture t = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_2D, t.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kW, kH, 0, GL_RGBA, GL_FLOAT, data.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+glm::vec3 randomDirection(std::mt19937& rng) {
+    std::normal_distribution<float> g;
+    glm::vec3 v;
+    do v = glm::vec3(g(rng), g(rng), g(rng));
+    while (glm::length(v) < 1e-3f);
+    return v;  // deliberately not normalised: shadeLight normalises
+}
+
+struct Case {
+    glm::vec3 N, L, V;
+    float s;
+    int model;
+};
+
+std::vector<Case> makeCases() {
+    std::mt19937 rng(20261122);
+    std::uniform_real_distribution<float> logS(0.0f, 3.0f);
+    std::vector<Case> cases;
+    for (int i = 0; i < kW * kH; ++i) {
+        Case c;
+        c.N = randomDirection(rng);
+        c.L = randomDirection(rng);
+        // Half the cases put V near the mirror direction, where the highlight is and errors would show.
+        c.V = (i % 2) ? randomDirection(rng)
+                      : glm::normalize(shading::reflectLight(glm::normalize(c.N), glm::normalize(c.L))) +
+                            0.2f * glm::normalize(randomDirection(rng));
+        c.s = std::pow(10.0f, logS(rng));  // [1, 1000], log-uniform
+        c.model = (i / 2) % 2;
+        cases.push_back(c);
+    }
+    // Exact corner cases: H = N, L = N = V, grazing light, s = 1 and 1000.
+    cases[0] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, 1000.0f, 0};
+    cases[1] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, 1000.0f, 1};
+    cases[2] = {{0, 0, 1}, {1, 0, 1e-4f}, {-1, 0, 1e-4f}, 1.0f, 1};
+    cases[3] = {{0, 1, 0}, {0, -1, 0}, {0, 1, 0}, 32.0f, 0};
+    return cases;
+}
+
+}  // namespace
+
+class ShaderUnitTest : public test::GlTest {};
+
+TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
+    const std::vector<Case> cases = makeCases();
+    ASSERT_GE(cases.size(), 1000u);
+    std::vector<glm::vec4> n, l, v, params;
+    for (const Case& c : cases) {
+        n.emplace_back(c.N, 0.0f);
+        l.emplace_back(c.L, 0.0f);
+        v.emplace_back(c.V, 0.0f);
+        params.emplace_back(c.s, float(c.model), 0.0f, 0.0f);
+    }
+    const glm::vec3 Il(1.0f, 0.7f, 0.3f), md(0.6f, 0.5f, 0.4f), ms(0.9f, 0.8f, 1.0f);
+
+    gl::Program program = gl::Program::build(gl::ShaderLibrary(), "fullscreen.vert", "lighting_probe.frag");
+    gl::Texture tn = floatTexture(n), tl = floatTexture(l), tv = floatTexture(v), tp = floatTexture(params);
+    raster::RenderTarget target;
+    target.resize(kW, kH);
+    target.bind();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program.id());
+    const char* samplers[] = {"t_N", "t_L", "t_V", "t_params"};
+    const gl::Texture* textures[] = {&tn, &tl, &tv, &tp};
+    for (int i = 0; i < 4; ++i) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + i));
+        glBindTexture(GL_TEXTURE_2D, textures[i]->id());
+        glUniform1i(program.uniform(samplers[i]), i);
+    }
+    glUniform3fv(program.uniform("u_Il"), 1, glm::value_ptr(Il));
+    glUniform3fv(program.uniform("u_md"), 1, glm::value_ptr(md));
+    glUniform3fv(program.uniform("u_ms"), 1, glm::value_ptr(ms));
+    gl::VertexArray vao = gl::VertexArray::create();
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glActiveTexture(GL_TEXTURE0);
+    ImageF result;
+    target.readColor(result);
+
+    const float tol = 1e-4f;
+    float worst = 0.0f;
+    int worstIndex = -1, failures = 0;
+    std::ofstream report(test::outputPath("shader_unit_sweep.csv"));
+    report << "index,model,s,gpu_r,cpu_r,gpu_spec,cpu_spec\n";
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        int x = int(i) % kW, yGl = int(i) / kW;
+        const float* gpu = result.pixel(x, kH - 1 - yGl);  // readColor put GL's bottom row last
+        glm::vec3 cpu = shading::shadeLight(c.N, c.L, c.V, Il, md, ms, c.s, c.model, true, true);
+        glm::vec3 Nn = glm::normalize(c.N), Ln = glm::normalize(c.L), Vn = glm::normalize(c.V);
+        float spec = c.model == 0 ? shading::specularPhong(Nn, Ln, Vn, c.s) : shading::specularBlinnPhong(Nn, Ln, Vn, c.s);
+        float err = std::max({std::abs(gpu[0] - cpu.x), std::abs(gpu[1] - cpu.y), std::abs(gpu[2] - cpu.z),
+                              std::abs(gpu[3] - spec)});
+        report << i << ',' << c.model << ',' << c.s << ',' << gpu[0] << ',' << cpu.x << ',' << gpu[3] << ','
+               << spec << '\n';
+        if (err > worst) {
+            worst = err;
+            worstIndex = int(i);
+        }
+        if (err > tol) ++failures;
+    }
+    RecordProperty("max_abs_error", std::to_string(worst));
+    std::printf("shader-unit sweep: %zu cases, max |GLSL - C++| = %.3g (case %d)\n", cases.size(), worst, worstIndex);
+    EXPECT_EQ(failures, 0) << "max error " << worst << " at case " << worstIndex << "; all values in "
+                           << test::outputPath("shader_unit_sweep.csv");
+    // Negative control: the comparison must notice a 10 % change of shininess.
+    int noticed = 0;
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
+        glm::vec3 cpu = shading::shadeLight(c.N, c.L, c.V, Il, md, ms, c.s * 1.1f, c.model, true, true);
+        if (std::abs(gpu[0] - cpu.x) > tol) ++noticed;
+    }
+    EXPECT_GT(noticed, int(cases.size()) / 10) << "a 10% shininess change went unnoticed: the test cannot fail";
+}
