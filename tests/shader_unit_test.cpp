@@ -85,7 +85,7 @@ TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
     gl::Program program = gl::Program::build(gl::ShaderLibrary(), "fullscreen.vert", "lighting_probe.frag");
     gl::Texture tn = floatTexture(n), tl = floatTexture(l), tv = floatTexture(v), tp = floatTexture(params);
     raster::RenderTarget target;
-    target.resize(kW, kH);
+    target.resize(kW, kH, false);
     target.bind();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);

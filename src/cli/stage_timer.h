@@ -1,10 +1,12 @@
-// StageTimer: wall-clock time per named stage of a command, for --timings and the benchmarks.
+// StageTimer: wall-clock time and resident memory after each named stage of a command, for --timings and
+// the benchmarks. Memory is read from /proc/self/statm (Linux); elsewhere it prints 0.
 #pragma once
 
 #include <chrono>
 #include <cstdio>
 #include <string>
 #include <utility>
+#include <unistd.h>
 #include <vector>
 
 namespace shadelab::cli {
@@ -15,21 +17,36 @@ public:
     // Ends the current stage (which began at the last call, or at construction).
     void stage(std::string name) {
         Clock::time_point now = Clock::now();
-        stages_.emplace_back(std::move(name), std::chrono::duration<double, std::milli>(now - last_).count());
-        last_ = now;
+        stages_.push_back({std::move(name), std::chrono::duration<double, std::milli>(now - last_).count(),
+                           residentMiB()});
+        last_ = Clock::now();
     }
     void print(std::FILE* out) const {
         double total = 0.0;
-        for (const auto& [name, ms] : stages_) {
-            std::fprintf(out, "  %-42s %8.1f ms\n", name.c_str(), ms);
-            total += ms;
+        std::fprintf(out, "  %-42s %8s %12s\n", "stage", "time", "RSS after");
+        for (const Stage& st : stages_) {
+            std::fprintf(out, "  %-42s %5.1f ms %8.1f MiB\n", st.name.c_str(), st.ms, st.rssMiB);
+            total += st.ms;
         }
-        std::fprintf(out, "  %-42s %8.1f ms\n", "total (in process)", total);
+        std::fprintf(out, "  %-42s %5.1f ms\n", "total (in process)", total);
     }
 
 private:
+    struct Stage {
+        std::string name;
+        double ms;
+        double rssMiB;
+    };
+    static double residentMiB() {
+        long pages = 0, resident = 0;
+        if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+            if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+            std::fclose(f);
+        }
+        return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+    }
     Clock::time_point last_ = Clock::now();
-    std::vector<std::pair<std::string, double>> stages_;
+    std::vector<Stage> stages_;
 };
 
 }  // namespace shadelab::cli

@@ -154,8 +154,8 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform1ui(p.uniform("u_objectId"), objectId);
 }
 
-void RasterRenderer::draw(const Scene& scene, int width, int height) {
-    target_.resize(width, height);
+void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage) {
+    target_.resize(width, height, withCoverage);
     target_.bind();
 
     // Every pass sets the state it needs (style.md "GL resources").
@@ -169,7 +169,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height) {
     const GLuint noObject[4] = {kBackgroundId, 0, 0, 0};
     const float farDepth = 1.0f;
     glClearBufferfv(GL_COLOR, 0, background);
-    glClearBufferuiv(GL_COLOR, 1, noObject);
+    if (target_.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
     const ViewSetup view = makeViewSetup(scene, width, height);
@@ -182,11 +182,15 @@ void RasterRenderer::draw(const Scene& scene, int width, int height) {
     glDisable(GL_CULL_FACE);  // two-sided lighting: back faces are lit with the flipped normal
     glUseProgram(meshProgram_.id());
     glBindVertexArray(meshVao_.id());
+    size_t sinceFlush = 0;
+    static const size_t flushEvery = getenv("SL_FLUSH") ? size_t(atoi(getenv("SL_FLUSH"))) : 0;
     for (const DrawRange& r : ranges_) {
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
         setMaterial(meshProgram_, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
+        sinceFlush += r.indexCount / 3;
+        if (flushEvery && sinceFlush > flushEvery) { glFlush(); sinceFlush = 0; }
     }
 
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
@@ -223,7 +227,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height) {
 }
 
 RasterOutput renderRaster(RasterRenderer& r, const Scene& scene, int width, int height, bool withCoverage) {
-    r.draw(scene, width, height);
+    r.draw(scene, width, height, withCoverage);
     RasterOutput out;
     r.target().readColor(out.color);
     if (withCoverage) r.target().readCoverage(out.coverage);

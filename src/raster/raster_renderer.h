@@ -21,9 +21,9 @@ public:
     // Uploads every mesh part. Call again when geometry changes; materials are read at draw time.
     void uploadMeshes(const Scene& scene);
 
-    // Draws the scene into the internal target at width x height. uploadMeshes must have seen the
-    // scene's current geometry.
-    void draw(const Scene& scene, int width, int height);
+    // Draws the scene into the internal target at width x height, with coverage ids when asked.
+    // uploadMeshes must have seen the scene's current geometry.
+    void draw(const Scene& scene, int width, int height, bool withCoverage = false);
 
     const RenderTarget& target() const { return target_; }
 

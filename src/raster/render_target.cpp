@@ -1,6 +1,7 @@
 // RenderTarget allocation and readback.
 #include "raster/render_target.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -34,12 +35,12 @@ void flipRows(T* data, int width, int height, int channels) {
 
 }  // namespace
 
-void RenderTarget::resize(int width, int height) {
-    if (width == width_ && height == height_ && fbo_) return;
+void RenderTarget::resize(int width, int height, bool withCoverage) {
+    if (width == width_ && height == height_ && fbo_ && withCoverage == hasCoverage()) return;
     width_ = width;
     height_ = height;
     color_ = makeTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
-    coverage_ = makeTexture(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, width, height);
+    coverage_ = withCoverage ? makeTexture(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, width, height) : gl::Texture();
     depth_ = gl::Renderbuffer::create();
     glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
@@ -48,9 +49,9 @@ void RenderTarget::resize(int width, int height) {
     fbo_ = gl::Framebuffer::create();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, coverage_.id(), 0);
+    if (coverage_) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, coverage_.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GLenum(coverage_ ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
     glDrawBuffers(2, buffers);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -75,6 +76,7 @@ void RenderTarget::readColor(ImageF& out) const {
 }
 
 void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
+    if (!coverage_) throw std::logic_error("RenderTarget::readCoverage: target was made without coverage");
     out.assign(size_t(width_) * size_t(height_), 0u);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
     glReadBuffer(GL_COLOR_ATTACHMENT1);
@@ -84,4 +86,29 @@ void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
     flipRows(out.data(), width_, height_, 1);
 }
 
+
+Image8 RenderTarget::readColor8(Encoding encoding) const {
+    constexpr int kStripRows = 64;
+    Image8 out;
+    out.width = width_;
+    out.height = height_;
+    out.channels = 3;
+    out.data.resize(size_t(width_) * size_t(height_) * 3);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    ImageF strip;
+    for (int top = 0; top < height_; top += kStripRows) {
+        int rows = std::min(kStripRows, height_ - top);
+        if (strip.height != rows) strip = ImageF(width_, rows);
+        glReadPixels(0, height_ - top - rows, width_, rows, GL_RGBA, GL_FLOAT, strip.rgba.data());
+        flipRows(strip.rgba.data(), width_, rows, 4);
+        Image8 converted = toImage8(strip, encoding);
+        std::memcpy(&out.data[size_t(top) * size_t(width_) * 3], converted.data.data(), converted.data.size());
+    }
+    gl::checkError("RenderTarget::readColor8");
+    return out;
+}
+
 }  // namespace shadelab::raster
+

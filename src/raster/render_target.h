@@ -1,8 +1,10 @@
 // RenderTarget: the rasterizer's own framebuffer (design.md §2): RGBA32F linear colour, R32UI coverage
-// ids and a 32-bit float depth buffer. Never the default framebuffer or an EGL surface.
+// ids (only when asked for: they cost 4 bytes a pixel) and a 32-bit float depth buffer. Never the default
+// framebuffer or an EGL surface.
 #pragma once
 
 #include "gl/objects.h"
+#include "image/encode.h"
 #include "image/image.h"
 
 #include <cstdint>
@@ -12,16 +14,21 @@ namespace shadelab::raster {
 
 class RenderTarget {
 public:
-    // Reallocates only when the size changes. Needs a current context.
-    void resize(int width, int height);
+    // Reallocates only when the size or the coverage choice changes. Needs a current context.
+    void resize(int width, int height, bool withCoverage);
     void bind() const;
     int width() const { return width_; }
     int height() const { return height_; }
+    bool hasCoverage() const { return bool(coverage_); }
     GLuint colorTexture() const { return color_.id(); }
 
     // Read back with row 0 at the top.
     void readColor(ImageF& out) const;
     void readCoverage(std::vector<uint32_t>& out) const;
+
+    // Reads colour a strip of rows at a time and converts each with toImage8 (the one shared conversion),
+    // so no full float copy of the image is ever held on the CPU.
+    Image8 readColor8(Encoding encoding) const;
 
 private:
     int width_ = 0, height_ = 0;

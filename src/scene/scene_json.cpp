@@ -1,0 +1,380 @@
+// Scene files: JSON text ↔ Scene (docs/scene-format.md). Loading validates every field and names its JSON
+// path in errors; saving writes every field, so a saved file documents itself and loads back exactly.
+// Mesh geometry is not touched here: loadScene() (scene_load.h) imports it.
+//
+// Sections: 1. loading materials, camera, lights   2. loading objects   3. parseSceneJson
+//           4. saving (exact floats, layout)      5. sceneToJson, saveSceneJson
+#include "scene/scene_json.h"
+
+#include "scene/json_reader.h"
+#include "util/atomic_file.h"
+#include "util/input_error.h"
+
+#include <algorithm>
+#include <charconv>
+#include <climits>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <iterator>
+#include <map>
+#include <stdexcept>
+
+namespace shadelab {
+
+namespace {
+
+constexpr int kFormatVersion = 1;
+constexpr int kMaxDepthLimit = 64;
+
+using NamedMaterials = std::map<std::string, MaterialOverride>;
+
+// ---- 1. Loading materials, camera, lights --------------------------------------------------------------
+
+MaterialOverride parseMaterialFields(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior"});
+    MaterialOverride m;
+    if (auto f = n.find("ma")) m.ma = f->rgb();
+    if (auto f = n.find("md")) m.md = f->rgb();
+    if (auto f = n.find("ms")) m.ms = f->rgb();
+    if (auto f = n.find("s")) m.s = f->inRange(0.0f, kMaxShininess, false, false);
+    if (auto f = n.find("kr")) m.kr = f->rgb();
+    if (auto f = n.find("kt")) m.kt = f->rgb();
+    if (auto f = n.find("ior")) m.ior = f->positive();
+    return m;
+}
+
+// An object's "material": inline fields, or a string naming an entry of the top-level "materials".
+MaterialOverride parseMaterialRef(const JsonNode& n, const NamedMaterials& named) {
+    if (!n.json().is_string()) return parseMaterialFields(n);
+    std::string name = n.string();
+    auto it = named.find(name);
+    if (it != named.end()) return it->second;
+    std::string known;
+    for (const auto& [k, v] : named) known += (known.empty() ? "" : ", ") + k;
+    n.fail("unknown material '" + name + "'; " +
+           (known.empty() ? std::string("the file has no \"materials\"") : "named materials are: " + known));
+}
+
+Material parseMaterial(const JsonNode& object, const NamedMaterials& named) {
+    Material m;
+    if (auto f = object.find("material")) parseMaterialRef(*f, named).applyTo(m);
+    return m;
+}
+
+Camera parseCamera(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"position", "target", "up", "fovY"});
+    Camera c;
+    if (auto f = n.find("position")) c.position = f->vec3();
+    if (auto f = n.find("target")) c.target = f->vec3();
+    if (auto f = n.find("up")) c.up = f->nonZeroVec3();
+    if (auto f = n.find("fovY")) c.fovY = f->inRange(0.0f, 180.0f, true, true);
+    glm::vec3 view = c.target - c.position;
+    if (view == glm::vec3(0.0f)) n.failAt("target", "must differ from camera.position");
+    if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-6f)
+        n.failAt("up", "must not be parallel to the view direction (target - position)");
+    return c;
+}
+
+Light parseLight(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"type", "name", "position", "direction", "color", "attenuation"});
+    Light l;
+    JsonNode type = n.child("type");
+    std::string t = type.string();
+    if (t == "point") l.type = LightType::Point;
+    else if (t == "directional") l.type = LightType::Directional;
+    else type.fail("unknown light type '" + t + "'; expected point or directional");
+    if (auto f = n.find("name")) l.name = f->string();
+    // The other type's fields are optional and unused, but kept so that a saved scene loads back exactly.
+    if (l.type == LightType::Point) l.position = n.child("position").vec3();
+    else if (auto f = n.find("position")) l.position = f->vec3();
+    if (l.type == LightType::Directional) l.direction = n.child("direction").unitVec3();
+    else if (auto f = n.find("direction")) l.direction = f->unitVec3();
+    if (auto f = n.find("color")) l.color = f->rgb();
+    if (auto f = n.find("attenuation")) {
+        f->vec3();  // shape and finiteness
+        l.attenuation = {(*f)[0].nonNegative(), (*f)[1].nonNegative(), (*f)[2].nonNegative()};
+        if (l.attenuation == glm::vec3(0.0f)) f->fail("must not be all zero: 1/(kc + kl*d + kq*d^2) would divide by 0");
+    }
+    return l;
+}
+
+// ---- 2. Loading objects --------------------------------------------------------------------------------
+
+float nonZero(const JsonNode& n) {
+    float f = n.finite();
+    if (f == 0.0f) n.fail("must be non-zero");
+    return f;
+}
+
+// {"translate", "rotate" (Euler degrees, applied X then Y then Z), "scale"}: M = T · Rz · Ry · Rx · S.
+glm::mat4 parseTransform(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"translate", "rotate", "scale"});
+    glm::mat4 m(1.0f);
+    if (auto f = n.find("translate")) m = glm::translate(m, f->vec3());
+    if (auto f = n.find("rotate")) {
+        glm::vec3 r = f->vec3();
+        m = glm::rotate(m, glm::radians(r.z), glm::vec3(0, 0, 1));
+        m = glm::rotate(m, glm::radians(r.y), glm::vec3(0, 1, 0));
+        m = glm::rotate(m, glm::radians(r.x), glm::vec3(1, 0, 0));
+    }
+    if (auto f = n.find("scale")) {
+        glm::vec3 s = f->json().is_number() ? glm::vec3(nonZero(*f)) : f->vec3();
+        if (!f->json().is_number())
+            for (size_t i = 0; i < 3; ++i) nonZero((*f)[i]);  // vec3() has checked there are 3
+        m = glm::scale(m, s);
+    }
+    return m;
+}
+
+// 16 numbers, column-major (OpenGL and glTF order): an affine, invertible transform.
+glm::mat4 parseMatrix(const JsonNode& n) {
+    if (n.arraySize() != 16) n.fail("expected 16 numbers (column-major), got " + std::to_string(n.arraySize()));
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = n[static_cast<size_t>(i)].finite();
+    if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f)
+        n.fail("must be affine: elements 3, 7, 11, 15 (the last row) must be 0, 0, 0, 1");
+    if (glm::determinant(glm::mat3(m)) == 0.0f) n.fail("must be invertible (its 3x3 part has determinant 0)");
+    return m;
+}
+
+void parseObject(const JsonNode& n, const NamedMaterials& named, Scene& scene) {
+    n.requireObject();
+    JsonNode type = n.child("type");
+    std::string t = type.string();
+    std::string name = n.has("name") ? n.child("name").string() : std::string();
+    if (t == "sphere") {
+        n.warnUnknownKeys({"type", "name", "center", "radius", "material"});
+        Sphere s;
+        s.name = name;
+        s.center = n.child("center").vec3();
+        s.radius = n.child("radius").positive();
+        s.material = parseMaterial(n, named);
+        scene.spheres.push_back(s);
+    } else if (t == "plane") {
+        n.warnUnknownKeys({"type", "name", "normal", "offset", "point", "material", "checker"});
+        Plane p;
+        p.name = name;
+        if (auto f = n.find("normal")) p.normal = f->unitVec3();
+        if (n.has("offset") && n.has("point")) n.failAt("point", "give either \"offset\" or \"point\", not both");
+        if (auto f = n.find("offset")) p.offset = f->finite();
+        if (auto f = n.find("point")) {
+            glm::dvec3 q(f->vec3()), normal(p.normal);
+            p.offset = static_cast<float>(glm::dot(normal, q));
+        }
+        p.material = parseMaterial(n, named);
+        if (auto f = n.find("checker")) {
+            f->requireObject().warnUnknownKeys({"md2", "size"});
+            Checker c;
+            if (auto g = f->find("md2")) c.md2 = g->rgb();
+            if (auto g = f->find("size")) c.size = g->positive();
+            p.checker = c;
+        }
+        scene.planes.push_back(p);
+    } else if (t == "mesh") {
+        n.warnUnknownKeys({"type", "name", "source", "transform", "matrix", "material"});
+        Mesh m;
+        m.name = name;
+        m.source = n.child("source").string();
+        if (m.source.empty()) n.failAt("source", "must not be empty");
+        if (n.has("transform") && n.has("matrix"))
+            n.failAt("matrix", "give either \"transform\" or \"matrix\", not both");
+        if (auto f = n.find("transform")) m.transform = parseTransform(*f);
+        if (auto f = n.find("matrix")) m.transform = parseMatrix(*f);
+        if (auto f = n.find("material")) m.material = parseMaterialRef(*f, named);
+        scene.meshes.push_back(std::move(m));
+    } else {
+        type.fail("unknown object type '" + t + "'; expected sphere, plane or mesh");
+    }
+}
+
+}  // namespace
+
+// ---- 3. parseSceneJson ---------------------------------------------------------------------------------
+
+Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line)) {
+    nlohmann::json doc = parseJsonText(text, file);
+    JsonNode root(doc, "", file, warn);
+    root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "terms", "ambient",
+                                          "background", "maxDepth", "lights", "objects", "materials"});
+    Scene scene;
+    if (auto f = root.find("shadelab")) {
+        int version = f->integerIn(1, INT_MAX);
+        if (version > kFormatVersion)
+            f->fail("this file is format version " + std::to_string(version) + "; this build reads version " +
+                    std::to_string(kFormatVersion) + " or older");
+    }
+    if (auto f = root.find("title")) scene.title = f->string();
+    if (auto f = root.find("notes")) scene.notes = f->string();
+    if (auto f = root.find("camera")) scene.camera = parseCamera(*f);
+    if (auto f = root.find("model")) {
+        try {
+            scene.model = parseShadingModel(f->string());
+        } catch (const std::invalid_argument& e) {
+            f->fail(e.what());
+        }
+    }
+    if (auto f = root.find("terms")) {
+        f->requireObject().warnUnknownKeys({"ambient", "diffuse", "specular", "shadows", "reflections"});
+        Terms& t = scene.terms;
+        const std::pair<const char*, bool*> switches[] = {{"ambient", &t.ambient}, {"diffuse", &t.diffuse},
+            {"specular", &t.specular}, {"shadows", &t.shadows}, {"reflections", &t.reflections}};
+        for (const auto& [key, value] : switches)
+            if (auto g = f->find(key)) *value = g->boolean();
+    }
+    if (auto f = root.find("ambient")) scene.ambient = f->rgb();
+    if (auto f = root.find("background")) scene.background = f->rgb();
+    if (auto f = root.find("maxDepth")) scene.maxDepth = f->integerIn(0, kMaxDepthLimit);
+
+    if (auto f = root.find("lights")) {
+        size_t n = f->arraySize();
+        if (n > static_cast<size_t>(kMaxLights))
+            f->fail("too many lights: " + std::to_string(n) + "; at most " + std::to_string(kMaxLights));
+        for (size_t i = 0; i < n; ++i) scene.lights.push_back(parseLight((*f)[i]));
+    }
+    NamedMaterials named;
+    if (auto f = root.find("materials")) {
+        f->requireObject();
+        for (auto it = f->json().begin(); it != f->json().end(); ++it)
+            named[it.key()] = parseMaterialFields(f->child(it.key()));
+    }
+    if (auto f = root.find("objects")) {
+        size_t n = f->arraySize();
+        for (size_t i = 0; i < n; ++i) parseObject((*f)[i], named, scene);
+    }
+    return scene;
+}
+
+// ---- 4. Saving: exact floats and a readable layout -----------------------------------------------------
+
+namespace {
+
+using OJson = nlohmann::ordered_json;
+
+// The shortest decimal that reads back as exactly `f`, as a double: 0.1f is written "0.1", not
+// "0.10000000149011612". The loader reads a double and rounds it to float, so check that path.
+double exact(float f) {
+    char buf[64];
+    auto r = std::to_chars(buf, buf + sizeof buf, f);
+    double d = 0.0;
+    if (r.ec != std::errc() || std::from_chars(buf, r.ptr, d).ec != std::errc() || static_cast<float>(d) != f)
+        return static_cast<double>(f);
+    return d;
+}
+
+OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
+
+OJson materialJson(const Material& m) {
+    return {{"ma", vec(m.ma)}, {"md", vec(m.md)}, {"ms", vec(m.ms)}, {"s", exact(m.s)},
+            {"kr", vec(m.kr)}, {"kt", vec(m.kt)}, {"ior", exact(m.ior)}};
+}
+
+OJson overrideJson(const MaterialOverride& m) {
+    OJson j = OJson::object();
+    if (m.ma) j["ma"] = vec(*m.ma);
+    if (m.md) j["md"] = vec(*m.md);
+    if (m.ms) j["ms"] = vec(*m.ms);
+    if (m.s) j["s"] = exact(*m.s);
+    if (m.kr) j["kr"] = vec(*m.kr);
+    if (m.kt) j["kt"] = vec(*m.kt);
+    if (m.ior) j["ior"] = exact(*m.ior);
+    return j;
+}
+
+bool isScalar(const OJson& j) { return (!j.is_object() && !j.is_array()) || j.empty(); }
+
+std::string scalar(const OJson& j) { return j.dump(-1, ' ', false, OJson::error_handler_t::replace); }
+
+// One line: {"a": 1, "b": [1, 2, 3]}.
+std::string inlineForm(const OJson& j) {
+    if (isScalar(j)) return scalar(j);
+    std::string s = j.is_array() ? "[" : "{";
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        if (it != j.begin()) s += ", ";
+        if (j.is_object()) s += scalar(it.key()) + ": ";
+        s += inlineForm(*it);
+    }
+    return s + (j.is_array() ? "]" : "}");
+}
+
+// Vectors and small flat objects stay on one line; everything else gets one member per line.
+void writePretty(const OJson& j, int indent, std::string& out) {
+    bool flat = std::all_of(j.begin(), j.end(), [](const OJson& e) {
+        return isScalar(e) || (e.is_array() && std::all_of(e.begin(), e.end(), isScalar));
+    });
+    std::string one = inlineForm(j);
+    if (isScalar(j) || (j.is_array() && flat && one.size() <= 120) ||
+        (flat && indent + one.size() <= 100)) {
+        out += one;
+        return;
+    }
+    std::string pad(static_cast<size_t>(indent + 2), ' ');
+    out += j.is_array() ? "[\n" : "{\n";
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        out += pad;
+        if (j.is_object()) out += scalar(it.key()) + ": ";
+        writePretty(*it, indent + 2, out);
+        out += std::next(it) == j.end() ? "\n" : ",\n";
+    }
+    out += std::string(static_cast<size_t>(indent), ' ') + (j.is_array() ? "]" : "}");
+}
+
+}  // namespace
+
+// ---- 5. sceneToJson, saveSceneJson ---------------------------------------------------------------------
+
+std::string sceneToJson(const Scene& scene) {
+    OJson doc;
+    doc["shadelab"] = kFormatVersion;
+    doc["title"] = scene.title;
+    doc["notes"] = scene.notes;
+    const Camera& c = scene.camera;
+    doc["camera"] = {{"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)},
+                     {"fovY", exact(c.fovY)}};
+    doc["model"] = toString(scene.model);
+    const Terms& t = scene.terms;
+    doc["terms"] = {{"ambient", t.ambient}, {"diffuse", t.diffuse}, {"specular", t.specular},
+                    {"shadows", t.shadows}, {"reflections", t.reflections}};
+    doc["ambient"] = vec(scene.ambient);
+    doc["background"] = vec(scene.background);
+    doc["maxDepth"] = scene.maxDepth;
+
+    OJson lights = OJson::array();
+    for (const Light& l : scene.lights) {
+        lights.push_back({{"type", l.type == LightType::Point ? "point" : "directional"}, {"name", l.name},
+                          {"position", vec(l.position)}, {"direction", vec(l.direction)},
+                          {"color", vec(l.color)}, {"attenuation", vec(l.attenuation)}});
+    }
+    doc["lights"] = lights;
+
+    OJson objects = OJson::array();
+    for (const Sphere& s : scene.spheres) {
+        objects.push_back({{"type", "sphere"}, {"name", s.name}, {"center", vec(s.center)},
+                           {"radius", exact(s.radius)}, {"material", materialJson(s.material)}});
+    }
+    for (const Plane& p : scene.planes) {
+        OJson j = {{"type", "plane"}, {"name", p.name}, {"normal", vec(p.normal)}, {"offset", exact(p.offset)},
+                   {"material", materialJson(p.material)}};
+        if (p.checker) j["checker"] = {{"md2", vec(p.checker->md2)}, {"size", exact(p.checker->size)}};
+        objects.push_back(j);
+    }
+    for (const Mesh& m : scene.meshes) {
+        OJson j = {{"type", "mesh"}, {"name", m.name}, {"source", m.source}};
+        if (m.transform != glm::mat4(1.0f)) {
+            OJson matrix = OJson::array();
+            for (int i = 0; i < 16; ++i) matrix.push_back(exact(m.transform[i / 4][i % 4]));
+            j["matrix"] = matrix;
+        }
+        j["material"] = overrideJson(m.material);
+        objects.push_back(j);
+    }
+    doc["objects"] = objects;
+
+    std::string out;
+    writePretty(doc, 0, out);
+    return out + "\n";
+}
+
+void saveSceneJson(const Scene& scene, const std::string& path) { writeFileAtomic(path, sceneToJson(scene)); }
+
+}  // namespace shadelab

@@ -1,0 +1,506 @@
+// Tests for the scene JSON format (scene_json.h, docs/scene-format.md): exact round trips of every shipped
+// scene and of randomized scenes, one test per validation rule with its JSON path, warnings, and the
+// plane/material/transform conveniences. Text only: loadScene() owns files and glTF import.
+#include "scene/scene_json.h"
+
+#include "util/atomic_file.h"
+#include "util/input_error.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cfloat>
+#include <cstring>
+#include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+namespace {
+
+// ---- Field-by-field, bit-exact comparison: the list of differing fields, empty when equal ---------------
+
+struct Diff {
+    std::vector<std::string> fields;
+    void f(const std::string& name, float a, float b) {
+        if (std::memcmp(&a, &b, sizeof a) != 0) fields.push_back(name + " " + str(a) + " vs " + str(b));
+    }
+    void v(const std::string& name, const glm::vec3& a, const glm::vec3& b) {
+        for (int i = 0; i < 3; ++i) f(name + "[" + std::to_string(i) + "]", a[i], b[i]);
+    }
+    template <class T>
+    void eq(const std::string& name, const T& a, const T& b) {
+        if (!(a == b)) fields.push_back(name);
+    }
+    template <class T, class Fn>
+    void opt(const std::string& name, const std::optional<T>& a, const std::optional<T>& b, Fn cmp) {
+        if (a.has_value() != b.has_value()) fields.push_back(name + " presence");
+        else if (a) cmp(name, *a, *b);
+    }
+    static std::string str(float x) {
+        std::ostringstream s;
+        s.precision(9);
+        s << x;
+        return s.str();
+    }
+    void material(const std::string& p, const Material& a, const Material& b) {
+        v(p + ".ma", a.ma, b.ma), v(p + ".md", a.md, b.md), v(p + ".ms", a.ms, b.ms), f(p + ".s", a.s, b.s);
+        v(p + ".kr", a.kr, b.kr), v(p + ".kt", a.kt, b.kt), f(p + ".ior", a.ior, b.ior);
+    }
+    void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
+        auto vv = [this](const std::string& n, const glm::vec3& x, const glm::vec3& y) { v(n, x, y); };
+        auto ff = [this](const std::string& n, float x, float y) { f(n, x, y); };
+        opt(p + ".ma", a.ma, b.ma, vv), opt(p + ".md", a.md, b.md, vv), opt(p + ".ms", a.ms, b.ms, vv);
+        opt(p + ".s", a.s, b.s, ff), opt(p + ".kr", a.kr, b.kr, vv), opt(p + ".kt", a.kt, b.kt, vv);
+        opt(p + ".ior", a.ior, b.ior, ff);
+    }
+};
+
+std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
+    Diff d;
+    d.eq("title", a.title, b.title), d.eq("notes", a.notes, b.notes);
+    d.v("camera.position", a.camera.position, b.camera.position);
+    d.v("camera.target", a.camera.target, b.camera.target);
+    d.v("camera.up", a.camera.up, b.camera.up), d.f("camera.fovY", a.camera.fovY, b.camera.fovY);
+    d.eq("model", a.model, b.model);
+    d.eq("terms.ambient", a.terms.ambient, b.terms.ambient), d.eq("terms.diffuse", a.terms.diffuse, b.terms.diffuse);
+    d.eq("terms.specular", a.terms.specular, b.terms.specular);
+    d.eq("terms.shadows", a.terms.shadows, b.terms.shadows);
+    d.eq("terms.reflections", a.terms.reflections, b.terms.reflections);
+    d.v("ambient", a.ambient, b.ambient), d.v("background", a.background, b.background);
+    d.eq("maxDepth", a.maxDepth, b.maxDepth);
+    d.eq("lights.size", a.lights.size(), b.lights.size());
+    for (size_t i = 0; i < std::min(a.lights.size(), b.lights.size()); ++i) {
+        const Light &x = a.lights[i], &y = b.lights[i];
+        std::string p = "lights[" + std::to_string(i) + "]";
+        d.eq(p + ".type", x.type, y.type), d.eq(p + ".name", x.name, y.name);
+        d.v(p + ".position", x.position, y.position), d.v(p + ".direction", x.direction, y.direction);
+        d.v(p + ".color", x.color, y.color), d.v(p + ".attenuation", x.attenuation, y.attenuation);
+    }
+    d.eq("spheres.size", a.spheres.size(), b.spheres.size());
+    for (size_t i = 0; i < std::min(a.spheres.size(), b.spheres.size()); ++i) {
+        const Sphere &x = a.spheres[i], &y = b.spheres[i];
+        std::string p = "spheres[" + std::to_string(i) + "]";
+        d.eq(p + ".name", x.name, y.name), d.v(p + ".center", x.center, y.center);
+        d.f(p + ".radius", x.radius, y.radius), d.material(p + ".material", x.material, y.material);
+    }
+    d.eq("planes.size", a.planes.size(), b.planes.size());
+    for (size_t i = 0; i < std::min(a.planes.size(), b.planes.size()); ++i) {
+        const Plane &x = a.planes[i], &y = b.planes[i];
+        std::string p = "planes[" + std::to_string(i) + "]";
+        d.eq(p + ".name", x.name, y.name), d.v(p + ".normal", x.normal, y.normal);
+        d.f(p + ".offset", x.offset, y.offset), d.material(p + ".material", x.material, y.material);
+        d.opt(p + ".checker", x.checker, y.checker, [&d](const std::string& n, const Checker& c, const Checker& e) {
+            d.v(n + ".md2", c.md2, e.md2), d.f(n + ".size", c.size, e.size);
+        });
+    }
+    d.eq("meshes.size", a.meshes.size(), b.meshes.size());
+    for (size_t i = 0; i < std::min(a.meshes.size(), b.meshes.size()); ++i) {
+        const Mesh &x = a.meshes[i], &y = b.meshes[i];
+        std::string p = "meshes[" + std::to_string(i) + "]";
+        d.eq(p + ".name", x.name, y.name), d.eq(p + ".source", x.source, y.source);
+        for (int k = 0; k < 16; ++k)
+            d.f(p + ".transform[" + std::to_string(k) + "]", x.transform[k / 4][k % 4], y.transform[k / 4][k % 4]);
+        d.materialOverride(p + ".material", x.material, y.material);
+    }
+    return d.fields;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const std::string& x : v) s += x + "\n";
+    return s;
+}
+
+std::vector<std::string> gWarnings;
+void collectWarning(const std::string& line) { gWarnings.push_back(line); }
+
+Scene parse(const std::string& text) {
+    gWarnings.clear();
+    return parseSceneJson(text, "a.json", collectWarning);
+}
+
+// Saves, reloads and checks that nothing changed, and that saving again gives the same text.
+void expectRoundTrip(const Scene& scene) {
+    std::string text = sceneToJson(scene);
+    Scene back = parse(text);
+    EXPECT_EQ(joined(diffScenes(scene, back)), "") << text;
+    EXPECT_EQ(sceneToJson(back), text);
+    EXPECT_TRUE(gWarnings.empty()) << joined(gWarnings);
+}
+
+// ---- Round trips -----------------------------------------------------------------------------------------
+
+TEST(SceneJson, EveryShippedSceneRoundTripsExactlyWithoutWarnings) {
+    std::filesystem::path dir = std::filesystem::path(SHADELAB_SOURCE_DIR) / "assets" / "scenes";
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".json") continue;
+        SCOPED_TRACE(entry.path().string());
+        gWarnings.clear();
+        Scene s = parseSceneJson(readFile(entry.path().string()), entry.path().string(), collectWarning);
+        EXPECT_TRUE(gWarnings.empty()) << joined(gWarnings);
+        EXPECT_FALSE(s.title.empty());
+        EXPECT_FALSE(s.notes.empty());
+        EXPECT_FALSE(s.lights.empty());
+        expectRoundTrip(s);
+        ++count;
+    }
+    EXPECT_GE(count, 3);
+}
+
+TEST(SceneJson, DefaultSceneIsTheLectureDemo) {
+    std::string path = std::string(SHADELAB_SOURCE_DIR) + "/assets/scenes/default.json";
+    Scene s = parseSceneJson(readFile(path), path);
+    EXPECT_GE(s.spheres.size(), 4u);
+    EXPECT_LE(s.spheres.size(), 6u);
+    ASSERT_EQ(s.planes.size(), 1u);
+    EXPECT_TRUE(s.planes[0].checker.has_value());
+    for (const Sphere& sp : s.spheres) EXPECT_FLOAT_EQ(sp.center.y, sp.radius) << sp.name << " rests on y = 0";
+}
+
+struct RandomSceneMaker {
+    std::mt19937 rng{20240611u};
+
+    float any() {  // awkward values a third of the time, else a random magnitude over many octaves
+        static const float awkward[] = {0.1f, 1e-7f, 12345.678f, 1.0f / 3.0f, 0.0f, -0.0f, 1e-45f, FLT_MIN,
+                                        16777217.0f, 0.3f, 2.5e30f, 1.0f - FLT_EPSILON / 2, 100.0f, 0.7f};
+        std::uniform_int_distribution<int> pick(0, 2);
+        if (pick(rng) == 0) return awkward[std::uniform_int_distribution<size_t>(0, std::size(awkward) - 1)(rng)];
+        float m = std::uniform_real_distribution<float>(-1.0f, 1.0f)(rng);
+        return std::ldexp(m, std::uniform_int_distribution<int>(-30, 30)(rng));
+    }
+    float nonNegative() { return std::abs(any()); }
+    float positive() {
+        float f = nonNegative();
+        return f > 0.0f ? f : 0.25f;
+    }
+    float in(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
+    bool coin() { return std::uniform_int_distribution<int>(0, 1)(rng) == 1; }
+    int upTo(int n) { return std::uniform_int_distribution<int>(0, n)(rng); }
+    glm::vec3 vec() { return {any(), any(), any()}; }
+    glm::vec3 rgb() { return {nonNegative(), nonNegative(), nonNegative()}; }
+    glm::vec3 unit() { return glm::normalize(glm::vec3(in(-1, 1), in(-1, 1), in(-1, 1)) + glm::vec3(0.01f)); }
+    std::string name() {
+        static const char* names[] = {"", "key", "fill \"quoted\"", "back\\slash", "ünïcødé ☀", "tab\there", "x"};
+        return names[upTo(static_cast<int>(std::size(names)) - 1)];
+    }
+    Material material() {
+        Material m;
+        m.ma = rgb(), m.md = rgb(), m.ms = rgb(), m.kr = rgb(), m.kt = rgb();
+        m.s = coin() ? in(0.0f, kMaxShininess) : (coin() ? 0.0f : kMaxShininess);
+        m.ior = positive();
+        return m;
+    }
+
+    Scene make() {
+        Scene s;
+        s.title = name(), s.notes = "line one\nline two: 5 < 6 & \"7\"";
+        s.camera.position = {in(-50, 50), in(-50, 50), in(-50, 50)};
+        s.camera.target = s.camera.position + unit() * in(0.1f, 10.0f);
+        s.camera.up = unit();
+        s.camera.fovY = coin() ? in(1e-3f, 179.9f) : 0.1f;
+        s.model = coin() ? ShadingModel::Phong : ShadingModel::BlinnPhong;
+        s.terms = {coin(), coin(), coin(), coin(), coin()};
+        s.ambient = rgb(), s.background = rgb(), s.maxDepth = upTo(64);
+        for (int i = upTo(kMaxLights); i > 0; --i) {
+            Light l;
+            l.type = coin() ? LightType::Point : LightType::Directional;
+            l.name = name(), l.position = vec(), l.direction = unit(), l.color = rgb();
+            l.attenuation = {positive(), nonNegative(), nonNegative()};
+            s.lights.push_back(l);
+        }
+        for (int i = upTo(6); i > 0; --i) s.spheres.push_back({name(), vec(), positive(), material()});
+        for (int i = upTo(3); i > 0; --i) {
+            Plane p{name(), unit(), any(), material(), std::nullopt};
+            if (coin()) p.checker = Checker{rgb(), positive()};
+            s.planes.push_back(p);
+        }
+        for (int i = upTo(3); i > 0; --i) {
+            Mesh m;
+            m.name = name(), m.source = coin() ? "../models/duck.glb" : "sub dir/ünï.gltf";
+            if (coin()) {
+                m.transform = glm::translate(glm::mat4(1.0f), vec());
+                m.transform = glm::rotate(m.transform, in(-7, 7), unit());
+                m.transform = glm::scale(m.transform, glm::vec3(in(0.01f, 100), -in(0.01f, 100), in(0.01f, 100)));
+            }
+            if (coin()) m.material.ma = rgb();
+            if (coin()) m.material.md = rgb();
+            if (coin()) m.material.ms = rgb();
+            if (coin()) m.material.s = in(0.0f, kMaxShininess);
+            if (coin()) m.material.kr = rgb();
+            if (coin()) m.material.kt = rgb();
+            if (coin()) m.material.ior = positive();
+            s.meshes.push_back(m);
+        }
+        return s;
+    }
+};
+
+TEST(SceneJson, RandomizedScenesRoundTripExactly) {
+    RandomSceneMaker maker;
+    for (int i = 0; i < 50; ++i) {
+        SCOPED_TRACE("random scene " + std::to_string(i));
+        expectRoundTrip(maker.make());
+        if (HasFailure()) break;
+    }
+}
+
+TEST(SceneJson, DefaultSceneRoundTripsAndEmptyObjectGivesDefaults) {
+    expectRoundTrip(Scene{});
+    EXPECT_EQ(joined(diffScenes(parse("{}"), Scene{})), "");
+}
+
+TEST(SceneJson, SavedFileIsReadableAndComplete) {
+    Scene s;
+    s.ambient = glm::vec3(0.1f);
+    s.spheres.push_back({"ball", {0.0f, 1.0f, 0.0f}, 1.0f, Material{}});
+    std::string text = sceneToJson(s);
+    EXPECT_NE(text.find("\"ambient\": [0.1, 0.1, 0.1]"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0.10000000149"), std::string::npos) << text;
+    for (const char* key : {"\"shadelab\": 1", "\"title\"", "\"notes\"", "\"camera\"", "\"fovY\"",
+                            "\"model\": \"phong\"", "\"terms\"", "\"reflections\"", "\"background\"",
+                            "\"maxDepth\": 5", "\"lights\"", "\"ior\""})
+        EXPECT_NE(text.find(key), std::string::npos) << key << "\n" << text;
+}
+
+TEST(SceneJson, SaveWritesTheFile) {
+    std::filesystem::create_directories(SHADELAB_TEST_OUTPUT_DIR);
+    std::string path = std::string(SHADELAB_TEST_OUTPUT_DIR) + "/saved.json";
+    Scene s = RandomSceneMaker().make();
+    saveSceneJson(s, path);
+    EXPECT_EQ(joined(diffScenes(parseSceneJson(readFile(path), path), s)), "");
+}
+
+// ---- Conveniences: plane point, named materials, grey numbers, transforms, comments -------------------------
+
+TEST(SceneJson, PlaneFromPointAgreesWithOffset) {
+    Scene a = parse(R"({"objects": [{"type": "plane", "normal": [0, 2, 0], "point": [5, 3, 7]},
+                                    {"type": "plane", "normal": [0, 1, 0], "offset": 3},
+                                    {"type": "plane", "normal": [1, 1, 0], "point": [1, 1, 0]},
+                                    {"type": "plane", "normal": [0.70710678, 0.70710678, 0], "offset": 1.41421356}]})");
+    ASSERT_EQ(a.planes.size(), 4u);
+    EXPECT_EQ(a.planes[0].normal, glm::vec3(0, 1, 0));
+    EXPECT_EQ(a.planes[0].offset, 3.0f);
+    Diff d;
+    d.v("normal", a.planes[0].normal, a.planes[1].normal), d.f("offset", a.planes[0].offset, a.planes[1].offset);
+    EXPECT_EQ(joined(d.fields), "");
+    EXPECT_NEAR(glm::length(a.planes[2].normal), 1.0f, 1e-6f);
+    EXPECT_NEAR(a.planes[2].offset, a.planes[3].offset, 1e-6f);
+    EXPECT_NEAR(a.planes[2].normal.x, a.planes[3].normal.x, 1e-6f);
+}
+
+TEST(SceneJson, NamedMaterialsResolveForEveryObjectType) {
+    Scene s = parse(R"({"materials": {"gold": {"md": [0.8, 0.6, 0.2], "s": 64}, "my grey": {"md": 0.5}},
+        "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": "gold"},
+                    {"type": "plane", "material": "my grey"},
+                    {"type": "mesh", "source": "m.glb", "material": "gold"},
+                    {"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"ms": 0, "kr": 0.25}}]})");
+    ASSERT_EQ(s.spheres.size(), 2u);
+    Material gold;
+    gold.md = {0.8f, 0.6f, 0.2f}, gold.s = 64.0f;
+    Diff d;
+    d.material("gold sphere", s.spheres[0].material, gold);
+    Material grey;
+    grey.md = glm::vec3(0.5f);
+    d.material("grey plane", s.planes[0].material, grey);
+    Material partial;
+    partial.ms = glm::vec3(0.0f), partial.kr = glm::vec3(0.25f);
+    d.material("inline partial", s.spheres[1].material, partial);
+    MaterialOverride goldOverride;  // a mesh keeps the imported values of fields the material leaves out
+    goldOverride.md = gold.md, goldOverride.s = 64.0f;
+    d.materialOverride("gold mesh", s.meshes[0].material, goldOverride);
+    EXPECT_EQ(joined(d.fields), "");
+}
+
+TEST(SceneJson, MeshTransformComposesTranslateRotateScale) {
+    Scene s = parse(R"({"objects": [
+        {"type": "mesh", "source": "a.glb", "transform": {"translate": [1, 2, 3], "rotate": [0, 90, 0], "scale": 2}},
+        {"type": "mesh", "source": "b.glb", "transform": {"rotate": [90, 0, 90]}},
+        {"type": "mesh", "source": "c.glb", "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 4,5,6,1]},
+        {"type": "mesh", "source": "d.glb"}]})");
+    ASSERT_EQ(s.meshes.size(), 4u);
+    auto apply = [](const glm::mat4& m, glm::vec3 p) { return glm::vec3(m * glm::vec4(p, 1.0f)); };
+    glm::vec3 p = apply(s.meshes[0].transform, {1, 0, 0});  // scale 2, +90° about y: x → -z, then translate
+    EXPECT_LT(glm::distance(p, glm::vec3(1, 2, 1)), 1e-5f);
+    glm::vec3 q = apply(s.meshes[1].transform, {0, 1, 0});  // X first: y → z; then Z: z stays z
+    EXPECT_LT(glm::distance(q, glm::vec3(0, 0, 1)), 1e-5f);
+    glm::vec3 r = apply(s.meshes[1].transform, {1, 0, 0});  // X leaves x; then Z: x → y
+    EXPECT_LT(glm::distance(r, glm::vec3(0, 1, 0)), 1e-5f);
+    EXPECT_EQ(apply(s.meshes[2].transform, {0, 0, 0}), glm::vec3(4, 5, 6));
+    EXPECT_EQ(s.meshes[3].transform, glm::mat4(1.0f));
+    std::string text = sceneToJson(s);
+    EXPECT_NE(text.find("\"matrix\": [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 4.0, 5.0, 6.0, 1.0]"),
+              std::string::npos) << text;
+    nlohmann::json saved = nlohmann::json::parse(text);
+    EXPECT_TRUE(saved["objects"][2].contains("matrix"));
+    EXPECT_FALSE(saved["objects"][3].contains("matrix")) << "identity is omitted";
+    expectRoundTrip(s);
+}
+
+TEST(SceneJson, GreyNumbersCommentsVersionAndModel) {
+    Scene s = parse(R"(// a comment
+        {"shadelab": 1, /* another */ "ambient": 0.15, "model": "blinn-phong",
+         "lights": [{"type": "directional", "direction": [0, -2, 0], "color": 2}]})");
+    EXPECT_EQ(s.ambient, glm::vec3(0.15f));
+    EXPECT_EQ(s.model, ShadingModel::BlinnPhong);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].direction, glm::vec3(0, -1, 0));
+    EXPECT_EQ(s.lights[0].color, glm::vec3(2.0f));
+    EXPECT_STREQ(toString(parseShadingModel("phong")), "phong");
+    EXPECT_STREQ(toString(parseShadingModel("blinn-phong")), "blinn-phong");
+    EXPECT_THROW(parseShadingModel("gouraud"), std::invalid_argument);
+}
+
+TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
+    Scene s = parse(R"({"foo": 1, "camera": {"fovy": 30},
+        "lights": [{"type": "point", "position": [0, 1, 0], "colour": [1, 0, 0]}],
+        "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"ks": 0.5, "zzz": 1}}]})");
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].color, glm::vec3(1.0f));
+    EXPECT_EQ(s.camera.fovY, 45.0f);
+    std::vector<std::string> expected = {
+        "a.json: unknown field 'foo' (ignored)",
+        "a.json: camera: unknown field 'fovy' (ignored); did you mean 'fovY'?",
+        "a.json: lights[0]: unknown field 'colour' (ignored); did you mean 'color'?",
+        "a.json: objects[0].material: unknown field 'ks' (ignored); did you mean 'ms'?",
+        "a.json: objects[0].material: unknown field 'zzz' (ignored)"};
+    EXPECT_EQ(joined(gWarnings), joined(expected));
+    EXPECT_NO_THROW(parseSceneJson(R"({"foo": 1})", "a.json"));  // no warn callback: silently ignored
+}
+
+// ---- Errors: each names the file, the JSON path and the reason -------------------------------------------
+
+struct ErrorCase {
+    const char* place;   // expected JSON path or "line L, column C"
+    const char* reason;  // expected substring of the reason
+};
+
+std::string lightsJson(int n) {
+    std::string s = R"({"lights": [)";
+    for (int i = 0; i < n; ++i) s += std::string(i ? "," : "") + R"({"type": "point", "position": [0, 1, 0]})";
+    return s + "]}";
+}
+
+TEST(SceneJson, ErrorsNameThePathAndTheReason) {
+    const std::string sphere = R"({"objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1, )";
+    const std::string plane = R"({"objects": [{"type": "plane", )";
+    const std::string mesh = R"({"objects": [{"type": "mesh", "source": "m.glb", )";
+    const std::string ball = R"({"objects": [{"type": "sphere", )";
+    const std::string light = R"({"lights": [{"type": "point", "position": [0, 1, 0], )";
+    const std::string dirLight = R"({"lights": [{"type": "directional", "direction": [0, -1, 0], )";
+    std::string threeLights = R"({"lights": [{"type": "point", "position": [0, 1, 0]},
+        {"type": "directional", "direction": [0, -1, 0]}, {"type": "point", "position": [0, 1, 0], "color": [1, 1]}]})";
+    std::string tooMany = lightsJson(kMaxLights + 1);
+    std::string m = sphere + R"("material": )";
+    std::vector<std::pair<std::string, ErrorCase>> cases = {
+        {threeLights, {"lights[2].color", "expected 3 numbers, got 2"}},
+        {m + R"({"s": "high"}}]})", {"objects[0].material.s", "expected a number, got string"}},
+        {m + R"({"s": 20000}}]})", {"objects[0].material.s", "must be in [0, 10000]"}},
+        {m + R"({"s": -1}}]})", {"objects[0].material.s", "must be in [0, 10000]"}},
+        {m + R"({"ior": 0}}]})", {"objects[0].material.ior", "must be > 0"}},
+        {m + R"({"ms": -0.5}}]})", {"objects[0].material.ms", "must be >= 0"}},
+        {m + R"({"kr": [0.5, -1, 0]}}]})", {"objects[0].material.kr[1]", "must be >= 0"}},
+        {m + R"({"md": [1, 1, 1, 1]}}]})", {"objects[0].material.md", "expected 3 numbers, got 4"}},
+        {m + R"("golld"}]})", {"objects[0].material", "unknown material 'golld'"}},
+        {m + R"(7}]})", {"objects[0].material", "expected an object, got number"}},
+        {R"({"camera": {"fovY": 180}})", {"camera.fovY", "must be in (0, 180)"}},
+        {R"({"camera": {"fovY": 0}})", {"camera.fovY", "must be in (0, 180)"}},
+        {R"({"camera": {"fovY": 1e39}})", {"camera.fovY", "must be finite"}},
+        {R"({"camera": {"position": [0, "a", 0]}})", {"camera.position[1]", "expected a number, got string"}},
+        {R"({"camera": {"position": [0, 0.5, 0]}})", {"camera.target", "must differ from camera.position"}},
+        {R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})", {"camera.up", "parallel"}},
+        {R"({"camera": {"up": [0, 0, 0]}})", {"camera.up", "must be non-zero"}},
+        {R"({"camera": null})", {"camera", "expected an object, got null"}},
+        {R"({"lights": [{"type": "spot", "position": [0, 1, 0]}]})",
+         {"lights[0].type", "unknown light type 'spot'; expected point or directional"}},
+        {R"({"lights": [{"position": [0, 1, 0]}]})", {"lights[0].type", "missing required field"}},
+        {R"({"lights": [{"type": "point"}]})", {"lights[0].position", "missing required field"}},
+        {R"({"lights": [{"type": "directional"}]})", {"lights[0].direction", "missing required field"}},
+        {R"({"lights": [{"type": "directional", "direction": [0, 0, 0]}]})", {"lights[0].direction", "non-zero"}},
+        {light + R"("color": [-1, 1, 1]}]})", {"lights[0].color[0]", "must be >= 0"}},
+        {dirLight + R"("color": "white"}]})", {"lights[0].color", "expected 3 numbers or one number, got string"}},
+        {light + R"("attenuation": [0, 0, 0]}]})", {"lights[0].attenuation", "must not be all zero"}},
+        {light + R"("attenuation": [1, -0.1, 0]}]})", {"lights[0].attenuation[1]", "must be >= 0"}},
+        {light + R"("attenuation": 1}]})", {"lights[0].attenuation", "expected an array of 3 numbers"}},
+        {tooMany, {"lights", "too many lights: 33; at most 32"}},
+        {R"({"lights": {}})", {"lights", "expected an array, got object"}},
+        {R"({"objects": [{"type": "sphere", "radius": 1}]})", {"objects[0].center", "missing required field"}},
+        {R"({"objects": [{"type": "sphere", "center": [0, 0, 0]}]})", {"objects[0].radius", "missing required"}},
+        {ball + R"("center": [0, 0, 0], "radius": 0}]})", {"objects[0].radius", "must be > 0"}},
+        {ball + R"("center": [1e39, 0, 0], "radius": 1}]})", {"objects[0].center[0]", "must be finite"}},
+        {R"({"objects": [{"type": "cube"}]})", {"objects[0].type", "unknown object type 'cube'"}},
+        {R"({"objects": [3]})", {"objects[0]", "expected an object, got number"}},
+        {plane + R"("normal": [0, 0, 0]}]})", {"objects[0].normal", "must be non-zero"}},
+        {plane + R"("offset": 1, "point": [0, 1, 0]}]})", {"objects[0].point", "not both"}},
+        {plane + R"("checker": {"size": 0}}]})", {"objects[0].checker.size", "must be > 0"}},
+        {plane + R"("checker": {"md2": "grey"}}]})", {"objects[0].checker.md2", "expected 3 numbers or one number"}},
+        {R"({"objects": [{"type": "mesh"}]})", {"objects[0].source", "missing required field"}},
+        {R"({"objects": [{"type": "mesh", "source": ""}]})", {"objects[0].source", "must not be empty"}},
+        {mesh + R"("transform": {}, "matrix": []}]})", {"objects[0].matrix", "not both"}},
+        {mesh + R"("matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0]}]})",
+         {"objects[0].matrix", "expected 16 numbers"}},
+        {mesh + R"("matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 1]}]})", {"objects[0].matrix", "affine"}},
+        {mesh + R"("matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]}]})",
+         {"objects[0].matrix", "invertible"}},
+        {mesh + R"("transform": {"scale": 0}}]})", {"objects[0].transform.scale", "must be non-zero"}},
+        {mesh + R"("transform": {"scale": [1, 0, 1]}}]})", {"objects[0].transform.scale[1]", "must be non-zero"}},
+        {mesh + R"("transform": {"rotate": [0, 90]}}]})", {"objects[0].transform.rotate", "expected 3 numbers, got 2"}},
+        {mesh + R"("material": {"s": 1e5}}]})", {"objects[0].material.s", "must be in [0, 10000]"}},
+        {R"({"materials": {"gold": {"s": -3}}})", {"materials.gold.s", "must be in [0, 10000]"}},
+        {R"({"materials": {"my gold": {"ior": -3}}})", {"materials[\"my gold\"].ior", "must be > 0"}},
+        {R"({"materials": []})", {"materials", "expected an object, got array"}},
+        {R"({"maxDepth": 65})", {"maxDepth", "must be in [0, 64]"}},
+        {R"({"maxDepth": -1})", {"maxDepth", "must be in [0, 64]"}},
+        {R"({"maxDepth": 2.5})", {"maxDepth", "expected an integer"}},
+        {R"({"ambient": [0.1, 0.1, -0.1]})", {"ambient[2]", "must be >= 0"}},
+        {R"({"background": "black"})", {"background", "expected 3 numbers or one number, got string"}},
+        {R"({"model": "gouraud"})", {"model", "unknown shading model 'gouraud'; expected phong or blinn-phong"}},
+        {R"({"model": 1})", {"model", "expected a string, got number"}},
+        {R"({"terms": {"shadows": "yes"}})", {"terms.shadows", "expected true or false, got string"}},
+        {R"({"title": 5})", {"title", "expected a string, got number"}},
+        {R"({"shadelab": 2})", {"shadelab", "format version 2"}},
+        {R"({"shadelab": 0})", {"shadelab", "must be in [1, "}},
+        {"{\n  \"title\": \"x\",\n  \"notes\": y\n}", {"line 3, column 12", "syntax error while parsing value"}},
+        {"{\"title\": \"h\xC3\xA9llo\", x}", {"line 1, column 20", "syntax error"}},
+        {"", {"line 1, column 1", "unexpected end of input"}},
+        {R"({"title": "x",})", {"line 1, column 15", "syntax error"}},
+        {R"({"radius": 1e400})", {"", "number overflow"}},
+    };
+    for (const auto& [json, c] : cases) {
+        SCOPED_TRACE(json);
+        try {
+            parse(json);
+            ADD_FAILURE() << "no error; expected " << c.place << ": " << c.reason;
+        } catch (const InputError& e) {
+            std::string what = e.what();
+            std::string prefix = std::string("a.json: ") + (c.place[0] ? std::string(c.place) + ": " : "");
+            EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
+            EXPECT_NE(what.find(c.reason), std::string::npos) << what;
+            EXPECT_EQ(e.file(), "a.json");
+        }
+    }
+}
+
+TEST(SceneJson, ErrorMessageIsOneLineInTheDocumentedShape) {
+    try {
+        parse(R"({"lights": [{"type": "point", "position": [0, 1, 0]}, {"type": "point", "position": [0, 1, 0]},
+                             {"type": "point", "position": [0, 1, 0], "color": [1, 1]}]})");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "a.json: lights[2].color: expected 3 numbers, got 2");
+    }
+    try {
+        parse("{\"a\": 1,\n  x}");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "a.json: line 2, column 3: syntax error while parsing object key - invalid literal; "
+                               "last read: '1,<U+000A>  x'; expected string literal");
+    }
+}
+
+}  // namespace
+}  // namespace shadelab
