@@ -133,11 +133,8 @@ int renderCommand(int argc, char** argv) {
     renderer.draw(scene, width, height);
     glFinish();
     timer.stage("first draw (incl. lazy shader compile)");
-    ImageF image;
-    renderer.target().readColor(image);
-    timer.stage("readback");
-    Image8 pixels = toImage8(image, encoding);
-    timer.stage("conversion");
+    Image8 pixels = renderer.target().readColor8(encoding);
+    timer.stage("readback + conversion (strips)");
     std::vector<uint8_t> png = encodePng(pixels);
     timer.stage("PNG encode");
     writeFileAtomic(*output, png.data(), png.size());

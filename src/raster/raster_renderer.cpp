@@ -182,15 +182,11 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     glDisable(GL_CULL_FACE);  // two-sided lighting: back faces are lit with the flipped normal
     glUseProgram(meshProgram_.id());
     glBindVertexArray(meshVao_.id());
-    size_t sinceFlush = 0;
-    static const size_t flushEvery = getenv("SL_FLUSH") ? size_t(atoi(getenv("SL_FLUSH"))) : 0;
     for (const DrawRange& r : ranges_) {
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
         setMaterial(meshProgram_, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
-        sinceFlush += r.indexCount / 3;
-        if (flushEvery && sinceFlush > flushEvery) { glFlush(); sinceFlush = 0; }
     }
 
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.

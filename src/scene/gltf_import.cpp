@@ -1,0 +1,557 @@
+// glTF 2.0 import through tinygltf: node hierarchy → world-space MeshParts, KHR_lights_punctual lights,
+// the first perspective camera, and metallic-roughness → Phong (docs/gltf-import.md). Accessor bytes are
+// read, bounds-checked, by gltf_accessors.cpp.
+//
+// Sections: 1. loading   2. node transforms   3. primitives (triangulation, normals)   4. materials
+//           5. the importer: hierarchy walk, meshes, lights, camera   6. public functions
+#include "scene/gltf_import.h"
+
+#include "scene/gltf_accessors.h"
+#include "util/input_error.h"
+
+#include <tiny_gltf.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <unordered_set>
+
+namespace shadelab {
+namespace {
+
+constexpr int kMaxNodeDepth = 1000;             // deeper hierarchies are rejected, not walked
+constexpr size_t kMaxNodeVisits = size_t(1) << 20;  // bounds node sharing (a node under several parents)
+const glm::vec3 kFallbackNormal{0.0f, 1.0f, 0.0f};  // for vertices whose faces have no area
+
+std::string indexed(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
+
+// ---------------------------------------------------------------------------------------------------------
+// 1. Loading
+// ---------------------------------------------------------------------------------------------------------
+
+std::string trim(const std::string& s) {
+    const size_t b = s.find_first_not_of(" \t\r\n");
+    if (b == std::string::npos) return {};
+    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+void appendLines(const std::string& text, std::vector<std::string>& out) {
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = trim(text.substr(start, end - start));
+        if (!line.empty()) out.push_back(std::move(line));
+        start = end + 1;
+    }
+}
+
+// Textures are not sampled (docs/gltf-import.md), so images are read but never decoded.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+               void*) {
+    return true;
+}
+
+tinygltf::Model loadModel(const std::string& path, std::vector<std::string>& warnings) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a glTF file");
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skipImage, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = false;
+    if (ext == ".glb")
+        ok = loader.LoadBinaryFromFile(&model, &err, &warn, path);
+    else if (ext == ".gltf")
+        ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    else
+        throw InputError(path, "expected a .gltf or .glb file");
+    if (!ok) {
+        std::vector<std::string> lines;
+        appendLines(err, lines);
+        throw InputError(path, lines.empty() ? std::string("tinygltf failed without a message") : lines.front());
+    }
+    appendLines(warn, warnings);
+    appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
+    return model;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 2. Node transforms (glTF 2.0 spec, "Transformations": matrix, or T * R * S)
+// ---------------------------------------------------------------------------------------------------------
+
+bool allFinite(const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+glm::dmat4 localMatrix(const tinygltf::Node& node, size_t index, const std::string& file,
+                       std::vector<std::string>& warnings) {
+    const std::string place = indexed("nodes", index);
+    auto check = [&](const std::vector<double>& v, size_t n, const char* name) {
+        if (!v.empty() && v.size() != n)
+            throw InputError(file, place, std::string(name) + " must have " + std::to_string(n) + " numbers");
+        if (!allFinite(v)) throw InputError(file, place, std::string(name) + " has a non-finite value");
+    };
+    check(node.matrix, 16, "matrix");
+    check(node.translation, 3, "translation");
+    check(node.rotation, 4, "rotation");
+    check(node.scale, 3, "scale");
+    if (!node.matrix.empty()) return glm::make_mat4(node.matrix.data());  // column-major, as glTF stores it
+
+    glm::dmat4 m(1.0);
+    if (!node.translation.empty())
+        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    if (!node.rotation.empty()) {
+        const auto& r = node.rotation;  // glTF order x, y, z, w; glm's constructor takes w first
+        glm::dquat q(r[3], r[0], r[1], r[2]);
+        const double len = glm::length(q);
+        if (len > 1e-12)
+            m *= glm::mat4_cast(q / len);
+        else
+            warnings.push_back(place + ": zero rotation quaternion treated as identity");
+    }
+    if (!node.scale.empty()) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return m;
+}
+
+// Normals transform by the inverse transpose (Turkowski 1990, "Properties of surface-normal transformations").
+// The cofactor matrix is det(M)·M^-T; scaling it by sign(det) keeps the inverse transpose's orientation
+// and stays defined when M is singular (a zero scale flattens normals instead of failing).
+glm::mat3 normalMatrix(const glm::dmat3& m) {
+    const glm::dmat3 cofactor(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]), glm::cross(m[0], m[1]));
+    return glm::mat3(glm::determinant(m) < 0.0 ? -cofactor : cofactor);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 3. Primitives
+// ---------------------------------------------------------------------------------------------------------
+
+// glTF 2.0 spec, "Meshes" (primitive topology): strip triangle i is (i, i+1+i%2, i+2-i%2); fan triangle i is
+// (i+1, i+2, 0). Returns how many trailing indices of a TRIANGLES list formed no whole triangle.
+size_t triangulate(int mode, const std::vector<uint32_t>& v, std::vector<uint32_t>& out) {
+    const size_t n = v.size();
+    out.clear();
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        if (n < 3) return n;
+        out.reserve(3 * (n - 2));
+        for (size_t i = 0; i + 2 < n; ++i) {
+            if (mode == TINYGLTF_MODE_TRIANGLE_STRIP)
+                out.insert(out.end(), {v[i], v[i + 1 + i % 2], v[i + 2 - i % 2]});
+            else
+                out.insert(out.end(), {v[i + 1], v[i + 2], v[0]});
+        }
+        return 0;
+    }
+    out.assign(v.begin(), v.begin() + std::ptrdiff_t(n / 3 * 3));
+    return n % 3;
+}
+
+// Area-weighted vertex normals: each triangle adds its unnormalised cross product (twice its area) to its
+// three vertices. Unshared vertices (non-indexed data) therefore get flat face normals.
+void generateNormals(const MeshPart& part, std::vector<glm::vec3>& out) {
+    out.assign(part.positions.size(), glm::vec3(0.0f));
+    const auto& p = part.positions;
+    for (size_t t = 0; t + 2 < part.indices.size(); t += 3) {
+        const uint32_t a = part.indices[t], b = part.indices[t + 1], c = part.indices[t + 2];
+        const glm::vec3 n = glm::cross(p[b] - p[a], p[c] - p[a]);
+        out[a] += n;
+        out[b] += n;
+        out[c] += n;
+    }
+    for (glm::vec3& n : out) {
+        const float len2 = glm::dot(n, n);
+        n = len2 > 0.0f && std::isfinite(len2) ? n / std::sqrt(len2) : kFallbackNormal;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 4. Materials
+// ---------------------------------------------------------------------------------------------------------
+
+float finiteClamp(double x, float lo, float hi, float fallback) {
+    return std::isfinite(x) ? std::clamp(float(x), lo, hi) : fallback;
+}
+
+glm::vec3 colorFrom(const std::vector<double>& v, glm::vec3 fallback) {
+    if (v.size() < 3) return fallback;
+    return {finiteClamp(v[0], 0.0f, 1.0f, fallback.r), finiteClamp(v[1], 0.0f, 1.0f, fallback.g),
+            finiteClamp(v[2], 0.0f, 1.0f, fallback.b)};
+}
+
+double numberOr(const tinygltf::Value& obj, const char* key, double fallback) {
+    if (!obj.IsObject() || !obj.Has(key)) return fallback;
+    const tinygltf::Value& v = obj.Get(key);
+    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+std::vector<double> numbersOf(const tinygltf::Value& obj, const char* key) {
+    std::vector<double> out;
+    if (!obj.IsObject() || !obj.Has(key) || !obj.Get(key).IsArray()) return out;
+    const tinygltf::Value& a = obj.Get(key);
+    for (size_t i = 0; i < a.ArrayLen(); ++i) {
+        const tinygltf::Value& x = a.Get(int(i));
+        out.push_back(x.IsNumber() ? x.GetNumberAsDouble() : std::nan(""));
+    }
+    return out;
+}
+
+Material materialFrom(const tinygltf::Material& gm, const std::string& place, std::vector<std::string>& warnings) {
+    const auto& pbr = gm.pbrMetallicRoughness;
+    Material m = phongFromMetallicRoughness(colorFrom(pbr.baseColorFactor, glm::vec3(1.0f)),
+                                            finiteClamp(pbr.metallicFactor, 0.0f, 1.0f, 1.0f),
+                                            finiteClamp(pbr.roughnessFactor, 0.0f, 1.0f, 1.0f));
+    // KHR_materials_pbrSpecularGlossiness is a Phong-like model already: diffuse → md, specular → ms.
+    auto sg = gm.extensions.find("KHR_materials_pbrSpecularGlossiness");
+    if (sg != gm.extensions.end()) {
+        const float roughness = 1.0f - finiteClamp(numberOr(sg->second, "glossinessFactor", 1.0), 0.0f, 1.0f, 1.0f);
+        const Material shape = phongFromMetallicRoughness(glm::vec3(1.0f), 0.0f, roughness);
+        m.md = m.ma = colorFrom(numbersOf(sg->second, "diffuseFactor"), glm::vec3(1.0f));
+        m.ms = colorFrom(numbersOf(sg->second, "specularFactor"), glm::vec3(1.0f));
+        m.s = shape.s;
+    }
+    auto ior = gm.extensions.find("KHR_materials_ior");
+    if (ior != gm.extensions.end()) {
+        const double value = numberOr(ior->second, "ior", 1.5);
+        if (std::isfinite(value) && value > 0.0)
+            m.ior = float(value);
+        else
+            warnings.push_back(place + ".extensions.KHR_materials_ior: ior " + std::to_string(value) +
+                               " ignored (kept 1.5)");
+    }
+    return m;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 5. The importer
+// ---------------------------------------------------------------------------------------------------------
+
+class Importer {
+public:
+    Importer(const tinygltf::Model& model, const std::string& file, GltfImport& out)
+        : model_(model), file_(file), out_(out), onPath_(model.nodes.size(), 0), seen_(model.nodes.size(), 0) {
+        // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
+        // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
+        defaultMaterial_ = Material{};
+        size_t textured = 0;
+        for (size_t i = 0; i < model.materials.size(); ++i) {
+            materials_.push_back(materialFrom(model.materials[i], indexed("materials", i), out_.warnings));
+            if (model.materials[i].pbrMetallicRoughness.baseColorTexture.index >= 0) ++textured;
+        }
+        if (textured > 0)
+            warnOnce(std::to_string(textured) + " material(s) have a base colour texture; textures are ignored");
+        if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
+        for (const std::string& ext : model.extensionsRequired) {
+            if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
+                throw InputError(file_, "extensionsRequired", ext + " is not supported");
+        }
+    }
+
+    void run(const glm::dmat4& transform) {
+        std::vector<int> roots;
+        if (!model_.scenes.empty()) {
+            size_t scene = 0;
+            if (model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size())
+                scene = size_t(model_.defaultScene);
+            else if (model_.defaultScene >= 0)
+                warnOnce("scene " + std::to_string(model_.defaultScene) + " out of range; using scene 0");
+            roots = model_.scenes[scene].nodes;
+            for (int r : roots) checkNode(r, indexed("scenes", scene) + ".nodes");
+        } else {
+            // No scenes: every node that is nobody's child is a root.
+            std::vector<char> isChild(model_.nodes.size(), 0);
+            for (size_t i = 0; i < model_.nodes.size(); ++i)
+                for (int c : model_.nodes[i].children) {
+                    checkNode(c, indexed("nodes", i) + ".children");
+                    isChild[size_t(c)] = 1;
+                }
+            for (size_t i = 0; i < model_.nodes.size(); ++i)
+                if (!isChild[i]) roots.push_back(int(i));
+        }
+        for (int r : roots) visit(size_t(r), transform, 0);
+
+        // KHR_lights_punctual intensities are candela (point) or lux (directional); the lighting contract has
+        // no units and no falloff by default, so keep only the ratios: the brightest light gets Il = color.
+        const float brightest = lightIntensities_.empty()
+                                    ? 0.0f
+                                    : *std::max_element(lightIntensities_.begin(), lightIntensities_.end());
+        for (size_t i = 0; i < out_.lights.size(); ++i)
+            out_.lights[i].color *= brightest > 0.0f ? lightIntensities_[i] / brightest : 0.0f;
+        if (out_.parts.empty()) warnOnce("no triangles imported");
+    }
+
+private:
+    void warnOnce(const std::string& line) {
+        if (warned_.insert(line).second) out_.warnings.push_back(line);
+    }
+
+    void checkNode(int index, const std::string& place) const {
+        if (index < 0 || size_t(index) >= model_.nodes.size())
+            throw InputError(file_, place,
+                             "node " + std::to_string(index) + " out of range (" +
+                                 std::to_string(model_.nodes.size()) + " nodes)");
+    }
+
+    void visit(size_t index, const glm::dmat4& parent, int depth) {
+        const std::string place = indexed("nodes", index);
+        if (onPath_[index]) throw InputError(file_, place, "node hierarchy has a cycle");
+        if (depth > kMaxNodeDepth)
+            throw InputError(file_, place, "node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
+        if (++visits_ > kMaxNodeVisits)
+            throw InputError(file_, place, "node hierarchy expands to too many node instances");
+        if (seen_[index]) warnOnce(place + " has more than one parent; instanced under each");
+        seen_[index] = onPath_[index] = 1;
+
+        const tinygltf::Node& node = model_.nodes[index];
+        const glm::dmat4 world = parent * localMatrix(node, index, file_, out_.warnings);
+        if (node.skin >= 0) warnOnce("skins are ignored (meshes are placed by their node transform)");
+        if (node.mesh >= 0) addMesh(node, place, world);
+        if (node.camera >= 0) addCamera(node, place, world);
+        if (node.extensions.count("KHR_lights_punctual")) addLight(node, place, world);
+        for (int child : node.children) {
+            checkNode(child, place + ".children");
+            visit(size_t(child), world, depth + 1);
+        }
+        onPath_[index] = 0;
+    }
+
+    void addMesh(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {
+        if (size_t(node.mesh) >= model_.meshes.size())
+            throw InputError(file_, place,
+                             "mesh " + std::to_string(node.mesh) + " out of range (" +
+                                 std::to_string(model_.meshes.size()) + " meshes)");
+        const glm::dmat3 linear(world);
+        const glm::mat4 toWorld(world);
+        const glm::mat3 toWorldNormal = normalMatrix(linear);
+        const bool mirrored = glm::determinant(linear) < 0.0;
+        const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+        for (size_t i = 0; i < mesh.primitives.size(); ++i)
+            addPrimitive(mesh.primitives[i],
+                         indexed("meshes", size_t(node.mesh)) + "." + indexed("primitives", i), place, toWorld,
+                         toWorldNormal, mirrored);
+    }
+
+    void addPrimitive(const tinygltf::Primitive& prim, const std::string& where, const std::string& nodePlace,
+                      const glm::mat4& toWorld, const glm::mat3& toWorldNormal, bool mirrored) {
+        static const char* const kModeNames[] = {"points", "lines", "line loop", "line strip"};
+        const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
+            warnOnce(where + ": " + kModeNames[mode] + " skipped (only triangles are imported)");
+            return;
+        }
+        if (mode > TINYGLTF_MODE_TRIANGLE_FAN) {
+            warnOnce(where + ": unknown mode " + std::to_string(mode) + " skipped");
+            return;
+        }
+        if (prim.extensions.count("KHR_draco_mesh_compression"))
+            warnOnce(where + ": Draco compression is not supported; reading the uncompressed accessors");
+        if (!prim.targets.empty()) warnOnce("morph targets are ignored (the base shape is imported)");
+        const auto position = prim.attributes.find("POSITION");
+        if (position == prim.attributes.end()) {
+            warnOnce(where + ": no POSITION attribute; skipped");
+            return;
+        }
+
+        MeshPart part;
+        const size_t vertexCount =
+            gltf::accessorCount(model_, position->second, file_, where + ".attributes.POSITION");
+        gltf::readVec3(model_, position->second, file_, part.positions);
+
+        // Indices (or 0..n-1), each checked against the vertex count, then triangulated.
+        if (prim.indices >= 0) {
+            gltf::accessorCount(model_, prim.indices, file_, where + ".indices");
+            gltf::readIndices(model_, prim.indices, file_, indices_);
+            for (size_t k = 0; k < indices_.size(); ++k)
+                if (indices_[k] >= vertexCount)
+                    throw InputError(file_, indexed("accessors", size_t(prim.indices)),
+                                     "index " + std::to_string(indices_[k]) + " at element " + std::to_string(k) +
+                                         " is out of range (" + std::to_string(vertexCount) + " vertices)");
+        } else {
+            indices_.resize(vertexCount);
+            for (size_t k = 0; k < vertexCount; ++k) indices_[k] = uint32_t(k);
+        }
+        const size_t leftover = triangulate(mode, indices_, part.indices);
+        if (leftover > 0 && mode == TINYGLTF_MODE_TRIANGLES)
+            warnOnce(where + ": " + std::to_string(leftover) + " trailing indices form no triangle; dropped");
+        if (part.indices.empty()) {
+            warnOnce(where + ": no complete triangle; skipped");
+            return;
+        }
+
+        // Positions: non-finite input is an error (docs/gltf-import.md), as is overflow to infinity.
+        for (glm::vec3& p : part.positions) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                throw InputError(file_, indexed("accessors", size_t(position->second)), "non-finite value");
+            p = glm::vec3(toWorld * glm::vec4(p, 1.0f));
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                throw InputError(file_, nodePlace, "transform sends a vertex to infinity");
+        }
+        // A mirroring transform turns counter-clockwise triangles clockwise; swap two corners to undo it.
+        if (mirrored)
+            for (size_t t = 0; t + 2 < part.indices.size(); t += 3) std::swap(part.indices[t + 1], part.indices[t + 2]);
+
+        // Normals: given ones go through the normal matrix; missing, zero or non-finite ones are generated.
+        size_t bad = vertexCount;
+        const auto normal = prim.attributes.find("NORMAL");
+        if (normal != prim.attributes.end()) {
+            const size_t count = gltf::accessorCount(model_, normal->second, file_, where + ".attributes.NORMAL");
+            if (count != vertexCount)
+                throw InputError(file_, indexed("accessors", size_t(normal->second)),
+                                 "NORMAL count " + std::to_string(count) + " differs from POSITION count " +
+                                     std::to_string(vertexCount));
+            gltf::readVec3(model_, normal->second, file_, part.normals);
+            bad = 0;
+            for (glm::vec3& n : part.normals) {
+                n = toWorldNormal * n;
+                const float len2 = glm::dot(n, n);
+                if (len2 > 1e-30f && std::isfinite(len2)) {
+                    n /= std::sqrt(len2);
+                } else {
+                    n = glm::vec3(0.0f);  // marks it for replacement below
+                    ++bad;
+                }
+            }
+        }
+        if (bad > 0) {
+            generateNormals(part, generated_);
+            if (part.normals.empty()) {
+                part.normals = generated_;
+            } else {
+                warnOnce(where + ": " + std::to_string(bad) + " zero or non-finite normals replaced by generated ones");
+                for (size_t i = 0; i < vertexCount; ++i)
+                    if (part.normals[i] == glm::vec3(0.0f)) part.normals[i] = generated_[i];
+            }
+        }
+
+        if (prim.material >= 0 && size_t(prim.material) >= materials_.size())
+            throw InputError(file_, where + ".material",
+                             "material " + std::to_string(prim.material) + " out of range (" +
+                                 std::to_string(materials_.size()) + " materials)");
+        part.material = prim.material >= 0 ? materials_[size_t(prim.material)] : defaultMaterial_;
+        out_.parts.push_back(std::move(part));
+    }
+
+    void addCamera(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {
+        if (size_t(node.camera) >= model_.cameras.size())
+            throw InputError(file_, place,
+                             "camera " + std::to_string(node.camera) + " out of range (" +
+                                 std::to_string(model_.cameras.size()) + " cameras)");
+        const tinygltf::Camera& gc = model_.cameras[size_t(node.camera)];
+        const std::string cameraPlace = indexed("cameras", size_t(node.camera));
+        if (gc.type != "perspective") {
+            warnOnce(cameraPlace + ": " + gc.type + " camera skipped (only perspective cameras are imported)");
+            return;
+        }
+        if (out_.camera) return;  // the first perspective camera in the walk wins
+        // glTF cameras look down their node's -Z with +Y up (glTF 2.0 spec, "Cameras").
+        Camera c;
+        c.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        const glm::dmat3 linear(world);
+        c.target = c.position + direction(linear * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, 0.0f, -1.0f));
+        c.up = direction(linear * glm::dvec3(0.0, 1.0, 0.0), glm::vec3(0.0f, 1.0f, 0.0f));
+        const double yfov = gc.perspective.yfov;
+        if (std::isfinite(yfov) && yfov > 0.0 && yfov < glm::pi<double>()) {
+            c.fovY = float(glm::degrees(yfov));
+        } else {
+            c.fovY = 45.0f;
+            warnOnce(cameraPlace + ": yfov " + std::to_string(yfov) + " out of (0, pi); using 45 degrees");
+        }
+        out_.camera = c;
+    }
+
+    void addLight(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {
+        const std::string extPlace = place + ".extensions.KHR_lights_punctual";
+        const tinygltf::Value& ext = node.extensions.at("KHR_lights_punctual");
+        const double index = numberOr(ext, "light", -1.0);
+        if (!(index >= 0.0 && index < double(model_.lights.size())))
+            throw InputError(file_, extPlace,
+                             "light " + std::to_string(index) + " out of range (" +
+                                 std::to_string(model_.lights.size()) + " lights)");
+        const tinygltf::Light& gl = model_.lights[size_t(index)];
+        const std::string lightPlace = indexed("KHR_lights_punctual.lights", size_t(index));
+        Light l;
+        l.name = gl.name.empty() ? node.name : gl.name;
+        const glm::dmat3 linear(world);
+        if (gl.type == "directional") {
+            l.type = LightType::Directional;
+            l.direction = direction(linear * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, -1.0f, 0.0f));
+        } else if (gl.type == "point" || gl.type == "spot") {
+            if (gl.type == "spot") warnOnce(lightPlace + ": spot light imported as a point light (no cone)");
+            l.type = LightType::Point;
+            l.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        } else {
+            warnOnce(lightPlace + ": unknown light type \"" + gl.type + "\" skipped");
+            return;
+        }
+        if (gl.range > 0.0) warnOnce(lightPlace + ": range is ignored");
+        l.color = gl.color.size() >= 3 ? glm::vec3(finiteClamp(gl.color[0], 0.0f, 1e30f, 1.0f),
+                                                   finiteClamp(gl.color[1], 0.0f, 1e30f, 1.0f),
+                                                   finiteClamp(gl.color[2], 0.0f, 1e30f, 1.0f))
+                                       : glm::vec3(1.0f);
+        lightIntensities_.push_back(finiteClamp(gl.intensity, 0.0f, 1e30f, 1.0f));
+        out_.lights.push_back(std::move(l));
+    }
+
+    static glm::vec3 direction(const glm::dvec3& d, const glm::vec3& fallback) {
+        const double len = glm::length(d);
+        return len > 1e-12 && std::isfinite(len) ? glm::vec3(d / len) : fallback;
+    }
+
+    const tinygltf::Model& model_;
+    const std::string& file_;
+    GltfImport& out_;
+    std::vector<Material> materials_;
+    Material defaultMaterial_;
+    std::vector<char> onPath_;                 // nodes on the path from the root being walked
+    std::vector<char> seen_;                   // nodes visited at least once
+    size_t visits_ = 0;
+    std::vector<float> lightIntensities_;      // raw glTF intensity of each out_.lights entry
+    std::unordered_set<std::string> warned_;
+    std::vector<uint32_t> indices_;            // scratch, reused across primitives
+    std::vector<glm::vec3> generated_;         // scratch, reused across primitives
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+// 6. Public functions
+// ---------------------------------------------------------------------------------------------------------
+
+GltfImport importGltf(const std::string& path, const glm::mat4& transform) {
+    GltfImport out;
+    const tinygltf::Model model = loadModel(path, out.warnings);
+    Importer(model, path, out).run(glm::dmat4(transform));
+    return out;
+}
+
+Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, float roughness) {
+    metallic = std::clamp(metallic, 0.0f, 1.0f);
+    roughness = std::clamp(roughness, 0.0f, 1.0f);
+    Material m;
+    // glTF 2.0 Appendix B: dielectrics have F0 = 0.04 and a diffuse lobe; metals tint F0 and have none.
+    m.md = baseColor * (1.0f - metallic);
+    m.ms = glm::mix(glm::vec3(0.04f), baseColor, metallic);
+    // Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces", eq. 33: a Blinn-Phong
+    // exponent s = 2/alpha^2 - 2 matches a Beckmann lobe of width alpha; glTF's alpha = roughness^2.
+    const float alpha = roughness * roughness;
+    const float alpha2 = std::max(alpha * alpha, 1e-12f);
+    m.s = std::clamp(2.0f / alpha2 - 2.0f, 1.0f, kMaxShininess);
+    m.ma = m.md;  // ambient light shows the surface's own colour
+    m.kr = glm::vec3(0.0f);
+    m.kt = glm::vec3(0.0f);
+    m.ior = 1.5f;
+    return m;
+}
+
+}  // namespace shadelab
