@@ -5,7 +5,7 @@ layout(std140) uniform Frame {
     vec4 u_forward;                     // xyz: camera basis, unit
     vec4 u_right;
     vec4 u_up;
-    vec4 u_viewport;                    // width, height (pixels), tan(fovY/2), unused
+    vec4 u_viewport;                    // full image width, height (pixels), tan(fovY/2), GL row of this band's bottom
     vec4 u_ambient;                     // xyz: Ia
     ivec4 u_flags;                      // model, term bits (1 ambient, 2 diffuse, 4 specular), light count, 0
     vec4 u_lightPos[SL_MAX_LIGHTS];     // xyz: position (w = 1) or direction of travel (w = 0)

@@ -24,10 +24,11 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
     return I;
 }
 
-// The primary ray through this fragment's pixel centre, exactly as the tracer builds it.
+// The primary ray through this fragment's pixel centre, exactly as the tracer builds it. When the image is
+// drawn in bands, u_viewport.w shifts the band's rows back to their place in the full image.
 vec3 fragmentRay() {
     return cameraRayDirection(u_forward.xyz, u_right.xyz, u_up.xyz, u_viewport.z, u_viewport.x, u_viewport.y,
-                              gl_FragCoord.x, u_viewport.y - gl_FragCoord.y);
+                              gl_FragCoord.x, u_viewport.y - (gl_FragCoord.y + u_viewport.w));
 }
 
 // Window-space depth of a world point, for ray-cast impostors.

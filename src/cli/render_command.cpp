@@ -12,6 +12,8 @@
 #include "util/atomic_file.h"
 #include "util/input_error.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <future>
 #include <sstream>
@@ -130,11 +132,28 @@ int renderCommand(int argc, char** argv) {
     timer.stage("shader compile");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
-    renderer.draw(scene, width, height);
-    glFinish();
-    timer.stage("first draw (incl. lazy shader compile)");
-    Image8 pixels = renderer.target().readColor8(encoding);
-    timer.stage("readback + conversion (strips)");
+    // Large images are drawn in bands so the RGBA32F target stays small; each band is read back and
+    // converted before the next is drawn.
+    Image8 pixels;
+    pixels.width = width;
+    pixels.height = height;
+    pixels.channels = 3;
+    pixels.data.resize(size_t(width) * size_t(height) * 3);
+    const int bands = raster::bandCount(width, height);
+    const int bandRows = (height + bands - 1) / bands;
+    double drawMs = 0.0, readMs = 0.0;
+    for (int top = 0; top < height; top += bandRows) {
+        const raster::Band band{top, std::min(bandRows, height - top)};
+        StageTimer::Clock::time_point t0 = StageTimer::Clock::now();
+        renderer.draw(scene, width, height, false, band);
+        glFinish();
+        StageTimer::Clock::time_point t1 = StageTimer::Clock::now();
+        renderer.target().readColor8(pixels, band.top, encoding);
+        drawMs += std::chrono::duration<double, std::milli>(t1 - t0).count();
+        readMs += std::chrono::duration<double, std::milli>(StageTimer::Clock::now() - t1).count();
+    }
+    timer.stageSplit("draw, " + std::to_string(bands) + " band(s) (incl. lazy shader compile)", drawMs,
+                     "readback + conversion", readMs);
     std::vector<uint8_t> png = encodePng(pixels);
     timer.stage("PNG encode");
     writeFileAtomic(*output, png.data(), png.size());

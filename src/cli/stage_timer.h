@@ -21,6 +21,13 @@ public:
                            residentMiB()});
         last_ = Clock::now();
     }
+    // Ends the current stage as two interleaved ones whose durations were measured by the caller.
+    void stageSplit(std::string first, double firstMs, std::string second, double secondMs) {
+        double rss = residentMiB();
+        stages_.push_back({std::move(first), firstMs, rss});
+        stages_.push_back({std::move(second), secondMs, rss});
+        last_ = Clock::now();
+    }
     void print(std::FILE* out) const {
         double total = 0.0;
         std::fprintf(out, "  %-42s %8s %12s\n", "stage", "time", "RSS after");

@@ -6,8 +6,11 @@
 #include "scene/view.h"
 #include "shading/lighting.h"
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <cstring>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <string>
@@ -45,14 +48,42 @@ std::string programDefines() {
     return "#define SL_MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
 }
 
-FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v) {
+// Maps the full image's clip space onto one band's: y' = a·y + b·w, so the band's rows fill its viewport.
+glm::mat4 bandMatrix(int height, Band band) {
+    glm::mat4 m(1.0f);
+    if (band.rows <= 0 || band.rows == height) return m;
+    const float h = float(height), rows = float(band.rows);
+    const float glBottom = float(height - band.top - band.rows);
+    m[1][1] = h / rows;
+    m[3][1] = (h - 2.0f * glBottom) / rows - 1.0f;
+    return m;
+}
+
+// Conservative test: true when the box lies wholly outside one side of the clip volume (far is infinite).
+bool outsideClip(const glm::mat4& viewProj, const glm::vec3& lo, const glm::vec3& hi) {
+    int outside[5] = {0, 0, 0, 0, 0};
+    for (int c = 0; c < 8; ++c) {
+        glm::vec4 p = viewProj * glm::vec4(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z, 1.0f);
+        outside[0] += p.x < -p.w;
+        outside[1] += p.x > p.w;
+        outside[2] += p.y < -p.w;
+        outside[3] += p.y > p.w;
+        outside[4] += p.z < -p.w;
+    }
+    for (int n : outside)
+        if (n == 8) return true;
+    return false;
+}
+
+FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
     FrameBlock f{};
-    f.viewProj = v.viewProj;
+    f.viewProj = bandMatrix(v.height, band) * v.viewProj;
     f.eye = glm::vec4(v.eye, 1.0f);
     f.forward = glm::vec4(v.forward, 0.0f);
     f.right = glm::vec4(v.right, 0.0f);
     f.up = glm::vec4(v.up, 0.0f);
-    f.viewport = glm::vec4(float(v.width), float(v.height), v.tanHalfFovY, 0.0f);
+    const float bandBottom = band.rows > 0 ? float(v.height - band.top - band.rows) : 0.0f;
+    f.viewport = glm::vec4(float(v.width), float(v.height), v.tanHalfFovY, bandBottom);
     f.ambient = glm::vec4(scene.ambient, 0.0f);
     int terms = (scene.terms.ambient ? kTermAmbient : 0) | (scene.terms.diffuse ? kTermDiffuse : 0) |
                 (scene.terms.specular ? kTermSpecular : 0);
@@ -132,7 +163,12 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
             for (size_t k = 0; k < p.indices.size(); ++k) rebased[k] = p.indices[k] + uint32_t(vBase);
             glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(iBase * sizeof(uint32_t)),
                             GLsizeiptr(rebased.size() * sizeof(uint32_t)), rebased.data());
-            ranges_.push_back({mi, pi, iBase, p.indices.size()});
+            glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+            for (const glm::vec3& q : p.positions) {
+                lo = glm::min(lo, q);
+                hi = glm::max(hi, q);
+            }
+            ranges_.push_back({mi, pi, iBase, p.indices.size(), lo, hi});
             vBase += p.positions.size();
             iBase += p.indices.size();
         }
@@ -154,8 +190,9 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform1ui(p.uniform("u_objectId"), objectId);
 }
 
-void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage) {
-    target_.resize(width, height, withCoverage);
+void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage, Band band) {
+    if (band.rows <= 0) band = Band{0, height};
+    target_.resize(width, band.rows, withCoverage);
     target_.bind();
 
     // Every pass sets the state it needs (style.md "GL resources").
@@ -173,7 +210,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
     const ViewSetup view = makeViewSetup(scene, width, height);
-    const FrameBlock frame = makeFrameBlock(scene, view);
+    const FrameBlock frame = makeFrameBlock(scene, view, band);
     glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &frame);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frameUbo_.id());
@@ -184,6 +221,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     glBindVertexArray(meshVao_.id());
     for (const DrawRange& r : ranges_) {
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
+        if (outsideClip(frame.viewProj, r.lo, r.hi)) continue;
         setMaterial(meshProgram_, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
@@ -220,6 +258,11 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     glBindVertexArray(0);
     glUseProgram(0);
     gl::checkError("RasterRenderer::draw");
+}
+
+int bandCount(int width, int height, size_t maxTargetBytes) {
+    const size_t bytes = size_t(width) * size_t(height) * 4 * sizeof(float);
+    return int(std::min<size_t>(size_t(height), std::max<size_t>(1, (bytes + maxTargetBytes - 1) / maxTargetBytes)));
 }
 
 RasterOutput renderRaster(RasterRenderer& r, const Scene& scene, int width, int height, bool withCoverage) {

@@ -9,9 +9,18 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <vector>
 
 namespace shadelab::raster {
+
+// A horizontal band of the image, rows [top, top + rows) counted from the top; rows = 0 is the whole image.
+// Headless renders draw large images band by band to bound the float target's memory (bench figures in
+// docs/cli.md); every band samples exactly the full image's pixel centres.
+struct Band {
+    int top = 0;
+    int rows = 0;
+};
 
 class RasterRenderer {
 public:
@@ -21,9 +30,9 @@ public:
     // Uploads every mesh part. Call again when geometry changes; materials are read at draw time.
     void uploadMeshes(const Scene& scene);
 
-    // Draws the scene into the internal target at width x height, with coverage ids when asked.
-    // uploadMeshes must have seen the scene's current geometry.
-    void draw(const Scene& scene, int width, int height, bool withCoverage = false);
+    // Draws the scene (or one band of it) into the internal target, with coverage ids when asked. The
+    // target is width x band rows. uploadMeshes must have seen the scene's current geometry.
+    void draw(const Scene& scene, int width, int height, bool withCoverage = false, Band band = {});
 
     const RenderTarget& target() const { return target_; }
 
@@ -31,6 +40,7 @@ private:
     struct DrawRange {
         size_t mesh, part;
         size_t firstIndex, indexCount;
+        glm::vec3 lo, hi;           // world-space bounds, for culling
     };
 
     void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const;
@@ -42,6 +52,9 @@ private:
     std::vector<DrawRange> ranges_;
     RenderTarget target_;
 };
+
+// Number of bands that keeps the RGBA32F target near `maxTargetBytes` (1 for small images).
+int bandCount(int width, int height, size_t maxTargetBytes = size_t(8) << 20);
 
 // Convenience for one-shot renders: draw, then read colour (and coverage when asked).
 struct RasterOutput {

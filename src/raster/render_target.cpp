@@ -87,27 +87,23 @@ void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
 }
 
 
-Image8 RenderTarget::readColor8(Encoding encoding) const {
+void RenderTarget::readColor8(Image8& out, int top, Encoding encoding) const {
     constexpr int kStripRows = 64;
-    Image8 out;
-    out.width = width_;
-    out.height = height_;
-    out.channels = 3;
-    out.data.resize(size_t(width_) * size_t(height_) * 3);
+    if (out.width != width_ || out.channels != 3 || top < 0 || top + height_ > out.height)
+        throw std::logic_error("RenderTarget::readColor8: destination does not fit the target");
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     ImageF strip;
-    for (int top = 0; top < height_; top += kStripRows) {
-        int rows = std::min(kStripRows, height_ - top);
+    for (int row = 0; row < height_; row += kStripRows) {
+        int rows = std::min(kStripRows, height_ - row);
         if (strip.height != rows) strip = ImageF(width_, rows);
-        glReadPixels(0, height_ - top - rows, width_, rows, GL_RGBA, GL_FLOAT, strip.rgba.data());
+        glReadPixels(0, height_ - row - rows, width_, rows, GL_RGBA, GL_FLOAT, strip.rgba.data());
         flipRows(strip.rgba.data(), width_, rows, 4);
         Image8 converted = toImage8(strip, encoding);
-        std::memcpy(&out.data[size_t(top) * size_t(width_) * 3], converted.data.data(), converted.data.size());
+        std::memcpy(&out.data[size_t(top + row) * size_t(width_) * 3], converted.data.data(), converted.data.size());
     }
     gl::checkError("RenderTarget::readColor8");
-    return out;
 }
 
 }  // namespace shadelab::raster

@@ -27,8 +27,9 @@ public:
     void readCoverage(std::vector<uint32_t>& out) const;
 
     // Reads colour a strip of rows at a time and converts each with toImage8 (the one shared conversion),
-    // so no full float copy of the image is ever held on the CPU.
-    Image8 readColor8(Encoding encoding) const;
+    // so no full float copy of the image is ever held on the CPU. The target's rows land in `out` from
+    // row `top` on; `out` must be RGB and as wide as the target.
+    void readColor8(Image8& out, int top, Encoding encoding) const;
 
 private:
     int width_ = 0, height_ = 0;

@@ -109,11 +109,11 @@ std::vector<Light> defaultLightRig(const Bounds& b) {
     Light key;
     key.name = "key";
     key.position = center + radius * glm::vec3(-2.5f, 3.0f, 3.5f);
-    key.color = glm::vec3(1.0f, 0.95f, 0.85f);
+    key.color = glm::vec3(0.8f, 0.76f, 0.68f);  // leaves headroom for white materials plus ambient and fill
     Light fill;
     fill.name = "fill";
     fill.position = center + radius * glm::vec3(3.5f, 1.0f, 1.5f);
-    fill.color = glm::vec3(0.35f, 0.4f, 0.5f);
+    fill.color = glm::vec3(0.25f, 0.29f, 0.36f);
     return {key, fill};
 }
 

@@ -1,0 +1,43 @@
+// What a comparison leaves behind (design.md §4 "Report"): the |a-b| heatmap, side-by-side strips, a
+// short human summary, the JSON report, and the evidence files a failing test writes. No metrics here.
+#pragma once
+
+#include "image/compare.h"
+#include "image/image.h"
+
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+// RGB heatmap of the per-pixel max channel difference, times gain, clamped to 255 and mapped through
+// a ramp black -> blue -> magenta -> amber -> white whose luminance rises monotonically: no
+// difference is black, and at gain 16 the hard limit (16/255) is white. Sizes must match (InputError).
+Image8 diffHeatmap(const Image8& a, const Image8& b, int gain = 16);
+
+// The same, with silhouette-band pixels (bandMask from CompareResult, 1 = band; empty = none) lifted to
+// at least dark grey, so the band reads as an outline where the images agree.
+Image8 diffHeatmap(const Image8& a, const Image8& b, const std::vector<uint8_t>& bandMask, int gain = 16);
+
+// The ramp itself: 0 -> black, 255 -> white. Exposed for tests and legends.
+const uint8_t* heatRamp(int value);
+
+// RGB strip of the images left to right, separated by gap pixels of dark grey; shorter images are
+// padded below with the same grey. Alpha is dropped. For `--renderer both`: raster | traced | heatmap.
+Image8 sideBySide(const std::vector<const Image8*>& images, int gap = 4);
+
+// A few lines: size and coverage, then mean, RMS, max (position, channel) and fraction over the
+// threshold per region, coverage mismatches, and the verdict with its reasons.
+std::string compareSummary(const CompareResult& r);
+
+// Machine-readable report: gates, per-region metrics, coverage counts, verdict and reasons, with
+// snake_case keys and numbers as numbers. imageA/imageB, when given, are recorded as "image_a"/"image_b".
+std::string compareReportJson(const CompareResult& r, const std::string& imageA = {},
+                              const std::string& imageB = {});
+
+// Writes <stem>_a.png, <stem>_b.png, <stem>_heat.png and <stem>_report.json (atomically) and returns
+// their paths in that order, for tests that fail and the CLI's --diff/--json.
+std::vector<std::string> writeCompareEvidence(const std::string& stem, const Image8& a, const Image8& b,
+                                              const CompareResult& r);
+
+}  // namespace shadelab
