@@ -46,7 +46,13 @@ void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*)) {
 
 std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced, std::vector<std::string>* log) {
     if (forced == GlBackend::Auto) {
-        if (const char* env = std::getenv(kGlBackendEnv)) forced = parseGlBackend(env);
+        if (const char* env = std::getenv(kGlBackendEnv)) {
+            try {
+                forced = parseGlBackend(env);
+            } catch (const UsageError& e) {
+                throw UsageError(std::string(kGlBackendEnv) + ": " + e.what());
+            }
+        }
     }
     struct Attempt {
         GlBackend backend;

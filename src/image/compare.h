@@ -66,8 +66,8 @@ std::vector<uint8_t> silhouetteBand(const std::vector<uint32_t>& coverageA,
 
 // Compares without coverage (e.g. two PNG files): every pixel is interior and the silhouette gate is
 // not applied. RGB against RGBA compares alpha too, reading a missing alpha as 255.
-// Throws InputError when the sizes differ ("image sizes differ: 640x480 vs 320x240") or a channel
-// count is not 3 or 4.
+// Throws InputError when the sizes differ ("image sizes differ: 640x480 vs 320x240"), a channel
+// count is not 3 or 4, or a gate is out of range (threshold/hardMax outside [0, 255], fractions outside [0, 1]).
 CompareResult compareImages(const Image8& a, const Image8& b, const CompareGates& gates = {});
 
 // Compares with coverage from both renderers: band pixels are excluded from the interior gates, and

@@ -10,7 +10,7 @@
 
 namespace shadelab {
 
-// RGB heatmap of the per-pixel max channel difference, times gain, clamped to 255 and mapped through
+// RGB heatmap of the per-pixel max R/G/B difference (alpha ignored), times gain, clamped to 255 and mapped through
 // a ramp black -> blue -> magenta -> amber -> white whose luminance rises monotonically: no
 // difference is black, and at gain 16 the hard limit (16/255) is white. Sizes must match (InputError).
 Image8 diffHeatmap(const Image8& a, const Image8& b, int gain = 16);
