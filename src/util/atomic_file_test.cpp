@@ -5,6 +5,7 @@
 #include "util/input_error.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -116,11 +117,31 @@ TEST_F(AtomicFileTest, TargetIsDirectoryThrowsAndKeepsIt) {
 
 TEST_F(AtomicFileTest, ReadOnlyDirectoryThrowsAndKeepsContent) {
     writeFileAtomic(path("out.txt"), "original");
-    fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec, fs::perm_options::replace);
-    // Root (and CAP_DAC_OVERRIDE) ignores folder permissions, so the check would be meaningless.
-    if (::access(dir_.c_str(), W_OK) == 0) GTEST_SKIP() << "permissions not enforced (running as root?)";
-    std::string msg = expectInputError(path("out.txt"), [&] { writeFileAtomic(path("out.txt"), "new"); });
-    EXPECT_NE(msg.find("Permission denied"), std::string::npos) << msg;
+    // Read-only for everyone. Root ignores folder permissions, so as root the write is attempted in a
+    // child process that has dropped to the unprivileged user `nobody`.
+    fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                              fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec,
+                    fs::perm_options::replace);
+    if (::geteuid() == 0) {
+        pid_t pid = ::fork();
+        ASSERT_GE(pid, 0);
+        if (pid == 0) {
+            if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(3);
+            try {
+                writeFileAtomic(path("out.txt"), "new");
+                ::_exit(1);  // the write should have failed
+            } catch (const InputError& e) {
+                ::_exit(std::string(e.what()).find("Permission denied") != std::string::npos ? 0 : 2);
+            }
+        }
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        ASSERT_TRUE(WIFEXITED(status));
+        EXPECT_EQ(WEXITSTATUS(status), 0) << "1: write succeeded, 2: wrong message, 3: could not drop privileges";
+    } else {
+        std::string msg = expectInputError(path("out.txt"), [&] { writeFileAtomic(path("out.txt"), "new"); });
+        EXPECT_NE(msg.find("Permission denied"), std::string::npos) << msg;
+    }
     fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add);
     EXPECT_EQ(readFile(path("out.txt")), "original");
     EXPECT_EQ(listDir(), std::vector<std::string>{"out.txt"});
