@@ -2,7 +2,9 @@
 // pixels and coverage as drawing it whole, because every band samples the full image's pixel centres.
 #include "image/encode.h"
 #include "image/png.h"
+#include "raster/offscreen.h"
 #include "raster/raster_renderer.h"
+#include "util/input_error.h"
 #include "scene/scene_load.h"
 #include "gl_fixture.h"
 #include "test_output.h"
@@ -88,4 +90,46 @@ TEST(RasterBands, BandCountKeepsTargetSmall) {
     EXPECT_EQ(raster::bandCount(320, 240), 1);
     EXPECT_EQ(raster::bandCount(1920, 1080), 4);  // 33 MB of RGBA32F in four 8 MB bands
     EXPECT_EQ(raster::bandCount(16, 2, 1), 2);    // never more bands than rows
+}
+
+// Supersampling (raster/offscreen.h): spp = k² equals rendering k times larger and averaging k×k blocks in
+// linear float, i.e. the samples sit on the grid (i + (a+0.5)/k, j + (b+0.5)/k) that the tracer uses.
+TEST_F(RasterBandsTest, SupersamplingIsBoxFilteredGrid) {
+    Scene scene = loadScene(test::sourcePath("assets/scenes/default.json"));
+    raster::RasterRenderer r;
+    r.uploadMeshes(scene);
+    const int w = 96, h = 54, k = 2;
+    raster::OffscreenOptions o;
+    o.width = w;
+    o.height = h;
+    o.spp = k * k;
+    o.maxTargetBytes = 64 << 10;  // force several bands
+    raster::OffscreenResult ss = raster::renderOffscreen(r, scene, o);
+    EXPECT_GT(ss.bands, 1);
+
+    r.draw(scene, w * k, h * k);
+    ImageF big;
+    r.target().readColor(big);
+    ImageF small(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 4; ++c) {
+                float sum = 0.0f;
+                for (int b = 0; b < k; ++b)
+                    for (int a = 0; a < k; ++a) sum += big.pixel(x * k + a, y * k + b)[c];
+                small.pixel(x, y)[c] = sum / float(k * k);
+            }
+    Image8 expected = toImage8(small, Encoding::Srgb);
+    EXPECT_EQ(countDifferentPixels(expected, ss.pixels), 0u);
+    // Negative control: one sample per pixel is not the same image.
+    o.spp = 1;
+    EXPECT_GT(countDifferentPixels(expected, raster::renderOffscreen(r, scene, o).pixels), size_t(w * h) / 50);
+}
+
+TEST(RasterOffscreen, SppMustBeAPerfectSquare) {
+    EXPECT_EQ(raster::samplesPerSide(1), 1);
+    EXPECT_EQ(raster::samplesPerSide(16), 4);
+    EXPECT_THROW(raster::samplesPerSide(3), UsageError);
+    EXPECT_THROW(raster::samplesPerSide(0), UsageError);
+    EXPECT_THROW(raster::samplesPerSide(81), UsageError);
 }

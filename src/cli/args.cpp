@@ -56,6 +56,16 @@ std::optional<std::string> Args::value(const std::string& name) const {
     return last;
 }
 
+int parseInt(const std::string& name, const std::string& value, int lo, int hi) {
+    const std::string what = name + ": expected a whole number from " + std::to_string(lo) + " to " +
+                             std::to_string(hi) + ", got '" + value + "'";
+    if (value.empty() || value.size() > 9 || value.find_first_not_of("0123456789") != std::string::npos)
+        throw UsageError(what);
+    int v = std::atoi(value.c_str());
+    if (v < lo || v > hi) throw UsageError(what);
+    return v;
+}
+
 std::pair<int, int> parseSize(const std::string& s) {
     const std::string what = "--size: expected WxH with each side in 1..16384, got '" + s + "'";
     size_t x = s.find_first_of("xX");

@@ -7,6 +7,7 @@
 #include "gl/headless_context.h"
 #include "image/encode.h"
 #include "image/png.h"
+#include "raster/offscreen.h"
 #include "raster/raster_renderer.h"
 #include "scene/scene_load.h"
 #include "util/atomic_file.h"
@@ -33,6 +34,7 @@ const char* const kRenderHelp =
     "  --terms LIST             comma-separated terms to switch on, the rest off:\n"
     "                           ambient,diffuse,specular,shadows,reflections (default: the scene's)\n"
     "  --encoding NAME          srgb (default) | linear: how linear colour becomes 8-bit\n"
+    "  --spp N                  samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
     "  --gl-backend NAME        auto | egl-device | egl-surfaceless | osmesa\n"
     "                           (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
     "  --timings                print a per-stage timing breakdown to stderr\n"
@@ -75,7 +77,7 @@ void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: war
 }  // namespace
 
 int renderCommand(int argc, char** argv) {
-    Args args(argc, argv, 2, {"-o", "--output", "--size", "--model", "--terms", "--encoding", "--gl-backend"},
+    Args args(argc, argv, 2, {"-o", "--output", "--size", "--model", "--terms", "--encoding", "--gl-backend", "--spp"},
               {"-h", "--help", "--verbose", "--timings"});
     if (args.flag("-h") || args.flag("--help")) {
         std::fputs(kRenderHelp, stdout);
@@ -99,6 +101,9 @@ int renderCommand(int argc, char** argv) {
     if (auto t = args.value("--terms")) terms = parseTerms(*t);
     Encoding encoding = Encoding::Srgb;
     if (auto e = args.value("--encoding")) encoding = parseEncoding(*e);
+    int spp = 1;
+    if (auto v = args.value("--spp")) spp = parseInt("--spp", *v, 1, 64);
+    raster::samplesPerSide(spp);  // validates: a perfect square
     gl::GlBackend backend = gl::GlBackend::Auto;
     if (auto b = args.value("--gl-backend")) backend = gl::parseGlBackend(*b);
     const bool verbose = args.flag("--verbose");
@@ -132,28 +137,16 @@ int renderCommand(int argc, char** argv) {
     timer.stage("shader compile");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
-    // Large images are drawn in bands so the RGBA32F target stays small; each band is read back and
-    // converted before the next is drawn.
-    Image8 pixels;
-    pixels.width = width;
-    pixels.height = height;
-    pixels.channels = 3;
-    pixels.data.resize(size_t(width) * size_t(height) * 3);
-    const int bands = raster::bandCount(width, height);
-    const int bandRows = (height + bands - 1) / bands;
-    double drawMs = 0.0, readMs = 0.0;
-    for (int top = 0; top < height; top += bandRows) {
-        const raster::Band band{top, std::min(bandRows, height - top)};
-        StageTimer::Clock::time_point t0 = StageTimer::Clock::now();
-        renderer.draw(scene, width, height, false, band);
-        glFinish();
-        StageTimer::Clock::time_point t1 = StageTimer::Clock::now();
-        renderer.target().readColor8(pixels, band.top, encoding);
-        drawMs += std::chrono::duration<double, std::milli>(t1 - t0).count();
-        readMs += std::chrono::duration<double, std::milli>(StageTimer::Clock::now() - t1).count();
-    }
-    timer.stageSplit("draw, " + std::to_string(bands) + " band(s) (incl. lazy shader compile)", drawMs,
-                     "readback + conversion", readMs);
+    // Large images are drawn in bands so the RGBA32F target stays small (raster/offscreen.h).
+    raster::OffscreenOptions offscreen;
+    offscreen.width = width;
+    offscreen.height = height;
+    offscreen.spp = spp;
+    offscreen.encoding = encoding;
+    raster::OffscreenResult result = raster::renderOffscreen(renderer, scene, offscreen);
+    const Image8& pixels = result.pixels;
+    timer.stageSplit("draw, " + std::to_string(result.bands) + " band(s) (incl. lazy shader compile)", result.drawMs,
+                     "readback + conversion", result.readMs);
     std::vector<uint8_t> png = encodePng(pixels);
     timer.stage("PNG encode");
     writeFileAtomic(*output, png.data(), png.size());

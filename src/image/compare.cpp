@@ -1,5 +1,5 @@
 // Image comparison (design.md §4): one pass over both images accumulating integer sums per region,
-// then the gates. Nothing here allocates per pixel; the band needs two width*height byte masks.
+// then the gates. Nothing here allocates per pixel; the band needs one width*height mask and a 3-row ring.
 #include "image/compare.h"
 
 #include "util/check.h"
@@ -56,15 +56,33 @@ struct RegionAcc {
     }
 };
 
+// Adds one pixel's differences to a region.
+inline void addPixel(RegionAcc& r, int64_t i, uint32_t sum, uint32_t sumSq, int pixelMax, int pixelChannel,
+                     int threshold, int hardMax) {
+    r.pixels++;
+    r.sum += sum;
+    r.sumSq += sumSq;
+    r.over += pixelMax > threshold;
+    r.overHard += pixelMax > hardMax;
+    if (pixelMax > r.max) {
+        r.max = pixelMax;
+        r.maxIndex = i;
+        r.maxChannel = pixelChannel;
+    }
+}
+
 // The single pass. CA and CB are the channel counts, so the inner loop is unrolled and a missing
-// alpha reads as opaque (255). band == nullptr puts every pixel in region 0 (interior).
+// alpha reads as opaque (255). band == nullptr puts every pixel in the interior. The accumulators are
+// locals picked by a branch, not an indexed array: byte loads may alias anything, and only locals
+// whose address never escapes stay in registers.
 template <int CA, int CB>
 void accumulate(const Image8& a, const Image8& b, const uint8_t* band, int threshold, int hardMax,
-                RegionAcc acc[2]) {
+                RegionAcc& interior, RegionAcc& inBand) {
     constexpr int kChannels = CA > CB ? CA : CB;
     const int64_t n = int64_t(a.width) * a.height;
     const uint8_t* pa = a.data.data();
     const uint8_t* pb = b.data.data();
+    RegionAcc accIn, accBand;
     for (int64_t i = 0; i < n; ++i, pa += CA, pb += CB) {
         int pixelMax = 0, pixelChannel = 0;
         uint32_t sum = 0, sumSq = 0;
@@ -79,18 +97,11 @@ void accumulate(const Image8& a, const Image8& b, const uint8_t* band, int thres
                 pixelChannel = c;
             }
         }
-        RegionAcc& r = acc[band ? band[i] : 0];
-        r.pixels++;
-        r.sum += sum;
-        r.sumSq += sumSq;
-        r.over += pixelMax > threshold;
-        r.overHard += pixelMax > hardMax;
-        if (pixelMax > r.max) {
-            r.max = pixelMax;
-            r.maxIndex = i;
-            r.maxChannel = pixelChannel;
-        }
+        if (band && band[i]) addPixel(accBand, i, sum, sumSq, pixelMax, pixelChannel, threshold, hardMax);
+        else addPixel(accIn, i, sum, sumSq, pixelMax, pixelChannel, threshold, hardMax);
     }
+    interior = accIn;
+    inBand = accBand;
 }
 
 void checkImages(const Image8& a, const Image8& b) {
@@ -109,10 +120,13 @@ void checkImages(const Image8& a, const Image8& b) {
 
 void checkGates(const CompareGates& g) {
     const auto fail = [](const std::string& what) { throw InputError("", "compare gates: " + what); };
-    if (g.threshold < 0 || g.threshold > 255) fail("threshold must be in [0, 255], got " + std::to_string(g.threshold));
+    if (g.threshold < 0 || g.threshold > 255) {
+        fail("threshold must be in [0, 255], got " + std::to_string(g.threshold));
+    }
     if (g.hardMax < 0 || g.hardMax > 255) fail("hard max must be in [0, 255], got " + std::to_string(g.hardMax));
-    if (!(g.maxFractionOver >= 0 && g.maxFractionOver <= 1)) fail("max fraction over must be in [0, 1]");
-    if (!(g.maxSilhouetteFraction >= 0 && g.maxSilhouetteFraction <= 1)) fail("max silhouette fraction must be in [0, 1]");
+    const auto isFraction = [](double f) { return f >= 0 && f <= 1; };   // false for NaN too
+    if (!isFraction(g.maxFractionOver)) fail("max fraction over must be in [0, 1]");
+    if (!isFraction(g.maxSilhouetteFraction)) fail("max silhouette fraction must be in [0, 1]");
     if (g.maxMean && !(*g.maxMean >= 0)) fail("max mean must be >= 0");
 }
 
@@ -159,13 +173,61 @@ void applyGates(CompareResult& r) {
     r.pass = r.reasons.empty();
 }
 
+// Silhouette band and coverage mismatch counts in one pass over both buffers. A 3x3 window is mixed
+// iff one of its three row segments is mixed, or the segments are each uniform but differ; a uniform
+// segment's id is its centre id. Row-segment flags live in a 3-row ring, so the coverage is read from
+// memory once. Clamping at the borders only repeats a pixel, which cannot make a window mixed.
+void bandAndMismatches(const std::vector<uint32_t>& coverageA, const std::vector<uint32_t>& coverageB, int width,
+                       int height, std::vector<uint8_t>& band, int64_t& mismatches, int64_t& outside) {
+    const size_t n = size_t(width) * size_t(height);
+    SHADELAB_CHECK_EQ(coverageA.size(), n);
+    SHADELAB_CHECK_EQ(coverageB.size(), n);
+    band.assign(n, 0);
+    if (n == 0) return;
+    const size_t w = size_t(width);
+    std::vector<uint8_t> ring(3 * w);
+    const auto rowMixed = [&](int y) {
+        const uint32_t* ra = coverageA.data() + size_t(y) * w;
+        const uint32_t* rb = coverageB.data() + size_t(y) * w;
+        uint8_t* m = ring.data() + size_t(y % 3) * w;
+        const auto mixedAt = [&](int x, int l, int r) {
+            return uint8_t((ra[l] != ra[x]) | (ra[r] != ra[x]) | (rb[l] != rb[x]) | (rb[r] != rb[x]));
+        };
+        for (int x = 1; x + 1 < width; ++x) m[x] = mixedAt(x, x - 1, x + 1);   // straight loop: vectorises
+        m[0] = mixedAt(0, 0, std::min(1, width - 1));
+        if (width > 1) m[width - 1] = mixedAt(width - 1, width - 2, width - 1);
+    };
+    rowMixed(0);
+    for (int y = 0; y < height; ++y) {
+        if (y + 1 < height) rowMixed(y + 1);
+        const int yu = y > 0 ? y - 1 : y, yd = y + 1 < height ? y + 1 : y;
+        const uint8_t *mu = &ring[size_t(yu % 3) * w], *mc = &ring[size_t(y % 3) * w], *md = &ring[size_t(yd % 3) * w];
+        const uint32_t* ca = coverageA.data();
+        const uint32_t* cb = coverageB.data();
+        const uint32_t *au = ca + size_t(yu) * w, *ac = ca + size_t(y) * w, *ad = ca + size_t(yd) * w;
+        const uint32_t *bu = cb + size_t(yu) * w, *bc = cb + size_t(y) * w, *bd = cb + size_t(yd) * w;
+        uint8_t* out = &band[size_t(y) * w];
+        int64_t rowMismatches = 0, rowOutside = 0;
+        for (size_t x = 0; x < w; ++x) {
+            const uint8_t inBand = uint8_t(mu[x] | mc[x] | md[x] | (au[x] != ac[x]) | (ad[x] != ac[x]) |
+                                           (bu[x] != bc[x]) | (bd[x] != bc[x]));
+            const int differs = ac[x] != bc[x];
+            out[x] = inBand;
+            rowMismatches += differs;
+            rowOutside += differs & (inBand ^ 1);
+        }
+        mismatches += rowMismatches;
+        outside += rowOutside;
+    }
+}
+
 CompareResult compareWithBand(const Image8& a, const Image8& b, const uint8_t* band, const CompareGates& gates) {
     RegionAcc acc[2];
-    const int ca = a.channels, cb = b.channels;
-    if (ca == 3 && cb == 3) accumulate<3, 3>(a, b, band, gates.threshold, gates.hardMax, acc);
-    else if (ca == 4 && cb == 4) accumulate<4, 4>(a, b, band, gates.threshold, gates.hardMax, acc);
-    else if (ca == 3) accumulate<3, 4>(a, b, band, gates.threshold, gates.hardMax, acc);
-    else accumulate<4, 3>(a, b, band, gates.threshold, gates.hardMax, acc);
+    const int ca = a.channels, cb = b.channels, t = gates.threshold, h = gates.hardMax;
+    if (ca == 3 && cb == 3) accumulate<3, 3>(a, b, band, t, h, acc[0], acc[1]);
+    else if (ca == 4 && cb == 4) accumulate<4, 4>(a, b, band, t, h, acc[0], acc[1]);
+    else if (ca == 3) accumulate<3, 4>(a, b, band, t, h, acc[0], acc[1]);
+    else accumulate<4, 3>(a, b, band, t, h, acc[0], acc[1]);
 
     CompareResult r;
     r.width = a.width;
@@ -189,32 +251,9 @@ const char* channelName(int channel) {
 
 std::vector<uint8_t> silhouetteBand(const std::vector<uint32_t>& coverageA, const std::vector<uint32_t>& coverageB,
                                     int width, int height) {
-    const size_t n = size_t(width) * size_t(height);
-    SHADELAB_CHECK_EQ(coverageA.size(), n);
-    SHADELAB_CHECK_EQ(coverageB.size(), n);
-    // A 3x3 window is mixed iff one of its three row segments is mixed, or the three segments are each
-    // uniform but differ from one another; a uniform segment's id is its centre id. Clamping at the
-    // borders only repeats a pixel, which cannot change whether a window is mixed.
-    std::vector<uint8_t> rowMixed(n), band(n);
-    const uint32_t* ids[2] = {coverageA.data(), coverageB.data()};
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const size_t i = size_t(y) * size_t(width) + size_t(x);
-            const size_t l = x > 0 ? i - 1 : i, rt = x + 1 < width ? i + 1 : i;
-            uint8_t m = 0;
-            for (int k = 0; k < 2; ++k) m |= uint8_t((ids[k][l] != ids[k][i]) | (ids[k][rt] != ids[k][i]));
-            rowMixed[i] = m;
-        }
-    }
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const size_t i = size_t(y) * size_t(width) + size_t(x);
-            const size_t up = y > 0 ? i - size_t(width) : i, dn = y + 1 < height ? i + size_t(width) : i;
-            uint8_t m = rowMixed[up] | rowMixed[i] | rowMixed[dn];
-            for (int k = 0; k < 2; ++k) m |= uint8_t((ids[k][up] != ids[k][i]) | (ids[k][dn] != ids[k][i]));
-            band[i] = m;
-        }
-    }
+    std::vector<uint8_t> band;
+    int64_t mismatches = 0, outside = 0;
+    bandAndMismatches(coverageA, coverageB, width, height, band, mismatches, outside);
     return band;
 }
 
@@ -230,14 +269,13 @@ CompareResult compareImages(const Image8& a, const Image8& b, const std::vector<
                             const std::vector<uint32_t>& coverageB, const CompareGates& gates) {
     checkImages(a, b);
     checkGates(gates);
-    std::vector<uint8_t> band = silhouetteBand(coverageA, coverageB, a.width, a.height);
+    std::vector<uint8_t> band;
+    int64_t mismatches = 0, outside = 0;
+    bandAndMismatches(coverageA, coverageB, a.width, a.height, band, mismatches, outside);
     CompareResult r = compareWithBand(a, b, band.data(), gates);
     r.hasCoverage = true;
-    for (size_t i = 0; i < band.size(); ++i) {
-        const int64_t differs = coverageA[i] != coverageB[i];
-        r.coverageMismatches += differs;
-        r.mismatchesOutsideBand += differs & int64_t(band[i] == 0);
-    }
+    r.coverageMismatches = mismatches;
+    r.mismatchesOutsideBand = outside;
     r.bandMask = std::move(band);
     applyGates(r);
     return r;

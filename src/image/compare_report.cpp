@@ -1,4 +1,4 @@
-// Heatmap, side-by-side strip, summary text and JSON report for a CompareResult. nlohmann::json stays
+// Heatmap, side-by-side strip, summary text and JSON report for a CompareResult. Json stays
 // inside this file; the header exposes strings only.
 #include "image/compare_report.h"
 
@@ -18,6 +18,8 @@
 namespace shadelab {
 
 namespace {
+
+using Json = nlohmann::ordered_json;   // keys in the order written: verdict first, for people reading it
 
 // Inferno-like control points (sRGB bytes) with rising Rec. 709 luminance (0, 20, 51, 91, 176, 255),
 // so linear interpolation between them keeps the ramp monotone in brightness.
@@ -50,14 +52,14 @@ void checkSameSize(const Image8& a, const Image8& b) {
     SHADELAB_CHECK(a.channels >= 3 && b.channels >= 3);
 }
 
-nlohmann::json regionJson(const RegionStats& s) {
+Json regionJson(const RegionStats& s) {
     return {{"pixels", s.pixels},
             {"mean", s.mean},
             {"rms", s.rms},
             {"max", s.max},
-            {"max_x", s.maxX},
-            {"max_y", s.maxY},
-            {"max_channel", s.maxChannel >= 0 ? nlohmann::json(channelName(s.maxChannel)) : nlohmann::json()},
+            {"max_x", s.max > 0 ? Json(s.maxX) : Json()},   // null: no pixel differs
+            {"max_y", s.max > 0 ? Json(s.maxY) : Json()},
+            {"max_channel", s.max > 0 ? Json(channelName(s.maxChannel)) : Json()},
             {"over_threshold", s.overThreshold},
             {"fraction_over_threshold", s.fractionOver()},
             {"over_hard_max", s.overHardMax}};
@@ -150,7 +152,7 @@ std::string compareSummary(const CompareResult& r) {
 }
 
 std::string compareReportJson(const CompareResult& r, const std::string& imageA, const std::string& imageB) {
-    nlohmann::json j;
+    Json j;
     j["verdict"] = r.pass ? "pass" : "fail";
     j["pass"] = r.pass;
     j["reasons"] = r.reasons;
@@ -164,7 +166,7 @@ std::string compareReportJson(const CompareResult& r, const std::string& imageA,
                   {"max_fraction_over", r.gates.maxFractionOver},
                   {"hard_max", r.gates.hardMax},
                   {"max_silhouette_fraction", r.gates.maxSilhouetteFraction},
-                  {"max_mean", r.gates.maxMean ? nlohmann::json(*r.gates.maxMean) : nlohmann::json()}};
+                  {"max_mean", r.gates.maxMean ? Json(*r.gates.maxMean) : Json()}};
     j["regions"] = {{"interior", regionJson(r.interior)}, {"band", regionJson(r.band)}, {"all", regionJson(r.all)}};
     j["coverage"] = {{"present", r.hasCoverage},
                      {"band_pixels", r.band.pixels},

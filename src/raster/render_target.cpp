@@ -75,6 +75,17 @@ void RenderTarget::readColor(ImageF& out) const {
     flipRows(out.rgba.data(), width_, height_, 4);
 }
 
+void RenderTarget::readColorRows(int row, int count, ImageF& out) const {
+    if (out.width != width_ || out.height != count || row < 0 || row + count > height_)
+        throw std::logic_error("RenderTarget::readColorRows: destination does not fit");
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, height_ - row - count, width_, count, GL_RGBA, GL_FLOAT, out.rgba.data());
+    flipRows(out.rgba.data(), width_, count, 4);
+    gl::checkError("RenderTarget::readColorRows");
+}
+
 void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
     if (!coverage_) throw std::logic_error("RenderTarget::readCoverage: target was made without coverage");
     out.assign(size_t(width_) * size_t(height_), 0u);
@@ -91,15 +102,11 @@ void RenderTarget::readColor8(Image8& out, int top, Encoding encoding) const {
     constexpr int kStripRows = 64;
     if (out.width != width_ || out.channels != 3 || top < 0 || top + height_ > out.height)
         throw std::logic_error("RenderTarget::readColor8: destination does not fit the target");
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
     ImageF strip;
     for (int row = 0; row < height_; row += kStripRows) {
         int rows = std::min(kStripRows, height_ - row);
         if (strip.height != rows) strip = ImageF(width_, rows);
-        glReadPixels(0, height_ - row - rows, width_, rows, GL_RGBA, GL_FLOAT, strip.rgba.data());
-        flipRows(strip.rgba.data(), width_, rows, 4);
+        readColorRows(row, rows, strip);
         Image8 converted = toImage8(strip, encoding);
         std::memcpy(&out.data[size_t(top + row) * size_t(width_) * 3], converted.data.data(), converted.data.size());
     }

@@ -24,6 +24,8 @@ public:
 
     // Read back with row 0 at the top.
     void readColor(ImageF& out) const;
+    // Rows [row, row + count) of the target (from the top) into `out`, which must be width x count.
+    void readColorRows(int row, int count, ImageF& out) const;
     void readCoverage(std::vector<uint32_t>& out) const;
 
     // Reads colour a strip of rows at a time and converts each with toImage8 (the one shared conversion),

@@ -1,0 +1,102 @@
+// renderOffscreen: bands × supersampling × the one float→8-bit conversion.
+#include "raster/offscreen.h"
+
+#include "gl/gl_api.h"
+#include "util/input_error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace shadelab::raster {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// Averages k×k blocks of `hi` (k·W wide, k·rows tall) into `lo` (W wide, rows tall), in linear float.
+void boxDownsample(const ImageF& hi, int k, ImageF& lo) {
+    const float inv = 1.0f / float(k * k);
+    for (int y = 0; y < lo.height; ++y)
+        for (int x = 0; x < lo.width; ++x) {
+            float sum[4] = {0, 0, 0, 0};
+            for (int b = 0; b < k; ++b)
+                for (int a = 0; a < k; ++a) {
+                    const float* p = hi.pixel(x * k + a, y * k + b);
+                    for (int c = 0; c < 4; ++c) sum[c] += p[c];
+                }
+            float* q = lo.pixel(x, y);
+            for (int c = 0; c < 4; ++c) q[c] = sum[c] * inv;
+        }
+}
+
+}  // namespace
+
+int samplesPerSide(int spp) {
+    int k = int(std::lround(std::sqrt(double(std::max(spp, 0)))));
+    if (spp < 1 || spp > 64 || k * k != spp)
+        throw UsageError("--spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " + std::to_string(spp));
+    return k;
+}
+
+OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, const OffscreenOptions& o) {
+    const int k = samplesPerSide(o.spp);
+    const int hiW = o.width * k, hiH = o.height * k;
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (hiW > maxSize)
+        throw UsageError("--size " + std::to_string(o.width) + " wide with --spp " + std::to_string(o.spp) + " needs a " +
+                         std::to_string(hiW) + "-pixel-wide target; this GL allows " + std::to_string(maxSize));
+
+    OffscreenResult r;
+    r.pixels.width = o.width;
+    r.pixels.height = o.height;
+    r.pixels.channels = 3;
+    r.pixels.data.resize(size_t(o.width) * size_t(o.height) * 3);
+    if (o.coverage) r.coverage.resize(size_t(o.width) * size_t(o.height));
+
+    // Bands hold whole output rows (multiples of k sub-rows) and stay near the target budget.
+    const int outRowsPerBand = std::max(1, (o.height + bandCount(hiW, hiH, o.maxTargetBytes) - 1) /
+                                               bandCount(hiW, hiH, o.maxTargetBytes));
+    const int coverageSample = (k - 1) / 2;
+    ImageF hiStrip, loStrip;
+    std::vector<uint32_t> bandCoverage;
+    for (int outTop = 0; outTop < o.height; outTop += outRowsPerBand) {
+        const int outRows = std::min(outRowsPerBand, o.height - outTop);
+        Clock::time_point t0 = Clock::now();
+        renderer.draw(scene, hiW, hiH, o.coverage, Band{outTop * k, outRows * k});
+        glFinish();
+        r.drawMs += msSince(t0);
+        t0 = Clock::now();
+        ++r.bands;
+        const RenderTarget& target = renderer.target();
+        if (k == 1) {
+            target.readColor8(r.pixels, outTop, o.encoding);
+        } else {
+            // Strips of 16 output rows: read k·16 sub-rows, average, convert.
+            for (int row = 0; row < outRows; row += 16) {
+                const int rows = std::min(16, outRows - row);
+                if (hiStrip.height != rows * k) hiStrip = ImageF(hiW, rows * k);
+                if (loStrip.height != rows) loStrip = ImageF(o.width, rows);
+                target.readColorRows(row * k, rows * k, hiStrip);
+                boxDownsample(hiStrip, k, loStrip);
+                Image8 converted = toImage8(loStrip, o.encoding);
+                std::memcpy(&r.pixels.data[size_t(outTop + row) * size_t(o.width) * 3], converted.data.data(),
+                            converted.data.size());
+            }
+        }
+        if (o.coverage) {
+            target.readCoverage(bandCoverage);
+            for (int y = 0; y < outRows; ++y)
+                for (int x = 0; x < o.width; ++x)
+                    r.coverage[size_t(outTop + y) * size_t(o.width) + size_t(x)] =
+                        bandCoverage[size_t(y * k + coverageSample) * size_t(hiW) + size_t(x * k + coverageSample)];
+        }
+        r.readMs += msSince(t0);
+    }
+    return r;
+}
+
+}  // namespace shadelab::raster

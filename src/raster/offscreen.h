@@ -1,0 +1,38 @@
+// renderOffscreen: a whole image from the rasterizer, as `shadelab render` and screenshots need it. Draws in
+// bands (bounded RGBA32F target), supersamples on the fixed k×k grid the tracer also uses (spp = k²), and
+// converts once with the shared toImage8. Not for interactive frames: the viewer draws its target directly.
+#pragma once
+
+#include "image/encode.h"
+#include "image/image.h"
+#include "raster/raster_renderer.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace shadelab::raster {
+
+struct OffscreenOptions {
+    int width = 1280, height = 720;     // output pixels
+    int spp = 1;                        // samples per pixel: a perfect square k², on the grid (i + (a+0.5)/k)
+    Encoding encoding = Encoding::Srgb;
+    bool coverage = false;              // also return coverage ids (of sample a = b = (k-1)/2)
+    size_t maxTargetBytes = size_t(8) << 20;  // float colour target budget per band
+};
+
+struct OffscreenResult {
+    Image8 pixels;                      // RGB
+    std::vector<uint32_t> coverage;     // width*height ids when asked, row 0 at the top
+    int bands = 0;
+    double drawMs = 0.0;                // GPU time, summed over bands (glFinish after each)
+    double readMs = 0.0;                // readback + downsampling + conversion
+};
+
+// k for spp = k²; throws UsageError naming --spp when spp is not a perfect square in [1, 64].
+int samplesPerSide(int spp);
+
+// Throws UsageError when the supersampled width exceeds the GL maximum texture size.
+OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, const OffscreenOptions& options);
+
+}  // namespace shadelab::raster

@@ -1,0 +1,70 @@
+// Aabb, an axis-aligned box, and the robust ray–box slab test the BVH traversals share (Kay & Kajiya
+// 1986 slabs; Ize 2013 "Robust BVH Ray Traversal" for the conservative far distance). No primitives here.
+#pragma once
+
+#include "trace/ray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+namespace shadelab::trace {
+
+struct Aabb {
+    glm::vec3 lo{1e30f};
+    glm::vec3 hi{-1e30f};
+
+    bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+    void extend(const glm::vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void extend(const Aabb& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+    glm::vec3 centroid() const { return 0.5f * (lo + hi); }
+    // Surface area, the SAH's probability measure (MacDonald & Booth 1990). 0 for an empty box.
+    float area() const {
+        if (empty()) return 0.0f;
+        const glm::vec3 e = hi - lo;
+        return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+    }
+};
+
+// Per-ray constants of the slab test. A zero (or denormal) direction component becomes a huge finite
+// reciprocal, so a ray parallel to a slab never multiplies 0 by infinity (which would give NaN).
+struct BoxRay {
+    float org[3];
+    float invDir[3];
+};
+
+inline BoxRay makeBoxRay(const Ray& ray) {
+    BoxRay b{};
+    const float d[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
+    const float o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    for (int a = 0; a < 3; ++a) {
+        b.org[a] = o[a];
+        b.invDir[a] = std::fabs(d[a]) > 1e-30f ? 1.0f / d[a] : std::copysign(1e30f, d[a]);
+    }
+    return b;
+}
+
+// 1 + 2·γ(3) with γ(n) = nε/(1 − nε) (Ize 2013; pbrt-v3 §3.9.2): widening the far distance by this makes
+// the float slab test conservative, so a box is never culled while a primitive inside it is hit.
+inline constexpr float kSlabFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+
+// Entry distance of the ray into the box [lo, hi] (float[3] each), or +infinity when it misses the box
+// or enters it beyond tMax. Entry may be negative when the origin is inside.
+inline float slabEntry(const BoxRay& r, const float* lo, const float* hi, float tMax) {
+    const float tx0 = (lo[0] - r.org[0]) * r.invDir[0], tx1 = (hi[0] - r.org[0]) * r.invDir[0];
+    const float ty0 = (lo[1] - r.org[1]) * r.invDir[1], ty1 = (hi[1] - r.org[1]) * r.invDir[1];
+    const float tz0 = (lo[2] - r.org[2]) * r.invDir[2], tz1 = (hi[2] - r.org[2]) * r.invDir[2];
+    const float tNear = std::max(std::max(std::min(tx0, tx1), std::min(ty0, ty1)), std::min(tz0, tz1));
+    const float tFar = std::min(std::min(std::max(tx0, tx1), std::max(ty0, ty1)), std::max(tz0, tz1)) *
+                       kSlabFarScale;
+    return (tNear <= tFar && tFar >= 0.0f && tNear <= tMax) ? tNear : INFINITY;
+}
+
+}  // namespace shadelab::trace

@@ -1,0 +1,154 @@
+// WhittedIntegrator: surface set-up (normals and checker exactly as the rasterizer's shaders), local
+// shading through shading::shadeLocal, hard shadows, and the kr / kt recursion.
+#include "trace/integrator.h"
+
+#include "scene/coverage.h"
+#include "shading/local_illumination.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab::trace {
+namespace {
+
+bool positive(const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; }
+
+}  // namespace
+
+WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth)
+    : scene_(scene),
+      maxDepth_(std::max(maxDepth, 0)),
+      model_(scene.scene().model == ShadingModel::Phong ? shading::SL_MODEL_PHONG
+                                                       : shading::SL_MODEL_BLINN_PHONG) {}
+
+PrimarySample WhittedIntegrator::primary(const Ray& ray) const {
+    const std::optional<Hit> hit = scene_.intersect(ray);
+    if (!hit) return {scene_.scene().background, kBackgroundId};
+    return {shade(ray, *hit, 0), scene_.coverageId(*hit)};
+}
+
+glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth) const {
+    const std::optional<Hit> hit = scene_.intersect(ray);
+    return hit ? shade(ray, *hit, depth) : scene_.scene().background;
+}
+
+Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit) const {
+    const Scene& sc = scene_.scene();
+    Surface s;
+    s.material = &scene_.material(hit);
+    s.md = s.material->md;
+    s.P = ray.origin + hit.t * ray.dir;
+    const glm::vec3 V = -ray.dir;
+    switch (hit.kind) {
+        case HitKind::Sphere: {
+            // Same expressions as shaders/sphere.frag.
+            const Sphere& sp = sc.spheres[hit.index];
+            const glm::vec3 outward = (s.P - sp.center) / sp.radius;
+            s.N = shading::faceForward(outward, V);
+            s.entering = !(glm::dot(outward, V) < 0.0f);
+            s.Nf = glm::normalize(s.N);
+            break;
+        }
+        case HitKind::Plane: {
+            // Same expressions as shaders/plane.frag.
+            const Plane& pl = sc.planes[hit.index];
+            s.N = shading::faceForward(pl.normal, V);
+            s.entering = !(glm::dot(pl.normal, V) < 0.0f);
+            s.Nf = glm::normalize(s.N);
+            if (pl.checker && shading::checkerParity(s.P, pl.normal, pl.checker->size) == 1) s.md = pl.checker->md2;
+            break;
+        }
+        case HitKind::Triangle: {
+            // Interpolated vertex normal, flipped to the viewer by the winding as gl_FrontFacing does.
+            const MeshBvh& mb = *scene_.meshBvh();
+            MeshHit mh{hit.t, hit.index, hit.b0, hit.b1, hit.b2};
+            const glm::vec3 Ng = mb.geometricNormal(hit.index);
+            const bool back = glm::dot(Ng, ray.dir) > 0.0f;
+            const glm::vec3 N = mb.interpolatedNormal(mh);
+            s.N = back ? -N : N;
+            s.entering = !back;
+            const float len = glm::length(Ng);
+            s.Nf = len > 0.0f ? (back ? -Ng : Ng) / len : glm::normalize(s.N);
+            break;
+        }
+    }
+    return s;
+}
+
+float WhittedIntegrator::visibility(const Surface& s, const Light& light) const {
+    Ray shadow;
+    shadow.origin = s.P + scene_.epsilon() * s.Nf;
+    float tMax = INFINITY;
+    if (light.type == LightType::Point) {
+        const glm::vec3 toLight = light.position - shadow.origin;
+        tMax = glm::length(toLight);
+        if (!(tMax > 0.0f)) return 1.0f;
+        shadow.dir = toLight / tMax;
+    } else {
+        shadow.dir = glm::normalize(-light.direction);
+    }
+    return scene_.occluded(shadow, tMax) ? 0.0f : 1.0f;
+}
+
+glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s) const {
+    const Scene& sc = scene_.scene();
+    const Material& m = *s.material;
+    const glm::vec3 V = -ray.dir;
+    const shading::SurfaceParams params{m.ma, s.md, m.ms, m.s};
+    const bool lit = sc.terms.diffuse || sc.terms.specular;
+    // Lights go to shadeLocal in batches of kMaxLights (one batch for every scene the rasterizer takes).
+    shading::LightSample samples[kMaxLights];
+    glm::vec3 I(0.0f);
+    size_t first = 0;
+    do {
+        const size_t count = std::min(sc.lights.size() - first, size_t(kMaxLights));
+        for (size_t k = 0; k < count; ++k) {
+            const Light& l = sc.lights[first + k];
+            const bool isPoint = l.type == LightType::Point;
+            shading::LightSample& ls = samples[k];
+            ls.L = shading::lightVector(isPoint ? l.position : l.direction, isPoint, s.P);
+            ls.Il = shading::lightIntensityAt(l.color, isPoint, l.attenuation, ls.L);
+            // Only a light that could contribute (N·L > 0) needs a shadow ray: otherwise its term is 0.
+            ls.visibility = sc.terms.shadows && lit && glm::dot(s.N, ls.L) > 0.0f ? visibility(s, l) : 1.0f;
+        }
+        shading::TermFlags terms{sc.terms.ambient && first == 0, sc.terms.diffuse, sc.terms.specular};
+        const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, model_, terms);
+        I = first == 0 ? batch : I + batch;
+        first += count;
+    } while (first < sc.lights.size());
+    return I;
+}
+
+glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth) const {
+    const Surface s = surfaceAt(ray, hit);
+    glm::vec3 I = local(ray, s);
+    if (!scene_.scene().terms.reflections || depth >= maxDepth_) return I;
+
+    const Material& m = *s.material;
+    const glm::vec3 V = -ray.dir;
+    const glm::vec3 N = glm::normalize(s.N);
+    const float NoV = glm::dot(N, V);
+    const float eps = scene_.epsilon();
+    glm::vec3 reflectWeight = m.kr;
+    glm::vec3 transmitted(0.0f);
+    if (positive(m.kt)) {
+        // Snell's law, n1 sin θ1 = n2 sin θ2, as a vector (Heckbert 1989, "Writing a ray tracer" in Glassner):
+        // T = −η V + (η cos θ1 − cos θ2) N with η = n1/n2 and cos² θ2 = 1 − η² (1 − cos² θ1).
+        const float eta = s.entering ? 1.0f / m.ior : m.ior;
+        const float cos2 = 1.0f - eta * eta * (1.0f - NoV * NoV);
+        if (cos2 < 0.0f) {
+            reflectWeight += m.kt;  // total internal reflection: the transmitted energy is reflected
+        } else {
+            const glm::vec3 T = glm::normalize(-eta * V + (eta * NoV - std::sqrt(cos2)) * N);
+            transmitted = m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1);
+        }
+    }
+    if (positive(reflectWeight)) {
+        // Whitted 1980: mirror direction 2N(N·V) − V.
+        const glm::vec3 R = glm::normalize(2.0f * NoV * N - V);
+        I += reflectWeight * radiance(Ray{s.P + eps * s.Nf, R}, depth + 1);
+    }
+    return I + transmitted;
+}
+
+}  // namespace shadelab::trace

@@ -1,0 +1,53 @@
+// WhittedIntegrator: the recursive ray tracer of Whitted 1980 ("An Improved Illumination Model for Shaded
+// Display") over a TraceScene, exactly as design.md §1 states it. No threads and no images here: the tile
+// renderer (progressive_trace.h) calls it per sample.
+#pragma once
+
+#include "trace/ray.h"
+#include "trace/trace_scene.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+
+namespace shadelab::trace {
+
+// What a hit looks like to shading.
+struct Surface {
+    glm::vec3 P{0.0f};          // hit point, origin + t·dir as the rasterizer computes it
+    glm::vec3 N{0.0f};          // shading normal on the viewer's side, as handed to shadeLight (meshes: not unit)
+    glm::vec3 Nf{0.0f};         // unit geometric normal on the viewer's side: secondary rays are offset along it
+    bool entering = true;       // the ray arrives from the outward side (sphere outside, plane normal side,
+                                // mesh counter-clockwise front), so refraction goes from 1 into ior
+    glm::vec3 md{0.0f};         // diffuse coefficient, after the plane's checker
+    const Material* material = nullptr;
+};
+
+struct PrimarySample {
+    glm::vec3 color{0.0f};      // linear RGB radiance
+    uint32_t coverage = 0;      // coverage id of the first hit (scene/coverage.h), 0 for the background
+};
+
+class WhittedIntegrator {
+public:
+    // maxDepth: how many secondary bounces a path may take; 0 traces primary and shadow rays only.
+    WhittedIntegrator(const TraceScene& scene, int maxDepth);
+
+    PrimarySample primary(const Ray& ray) const;
+    // Radiance arriving along `ray`, which is `depth` bounces from the camera. Background on a miss.
+    glm::vec3 radiance(const Ray& ray, int depth) const;
+
+    Surface surfaceAt(const Ray& ray, const Hit& hit) const;
+    // Local illumination (design.md §1) at a surface seen along `ray`: ambient plus every light, each
+    // weighted by its shadow-ray visibility when the shadows term is on.
+    glm::vec3 local(const Ray& ray, const Surface& s) const;
+
+private:
+    glm::vec3 shade(const Ray& ray, const Hit& hit, int depth) const;
+    float visibility(const Surface& s, const Light& light) const;
+
+    const TraceScene& scene_;
+    int maxDepth_;
+    int model_;
+};
+
+}  // namespace shadelab::trace

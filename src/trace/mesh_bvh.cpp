@@ -1,0 +1,195 @@
+// MeshBvh: gathering the scene's triangles, building the BVH, and the two traversals (nearest hit with an
+// order-independent tie-break, and any hit for shadow rays). Ordered front-to-back traversal with a
+// small fixed stack; no allocation and no virtual calls per ray.
+#include "trace/mesh_bvh.h"
+
+#include "trace/watertight.h"
+#include "util/check.h"
+
+#include <cmath>
+#include <utility>
+
+namespace shadelab::trace {
+namespace {
+
+bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+void put(float* dst, const glm::vec3& v) {
+    dst[0] = v.x;
+    dst[1] = v.y;
+    dst[2] = v.z;
+}
+
+struct StackEntry {
+    uint32_t node;
+    float tEntry;
+};
+
+}  // namespace
+
+MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
+    // Gather the finite triangles in scene order; `source` numbers every triangle, kept or not.
+    std::vector<Aabb> boxes;
+    std::vector<uint32_t> tmpPart, tmpSource;
+    std::vector<float> tmpPos, tmpNrm;
+    uint32_t source = 0, partIndex = 0;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        for (const MeshPart& p : scene.meshes[m].parts) {
+            partMesh_.push_back(uint32_t(m));
+            partTriangles_.push_back(p.triangleCount());
+            const bool hasNormals = p.normals.size() == p.positions.size();
+            for (size_t t = 0; t < p.triangleCount(); ++t, ++source) {
+                uint32_t idx[3];
+                glm::vec3 v[3];
+                for (int k = 0; k < 3; ++k) {
+                    idx[k] = p.indices[3 * t + size_t(k)];
+                    SHADELAB_CHECK_LT(size_t(idx[k]), p.positions.size());
+                    v[k] = p.positions[idx[k]];
+                }
+                if (!finite(v[0]) || !finite(v[1]) || !finite(v[2])) continue;
+                Aabb box;
+                for (const glm::vec3& q : v) box.extend(q);
+                boxes.push_back(box);
+                bounds_.extend(box);
+                tmpPart.push_back(partIndex);
+                tmpSource.push_back(source);
+                // Without vertex normals, the geometric normal stands in (flat shading).
+                const glm::vec3 flat = glm::cross(v[1] - v[0], v[2] - v[0]);
+                for (int k = 0; k < 3; ++k) {
+                    tmpPos.insert(tmpPos.end(), {v[k].x, v[k].y, v[k].z});
+                    const glm::vec3 n = hasNormals ? p.normals[idx[k]] : flat;
+                    tmpNrm.insert(tmpNrm.end(), {n.x, n.y, n.z});
+                }
+            }
+            ++partIndex;
+        }
+    }
+    bvh_ = buildBvh(boxes, options);
+
+    // Store the per-triangle data in BVH order, so a leaf's triangles are contiguous in memory.
+    const size_t n = boxes.size();
+    positions_.resize(9 * n);
+    normals_.resize(9 * n);
+    part_.resize(n);
+    source_.resize(n);
+    for (size_t slot = 0; slot < n; ++slot) {
+        const uint32_t src = bvh_.order[slot];
+        std::copy_n(&tmpPos[9 * size_t(src)], 9, &positions_[9 * slot]);
+        std::copy_n(&tmpNrm[9 * size_t(src)], 9, &normals_[9 * slot]);
+        part_[slot] = tmpPart[src];
+        source_[slot] = tmpSource[src];
+    }
+}
+
+glm::vec3 MeshBvh::interpolatedNormal(const MeshHit& hit) const {
+    const float* n = &normals_[size_t(hit.slot) * 9];
+    return hit.b0 * glm::vec3(n[0], n[1], n[2]) + hit.b1 * glm::vec3(n[3], n[4], n[5]) +
+           hit.b2 * glm::vec3(n[6], n[7], n[8]);
+}
+
+glm::vec3 MeshBvh::geometricNormal(uint32_t slot) const {
+    const float* v = vertices(slot);
+    const glm::vec3 v0(v[0], v[1], v[2]), v1(v[3], v[4], v[5]), v2(v[6], v[7], v[8]);
+    return glm::cross(v1 - v0, v2 - v0);
+}
+
+bool MeshBvh::matches(const Scene& scene) const {
+    size_t k = 0;
+    for (size_t m = 0; m < scene.meshes.size(); ++m)
+        for (const MeshPart& p : scene.meshes[m].parts) {
+            if (k >= partMesh_.size() || partMesh_[k] != m || partTriangles_[k] != p.triangleCount()) return false;
+            ++k;
+        }
+    return k == partMesh_.size();
+}
+
+std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
+    if (bvh_.empty()) return std::nullopt;
+    const BvhNode* nodes = bvh_.nodes.data();
+    const BoxRay br = makeBoxRay(ray);
+    if (slabEntry(br, nodes[0].lo, nodes[0].hi, tMax) == INFINITY) return std::nullopt;
+    const WatertightRay wr = makeWatertightRay(ray);
+
+    MeshHit best{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
+    StackEntry stack[kMaxBvhDepth];
+    int sp = 0;
+    uint32_t ni = 0;
+    for (;;) {
+        const BvhNode& node = nodes[ni];
+        if (node.isLeaf()) {
+            for (uint32_t s = node.first, end = node.first + node.count; s < end; ++s) {
+                const float* v = &positions_[size_t(s) * 9];
+                const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, best.t);
+                if (!h) continue;
+                // Strictly nearer wins; an exact tie goes to the lower scene-order index.
+                const bool better = best.slot == UINT32_MAX ? h->t < tMax
+                                                            : (h->t < best.t ||
+                                                               (h->t == best.t && source_[s] < source_[best.slot]));
+                if (better) best = MeshHit{h->t, s, h->b0, h->b1, h->b2};
+            }
+        } else {
+            const BvhNode& c0 = nodes[node.first];
+            const BvhNode& c1 = nodes[node.first + 1];
+            float t0 = slabEntry(br, c0.lo, c0.hi, best.t);
+            float t1 = slabEntry(br, c1.lo, c1.hi, best.t);
+            uint32_t nearNode = node.first, farNode = node.first + 1;
+            if (t1 < t0) {
+                std::swap(t0, t1);
+                std::swap(nearNode, farNode);
+            }
+            if (t0 != INFINITY) {
+                if (t1 != INFINITY) stack[sp++] = {farNode, t1};
+                ni = nearNode;
+                continue;
+            }
+        }
+        // Pop the next subtree that may still hold a hit no farther than the best so far.
+        for (;;) {
+            if (sp == 0) return best.slot == UINT32_MAX ? std::nullopt : std::optional<MeshHit>(best);
+            --sp;
+            if (stack[sp].tEntry <= best.t) break;
+        }
+        ni = stack[sp].node;
+    }
+}
+
+bool MeshBvh::anyHit(const Ray& ray, float tMax) const {
+    if (bvh_.empty()) return false;
+    const BvhNode* nodes = bvh_.nodes.data();
+    const BoxRay br = makeBoxRay(ray);
+    if (slabEntry(br, nodes[0].lo, nodes[0].hi, tMax) == INFINITY) return false;
+    const WatertightRay wr = makeWatertightRay(ray);
+
+    uint32_t stack[kMaxBvhDepth];
+    int sp = 0;
+    uint32_t ni = 0;
+    for (;;) {
+        const BvhNode& node = nodes[ni];
+        if (node.isLeaf()) {
+            for (uint32_t s = node.first, end = node.first + node.count; s < end; ++s) {
+                const float* v = &positions_[size_t(s) * 9];
+                const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, tMax);
+                if (h && h->t < tMax) return true;
+            }
+        } else {
+            const BvhNode& c0 = nodes[node.first];
+            const BvhNode& c1 = nodes[node.first + 1];
+            const float t0 = slabEntry(br, c0.lo, c0.hi, tMax);
+            const float t1 = slabEntry(br, c1.lo, c1.hi, tMax);
+            if (t0 != INFINITY && t1 != INFINITY) {
+                // Nearer child first: an occluder near the origin is found without visiting the far side.
+                ni = t0 <= t1 ? node.first : node.first + 1;
+                stack[sp++] = t0 <= t1 ? node.first + 1 : node.first;
+                continue;
+            }
+            if (t0 != INFINITY || t1 != INFINITY) {
+                ni = t0 != INFINITY ? node.first : node.first + 1;
+                continue;
+            }
+        }
+        if (sp == 0) return false;
+        ni = stack[--sp];
+    }
+}
+
+}  // namespace shadelab::trace

@@ -1,0 +1,65 @@
+// MeshBvh: every triangle of a scene's meshes in one SAH BVH, stored in BVH order next to what shading
+// needs (vertex normals, which part and mesh). Geometry only and immutable once built, so TraceScene
+// versions that differ only in materials, lights or camera share one (see trace_scene.h).
+#pragma once
+
+#include "scene/scene.h"
+#include "trace/bvh.h"
+#include "trace/ray.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <vector>
+
+namespace shadelab::trace {
+
+struct MeshHit {
+    float t;                // ray parameter, > 0
+    uint32_t slot;          // the triangle's position in BVH order (MeshBvh accessors take it)
+    float b0, b1, b2;       // barycentric weights of the triangle's vertices 0, 1, 2
+};
+
+class MeshBvh {
+public:
+    // Triangles with a non-finite vertex are left out (they cannot be hit); indices must be in range.
+    explicit MeshBvh(const Scene& scene, const BvhBuildOptions& options = {});
+
+    // The nearest hit with 0 < t < tMax. Exactly equal distances go to the lower sourceTriangle(), so
+    // the answer does not depend on traversal order (brute force over the scene gives the same hit).
+    std::optional<MeshHit> closestHit(const Ray& ray, float tMax) const;
+    // Whether any triangle is hit at 0 < t < tMax (shadow rays): stops at the first one found.
+    bool anyHit(const Ray& ray, float tMax) const;
+
+    size_t triangleCount() const { return part_.size(); }
+    // Vertex positions of a slot as 9 floats (v0, v1, v2), world units.
+    const float* vertices(uint32_t slot) const { return &positions_[size_t(slot) * 9]; }
+    // b0·n0 + b1·n1 + b2·n2 from the glTF vertex normals, not renormalised (shadeLight does that).
+    glm::vec3 interpolatedNormal(const MeshHit& hit) const;
+    // cross(v1 − v0, v2 − v0): points out of the counter-clockwise (front) side; not unit length.
+    glm::vec3 geometricNormal(uint32_t slot) const;
+    // Index into the scene's flattened list of mesh parts (mesh by mesh, part by part).
+    uint32_t part(uint32_t slot) const { return part_[slot]; }
+    // Index of the triangle in scene order: mesh by mesh, part by part, triangle by triangle.
+    uint32_t sourceTriangle(uint32_t slot) const { return source_[slot]; }
+
+    // Mesh index (into Scene::meshes) of each flattened part.
+    const std::vector<uint32_t>& partMesh() const { return partMesh_; }
+    Aabb bounds() const { return bounds_; }
+    const Bvh& bvh() const { return bvh_; }
+    // Whether `scene` has the same meshes, parts and triangle counts as the scene this was built from
+    // (a cheap sanity check; it cannot see moved vertices).
+    bool matches(const Scene& scene) const;
+
+private:
+    Bvh bvh_;
+    std::vector<float> positions_;      // 9 per slot
+    std::vector<float> normals_;        // 9 per slot
+    std::vector<uint32_t> part_;        // per slot
+    std::vector<uint32_t> source_;      // per slot
+    std::vector<uint32_t> partMesh_;    // per flattened part
+    std::vector<size_t> partTriangles_; // triangle count per flattened part, for matches()
+    Aabb bounds_;
+};
+
+}  // namespace shadelab::trace

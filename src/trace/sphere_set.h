@@ -1,0 +1,41 @@
+// SphereSet: a scene's spheres behind a small BVH, so a ray tests only the spheres whose boxes it
+// crosses. The hit itself is shading::intersectSphere, the function the rasterizer's impostors run.
+#pragma once
+
+#include "scene/objects.h"
+#include "trace/bvh.h"
+#include "trace/ray.h"
+
+#include <cstdint>
+#include <glm/vec4.hpp>
+#include <optional>
+#include <vector>
+
+namespace shadelab::trace {
+
+struct SphereHit {
+    float t;            // ray parameter
+    uint32_t index;     // into Scene::spheres
+};
+
+class SphereSet {
+public:
+    explicit SphereSet(const std::vector<Sphere>& spheres);
+
+    // The nearest intersectSphere(origin, dir, centre, radius, tMin) result below tMax; an exact tie goes
+    // to the lower sphere index, as a loop over the spheres in scene order gives.
+    std::optional<SphereHit> closestHit(const Ray& ray, float tMin, float tMax) const;
+    // Whether some sphere is hit at tMin < t < tMax (shadow rays).
+    bool anyHit(const Ray& ray, float tMin, float tMax) const;
+
+    size_t size() const { return spheres_.size(); }
+    Aabb bounds() const { return bounds_; }
+
+private:
+    Bvh bvh_;
+    std::vector<glm::vec4> spheres_;    // centre and radius, in BVH order
+    std::vector<uint32_t> index_;       // scene index, in BVH order
+    Aabb bounds_;
+};
+
+}  // namespace shadelab::trace

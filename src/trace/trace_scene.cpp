@@ -1,0 +1,127 @@
+// TraceScene: copying the shading data, building the accelerators, the scene-scaled epsilon, and the
+// nearest-hit and occlusion queries over spheres, planes and triangles.
+#include "trace/trace_scene.h"
+
+#include "scene/coverage.h"
+#include "shading/lighting.h"
+#include "util/check.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab::trace {
+namespace {
+
+// The scene without its mesh vertex data: shading needs only each part's material.
+Scene shadingCopy(const Scene& s) {
+    Scene c;
+    c.title = s.title;
+    c.notes = s.notes;
+    c.camera = s.camera;
+    c.model = s.model;
+    c.terms = s.terms;
+    c.ambient = s.ambient;
+    c.background = s.background;
+    c.maxDepth = s.maxDepth;
+    c.lights = s.lights;
+    c.spheres = s.spheres;
+    c.planes = s.planes;
+    c.meshes.reserve(s.meshes.size());
+    for (const Mesh& m : s.meshes) {
+        Mesh mc;
+        mc.name = m.name;
+        mc.source = m.source;
+        mc.transform = m.transform;
+        mc.material = m.material;
+        for (const MeshPart& p : m.parts) {
+            MeshPart pc;
+            pc.material = p.material;
+            mc.parts.push_back(std::move(pc));
+        }
+        c.meshes.push_back(std::move(mc));
+    }
+    return c;
+}
+
+}  // namespace
+
+TraceScene::TraceScene(const Scene& scene) : TraceScene(scene, std::make_shared<const MeshBvh>(scene)) {}
+
+TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const MeshBvh> meshes)
+    : scene_(shadingCopy(scene)), meshes_(std::move(meshes)) {
+    SHADELAB_CHECK(meshes_ != nullptr);
+    SHADELAB_CHECK(meshes_->matches(scene));
+    prepare(scene);
+}
+
+void TraceScene::prepare(const Scene& scene) {
+    spheres_.emplace(scene_.spheres);
+    for (size_t m = 0; m < scene_.meshes.size(); ++m)
+        for (size_t p = 0; p < scene_.meshes[m].parts.size(); ++p) partRef_.emplace_back(uint32_t(m), uint32_t(p));
+
+    Aabb box = spheres_->bounds();
+    box.extend(meshes_->bounds());
+    const glm::vec3 eye = scene.camera.position;
+    box.extend(eye);
+    for (const Plane& p : scene.planes) box.extend(eye - (glm::dot(p.normal, eye) - p.offset) * p.normal);
+    const float radius = 0.5f * glm::length(box.hi - box.lo);
+    const glm::vec3 mag = glm::max(glm::abs(box.lo), glm::abs(box.hi));
+    const float maxAbs = std::max({mag.x, mag.y, mag.z});
+    const float e = std::max({1e-4f * radius, 1e-6f * maxAbs, 1e-7f});
+    epsilon_ = std::isfinite(e) ? e : 1e-4f;
+}
+
+std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
+    Hit best;
+    best.t = INFINITY;
+    bool found = false;
+    if (const std::optional<SphereHit> s = spheres_->closestHit(ray, 0.0f, INFINITY)) {
+        best.t = s->t;
+        best.index = s->index;
+        found = true;
+    }
+    for (size_t i = 0; i < scene_.planes.size(); ++i) {
+        const Plane& p = scene_.planes[i];
+        const float t = shading::intersectPlane(ray.origin, ray.dir, p.normal, p.offset, 0.0f);
+        if (t > 0.0f && t < best.t) {
+            best.t = t;
+            best.kind = HitKind::Plane;
+            best.index = uint32_t(i);
+            found = true;
+        }
+    }
+    if (const std::optional<MeshHit> m = meshes_->closestHit(ray, best.t)) {
+        best = Hit{m->t, HitKind::Triangle, m->slot, m->b0, m->b1, m->b2};
+        found = true;
+    }
+    return found ? std::optional<Hit>(best) : std::nullopt;
+}
+
+bool TraceScene::occluded(const Ray& ray, float tMax) const {
+    for (const Plane& p : scene_.planes) {
+        const float t = shading::intersectPlane(ray.origin, ray.dir, p.normal, p.offset, 0.0f);
+        if (t > 0.0f && t < tMax) return true;
+    }
+    return spheres_->anyHit(ray, 0.0f, tMax) || meshes_->anyHit(ray, tMax);
+}
+
+uint32_t TraceScene::coverageId(const Hit& hit) const {
+    switch (hit.kind) {
+        case HitKind::Sphere: return sphereCoverageId(scene_, hit.index);
+        case HitKind::Plane: return planeCoverageId(scene_, hit.index);
+        case HitKind::Triangle: return meshCoverageId(scene_, meshes_->partMesh()[meshes_->part(hit.index)]);
+    }
+    return kBackgroundId;
+}
+
+const Material& TraceScene::material(const Hit& hit) const {
+    switch (hit.kind) {
+        case HitKind::Sphere: return scene_.spheres[hit.index].material;
+        case HitKind::Plane: return scene_.planes[hit.index].material;
+        case HitKind::Triangle: break;
+    }
+    const std::pair<uint32_t, uint32_t> ref = partRef_[meshes_->part(hit.index)];
+    return scene_.meshes[ref.first].parts[ref.second].material;
+}
+
+}  // namespace shadelab::trace

@@ -1,0 +1,69 @@
+// TraceScene: a Scene made ready to trace. It holds the mesh BVH (shared, geometry only), a BVH over the
+// spheres, the planes, the secondary-ray epsilon, and a copy of what shading reads (materials, lights,
+// camera, terms). Rebuild it when geometry changes; reuse the mesh BVH when only the rest does.
+#pragma once
+
+#include "scene/scene.h"
+#include "trace/mesh_bvh.h"
+#include "trace/ray.h"
+#include "trace/sphere_set.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace shadelab::trace {
+
+enum class HitKind : uint8_t { Sphere, Plane, Triangle };
+
+// A ray's nearest hit. For triangles `index` is a MeshBvh slot and b0..b2 its barycentrics.
+struct Hit {
+    float t = 0.0f;             // ray parameter
+    HitKind kind = HitKind::Sphere;
+    uint32_t index = 0;         // sphere index, plane index, or MeshBvh slot
+    float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
+};
+
+class TraceScene {
+public:
+    // Builds everything, the mesh BVH included.
+    explicit TraceScene(const Scene& scene);
+    // Reuses `meshes`, which must have been built from a scene with this scene's mesh geometry (checked
+    // by triangle counts only): the cheap path when only materials, lights, camera, spheres or planes
+    // changed. Spheres and planes are always taken from `scene`.
+    TraceScene(const Scene& scene, std::shared_ptr<const MeshBvh> meshes);
+
+    // Everything shading reads. Mesh parts keep their material but no vertex data (that is in the BVH).
+    const Scene& scene() const { return scene_; }
+    const std::shared_ptr<const MeshBvh>& meshBvh() const { return meshes_; }
+
+    // Offset of secondary-ray origins along the normal, world units: 1e-4 × the radius of the box around
+    // the spheres, the mesh triangles, the camera and each plane's point nearest the camera (so a scene
+    // seen from afar gets a larger offset, as its hit points are less precise), and never below
+    // 1e-6 × the largest coordinate magnitude there, where float spacing sets the floor.
+    float epsilon() const { return epsilon_; }
+
+    // Nearest hit with t > 0. An exact tie in t goes to spheres, then planes, then triangles, and within
+    // each kind to the lower index in scene order: the answer does not depend on traversal order.
+    std::optional<Hit> intersect(const Ray& ray) const;
+    // Whether anything lies on the ray at 0 < t < tMax. Transmissive surfaces block too (hard shadows of
+    // glass are black, a documented simplification of Whitted 1980's kt-weighted shadow rays).
+    bool occluded(const Ray& ray, float tMax) const;
+
+    // Coverage id of the object hit (scene/coverage.h).
+    uint32_t coverageId(const Hit& hit) const;
+    const Material& material(const Hit& hit) const;
+
+private:
+    void prepare(const Scene& scene);
+
+    Scene scene_;
+    std::shared_ptr<const MeshBvh> meshes_;
+    std::optional<SphereSet> spheres_;
+    std::vector<std::pair<uint32_t, uint32_t>> partRef_;  // (mesh, part) of each flattened mesh part
+    float epsilon_ = 1e-4f;
+};
+
+}  // namespace shadelab::trace
