@@ -176,3 +176,37 @@ TEST(Cli, EncodingLinearIsDarkerThanSrgb) {
     }
     EXPECT_GT(sumS, sumL + long(s.data.size()) * 5) << a << " vs " << b;
 }
+
+TEST(CliCompare, ExitCodesFollowTheGates) {
+    std::string scene = test::sourcePath("assets/scenes/default.json");
+    std::string a = test::outputPath("cmp_a.png"), b = test::outputPath("cmp_b.png"), c = test::outputPath("cmp_c.png");
+    ASSERT_EQ(run("render " + scene + " -o " + a + " --size 160x90").code, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + b + " --size 160x90").code, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + c + " --size 160x90 --model blinn-phong").code, 0);
+    Result same = run("compare " + a + " " + b);
+    EXPECT_EQ(same.code, 0) << same.out;
+    EXPECT_NE(same.out.find("PASS"), std::string::npos) << same.out;
+    // Negative control: Phong against Blinn-Phong at the same exponent must fail the gates.
+    std::string heat = test::outputPath("cmp_heat.png"), json = test::outputPath("cmp_report.json");
+    fs::remove(heat);
+    Result differ = run("compare " + a + " " + c + " --diff " + heat + " --json " + json);
+    EXPECT_EQ(differ.code, 1) << differ.out;
+    EXPECT_NE(differ.out.find("FAIL"), std::string::npos) << differ.out;
+    EXPECT_EQ(readPng(heat).width, 160);
+    std::ifstream in(json);
+    std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(report.find("\"pass\": false"), std::string::npos) << report;
+}
+
+TEST(CliCompare, ErrorsExitTwo) {
+    std::string scene = test::sourcePath("assets/scenes/default.json");
+    std::string a = test::outputPath("cmp_small.png"), b = test::outputPath("cmp_big.png");
+    ASSERT_EQ(run("render " + scene + " -o " + a + " --size 64x36").code, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + b + " --size 96x54").code, 0);
+    Result sizes = run("compare " + a + " " + b);
+    EXPECT_EQ(sizes.code, 2) << sizes.out;
+    EXPECT_NE(sizes.out.find("image sizes differ: 64x36"), std::string::npos) << sizes.out;
+    EXPECT_EQ(run("compare " + a + " /nonexistent.png").code, 2);
+    EXPECT_EQ(run("compare " + a).code, 2);
+    EXPECT_EQ(run("compare " + a + " " + a + " --threshold 300").code, 2);
+}

@@ -1,0 +1,92 @@
+// `shadelab compare a.png b.png`: metrics, gates and the evidence files. Exit codes differ from the other
+// commands on purpose (issue 3): 0 within the gates, 1 outside them, 2 for any error (bad file, usage).
+#include "cli/compare_command.h"
+
+#include "cli/args.h"
+#include "image/compare.h"
+#include "image/compare_report.h"
+#include "image/png.h"
+#include "util/atomic_file.h"
+#include "util/input_error.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace shadelab::cli {
+namespace {
+
+const char* const kCompareHelp =
+    "usage: shadelab compare a.png b.png [options]\n"
+    "\n"
+    "Compares two images of the same size under the gates of design.md §4 and prints the metrics: mean,\n"
+    "RMS and maximum difference (with its position and channel) and the fraction of pixels over the\n"
+    "threshold. Differences are in 8-bit units. Without coverage data every pixel counts as interior.\n"
+    "\n"
+    "options:\n"
+    "  --diff PATH              write a heatmap of |a-b| (amplified) as PNG\n"
+    "  --json PATH              write the full report as JSON\n"
+    "  --threshold T            a pixel is over when any channel differs by more than T (default 3)\n"
+    "  --max-fraction F         fraction of pixels allowed over the threshold (default 0.001)\n"
+    "  --hard-max M             no channel may differ by more than M (default 16)\n"
+    "  --max-mean X             also gate the mean absolute difference (8-bit units; default: no gate)\n"
+    "  --gain G                 heatmap amplification (default 16)\n"
+    "  -q, --quiet              print only the verdict line\n"
+    "  -h, --help               show this help\n"
+    "\n"
+    "exit codes: 0 within the gates, 1 outside them, 2 on an error (unreadable file, size mismatch, usage)\n";
+
+double parseDouble(const std::string& name, const std::string& v, double lo, double hi) {
+    char* end = nullptr;
+    double d = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || !(d >= lo && d <= hi))
+        throw UsageError(name + ": expected a number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                         ", got '" + v + "'");
+    return d;
+}
+
+}  // namespace
+
+int compareCommand(int argc, char** argv) {
+    try {
+        Args args(argc, argv, 2,
+                  {"--diff", "--json", "--threshold", "--max-fraction", "--hard-max", "--max-mean", "--gain"},
+                  {"-h", "--help", "-q", "--quiet"});
+        if (args.flag("-h") || args.flag("--help")) {
+            std::fputs(kCompareHelp, stdout);
+            return 0;
+        }
+        if (args.positionals().size() != 2) throw UsageError("compare takes two PNG files (see --help)");
+        CompareGates gates;
+        if (auto v = args.value("--threshold")) gates.threshold = parseInt("--threshold", *v, 0, 255);
+        if (auto v = args.value("--max-fraction")) gates.maxFractionOver = parseDouble("--max-fraction", *v, 0, 1);
+        if (auto v = args.value("--hard-max")) gates.hardMax = parseInt("--hard-max", *v, 0, 255);
+        if (auto v = args.value("--max-mean")) gates.maxMean = parseDouble("--max-mean", *v, 0, 255);
+        int gain = 16;
+        if (auto v = args.value("--gain")) gain = parseInt("--gain", *v, 1, 255);
+
+        const std::string& pathA = args.positionals()[0];
+        const std::string& pathB = args.positionals()[1];
+        Image8 a = readPng(pathA), b = readPng(pathB);
+        if (a.width != b.width || a.height != b.height)
+            throw InputError(pathB, "image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                                        " (" + pathA + ") vs " + std::to_string(b.width) + "x" +
+                                        std::to_string(b.height));
+        CompareResult r = compareImages(a, b, gates);
+        if (auto diff = args.value("--diff")) writePng(*diff, diffHeatmap(a, b, gain));
+        if (auto json = args.value("--json")) writeFileAtomic(*json, compareReportJson(r, pathA, pathB) + "\n");
+        if (args.flag("-q") || args.flag("--quiet"))
+            std::printf("%s\n", r.pass ? "PASS" : "FAIL");
+        else
+            std::fputs(compareSummary(r).c_str(), stdout);
+        return r.pass ? 0 : 1;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "shadelab: usage error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "shadelab: error: %s\n", e.what());
+        return 2;
+    }
+}
+
+}  // namespace shadelab::cli
