@@ -74,7 +74,7 @@ int compareCommand(int argc, char** argv) {
                                         std::to_string(b.height));
         CompareResult r = compareImages(a, b, gates);
         if (auto diff = args.value("--diff")) writePng(*diff, diffHeatmap(a, b, gain));
-        if (auto json = args.value("--json")) writeFileAtomic(*json, compareReportJson(r, pathA, pathB) + "\n");
+        if (auto json = args.value("--json")) writeFileAtomic(*json, compareReportJson(r, pathA, pathB));
         if (args.flag("-q") || args.flag("--quiet"))
             std::printf("%s\n", r.pass ? "PASS" : "FAIL");
         else

@@ -28,7 +28,7 @@ struct RegionStats {
     double mean = 0.0;                       // 8-bit units, mean |a-b| over pixels and channels
     double rms = 0.0;                        // 8-bit units, sqrt of mean (a-b)^2 over pixels and channels
     int max = 0;                             // 8-bit units, largest channel difference
-    int maxX = -1, maxY = -1;                // first pixel (row-major) reaching max; -1 when max is 0
+    int maxX = -1, maxY = -1;                // first pixel (row-major) reaching max; -1 (JSON null) when max is 0
     int maxChannel = -1;                     // 0..3 = R G B A; -1 when max is 0
     int64_t overThreshold = 0;               // pixels with any channel > gates.threshold
     int64_t overHardMax = 0;                 // pixels with any channel > gates.hardMax

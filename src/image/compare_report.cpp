@@ -1,4 +1,4 @@
-// Heatmap, side-by-side strip, summary text and JSON report for a CompareResult. Json stays
+// Heatmap, side-by-side strip, summary text and JSON report for a CompareResult. nlohmann::json stays
 // inside this file; the header exposes strings only.
 #include "image/compare_report.h"
 

@@ -195,6 +195,8 @@ TEST(Compare, MismatchedSizesAreAnInputError) {
     CompareGates g;
     g.threshold = 300;
     EXPECT_THROW(compareImages(a, a, g), InputError);
+    // A coverage buffer of the wrong size is a programmer error: CHECK names both sizes.
+    EXPECT_DEATH(silhouetteBand(std::vector<uint32_t>(3), std::vector<uint32_t>(4), 2, 2), "CHECK failed.*3 vs 4");
 }
 
 TEST(SilhouetteBand, HandMadeSixBySix) {
@@ -322,6 +324,27 @@ TEST(Heatmap, SideBySideLaysImagesOutWithGaps) {
     EXPECT_EQ(s.pixel(5, 0)[0], 24);    // gap
     EXPECT_EQ(s.pixel(8, 3)[2], 200);
     EXPECT_EQ(sideBySide({}).width, 0);
+}
+
+// Leaves raster | traced | heatmap as `--renderer both` shows it, on a disc whose difference grows to
+// the right, with the band outlined.
+TEST(Heatmap, DemoStripIsLeftInTheOutputFolder) {
+    const int w = 96, h = 64;
+    Image8 a = solid(w, h), b = solid(w, h);
+    std::vector<uint32_t> cov(size_t(w) * size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const bool inDisc = std::hypot(x - 48, y - 32) < 24.0;
+            cov[size_t(y * w + x)] = inDisc;
+            for (int c = 0; c < 3; ++c) at(a, x, y, c) = at(b, x, y, c) = uint8_t(inDisc ? 60 + 60 * c : 20);
+            if (inDisc) at(b, x, y, 1) = uint8_t(at(a, x, y, 1) + (x - 24) / 3);   // 0..16 levels
+        }
+    const CompareResult r = compareImages(a, b, cov, cov);
+    const Image8 heat = diffHeatmap(a, b, r.bandMask);
+    const Image8 strip = sideBySide({&a, &b, &heat});
+    writePng(outStem("heat_demo.png"), strip);
+    EXPECT_EQ(strip.width, 3 * w + 8);
+    EXPECT_GT(heat.pixel(70, 32)[0] + heat.pixel(70, 32)[1], heat.pixel(40, 32)[0] + heat.pixel(40, 32)[1]);
 }
 
 TEST(Report, JsonParsesBackWithVerdictAndMetrics) {
