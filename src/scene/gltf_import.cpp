@@ -6,6 +6,8 @@
 //           5. the importer: hierarchy walk, meshes, lights, camera   6. public functions
 #include "scene/gltf_import.h"
 
+#include "util/atomic_file.h"
+
 #include "scene/gltf_accessors.h"
 #include "util/input_error.h"
 
@@ -60,32 +62,50 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;
 }
 
+// Parses glTF text (`binary` false) or GLB bytes. External buffers resolve against `baseDir`; an empty
+// baseDir refuses every external file (the fuzzer's setting). `name` is the file named in errors.
+tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
+                           std::vector<std::string>& warnings) {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skipImage, nullptr);
+    if (baseDir.empty()) {
+        tinygltf::FsCallbacks noFiles{};
+        noFiles.FileExists = [](const std::string&, void*) { return false; };
+        noFiles.ExpandFilePath = [](const std::string& p, void*) { return p; };
+        noFiles.ReadWholeFile = [](std::vector<unsigned char>*, std::string* err, const std::string& p, void*) {
+            if (err) *err += "external file refused: " + p + "\n";
+            return false;
+        };
+        noFiles.WriteWholeFile = [](std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+            return false;
+        };
+        loader.SetFsCallbacks(noFiles);
+    }
+    tinygltf::Model model;
+    std::string err, warn;
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
+                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
+    if (!ok) {
+        std::vector<std::string> lines;
+        appendLines(err, lines);
+        throw InputError(name, lines.empty() ? std::string("tinygltf failed without a message") : lines.front());
+    }
+    appendLines(warn, warnings);
+    appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
+    return model;
+}
+
 tinygltf::Model loadModel(const std::string& path, std::vector<std::string>& warnings) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");
     if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a glTF file");
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skipImage, nullptr);
-    tinygltf::Model model;
-    std::string err, warn;
-    bool ok = false;
-    if (ext == ".glb")
-        ok = loader.LoadBinaryFromFile(&model, &err, &warn, path);
-    else if (ext == ".gltf")
-        ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
-    else
-        throw InputError(path, "expected a .gltf or .glb file");
-    if (!ok) {
-        std::vector<std::string> lines;
-        appendLines(err, lines);
-        throw InputError(path, lines.empty() ? std::string("tinygltf failed without a message") : lines.front());
-    }
-    appendLines(warn, warnings);
-    appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
-    return model;
+    if (ext != ".glb" && ext != ".gltf") throw InputError(path, "expected a .gltf or .glb file");
+    std::string baseDir = std::filesystem::path(path).parent_path().string();
+    if (baseDir.empty()) baseDir = ".";
+    return parseModel(readFile(path), ext == ".glb", path, baseDir, warnings);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -532,6 +552,13 @@ GltfImport importGltf(const std::string& path, const glm::mat4& transform) {
     GltfImport out;
     const tinygltf::Model model = loadModel(path, out.warnings);
     Importer(model, path, out).run(glm::dmat4(transform));
+    return out;
+}
+
+GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name) {
+    GltfImport out;
+    const tinygltf::Model model = parseModel(bytes, binary, name, "", out.warnings);
+    Importer(model, name, out).run(glm::dmat4(1.0));
     return out;
 }
 

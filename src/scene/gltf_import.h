@@ -25,6 +25,10 @@ struct GltfImport {
 // (e.g. "accessors[3]") and the reason.
 GltfImport importGltf(const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
 
+// Imports glTF text (binary = false) or GLB bytes held in memory, with every external file refused. For the
+// fuzzer and tests; `name` stands for the file in errors.
+GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name);
+
 // Metallic-roughness → Phong (docs/gltf-import.md).
 Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, float roughness);
 
