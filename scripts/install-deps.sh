@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages shadelab needs, skipping those already present (design.md §6).
-# Usage: scripts/install-deps.sh [--with-embree]   (needs root or sudo when something is missing)
+# Usage: scripts/install-deps.sh [--with-embree] [--with-fuzz]   (needs root or sudo when something is missing)
 set -euo pipefail
 
 packages=(
@@ -15,7 +15,13 @@ packages=(
   nlohmann-json3-dev                                    # JSON
   xvfb xauth assimp-testmodels                          # test tools and real glTF test data
 )
-[[ "${1:-}" == "--with-embree" ]] && packages+=(libembree-dev)
+for arg in "$@"; do
+  case "$arg" in
+    --with-embree) packages+=(libembree-dev) ;;            # benchmark baseline only
+    --with-fuzz) packages+=(clang libclang-rt-14-dev) ;;   # libFuzzer and sanitizers (tests/fuzz/run.sh)
+    *) echo "install-deps: unknown option $arg" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
