@@ -1,4 +1,5 @@
-// Infinite plane impostor with optional checker: exact ray–plane hit per pixel, as the tracer does.
+// Infinite plane with optional checker: shades the exact ray–plane hit per pixel, as the tracer does.
+// Depth comes from rasterizing the plane's quad (plane.vert), so early depth testing stays on.
 #include "surface.glsl"
 
 uniform vec3 u_planeNormal;
@@ -15,7 +16,6 @@ void main() {
     vec3 V = -dir;
     vec3 N = faceForward(u_planeNormal, V);
     vec3 md = (u_checker != 0 && checkerParity(P, u_planeNormal, u_checkerSize) == 1) ? u_md2 : u_md;
-    gl_FragDepth = depthOf(P);
     o_color = vec4(shadeSurface(P, N, V, md), 1.0f);
     o_coverage = u_objectId;
 }

@@ -60,6 +60,7 @@ void checkError(const char* what);
 #define glDeleteTextures shadelab_glDeleteTextures
 #define glBindTexture shadelab_glBindTexture
 #define glTexImage2D shadelab_glTexImage2D
+#define glTexSubImage2D shadelab_glTexSubImage2D
 #define glTexParameteri shadelab_glTexParameteri
 #define glActiveTexture shadelab_glActiveTexture
 #define glGenBuffers shadelab_glGenBuffers

@@ -3,6 +3,7 @@
 
 #include "raster/frame_block.h"
 #include "scene/coverage.h"
+#include "scene/scene_load.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
 
@@ -75,6 +76,13 @@ bool outsideClip(const glm::mat4& viewProj, const glm::vec3& lo, const glm::vec3
     return false;
 }
 
+// Half-edge of a plane's quad: past everything bounded, and far enough that the gap left below the horizon,
+// about height / extent radians, is under half a pixel (a pixel spans about 2·tan(fovY/2) / H radians).
+float planeExtent(const ViewSetup& v, float eyeHeight, float reach) {
+    const float pixelAngle = 2.0f * v.tanHalfFovY / float(v.height);
+    return std::max({2.0f * reach, 2.0f * eyeHeight / pixelAngle, 1.0f});
+}
+
 FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
     FrameBlock f{};
     f.viewProj = bandMatrix(v.height, band) * v.viewProj;
@@ -106,7 +114,7 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) {
     const std::string defines = programDefines();
     meshProgram_ = gl::Program::build(shaders, "mesh.vert", "mesh.frag", defines);
     sphereProgram_ = gl::Program::build(shaders, "sphere.vert", "sphere.frag", defines);
-    planeProgram_ = gl::Program::build(shaders, "fullscreen.vert", "plane.frag", defines);
+    planeProgram_ = gl::Program::build(shaders, "plane.vert", "plane.frag", defines);
     for (const gl::Program* p : {&meshProgram_, &sphereProgram_, &planeProgram_}) p->bindBlock("Frame", kFrameBinding);
 
     frameUbo_ = gl::Buffer::create();
@@ -210,6 +218,11 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
     const ViewSetup view = makeViewSetup(scene, width, height);
+    const Bounds bounds = sceneBounds(scene);
+    // How far from the eye bounded geometry can reach: plane quads must extend past it.
+    const float reach = bounds.empty() ? 1.0f
+                                       : glm::length(bounds.hi - bounds.lo) +
+                                             glm::length(0.5f * (bounds.lo + bounds.hi) - view.eye);
     const FrameBlock frame = makeFrameBlock(scene, view, band);
     glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &frame);
@@ -242,18 +255,26 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     }
     glDisable(GL_CULL_FACE);
 
+    // Planes last, as quads with ordinary depth: what meshes and spheres cover is rejected early.
     glUseProgram(planeProgram_.id());
     glBindVertexArray(emptyVao_.id());
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         const Plane& p = scene.planes[i];
         setMaterial(planeProgram_, p.material, planeCoverageId(scene, i));
+        const float eyeHeight = glm::dot(p.normal, view.eye) - p.offset;
+        const glm::vec3 centre = view.eye - eyeHeight * p.normal;
+        const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
+        glUniform3fv(planeProgram_.uniform("u_planeCenter"), 1, glm::value_ptr(centre));
+        glUniform3fv(planeProgram_.uniform("u_planeT"), 1, glm::value_ptr(t));
+        glUniform3fv(planeProgram_.uniform("u_planeB"), 1, glm::value_ptr(b));
+        glUniform1f(planeProgram_.uniform("u_planeExtent"), planeExtent(view, std::abs(eyeHeight), reach));
         glUniform3fv(planeProgram_.uniform("u_planeNormal"), 1, glm::value_ptr(p.normal));
         glUniform1f(planeProgram_.uniform("u_planeOffset"), p.offset);
         glUniform1i(planeProgram_.uniform("u_checker"), p.checker ? 1 : 0);
         const Checker c = p.checker.value_or(Checker{});
         glUniform3fv(planeProgram_.uniform("u_md2"), 1, glm::value_ptr(c.md2));
         glUniform1f(planeProgram_.uniform("u_checkerSize"), c.size);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     }
     glBindVertexArray(0);
     glUseProgram(0);

@@ -21,6 +21,7 @@ public:
     int height() const { return height_; }
     bool hasCoverage() const { return bool(coverage_); }
     GLuint colorTexture() const { return color_.id(); }
+    GLuint coverageTexture() const { return coverage_.id(); }  // 0 when made without coverage
 
     // Read back with row 0 at the top.
     void readColor(ImageF& out) const;

@@ -1,6 +1,6 @@
 // JsonNode: a read-only view of one value in a parsed JSON document that knows its JSON path
 // ("objects[2].material.s"), with typed, range-checked getters that throw InputError naming that path.
-// Internal to the scene loader; not a general JSON library.
+// Shared by the scene loader and the viewer's --script reader; not a general JSON library.
 #pragma once
 
 #include <glm/vec3.hpp>
