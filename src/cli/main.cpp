@@ -1,5 +1,6 @@
 // shadelab: the command-line entry point. Dispatches subcommands and turns exceptions into one line on
 // stderr and an exit code: 1 for bad input or a failed render, 2 for usage errors.
+#include "app/app.h"
 #include "cli/compare_command.h"
 #include "cli/render_command.h"
 #include "util/input_error.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     try {
         if (command == "render") return cli::renderCommand(argc, argv);
         if (command == "compare") return cli::compareCommand(argc, argv);
+        if (command == "view") return app::viewCommand(argc, argv);
         if (command == "-h" || command == "--help" || command == "help") {
             std::fputs(kHelp, stdout);
             return 0;
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
     } catch (const UsageError& e) {
         std::fprintf(stderr, "shadelab: usage error: %s\n", e.what());
-        if (command != "render" && command != "compare") std::fputs(kHelp, stderr);
+        if (command != "render" && command != "compare" && command != "view") std::fputs(kHelp, stderr);
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "shadelab: error: %s\n", e.what());

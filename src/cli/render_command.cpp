@@ -1,161 +1,138 @@
-// `shadelab render`: load the scene (on a worker thread, while the GL context starts), draw it with the
-// rasterizer, convert once to 8-bit, write the PNG atomically. --timings prints the per-stage breakdown.
+// `shadelab render`: load the scene (on a worker thread while the GL context starts), render it with the
+// rasterizer, the tracer or both, convert once to 8-bit, write the PNG atomically. --timings prints the
+// per-stage breakdown.
 #include "cli/render_command.h"
 
-#include "cli/args.h"
+#include "cli/progress_bar.h"
+#include "cli/render_options.h"
 #include "cli/stage_timer.h"
 #include "gl/headless_context.h"
-#include "image/encode.h"
+#include "image/compare.h"
+#include "image/compare_report.h"
 #include "image/png.h"
 #include "raster/offscreen.h"
-#include "raster/raster_renderer.h"
 #include "scene/scene_load.h"
+#include "trace/trace_image.h"
 #include "util/atomic_file.h"
 #include "util/input_error.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <future>
-#include <sstream>
+#include <memory>
 #include <string>
 
 namespace shadelab::cli {
-
-const char* const kRenderHelp =
-    "usage: shadelab render <scene.json | model.gltf | model.glb> -o out.png [options]\n"
-    "\n"
-    "Renders a scene headlessly (EGL, or OSMesa) with the OpenGL rasterizer and writes a PNG.\n"
-    "\n"
-    "options:\n"
-    "  -o, --output PATH        PNG to write (required); written atomically\n"
-    "  --size WxH               image size in pixels, each side 1..16384 (default 1280x720)\n"
-    "  --model NAME             phong | blinn-phong (default: the scene's)\n"
-    "  --terms LIST             comma-separated terms to switch on, the rest off:\n"
-    "                           ambient,diffuse,specular,shadows,reflections (default: the scene's)\n"
-    "  --encoding NAME          srgb (default) | linear: how linear colour becomes 8-bit\n"
-    "  --spp N                  samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
-    "  --gl-backend NAME        auto | egl-device | egl-surfaceless | osmesa\n"
-    "                           (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
-    "  --timings                print a per-stage timing breakdown to stderr\n"
-    "  --verbose                log the GL backend, GL_RENDERER and GL_VERSION to stderr\n"
-    "  -h, --help               show this help\n"
-    "\n"
-    "exit codes: 0 written, 1 bad input or rendering failure (one line on stderr), 2 usage error\n";
-
 namespace {
-
-Terms parseTerms(const std::string& list) {
-    Terms t{false, false, false, false, false};
-    std::stringstream in(list);
-    std::string name;
-    bool any = false;
-    while (std::getline(in, name, ',')) {
-        if (name == "ambient") t.ambient = true;
-        else if (name == "diffuse") t.diffuse = true;
-        else if (name == "specular") t.specular = true;
-        else if (name == "shadows") t.shadows = true;
-        else if (name == "reflections") t.reflections = true;
-        else if (name == "none" || name.empty()) continue;
-        else
-            throw UsageError("--terms: unknown term '" + name +
-                             "'; expected ambient, diffuse, specular, shadows, reflections or none");
-        any = true;
-    }
-    (void)any;
-    return t;
-}
-
-ShadingModel parseModel(const std::string& s) {
-    if (s == "phong") return ShadingModel::Phong;
-    if (s == "blinn-phong" || s == "blinn") return ShadingModel::BlinnPhong;
-    throw UsageError("--model: expected phong or blinn-phong, got '" + s + "'");
-}
 
 void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
 
-}  // namespace
+struct Rendered {
+    Image8 pixels;
+    std::vector<uint32_t> coverage;
+};
 
-int renderCommand(int argc, char** argv) {
-    Args args(argc, argv, 2, {"-o", "--output", "--size", "--model", "--terms", "--encoding", "--gl-backend", "--spp"},
-              {"-h", "--help", "--verbose", "--timings"});
-    if (args.flag("-h") || args.flag("--help")) {
-        std::fputs(kRenderHelp, stdout);
-        return 0;
-    }
-    if (args.positionals().size() != 1)
-        throw UsageError(args.positionals().empty() ? "render needs a scene file (see --help)"
-                                                    : "render takes one scene file, got " +
-                                                          std::to_string(args.positionals().size()));
-    const std::string input = args.positionals()[0];
-    std::optional<std::string> output = args.value("-o");
-    if (!output) output = args.value("--output");
-    if (!output || output->empty()) throw UsageError("render needs -o out.png");
-
-    // Parse every option before any work, so usage errors never cost a render.
-    int width = 1280, height = 720;
-    if (auto s = args.value("--size")) std::tie(width, height) = parseSize(*s);
-    std::optional<ShadingModel> model;
-    if (auto m = args.value("--model")) model = parseModel(*m);
-    std::optional<Terms> terms;
-    if (auto t = args.value("--terms")) terms = parseTerms(*t);
-    Encoding encoding = Encoding::Srgb;
-    if (auto e = args.value("--encoding")) encoding = parseEncoding(*e);
-    int spp = 1;
-    if (auto v = args.value("--spp")) spp = parseInt("--spp", *v, 1, 64);
-    raster::samplesPerSide(spp);  // validates: a perfect square
-    gl::GlBackend backend = gl::GlBackend::Auto;
-    if (auto b = args.value("--gl-backend")) backend = gl::parseGlBackend(*b);
-    const bool verbose = args.flag("--verbose");
-
-    StageTimer timer;
-    // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
-    auto sceneFuture = std::async(std::launch::async, [&] { return loadScene(input, printWarning); });
+std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageTimer& timer) {
     std::vector<std::string> log;
-    std::unique_ptr<gl::HeadlessContext> context;
-    try {
-        context = gl::createHeadlessContext(backend, verbose ? &log : nullptr);
-    } catch (...) {
-        sceneFuture.wait();
-        throw;
-    }
+    std::unique_ptr<gl::HeadlessContext> context = gl::createHeadlessContext(o.backend, o.verbose ? &log : nullptr);
     timer.stage("context creation");
     for (const std::string& l : log) std::fprintf(stderr, "shadelab: %s\n", l.c_str());
-    if (verbose) {
+    if (o.verbose) {
         const gl::ContextInfo& info = context->info();
         std::fprintf(stderr, "shadelab: gl backend %s (%s)\nshadelab: GL_RENDERER %s\nshadelab: GL_VERSION %s\n",
                      gl::toString(info.backend), info.device.c_str(), info.renderer.c_str(), info.version.c_str());
     }
-    Scene scene = sceneFuture.get();
-    timer.stage("scene load (overlaps context)");
-    if (model) scene.model = *model;
-    if (terms) scene.terms = *terms;
-    if (scene.lights.size() > size_t(kMaxLights))
-        throw InputError(input, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
+    return context;
+}
 
+Rendered rasterize(const Scene& scene, const RenderOptions& o, bool coverage, StageTimer& timer) {
     raster::RasterRenderer renderer;
     timer.stage("shader compile");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
-    // Large images are drawn in bands so the RGBA32F target stays small (raster/offscreen.h).
     raster::OffscreenOptions offscreen;
-    offscreen.width = width;
-    offscreen.height = height;
-    offscreen.spp = spp;
-    offscreen.encoding = encoding;
-    raster::OffscreenResult result = raster::renderOffscreen(renderer, scene, offscreen);
-    const Image8& pixels = result.pixels;
-    timer.stageSplit("draw, " + std::to_string(result.bands) + " band(s) (incl. lazy shader compile)", result.drawMs,
-                     "readback + conversion", result.readMs);
-    std::vector<uint8_t> png = encodePng(pixels);
+    offscreen.width = o.width;
+    offscreen.height = o.height;
+    offscreen.spp = o.spp;
+    offscreen.encoding = o.encoding;
+    offscreen.coverage = coverage;
+    raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, offscreen);
+    timer.stageSplit("draw, " + std::to_string(r.bands) + " band(s) (incl. lazy shader compile)", r.drawMs,
+                     "readback + conversion", r.readMs);
+    return {std::move(r.pixels), std::move(r.coverage)};
+}
+
+Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& timer) {
+    trace::TraceSettings settings;
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.spp = o.spp;
+    settings.threads = o.threads;
+    settings.maxDepth = o.depth.value_or(-1);
+    settings.coverage = o.renderer == RendererChoice::Both;
+    trace::TraceOutput out;
+    {
+        ProgressBar bar("tracing");
+        out = trace::traceImage(scene, settings, [&bar](float f) { bar.update(f); });
+    }
+    timer.stage("trace");
+    Rendered r{toImage8(out.color, o.encoding), std::move(out.coverage)};
+    timer.stage("conversion");
+    return r;
+}
+
+}  // namespace
+
+int renderCommand(int argc, char** argv) {
+    const RenderOptions o = parseRenderOptions(argc, argv);
+    if (o.help) {
+        std::fputs(kRenderHelp, stdout);
+        return 0;
+    }
+    const bool needRaster = o.renderer != RendererChoice::Trace;
+
+    StageTimer timer;
+    // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
+    auto sceneFuture = std::async(std::launch::async, [&] { return loadScene(o.input, printWarning); });
+    std::unique_ptr<gl::HeadlessContext> context;
+    if (needRaster) {
+        try {
+            context = startContext(o, timer);
+        } catch (...) {
+            sceneFuture.wait();
+            throw;
+        }
+    }
+    Scene scene = sceneFuture.get();
+    timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
+    if (o.model) scene.model = *o.model;
+    if (o.terms) scene.terms = *o.terms;
+    if (needRaster && scene.lights.size() > size_t(kMaxLights))
+        throw InputError(o.input, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
+
+    Image8 output;
+    if (o.renderer == RendererChoice::Raster) {
+        output = rasterize(scene, o, false, timer).pixels;
+    } else if (o.renderer == RendererChoice::Trace) {
+        output = traceReference(scene, o, timer).pixels;
+    } else {
+        Rendered a = rasterize(scene, o, true, timer);
+        Rendered b = traceReference(scene, o, timer);
+        CompareResult cmp = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
+        Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
+        output = sideBySide({&a.pixels, &b.pixels, &heat});
+        timer.stage("compare + heatmap");
+        std::fprintf(stderr, "shadelab: raster | traced | heatmap; raster vs reference:\n%s",
+                     compareSummary(cmp).c_str());
+    }
+    std::vector<uint8_t> png = encodePng(output);
     timer.stage("PNG encode");
-    writeFileAtomic(*output, png.data(), png.size());
+    writeFileAtomic(o.output, png.data(), png.size());
     timer.stage("write");
 
-    if (args.flag("--timings")) timer.print(stderr);
-    if (verbose)
-        std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n", output->c_str(), width, height,
-                     toString(encoding), png.size());
+    if (o.timings) timer.print(stderr);
+    if (o.verbose)
+        std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n", o.output.c_str(), output.width,
+                     output.height, toString(o.encoding), png.size());
     return 0;
 }
 

@@ -4,6 +4,5 @@
 namespace shadelab::cli {
 
 int renderCommand(int argc, char** argv);  // argv[1] == "render"
-extern const char* const kRenderHelp;
 
 }  // namespace shadelab::cli

@@ -3,7 +3,6 @@
 
 #include "raster/frame_block.h"
 #include "scene/coverage.h"
-#include "scene/scene_load.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
 
@@ -74,13 +73,6 @@ bool outsideClip(const glm::mat4& viewProj, const glm::vec3& lo, const glm::vec3
     for (int n : outside)
         if (n == 8) return true;
     return false;
-}
-
-// Half-edge of a plane's quad: past everything bounded, and far enough that the gap left below the horizon,
-// about height / extent radians, is under half a pixel (a pixel spans about 2·tan(fovY/2) / H radians).
-float planeExtent(const ViewSetup& v, float eyeHeight, float reach) {
-    const float pixelAngle = 2.0f * v.tanHalfFovY / float(v.height);
-    return std::max({2.0f * reach, 2.0f * eyeHeight / pixelAngle, 1.0f});
 }
 
 FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
@@ -218,11 +210,6 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
     const ViewSetup view = makeViewSetup(scene, width, height);
-    const Bounds bounds = sceneBounds(scene);
-    // How far from the eye bounded geometry can reach: plane quads must extend past it.
-    const float reach = bounds.empty() ? 1.0f
-                                       : glm::length(bounds.hi - bounds.lo) +
-                                             glm::length(0.5f * (bounds.lo + bounds.hi) - view.eye);
     const FrameBlock frame = makeFrameBlock(scene, view, band);
     glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &frame);
@@ -255,7 +242,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     }
     glDisable(GL_CULL_FACE);
 
-    // Planes last, as quads with ordinary depth: what meshes and spheres cover is rejected early.
+    // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
     glUseProgram(planeProgram_.id());
     glBindVertexArray(emptyVao_.id());
     for (size_t i = 0; i < scene.planes.size(); ++i) {
@@ -267,14 +254,13 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
         glUniform3fv(planeProgram_.uniform("u_planeCenter"), 1, glm::value_ptr(centre));
         glUniform3fv(planeProgram_.uniform("u_planeT"), 1, glm::value_ptr(t));
         glUniform3fv(planeProgram_.uniform("u_planeB"), 1, glm::value_ptr(b));
-        glUniform1f(planeProgram_.uniform("u_planeExtent"), planeExtent(view, std::abs(eyeHeight), reach));
         glUniform3fv(planeProgram_.uniform("u_planeNormal"), 1, glm::value_ptr(p.normal));
         glUniform1f(planeProgram_.uniform("u_planeOffset"), p.offset);
         glUniform1i(planeProgram_.uniform("u_checker"), p.checker ? 1 : 0);
         const Checker c = p.checker.value_or(Checker{});
         glUniform3fv(planeProgram_.uniform("u_md2"), 1, glm::value_ptr(c.md2));
         glUniform1f(planeProgram_.uniform("u_checkerSize"), c.size);
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glDrawArrays(GL_TRIANGLES, 0, 12);
     }
     glBindVertexArray(0);
     glUseProgram(0);

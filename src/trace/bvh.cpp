@@ -88,7 +88,7 @@ Bvh buildBvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options) {
     std::iota(bvh.order.begin(), bvh.order.end(), 0u);
     bvh.nodes.reserve(2 * size_t(n) + 1);
     bvh.nodes.resize(2);  // root and the padding slot that puts sibling pairs on cache lines
-    bvh.nodes[1] = BvhNode{{0, 0, 0}, 0, {0, 0, 0}, 0};
+    bvh.nodes[1] = BvhNode{{0, 0, 0, 0, 0, 0}, 0, 0};
 
     const uint32_t maxLeaf = uint32_t(std::max(options.maxLeafSize, 1));
     std::vector<Task> stack{{0, 0, n, 0}};
@@ -103,8 +103,8 @@ Bvh buildBvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options) {
         }
         BvhNode& node = bvh.nodes[task.node];
         for (int a = 0; a < 3; ++a) {
-            node.lo[a] = box.lo[a];
-            node.hi[a] = box.hi[a];
+            node.bounds[a] = box.lo[a];
+            node.bounds[3 + a] = box.hi[a];
         }
         node.first = task.first;
         node.count = task.count;
@@ -153,8 +153,8 @@ float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
     if (bvh.empty()) return 0.0f;
     auto area = [](const BvhNode& nd) {
         Aabb b;
-        b.lo = glm::vec3(nd.lo[0], nd.lo[1], nd.lo[2]);
-        b.hi = glm::vec3(nd.hi[0], nd.hi[1], nd.hi[2]);
+        b.lo = glm::vec3(nd.bounds[0], nd.bounds[1], nd.bounds[2]);
+        b.hi = glm::vec3(nd.bounds[3], nd.bounds[4], nd.bounds[5]);
         return b.area();
     };
     const float rootArea = std::max(area(bvh.nodes[0]), 1e-30f);

@@ -15,12 +15,13 @@ namespace shadelab::trace {
 // One node. Siblings are stored next to each other (left at `first`, right at `first + 1`) and pairs start
 // at even indices, so with the 64-byte aligned array one cache line holds both children of a node.
 struct alignas(32) BvhNode {
-    float lo[3];        // box, world units
+    float bounds[6];    // box: lo x, y, z then hi x, y, z, world units (indexable by slab side, see aabb.h)
     uint32_t first;     // interior: index of the left child; leaf: first primitive in Bvh::order
-    float hi[3];
     uint32_t count;     // leaf: number of primitives (> 0); interior: 0
 
     bool isLeaf() const { return count != 0; }
+    const float* lo() const { return bounds; }
+    const float* hi() const { return bounds + 3; }
 };
 static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes: two siblings per cache line");
 

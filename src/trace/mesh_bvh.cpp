@@ -14,12 +14,6 @@ namespace {
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
-void put(float* dst, const glm::vec3& v) {
-    dst[0] = v.x;
-    dst[1] = v.y;
-    dst[2] = v.z;
-}
-
 struct StackEntry {
     uint32_t node;
     float tEntry;
@@ -107,7 +101,7 @@ std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
     if (bvh_.empty()) return std::nullopt;
     const BvhNode* nodes = bvh_.nodes.data();
     const BoxRay br = makeBoxRay(ray);
-    if (slabEntry(br, nodes[0].lo, nodes[0].hi, tMax) == INFINITY) return std::nullopt;
+    if (slabEntry(br, nodes[0].lo(), nodes[0].hi(), tMax) == INFINITY) return std::nullopt;
     const WatertightRay wr = makeWatertightRay(ray);
 
     MeshHit best{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
@@ -130,8 +124,8 @@ std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
         } else {
             const BvhNode& c0 = nodes[node.first];
             const BvhNode& c1 = nodes[node.first + 1];
-            float t0 = slabEntry(br, c0.lo, c0.hi, best.t);
-            float t1 = slabEntry(br, c1.lo, c1.hi, best.t);
+            float t0 = slabEntry(br, c0.lo(), c0.hi(), best.t);
+            float t1 = slabEntry(br, c1.lo(), c1.hi(), best.t);
             uint32_t nearNode = node.first, farNode = node.first + 1;
             if (t1 < t0) {
                 std::swap(t0, t1);
@@ -157,7 +151,7 @@ bool MeshBvh::anyHit(const Ray& ray, float tMax) const {
     if (bvh_.empty()) return false;
     const BvhNode* nodes = bvh_.nodes.data();
     const BoxRay br = makeBoxRay(ray);
-    if (slabEntry(br, nodes[0].lo, nodes[0].hi, tMax) == INFINITY) return false;
+    if (slabEntry(br, nodes[0].lo(), nodes[0].hi(), tMax) == INFINITY) return false;
     const WatertightRay wr = makeWatertightRay(ray);
 
     uint32_t stack[kMaxBvhDepth];
@@ -174,8 +168,8 @@ bool MeshBvh::anyHit(const Ray& ray, float tMax) const {
         } else {
             const BvhNode& c0 = nodes[node.first];
             const BvhNode& c1 = nodes[node.first + 1];
-            const float t0 = slabEntry(br, c0.lo, c0.hi, tMax);
-            const float t1 = slabEntry(br, c1.lo, c1.hi, tMax);
+            const float t0 = slabEntry(br, c0.lo(), c0.hi(), tMax);
+            const float t1 = slabEntry(br, c1.lo(), c1.hi(), tMax);
             if (t0 != INFINITY && t1 != INFINITY) {
                 // Nearer child first: an occluder near the origin is found without visiting the far side.
                 ni = t0 <= t1 ? node.first : node.first + 1;

@@ -37,7 +37,7 @@ std::optional<SphereHit> SphereSet::closestHit(const Ray& ray, float tMin, float
     if (bvh_.empty()) return std::nullopt;
     const BvhNode* nodes = bvh_.nodes.data();
     const BoxRay br = makeBoxRay(ray);
-    if (slabEntry(br, nodes[0].lo, nodes[0].hi, tMax) == INFINITY) return std::nullopt;
+    if (slabEntry(br, nodes[0].lo(), nodes[0].hi(), tMax) == INFINITY) return std::nullopt;
 
     SphereHit best{tMax, UINT32_MAX};
     struct Entry {
@@ -59,8 +59,8 @@ std::optional<SphereHit> SphereSet::closestHit(const Ray& ray, float tMin, float
         } else {
             const BvhNode& c0 = nodes[node.first];
             const BvhNode& c1 = nodes[node.first + 1];
-            float t0 = slabEntry(br, c0.lo, c0.hi, best.t);
-            float t1 = slabEntry(br, c1.lo, c1.hi, best.t);
+            float t0 = slabEntry(br, c0.lo(), c0.hi(), best.t);
+            float t1 = slabEntry(br, c1.lo(), c1.hi(), best.t);
             uint32_t nearNode = node.first, farNode = node.first + 1;
             if (t1 < t0) {
                 std::swap(t0, t1);
@@ -90,7 +90,7 @@ bool SphereSet::anyHit(const Ray& ray, float tMin, float tMax) const {
     stack[sp++] = 0;
     while (sp > 0) {
         const BvhNode& node = nodes[stack[--sp]];
-        if (slabEntry(br, node.lo, node.hi, tMax) == INFINITY) continue;
+        if (slabEntry(br, node.lo(), node.hi(), tMax) == INFINITY) continue;
         if (node.isLeaf()) {
             for (uint32_t s = node.first, end = node.first + node.count; s < end; ++s) {
                 const glm::vec4& c = spheres_[s];

@@ -1,0 +1,54 @@
+// Viewer display pass (src/app/image_view.cpp): shows the raster image, the progressive reference, a wipe
+// between them, or an amplified difference, encoding linear colour with the exact sRGB curve
+// (IEC 61966-2-1, as src/image/encode.cpp) or not at all. Draws into the window; never into captures.
+// One program per VIEW_MODE (0 raster, 1 traced, 2 split, 3 difference) and SRGB (1 or 0): llvmpipe
+// runs every branch of a uniform `if`, and this pass covers the whole image every frame.
+uniform sampler2D t_raster;     // RGBA32F linear, GL row order
+uniform sampler2D t_traced;     // RGBA32F linear, GL row order
+uniform sampler2D t_tiles;      // R8, one texel per reference tile (row 0 = top tiles): 1 = rendered
+uniform sampler2D t_ramp;       // 256 x 1 RGB8 heat ramp (src/image/compare_report.h heatRamp)
+uniform vec2 u_origin;          // image rectangle in window framebuffer pixels: lower-left corner (GL)
+uniform vec2 u_scale;           // image pixels per window pixel
+uniform float u_split;          // wipe position in window pixels from u_origin.x
+uniform float u_gain;           // difference amplification
+uniform float u_tileSize;       // reference tile edge, pixels
+
+layout(location = 0) out vec4 o_color;
+
+vec3 encode(vec3 c) {
+    c = clamp(c, vec3(0.0f), vec3(1.0f));
+#if SRGB
+    return mix(12.92f * c, 1.055f * pow(c, vec3(1.0f / 2.4f)) - 0.055f, step(vec3(0.0031308f), c));
+#else
+    return c;
+#endif
+}
+
+// Pending reference tiles (not yet traced for the current state) show the previous result at half brightness.
+float tileWeight(ivec2 texel) {
+    ivec2 tile = ivec2(vec2(texel.x, textureSize(t_traced, 0).y - 1 - texel.y) / u_tileSize);
+    return texelFetch(t_tiles, tile, 0).r > 0.5f ? 1.0f : 0.5f;
+}
+
+void main() {
+    vec2 local = gl_FragCoord.xy - u_origin;
+    ivec2 texel = ivec2(local * u_scale);
+#if VIEW_MODE == 0
+    vec3 c = encode(texelFetch(t_raster, texel, 0).rgb);
+#elif VIEW_MODE == 1
+    vec3 c = tileWeight(texel) * encode(texelFetch(t_traced, texel, 0).rgb);
+#elif VIEW_MODE == 2
+    // One fetch and one encode per pixel: pick the source first (llvmpipe evaluates both sides of a ?:).
+    bool left = local.x < u_split;
+    vec3 linear = left ? texelFetch(t_raster, texel, 0).rgb : texelFetch(t_traced, texel, 0).rgb;
+    vec3 c = (left ? 1.0f : tileWeight(texel)) * encode(linear);
+    if (abs(local.x - u_split) < 1.5f) c = vec3(1.0f, 0.85f, 0.2f);
+#else
+    vec3 a = floor(encode(texelFetch(t_raster, texel, 0).rgb) * 255.0f + 0.5f);
+    vec3 b = floor(encode(texelFetch(t_traced, texel, 0).rgb) * 255.0f + 0.5f);
+    vec3 d = abs(a - b);
+    float v = min(max(d.r, max(d.g, d.b)) * u_gain, 255.0f);
+    vec3 c = texelFetch(t_ramp, ivec2(int(v), 0), 0).rgb;
+#endif
+    o_color = vec4(c, 1.0f);
+}

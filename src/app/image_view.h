@@ -1,0 +1,40 @@
+// ImageView: draws the rendered image into a rectangle of the window (raster, reference, wipe or
+// difference), with the exact sRGB curve in shaders/view_image.frag. Display only: captures read the
+// renderers' float images, never the window.
+#pragma once
+
+#include "app/viewer_state.h"
+#include "gl/program.h"
+
+namespace shadelab::app {
+
+struct ImageRect {
+    int x = 0, y = 0;           // framebuffer pixels, GL convention: y is the bottom edge
+    int width = 0, height = 0;
+};
+
+struct ImageViewInputs {
+    GLuint raster = 0;          // RGBA32F texture
+    int imageWidth = 0, imageHeight = 0;   // its size (the traced texture has the same)
+    GLuint traced = 0;          // RGBA32F texture, or 0
+    GLuint tiles = 0;           // R8 tile-state texture, or 0
+    int tileSize = 32;
+    ViewMode mode = ViewMode::Raster;
+    Encoding encoding = Encoding::Srgb;
+    float split = 0.5f;
+    float gain = 16.0f;
+};
+
+class ImageView {
+public:
+    explicit ImageView(const gl::ShaderLibrary& shaders);
+    // Draws into the bound draw framebuffer (the window's) at `rect`; sets the state it needs.
+    void draw(const ImageRect& rect, const ImageViewInputs& in) const;
+
+private:
+    gl::Program programs_[4][2];   // [mode][sRGB]
+    gl::VertexArray vao_;
+    gl::Texture ramp_;
+};
+
+}  // namespace shadelab::app

@@ -1,0 +1,59 @@
+// The side panel: a fixed window down the left edge holding the sections, most used first.
+#include "app/panels.h"
+
+#include <imgui.h>
+
+namespace shadelab::app {
+
+void drawSidePanel(PanelContext& ctx, float width, float height) {
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGui::Begin("shadelab", nullptr, flags);
+    ImGui::TextDisabled("shadelab view  %dx%d  %.1f ms/frame", ctx.renderWidth, ctx.renderHeight, ctx.frameMs);
+    if (!ctx.status.empty()) {
+        const ImVec4 color = ctx.statusError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.55f, 0.9f, 0.55f, 1.0f);
+        ImGui::PushStyleColor(ImGuiCol_Text, color);
+        ImGui::TextWrapped("%s", ctx.status.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::Separator();
+    if (ImGui::CollapsingHeader("Lighting model", ImGuiTreeNodeFlags_DefaultOpen)) drawLightingSection(ctx);
+    if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) drawMaterialSection(ctx);
+    if (ImGui::CollapsingHeader("Lights")) drawLightsSection(ctx);
+    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) drawViewSection(ctx);
+    if (ImGui::CollapsingHeader("Scene")) drawSceneSection(ctx);
+    if (ImGui::CollapsingHeader("Keys and mouse")) drawHelpSection();
+    ImGui::End();
+}
+
+void drawHelpSection() {
+    const char* rows[][2] = {
+        {"left drag", "orbit about the target"},
+        {"right / middle drag", "pan"},
+        {"wheel", "zoom"},
+        {"click", "select the object, probe that pixel"},
+        {"1 .. 5", "ambient, +diffuse, +specular, +shadows, +reflections"},
+        {"B", "Phong / Blinn-Phong"},
+        {"V", "next view mode"},
+        {"F / R", "frame all / reset camera"},
+        {"F5", "reload shaders from shaders/"},
+        {"Tab", "hide / show this panel"},
+        {"Esc", "clear probe and selection"},
+        {"drop a file", "open .json, .gltf or .glb"},
+    };
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingStretchProp)) {
+        for (const auto& r : rows) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(r[0]);
+            ImGui::TableSetColumnIndex(1);
+            ImGui::TextDisabled("%s", r[1]);
+        }
+        ImGui::EndTable();
+    }
+}
+
+}  // namespace shadelab::app

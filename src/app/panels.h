@@ -1,0 +1,80 @@
+// The Dear ImGui panels. Each draws widgets for part of ViewerState and changes it only through the
+// actions in viewer_state.h; what needs the window (open, save, screenshot, reload) goes through
+// PanelServices. One file per panel: panels_scene, panels_lighting, panels_material, panels_lights,
+// panels_view, panels_probe; panels.cpp lays out the side panel.
+#pragma once
+
+#include "app/probe.h"
+#include "app/viewer_state.h"
+#include "image/compare.h"
+
+#include <string>
+
+namespace shadelab::app {
+
+class PanelServices {
+public:
+    virtual ~PanelServices() = default;
+    virtual void openScene(const std::string& path) = 0;
+    virtual void saveScene(const std::string& path) = 0;
+    virtual void screenshot(const std::string& path) = 0;
+    // From `dir`, or shaderSourceDir() when empty.
+    virtual void reloadShaders(const std::string& dir) = 0;
+};
+
+// Text fields and UI-only choices that are not part of the scene.
+struct UiFields {
+    std::string openPath;
+    std::string savePath;
+    std::string screenshotPath = "shadelab-view.png";
+    bool convertAllObjects = false;     // the equivalent-exponent buttons act on every object
+    bool lessonFolded = false;          // the lesson window was folded for the probe
+    float probeWindowWidth = 0.0f;      // window units, as last drawn (for placing it inside the image)
+};
+
+// Where Save writes by default: "<stem>-saved.json" beside the opened file, so neither a lesson file (whose
+// comments a save would drop) nor a .gltf/.glb model is overwritten, and relative mesh paths still resolve.
+std::string defaultSavePath(const std::string& scenePath);
+
+struct ReferenceInfo {
+    bool active = false, complete = false;
+    float progress = 0.0f;
+    double seconds = 0.0;
+    int threads = 0;
+    std::string error;
+};
+
+struct PanelContext {
+    PanelContext(ViewerState& s, PanelServices& sv, UiFields& f) : state(s), services(sv), fields(f) {}
+    ViewerState& state;
+    PanelServices& services;
+    UiFields& fields;
+    const ProbeResult* probe = nullptr;         // null when no probe is set
+    ReferenceInfo reference;
+    const CompareResult* metrics = nullptr;     // raster vs complete reference, when available
+    std::string shaderError;
+    std::string status;
+    bool statusError = false;
+    double frameMs = 0.0;                       // median of the last frames
+    int renderWidth = 0, renderHeight = 0;
+    float uiScale = 1.0f;
+};
+
+// The left side panel, filling (0, 0, width, height) of the window.
+void drawSidePanel(PanelContext& ctx, float width, float height);
+// Sections of the side panel.
+void drawSceneSection(PanelContext& ctx);
+void drawLightingSection(PanelContext& ctx);
+void drawMaterialSection(PanelContext& ctx);
+void drawLightsSection(PanelContext& ctx);
+void drawViewSection(PanelContext& ctx);
+void drawHelpSection();
+// Floating windows over the image area (x, y, width in window units).
+// The lesson (title and notes) sits at the bottom left; it folds to its title bar while a probe is shown.
+void drawLessonWindow(PanelContext& ctx, float x, float bottom, float width, bool folded);
+// With its right edge at `x` when the probed point is on the right half of the image, else its left edge.
+void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight);
+// The specular lobes of the selected material against the angle between R and V.
+void drawSpecularLobe(float s, ShadingModel model, float width, float height);
+
+}  // namespace shadelab::app

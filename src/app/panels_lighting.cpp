@@ -1,0 +1,36 @@
+// Lighting panel: Phong or Blinn-Phong, the five term switches, and the lecture's progression as steps.
+#include "app/panels.h"
+
+#include <imgui.h>
+
+namespace shadelab::app {
+
+void drawLightingSection(PanelContext& ctx) {
+    ViewerState& s = ctx.state;
+    int model = s.scene.model == ShadingModel::Phong ? 0 : 1;
+    if (ImGui::RadioButton("Phong  (R·V)^s", &model, 0)) setModel(s, ShadingModel::Phong);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Blinn-Phong  (N·H)^s", &model, 1)) setModel(s, ShadingModel::BlinnPhong);
+
+    ImGui::TextDisabled("Terms");
+    const Term terms[] = {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections};
+    for (int i = 0; i < 5; ++i) {
+        bool on = termEnabled(s.scene.terms, terms[i]);
+        if (i != 0 && i != 3) ImGui::SameLine();
+        if (ImGui::Checkbox(toString(terms[i]), &on)) setTerm(s, terms[i], on);
+    }
+    ImGui::TextDisabled("shadows, reflections: in the reference only");
+
+    ImGui::TextDisabled("Progression (keys 1-5)");
+    const char* labels[] = {"1 ambient", "2 +diffuse", "3 +specular", "4 +shadows", "5 +reflections"};
+    const int current = progressionStep(s.scene.terms);
+    for (int step = 1; step <= kProgressionSteps; ++step) {
+        if (step != 1 && step != 4) ImGui::SameLine();
+        const bool active = step == current;
+        if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+        if (ImGui::Button(labels[step - 1])) applyProgression(s, step);
+        if (active) ImGui::PopStyleColor();
+    }
+}
+
+}  // namespace shadelab::app

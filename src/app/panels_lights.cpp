@@ -1,0 +1,64 @@
+// Lights panel: the ambient intensity Ia, then each light (type, position or direction, colour and a
+// scalar intensity, attenuation), with add and remove.
+#include "app/panels.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/geometric.hpp>
+#include <imgui.h>
+
+#include <string>
+
+namespace shadelab::app {
+
+void drawLightsSection(PanelContext& ctx) {
+    ViewerState& s = ctx.state;
+    glm::vec3 Ia = s.scene.ambient;
+    if (ImGui::ColorEdit3("Ia  ambient", glm::value_ptr(Ia), ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+        setAmbient(s, Ia);
+    int remove = -1;
+    for (size_t i = 0; i < s.scene.lights.size(); ++i) {
+        Light l = s.scene.lights[i];
+        ImGui::PushID(int(i));
+        const std::string title = "L" + std::to_string(i + 1) + "  " + (l.name.empty() ? "light" : l.name) +
+                                  (l.type == LightType::Point ? "  (point)" : "  (directional)");
+        const bool open = ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "%s", title.c_str());
+        if (open) {
+            bool changed = false;
+            int type = l.type == LightType::Point ? 0 : 1;
+            bool typeChanged = ImGui::RadioButton("point", &type, 0);
+            ImGui::SameLine();
+            typeChanged |= ImGui::RadioButton("directional", &type, 1);
+            if (typeChanged) {
+                l.type = type == 0 ? LightType::Point : LightType::Directional;
+                changed = true;
+            }
+            if (l.type == LightType::Point) {
+                changed |= ImGui::DragFloat3("position", glm::value_ptr(l.position), 0.05f);
+                changed |= ImGui::DragFloat3("attenuation", glm::value_ptr(l.attenuation), 0.01f, 0.0f, 100.0f);
+            } else if (ImGui::DragFloat3("direction", glm::value_ptr(l.direction), 0.01f, -1.0f, 1.0f)) {
+                if (glm::length(l.direction) > 1e-4f) l.direction = glm::normalize(l.direction);
+                changed = true;
+            }
+            ColorIntensity ci = splitIntensity(l.color);
+            const bool colorChanged = ImGui::ColorEdit3("colour", glm::value_ptr(ci.color), ImGuiColorEditFlags_Float);
+            const bool intensityChanged = ImGui::DragFloat("intensity", &ci.intensity, 0.01f, 0.0f, 100.0f, "%.3f");
+            if (colorChanged || intensityChanged) {
+                l.color = joinIntensity(ci);
+                changed = true;
+            }
+            if (ImGui::SmallButton("remove")) remove = int(i);
+            if (changed) setLight(s, int(i), l);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (remove >= 0) removeLight(s, remove);
+    const bool full = s.scene.lights.size() >= size_t(kMaxLights);
+    if (full) ImGui::BeginDisabled();
+    if (ImGui::Button("add point light")) addLight(s, LightType::Point);
+    ImGui::SameLine();
+    if (ImGui::Button("add directional light")) addLight(s, LightType::Directional);
+    if (full) ImGui::EndDisabled();
+}
+
+}  // namespace shadelab::app

@@ -1,0 +1,56 @@
+// Scene panel (open, save, screenshot, shader reload with its error) and the lesson window that shows
+// the scene file's title and notes over the image.
+#include "app/panels.h"
+
+#include <filesystem>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace shadelab::app {
+
+std::string defaultSavePath(const std::string& scenePath) {
+    if (scenePath.empty()) return "scene-saved.json";
+    const std::filesystem::path p(scenePath);
+    return (p.parent_path() / (p.stem().string() + "-saved.json")).string();
+}
+
+void drawSceneSection(PanelContext& ctx) {
+    ViewerState& s = ctx.state;
+    ImGui::TextDisabled("%s", s.scenePath.empty() ? "(no file)" : s.scenePath.c_str());
+    ImGui::InputText("##open", &ctx.fields.openPath);
+    ImGui::SameLine();
+    if (ImGui::Button("Open")) ctx.services.openScene(ctx.fields.openPath);
+    ImGui::TextDisabled(".json, .gltf or .glb; or drop a file on the window");
+    ImGui::InputText("##save", &ctx.fields.savePath);
+    ImGui::SameLine();
+    if (ImGui::Button("Save JSON")) ctx.services.saveScene(ctx.fields.savePath);
+    ImGui::InputText("##shot", &ctx.fields.screenshotPath);
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot")) ctx.services.screenshot(ctx.fields.screenshotPath);
+    ImGui::TextDisabled("the rendered image without UI, as 'shadelab render' gives it");
+    if (ImGui::Button("Reload shaders (F5)")) ctx.services.reloadShaders("");
+    if (!ctx.shaderError.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", ctx.shaderError.c_str());
+        ImGui::PopStyleColor();
+        ImGui::TextDisabled("still running the last good shaders");
+    }
+}
+
+void drawLessonWindow(PanelContext& ctx, float x, float bottom, float width, bool folded) {
+    const Scene& scene = ctx.state.scene;
+    if (scene.title.empty() && scene.notes.empty()) return;
+    ImGui::SetNextWindowPos(ImVec2(x, bottom), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, 1e6f));
+    ImGui::SetNextWindowBgAlpha(0.72f);
+    // Fold and unfold only when the probe appears or goes; in between the user's choice stands.
+    if (folded != ctx.fields.lessonFolded) ImGui::SetNextWindowCollapsed(folded, ImGuiCond_Always);
+    ctx.fields.lessonFolded = folded;
+    const std::string title = (scene.title.empty() ? std::string("Lesson") : scene.title) + "###lesson";
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
+    if (ImGui::Begin(title.c_str(), nullptr, flags) && !scene.notes.empty()) ImGui::TextWrapped("%s", scene.notes.c_str());
+    ImGui::End();
+}
+
+}  // namespace shadelab::app

@@ -1,0 +1,84 @@
+// View panel: Raster / Traced / Split / Difference, the encoding, the reference's progress, and the
+// raster-vs-reference metrics (design.md §4 gates) once the reference is complete.
+#include "app/panels.h"
+
+#include <imgui.h>
+
+namespace shadelab::app {
+namespace {
+
+void metricsTable(const CompareResult& r) {
+    ImGui::Text("%s under the design.md gates", r.pass ? "PASS" : "FAIL");
+    if (ImGui::BeginTable("metrics", 4, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerH)) {
+        ImGui::TableSetupColumn("region");
+        ImGui::TableSetupColumn("mean");
+        ImGui::TableSetupColumn("max");
+        ImGui::TableSetupColumn("> 3/255");
+        ImGui::TableHeadersRow();
+        const std::pair<const char*, const RegionStats*> rows[] = {
+            {"interior", &r.interior}, {"silhouette", &r.band}, {"all", &r.all}};
+        for (const auto& [name, st] : rows) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(name);
+            ImGui::TableSetColumnIndex(1);
+            ImGui::Text("%.3f", st->mean);
+            ImGui::TableSetColumnIndex(2);
+            ImGui::Text("%d", st->max);
+            ImGui::TableSetColumnIndex(3);
+            ImGui::Text("%.3f%%", 100.0 * st->fractionOver());
+        }
+        ImGui::EndTable();
+    }
+    if (r.interior.max > 0)
+        ImGui::TextDisabled("interior max at (%d, %d) in %s", r.interior.maxX, r.interior.maxY,
+                            channelName(r.interior.maxChannel));
+    ImGui::TextDisabled("coverage mismatches %lld (%lld outside the band)", (long long)r.coverageMismatches,
+                        (long long)r.mismatchesOutsideBand);
+    for (const std::string& reason : r.reasons) ImGui::TextWrapped("- %s", reason.c_str());
+}
+
+}  // namespace
+
+void drawViewSection(PanelContext& ctx) {
+    ViewerState& s = ctx.state;
+    int mode = int(s.mode);
+    const char* names[] = {"Raster", "Traced", "Split", "Difference"};
+    for (int i = 0; i < 4; ++i) {
+        if (i) ImGui::SameLine();
+        if (ImGui::RadioButton(names[i], &mode, i)) setMode(s, ViewMode(i));
+    }
+    int encoding = s.encoding == Encoding::Srgb ? 0 : 1;
+    ImGui::TextDisabled("encoding");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("sRGB", &encoding, 0)) setEncoding(s, Encoding::Srgb);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("linear", &encoding, 1)) setEncoding(s, Encoding::Linear);
+    if (s.mode == ViewMode::Split) {
+        float split = s.splitPosition;
+        if (ImGui::SliderFloat("wipe", &split, 0.0f, 1.0f, "%.2f")) setSplitPosition(s, split);
+        ImGui::TextDisabled("left raster, right reference; drag the line");
+    }
+    if (s.mode == ViewMode::Difference) {
+        int gain = s.heatGain;
+        if (ImGui::SliderInt("gain", &gain, 1, 64)) setHeatGain(s, gain);
+    }
+    if (s.mode == ViewMode::Raster) return;
+
+    const ReferenceInfo& ref = ctx.reference;
+    if (!ref.error.empty()) {
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "reference: %s", ref.error.c_str());
+        return;
+    }
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", ref.complete ? "done" : "tracing",
+                  100.0 * ref.progress, ref.seconds);
+    ImGui::ProgressBar(ref.progress, ImVec2(-1.0f, 0.0f), overlay);
+    ImGui::TextDisabled("CPU reference, %d thread(s) at low priority; restarts on every change", ref.threads);
+    if (s.mode == ViewMode::Difference) {
+        if (ctx.metrics) metricsTable(*ctx.metrics);
+        else ImGui::TextDisabled("metrics when the reference is complete");
+    }
+}
+
+}  // namespace shadelab::app

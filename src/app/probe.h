@@ -1,0 +1,55 @@
+// The lighting probe (teaching): for one pixel, what the primary ray hits and every quantity of the
+// lighting model there (N, V, and per light L, R, H, the dot products and each term), for Phong and
+// Blinn-Phong side by side. Pure C++ on the shared shading code; no GL.
+#pragma once
+
+#include "app/viewer_state.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+namespace shadelab::app {
+
+struct ProbeLight {
+    std::string name;
+    glm::vec3 L{0.0f}, R{0.0f}, H{0.0f};  // unit; L toward the light, R = 2N(N·L) − L, H = normalize(L + V)
+    float NoL = 0.0f, RoV = 0.0f, NoH = 0.0f;
+    glm::vec3 Il{0.0f};                   // intensity arriving at P (attenuation applied), linear RGB
+    float specPhong = 0.0f;               // max(R·V, 0)^s, 0 on the unlit side
+    float specBlinn = 0.0f;               // max(N·H, 0)^s, 0 on the unlit side
+    glm::vec3 diffuse{0.0f};              // Il ⊙ md · max(N·L, 0)
+    glm::vec3 specularPhong{0.0f};        // Il ⊙ ms · specPhong
+    glm::vec3 specularBlinn{0.0f};        // Il ⊙ ms · specBlinn
+};
+
+struct ProbeResult {
+    int x = 0, y = 0;                     // pixel, row 0 at the top
+    int width = 0, height = 0;            // image size the pixel belongs to
+    bool hit = false;
+    uint32_t objectId = 0;                // coverage id (scene/coverage.h); 0 = background
+    ObjectKind kind = ObjectKind::None;
+    std::string label;                    // objectLabel()
+    float t = 0.0f;                       // ray parameter of the hit, world units
+    glm::vec3 P{0.0f}, N{0.0f}, V{0.0f};  // hit point; unit normal facing the viewer; unit vector to the eye
+    Material material;                    // the object's, with the checker tile's md at P
+    glm::vec3 ambient{0.0f};              // Ia ⊙ ma
+    std::vector<ProbeLight> lights;
+    glm::vec3 totalPhong{0.0f};           // shadeLocal with the scene's term switches, Phong
+    glm::vec3 totalBlinn{0.0f};           // the same, Blinn-Phong
+};
+
+// Casts the pixel-centre ray of pixel (x, y) of a width x height image exactly as both renderers do
+// (makeViewSetup + shading::cameraRayDirection) and evaluates local illumination at the nearest hit
+// with shading::shadeLight / shadeLocal. Spheres and planes use shading::intersectSphere/intersectPlane,
+// as the rasterizer's impostors do; mesh triangles are tested by brute force (Möller–Trumbore), with the
+// interpolated vertex normal flipped by winding as gl_FrontFacing does. Shadows are not evaluated
+// (vis = 1), as in the rasterizer.
+ProbeResult probePixel(const Scene& scene, int width, int height, int x, int y);
+
+// The JSON written by the script's "probeReport" action and --probe-report (docs/viewer.md).
+std::string probeReportJson(const ProbeResult& probe, const Scene& scene, uint32_t coverageId);
+
+}  // namespace shadelab::app

@@ -1,0 +1,202 @@
+// ReferenceRenderer: the controller thread (owns ProgressiveTrace and the mesh BVH) and the UI-side tile
+// collection into a CPU image and two textures.
+#include "app/reference_renderer.h"
+
+#include "trace/progressive_trace.h"
+#include "trace/trace_scene.h"
+
+#include <algorithm>
+#include <cstring>
+#include <sched.h>
+#include <sys/resource.h>
+
+namespace shadelab::app {
+
+ReferenceRenderer::ReferenceRenderer() {
+    threads_ = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+    controller_ = std::thread([this] { controllerLoop(); });
+}
+
+ReferenceRenderer::~ReferenceRenderer() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        quit_ = true;
+    }
+    wake_.notify_all();
+    controller_.join();
+}
+
+void ReferenceRenderer::controllerLoop() {
+    // On Linux scheduling policy and nice value belong to the thread, and threads inherit them from their
+    // creator: the trace workers started below run under SCHED_IDLE (only on otherwise idle cores), or at
+    // nice +19 where that is refused, so the UI thread and llvmpipe's threads always come first. Nice +10
+    // alone was not enough: workers restarted on every slider step still took half of both cores.
+    const sched_param idle{};
+    if (sched_setscheduler(0, SCHED_IDLE, &idle) != 0) setpriority(PRIO_PROCESS, 0, 19);
+    trace::ProgressiveTrace trace;
+    std::shared_ptr<const trace::MeshBvh> meshes;
+    uint64_t meshGeometry = 0, running = 0;
+    for (;;) {
+        std::optional<Job> job;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            if (running == 0 || trace.done())
+                wake_.wait(lock, [&] { return quit_ || pending_ || pauseRequested_; });
+            if (quit_) break;
+            if (pauseRequested_) {
+                pauseRequested_ = false;
+                lock.unlock();
+                trace.cancel();
+                running = 0;
+                continue;
+            }
+            job = std::move(pending_);
+            pending_.reset();
+        }
+        if (job) {
+            trace.cancel();
+            running = 0;
+            try {
+                std::shared_ptr<const trace::TraceScene> scene;
+                if (meshes && meshGeometry == job->geometryRevision) {
+                    scene = std::make_shared<trace::TraceScene>(job->scene, meshes);
+                } else {
+                    scene = std::make_shared<trace::TraceScene>(job->scene);
+                    meshes = scene->meshBvh();
+                    meshGeometry = job->geometryRevision;
+                }
+                trace::TraceSettings settings;
+                settings.width = job->width;
+                settings.height = job->height;
+                settings.threads = threads_;
+                settings.tileSize = kTileSize;
+                settings.coverage = true;
+                trace.start(scene, settings);
+                running = job->id;
+            } catch (const std::exception& e) {
+                std::lock_guard<std::mutex> lock(mutex_);
+                error_ = e.what();
+                continue;
+            }
+        }
+        if (running) {
+            std::vector<trace::TileResult> tiles;
+            trace.wait(tiles, std::chrono::milliseconds(30));
+            if (!tiles.empty()) {
+                std::lock_guard<std::mutex> lock(mutex_);
+                for (trace::TileResult& t : tiles) arrived_.emplace_back(running, std::move(t));
+            }
+        }
+    }
+    trace.cancel();
+}
+
+void ReferenceRenderer::resize(int width, int height) {
+    width_ = width;
+    height_ = height;
+    image_ = ImageF(width, height);
+    coverage_.assign(size_t(width) * size_t(height), 0u);
+    tilesX_ = (width + kTileSize - 1) / kTileSize;
+    tilesY_ = (height + kTileSize - 1) / kTileSize;
+    tileState_.assign(size_t(tilesX_) * size_t(tilesY_), 0);
+    color_ = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_2D, color_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, image_.rgba.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    tiles_ = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_2D, tiles_.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    tilesDirty_ = true;
+}
+
+void ReferenceRenderer::request(const Scene& scene, int width, int height, uint64_t revision,
+                                uint64_t geometryRevision) {
+    if (width <= 0 || height <= 0) return;
+    if (job_ != 0 && revision == revision_ && width == width_ && height == height_) return;
+    if (width != width_ || height != height_ || !color_) resize(width, height);
+    std::fill(tileState_.begin(), tileState_.end(), uint8_t(0));
+    tilesDirty_ = true;
+    tilesDone_ = 0;
+    tileTotal_ = tilesX_ * tilesY_;
+    revision_ = revision;
+    job_ = nextJob_++;
+    started_ = std::chrono::steady_clock::now();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        pending_ = Job{job_, scene, width, height, geometryRevision};
+        error_.clear();
+    }
+    wake_.notify_all();
+}
+
+void ReferenceRenderer::pause() {
+    if (job_ == 0) return;
+    job_ = 0;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        pending_.reset();
+        pauseRequested_ = true;
+    }
+    wake_.notify_all();
+}
+
+bool ReferenceRenderer::update() {
+    std::vector<std::pair<uint64_t, trace::TileResult>> tiles;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        tiles.swap(arrived_);
+    }
+    bool any = false;
+    for (auto& [id, t] : tiles) {
+        if (id != job_) continue;  // from a cancelled request
+        const trace::Tile& tile = t.tile;
+        // CPU copy (row 0 at the top) for captures and metrics.
+        for (int row = 0; row < tile.height; ++row) {
+            std::memcpy(image_.pixel(tile.x0, tile.y0 + row), &t.rgba[size_t(row) * size_t(tile.width) * 4],
+                        size_t(tile.width) * 4 * sizeof(float));
+            if (!t.coverage.empty())
+                std::memcpy(&coverage_[size_t(tile.y0 + row) * size_t(width_) + size_t(tile.x0)],
+                            &t.coverage[size_t(row) * size_t(tile.width)], size_t(tile.width) * sizeof(uint32_t));
+        }
+        // The texture is in GL row order, as the raster target is.
+        flipped_.resize(t.rgba.size());
+        const size_t rowFloats = size_t(tile.width) * 4;
+        for (int row = 0; row < tile.height; ++row)
+            std::memcpy(&flipped_[size_t(tile.height - 1 - row) * rowFloats], &t.rgba[size_t(row) * rowFloats],
+                        rowFloats * sizeof(float));
+        glBindTexture(GL_TEXTURE_2D, color_.id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, tile.x0, height_ - tile.y0 - tile.height, tile.width, tile.height,
+                                GL_RGBA, GL_FLOAT, flipped_.data());
+        const int tx = tile.x0 / kTileSize, ty = tile.y0 / kTileSize;
+        uint8_t& state = tileState_[size_t(ty) * size_t(tilesX_) + size_t(tx)];
+        if (state == 0) ++tilesDone_;
+        state = 255;
+        tilesDirty_ = any = true;
+    }
+    if (any && tilesDone_ == tileTotal_) finished_ = std::chrono::steady_clock::now();
+    if (tilesDirty_ && tiles_) {
+        glBindTexture(GL_TEXTURE_2D, tiles_.id());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, tilesX_, tilesY_, 0, GL_RED, GL_UNSIGNED_BYTE, tileState_.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        tilesDirty_ = false;
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return any;
+}
+
+double ReferenceRenderer::seconds() const {
+    if (job_ == 0) return 0.0;
+    const auto end = complete() ? finished_ : std::chrono::steady_clock::now();
+    return std::chrono::duration<double>(end - started_).count();
+}
+
+std::string ReferenceRenderer::error() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return error_;
+}
+
+}  // namespace shadelab::app

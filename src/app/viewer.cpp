@@ -1,0 +1,240 @@
+// Viewer: the frame loop (events → script → UI → raster → compose → swap), the layout of the side panel
+// and the image area, and --stats. Setup and teardown are in viewer_setup.cpp.
+#include "app/viewer.h"
+
+#include "image/png.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace shadelab::app {
+
+int Viewer::run() {
+    while (frame()) {
+    }
+    if (!options_.screenshot.empty()) writePng(options_.screenshot, captureRaster());
+    if (!options_.probeReport.empty()) writeProbeReport(options_.probeReport);
+    if (options_.stats) {
+        std::printf("shadelab: view stats: %zu frames, image %dx%d in a %dx%d window (framebuffer %dx%d)\n",
+                    frameStats_.count() + idleStats_.count(), renderW_, renderH_, winW_, winH_, fbW_, fbH_);
+        std::printf("shadelab:   frame, raster redrawn  median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
+                    frameStats_.median(), frameStats_.percentile(95.0), frameStats_.count());
+        std::printf("shadelab:   raster draw alone      median %6.2f ms   p95 %6.2f ms   (draw + glFinish)\n",
+                    rasterStats_.median(), rasterStats_.percentile(95.0));
+        if (idleStats_.count())
+            std::printf("shadelab:   frame, nothing changed median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
+                        idleStats_.median(), idleStats_.percentile(95.0), idleStats_.count());
+        if (reference_->active())
+            std::printf("shadelab:   reference    %.0f%% of tiles in %.1f s on %d thread(s)%s\n",
+                        100.0 * reference_->progress(), reference_->seconds(), reference_->threads(),
+                        reference_->complete() ? ", complete" : ", still running");
+    }
+    return 0;
+}
+
+bool Viewer::finished() const {
+    if (options_.frames < 0 || frame_ < options_.frames) return false;
+    return !cursor_ || (cursor_->done() && !waiting_);
+}
+
+bool Viewer::frame() {
+    const double t0 = glfwGetTime();
+    glfwPollEvents();
+    if (glfwWindowShouldClose(window_)) return false;
+    handleDrops();
+    glfwGetFramebufferSize(window_, &fbW_, &fbH_);
+    glfwGetWindowSize(window_, &winW_, &winH_);
+    if (fbW_ <= 0 || fbH_ <= 0 || winW_ <= 0 || winH_ <= 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED)) {
+        glfwWaitEventsTimeout(0.1);  // minimised: no GL work at all until the window has a size again
+        return true;
+    }
+    computeLayout();
+    runScript();
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    handleKeys();
+    handleMouse();
+    updateReference();
+    updateMetrics();
+    updateProbe();
+
+    PanelContext ctx(state_, *this, fields_);
+    ctx.probe = probe_ ? &*probe_ : nullptr;
+    ctx.reference = {reference_->active(), reference_->complete(), reference_->progress(), reference_->seconds(),
+                     reference_->threads(), reference_->error()};
+    ctx.metrics = metrics_ && metricsRevision_ == state_.revision ? &*metrics_ : nullptr;
+    ctx.shaderError = shaderError_;
+    if (glfwGetTime() - statusTime_ < 8.0) {
+        ctx.status = status_;
+        ctx.statusError = statusError_;
+    }
+    ctx.frameMs = recentFrameMs();
+    ctx.renderWidth = renderW_;
+    ctx.renderHeight = renderH_;
+    ctx.uiScale = uiScale_;
+    if (showPanel_) drawSidePanel(ctx, panelWidth_, float(winH_));
+    const float margin = 10.0f * uiScale_;
+    drawLessonWindow(ctx, imageX_ + margin, imageY_ + imageH_ - margin,
+                     std::min(imageW_ - 2.0f * margin, 760.0f * uiScale_), ctx.probe != nullptr);
+    if (ctx.probe) {
+        // Beside the probed point, on the side with more room, clear of its arrows.
+        const float px = imageX_ + (float(state_.probe.x) + 0.5f) / float(renderW_) * imageW_;
+        const float clearance = 0.22f * imageH_ + 20.0f * uiScale_;
+        const bool onRight = 2 * state_.probe.x > renderW_;
+        const float width = fields_.probeWindowWidth;  // as drawn last frame
+        const float anchor = onRight ? std::max(imageX_ + margin + width, px - clearance)
+                                     : std::min(imageX_ + imageW_ - margin - width, px + clearance);
+        drawProbeWindow(ctx, anchor, imageY_ + margin, onRight);
+    }
+
+    // --stats forces a raster redraw on every other frame, so it measures both the frame a change costs
+    // (the honest figure) and the frame that only redraws the window.
+    const bool forced = options_.stats && frame_ % 2 == 0;
+    const bool redrawn = ensureRasterCurrent(forced);
+    compose();
+    ++frame_;
+    const bool last = finished();
+    if (last && !options_.windowScreenshot.empty()) pendingWindowShot_ = options_.windowScreenshot;
+    if (!pendingWindowShot_.empty()) {
+        writeWindowScreenshot(pendingWindowShot_);
+        pendingWindowShot_.clear();
+    }
+    glfwSwapBuffers(window_);
+    const double ms = (glfwGetTime() - t0) * 1000.0;
+    if (options_.stats) (redrawn ? frameStats_ : idleStats_).add(ms);
+    recentMs_[size_t(frame_) % recentMs_.size()] = ms;
+    return !last;
+}
+
+// Median of the last frames, for the panel's header (FrameStats keeps every frame for --stats).
+double Viewer::recentFrameMs() const {
+    const size_t n = std::min(size_t(frame_), recentMs_.size());
+    if (n == 0) return 0.0;
+    std::array<double, 64> v{};
+    std::copy_n(recentMs_.begin(), n, v.begin());
+    std::nth_element(v.begin(), v.begin() + long(n / 2), v.begin() + long(n));
+    return v[n / 2];
+}
+
+void Viewer::computeLayout() {
+    fbScale_ = float(fbW_) / float(winW_);
+    panelWidth_ = showPanel_ ? std::min(kViewerPanelWidth * uiScale_, 0.5f * float(winW_)) : 0.0f;
+    const int areaX = int(std::lround(panelWidth_ * fbScale_));
+    const int areaW = std::max(1, fbW_ - areaX), areaH = std::max(1, fbH_);
+    if (options_.width > 0) {
+        renderW_ = options_.width;
+        renderH_ = options_.height;
+    } else {
+        renderW_ = areaW;
+        renderH_ = areaH;
+    }
+    // A fixed size shows 1:1 when it fits, else scaled down to fit, centred.
+    const float scale = std::min({1.0f, float(areaW) / float(renderW_), float(areaH) / float(renderH_)});
+    fbRect_.width = std::max(1, int(std::lround(float(renderW_) * scale)));
+    fbRect_.height = std::max(1, int(std::lround(float(renderH_) * scale)));
+    fbRect_.x = areaX + (areaW - fbRect_.width) / 2;
+    fbRect_.y = (areaH - fbRect_.height) / 2;
+    imageX_ = float(fbRect_.x) / fbScale_;
+    imageY_ = float(fbH_ - fbRect_.y - fbRect_.height) / fbScale_;
+    imageW_ = float(fbRect_.width) / fbScale_;
+    imageH_ = float(fbRect_.height) / fbScale_;
+}
+
+bool Viewer::ensureRasterCurrent(bool force) {
+    if (renderW_ <= 0 || renderH_ <= 0) return false;
+    if (meshGeometry_ != state_.geometryRevision) {
+        raster_->uploadMeshes(state_.scene);
+        meshGeometry_ = state_.geometryRevision;
+        rasterRevision_ = 0;
+    }
+    if (!force && rasterRevision_ == state_.revision && rasterW_ == renderW_ && rasterH_ == renderH_) return false;
+    const double t0 = glfwGetTime();
+    raster_->draw(state_.scene, renderW_, renderH_, true);
+    if (options_.stats) glFinish();  // so the figure is the draw, not just its submission
+    if (options_.stats) rasterStats_.add((glfwGetTime() - t0) * 1000.0);
+    rasterRevision_ = state_.revision;
+    rasterW_ = renderW_;
+    rasterH_ = renderH_;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return true;
+}
+
+void Viewer::updateReference() {
+    if (state_.mode == ViewMode::Raster && !waiting_) {
+        reference_->pause();
+        return;
+    }
+    reference_->request(state_.scene, renderW_, renderH_, state_.revision, state_.geometryRevision);
+    reference_->update();
+}
+
+void Viewer::updateProbe() {
+    if (!state_.probe.active) {
+        probe_.reset();
+        return;
+    }
+    const ProbeState& p = state_.probe;
+    if (probe_ && probeRevision_ == state_.revision && probeX_ == p.x && probeY_ == p.y && probeW_ == renderW_ &&
+        probeH_ == renderH_)
+        return;
+    probe_ = probePixel(state_.scene, renderW_, renderH_, p.x, p.y);
+    probeRevision_ = state_.revision;
+    probeX_ = p.x, probeY_ = p.y, probeW_ = renderW_, probeH_ = renderH_;
+}
+
+void Viewer::compose() {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fbW_, fbH_);
+    // The image pass covers its rectangle; clear only what it leaves (a whole-window clear costs ~1 ms).
+    const bool letterboxed = fbRect_.y > 0 || fbRect_.height < fbH_ || fbRect_.x + fbRect_.width < fbW_;
+    glClearColor(0.09f, 0.09f, 0.10f, 1.0f);
+    if (letterboxed) {
+        glDisable(GL_SCISSOR_TEST);
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else if (fbRect_.x > 0) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, fbRect_.x, fbH_);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+    }
+    ImageViewInputs in;
+    in.raster = raster_->target().colorTexture();
+    in.imageWidth = raster_->target().width();
+    in.imageHeight = raster_->target().height();
+    if (reference_->active()) {
+        in.traced = reference_->texture();
+        in.tiles = reference_->tileTexture();
+        in.tileSize = reference_->tileSize();
+    }
+    in.mode = state_.mode;
+    in.encoding = state_.encoding;
+    in.split = state_.splitPosition;
+    in.gain = float(state_.heatGain);
+    imageView_->draw(fbRect_, in);
+    if (probe_ && probe_->hit) {
+        const std::vector<ArrowLabel> labels =
+            arrows_->draw(state_.scene, *probe_, renderW_, renderH_, fbRect_, fbH_, fbScale_ * uiScale_);
+        ImDrawList* dl = ImGui::GetForegroundDrawList();
+        for (const ArrowLabel& l : labels) {
+            const ImVec2 at(l.position.x / fbScale_ + 6.0f * uiScale_, l.position.y / fbScale_ - 10.0f * uiScale_);
+            const ImU32 color = ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, 1.0f));
+            dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 255), l.text.c_str());
+            dl->AddText(at, color, l.text.c_str());
+        }
+    }
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    gl::checkError("viewer frame");
+}
+
+}  // namespace shadelab::app

@@ -1,0 +1,129 @@
+// Viewer: the GLFW window, Dear ImGui, the rasterizer and the reference, driven by ViewerState. This
+// header is the window's private interface shared by viewer*.cpp; callers use runViewer() in app.h.
+//   viewer_setup.cpp    window, GL and ImGui setup and teardown
+//   viewer.cpp          the frame loop, layout and composition
+//   viewer_input.cpp    mouse, keys, drag and drop
+//   viewer_actions.cpp  script actions, captures (screenshots, probe report), open/save, shader reload
+#pragma once
+
+#include "app/app.h"
+#include "app/arrow_overlay.h"
+#include "app/frame_stats.h"
+#include "app/image_view.h"
+#include "app/panels.h"
+#include "app/reference_renderer.h"
+#include "app/script.h"
+#include "app/viewer_state.h"
+#include "image/compare.h"
+#include "raster/raster_renderer.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace shadelab::app {
+
+inline constexpr float kViewerPanelWidth = 440.0f;   // side panel, window units at UI scale 1
+
+class Viewer : public PanelServices {
+public:
+    Viewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script);
+    ~Viewer() override;
+    int run();
+
+    // PanelServices
+    void openScene(const std::string& path) override;
+    void saveScene(const std::string& path) override;
+    void screenshot(const std::string& path) override;
+    void reloadShaders(const std::string& dir) override;
+    void queueDrop(const std::string& path);   // from GLFW's drop callback
+
+private:
+    // viewer_setup.cpp
+    void initWindow();
+    void initImGui();
+    void shutdown();
+    // viewer.cpp
+    bool frame();
+    void computeLayout();
+    bool ensureRasterCurrent(bool force);     // true when it drew
+    void updateReference();
+    void updateProbe();
+    void compose();
+    bool finished() const;
+    // viewer_input.cpp
+    void handleMouse();
+    void handleKeys();
+    void handleDrops();
+    glm::ivec2 imagePixelAt(float windowX, float windowY) const;
+    void clickAt(float windowX, float windowY);
+    // viewer_actions.cpp
+    void runScript();
+    void performAction(const ScriptAction& action);
+    Image8 captureRaster();
+    uint32_t coverageAt(int x, int y);
+    void writeProbeReport(const std::string& path);
+    void writeWindowScreenshot(const std::string& path);
+    void updateMetrics();
+    void setStatus(const std::string& message, bool error);
+
+    ViewerOptions options_;
+    ViewerState state_;
+    std::optional<Script> script_;
+    std::optional<ScriptCursor> cursor_;
+    const ScriptAction* waiting_ = nullptr;     // a waitReference action holding the script
+    double waitStarted_ = 0.0;
+
+    GLFWwindow* window_ = nullptr;
+    bool imguiReady_ = false;
+    std::unique_ptr<raster::RasterRenderer> raster_;
+    std::unique_ptr<ImageView> imageView_;
+    std::unique_ptr<ArrowOverlay> arrows_;
+    std::unique_ptr<ReferenceRenderer> reference_;
+
+    // Layout, in window (logical) units unless named fb*.
+    int winW_ = 0, winH_ = 0, fbW_ = 0, fbH_ = 0;
+    float fbScale_ = 1.0f, uiScale_ = 1.0f;
+    float panelWidth_ = 0.0f;
+    bool showPanel_ = true;
+    float imageX_ = 0, imageY_ = 0, imageW_ = 0, imageH_ = 0;   // where the image is shown
+    ImageRect fbRect_;                                         // the same in framebuffer pixels (GL)
+    int renderW_ = 0, renderH_ = 0;                            // rendered image size
+
+    // What the raster target holds.
+    uint64_t rasterRevision_ = 0, rasterGeometry_ = 0, meshGeometry_ = 0;
+    int rasterW_ = 0, rasterH_ = 0;
+
+    // Probe, recomputed when the state or pixel changes.
+    std::optional<ProbeResult> probe_;
+    uint64_t probeRevision_ = 0;
+    int probeX_ = -1, probeY_ = -1, probeW_ = 0, probeH_ = 0;
+
+    // Difference metrics for a complete reference.
+    std::optional<CompareResult> metrics_;
+    uint64_t metricsRevision_ = 0;
+
+    // Input.
+    bool leftDown_ = false, dragged_ = false, panning_ = false, splitting_ = false;
+    float pressX_ = 0, pressY_ = 0;
+    std::vector<std::string> drops_;
+
+    UiFields fields_;
+    std::string shaderError_;
+    std::string status_;
+    bool statusError_ = false;
+    double statusTime_ = 0.0;
+    std::string pendingWindowShot_;
+
+    int frame_ = 0;
+    FrameStats frameStats_, idleStats_, rasterStats_;   // frames with / without a raster redraw
+    std::array<double, 64> recentMs_{};
+    double recentFrameMs() const;
+    std::vector<std::string> glInfo_;
+};
+
+}  // namespace shadelab::app

@@ -1,0 +1,196 @@
+// Viewer actions that need the window: script playback, captures (the rendered image through the one
+// shared float → 8-bit conversion, the probe report, the whole window), open, save, shader hot reload,
+// and the raster-vs-reference metrics.
+#include "app/viewer.h"
+
+#include "app/app.h"
+#include "image/png.h"
+#include "scene/scene_json.h"
+#include "scene/scene_load.h"
+#include "util/atomic_file.h"
+#include "util/input_error.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+#include <cstring>
+
+namespace shadelab::app {
+namespace {
+
+void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
+
+}  // namespace
+
+void Viewer::runScript() {
+    if (!cursor_) return;
+    if (waiting_) {
+        if (reference_->complete() && reference_->revision() == state_.revision) {
+            waiting_ = nullptr;
+        } else if (glfwGetTime() - waitStarted_ > double(waiting_->value)) {
+            throw InputError(script_->file, "actions[" + std::to_string(waiting_->index) + "]",
+                             "the reference did not finish within " + std::to_string(int(waiting_->value)) + " s");
+        } else {
+            return;
+        }
+    }
+    while (const ScriptAction* a = cursor_->next(frame_)) {
+        if (isStateAction(a->kind)) applyScriptAction(state_, *a, script_->file);
+        else performAction(*a);
+        if (waiting_) break;
+    }
+}
+
+void Viewer::performAction(const ScriptAction& a) {
+    switch (a.kind) {
+        case ActionKind::Screenshot: writePng(a.text, captureRaster()); break;
+        case ActionKind::ReferenceScreenshot:
+            if (!reference_->complete() || reference_->revision() != state_.revision)
+                throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
+                                 "the reference is not complete (use waitReference first)");
+            writePng(a.text, toImage8(reference_->image(), state_.encoding));
+            break;
+        case ActionKind::WindowScreenshot: pendingWindowShot_ = a.text; break;
+        case ActionKind::ProbeReport: writeProbeReport(a.text); break;
+        case ActionKind::SaveScene: saveSceneJson(state_.scene, a.text); break;
+        case ActionKind::Open: {
+            Scene scene = loadScene(a.text, printWarning);  // a script stops on a bad file
+            app::openScene(state_, std::move(scene), a.text);
+            break;
+        }
+        case ActionKind::ReloadShaders: reloadShaders(a.text); break;
+        case ActionKind::ResizeWindow: glfwSetWindowSize(window_, a.step, a.y); break;
+        case ActionKind::WaitReference:
+            waiting_ = &a;
+            waitStarted_ = glfwGetTime();
+            break;
+        default: applyScriptAction(state_, a, script_->file);
+    }
+}
+
+Image8 Viewer::captureRaster() {
+    ensureRasterCurrent(false);
+    Image8 img;
+    img.width = rasterW_;
+    img.height = rasterH_;
+    img.channels = 3;
+    img.data.resize(size_t(img.width) * size_t(img.height) * 3);
+    raster_->target().readColor8(img, 0, state_.encoding);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return img;
+}
+
+uint32_t Viewer::coverageAt(int x, int y) {
+    ensureRasterCurrent(false);
+    if (x < 0 || y < 0 || x >= rasterW_ || y >= rasterH_) return 0;
+    raster_->target().bind();
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    uint32_t id = 0;
+    glReadPixels(x, rasterH_ - 1 - y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &id);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::checkError("coverage readback");
+    return id;
+}
+
+void Viewer::writeProbeReport(const std::string& path) {
+    if (!state_.probe.active)
+        throw InputError(path, "no probe is set (click the image, or use a 'probe' script action)");
+    updateProbe();
+    const uint32_t coverage = coverageAt(state_.probe.x, state_.probe.y);
+    writeFileAtomic(path, probeReportJson(*probe_, state_.scene, coverage));
+}
+
+void Viewer::writeWindowScreenshot(const std::string& path) {
+    Image8 img;
+    img.width = fbW_;
+    img.height = fbH_;
+    img.channels = 3;
+    std::vector<uint8_t> rgba(size_t(fbW_) * size_t(fbH_) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, fbW_, fbH_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    img.data.resize(size_t(fbW_) * size_t(fbH_) * 3);
+    for (int y = 0; y < fbH_; ++y)
+        for (int x = 0; x < fbW_; ++x)
+            std::memcpy(&img.data[(size_t(y) * size_t(fbW_) + size_t(x)) * 3],
+                        &rgba[(size_t(fbH_ - 1 - y) * size_t(fbW_) + size_t(x)) * 4], 3);
+    writePng(path, img);
+}
+
+void Viewer::updateMetrics() {
+    if (state_.mode != ViewMode::Difference || !reference_->complete() ||
+        reference_->revision() != state_.revision || metricsRevision_ == state_.revision)
+        return;
+    const Image8 raster = captureRaster();
+    std::vector<uint32_t> rasterCoverage;
+    raster_->target().readCoverage(rasterCoverage);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const Image8 traced = toImage8(reference_->image(), state_.encoding);
+    if (traced.width != raster.width || traced.height != raster.height) return;
+    metrics_ = compareImages(raster, traced, rasterCoverage, reference_->coverage());
+    metricsRevision_ = state_.revision;
+}
+
+void Viewer::openScene(const std::string& path) {
+    try {
+        Scene scene = loadScene(path, printWarning);
+        app::openScene(state_, std::move(scene), path);
+        fields_.openPath = path;
+        fields_.savePath = defaultSavePath(path);
+        metrics_.reset();
+        setStatus("opened " + path, false);
+    } catch (const std::exception& e) {
+        setStatus(e.what(), true);
+    }
+}
+
+void Viewer::saveScene(const std::string& path) {
+    try {
+        saveSceneJson(state_.scene, path);
+        setStatus("saved " + path, false);
+    } catch (const std::exception& e) {
+        setStatus(e.what(), true);
+    }
+}
+
+void Viewer::screenshot(const std::string& path) {
+    try {
+        writePng(path, captureRaster());
+        setStatus("wrote " + path + " (" + std::to_string(rasterW_) + "x" + std::to_string(rasterH_) + ")", false);
+    } catch (const std::exception& e) {
+        setStatus(e.what(), true);
+    }
+}
+
+// Rebuilds every program from the shaders on disk; on any error keeps the running ones and shows it.
+void Viewer::reloadShaders(const std::string& from) {
+    const std::string dir = from.empty() ? shaderSourceDir() : from;
+    try {
+        const gl::ShaderLibrary shaders(dir);
+        auto raster = std::make_unique<raster::RasterRenderer>(shaders);
+        auto view = std::make_unique<ImageView>(shaders);
+        auto arrows = std::make_unique<ArrowOverlay>(shaders);
+        raster_ = std::move(raster);
+        imageView_ = std::move(view);
+        arrows_ = std::move(arrows);
+        meshGeometry_ = 0;      // the new renderer has no meshes yet
+        rasterRevision_ = 0;
+        shaderError_.clear();
+        setStatus("reloaded shaders from " + dir, false);
+    } catch (const std::exception& e) {
+        shaderError_ = e.what();
+        setStatus("shader reload failed, keeping the last good shaders: " + shaderError_, true);
+    }
+}
+
+void Viewer::setStatus(const std::string& message, bool error) {
+    status_ = message;
+    statusError_ = error;
+    statusTime_ = glfwGetTime();
+    if (error || options_.verbose) std::fprintf(stderr, "shadelab: %s\n", message.c_str());
+}
+
+}  // namespace shadelab::app

@@ -1,0 +1,135 @@
+// Viewer input: orbit/pan/zoom and click-to-probe on the image, the split wipe, keyboard shortcuts, and
+// drag and drop of scene files. Everything goes through the viewer_state.h actions.
+#include "app/viewer.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+namespace shadelab::app {
+namespace {
+
+constexpr float kRadiansPerPixel = 0.008f;
+constexpr float kClickSlop = 3.0f;      // window units a press may move and still count as a click
+
+bool sceneExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".json" || ext == ".gltf" || ext == ".glb";
+}
+
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* viewer = static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+    if (viewer)
+        for (int i = 0; i < count; ++i) viewer->queueDrop(paths[i]);
+}
+
+}  // namespace
+
+void installDropCallback(GLFWwindow* window) { glfwSetDropCallback(window, onDrop); }
+
+void Viewer::queueDrop(const std::string& path) { drops_.push_back(path); }
+
+void Viewer::handleDrops() {
+    std::vector<std::string> drops;
+    drops.swap(drops_);
+    for (const std::string& path : drops) {
+        if (!sceneExtension(path)) {
+            setStatus(path + ": not a scene (.json, .gltf or .glb)", true);
+            continue;
+        }
+        openScene(path);
+        break;  // one scene at a time: the first that is one
+    }
+}
+
+glm::ivec2 Viewer::imagePixelAt(float windowX, float windowY) const {
+    return {int(std::floor((windowX - imageX_) / imageW_ * float(renderW_))),
+            int(std::floor((windowY - imageY_) / imageH_ * float(renderH_)))};
+}
+
+void Viewer::handleMouse() {
+    ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 m = io.MousePos;
+    const bool overImage = m.x >= imageX_ && m.x < imageX_ + imageW_ && m.y >= imageY_ && m.y < imageY_ + imageH_;
+    if (!io.WantCaptureMouse && overImage) {
+        if (ImGui::IsMouseClicked(0)) {
+            leftDown_ = true;
+            dragged_ = false;
+            pressX_ = m.x;
+            pressY_ = m.y;
+            const float wipe = imageX_ + state_.splitPosition * imageW_;
+            splitting_ = state_.mode == ViewMode::Split && std::fabs(m.x - wipe) < 8.0f * uiScale_;
+        }
+        if (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)) panning_ = true;
+        if (io.MouseWheel != 0.0f) {
+            OrbitCamera o = state_.orbit;
+            orbitZoom(o, io.MouseWheel);
+            applyOrbit(state_, o);
+        }
+    }
+    if (leftDown_) {
+        if (!ImGui::IsMouseDown(0)) {
+            leftDown_ = false;
+            if (!dragged_ && !splitting_) clickAt(pressX_, pressY_);
+            splitting_ = false;
+        } else {
+            if (std::fabs(m.x - pressX_) + std::fabs(m.y - pressY_) > kClickSlop) dragged_ = true;
+            if (dragged_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+                if (splitting_) {
+                    setSplitPosition(state_, (m.x - imageX_) / imageW_);
+                } else {
+                    OrbitCamera o = state_.orbit;
+                    orbitRotate(o, -io.MouseDelta.x * kRadiansPerPixel, io.MouseDelta.y * kRadiansPerPixel);
+                    applyOrbit(state_, o);
+                }
+            }
+        }
+    }
+    if (panning_) {
+        if (!ImGui::IsMouseDown(1) && !ImGui::IsMouseDown(2)) {
+            panning_ = false;
+        } else if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
+            OrbitCamera o = state_.orbit;
+            orbitPan(o, io.MouseDelta.x, io.MouseDelta.y, imageH_);
+            applyOrbit(state_, o);
+        }
+    }
+}
+
+// A click without a drag: select the object under the cursor (the rasterizer's coverage id there) and put
+// the probe on that pixel; the background clears both.
+void Viewer::clickAt(float windowX, float windowY) {
+    const glm::ivec2 p = imagePixelAt(windowX, windowY);
+    if (p.x < 0 || p.y < 0 || p.x >= renderW_ || p.y >= renderH_) return;
+    const uint32_t id = coverageAt(p.x, p.y);
+    select(state_, id);
+    if (id != 0) setProbe(state_, p.x, p.y);
+    else clearProbe(state_);
+}
+
+void Viewer::handleKeys() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureKeyboard) return;
+    auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+    for (int step = 1; step <= kProgressionSteps; ++step)
+        if (pressed(GLFW_KEY_0 + step) || pressed(GLFW_KEY_KP_0 + step)) applyProgression(state_, step);
+    if (pressed(GLFW_KEY_F)) frameAll(state_);
+    if (pressed(GLFW_KEY_R)) resetCamera(state_);
+    if (pressed(GLFW_KEY_F5)) reloadShaders("");
+    if (pressed(GLFW_KEY_B))
+        setModel(state_, state_.scene.model == ShadingModel::Phong ? ShadingModel::BlinnPhong : ShadingModel::Phong);
+    if (pressed(GLFW_KEY_V)) setMode(state_, ViewMode((int(state_.mode) + 1) % 4));
+    if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
+    if (pressed(GLFW_KEY_ESCAPE)) {
+        clearProbe(state_);
+        select(state_, 0);
+    }
+}
+
+}  // namespace shadelab::app

@@ -1,0 +1,315 @@
+// ViewerState actions: each edits the plain state and marks what the renderers must redo.
+#include "app/viewer_state.h"
+
+#include "app/specular_lobe.h"
+#include "scene/coverage.h"
+#include "scene/scene_load.h"
+
+#include <algorithm>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace shadelab::app {
+namespace {
+
+Material* sphereOrPlaneMaterial(Scene& scene, const ObjectRef& r) {
+    if (r.kind == ObjectKind::Sphere) return &scene.spheres[r.index].material;
+    if (r.kind == ObjectKind::Plane) return &scene.planes[r.index].material;
+    return nullptr;
+}
+
+// Writes the fields of `m` that differ from `before` into the mesh's override and applies it to every part.
+void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
+    MaterialOverride& o = mesh.material;
+    if (m.ma != before.ma) o.ma = m.ma;
+    if (m.md != before.md) o.md = m.md;
+    if (m.ms != before.ms) o.ms = m.ms;
+    if (m.s != before.s) o.s = m.s;
+    if (m.kr != before.kr) o.kr = m.kr;
+    if (m.kt != before.kt) o.kt = m.kt;
+    if (m.ior != before.ior) o.ior = m.ior;
+    for (MeshPart& p : mesh.parts) o.applyTo(p.material);
+}
+
+}  // namespace
+
+ViewerState makeViewerState(Scene scene, std::string path) {
+    ViewerState s;
+    openScene(s, std::move(scene), std::move(path));
+    return s;
+}
+
+void openScene(ViewerState& state, Scene scene, std::string path) {
+    state.scene = std::move(scene);
+    state.scenePath = std::move(path);
+    state.fileCamera = state.scene.camera;
+    state.orbit = orbitFromCamera(state.scene.camera);
+    state.selected = 0;
+    state.probe = ProbeState{};
+    ++state.geometryRevision;
+    markChanged(state);
+}
+
+void markChanged(ViewerState& state) { ++state.revision; }
+
+ObjectRef objectRef(const Scene& scene, uint32_t id) {
+    if (id == kBackgroundId) return {};
+    size_t i = id - 1;
+    if (i < scene.spheres.size()) return {ObjectKind::Sphere, i};
+    i -= scene.spheres.size();
+    if (i < scene.planes.size()) return {ObjectKind::Plane, i};
+    i -= scene.planes.size();
+    if (i < scene.meshes.size()) return {ObjectKind::Mesh, i};
+    return {};
+}
+
+uint32_t objectCount(const Scene& scene) {
+    return uint32_t(scene.spheres.size() + scene.planes.size() + scene.meshes.size());
+}
+
+std::string objectLabel(const Scene& scene, uint32_t id) {
+    const ObjectRef r = objectRef(scene, id);
+    const char* kind = r.kind == ObjectKind::Sphere ? "sphere" : r.kind == ObjectKind::Plane ? "plane" : "mesh";
+    if (r.kind == ObjectKind::None) return "background";
+    const std::string& name = r.kind == ObjectKind::Sphere  ? scene.spheres[r.index].name
+                              : r.kind == ObjectKind::Plane ? scene.planes[r.index].name
+                                                            : scene.meshes[r.index].name;
+    const std::string where = std::string(kind) + " " + std::to_string(r.index + 1);
+    return name.empty() ? where : name + " (" + where + ")";
+}
+
+std::optional<uint32_t> findObject(const Scene& scene, const std::string& nameOrId) {
+    if (nameOrId.size() > 1 && nameOrId[0] == '#') {
+        try {
+            size_t used = 0;
+            const unsigned long id = std::stoul(nameOrId.substr(1), &used);
+            if (used + 1 == nameOrId.size() && id >= 1 && id <= objectCount(scene)) return uint32_t(id);
+        } catch (const std::exception&) {
+        }
+        return std::nullopt;
+    }
+    for (size_t i = 0; i < scene.spheres.size(); ++i)
+        if (scene.spheres[i].name == nameOrId) return sphereCoverageId(scene, i);
+    for (size_t i = 0; i < scene.planes.size(); ++i)
+        if (scene.planes[i].name == nameOrId) return planeCoverageId(scene, i);
+    for (size_t i = 0; i < scene.meshes.size(); ++i)
+        if (scene.meshes[i].name == nameOrId) return meshCoverageId(scene, i);
+    return std::nullopt;
+}
+
+Material objectMaterial(const Scene& scene, uint32_t id) {
+    const ObjectRef r = objectRef(scene, id);
+    if (r.kind == ObjectKind::Sphere) return scene.spheres[r.index].material;
+    if (r.kind == ObjectKind::Plane) return scene.planes[r.index].material;
+    if (r.kind == ObjectKind::Mesh) {
+        const Mesh& mesh = scene.meshes[r.index];
+        if (!mesh.parts.empty()) return mesh.parts.front().material;
+        Material m;
+        mesh.material.applyTo(m);
+        return m;
+    }
+    return Material{};
+}
+
+bool setObjectMaterial(ViewerState& state, uint32_t id, const Material& m) {
+    const ObjectRef r = objectRef(state.scene, id);
+    if (r.kind == ObjectKind::None) return false;
+    if (Material* dst = sphereOrPlaneMaterial(state.scene, r)) *dst = m;
+    else setMeshMaterial(state.scene.meshes[r.index], objectMaterial(state.scene, id), m);
+    markChanged(state);
+    return true;
+}
+
+void select(ViewerState& state, uint32_t id) {
+    state.selected = objectRef(state.scene, id).kind == ObjectKind::None ? 0 : id;
+}
+
+bool setShininess(ViewerState& state, uint32_t id, float s) {
+    Material m = objectMaterial(state.scene, id);
+    m.s = std::clamp(s, 0.0f, kMaxShininess);
+    return setObjectMaterial(state, id, m);
+}
+
+bool applyPreset(ViewerState& state, uint32_t id, const MaterialPreset& preset) {
+    return setObjectMaterial(state, id, withPreset(objectMaterial(state.scene, id), preset));
+}
+
+const char* toString(Term t) {
+    switch (t) {
+        case Term::Ambient: return "ambient";
+        case Term::Diffuse: return "diffuse";
+        case Term::Specular: return "specular";
+        case Term::Shadows: return "shadows";
+        case Term::Reflections: return "reflections";
+    }
+    return "ambient";
+}
+
+std::optional<Term> parseTerm(const std::string& name) {
+    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
+        if (name == toString(t)) return t;
+    return std::nullopt;
+}
+
+namespace {
+
+template <typename T>  // Terms or const Terms
+auto& termFlag(T& terms, Term t) {
+    switch (t) {
+        case Term::Ambient: return terms.ambient;
+        case Term::Diffuse: return terms.diffuse;
+        case Term::Specular: return terms.specular;
+        case Term::Shadows: return terms.shadows;
+        case Term::Reflections: return terms.reflections;
+    }
+    return terms.ambient;
+}
+
+}  // namespace
+
+bool termEnabled(const Terms& terms, Term t) { return termFlag(terms, t); }
+
+void setTerm(ViewerState& state, Term t, bool on) {
+    termFlag(state.scene.terms, t) = on;
+    markChanged(state);
+}
+
+void toggleTerm(ViewerState& state, Term t) { setTerm(state, t, !termEnabled(state.scene.terms, t)); }
+
+Terms progressionTerms(int step) {
+    step = std::clamp(step, 1, kProgressionSteps);
+    return Terms{true, step >= 2, step >= 3, step >= 4, step >= 5};
+}
+
+void applyProgression(ViewerState& state, int step) {
+    state.scene.terms = progressionTerms(step);
+    markChanged(state);
+}
+
+int progressionStep(const Terms& terms) {
+    for (int step = 1; step <= kProgressionSteps; ++step) {
+        const Terms p = progressionTerms(step);
+        if (p.ambient == terms.ambient && p.diffuse == terms.diffuse && p.specular == terms.specular &&
+            p.shadows == terms.shadows && p.reflections == terms.reflections)
+            return step;
+    }
+    return 0;
+}
+
+void setModel(ViewerState& state, ShadingModel model) {
+    state.scene.model = model;
+    markChanged(state);
+}
+
+void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects) {
+    if (state.scene.model != model) {
+        const bool all = allObjects || state.selected == 0;
+        for (uint32_t id = 1; id <= objectCount(state.scene); ++id) {
+            if (!all && id != state.selected) continue;
+            const float s = objectMaterial(state.scene, id).s;
+            setShininess(state, id, model == ShadingModel::BlinnPhong ? equivalentBlinnExponent(s)
+                                                                      : equivalentPhongExponent(s));
+        }
+    }
+    setModel(state, model);
+}
+
+void setAmbient(ViewerState& state, const glm::vec3& Ia) {
+    state.scene.ambient = glm::max(Ia, glm::vec3(0.0f));
+    markChanged(state);
+}
+
+int addLight(ViewerState& state, LightType type) {
+    Scene& scene = state.scene;
+    if (scene.lights.size() >= size_t(kMaxLights)) return -1;
+    const Bounds b = sceneBounds(scene);
+    const glm::vec3 centre = b.empty() ? scene.camera.target : 0.5f * (b.lo + b.hi);
+    const float radius = b.empty() ? 1.0f : std::max(0.5f * glm::length(b.hi - b.lo), 1e-3f);
+    glm::vec3 toEye = scene.camera.position - centre;
+    toEye = glm::length(toEye) > 0.0f ? glm::normalize(toEye) : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 up = glm::normalize(scene.camera.up);
+    Light l;
+    l.type = type;
+    l.name = "light " + std::to_string(scene.lights.size() + 1);
+    l.position = centre + 2.0f * radius * glm::normalize(toEye + up);
+    l.direction = glm::normalize(centre - l.position);
+    l.color = glm::vec3(1.0f);
+    scene.lights.push_back(l);
+    markChanged(state);
+    return int(scene.lights.size()) - 1;
+}
+
+bool removeLight(ViewerState& state, int index) {
+    if (index < 0 || size_t(index) >= state.scene.lights.size()) return false;
+    state.scene.lights.erase(state.scene.lights.begin() + index);
+    markChanged(state);
+    return true;
+}
+
+bool setLight(ViewerState& state, int index, const Light& light) {
+    if (index < 0 || size_t(index) >= state.scene.lights.size()) return false;
+    state.scene.lights[size_t(index)] = light;
+    markChanged(state);
+    return true;
+}
+
+ColorIntensity splitIntensity(const glm::vec3& Il) {
+    const float m = std::max({Il.r, Il.g, Il.b});
+    if (!(m > 0.0f)) return ColorIntensity{glm::vec3(1.0f), 0.0f};
+    return ColorIntensity{Il / m, m};
+}
+
+void applyOrbit(ViewerState& state, const OrbitCamera& orbit) {
+    state.orbit = orbit;
+    state.scene.camera = cameraFromOrbit(orbit);
+    markChanged(state);
+}
+
+void frameAll(ViewerState& state) {
+    const Bounds b = sceneBounds(state.scene);
+    if (b.empty()) return;  // planes only: nothing bounded to frame
+    Camera c = frameBounds(b, state.scene.camera.fovY);
+    state.scene.camera = c;
+    state.orbit = orbitFromCamera(c);
+    markChanged(state);
+}
+
+void resetCamera(ViewerState& state) {
+    state.scene.camera = state.fileCamera;
+    state.orbit = orbitFromCamera(state.fileCamera);
+    markChanged(state);
+}
+
+const char* toString(ViewMode m) {
+    switch (m) {
+        case ViewMode::Raster: return "raster";
+        case ViewMode::Traced: return "traced";
+        case ViewMode::Split: return "split";
+        case ViewMode::Difference: return "difference";
+    }
+    return "raster";
+}
+
+std::optional<ViewMode> parseViewMode(const std::string& name) {
+    for (ViewMode m : {ViewMode::Raster, ViewMode::Traced, ViewMode::Split, ViewMode::Difference})
+        if (name == toString(m)) return m;
+    return std::nullopt;
+}
+
+void setMode(ViewerState& state, ViewMode mode) { state.mode = mode; }
+
+void setEncoding(ViewerState& state, Encoding encoding) { state.encoding = encoding; }
+
+void setSplitPosition(ViewerState& state, float position) { state.splitPosition = std::clamp(position, 0.0f, 1.0f); }
+
+void setHeatGain(ViewerState& state, int gain) { state.heatGain = std::clamp(gain, 1, 255); }
+
+void setProbe(ViewerState& state, int x, int y) {
+    state.probe.active = true;
+    state.probe.x = x;
+    state.probe.y = y;
+}
+
+void clearProbe(ViewerState& state) { state.probe.active = false; }
+
+}  // namespace shadelab::app

@@ -1,0 +1,112 @@
+// ViewerState: everything the viewer's panels edit, as plain data (issue 4 §3), and the actions that change
+// it. The GUI, the --script automation and the unit tests all call these same functions; drawing reads
+// the state and never writes it. Actions that change what a renderer sees bump `revision`.
+#pragma once
+
+#include "app/material_presets.h"
+#include "app/orbit_camera.h"
+#include "image/encode.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace shadelab::app {
+
+enum class ViewMode { Raster, Traced, Split, Difference };
+enum class Term { Ambient, Diffuse, Specular, Shadows, Reflections };
+enum class ObjectKind { None, Sphere, Plane, Mesh };
+
+struct ProbeState {
+    bool active = false;
+    int x = 0, y = 0;                 // pixel of the rendered image, row 0 at the top
+};
+
+struct ViewerState {
+    Scene scene;                      // what both renderers draw and what Save writes
+    std::string scenePath;            // the file it was opened from; empty for none
+    Camera fileCamera;                // the scene file's camera, restored by resetCamera (key R)
+    OrbitCamera orbit;                // scene.camera as orbit parameters; written back on every move
+    ViewMode mode = ViewMode::Raster;
+    Encoding encoding = Encoding::Srgb;
+    uint32_t selected = 0;            // coverage id of the selected object (scene/coverage.h), 0 = none
+    ProbeState probe;
+    float splitPosition = 0.5f;       // Split mode wipe, fraction of the image width from the left
+    int heatGain = 16;                // Difference mode amplification (compare_report.h)
+    uint64_t revision = 1;            // bumped by every change a renderer can see
+    uint64_t geometryRevision = 1;    // bumped when the meshes change (a new scene)
+};
+
+ViewerState makeViewerState(Scene scene, std::string path);
+// Replaces the scene (drag and drop, Open): camera, selection and probe are reset; the view mode is kept.
+void openScene(ViewerState& state, Scene scene, std::string path);
+void markChanged(ViewerState& state);
+
+// --- objects, by coverage id (1-based: spheres, planes, meshes in scene order) ---
+struct ObjectRef {
+    ObjectKind kind = ObjectKind::None;
+    size_t index = 0;
+};
+ObjectRef objectRef(const Scene& scene, uint32_t id);
+uint32_t objectCount(const Scene& scene);
+// "red plastic (sphere 1)"; unnamed objects read "sphere 1". Indices in labels count from 1.
+std::string objectLabel(const Scene& scene, uint32_t id);
+// An object by exact name (the first one), or by "#<id>". nullopt when nothing matches.
+std::optional<uint32_t> findObject(const Scene& scene, const std::string& nameOrId);
+// A mesh's material is its first part's; setting it writes the changed fields into the mesh's override
+// (so a save keeps them) and applies them to every part.
+Material objectMaterial(const Scene& scene, uint32_t id);
+bool setObjectMaterial(ViewerState& state, uint32_t id, const Material& m);
+
+void select(ViewerState& state, uint32_t id);
+bool setShininess(ViewerState& state, uint32_t id, float s);   // clamped to [0, kMaxShininess]
+bool applyPreset(ViewerState& state, uint32_t id, const MaterialPreset& preset);
+
+// --- lighting model and terms ---
+const char* toString(Term t);
+std::optional<Term> parseTerm(const std::string& name);
+bool termEnabled(const Terms& terms, Term t);
+void setTerm(ViewerState& state, Term t, bool on);
+void toggleTerm(ViewerState& state, Term t);
+// The lecture's progression: step 1 ambient, 2 +diffuse, 3 +specular, 4 +shadows, 5 +reflections.
+inline constexpr int kProgressionSteps = 5;
+Terms progressionTerms(int step);                  // step clamped to [1, 5]
+void applyProgression(ViewerState& state, int step);
+int progressionStep(const Terms& terms);           // 1..5 when the terms are exactly a step, else 0
+void setModel(ViewerState& state, ShadingModel model);
+// Switches the model and converts shininess so highlights keep their size (specular_lobe.h rule):
+// to Blinn-Phong s -> equivalentBlinnExponent(s), to Phong the inverse. Only the selected object, or every
+// object when `allObjects` or nothing is selected. No-op on s when the model already is `model`.
+void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects);
+
+// --- lights ---
+void setAmbient(ViewerState& state, const glm::vec3& Ia);
+// Adds a light above and in front of the scene (white, intensity 1); -1 when kMaxLights are in use.
+int addLight(ViewerState& state, LightType type);
+bool removeLight(ViewerState& state, int index);
+bool setLight(ViewerState& state, int index, const Light& light);
+// Il as a colour whose largest component is 1 times a scalar intensity, as the Lights panel shows it.
+struct ColorIntensity {
+    glm::vec3 color{1.0f};
+    float intensity = 0.0f;
+};
+ColorIntensity splitIntensity(const glm::vec3& Il);
+inline glm::vec3 joinIntensity(const ColorIntensity& c) { return c.color * c.intensity; }
+
+// --- camera ---
+void applyOrbit(ViewerState& state, const OrbitCamera& orbit);   // writes scene.camera
+void frameAll(ViewerState& state);                              // key F
+void resetCamera(ViewerState& state);                           // key R: the scene file's camera
+
+// --- view ---
+const char* toString(ViewMode m);
+std::optional<ViewMode> parseViewMode(const std::string& name);
+void setMode(ViewerState& state, ViewMode mode);
+void setEncoding(ViewerState& state, Encoding encoding);
+void setSplitPosition(ViewerState& state, float position);     // clamped to [0, 1]
+void setHeatGain(ViewerState& state, int gain);                 // clamped to [1, 255]
+void setProbe(ViewerState& state, int x, int y);
+void clearProbe(ViewerState& state);
+
+}  // namespace shadelab::app

@@ -1,0 +1,105 @@
+// Parsing and validation of `shadelab render` options, and its --help text.
+#include "cli/render_options.h"
+
+#include "cli/args.h"
+#include "raster/offscreen.h"
+#include "util/input_error.h"
+
+#include <sstream>
+
+namespace shadelab::cli {
+
+const char* const kRenderHelp =
+    "usage: shadelab render <scene.json | model.gltf | model.glb> -o out.png [options]\n"
+    "\n"
+    "Renders a scene headlessly and writes a PNG: with the OpenGL rasterizer (EGL or OSMesa, no X server),\n"
+    "the CPU ray-traced reference, or both side by side with their difference heatmap.\n"
+    "\n"
+    "options:\n"
+    "  -o, --output PATH        PNG to write (required); written atomically\n"
+    "  --size WxH               image size in pixels, each side 1..16384 (default 1280x720)\n"
+    "  --renderer NAME          raster (default) | trace | both (raster | traced | heatmap in one PNG)\n"
+    "  --model NAME             phong | blinn-phong (default: the scene's)\n"
+    "  --terms LIST             comma-separated terms to switch on, the rest off:\n"
+    "                           ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
+    "  --spp N                  samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
+    "  --threads N              tracer threads, 0 = every core (default 0)\n"
+    "  --depth N                tracer secondary-ray depth, 0..64 (default: the scene's maxDepth)\n"
+    "  --encoding NAME          srgb (default) | linear: how linear colour becomes 8-bit\n"
+    "  --gl-backend NAME        auto | egl-device | egl-surfaceless | osmesa\n"
+    "                           (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
+    "  --timings                print a per-stage timing and memory breakdown to stderr\n"
+    "  --verbose                log the GL backend, GL_RENDERER and GL_VERSION to stderr\n"
+    "  -h, --help               show this help\n"
+    "\n"
+    "The tracer shows a progress bar on stderr when stderr is a terminal.\n"
+    "exit codes: 0 written, 1 bad input or rendering failure (one line on stderr), 2 usage error\n";
+
+Terms parseTerms(const std::string& list) {
+    Terms t{false, false, false, false, false};
+    std::stringstream in(list);
+    std::string name;
+    while (std::getline(in, name, ',')) {
+        if (name == "ambient") t.ambient = true;
+        else if (name == "diffuse") t.diffuse = true;
+        else if (name == "specular") t.specular = true;
+        else if (name == "shadows") t.shadows = true;
+        else if (name == "reflections") t.reflections = true;
+        else if (name != "none" && !name.empty())
+            throw UsageError("--terms: unknown term '" + name +
+                             "'; expected ambient, diffuse, specular, shadows, reflections or none");
+    }
+    return t;
+}
+
+namespace {
+
+ShadingModel parseModel(const std::string& s) {
+    if (s == "phong") return ShadingModel::Phong;
+    if (s == "blinn-phong" || s == "blinn") return ShadingModel::BlinnPhong;
+    throw UsageError("--model: expected phong or blinn-phong, got '" + s + "'");
+}
+
+RendererChoice parseRenderer(const std::string& s) {
+    if (s == "raster") return RendererChoice::Raster;
+    if (s == "trace") return RendererChoice::Trace;
+    if (s == "both") return RendererChoice::Both;
+    throw UsageError("--renderer: expected raster, trace or both, got '" + s + "'");
+}
+
+}  // namespace
+
+RenderOptions parseRenderOptions(int argc, char** argv) {
+    Args args(argc, argv, 2,
+              {"-o", "--output", "--size", "--model", "--terms", "--encoding", "--gl-backend", "--spp", "--renderer",
+               "--threads", "--depth"},
+              {"-h", "--help", "--verbose", "--timings"});
+    RenderOptions o;
+    if (args.flag("-h") || args.flag("--help")) {
+        o.help = true;
+        return o;
+    }
+    if (args.positionals().size() != 1)
+        throw UsageError(args.positionals().empty()
+                             ? "render needs a scene file (see --help)"
+                             : "render takes one scene file, got " + std::to_string(args.positionals().size()));
+    o.input = args.positionals()[0];
+    if (auto v = args.value("-o")) o.output = *v;
+    if (auto v = args.value("--output")) o.output = *v;
+    if (o.output.empty()) throw UsageError("render needs -o out.png");
+    if (auto v = args.value("--size")) std::tie(o.width, o.height) = parseSize(*v);
+    if (auto v = args.value("--model")) o.model = parseModel(*v);
+    if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
+    if (auto v = args.value("--encoding")) o.encoding = parseEncoding(*v);
+    if (auto v = args.value("--spp")) o.spp = parseInt("--spp", *v, 1, 64);
+    raster::samplesPerSide(o.spp);  // a perfect square
+    if (auto v = args.value("--renderer")) o.renderer = parseRenderer(*v);
+    if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);
+    if (auto v = args.value("--depth")) o.depth = parseInt("--depth", *v, 0, 64);
+    if (auto v = args.value("--gl-backend")) o.backend = gl::parseGlBackend(*v);
+    o.verbose = args.flag("--verbose");
+    o.timings = args.flag("--timings");
+    return o;
+}
+
+}  // namespace shadelab::cli

@@ -1,0 +1,40 @@
+// RenderOptions: everything `shadelab render` was asked to do, parsed and validated before any work.
+#pragma once
+
+#include "gl/headless_context.h"
+#include "image/encode.h"
+#include "scene/scene.h"
+
+#include <optional>
+#include <string>
+
+namespace shadelab::cli {
+
+enum class RendererChoice { Raster, Trace, Both };
+
+struct RenderOptions {
+    std::string input;                      // scene.json, model.gltf or model.glb
+    std::string output;                     // PNG path
+    int width = 1280, height = 720;         // pixels, 1..16384 each
+    std::optional<ShadingModel> model;      // unset: the scene's
+    std::optional<Terms> terms;             // unset: the scene's
+    Encoding encoding = Encoding::Srgb;
+    int spp = 1;                            // perfect square, both renderers
+    RendererChoice renderer = RendererChoice::Raster;
+    int threads = 0;                        // tracer worker threads; 0 = every core
+    std::optional<int> depth;               // tracer secondary-ray depth; unset: the scene's maxDepth
+    gl::GlBackend backend = gl::GlBackend::Auto;
+    bool verbose = false;
+    bool timings = false;
+    bool help = false;                      // --help was given: print kRenderHelp and do nothing else
+};
+
+extern const char* const kRenderHelp;
+
+// Parses argv[2..]; throws UsageError on anything wrong.
+RenderOptions parseRenderOptions(int argc, char** argv);
+
+// "ambient,diffuse" → those terms on and the rest off. Throws UsageError naming --terms.
+Terms parseTerms(const std::string& list);
+
+}  // namespace shadelab::cli

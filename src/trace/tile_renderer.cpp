@@ -1,0 +1,58 @@
+// Tile list and per-tile sampling loop. Every pixel depends only on its own samples, so the image is the
+// same whatever the thread count or tile order.
+#include "trace/tile_renderer.h"
+
+#include "shading/lighting.h"
+
+#include <algorithm>
+
+namespace shadelab::trace {
+
+std::vector<Tile> makeTiles(int width, int height, int tileSize) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < height; y += tileSize)
+        for (int x = 0; x < width; x += tileSize)
+            tiles.push_back(Tile{x, y, std::min(tileSize, width - x), std::min(tileSize, height - y)});
+    return tiles;
+}
+
+Ray sampleRay(const ViewSetup& v, int k, int i, int j, int a, int b) {
+    const float px = float(k * i + a) + 0.5f;
+    const float py = float(k * j + b) + 0.5f;
+    return Ray{v.eye, shading::cameraRayDirection(v.forward, v.right, v.up, v.tanHalfFovY, float(v.width),
+                                                  float(v.height), px, py)};
+}
+
+bool renderTile(const WhittedIntegrator& integrator, const ViewSetup& sampleView, int k, bool coverage,
+                const Tile& tile, TileResult& out, const std::atomic<bool>* cancel) {
+    const size_t n = size_t(tile.width) * size_t(tile.height);
+    out.tile = tile;
+    out.rgba.assign(4 * n, 1.0f);
+    out.coverage.assign(coverage ? n : 0, 0u);
+    const float count = float(k * k);
+    const int centre = k / 2;
+    for (int y = 0; y < tile.height; ++y) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+        const int j = tile.y0 + y;
+        for (int x = 0; x < tile.width; ++x) {
+            const int i = tile.x0 + x;
+            glm::vec3 sum(0.0f);
+            uint32_t id = 0;
+            for (int b = 0; b < k; ++b)
+                for (int a = 0; a < k; ++a) {
+                    const PrimarySample s = integrator.primary(sampleRay(sampleView, k, i, j, a, b));
+                    sum += s.color;
+                    if (a == centre && b == centre) id = s.coverage;
+                }
+            const glm::vec3 c = k == 1 ? sum : sum / count;
+            const size_t p = size_t(y) * size_t(tile.width) + size_t(x);
+            out.rgba[4 * p + 0] = c.x;
+            out.rgba[4 * p + 1] = c.y;
+            out.rgba[4 * p + 2] = c.z;
+            if (coverage) out.coverage[p] = id;
+        }
+    }
+    return true;
+}
+
+}  // namespace shadelab::trace

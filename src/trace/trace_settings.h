@@ -1,0 +1,30 @@
+// TraceSettings: how the tracer renders one image (size, samples, threads, depth), as a plain struct the
+// CLI, the viewer and the tests all fill. validate() is the one place that rejects bad values.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace shadelab::trace {
+
+struct TraceSettings {
+    int width = 1280;           // pixels, >= 1
+    int height = 720;           // pixels, >= 1
+    int spp = 1;                // samples per pixel: a perfect square k², a fixed k×k grid in each pixel
+    int threads = 0;            // worker threads; 0 = std::thread::hardware_concurrency()
+    int maxDepth = -1;          // secondary-ray depth, >= 0; -1 = the scene's maxDepth
+    int tileSize = 32;          // tile edge, pixels, >= 1
+    bool coverage = true;       // also fill the coverage buffer
+};
+
+// Throws std::invalid_argument with a message fit for the command line (e.g. "--spp must be a perfect
+// square (1, 4, 9, 16, ...), got 2").
+void validate(const TraceSettings& s);
+
+// k for spp = k² (validate() first).
+int samplesPerAxis(const TraceSettings& s);
+
+// Worker threads actually used: settings.threads, or every core when it is 0.
+int resolveThreads(const TraceSettings& s);
+
+}  // namespace shadelab::trace

@@ -1,0 +1,397 @@
+// Viewer state tests (issue 4 §3), no window: every control action changes the scene as expected and
+// nothing else, an edited scene survives a JSON round trip exactly, the probe equals the shared C++
+// shading, the equivalent-Blinn rule, the orbit camera, and script parsing with file-and-index errors.
+#include "app/material_presets.h"
+#include "app/orbit_camera.h"
+#include "app/probe.h"
+#include "app/script.h"
+#include "app/specular_lobe.h"
+#include "app/viewer_state.h"
+#include "scene/coverage.h"
+#include "scene/scene_json.h"
+#include "scene/scene_load.h"
+#include "scene/view.h"
+#include "shading/lighting.h"
+#include "test_output.h"
+#include "util/input_error.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+using namespace shadelab;
+using namespace shadelab::app;
+
+namespace {
+
+ViewerState defaultState() {
+    const std::string path = test::sourcePath("assets/scenes/default.json");
+    return makeViewerState(loadScene(path), path);
+}
+
+uint32_t idOf(const ViewerState& s, const std::string& name) {
+    auto id = findObject(s.scene, name);
+    EXPECT_TRUE(id.has_value()) << name;
+    return id.value_or(0);
+}
+
+// Projects a world point to the pixel that contains it in a width x height image.
+glm::ivec2 pixelOf(const Scene& scene, int width, int height, const glm::vec3& p) {
+    const ViewSetup v = makeViewSetup(scene, width, height);
+    const glm::vec4 clip = v.viewProj * glm::vec4(p, 1.0f);
+    const float x = (clip.x / clip.w * 0.5f + 0.5f) * float(width);
+    const float y = (1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(height);
+    return {int(std::floor(x)), int(std::floor(y))};
+}
+
+Script parse(const std::string& text) { return parseScript(text, "actions.json"); }
+
+std::string parseError(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+// ---- Control actions -----------------------------------------------------------------------------------
+
+TEST(AppState, SetShininessChangesOnlyThatObjectAndClamps) {
+    ViewerState s = defaultState();
+    const Scene before = s.scene;
+    const uint32_t red = idOf(s, "red plastic"), blue = idOf(s, "shiny blue");
+    const uint64_t rev = s.revision;
+    ASSERT_TRUE(setShininess(s, red, 300.0f));
+    EXPECT_EQ(s.scene.spheres[red - 1].material.s, 300.0f);
+    EXPECT_GT(s.revision, rev);
+    // Negative control: the other objects keep their exponent.
+    EXPECT_EQ(s.scene.spheres[blue - 1].material.s, before.spheres[blue - 1].material.s);
+    setShininess(s, red, 1e9f);
+    EXPECT_EQ(s.scene.spheres[red - 1].material.s, kMaxShininess);
+    setShininess(s, red, -3.0f);
+    EXPECT_EQ(s.scene.spheres[red - 1].material.s, 0.0f);
+    EXPECT_FALSE(setShininess(s, 0, 10.0f));     // background
+    EXPECT_FALSE(setShininess(s, 999, 10.0f));   // no such object
+}
+
+TEST(AppState, TermsToggleOneAtATime) {
+    ViewerState s = defaultState();
+    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections}) {
+        const Terms before = s.scene.terms;
+        toggleTerm(s, t);
+        EXPECT_NE(termEnabled(s.scene.terms, t), termEnabled(before, t)) << toString(t);
+        for (Term o : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections}) {
+            if (o == t) continue;
+            EXPECT_EQ(termEnabled(s.scene.terms, o), termEnabled(before, o)) << toString(o);
+        }
+        setTerm(s, t, true);
+        EXPECT_TRUE(termEnabled(s.scene.terms, t));
+        EXPECT_EQ(parseTerm(toString(t)), t);
+    }
+    EXPECT_FALSE(parseTerm("spec").has_value());
+}
+
+TEST(AppState, ProgressionStepsAreTheLecturesOrder) {
+    ViewerState s = defaultState();
+    const bool expected[5][5] = {{1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 1, 1, 0, 0}, {1, 1, 1, 1, 0}, {1, 1, 1, 1, 1}};
+    for (int step = 1; step <= 5; ++step) {
+        applyProgression(s, step);
+        const Terms& t = s.scene.terms;
+        EXPECT_EQ(t.ambient, expected[step - 1][0]);
+        EXPECT_EQ(t.diffuse, expected[step - 1][1]);
+        EXPECT_EQ(t.specular, expected[step - 1][2]);
+        EXPECT_EQ(t.shadows, expected[step - 1][3]);
+        EXPECT_EQ(t.reflections, expected[step - 1][4]);
+        EXPECT_EQ(progressionStep(t), step);
+    }
+    setTerm(s, Term::Ambient, false);  // all but ambient: not a step
+    EXPECT_EQ(progressionStep(s.scene.terms), 0);
+}
+
+TEST(AppState, ModelSwitchAndEquivalentExponentConversion) {
+    ViewerState s = defaultState();
+    setModel(s, ShadingModel::BlinnPhong);
+    EXPECT_EQ(s.scene.model, ShadingModel::BlinnPhong);
+    setModel(s, ShadingModel::Phong);
+    const uint32_t red = idOf(s, "red plastic"), gold = idOf(s, "gold");
+    select(s, red);
+    switchModelKeepingHighlights(s, ShadingModel::BlinnPhong, false);
+    EXPECT_EQ(s.scene.model, ShadingModel::BlinnPhong);
+    EXPECT_FLOAT_EQ(s.scene.spheres[red - 1].material.s, equivalentBlinnExponent(32.0f));
+    EXPECT_EQ(s.scene.spheres[gold - 1].material.s, 64.0f);  // not selected: unchanged
+    switchModelKeepingHighlights(s, ShadingModel::Phong, false);
+    EXPECT_NEAR(s.scene.spheres[red - 1].material.s, 32.0f, 1e-2f);
+    switchModelKeepingHighlights(s, ShadingModel::Phong, true);  // already Phong: exponents untouched
+    EXPECT_NEAR(s.scene.spheres[red - 1].material.s, 32.0f, 1e-2f);
+}
+
+TEST(AppState, PresetsComeFromTheClassicTable) {
+    ASSERT_GE(materialPresets().size(), 24u);
+    for (const char* name : {"brass", "chrome", "jade", "pearl", "red plastic", "black rubber"})
+        EXPECT_NE(findMaterialPreset(name), nullptr) << name;
+    EXPECT_EQ(findMaterialPreset("unobtainium"), nullptr);
+    ViewerState s = defaultState();
+    const uint32_t mirror = idOf(s, "mirror"), red = idOf(s, "red plastic");
+    const Material redBefore = s.scene.spheres[red - 1].material;
+    ASSERT_TRUE(applyPreset(s, mirror, *findMaterialPreset("brass")));
+    const Material& m = s.scene.spheres[mirror - 1].material;
+    EXPECT_EQ(m.ma, glm::vec3(0.329412f, 0.223529f, 0.027451f));
+    EXPECT_EQ(m.md, glm::vec3(0.780392f, 0.568627f, 0.113725f));
+    EXPECT_EQ(m.ms, glm::vec3(0.992157f, 0.941176f, 0.807843f));
+    EXPECT_FLOAT_EQ(m.s, 0.21794872f * 128.0f);
+    EXPECT_EQ(m.kr, glm::vec3(0.6f));  // kept: presets set ma, md, ms and s only
+    EXPECT_EQ(s.scene.spheres[red - 1].material.md, redBefore.md);  // negative control
+}
+
+TEST(AppState, LightsAddRemoveAndAmbient) {
+    ViewerState s = defaultState();
+    ASSERT_EQ(s.scene.lights.size(), 2u);
+    const int i = addLight(s, LightType::Directional);
+    ASSERT_EQ(i, 2);
+    EXPECT_EQ(s.scene.lights[2].type, LightType::Directional);
+    EXPECT_NEAR(glm::length(s.scene.lights[2].direction), 1.0f, 1e-5f);
+    const std::string keyName = s.scene.lights[0].name;
+    EXPECT_TRUE(removeLight(s, 0));
+    EXPECT_EQ(s.scene.lights.size(), 2u);
+    EXPECT_NE(s.scene.lights[0].name, keyName);
+    EXPECT_FALSE(removeLight(s, 5));
+    while (addLight(s, LightType::Point) >= 0) {
+    }
+    EXPECT_EQ(s.scene.lights.size(), size_t(kMaxLights));
+    setAmbient(s, glm::vec3(0.3f, -1.0f, 0.1f));
+    EXPECT_EQ(s.scene.ambient, glm::vec3(0.3f, 0.0f, 0.1f));
+    const ColorIntensity ci = splitIntensity(glm::vec3(2.0f, 1.0f, 0.5f));
+    EXPECT_EQ(ci.color, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_EQ(ci.intensity, 2.0f);
+    EXPECT_EQ(joinIntensity(ci), glm::vec3(2.0f, 1.0f, 0.5f));
+}
+
+TEST(AppState, MeshMaterialEditsGoToTheOverrideAndEveryPart) {
+    const std::string path = test::sourcePath("assets/scenes/torus.json");
+    ViewerState s = makeViewerState(loadScene(path), path);
+    const uint32_t torus = idOf(s, "torus");
+    ASSERT_EQ(objectRef(s.scene, torus).kind, ObjectKind::Mesh);
+    const Mesh& mesh = s.scene.meshes[0];
+    ASSERT_FALSE(mesh.parts.empty());
+    const glm::vec3 mdBefore = mesh.parts[0].material.md;
+    setShininess(s, torus, 500.0f);
+    EXPECT_EQ(mesh.material.s, 500.0f);
+    EXPECT_FALSE(mesh.material.md.has_value());  // only the changed field is overridden
+    for (const MeshPart& p : mesh.parts) EXPECT_EQ(p.material.s, 500.0f);
+    EXPECT_EQ(mesh.parts[0].material.md, mdBefore);
+    const Scene back = parseSceneJson(sceneToJson(s.scene), path);
+    EXPECT_EQ(back.meshes[0].material.s, 500.0f);
+}
+
+// ---- Save / load ---------------------------------------------------------------------------------------
+
+TEST(AppState, EditedSceneRoundTripsLosslessly) {
+    ViewerState s = defaultState();
+    setShininess(s, idOf(s, "gold"), 77.125f);
+    applyPreset(s, idOf(s, "matte green"), *findMaterialPreset("jade"));
+    setModel(s, ShadingModel::BlinnPhong);
+    applyProgression(s, 3);
+    setAmbient(s, glm::vec3(0.05f, 0.1f, 0.2f));
+    const int li = addLight(s, LightType::Point);
+    Light l = s.scene.lights[size_t(li)];
+    l.color = joinIntensity({glm::vec3(1.0f, 0.5f, 0.25f), 3.0f});
+    setLight(s, li, l);
+    OrbitCamera o = s.orbit;
+    orbitRotate(o, 0.3f, 0.1f);
+    applyOrbit(s, o);
+
+    const std::string json = sceneToJson(s.scene);
+    const Scene back = parseSceneJson(json, "edited.json");
+    EXPECT_EQ(sceneToJson(back), json);
+    EXPECT_EQ(back.spheres[idOf(s, "gold") - 1].material.s, 77.125f);
+    EXPECT_EQ(back.model, ShadingModel::BlinnPhong);
+    EXPECT_FALSE(back.terms.shadows);
+    EXPECT_EQ(back.lights.back().color, glm::vec3(3.0f, 1.5f, 0.75f));
+    EXPECT_EQ(back.camera.position, s.scene.camera.position);
+    // Negative control: the JSON does see a one-ulp change of one exponent.
+    setShininess(s, idOf(s, "gold"), std::nextafter(77.125f, 100.0f));
+    EXPECT_NE(sceneToJson(s.scene), json);
+}
+
+// ---- Camera --------------------------------------------------------------------------------------------
+
+TEST(AppState, OrbitCameraRoundTripAndMotions) {
+    ViewerState s = defaultState();
+    const Camera file = s.scene.camera;
+    const Camera c = cameraFromOrbit(orbitFromCamera(file));
+    EXPECT_NEAR(glm::length(c.position - file.position), 0.0f, 1e-5f);
+    EXPECT_EQ(c.target, file.target);
+    OrbitCamera o = s.orbit;
+    orbitRotate(o, 0.5f, 0.2f);
+    applyOrbit(s, o);
+    EXPECT_NEAR(glm::length(s.scene.camera.position - s.scene.camera.target), s.orbit.distance, 1e-4f);
+    EXPECT_GT(glm::length(s.scene.camera.position - file.position), 0.5f);
+    orbitRotate(o, 0.0f, 10.0f);
+    EXPECT_LE(o.pitch, kMaxPitch);
+    const float d = o.distance;
+    orbitZoom(o, 1.0f);
+    EXPECT_NEAR(o.distance, 0.85f * d, 1e-5f);
+    const glm::vec3 t = o.target;
+    orbitPan(o, 100.0f, 0.0f, 720.0f);
+    EXPECT_GT(glm::length(o.target - t), 0.0f);
+    resetCamera(s);
+    EXPECT_EQ(s.scene.camera.position, file.position);  // exact: R restores the file's camera
+    frameAll(s);
+    EXPECT_NE(s.scene.camera.position, file.position);
+}
+
+// ---- Probe ---------------------------------------------------------------------------------------------
+
+TEST(AppState, ProbeOnSphereEqualsSharedShading) {
+    ViewerState s = defaultState();
+    const int w = 640, h = 360;
+    const uint32_t green = idOf(s, "matte green");
+    const Sphere& sphere = s.scene.spheres[green - 1];
+    const glm::ivec2 px = pixelOf(s.scene, w, h, sphere.center + glm::vec3(0.3f, 0.3f, 0.0f));
+    const ProbeResult p = probePixel(s.scene, w, h, px.x, px.y);
+    ASSERT_TRUE(p.hit);
+    EXPECT_EQ(p.objectId, green);
+    EXPECT_EQ(p.kind, ObjectKind::Sphere);
+
+    // Independently: the same ray, hit and vectors from the shared functions.
+    const ViewSetup v = makeViewSetup(s.scene, w, h);
+    const glm::vec3 dir = shading::cameraRayDirection(v.forward, v.right, v.up, v.tanHalfFovY, float(w), float(h),
+                                                      px.x + 0.5f, px.y + 0.5f);
+    const float t = shading::intersectSphere(v.eye, dir, sphere.center, sphere.radius, 0.0f);
+    const glm::vec3 P = v.eye + t * dir;
+    const glm::vec3 N = glm::normalize(shading::faceForward((P - sphere.center) / sphere.radius, -dir));
+    ASSERT_EQ(p.lights.size(), s.scene.lights.size());
+    glm::vec3 sum = shading::shadeAmbient(s.scene.ambient, sphere.material.ma, true);
+    for (size_t i = 0; i < s.scene.lights.size(); ++i) {
+        const glm::vec3 L = glm::normalize(s.scene.lights[i].position - P);
+        EXPECT_NEAR(p.lights[i].NoL, glm::dot(N, L), 1e-6f) << i;
+        EXPECT_NEAR(p.lights[i].RoV, glm::dot(shading::reflectLight(N, L), -dir), 1e-5f) << i;
+        sum += shading::shadeLight(N, L, -dir, s.scene.lights[i].color, sphere.material.md, sphere.material.ms,
+                                   sphere.material.s, shading::SL_MODEL_PHONG, true, true);
+        // The per-light terms add up to the light's contribution.
+        const glm::vec3 parts = p.lights[i].diffuse + p.lights[i].specularPhong;
+        EXPECT_NEAR(glm::length(parts - shading::shadeLight(N, L, -dir, s.scene.lights[i].color, sphere.material.md,
+                                                            sphere.material.ms, sphere.material.s, 0, true, true)),
+                    0.0f, 1e-6f);
+    }
+    EXPECT_NEAR(glm::length(p.totalPhong - sum), 0.0f, 1e-5f);
+    // Negative control: a pixel 40 to the left sees a different normal.
+    const ProbeResult q = probePixel(s.scene, w, h, px.x - 40, px.y);
+    EXPECT_GT(std::fabs(q.lights[0].NoL - p.lights[0].NoL), 1e-3f);
+    // The report carries the numbers.
+    const nlohmann::json j = nlohmann::json::parse(probeReportJson(p, s.scene, green));
+    EXPECT_EQ(j["object"]["id"], green);
+    EXPECT_NEAR(j["lights"][0]["NoL"].get<float>(), p.lights[0].NoL, 1e-7f);
+}
+
+TEST(AppState, ProbeFindsPlanesMeshesAndBackground) {
+    ViewerState s = defaultState();
+    const ProbeResult floor = probePixel(s.scene, 640, 360, 320, 350);
+    EXPECT_TRUE(floor.hit);
+    EXPECT_EQ(floor.kind, ObjectKind::Plane);
+    const ProbeResult sky = probePixel(s.scene, 640, 360, 320, 2);
+    EXPECT_FALSE(sky.hit);
+    const std::string path = test::sourcePath("assets/scenes/torus.json");
+    ViewerState t = makeViewerState(loadScene(path), path);
+    const Mesh& torus = t.scene.meshes[0];
+    Bounds b;
+    for (const glm::vec3& q : torus.parts[0].positions) b.extend(q);
+    // The near side of the tube, above the torus' centre.
+    const glm::vec3 c = 0.5f * (b.lo + b.hi);
+    const glm::ivec2 px = pixelOf(t.scene, 640, 360, glm::vec3(c.x, b.hi.y, c.z));
+    const ProbeResult m = probePixel(t.scene, 640, 360, px.x, px.y + 2);
+    ASSERT_TRUE(m.hit);
+    EXPECT_EQ(m.kind, ObjectKind::Mesh);
+    EXPECT_GT(glm::dot(m.N, m.V), 0.0f);  // faces the viewer
+}
+
+// ---- Equivalent Blinn exponent -------------------------------------------------------------------------
+
+TEST(AppState, EquivalentBlinnExponentMatchesHalfMaximum) {
+    for (float s : {1.0f, 4.0f, 32.0f, 200.0f, 2048.0f}) {
+        const float sb = equivalentBlinnExponent(s);
+        const double halfAngle = std::acos(std::pow(0.5, 1.0 / s));  // Phong's half maximum
+        EXPECT_NEAR(std::pow(std::cos(halfAngle / 2.0), double(sb)), 0.5, 1e-4) << s;
+        EXPECT_NEAR(equivalentPhongExponent(sb), s, 1e-3f * s) << s;
+        // Better than the classic 4s everywhere, and much better than the same exponent (negative control).
+        EXPECT_LT(lobeRmsDifference(s, sb), lobeRmsDifference(s, fourTimesRule(s))) << s;
+        EXPECT_GT(lobeRmsDifference(s, s), 5.0f * lobeRmsDifference(s, sb)) << s;
+    }
+    EXPECT_NEAR(equivalentBlinnExponent(512.0f), 4.0f * 512.0f + std::log(2.0f), 0.01f);
+    EXPECT_EQ(equivalentBlinnExponent(0.0f), 0.0f);
+    EXPECT_EQ(equivalentPhongExponent(1.5f), 0.0f);
+    const std::vector<float> lobe = phongLobe(8.0f, 91);
+    EXPECT_EQ(lobe.front(), 1.0f);
+    EXPECT_NEAR(lobe.back(), 0.0f, 1e-6f);
+}
+
+// ---- Scripts -------------------------------------------------------------------------------------------
+
+TEST(AppScript, ParsesFramesAndActions) {
+    const Script sc = parse(R"({"actions": [
+        {"action": "setShininess", "object": "gold", "s": 128},
+        {"action": "setTerm", "term": "specular", "on": false},
+        {"frame": 5, "action": "setModel", "model": "blinn-phong"},
+        {"action": "probe", "x": 10, "y": 20},
+        {"frame": 9, "action": "screenshot", "path": "a.png"}
+    ]})");
+    ASSERT_EQ(sc.actions.size(), 5u);
+    EXPECT_EQ(sc.actions[0].frame, 0);
+    EXPECT_EQ(sc.actions[1].frame, 0);
+    EXPECT_EQ(sc.actions[2].frame, 5);
+    EXPECT_EQ(sc.actions[3].frame, 5);
+    EXPECT_EQ(sc.lastFrame(), 9);
+    EXPECT_FALSE(isStateAction(sc.actions[4].kind));
+    ScriptCursor cursor(sc);
+    int dueAtZero = 0;
+    while (cursor.next(0)) ++dueAtZero;
+    EXPECT_EQ(dueAtZero, 2);
+    EXPECT_EQ(cursor.next(4), nullptr);
+    EXPECT_NE(cursor.next(5), nullptr);
+
+    ViewerState a = defaultState(), b = defaultState();
+    for (const ScriptAction& act : sc.actions)
+        if (isStateAction(act.kind)) applyScriptAction(a, act, sc.file);
+    setShininess(b, idOf(b, "gold"), 128.0f);
+    setTerm(b, Term::Specular, false);
+    setModel(b, ShadingModel::BlinnPhong);
+    setProbe(b, 10, 20);
+    EXPECT_EQ(sceneToJson(a.scene), sceneToJson(b.scene));
+    EXPECT_TRUE(a.probe.active);
+    EXPECT_EQ(a.probe.y, 20);
+    // A bare list works too.
+    EXPECT_EQ(parse(R"([{"action": "frameAll"}])").actions.size(), 1u);
+}
+
+TEST(AppScript, ErrorsNameTheFileAndTheAction) {
+    EXPECT_EQ(parseError(R"([{"action": "frameAll"}, {"action": "setShine", "s": 1}])"),
+              "actions.json: actions[1].action: unknown action 'setShine' (docs/viewer.md lists them)");
+    EXPECT_NE(parseError(R"([{"action": "setTerm", "term": "spec", "on": true}])").find("actions.json: actions[0].term:"),
+              std::string::npos);
+    EXPECT_NE(parseError(R"([{"action": "setShininess", "object": "gold"}])").find("actions[0].s: "),
+              std::string::npos);
+    EXPECT_NE(parseError(R"([{"frame": 3, "action": "frameAll"}, {"frame": 1, "action": "frameAll"}])")
+                  .find("actions[1].frame: frames must not decrease"),
+              std::string::npos);
+    EXPECT_NE(parseError(R"([{"action": "probe", "x": 1, "y": 2, "z": 3}])").find("actions[0].z: not a field"),
+              std::string::npos);
+    EXPECT_NE(parseError("[{").find("actions.json: line"), std::string::npos);
+    EXPECT_EQ(parseError(R"([{"action": "setMode", "mode": "split"}])"), "(no error)");  // negative control
+
+    ViewerState s = defaultState();
+    const Script sc = parse(R"([{"action": "frameAll"}, {"action": "select", "object": "teapot"}])");
+    try {
+        applyScriptAction(s, sc.actions[1], sc.file);
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("actions.json: actions[1].object: no object 'teapot'"), std::string::npos)
+            << e.what();
+    }
+    const Script rm = parse(R"([{"action": "removeLight", "index": 7}])");
+    EXPECT_THROW(applyScriptAction(s, rm.actions[0], rm.file), InputError);
+}

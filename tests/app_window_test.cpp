@@ -1,0 +1,263 @@
+// Tests of the real viewer window under Xvfb (issue 4): after 30 frames its screenshot equals the
+// headless `shadelab render` of the same scene and size; a scripted shininess change changes the
+// screenshot and matches the headless render of the changed scene; the probe on a known pixel reports
+// the object and the NoL of the shared C++ shading; a broken shader reload keeps the last good program.
+// Every comparison has a negative control. Without xvfb-run the tests report SKIPPED with the reason.
+#include "image/compare.h"
+#include "image/compare_report.h"
+#include "image/png.h"
+#include "scene/coverage.h"
+#include "scene/scene_json.h"
+#include "scene/scene_load.h"
+#include "scene/view.h"
+#include "shading/lighting.h"
+#include "test_output.h"
+#include "util/atomic_file.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <sys/wait.h>
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kSize = "320x180";
+constexpr int kW = 320, kH = 180;
+
+struct Result {
+    int code = -1;
+    std::string out;  // stdout and stderr together
+};
+
+Result shell(const std::string& cmd) {
+    Result r;
+    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf;
+    while (size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return r;
+}
+
+std::string binary() { return SHADELAB_BINARY; }
+
+// The viewer in a fresh X server of its own. The screen is larger than any window the tests open.
+Result view(const std::string& args, const std::string& env = "") {
+    return shell(env + "xvfb-run -a -s '-screen 0 1920x1200x24' " + binary() + " view " + args);
+}
+
+Result render(const std::string& scene, const std::string& out) {
+    return shell(binary() + " render " + scene + " --size " + kSize + " -o " + out);
+}
+
+bool haveXvfb() { return shell("command -v xvfb-run").code == 0; }
+
+#define REQUIRE_XVFB()                                                                                  \
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: apt-get install xvfb xauth (scripts/install-deps.sh)"
+
+std::string writeText(const std::string& name, const std::string& text) {
+    const std::string path = test::outputPath(name);
+    writeFileAtomic(path, text);
+    return path;
+}
+
+// Exact equality expected (same renderer, same shared conversion), plus the design.md §4 gates; on
+// failure both images, the heatmap and the report stay in build/test-output.
+void expectSameImage(const std::string& stem, const std::string& pathA, const std::string& pathB) {
+    const Image8 a = readPng(pathA), b = readPng(pathB);
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    const CompareResult r = compareImages(a, b);
+    const bool exact = a.data == b.data;
+    if (!exact || !r.pass) {
+        const std::vector<std::string> files = writeCompareEvidence(test::outputPath(stem), a, b, r);
+        ADD_FAILURE() << pathA << " vs " << pathB << (exact ? "" : ": not byte-identical") << "\n"
+                      << compareSummary(r) << "evidence: " << files[0] << " ...";
+    }
+}
+
+bool sameBytes(const std::string& pathA, const std::string& pathB) {
+    return readPng(pathA).data == readPng(pathB).data;
+}
+
+glm::ivec2 pixelOf(const Scene& scene, const glm::vec3& p) {
+    const ViewSetup v = makeViewSetup(scene, kW, kH);
+    const glm::vec4 clip = v.viewProj * glm::vec4(p, 1.0f);
+    return {int(std::floor((clip.x / clip.w * 0.5f + 0.5f) * float(kW))),
+            int(std::floor((1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(kH)))};
+}
+
+}  // namespace
+
+TEST(AppWindow, HelpAndNoDisplayNeedNoWindow) {
+    Result help = shell("env -u DISPLAY -u WAYLAND_DISPLAY " + binary() + " view --help");
+    EXPECT_EQ(help.code, 0) << help.out;
+    EXPECT_NE(help.out.find("--screenshot"), std::string::npos);
+    Result none = shell("env -u DISPLAY -u WAYLAND_DISPLAY " + binary() + " view " +
+                        test::sourcePath("assets/scenes/default.json"));
+    EXPECT_EQ(none.code, 1) << none.out;
+    EXPECT_EQ(std::count(none.out.begin(), none.out.end(), '\n'), 1) << none.out;
+    EXPECT_NE(none.out.find("shadelab render"), std::string::npos) << none.out;
+    Result usage = shell(binary() + " view --size 0x10");
+    EXPECT_EQ(usage.code, 2) << usage.out;
+    Result badScript = shell("env DISPLAY=:0 " + binary() + " view --script " + writeText("bad.json", "[{\"action\": 1}]"));
+    EXPECT_EQ(badScript.code, 1) << badScript.out;
+    EXPECT_NE(badScript.out.find("bad.json: actions[0].action:"), std::string::npos) << badScript.out;
+}
+
+TEST(AppWindow, ScreenshotAfter30FramesEqualsHeadlessRender) {
+    REQUIRE_XVFB();
+    for (const char* name : {"default", "torus"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = test::sourcePath(std::string("assets/scenes/") + name + ".json");
+        const std::string shot = test::outputPath(std::string(name) + "_view.png");
+        const std::string ref = test::outputPath(std::string(name) + "_render.png");
+        fs::remove(shot);
+        Result v = view(scene + " --size " + kSize + " --frames 30 --screenshot " + shot);
+        ASSERT_EQ(v.code, 0) << v.out;
+        Result r = render(scene, ref);
+        ASSERT_EQ(r.code, 0) << r.out;
+        expectSameImage(std::string(name) + "_unchanged", shot, ref);
+    }
+}
+
+TEST(AppWindow, ScriptedShininessChangeMatchesHeadlessRenderOfChangedScene) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string before = test::outputPath("shininess_before.png");
+    const std::string after = test::outputPath("shininess_after.png");
+    const std::string saved = test::outputPath("shininess_saved.json");
+    const std::string script = writeText("shininess_script.json", R"({"actions": [
+        {"frame": 10, "action": "screenshot", "path": ")" + before + R"("},
+        {"frame": 12, "action": "setShininess", "object": "red plastic", "s": 4},
+        {"frame": 14, "action": "saveScene", "path": ")" + saved + R"("}
+    ]})");
+    Result v = view(scenePath + " --size " + kSize + " --frames 30 --script " + script + " --screenshot " + after);
+    ASSERT_EQ(v.code, 0) << v.out;
+
+    // The changed scene, made independently, rendered headlessly.
+    Scene changed = loadScene(scenePath);
+    for (Sphere& s : changed.spheres)
+        if (s.name == "red plastic") s.material.s = 4.0f;
+    const std::string changedJson = sceneToJson(changed);
+    const std::string changedPath = writeText("shininess_changed.json", changedJson);
+    const std::string expected = test::outputPath("shininess_expected.png");
+    ASSERT_EQ(render(changedPath, expected).code, 0);
+    const std::string unchanged = test::outputPath("shininess_unchanged_render.png");
+    ASSERT_EQ(render(scenePath, unchanged).code, 0);
+
+    expectSameImage("shininess_after", after, expected);
+    expectSameImage("shininess_before", before, unchanged);
+    // Negative controls: the change is visible, in both directions.
+    EXPECT_FALSE(sameBytes(before, after)) << "the shininess change did not change the screenshot";
+    EXPECT_FALSE(sameBytes(before, expected)) << "the unchanged screenshot equals the changed scene's render";
+    EXPECT_FALSE(sameBytes(after, unchanged));
+    // What the viewer saved is the changed scene.
+    EXPECT_EQ(sceneToJson(parseSceneJson(readFile(saved), saved)), changedJson);
+}
+
+TEST(AppWindow, ProbeReportsObjectAndNoLOfSharedShading) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const Scene scene = loadScene(scenePath);
+    size_t green = 0;
+    while (green < scene.spheres.size() && scene.spheres[green].name != "matte green") ++green;
+    ASSERT_LT(green, scene.spheres.size());
+    const Sphere& sphere = scene.spheres[green];
+    const glm::ivec2 px = pixelOf(scene, sphere.center + glm::vec3(-0.3f, 0.4f, 0.0f));
+    const std::string onSphere = test::outputPath("probe_sphere.json");
+    const std::string onFloor = test::outputPath("probe_floor.json");
+    const std::string script = writeText("probe_script.json", "[" 
+        R"({"frame": 2, "action": "probe", "x": )" + std::to_string(px.x) + R"(, "y": )" + std::to_string(px.y) + "},"
+        R"({"action": "probeReport", "path": ")" + onSphere + R"("},)"
+        R"({"action": "probe", "x": 160, "y": 175},)"
+        R"({"action": "probeReport", "path": ")" + onFloor + R"("}])");
+    Result v = view(scenePath + " --size " + kSize + " --frames 5 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+
+    const nlohmann::json j = nlohmann::json::parse(readFile(onSphere));
+    const uint32_t id = sphereCoverageId(scene, green);
+    ASSERT_TRUE(j["hit"].get<bool>()) << j.dump();
+    EXPECT_EQ(j["object"]["id"].get<uint32_t>(), id);
+    EXPECT_EQ(j["coverage_id"].get<uint32_t>(), id) << "the rasterizer's coverage disagrees with the probe";
+    // The C++ shading's NoL for this pixel, computed here from the shared functions.
+    const ViewSetup vs = makeViewSetup(scene, kW, kH);
+    const glm::vec3 dir = shading::cameraRayDirection(vs.forward, vs.right, vs.up, vs.tanHalfFovY, float(kW),
+                                                      float(kH), px.x + 0.5f, px.y + 0.5f);
+    const float t = shading::intersectSphere(vs.eye, dir, sphere.center, sphere.radius, 0.0f);
+    ASSERT_GT(t, 0.0f);
+    const glm::vec3 P = vs.eye + t * dir;
+    const glm::vec3 N = glm::normalize(shading::faceForward((P - sphere.center) / sphere.radius, -dir));
+    ASSERT_EQ(j["lights"].size(), scene.lights.size());
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const float NoL = glm::dot(N, glm::normalize(scene.lights[i].position - P));
+        EXPECT_NEAR(j["lights"][i]["NoL"].get<float>(), NoL, 1e-5f) << "light " << i;
+    }
+    // Negative control: the floor pixel reports the plane, with another NoL.
+    const nlohmann::json f = nlohmann::json::parse(readFile(onFloor));
+    EXPECT_EQ(f["object"]["kind"], "plane");
+    EXPECT_EQ(f["coverage_id"].get<uint32_t>(), planeCoverageId(scene, 0));
+    EXPECT_GT(std::fabs(f["lights"][0]["NoL"].get<float>() - j["lights"][0]["NoL"].get<float>()), 1e-2f);
+}
+
+TEST(AppWindow, BrokenShaderReloadKeepsLastGoodProgram) {
+    REQUIRE_XVFB();
+    const fs::path broken = test::outputPath("broken_shaders");
+    fs::remove_all(broken);
+    fs::copy(test::sourcePath("shaders"), broken);
+    {
+        std::ofstream(broken / "sphere.frag", std::ios::app) << "this is not GLSL;\n";
+    }
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string shot = test::outputPath("reload_view.png");
+    const std::string ref = test::outputPath("reload_render.png");
+    const std::string script = writeText("reload_script.json", R"([{"frame": 3, "action": "reloadShaders", "dir": ")" +
+                                                                    broken.string() + R"("}])");
+    Result v = view(scenePath + " --size " + kSize + " --frames 8 --script " + script + " --screenshot " + shot);
+    ASSERT_EQ(v.code, 0) << v.out;
+    EXPECT_NE(v.out.find("sphere.frag: line"), std::string::npos) << "the error should name file and line: " << v.out;
+    ASSERT_EQ(render(scenePath, ref).code, 0);
+    expectSameImage("reload", shot, ref);
+}
+
+TEST(AppWindow, ResizingKeepsRenderingCorrect) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string shot = test::outputPath("resize_view.png");
+    const std::string small = test::outputPath("resize_small.png");
+    const std::string script = writeText("resize_script.json", R"([
+        {"frame": 2, "action": "resizeWindow", "width": 200, "height": 120},
+        {"frame": 6, "action": "windowScreenshot", "path": ")" + small + R"("},
+        {"frame": 8, "action": "resizeWindow", "width": 1, "height": 1},
+        {"frame": 12, "action": "resizeWindow", "width": 900, "height": 600}])");
+    // A fixed --size renders the same pixels at any window size; the window only shows them scaled.
+    Result v = view(scenePath + " --size " + kSize + " --frames 20 --script " + script + " --screenshot " + shot);
+    ASSERT_EQ(v.code, 0) << v.out;
+    EXPECT_EQ(readPng(small).width, 200) << "the window did not shrink";
+    const std::string ref = test::outputPath("resize_render.png");
+    ASSERT_EQ(render(scenePath, ref).code, 0);
+    expectSameImage("resize", shot, ref);
+}
+
+TEST(AppWindow, ProgressiveReferenceCompletesWhileTheWindowRuns) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string window = test::outputPath("difference_window.png");
+    const std::string script = writeText("reference_script.json", R"([
+        {"frame": 1, "action": "setMode", "mode": "difference"},
+        {"action": "waitReference", "timeout": 120},
+        {"action": "windowScreenshot", "path": ")" + window + R"("}])");
+    Result v = view(scenePath + " --size 160x90 --frames 3 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    EXPECT_TRUE(fs::exists(window));
+}
