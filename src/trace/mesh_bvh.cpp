@@ -3,6 +3,7 @@
 // small fixed stack; no allocation and no virtual calls per ray.
 #include "trace/mesh_bvh.h"
 
+#include "trace/bvh_traverse.h"
 #include "trace/watertight.h"
 #include "util/check.h"
 
@@ -13,11 +14,6 @@ namespace shadelab::trace {
 namespace {
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-struct StackEntry {
-    uint32_t node;
-    float tEntry;
-};
 
 }  // namespace
 
@@ -98,92 +94,34 @@ bool MeshBvh::matches(const Scene& scene) const {
 }
 
 std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
-    if (bvh_.empty()) return std::nullopt;
-    const BvhNode* nodes = bvh_.nodes.data();
-    const BoxRay br = makeBoxRay(ray);
-    if (slabEntry(br, nodes[0].lo(), nodes[0].hi(), tMax) == INFINITY) return std::nullopt;
     const WatertightRay wr = makeWatertightRay(ray);
-
     MeshHit best{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
-    StackEntry stack[kMaxBvhDepth];
-    int sp = 0;
-    uint32_t ni = 0;
-    for (;;) {
-        const BvhNode& node = nodes[ni];
-        if (node.isLeaf()) {
-            for (uint32_t s = node.first, end = node.first + node.count; s < end; ++s) {
-                const float* v = &positions_[size_t(s) * 9];
-                const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, best.t);
-                if (!h) continue;
-                // Strictly nearer wins; an exact tie goes to the lower scene-order index.
-                const bool better = best.slot == UINT32_MAX ? h->t < tMax
-                                                            : (h->t < best.t ||
-                                                               (h->t == best.t && source_[s] < source_[best.slot]));
-                if (better) best = MeshHit{h->t, s, h->b0, h->b1, h->b2};
-            }
-        } else {
-            const BvhNode& c0 = nodes[node.first];
-            const BvhNode& c1 = nodes[node.first + 1];
-            float t0 = slabEntry(br, c0.lo(), c0.hi(), best.t);
-            float t1 = slabEntry(br, c1.lo(), c1.hi(), best.t);
-            uint32_t nearNode = node.first, farNode = node.first + 1;
-            if (t1 < t0) {
-                std::swap(t0, t1);
-                std::swap(nearNode, farNode);
-            }
-            if (t0 != INFINITY) {
-                if (t1 != INFINITY) stack[sp++] = {farNode, t1};
-                ni = nearNode;
-                continue;
-            }
+    traverseClosest(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
+        for (uint32_t s = first, end = first + count; s < end; ++s) {
+            const float* v = &positions_[size_t(s) * 9];
+            const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, best.t);
+            if (!h) continue;
+            // Strictly nearer wins; an exact tie goes to the lower scene-order index.
+            const bool better = best.slot == UINT32_MAX
+                                    ? h->t < tMax
+                                    : (h->t < best.t || (h->t == best.t && source_[s] < source_[best.slot]));
+            if (better) best = MeshHit{h->t, s, h->b0, h->b1, h->b2};
         }
-        // Pop the next subtree that may still hold a hit no farther than the best so far.
-        for (;;) {
-            if (sp == 0) return best.slot == UINT32_MAX ? std::nullopt : std::optional<MeshHit>(best);
-            --sp;
-            if (stack[sp].tEntry <= best.t) break;
-        }
-        ni = stack[sp].node;
-    }
+        return best.t;
+    });
+    return best.slot == UINT32_MAX ? std::nullopt : std::optional<MeshHit>(best);
 }
 
 bool MeshBvh::anyHit(const Ray& ray, float tMax) const {
-    if (bvh_.empty()) return false;
-    const BvhNode* nodes = bvh_.nodes.data();
-    const BoxRay br = makeBoxRay(ray);
-    if (slabEntry(br, nodes[0].lo(), nodes[0].hi(), tMax) == INFINITY) return false;
     const WatertightRay wr = makeWatertightRay(ray);
-
-    uint32_t stack[kMaxBvhDepth];
-    int sp = 0;
-    uint32_t ni = 0;
-    for (;;) {
-        const BvhNode& node = nodes[ni];
-        if (node.isLeaf()) {
-            for (uint32_t s = node.first, end = node.first + node.count; s < end; ++s) {
-                const float* v = &positions_[size_t(s) * 9];
-                const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, tMax);
-                if (h && h->t < tMax) return true;
-            }
-        } else {
-            const BvhNode& c0 = nodes[node.first];
-            const BvhNode& c1 = nodes[node.first + 1];
-            const float t0 = slabEntry(br, c0.lo(), c0.hi(), tMax);
-            const float t1 = slabEntry(br, c1.lo(), c1.hi(), tMax);
-            if (t0 != INFINITY && t1 != INFINITY) {
-                // Nearer child first: an occluder near the origin is found without visiting the far side.
-                ni = t0 <= t1 ? node.first : node.first + 1;
-                stack[sp++] = t0 <= t1 ? node.first + 1 : node.first;
-                continue;
-            }
-            if (t0 != INFINITY || t1 != INFINITY) {
-                ni = t0 != INFINITY ? node.first : node.first + 1;
-                continue;
-            }
+    return traverseAny(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
+        for (uint32_t s = first, end = first + count; s < end; ++s) {
+            const float* v = &positions_[size_t(s) * 9];
+            const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, tMax);
+            if (h && h->t < tMax) return true;
         }
-        if (sp == 0) return false;
-        ni = stack[--sp];
-    }
+        return false;
+    });
 }
 
 }  // namespace shadelab::trace
