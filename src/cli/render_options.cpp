@@ -28,6 +28,7 @@ const char* const kRenderHelp =
     "  --encoding NAME          srgb (default) | linear: how linear colour becomes 8-bit\n"
     "  --gl-backend NAME        auto | egl-device | egl-surfaceless | osmesa\n"
     "                           (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
+    "  --allow-external-paths   let glTF buffer URIs point outside the model's folder (../, absolute)\n"
     "  --timings                print a per-stage timing and memory breakdown to stderr\n"
     "  --verbose                log the GL backend, GL_RENDERER and GL_VERSION to stderr\n"
     "  -h, --help               show this help\n"
@@ -73,7 +74,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     Args args(argc, argv, 2,
               {"-o", "--output", "--size", "--model", "--terms", "--encoding", "--gl-backend", "--spp", "--renderer",
                "--threads", "--depth"},
-              {"-h", "--help", "--verbose", "--timings"});
+              {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"});
     RenderOptions o;
     if (args.flag("-h") || args.flag("--help")) {
         o.help = true;
@@ -97,6 +98,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);
     if (auto v = args.value("--depth")) o.depth = parseInt("--depth", *v, 0, 64);
     if (auto v = args.value("--gl-backend")) o.backend = gl::parseGlBackend(*v);
+    o.allowExternalPaths = args.flag("--allow-external-paths");
     o.verbose = args.flag("--verbose");
     o.timings = args.flag("--timings");
     return o;

@@ -24,6 +24,7 @@ struct RenderOptions {
     int threads = 0;                        // tracer worker threads; 0 = every core
     std::optional<int> depth;               // tracer secondary-ray depth; unset: the scene's maxDepth
     gl::GlBackend backend = gl::GlBackend::Auto;
+    bool allowExternalPaths = false;        // glTF buffers may live outside the model's folder
     bool verbose = false;
     bool timings = false;
     bool help = false;                      // --help was given: print kRenderHelp and do nothing else

@@ -62,13 +62,54 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;
 }
 
-// Parses glTF text (`binary` false) or GLB bytes. External buffers resolve against `baseDir`; an empty
-// baseDir refuses every external file (the fuzzer's setting). `name` is the file named in errors.
+// The model's folder, for the file callbacks that resolve external buffers and keep them inside it.
+struct FolderGuard {
+    std::string baseDir;            // as given to tinygltf
+    std::filesystem::path root;     // weakly canonical
+    bool allowOutside = false;
+
+    // tinygltf joins the folder and an absolute URI into "<baseDir>//abs"; undo that join.
+    std::string resolve(const std::string& joined) const {
+        const std::string prefix = baseDir + "/";
+        if (joined.size() > prefix.size() && joined.compare(0, prefix.size(), prefix) == 0 && joined[prefix.size()] == '/')
+            return joined.substr(prefix.size());
+        return joined;
+    }
+    bool contains(const std::string& file) const {
+        std::error_code ec;
+        const std::filesystem::path p = std::filesystem::weakly_canonical(file, ec);
+        if (ec) return false;
+        const std::filesystem::path rel = p.lexically_relative(root);
+        return !rel.empty() && *rel.begin() != "..";
+    }
+};
+
+bool existsResolved(const std::string& joined, void* user) {
+    return tinygltf::FileExists(static_cast<const FolderGuard*>(user)->resolve(joined), nullptr);
+}
+
+bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const std::string& joined, void* user) {
+    const FolderGuard& guard = *static_cast<const FolderGuard*>(user);
+    const std::string file = guard.resolve(joined);
+    if (!guard.allowOutside && !guard.contains(file)) {
+        if (err) *err += "buffer '" + file + "' is outside the model's folder (pass --allow-external-paths to allow)\n";
+        return false;
+    }
+    return tinygltf::ReadWholeFile(out, err, file, nullptr);
+}
+
+// Parses glTF text (`binary` false) or GLB bytes. External buffers resolve through `guard` (which refuses
+// those outside the model's folder unless allowed); without a guard every external file is refused (the
+// fuzzer's setting). `name` is the file named in errors.
 tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
-                           std::vector<std::string>& warnings) {
+                           std::vector<std::string>& warnings, const FolderGuard* guard = nullptr) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skipImage, nullptr);
-    if (baseDir.empty()) {
+    if (guard) {
+        tinygltf::FsCallbacks guarded{&existsResolved, &tinygltf::ExpandFilePath, &readInsideFolder,
+                                      &tinygltf::WriteWholeFile, const_cast<FolderGuard*>(guard)};
+        loader.SetFsCallbacks(guarded);
+    } else if (baseDir.empty()) {
         tinygltf::FsCallbacks noFiles{};
         noFiles.FileExists = [](const std::string&, void*) { return false; };
         noFiles.ExpandFilePath = [](const std::string& p, void*) { return p; };
@@ -96,7 +137,8 @@ tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::str
     return model;
 }
 
-tinygltf::Model loadModel(const std::string& path, std::vector<std::string>& warnings) {
+tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options,
+                          std::vector<std::string>& warnings) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");
     if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a glTF file");
@@ -105,7 +147,12 @@ tinygltf::Model loadModel(const std::string& path, std::vector<std::string>& war
     if (ext != ".glb" && ext != ".gltf") throw InputError(path, "expected a .gltf or .glb file");
     std::string baseDir = std::filesystem::path(path).parent_path().string();
     if (baseDir.empty()) baseDir = ".";
-    return parseModel(readFile(path), ext == ".glb", path, baseDir, warnings);
+    FolderGuard guard;
+    guard.baseDir = baseDir;
+    guard.root = std::filesystem::weakly_canonical(baseDir, ec);
+    guard.allowOutside = options.allowExternalPaths;
+    if (ec) throw InputError(path, "cannot resolve the model's folder: " + ec.message());
+    return parseModel(readFile(path), ext == ".glb", path, baseDir, warnings, &guard);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -548,9 +595,9 @@ private:
 // 6. Public functions
 // ---------------------------------------------------------------------------------------------------------
 
-GltfImport importGltf(const std::string& path, const glm::mat4& transform) {
+GltfImport importGltf(const std::string& path, const glm::mat4& transform, const GltfImportOptions& options) {
     GltfImport out;
-    const tinygltf::Model model = loadModel(path, out.warnings);
+    const tinygltf::Model model = loadModel(path, options, out.warnings);
     Importer(model, path, out).run(glm::dmat4(transform));
     return out;
 }

@@ -21,9 +21,15 @@ struct GltfImport {
     std::vector<std::string> warnings;  // things skipped (points, lines, unsupported extensions)
 };
 
+struct GltfImportOptions {
+    bool allowExternalPaths = false;    // let buffer URIs point outside the model's folder (../, absolute)
+};
+
 // Imports `path`, placing everything under `transform`. Throws InputError naming the file, the place
-// (e.g. "accessors[3]") and the reason.
-GltfImport importGltf(const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
+// (e.g. "accessors[3]") and the reason. Buffer files outside the model's folder are refused unless
+// options.allowExternalPaths: a model from elsewhere must not read arbitrary files.
+GltfImport importGltf(const std::string& path, const glm::mat4& transform = glm::mat4(1.0f),
+                      const GltfImportOptions& options = {});
 
 // Imports glTF text (binary = false) or GLB bytes held in memory, with every external file refused. For the
 // fuzzer and tests; `name` stands for the file in errors.

@@ -649,5 +649,38 @@ TEST(GltfImport, TwoCylinderEngineImportsWhole) {
     EXPECT_EQ(triangleCount(g), 121496u);
 }
 
+// Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed (issue 6).
+TEST(GltfImport, ExternalPathsRefusedUnlessAllowed) {
+    REQUIRE_MODELS();
+    const std::filesystem::path root = std::filesystem::path(SHADELAB_TEST_OUTPUT_DIR) / "external";
+    std::filesystem::create_directories(root / "model");
+    std::filesystem::create_directories(root / "elsewhere");
+    const std::string bin = (root / "elsewhere" / "box.bin").string();
+    std::filesystem::copy_file(model("glTF2/BoxTextured-glTF/BoxTextured0.bin"), bin,
+                               std::filesystem::copy_options::overwrite_existing);
+    std::ifstream in(model("glTF2/BoxTextured-glTF/BoxTextured.gltf"));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_NE(text.find("\"BoxTextured0.bin\""), std::string::npos);
+    for (const std::string& uri : {std::string("../elsewhere/box.bin"), bin}) {
+        std::string t = text;
+        t.replace(t.find("\"BoxTextured0.bin\""), 18, "\"" + uri + "\"");
+        const std::string path = (root / "model" / "box.gltf").string();
+        std::ofstream(path) << t;
+        try {
+            importGltf(path);
+            ADD_FAILURE() << uri << " was read without --allow-external-paths";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("outside the model's folder"), std::string::npos) << e.what();
+        }
+        GltfImportOptions allow;
+        allow.allowExternalPaths = true;
+        EXPECT_EQ(triangleCount(importGltf(path, glm::mat4(1.0f), allow)), 12u) << uri;
+    }
+    // The same buffer beside the model is inside its folder and loads by default.
+    std::filesystem::copy_file(bin, root / "model" / "BoxTextured0.bin", std::filesystem::copy_options::overwrite_existing);
+    std::ofstream((root / "model" / "inside.gltf").string()) << text;
+    EXPECT_EQ(triangleCount(importGltf((root / "model" / "inside.gltf").string())), 12u);
+}
+
 }  // namespace
 }  // namespace shadelab

@@ -51,12 +51,12 @@ void boundingSphere(const Bounds& b, glm::vec3& center, float& radius) {
     if (!(radius > 0.0f)) radius = 1.0f;  // a single point: give it a size to look at
 }
 
-void importMeshes(Scene& scene, const std::string& baseDir, WarnFn warn) {
+void importMeshes(Scene& scene, const std::string& baseDir, WarnFn warn, const GltfImportOptions& gltf) {
     for (Mesh& mesh : scene.meshes) {
         const fs::path source(mesh.source);
         const std::string path = source.is_absolute() || baseDir.empty() ? mesh.source
                                                                            : (fs::path(baseDir) / source).string();
-        GltfImport imported = importGltf(path, mesh.transform);
+        GltfImport imported = importGltf(path, mesh.transform, gltf);
         forwardWarnings(imported.warnings, path, warn);
         if (!mesh.material.empty())
             for (MeshPart& part : imported.parts) mesh.material.applyTo(part.material);
@@ -117,9 +117,11 @@ std::vector<Light> defaultLightRig(const Bounds& b) {
     return {key, fill};
 }
 
-void importSceneMeshes(Scene& scene, const std::string& baseDir) { importMeshes(scene, baseDir, nullptr); }
+void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImportOptions& gltf) {
+    importMeshes(scene, baseDir, nullptr, gltf);
+}
 
-Scene loadScene(const std::string& path, WarnFn warn) {
+Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw InputError(path, "no such file");
     if (fs::is_directory(path, ec)) throw InputError(path, "is a directory, not a scene file");
@@ -131,13 +133,13 @@ Scene loadScene(const std::string& path, WarnFn warn) {
     const std::string ext = lowerExtension(path);
     if (ext == ".json") {
         Scene scene = parseSceneJson(readFile(path), path, warn);
-        importMeshes(scene, fs::path(path).parent_path().string(), warn);
+        importMeshes(scene, fs::path(path).parent_path().string(), warn, gltf);
         return scene;
     }
     if (ext != ".gltf" && ext != ".glb")
         throw InputError(path, "unknown scene type; expected .json, .gltf or .glb");
 
-    GltfImport imported = importGltf(path);
+    GltfImport imported = importGltf(path, glm::mat4(1.0f), gltf);
     forwardWarnings(imported.warnings, path, warn);
     Scene scene;
     scene.title = fs::path(path).filename().string();

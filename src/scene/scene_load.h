@@ -3,6 +3,7 @@
 // (or its own glTF camera) and a default light rig (or its own KHR_lights_punctual lights).
 #pragma once
 
+#include "scene/gltf_import.h"
 #include "scene/scene.h"
 
 #include <glm/vec3.hpp>
@@ -17,11 +18,12 @@ struct Bounds {
     void extend(const glm::vec3& p);
 };
 
-// Throws InputError naming the file and problem.
-Scene loadScene(const std::string& path, void (*warn)(const std::string& line) = nullptr);
+// Throws InputError naming the file and problem. `gltf` applies to every model the scene loads.
+Scene loadScene(const std::string& path, void (*warn)(const std::string& line) = nullptr,
+                const GltfImportOptions& gltf = {});
 
 // Imports every mesh's glTF source (relative to `baseDir`) into its parts, applying the override.
-void importSceneMeshes(Scene& scene, const std::string& baseDir);
+void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImportOptions& gltf = {});
 
 // Bounds of spheres and mesh triangles (planes are unbounded and ignored).
 Bounds sceneBounds(const Scene& scene);
