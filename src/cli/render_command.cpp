@@ -92,9 +92,9 @@ int renderCommand(int argc, char** argv) {
 
     StageTimer timer;
     // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
-    auto sceneFuture = std::async(std::launch::async, [&] {
-        return loadScene(o.input, printWarning, GltfImportOptions{o.allowExternalPaths});
-    });
+    GltfImportOptions gltf;
+    gltf.allowExternalPaths = o.allowExternalPaths;
+    auto sceneFuture = std::async(std::launch::async, [&] { return loadScene(o.input, printWarning, gltf); });
     std::unique_ptr<gl::HeadlessContext> context;
     if (needRaster) {
         try {

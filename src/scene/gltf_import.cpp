@@ -152,7 +152,13 @@ tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& opti
     guard.root = std::filesystem::weakly_canonical(baseDir, ec);
     guard.allowOutside = options.allowExternalPaths;
     if (ec) throw InputError(path, "cannot resolve the model's folder: " + ec.message());
-    return parseModel(readFile(path), ext == ".glb", path, baseDir, warnings, &guard);
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > options.limits.maxFileBytes)
+        throw InputError(path, "file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                                   std::to_string(options.limits.maxFileBytes) + " bytes");
+    const std::string bytes = readFile(path);
+    checkDeclaredSizes(bytes, ext == ".glb", path, options.limits);
+    return parseModel(bytes, ext == ".glb", path, baseDir, warnings, &guard);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -306,8 +312,8 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
 
 class Importer {
 public:
-    Importer(const tinygltf::Model& model, const std::string& file, GltfImport& out)
-        : model_(model), file_(file), out_(out), onPath_(model.nodes.size(), 0), seen_(model.nodes.size(), 0) {
+    Importer(const tinygltf::Model& model, const std::string& file, GltfImport& out, const GltfLimits& limits)
+        : model_(model), file_(file), out_(out), limits_(limits), onPath_(model.nodes.size(), 0), seen_(model.nodes.size(), 0) {
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
@@ -433,6 +439,9 @@ private:
         MeshPart part;
         const size_t vertexCount =
             gltf::accessorCount(model_, position->second, file_, where + ".attributes.POSITION");
+        const size_t indexCount =
+            prim.indices >= 0 ? gltf::accessorCount(model_, prim.indices, file_, where + ".indices") : vertexCount;
+        chargeBudget(where, vertexCount, indexCount);
         gltf::readVec3(model_, position->second, file_, part.positions);
 
         // Indices (or 0..n-1), each checked against the vertex count, then triangulated.
@@ -509,6 +518,19 @@ private:
         out_.parts.push_back(std::move(part));
     }
 
+    // Counts a primitive instance against the limits before its arrays are allocated. A mesh used by many
+    // nodes counts once per use, as it is expanded once per use.
+    void chargeBudget(const std::string& where, size_t vertexCount, size_t indexCount) {
+        triangles_ += indexCount / 3 + (indexCount >= 3 ? 2 : 0);  // strips and fans make up to count - 2
+        bytes_ += uint64_t(vertexCount) * 2 * sizeof(glm::vec3) + uint64_t(indexCount) * 3 * sizeof(uint32_t);
+        if (triangles_ > limits_.maxTriangles)
+            throw InputError(file_, where, "the model exceeds the limit of " + std::to_string(limits_.maxTriangles) +
+                                               " triangles");
+        if (bytes_ > limits_.maxMeshBytes)
+            throw InputError(file_, where, "the model needs more than the limit of " +
+                                               std::to_string(limits_.maxMeshBytes) + " bytes of geometry");
+    }
+
     void addCamera(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {
         if (size_t(node.camera) >= model_.cameras.size())
             throw InputError(file_, place,
@@ -580,6 +602,8 @@ private:
     GltfImport& out_;
     std::vector<Material> materials_;
     Material defaultMaterial_;
+    const GltfLimits& limits_;
+    uint64_t triangles_ = 0, bytes_ = 0;
     std::vector<char> onPath_;                 // nodes on the path from the root being walked
     std::vector<char> seen_;                   // nodes visited at least once
     size_t visits_ = 0;
@@ -598,14 +622,15 @@ private:
 GltfImport importGltf(const std::string& path, const glm::mat4& transform, const GltfImportOptions& options) {
     GltfImport out;
     const tinygltf::Model model = loadModel(path, options, out.warnings);
-    Importer(model, path, out).run(glm::dmat4(transform));
+    Importer(model, path, out, options.limits).run(glm::dmat4(transform));
     return out;
 }
 
-GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name) {
+GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name, const GltfLimits& limits) {
     GltfImport out;
+    checkDeclaredSizes(bytes, binary, name, limits);
     const tinygltf::Model model = parseModel(bytes, binary, name, "", out.warnings);
-    Importer(model, name, out).run(glm::dmat4(1.0));
+    Importer(model, name, out, limits).run(glm::dmat4(1.0));
     return out;
 }
 

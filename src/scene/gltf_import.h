@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/camera.h"
+#include "scene/gltf_limits.h"
 #include "scene/light.h"
 #include "scene/objects.h"
 
@@ -23,6 +24,7 @@ struct GltfImport {
 
 struct GltfImportOptions {
     bool allowExternalPaths = false;    // let buffer URIs point outside the model's folder (../, absolute)
+    GltfLimits limits;                  // sizes past which a model is refused (gltf_limits.h)
 };
 
 // Imports `path`, placing everything under `transform`. Throws InputError naming the file, the place
@@ -33,7 +35,8 @@ GltfImport importGltf(const std::string& path, const glm::mat4& transform = glm:
 
 // Imports glTF text (binary = false) or GLB bytes held in memory, with every external file refused. For the
 // fuzzer and tests; `name` stands for the file in errors.
-GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name);
+GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name,
+                           const GltfLimits& limits = {});
 
 // Metallic-roughness → Phong (docs/gltf-import.md).
 Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, float roughness);

@@ -30,6 +30,11 @@ const fs::path kModels = "/usr/share/assimp/models";
 
 std::string model(const std::string& relative) { return (kModels / relative).string(); }
 
+std::string readTextFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 size_t triangleCount(const GltfImport& g) {
     size_t n = 0;
     for (const MeshPart& p : g.parts) n += p.triangleCount();
@@ -680,6 +685,41 @@ TEST(GltfImport, ExternalPathsRefusedUnlessAllowed) {
     std::filesystem::copy_file(bin, root / "model" / "BoxTextured0.bin", std::filesystem::copy_options::overwrite_existing);
     std::ofstream((root / "model" / "inside.gltf").string()) << text;
     EXPECT_EQ(triangleCount(importGltf((root / "model" / "inside.gltf").string())), 12u);
+}
+
+// Limits against hostile files (issue 6): each gives a one-line InputError before anything big is allocated.
+TEST(GltfImport, LimitsRefuseHostileFiles) {
+    auto expectRefused = [](const std::string& text, const GltfLimits& limits, const std::string& needle) {
+        try {
+            importGltfBytes(text, false, "hostile.gltf", limits);
+            ADD_FAILURE() << "accepted; expected an error containing '" << needle << "'";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("hostile.gltf"), std::string::npos) << e.what();
+        }
+    };
+    const std::string asset = R"("asset":{"version":"2.0"})";
+    // A buffer that claims 100 GB: refused from its declaration alone.
+    expectRefused("{" + asset + R"(,"buffers":[{"byteLength":100000000000,"uri":"x.bin"}]})", GltfLimits{},
+                  "buffers[0]: byteLength of 100000000000 bytes exceeds the limit");
+    GltfLimits small;
+    small.maxDataUriBytes = 64;
+    expectRefused("{" + asset + R"(,"buffers":[{"byteLength":48,"uri":"data:application/octet-stream;base64,)" +
+                      std::string(64, 'A') + R"("}]})",
+                  small, "buffers[0]: data: URI of");
+    GltfLimits tinyImages;
+    tinyImages.maxImageBytes = 10;
+    expectRefused("{" + asset + R"(,"bufferViews":[{"buffer":0,"byteLength":1000}],"images":[{"bufferView":0,"mimeType":"image/png"}]})",
+                  tinyImages, "images[0]: texture of 1000 bytes");
+    // Triangles: the quad below has 2; a limit of 1 refuses it, the default accepts it (negative control).
+    const std::string quadText = readTextFile(writeGltf("limits_quad.gltf", quad(), "[{\"mesh\":0}]"));
+    GltfLimits oneTriangle;
+    oneTriangle.maxTriangles = 1;
+    expectRefused(quadText, oneTriangle, "exceeds the limit of 1 triangles");
+    GltfLimits fewBytes;
+    fewBytes.maxMeshBytes = 16;
+    expectRefused(quadText, fewBytes, "bytes of geometry");
+    EXPECT_EQ(triangleCount(importGltfBytes(quadText, false, "quad.gltf")), 2u);
 }
 
 }  // namespace

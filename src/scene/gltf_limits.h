@@ -1,0 +1,25 @@
+// Limits against hostile glTF files (issue 6): sizes a model may declare before anything is allocated for
+// it, and the geometry it may produce. Plain settings; the defaults suit any real teaching model.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace shadelab {
+
+struct GltfLimits {
+    uint64_t maxFileBytes = uint64_t(2) << 30;        // the .gltf/.glb file itself, bytes
+    uint64_t maxBufferBytes = uint64_t(1) << 30;      // one buffer's declared byteLength, bytes
+    uint64_t maxDataUriBytes = uint64_t(256) << 20;   // one data: URI, characters
+    uint64_t maxImageBytes = uint64_t(64) << 20;      // one image's encoded bytes (textures are not decoded)
+    uint64_t maxTriangles = 50'000'000;               // triangles over every primitive instance
+    uint64_t maxMeshBytes = uint64_t(4) << 30;        // vertex and index memory the import may allocate, bytes
+};
+
+// Checks what the glTF JSON (a .gltf's text, or a .glb's JSON chunk) declares against `limits`, before
+// tinygltf reads any buffer. Throws InputError(file, place, reason). Text that is not valid JSON is left
+// for the glTF parser to report.
+void checkDeclaredSizes(const std::string& bytes, bool binary, const std::string& file, const GltfLimits& limits);
+
+}  // namespace shadelab
