@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <set>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -209,4 +211,78 @@ TEST(CliCompare, ErrorsExitTwo) {
     EXPECT_EQ(run("compare " + a + " /nonexistent.png").code, 2);
     EXPECT_EQ(run("compare " + a).code, 2);
     EXPECT_EQ(run("compare " + a + " " + a + " --threshold 300").code, 2);
+}
+
+// Nothing lost (issue 6): a render that cannot be written fails with one line, leaves the existing file as
+// it was and leaves no temporary file behind.
+namespace {
+
+std::vector<std::string> listDir(const std::string& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string readAll(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+TEST(CliNothingLost, ReadOnlyFolder) {
+    std::string dir = test::outputPath("readonly");
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir + "/out.png") << "previous";
+    fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                             fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    // Root ignores folder permissions: run as the unprivileged user `nobody` instead.
+    std::string asUser = geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+    if (!asUser.empty() && std::system((asUser + "test -x " + std::string(SHADELAB_BINARY) + " -a -r " +
+                                        test::sourcePath("assets/scenes/default.json"))
+                                           .c_str()) != 0) {
+        fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add);
+        GTEST_SKIP() << "user nobody cannot reach the build tree here, so a permission test cannot be staged";
+    }
+    Result r = run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 64x36",
+                   asUser);
+    fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add);
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("Permission denied"), std::string::npos) << r.out;
+    EXPECT_EQ(lineCount(r.out), 1) << r.out;
+    EXPECT_EQ(readAll(dir + "/out.png"), "previous");
+    EXPECT_EQ(listDir(dir), std::vector<std::string>{"out.png"});
+}
+
+TEST(CliNothingLost, FileSizeLimitHitMidWrite) {
+    // RLIMIT_FSIZE makes write() fail part-way (EFBIG), as a disk that fills up during the write would.
+    std::string dir = test::outputPath("fsize");
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir + "/out.png") << "previous";
+    Result r = run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 320x180",
+                   "trap '' XFSZ; ulimit -f 8; ");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("File too large"), std::string::npos) << r.out;
+    EXPECT_EQ(readAll(dir + "/out.png"), "previous");
+    EXPECT_EQ(listDir(dir), std::vector<std::string>{"out.png"});
+}
+
+TEST(CliNothingLost, FullDisk) {
+    std::string dir = test::outputPath("fulldisk");
+    fs::create_directories(dir);
+    if (std::system(("mountpoint -q " + dir + " || mount -t tmpfs -o size=64k tmpfs " + dir + " 2>/dev/null").c_str()) != 0)
+        GTEST_SKIP() << "cannot mount a small tmpfs here (needs root); FileSizeLimitHitMidWrite covers the write path";
+    for (const std::string& f : listDir(dir)) fs::remove(dir + "/" + f);
+    std::ofstream(dir + "/out.png") << "previous";
+    Result r = run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 640x360");
+    std::vector<std::string> left = listDir(dir);
+    std::string kept = readAll(dir + "/out.png");
+    (void)std::system(("umount " + dir).c_str());
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("No space left on device"), std::string::npos) << r.out;
+    EXPECT_EQ(kept, "previous");
+    EXPECT_EQ(left, std::vector<std::string>{"out.png"});
 }
