@@ -286,3 +286,37 @@ TEST(CliNothingLost, FullDisk) {
     EXPECT_EQ(kept, "previous");
     EXPECT_EQ(left, std::vector<std::string>{"out.png"});
 }
+
+// A broken or missing shader (issue 6): one line that names the shader file (and line for a compile error).
+TEST(CliShaders, BrokenOrMissingShaderNamesFileAndLine) {
+    std::string dir = test::outputPath("shaders_broken");
+    fs::remove_all(dir);
+    fs::copy(test::sourcePath("shaders"), dir);
+    std::string scene = test::sourcePath("assets/scenes/default.json");
+    {
+        std::string text = readAll(dir + "/sphere.frag");
+        size_t main = text.find("void main() {");
+        ASSERT_NE(main, std::string::npos);
+        text.insert(main + 13, "\n    this is not glsl;");
+        std::ofstream(dir + "/sphere.frag") << text;
+    }
+    Result r = run("render " + scene + " -o " + test::outputPath("broken.png") + " --size 32x18",
+                   "SHADELAB_SHADER_DIR=" + dir + " ");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("shaders/sphere.frag: line "), std::string::npos) << r.out;
+    EXPECT_EQ(lineCount(r.out), 1) << r.out;
+
+    fs::copy_file(test::sourcePath("shaders/sphere.frag"), dir + "/sphere.frag", fs::copy_options::overwrite_existing);
+    fs::remove(dir + "/plane.frag");
+    r = run("render " + scene + " -o " + test::outputPath("broken.png") + " --size 32x18",
+            "SHADELAB_SHADER_DIR=" + dir + " ");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("plane.frag"), std::string::npos) << r.out;
+    EXPECT_EQ(lineCount(r.out), 1) << r.out;
+    // Negative control: the intact copy renders.
+    fs::copy_file(test::sourcePath("shaders/plane.frag"), dir + "/plane.frag");
+    EXPECT_EQ(run("render " + scene + " -o " + test::outputPath("intact.png") + " --size 32x18",
+                  "SHADELAB_SHADER_DIR=" + dir + " ")
+                  .code,
+              0);
+}
