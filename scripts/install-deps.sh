@@ -13,7 +13,7 @@ packages=(
   libtinygltf-dev libstb-dev                            # glTF and images
   zlib1g-dev                                            # PNG compression
   nlohmann-json3-dev                                    # JSON
-  xvfb xauth assimp-testmodels                          # test tools and real glTF test data
+  xvfb xauth assimp-testmodels valgrind                 # test tools and real glTF test data
 )
 for arg in "$@"; do
   case "$arg" in
