@@ -7,8 +7,10 @@ layout(std140) uniform Frame {
     vec4 u_up;
     vec4 u_viewport;                    // full image width, height (pixels), tan(fovY/2), GL row of this band's bottom
     vec4 u_ambient;                     // xyz: Ia
-    ivec4 u_flags;                      // model, term bits (1 ambient, 2 diffuse, 4 specular), light count, 0
+    ivec4 u_flags;                      // model, term bits (1 ambient, 2 diffuse, 4 specular), light count,
+                                        // pass bits (1 shadows, 2 planar mirror lookups)
     vec4 u_lightPos[SL_MAX_LIGHTS];     // xyz: position (w = 1) or direction of travel (w = 0)
     vec4 u_lightColor[SL_MAX_LIGHTS];   // xyz: Il
     vec4 u_lightAtten[SL_MAX_LIGHTS];   // xyz: kc, kl, kq
+    vec4 u_clipPlane;                   // keep dot(xyz, P) + w >= 0; (0, 0, 0, 1) keeps all (mirror passes clip)
 };

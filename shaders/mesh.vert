@@ -11,4 +11,5 @@ void main() {
     v2f_position = a_position;
     v2f_normal = a_normal;
     gl_Position = u_viewProj * vec4(a_position, 1.0f);
+    gl_ClipDistance[0] = dot(u_clipPlane.xyz, a_position) + u_clipPlane.w;   // enabled in mirror passes only
 }

@@ -7,15 +7,22 @@ uniform float u_planeOffset;
 uniform int u_checker;          // 1 when the plane has a checker pattern
 uniform vec3 u_md2;
 uniform float u_checkerSize;
+uniform vec3 u_kr;
+uniform int u_mirror;               // 1: add kr ⊙ I(reflected) from the planar reflection pass
+uniform sampler2D t_reflection;     // the mirrored render of this band, pixel for pixel
 
 void main() {
     vec3 dir = fragmentRay();
     float t = intersectPlane(u_eye.xyz, dir, u_planeNormal, u_planeOffset, 0.0f);
     if (t < 0.0f) discard;
     vec3 P = u_eye.xyz + t * dir;
+    if (clippedByMirror(P)) discard;
     vec3 V = -dir;
     vec3 N = faceForward(u_planeNormal, V);
     vec3 md = (u_checker != 0 && checkerParity(P, u_planeNormal, u_checkerSize) == 1) ? u_md2 : u_md;
-    o_color = vec4(shadeSurface(P, N, V, md), 1.0f);
+    vec3 I = shadeSurface(P, N, V, md);
+    // Planar reflection: the mirrored scene seen through this pixel is exactly I(reflected ray).
+    if (u_mirror != 0) I += u_kr * texelFetch(t_reflection, ivec2(gl_FragCoord.xy), 0).rgb;
+    o_color = vec4(I, 1.0f);
     o_coverage = u_objectId;
 }

@@ -10,6 +10,7 @@ void main() {
     float t = intersectSphere(u_eye.xyz, dir, u_center, u_radius, 0.0f);
     if (t < 0.0f) discard;
     vec3 P = u_eye.xyz + t * dir;
+    if (clippedByMirror(P)) discard;
     vec3 V = -dir;
     vec3 N = faceForward((P - u_center) / u_radius, V);
     gl_FragDepth = depthOf(P);

@@ -2,6 +2,7 @@
 // (linear colour + coverage id), and the sum over lights that mirrors src/shading/local_illumination.h.
 #include "lighting.glsl"
 #include "frame.glsl"
+#include "shadow.glsl"
 
 uniform vec3 u_ma;
 uniform vec3 u_md;
@@ -19,7 +20,10 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
-        I += shadeLight(N, L, V, Il, md, u_ms, u_s, u_flags.x, (terms & 2) != 0, (terms & 4) != 0);
+        vec3 c = shadeLight(N, L, V, Il, md, u_ms, u_s, u_flags.x, (terms & 2) != 0, (terms & 4) != 0);
+        // vis_l multiplies diffuse + specular only; no lookup where N·L <= 0 (the term is 0 there anyway).
+        if ((u_flags.w & 1) != 0 && dot(N, L) > 0.0f) c *= shadowVisibility(i, P, normalize(N));
+        I += c;
     }
     return I;
 }
@@ -35,4 +39,9 @@ vec3 fragmentRay() {
 float depthOf(vec3 P) {
     vec4 clip = u_viewProj * vec4(P, 1.0f);
     return min(0.5f * (clip.z / clip.w) + 0.5f, 1.0f);
+}
+
+// Mirror passes draw only what lies on the viewer's side of the mirror plane (impostors test their hit).
+bool clippedByMirror(vec3 P) {
+    return dot(u_clipPlane.xyz, P) + u_clipPlane.w < 0.0f;
 }

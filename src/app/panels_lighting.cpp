@@ -19,7 +19,7 @@ void drawLightingSection(PanelContext& ctx) {
         if (i != 0 && i != 3) ImGui::SameLine();
         if (ImGui::Checkbox(toString(terms[i]), &on)) setTerm(s, terms[i], on);
     }
-    ImGui::TextDisabled("shadows, reflections: in the reference only");
+    ImGui::TextDisabled("raster: shadow maps (8 lights), mirror planes; other reflections: reference only");
 
     ImGui::TextDisabled("Progression (keys 1-5)");
     const char* labels[] = {"1 ambient", "2 +diffuse", "3 +specular", "4 +shadows", "5 +reflections"};

@@ -2,6 +2,7 @@
 // static_asserts (Filament's UibStructs.h does the same).
 #pragma once
 
+#include "gl/gl_api.h"
 #include "scene/scene.h"
 
 #include <cstddef>
@@ -18,10 +19,11 @@ struct FrameBlock {
     glm::vec4 up;
     glm::vec4 viewport;          // full width, height, tan(fovY/2), GL row of the band's bottom
     glm::vec4 ambient;           // Ia
-    glm::ivec4 flags;            // model, term bits, light count, 0
+    glm::ivec4 flags;            // model, term bits, light count, pass bits
     glm::vec4 lightPos[kMaxLights];
     glm::vec4 lightColor[kMaxLights];
     glm::vec4 lightAtten[kMaxLights];
+    glm::vec4 clipPlane{0.0f, 0.0f, 0.0f, 1.0f};  // mirror passes: keep dot(xyz, P) + w >= 0
 };
 
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -30,8 +32,16 @@ static_assert(offsetof(FrameBlock, flags) == 160);
 static_assert(offsetof(FrameBlock, lightPos) == 176);
 static_assert(offsetof(FrameBlock, lightColor) == 176 + 16 * kMaxLights);
 static_assert(offsetof(FrameBlock, lightAtten) == 176 + 32 * kMaxLights);
-static_assert(sizeof(FrameBlock) == 176 + 48 * kMaxLights);
+static_assert(offsetof(FrameBlock, clipPlane) == 176 + 48 * kMaxLights);
+static_assert(sizeof(FrameBlock) == 192 + 48 * kMaxLights);
 
 enum TermBits : int { kTermAmbient = 1, kTermDiffuse = 2, kTermSpecular = 4 };
+enum PassBits : int { kPassShadows = 1, kPassMirrors = 2 };
+
+// Uniform-block bindings and texture units of the colour passes; unit 0 is left to callers (the viewer).
+inline constexpr GLuint kFrameBinding = 0;
+inline constexpr GLuint kShadowBinding = 1;
+inline constexpr GLuint kShadowUnit = 1;
+inline constexpr GLuint kReflectionUnit = 2;
 
 }  // namespace shadelab::raster

@@ -1,7 +1,9 @@
-// RasterRenderer: uploads, per-frame uniform block, and the three passes (meshes, spheres, planes).
+// RasterRenderer: uploads, per-frame uniform block, and the three passes (meshes, spheres, planes), run once
+// per mirror plane into its own target (planar_reflection.h) and then for the image itself.
 #include "raster/raster_renderer.h"
 
 #include "raster/frame_block.h"
+#include "raster/planar_reflection.h"
 #include "scene/coverage.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <cstring>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -18,7 +21,6 @@
 namespace shadelab::raster {
 namespace {
 
-constexpr GLuint kFrameBinding = 0;
 
 // 36 vertices of the cube [-1,1]^3, every triangle wound counter-clockwise seen from outside.
 std::array<glm::vec3, 36> unitCube() {
@@ -45,7 +47,9 @@ std::array<glm::vec3, 36> unitCube() {
 }
 
 std::string programDefines() {
-    return "#define SL_MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
+    return "#define SL_MAX_LIGHTS " + std::to_string(kMaxLights) + "\n#define SL_MAX_SHADOWED " +
+           std::to_string(kMaxShadowedLights) + "\n#define SL_MAX_SHADOW_LAYERS " + std::to_string(kMaxShadowLayers) +
+           "\n#define SL_MAX_SHADOW_PLANES " + std::to_string(kMaxShadowPlanes) + "\n";
 }
 
 // Maps the full image's clip space onto one band's: y' = a·y + b·w, so the band's rows fill its viewport.
@@ -57,22 +61,6 @@ glm::mat4 bandMatrix(int height, Band band) {
     m[1][1] = h / rows;
     m[3][1] = (h - 2.0f * glBottom) / rows - 1.0f;
     return m;
-}
-
-// Conservative test: true when the box lies wholly outside one side of the clip volume (far is infinite).
-bool outsideClip(const glm::mat4& viewProj, const glm::vec3& lo, const glm::vec3& hi) {
-    int outside[5] = {0, 0, 0, 0, 0};
-    for (int c = 0; c < 8; ++c) {
-        glm::vec4 p = viewProj * glm::vec4(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z, 1.0f);
-        outside[0] += p.x < -p.w;
-        outside[1] += p.x > p.w;
-        outside[2] += p.y < -p.w;
-        outside[3] += p.y > p.w;
-        outside[4] += p.z < -p.w;
-    }
-    for (int n : outside)
-        if (n == 8) return true;
-    return false;
 }
 
 FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
@@ -89,7 +77,10 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
                 (scene.terms.specular ? kTermSpecular : 0);
     int model = scene.model == ShadingModel::Phong ? shading::SL_MODEL_PHONG : shading::SL_MODEL_BLINN_PHONG;
     int count = int(std::min(scene.lights.size(), size_t(kMaxLights)));
-    f.flags = glm::ivec4(model, terms, count, 0);
+    const bool lit = scene.terms.diffuse || scene.terms.specular;
+    const int passes = (scene.terms.shadows && lit && count > 0 ? kPassShadows : 0) |
+                       (scene.terms.reflections ? kPassMirrors : 0);
+    f.flags = glm::ivec4(model, terms, count, passes);
     for (int i = 0; i < count; ++i) {
         const Light& l = scene.lights[size_t(i)];
         bool point = l.type == LightType::Point;
@@ -102,12 +93,20 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
 
 }  // namespace
 
-RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) {
-    const std::string defines = programDefines();
-    meshProgram_ = gl::Program::build(shaders, "mesh.vert", "mesh.frag", defines);
-    sphereProgram_ = gl::Program::build(shaders, "sphere.vert", "sphere.frag", defines);
-    planeProgram_ = gl::Program::build(shaders, "plane.vert", "plane.frag", defines);
-    for (const gl::Program* p : {&meshProgram_, &sphereProgram_, &planeProgram_}) p->bindBlock("Frame", kFrameBinding);
+RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
+    : meshProgram_(gl::Program::build(shaders, "mesh.vert", "mesh.frag", programDefines())),
+      sphereProgram_(gl::Program::build(shaders, "sphere.vert", "sphere.frag", programDefines())),
+      planeProgram_(gl::Program::build(shaders, "plane.vert", "plane.frag", programDefines())),
+      shadows_(shaders) {
+    for (const gl::Program* p : {&meshProgram_, &sphereProgram_, &planeProgram_}) {
+        p->bindBlock("Frame", kFrameBinding);
+        p->bindBlock("Shadows", kShadowBinding);
+        glUseProgram(p->id());
+        glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
+    }
+    glUseProgram(planeProgram_.id());
+    glUniform1i(planeProgram_.uniform("t_reflection"), GLint(kReflectionUnit));
+    glUseProgram(0);
 
     frameUbo_ = gl::Buffer::create();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
@@ -128,6 +127,7 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) {
 
 void RasterRenderer::uploadMeshes(const Scene& scene) {
     ranges_.clear();
+    ++meshGeneration_;
     size_t vertexCount = 0, indexCount = 0;
     for (const Mesh& m : scene.meshes)
         for (const MeshPart& p : m.parts) {
@@ -182,18 +182,44 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
     gl::checkError("RasterRenderer::uploadMeshes");
 }
 
-void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const {
-    glUniform3fv(p.uniform("u_ma"), 1, glm::value_ptr(m.ma));
-    glUniform3fv(p.uniform("u_md"), 1, glm::value_ptr(m.md));
-    glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(m.ms));
-    glUniform1f(p.uniform("u_s"), m.s);
-    glUniform1ui(p.uniform("u_objectId"), objectId);
+void RasterRenderer::uploadFrame(const FrameBlock& frame) const {
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &frame);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frameUbo_.id());
+}
+
+// Shadow maps depend on lights, casters and settings only, not on the camera or the band: re-render them
+// when that key changes, so a banded image renders them once and a material edit not at all.
+void RasterRenderer::prepareShadows(const Scene& scene) {
+    std::vector<float> key = {float(settings_.shadowMapSize), settings_.depthBias, settings_.normalBias,
+                              float(settings_.pcf), float(meshGeneration_), float(scene.meshes.size())};
+    auto push = [&key](const glm::vec3& v) { key.insert(key.end(), {v.x, v.y, v.z}); };
+    for (const Light& l : scene.lights) {
+        key.push_back(float(l.type));
+        push(l.position);
+        push(l.direction);
+    }
+    for (const Sphere& sp : scene.spheres) {
+        push(sp.center);
+        key.push_back(sp.radius);
+    }
+    for (const Plane& p : scene.planes) {
+        push(p.normal);
+        key.push_back(p.offset);
+    }
+    push(scene.camera.position);  // the shadow-ray epsilon is scaled by the scene's box, eye included
+    if (key != shadowKey_) {
+        shadows_.render(scene, settings_, ranges_, meshVao_ ? meshVao_.id() : emptyVao_.id(), cubeVao_.id());
+        shadowKey_ = std::move(key);
+    }
 }
 
 void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage, Band band) {
     if (band.rows <= 0) band = Band{0, height};
-    target_.resize(width, band.rows, withCoverage);
-    target_.bind();
+    const ViewSetup view = makeViewSetup(scene, width, height);
+    const FrameBlock frame = makeFrameBlock(scene, view, band);
+    if (frame.flags.w & kPassShadows) prepareShadows(scene);
+    shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);
@@ -205,65 +231,37 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     const float background[4] = {scene.background.r, scene.background.g, scene.background.b, 1.0f};
     const GLuint noObject[4] = {kBackgroundId, 0, 0, 0};
     const float farDepth = 1.0f;
+
+    // Mirror passes first, each into its own float target of the band's size (one bounce, local shading).
+    mirrorOfPlane_.assign(scene.planes.size(), -1);
+    glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
+    glBindTexture(GL_TEXTURE_2D, 0);  // no feedback loop with a mirror target being drawn
+    glActiveTexture(GL_TEXTURE0);
+    size_t mirrors = 0;
+    for (size_t i = 0; i < scene.planes.size() && mirrors < size_t(kMaxMirrorPlanes); ++i) {
+        if (!isMirror(scene, scene.planes[i])) continue;
+        const std::optional<FrameBlock> mirrored = mirroredFrame(frame, scene.planes[i]);
+        if (!mirrored) continue;
+        if (mirrorTargets_.size() <= mirrors) mirrorTargets_.emplace_back();
+        RenderTarget& t = mirrorTargets_[mirrors];
+        t.resize(width, band.rows, false);
+        t.bind();
+        glClearBufferfv(GL_COLOR, 0, background);
+        glClearBufferfv(GL_DEPTH, 0, &farDepth);
+        uploadFrame(*mirrored);
+        glEnable(GL_CLIP_DISTANCE0);
+        drawPasses(scene, *mirrored, int(i), true);
+        glDisable(GL_CLIP_DISTANCE0);
+        mirrorOfPlane_[i] = int(mirrors++);
+    }
+
+    target_.resize(width, band.rows, withCoverage);
+    target_.bind();
     glClearBufferfv(GL_COLOR, 0, background);
     if (target_.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
-
-    const ViewSetup view = makeViewSetup(scene, width, height);
-    const FrameBlock frame = makeFrameBlock(scene, view, band);
-    glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
-    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &frame);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBinding, frameUbo_.id());
-
-    // Meshes first: they keep early depth testing, and the impostors behind them are rejected cheaply.
-    glDisable(GL_CULL_FACE);  // two-sided lighting: back faces are lit with the flipped normal
-    glUseProgram(meshProgram_.id());
-    glBindVertexArray(meshVao_.id());
-    for (const DrawRange& r : ranges_) {
-        if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
-        if (outsideClip(frame.viewProj, r.lo, r.hi)) continue;
-        setMaterial(meshProgram_, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
-        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
-    }
-
-    // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_FRONT);
-    glFrontFace(GL_CCW);
-    glUseProgram(sphereProgram_.id());
-    glBindVertexArray(cubeVao_.id());
-    for (size_t i = 0; i < scene.spheres.size(); ++i) {
-        const Sphere& s = scene.spheres[i];
-        setMaterial(sphereProgram_, s.material, sphereCoverageId(scene, i));
-        glUniform3fv(sphereProgram_.uniform("u_center"), 1, glm::value_ptr(s.center));
-        glUniform1f(sphereProgram_.uniform("u_radius"), s.radius);
-        glDrawArrays(GL_TRIANGLES, 0, 36);
-    }
-    glDisable(GL_CULL_FACE);
-
-    // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
-    glUseProgram(planeProgram_.id());
-    glBindVertexArray(emptyVao_.id());
-    for (size_t i = 0; i < scene.planes.size(); ++i) {
-        const Plane& p = scene.planes[i];
-        setMaterial(planeProgram_, p.material, planeCoverageId(scene, i));
-        const float eyeHeight = glm::dot(p.normal, view.eye) - p.offset;
-        const glm::vec3 centre = view.eye - eyeHeight * p.normal;
-        const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
-        glUniform3fv(planeProgram_.uniform("u_planeCenter"), 1, glm::value_ptr(centre));
-        glUniform3fv(planeProgram_.uniform("u_planeT"), 1, glm::value_ptr(t));
-        glUniform3fv(planeProgram_.uniform("u_planeB"), 1, glm::value_ptr(b));
-        glUniform3fv(planeProgram_.uniform("u_planeNormal"), 1, glm::value_ptr(p.normal));
-        glUniform1f(planeProgram_.uniform("u_planeOffset"), p.offset);
-        glUniform1i(planeProgram_.uniform("u_checker"), p.checker ? 1 : 0);
-        const Checker c = p.checker.value_or(Checker{});
-        glUniform3fv(planeProgram_.uniform("u_md2"), 1, glm::value_ptr(c.md2));
-        glUniform1f(planeProgram_.uniform("u_checkerSize"), c.size);
-        glDrawArrays(GL_TRIANGLES, 0, 12);
-    }
-    glBindVertexArray(0);
-    glUseProgram(0);
+    uploadFrame(frame);
+    drawPasses(scene, frame, -1, false);
     gl::checkError("RasterRenderer::draw");
 }
 

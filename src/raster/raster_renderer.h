@@ -1,11 +1,14 @@
 // RasterRenderer: Scene → linear float image through OpenGL (design.md §1, §2). Meshes are rasterized;
 // spheres and planes are ray-cast impostors using the tracer's own intersection code, so silhouettes
-// and normals are exact. Local illumination only (shadows and reflections arrive with issue 5).
+// and normals are exact. Shadows (shadow maps) and planar mirrors follow the scene's term switches (issue 5).
 #pragma once
 
 #include "gl/program.h"
 #include "image/image.h"
+#include "raster/draw_range.h"
+#include "raster/raster_settings.h"
 #include "raster/render_target.h"
+#include "raster/shadow_maps.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -13,6 +16,8 @@
 #include <vector>
 
 namespace shadelab::raster {
+
+struct FrameBlock;
 
 // A horizontal band of the image, rows [top, top + rows) counted from the top; rows = 0 is the whole image.
 // Headless renders draw large images band by band to bound the float target's memory (bench figures in
@@ -31,21 +36,32 @@ public:
     void uploadMeshes(const Scene& scene);
 
     // Draws the scene (or one band of it) into the internal target, with coverage ids when asked. The
-    // target is width x band rows. uploadMeshes must have seen the scene's current geometry.
+    // target is width x band rows. uploadMeshes must have seen the scene's current geometry. With
+    // scene.terms.shadows, shadow maps are re-rendered only when lights, casters or settings change; with
+    // scene.terms.reflections, each mirror plane (kr > 0) gets a mirrored pass of the same band.
     void draw(const Scene& scene, int width, int height, bool withCoverage = false, Band band = {});
 
     const RenderTarget& target() const { return target_; }
 
+    // Shadow-map resolution, biases, PCF (raster_settings.h). Takes effect at the next draw.
+    void setSettings(const RasterSettings& settings) { settings_ = settings; }
+    const RasterSettings& settings() const { return settings_; }
+    // Shadow-map layers rendered for the last shadowed draw (0: none needed), for reports and benches.
+    int shadowLayers() const { return shadows_.layers(); }
+
 private:
-    struct DrawRange {
-        size_t mesh, part;
-        size_t firstIndex, indexCount;
-        glm::vec3 lo, hi;           // world-space bounds, for culling
-    };
-
     void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const;
+    void uploadFrame(const FrameBlock& frame) const;
+    void drawPasses(const Scene& scene, const FrameBlock& frame, int skipPlane, bool mirrored) const;
+    void prepareShadows(const Scene& scene);
 
+    RasterSettings settings_;
     gl::Program meshProgram_, sphereProgram_, planeProgram_;
+    ShadowMaps shadows_;
+    std::vector<float> shadowKey_;        // what the current shadow maps were rendered from
+    uint64_t meshGeneration_ = 0;         // bumped by uploadMeshes
+    std::vector<RenderTarget> mirrorTargets_;
+    std::vector<int> mirrorOfPlane_;      // per plane: index into mirrorTargets_ for this band, or -1
     gl::Buffer frameUbo_;
     gl::VertexArray meshVao_, cubeVao_, emptyVao_;
     gl::Buffer meshVbo_, meshIbo_, cubeVbo_;

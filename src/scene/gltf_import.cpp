@@ -1,14 +1,13 @@
 // glTF 2.0 import through tinygltf: node hierarchy → world-space MeshParts, KHR_lights_punctual lights,
-// the first perspective camera, and metallic-roughness → Phong (docs/gltf-import.md). Accessor bytes are
-// read, bounds-checked, by gltf_accessors.cpp.
+// the first perspective camera, and metallic-roughness → Phong (docs/gltf-import.md). Reading the file is
+// gltf_file.cpp; accessor bytes are read, bounds-checked, by gltf_accessors.cpp.
 //
-// Sections: 1. loading   2. node transforms   3. primitives (triangulation, normals)   4. materials
-//           5. the importer: hierarchy walk, meshes, lights, camera   6. public functions
+// Sections: 1. node transforms   2. primitives (triangulation, normals)   3. materials
+//           4. the importer: hierarchy walk, meshes, lights, camera   5. public functions
 #include "scene/gltf_import.h"
 
-#include "util/atomic_file.h"
-
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_file.h"
 #include "util/input_error.h"
 
 #include <tiny_gltf.h>
@@ -36,133 +35,7 @@ const glm::vec3 kFallbackNormal{0.0f, 1.0f, 0.0f};  // for vertices whose faces 
 std::string indexed(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
 
 // ---------------------------------------------------------------------------------------------------------
-// 1. Loading
-// ---------------------------------------------------------------------------------------------------------
-
-std::string trim(const std::string& s) {
-    const size_t b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string::npos) return {};
-    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
-void appendLines(const std::string& text, std::vector<std::string>& out) {
-    size_t start = 0;
-    while (start < text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        std::string line = trim(text.substr(start, end - start));
-        if (!line.empty()) out.push_back(std::move(line));
-        start = end + 1;
-    }
-}
-
-// Textures are not sampled (docs/gltf-import.md), so images are read but never decoded.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-               void*) {
-    return true;
-}
-
-// The model's folder, for the file callbacks that resolve external buffers and keep them inside it.
-struct FolderGuard {
-    std::string baseDir;            // as given to tinygltf
-    std::filesystem::path root;     // weakly canonical
-    bool allowOutside = false;
-
-    // tinygltf joins the folder and an absolute URI into "<baseDir>//abs"; undo that join.
-    std::string resolve(const std::string& joined) const {
-        const std::string prefix = baseDir + "/";
-        if (joined.size() > prefix.size() && joined.compare(0, prefix.size(), prefix) == 0 && joined[prefix.size()] == '/')
-            return joined.substr(prefix.size());
-        return joined;
-    }
-    bool contains(const std::string& file) const {
-        std::error_code ec;
-        const std::filesystem::path p = std::filesystem::weakly_canonical(file, ec);
-        if (ec) return false;
-        const std::filesystem::path rel = p.lexically_relative(root);
-        return !rel.empty() && *rel.begin() != "..";
-    }
-};
-
-bool existsResolved(const std::string& joined, void* user) {
-    return tinygltf::FileExists(static_cast<const FolderGuard*>(user)->resolve(joined), nullptr);
-}
-
-bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const std::string& joined, void* user) {
-    const FolderGuard& guard = *static_cast<const FolderGuard*>(user);
-    const std::string file = guard.resolve(joined);
-    if (!guard.allowOutside && !guard.contains(file)) {
-        if (err) *err += "buffer '" + file + "' is outside the model's folder (pass --allow-external-paths to allow)\n";
-        return false;
-    }
-    return tinygltf::ReadWholeFile(out, err, file, nullptr);
-}
-
-// Parses glTF text (`binary` false) or GLB bytes. External buffers resolve through `guard` (which refuses
-// those outside the model's folder unless allowed); without a guard every external file is refused (the
-// fuzzer's setting). `name` is the file named in errors.
-tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
-                           std::vector<std::string>& warnings, const FolderGuard* guard = nullptr) {
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skipImage, nullptr);
-    if (guard) {
-        tinygltf::FsCallbacks guarded{&existsResolved, &tinygltf::ExpandFilePath, &readInsideFolder,
-                                      &tinygltf::WriteWholeFile, const_cast<FolderGuard*>(guard)};
-        loader.SetFsCallbacks(guarded);
-    } else if (baseDir.empty()) {
-        tinygltf::FsCallbacks noFiles{};
-        noFiles.FileExists = [](const std::string&, void*) { return false; };
-        noFiles.ExpandFilePath = [](const std::string& p, void*) { return p; };
-        noFiles.ReadWholeFile = [](std::vector<unsigned char>*, std::string* err, const std::string& p, void*) {
-            if (err) *err += "external file refused: " + p + "\n";
-            return false;
-        };
-        noFiles.WriteWholeFile = [](std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
-            return false;
-        };
-        loader.SetFsCallbacks(noFiles);
-    }
-    tinygltf::Model model;
-    std::string err, warn;
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
-                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
-    if (!ok) {
-        std::vector<std::string> lines;
-        appendLines(err, lines);
-        throw InputError(name, lines.empty() ? std::string("tinygltf failed without a message") : lines.front());
-    }
-    appendLines(warn, warnings);
-    appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
-    return model;
-}
-
-tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options,
-                          std::vector<std::string>& warnings) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a glTF file");
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext != ".glb" && ext != ".gltf") throw InputError(path, "expected a .gltf or .glb file");
-    std::string baseDir = std::filesystem::path(path).parent_path().string();
-    if (baseDir.empty()) baseDir = ".";
-    FolderGuard guard;
-    guard.baseDir = baseDir;
-    guard.root = std::filesystem::weakly_canonical(baseDir, ec);
-    guard.allowOutside = options.allowExternalPaths;
-    if (ec) throw InputError(path, "cannot resolve the model's folder: " + ec.message());
-    const uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > options.limits.maxFileBytes)
-        throw InputError(path, "file of " + std::to_string(size) + " bytes exceeds the limit of " +
-                                   std::to_string(options.limits.maxFileBytes) + " bytes");
-    const std::string bytes = readFile(path);
-    checkDeclaredSizes(bytes, ext == ".glb", path, options.limits);
-    return parseModel(bytes, ext == ".glb", path, baseDir, warnings, &guard);
-}
-
-// ---------------------------------------------------------------------------------------------------------
-// 2. Node transforms (glTF 2.0 spec, "Transformations": matrix, or T * R * S)
+// 1. Node transforms (glTF 2.0 spec, "Transformations": matrix, or T * R * S)
 // ---------------------------------------------------------------------------------------------------------
 
 bool allFinite(const std::vector<double>& v) {
@@ -208,7 +81,7 @@ glm::mat3 normalMatrix(const glm::dmat3& m) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// 3. Primitives
+// 2. Primitives
 // ---------------------------------------------------------------------------------------------------------
 
 // glTF 2.0 spec, "Meshes" (primitive topology): strip triangle i is (i, i+1+i%2, i+2-i%2); fan triangle i is
@@ -250,7 +123,7 @@ void generateNormals(const MeshPart& part, std::vector<glm::vec3>& out) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// 4. Materials
+// 3. Materials
 // ---------------------------------------------------------------------------------------------------------
 
 float finiteClamp(double x, float lo, float hi, float fallback) {
@@ -307,7 +180,7 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// 5. The importer
+// 4. The importer
 // ---------------------------------------------------------------------------------------------------------
 
 class Importer {
@@ -616,12 +489,12 @@ private:
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------------
-// 6. Public functions
+// 5. Public functions
 // ---------------------------------------------------------------------------------------------------------
 
 GltfImport importGltf(const std::string& path, const glm::mat4& transform, const GltfImportOptions& options) {
     GltfImport out;
-    const tinygltf::Model model = loadModel(path, options, out.warnings);
+    const tinygltf::Model model = gltf::loadModel(path, options, out.warnings);
     Importer(model, path, out, options.limits).run(glm::dmat4(transform));
     return out;
 }
@@ -629,7 +502,7 @@ GltfImport importGltf(const std::string& path, const glm::mat4& transform, const
 GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name, const GltfLimits& limits) {
     GltfImport out;
     checkDeclaredSizes(bytes, binary, name, limits);
-    const tinygltf::Model model = parseModel(bytes, binary, name, "", out.warnings);
+    const tinygltf::Model model = gltf::parseModel(bytes, binary, name, "", out.warnings);
     Importer(model, name, out, limits).run(glm::dmat4(1.0));
     return out;
 }

@@ -143,6 +143,10 @@ Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& g
     forwardWarnings(imported.warnings, path, warn);
     Scene scene;
     scene.title = fs::path(path).filename().string();
+    // A bare model gets the lecture's local terms. Its file holds no term choices, and shadows cast by a
+    // heuristic light rig would be arbitrary; a scene file or --terms switches shadows and reflections on.
+    scene.terms.shadows = false;
+    scene.terms.reflections = false;
     Mesh mesh;
     mesh.name = fs::path(path).stem().string();
     mesh.source = fs::absolute(path, ec).lexically_normal().string();  // so a saved scene finds it anywhere

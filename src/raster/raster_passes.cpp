@@ -1,0 +1,87 @@
+// RasterRenderer's colour passes (meshes, sphere impostors, planes) with one frame block: run once per
+// mirror plane into its target and once for the image. Not the set-up, the uploads or the shadow maps.
+#include "raster/raster_renderer.h"
+
+#include "raster/frame_block.h"
+#include "scene/coverage.h"
+#include "shading/lighting.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace shadelab::raster {
+
+void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const {
+    glUniform3fv(p.uniform("u_ma"), 1, glm::value_ptr(m.ma));
+    glUniform3fv(p.uniform("u_md"), 1, glm::value_ptr(m.md));
+    glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(m.ms));
+    glUniform1f(p.uniform("u_s"), m.s);
+    glUniform1ui(p.uniform("u_objectId"), objectId);
+}
+
+void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, int skipPlane, bool mirrored) const {
+    // A mirror reverses winding: front faces (for culling and gl_FrontFacing) become clockwise.
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
+
+    // Meshes first: they keep early depth testing, and the impostors behind them are rejected cheaply.
+    glDisable(GL_CULL_FACE);  // two-sided lighting: back faces are lit with the flipped normal
+    glUseProgram(meshProgram_.id());
+    glBindVertexArray(meshVao_.id());
+    for (const DrawRange& r : ranges_) {
+        if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
+        if (outsideClip(frame.viewProj, r.lo, r.hi)) continue;
+        setMaterial(meshProgram_, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
+        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
+    }
+
+    // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    glUseProgram(sphereProgram_.id());
+    glBindVertexArray(cubeVao_.id());
+    for (size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        setMaterial(sphereProgram_, s.material, sphereCoverageId(scene, i));
+        glUniform3fv(sphereProgram_.uniform("u_center"), 1, glm::value_ptr(s.center));
+        glUniform1f(sphereProgram_.uniform("u_radius"), s.radius);
+        glDrawArrays(GL_TRIANGLES, 0, 36);
+    }
+    glDisable(GL_CULL_FACE);
+
+    // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
+    glUseProgram(planeProgram_.id());
+    glBindVertexArray(emptyVao_.id());
+    const glm::vec3 eye(frame.eye);
+    for (size_t i = 0; i < scene.planes.size(); ++i) {
+        if (int(i) == skipPlane) continue;  // a mirror does not see itself
+        const Plane& p = scene.planes[i];
+        setMaterial(planeProgram_, p.material, planeCoverageId(scene, i));
+        const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
+        const glm::vec3 centre = eye - eyeHeight * p.normal;
+        const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
+        glUniform3fv(planeProgram_.uniform("u_planeCenter"), 1, glm::value_ptr(centre));
+        glUniform3fv(planeProgram_.uniform("u_planeT"), 1, glm::value_ptr(t));
+        glUniform3fv(planeProgram_.uniform("u_planeB"), 1, glm::value_ptr(b));
+        glUniform3fv(planeProgram_.uniform("u_planeNormal"), 1, glm::value_ptr(p.normal));
+        glUniform1f(planeProgram_.uniform("u_planeOffset"), p.offset);
+        glUniform1i(planeProgram_.uniform("u_checker"), p.checker ? 1 : 0);
+        const Checker c = p.checker.value_or(Checker{});
+        glUniform3fv(planeProgram_.uniform("u_md2"), 1, glm::value_ptr(c.md2));
+        glUniform1f(planeProgram_.uniform("u_checkerSize"), c.size);
+        const int mirror = !mirrored && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
+        glUniform1i(planeProgram_.uniform("u_mirror"), mirror >= 0 ? 1 : 0);
+        glUniform3fv(planeProgram_.uniform("u_kr"), 1, glm::value_ptr(p.material.kr));
+        if (mirror >= 0) {
+            glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
+            glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());
+            glActiveTexture(GL_TEXTURE0);
+        }
+        glDrawArrays(GL_TRIANGLES, 0, 12);
+    }
+    glFrontFace(GL_CCW);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+}  // namespace shadelab::raster

@@ -1,0 +1,51 @@
+// ShadowMaps: the depth maps behind the rasterizer's hard shadows (Williams 1978, "Casting curved shadows
+// on curved surfaces"). One 2D-array depth texture holds every layer: an orthographic map per directional
+// light, one perspective map per point light outside the casters' bounds, six cube faces otherwise.
+// Not the shading: shaders/shadow.glsl does the lookups, with the biases of RasterSettings.
+#pragma once
+
+#include "gl/program.h"
+#include "raster/draw_range.h"
+#include "raster/raster_settings.h"
+#include "raster/shadow_block.h"
+#include "scene/scene.h"
+
+#include <vector>
+
+namespace shadelab::raster {
+
+class ShadowMaps {
+public:
+    // Builds the depth-only programs; needs a current GL 3.3 core context.
+    explicit ShadowMaps(const gl::ShaderLibrary& shaders);
+
+    // Renders every layer the scene's first kMaxShadowedLights lights need (casters: meshes and spheres;
+    // planes occlude analytically in the shader) and uploads the block. Leaves the framebuffer unbound.
+    // meshVao draws `ranges`; cubeVao holds the 36-vertex unit cube of the sphere impostors.
+    void render(const Scene& scene, const RasterSettings& settings, const std::vector<DrawRange>& ranges,
+                GLuint meshVao, GLuint cubeVao);
+
+    // Binds the block and the array texture for the colour passes.
+    void bind(GLuint blockBinding, GLuint textureUnit) const;
+
+    int layers() const { return layerCount_; }
+    int size() const { return size_; }
+    const ShadowBlock& block() const { return block_; }
+
+private:
+    void allocate(int size, int layers);
+    void drawLayer(const Scene& scene, const std::vector<DrawRange>& ranges, GLuint meshVao, GLuint cubeVao,
+                   int layer) const;
+
+    gl::Program meshDepth_, sphereDepth_;
+    gl::Buffer ubo_;
+    gl::Texture maps_;
+    gl::Framebuffer fbo_;
+    int size_ = 0, allocatedLayers_ = 0, layerCount_ = 0;
+    ShadowBlock block_{};
+};
+
+// The tracer's scene-scaled epsilon (trace_scene.cpp), computed from the same boxes: the shadow-ray offset.
+float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges);
+
+}  // namespace shadelab::raster

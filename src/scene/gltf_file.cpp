@@ -1,0 +1,146 @@
+// Reading a .gltf/.glb into a tinygltf::Model: file checks, the declared-size limits (gltf_limits.h),
+// buffer files kept inside the model's folder unless allowed, images never decoded. Walking the model is
+// gltf_import.cpp.
+#include "scene/gltf_file.h"
+
+#include "util/atomic_file.h"
+#include "util/input_error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace shadelab::gltf {
+namespace {
+
+
+std::string trim(const std::string& s) {
+    const size_t b = s.find_first_not_of(" \t\r\n");
+    if (b == std::string::npos) return {};
+    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+void appendLines(const std::string& text, std::vector<std::string>& out) {
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = trim(text.substr(start, end - start));
+        if (!line.empty()) out.push_back(std::move(line));
+        start = end + 1;
+    }
+}
+
+// Textures are not sampled (docs/gltf-import.md), so images are read but never decoded.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+               void*) {
+    return true;
+}
+
+// The model's folder, for the file callbacks that resolve external buffers and keep them inside it.
+struct FolderGuard {
+    std::string baseDir;            // as given to tinygltf
+    std::filesystem::path root;     // weakly canonical
+    bool allowOutside = false;
+
+    // tinygltf joins the folder and an absolute URI into "<baseDir>//abs"; undo that join.
+    std::string resolve(const std::string& joined) const {
+        const std::string prefix = baseDir + "/";
+        if (joined.size() > prefix.size() && joined.compare(0, prefix.size(), prefix) == 0 && joined[prefix.size()] == '/')
+            return joined.substr(prefix.size());
+        return joined;
+    }
+    bool contains(const std::string& file) const {
+        std::error_code ec;
+        const std::filesystem::path p = std::filesystem::weakly_canonical(file, ec);
+        if (ec) return false;
+        const std::filesystem::path rel = p.lexically_relative(root);
+        return !rel.empty() && *rel.begin() != "..";
+    }
+};
+
+bool existsResolved(const std::string& joined, void* user) {
+    return tinygltf::FileExists(static_cast<const FolderGuard*>(user)->resolve(joined), nullptr);
+}
+
+bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const std::string& joined, void* user) {
+    const FolderGuard& guard = *static_cast<const FolderGuard*>(user);
+    const std::string file = guard.resolve(joined);
+    if (!guard.allowOutside && !guard.contains(file)) {
+        if (err) *err += "buffer '" + file + "' is outside the model's folder (pass --allow-external-paths to allow)\n";
+        return false;
+    }
+    return tinygltf::ReadWholeFile(out, err, file, nullptr);
+}
+
+// Parses glTF text (`binary` false) or GLB bytes. External buffers resolve through `guard` (which refuses
+// those outside the model's folder unless allowed); without a guard every external file is refused (the
+// fuzzer's setting). `name` is the file named in errors.
+tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
+                             std::vector<std::string>& warnings, const FolderGuard* guard) {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skipImage, nullptr);
+    if (guard) {
+        tinygltf::FsCallbacks guarded{&existsResolved, &tinygltf::ExpandFilePath, &readInsideFolder,
+                                      &tinygltf::WriteWholeFile, const_cast<FolderGuard*>(guard)};
+        loader.SetFsCallbacks(guarded);
+    } else if (baseDir.empty()) {
+        tinygltf::FsCallbacks noFiles{};
+        noFiles.FileExists = [](const std::string&, void*) { return false; };
+        noFiles.ExpandFilePath = [](const std::string& p, void*) { return p; };
+        noFiles.ReadWholeFile = [](std::vector<unsigned char>*, std::string* err, const std::string& p, void*) {
+            if (err) *err += "external file refused: " + p + "\n";
+            return false;
+        };
+        noFiles.WriteWholeFile = [](std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+            return false;
+        };
+        loader.SetFsCallbacks(noFiles);
+    }
+    tinygltf::Model model;
+    std::string err, warn;
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
+                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
+    if (!ok) {
+        std::vector<std::string> lines;
+        appendLines(err, lines);
+        throw InputError(name, lines.empty() ? std::string("tinygltf failed without a message") : lines.front());
+    }
+    appendLines(warn, warnings);
+    appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
+    return model;
+}
+
+}  // namespace
+
+tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
+                           std::vector<std::string>& warnings) {
+    return parseGuarded(bytes, binary, name, baseDir, warnings, nullptr);
+}
+
+tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options,
+                          std::vector<std::string>& warnings) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a glTF file");
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".glb" && ext != ".gltf") throw InputError(path, "expected a .gltf or .glb file");
+    std::string baseDir = std::filesystem::path(path).parent_path().string();
+    if (baseDir.empty()) baseDir = ".";
+    FolderGuard guard;
+    guard.baseDir = baseDir;
+    guard.root = std::filesystem::weakly_canonical(baseDir, ec);
+    guard.allowOutside = options.allowExternalPaths;
+    if (ec) throw InputError(path, "cannot resolve the model's folder: " + ec.message());
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > options.limits.maxFileBytes)
+        throw InputError(path, "file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                                   std::to_string(options.limits.maxFileBytes) + " bytes");
+    const std::string bytes = readFile(path);
+    checkDeclaredSizes(bytes, ext == ".glb", path, options.limits);
+    return parseGuarded(bytes, ext == ".glb", path, baseDir, warnings, &guard);
+}
+
+}  // namespace shadelab::gltf

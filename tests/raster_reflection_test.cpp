@@ -1,0 +1,153 @@
+// Raster planar reflection against the reference (issue 5): a kr = 0.5 checker mirror under three spheres,
+// the tracer at depth 1, gated as design.md §4 with the reflected silhouettes added to the silhouette band;
+// a kr that differs between the renderers must fail.
+#include "image/compare.h"
+#include "image/compare_report.h"
+#include "image/encode.h"
+#include "raster/offscreen.h"
+#include "scene/coverage.h"
+#include "trace/trace_image.h"
+#include "gl_fixture.h"
+#include "test_output.h"
+
+#include <memory>
+#include <string>
+
+using namespace shadelab;
+
+namespace {
+
+constexpr int kWidth = 192, kHeight = 128;
+
+raster::RasterRenderer& renderer() {
+    static std::unique_ptr<raster::RasterRenderer> r;
+    if (!r) r = std::make_unique<raster::RasterRenderer>();
+    return *r;
+}
+
+Material material(glm::vec3 colour) {
+    Material m;
+    m.ma = colour;
+    m.md = colour;
+    m.ms = glm::vec3(0.5f);
+    m.s = 32.0f;
+    return m;
+}
+
+Scene mirrorScene(float kr) {
+    Scene scene;
+    scene.camera.position = {0.0f, 2.2f, 6.0f};
+    scene.camera.target = {0.0f, 0.6f, 0.0f};
+    scene.camera.fovY = 40.0f;
+    scene.ambient = glm::vec3(0.15f);
+    scene.background = glm::vec3(0.05f, 0.05f, 0.08f);
+    scene.terms = Terms{true, true, true, false, true};
+    Plane floor;
+    floor.material = material(glm::vec3(0.6f));
+    floor.material.kr = glm::vec3(kr);
+    floor.checker = Checker{glm::vec3(0.2f), 0.75f};
+    scene.planes.push_back(floor);
+    const glm::vec3 colours[3] = {{0.8f, 0.2f, 0.2f}, {0.2f, 0.7f, 0.3f}, {0.2f, 0.3f, 0.9f}};
+    const glm::vec3 centres[3] = {{-1.5f, 0.7f, 0.0f}, {0.0f, 1.0f, -0.6f}, {1.4f, 0.6f, 0.7f}};
+    const float radii[3] = {0.6f, 0.8f, 0.5f};
+    for (int i = 0; i < 3; ++i) scene.spheres.push_back({"", centres[i], radii[i], material(colours[i])});
+    Light key;
+    key.position = {-3.0f, 5.0f, 4.0f};
+    scene.lights.push_back(key);
+    return scene;
+}
+
+// The scene's mirror image without the mirror: its coverage is what each mirror pixel reflects.
+Scene reflectedOnly(Scene scene) {
+    const Plane p = scene.planes[0];
+    scene.planes.clear();
+    for (Sphere& s : scene.spheres) s.center -= 2.0f * (glm::dot(p.normal, s.center) - p.offset) * p.normal;
+    return scene;
+}
+
+// Mirror pixels get an id that also names the object they reflect, so reflected silhouettes fall into the
+// silhouette band of compareImages exactly as direct ones do.
+void addReflectedIds(std::vector<uint32_t>& coverage, const std::vector<uint32_t>& reflected, uint32_t mirrorId) {
+    for (size_t i = 0; i < coverage.size(); ++i)
+        if (coverage[i] == mirrorId) coverage[i] = mirrorId | ((reflected[i] + 1u) << 16);
+}
+
+struct Rendered {
+    Image8 pixels;
+    std::vector<uint32_t> coverage;
+};
+
+Rendered rasterize(const Scene& scene) {
+    raster::RasterRenderer& r = renderer();
+    r.uploadMeshes(scene);
+    raster::OffscreenOptions o;
+    o.width = kWidth;
+    o.height = kHeight;
+    o.coverage = true;
+    raster::OffscreenResult out = raster::renderOffscreen(r, scene, o);
+    return {std::move(out.pixels), std::move(out.coverage)};
+}
+
+Rendered traceAtDepthOne(const Scene& scene) {
+    trace::TraceSettings s;
+    s.width = kWidth;
+    s.height = kHeight;
+    s.maxDepth = 1;
+    trace::TraceOutput out = trace::traceImage(scene, s);
+    return {toImage8(out.color, Encoding::Srgb), std::move(out.coverage)};
+}
+
+CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene, const std::string& name) {
+    Rendered a = rasterize(rasterScene), b = traceAtDepthOne(tracedScene);
+    const uint32_t mirrorId = planeCoverageId(rasterScene, 0);
+    // Each renderer supplies its own reflected coverage, from the mirrored scene.
+    addReflectedIds(a.coverage, rasterize(reflectedOnly(rasterScene)).coverage, mirrorId);
+    addReflectedIds(b.coverage, traceAtDepthOne(reflectedOnly(tracedScene)).coverage, mirrorId);
+    CompareResult c = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
+    std::printf("%s: interior mean %.3f, %.3f%% over 3/255, max %d; band %lld px\n", name.c_str(), c.interior.mean,
+                100.0 * c.interior.fractionOver(), c.interior.max, (long long)c.band.pixels);
+    if (!c.pass) {
+        std::printf("%s: gates failed; evidence:\n", name.c_str());
+        for (const std::string& f : writeCompareEvidence(test::outputPath(name), a.pixels, b.pixels, c))
+            std::printf("  %s\n", f.c_str());
+    }
+    return c;
+}
+
+}  // namespace
+
+class RasterReflection : public test::GlTest {};
+
+TEST_F(RasterReflection, MirrorPlaneMatchesReferenceAtDepthOne) {
+    const Scene scene = mirrorScene(0.5f);
+    CompareResult r = compareRenders(scene, scene, "reflection_mirror_plane");
+    EXPECT_TRUE(r.pass) << compareSummary(r);
+}
+
+TEST_F(RasterReflection, MirrorPlaneWithShadowsMatchesReferenceUnderShadowGates) {
+    Scene scene = mirrorScene(0.5f);
+    scene.terms.shadows = true;
+    Rendered a = rasterize(scene), b = traceAtDepthOne(scene);
+    const uint32_t mirrorId = planeCoverageId(scene, 0);
+    addReflectedIds(a.coverage, rasterize(reflectedOnly(scene)).coverage, mirrorId);
+    addReflectedIds(b.coverage, traceAtDepthOne(reflectedOnly(scene)).coverage, mirrorId);
+    CompareResult r = compareImages(a.pixels, b.pixels, a.coverage, b.coverage, CompareGates{3, 0.01, 255, 0.02, 1.0});
+    EXPECT_TRUE(r.pass) << compareSummary(r);
+}
+
+TEST_F(RasterReflection, KrDifferingBetweenRenderersFails) {
+    CompareResult r = compareRenders(mirrorScene(0.5f), mirrorScene(0.4f), "negative_reflection_kr");
+    EXPECT_FALSE(r.pass) << "a kr of 0.5 against 0.4 passed the reflection gates:\n" << compareSummary(r);
+}
+
+TEST_F(RasterReflection, ReflectionsOffRendersNoMirror) {
+    Scene scene = mirrorScene(0.5f);
+    scene.terms.reflections = false;
+    Scene plain = scene;
+    plain.planes[0].material.kr = glm::vec3(0.0f);
+    raster::RasterRenderer& r = renderer();
+    r.uploadMeshes(scene);
+    const raster::RasterOutput a = raster::renderRaster(r, scene, kWidth, kHeight, false);
+    const raster::RasterOutput b = raster::renderRaster(r, plain, kWidth, kHeight, false);
+    EXPECT_TRUE(a.color.rgba == b.color.rgba);
+}
