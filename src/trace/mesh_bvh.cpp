@@ -7,7 +7,10 @@
 #include "trace/watertight.h"
 #include "util/check.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <utility>
 
 namespace shadelab::trace {
@@ -16,6 +19,11 @@ namespace {
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 }  // namespace
+
+bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::dvec3 n = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+    return n.x == 0.0 && n.y == 0.0 && n.z == 0.0;
+}
 
 MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     // Gather the finite triangles in scene order; `source` numbers every triangle, kept or not.
@@ -37,6 +45,7 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
                     v[k] = p.positions[idx[k]];
                 }
                 if (!finite(v[0]) || !finite(v[1]) || !finite(v[2])) continue;
+                if (isDegenerateTriangle(v[0], v[1], v[2])) continue;
                 Aabb box;
                 for (const glm::vec3& q : v) box.extend(q);
                 boxes.push_back(box);
@@ -53,6 +62,19 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
             }
             ++partIndex;
         }
+    }
+    // Pad every box by far more than a triangle hit's rounding, which scales with the coordinates' magnitude:
+    // otherwise a triangle lying in its box's face can round to a hit just before the box's rounded entry and
+    // be culled (SphereSet pads spheres the same way).
+    if (!boxes.empty()) {
+        const glm::vec3 m = glm::max(glm::abs(bounds_.lo), glm::abs(bounds_.hi));
+        const glm::vec3 pad(1e-6f * std::max({m.x, m.y, m.z, 1e-30f}));
+        for (Aabb& b : boxes) {
+            b.lo -= pad;
+            b.hi += pad;
+        }
+        bounds_.lo -= pad;
+        bounds_.hi += pad;
     }
     bvh_ = buildBvh(boxes, options);
 

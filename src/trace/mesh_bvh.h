@@ -20,6 +20,11 @@ struct MeshHit {
     float b0, b1, b2;       // barycentric weights of the triangle's vertices 0, 1, 2
 };
 
+// True for a triangle with exactly zero area (collinear or repeated corners, cross product computed in
+// double). GL rasterizes no fragment for one, so the tracer leaves it out too: the watertight test would
+// otherwise report hits at rounding-noise distances for rays in its plane.
+bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
 class MeshBvh {
 public:
     // Triangles with a non-finite vertex are left out (they cannot be hit); indices must be in range.

@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "trace/ray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -93,7 +94,7 @@ inline MeshPart fanPart(glm::vec3 apex, float r, float ringZ, int n) {
     std::vector<glm::vec3> v = {apex};
     std::vector<uint32_t> idx;
     for (int k = 0; k < n; ++k) {
-        const double a = 2.0 * M_PI * double(k) / double(n);
+        const double a = 2.0 * 3.14159265358979323846 * double(k) / double(n);
         v.emplace_back(apex.x + r * float(std::cos(a)), apex.y + r * float(std::sin(a)), ringZ);
         idx.insert(idx.end(), {0u, uint32_t(1 + k), uint32_t(1 + (k + 1) % n)});
     }

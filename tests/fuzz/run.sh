@@ -15,10 +15,17 @@ cp assets/scenes/*.json tests/fuzz/regressions/*.json build-fuzz/corpus/json/ 2>
 find /usr/share/assimp/models/glTF2 -name '*.gltf' -size -200k -exec cp {} build-fuzz/corpus/gltf/ \; 2>/dev/null || true
 find /usr/share/assimp/models/glTF2 -name '*.glb' -size -200k -exec cp {} build-fuzz/corpus/gltf/ \; 2>/dev/null || true
 cp assets/models/*.gltf tests/fuzz/regressions/*.gl* build-fuzz/corpus/gltf/ 2>/dev/null || true
+# Both targets at once, one core each.
 for t in scene_json_fuzz:json gltf_fuzz:gltf; do
   name=${t%%:*}; dir=${t##*:}
-  echo "== $name for ${seconds}s"
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   build-fuzz/tests/fuzz/$name -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=262144 \
-    -artifact_prefix=build-fuzz/artifacts/$name- -print_final_stats=1 build-fuzz/corpus/$dir 2>&1 | tail -n 12
+    -artifact_prefix=build-fuzz/artifacts/$name- -print_final_stats=1 build-fuzz/corpus/$dir \
+    >build-fuzz/$name.log 2>&1 &
 done
+wait
+for name in scene_json_fuzz gltf_fuzz; do
+  echo "== $name (${seconds}s)"
+  grep -E '^#[0-9]+ +DONE|^stat::|ERROR|SUMMARY' build-fuzz/$name.log | tail -n 8
+done
+if ls build-fuzz/artifacts/* >/dev/null 2>&1; then echo "crashes found:"; ls build-fuzz/artifacts; exit 1; fi

@@ -1,0 +1,438 @@
+// The SAH BVH (bvh.h) and its traversals (mesh_bvh.h, sphere_set.h) against brute force: same nearest hit (t
+// bit-equal, same triangle) and any-hit answers for random rays over real assimp-testmodels meshes.
+// Sections: brute force | structural invariants | real models | degenerate inputs | spheres.
+#include "scene/scene_load.h"
+#include "shading/lighting.h"
+#include "trace/bvh.h"
+#include "trace/mesh_bvh.h"
+#include "trace/sphere_set.h"
+#include "trace/trace_test_util.h"
+#include "trace/watertight.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <thread>
+
+using namespace shadelab;
+using namespace shadelab::trace;
+
+namespace {
+
+// ---- Brute force over the scene's own triangles ---------------------------------------------------
+
+struct SceneTri {
+    float v[9];
+    uint32_t source;    // scene order over all triangles, as MeshBvh::sourceTriangle numbers them
+};
+
+bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// Every triangle with finite vertices, in scene order (mesh, part, triangle), read from the Scene itself.
+std::vector<SceneTri> sceneTriangles(const Scene& scene) {
+    std::vector<SceneTri> out;
+    uint32_t source = 0;
+    for (const Mesh& m : scene.meshes)
+        for (const MeshPart& p : m.parts)
+            for (size_t t = 0; t < p.triangleCount(); ++t, ++source) {
+                const glm::vec3 a = p.positions[p.indices[3 * t]], b = p.positions[p.indices[3 * t + 1]],
+                                c = p.positions[p.indices[3 * t + 2]];
+                if (finite(a) && finite(b) && finite(c) && !isDegenerateTriangle(a, b, c))
+                    out.push_back({{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z}, source});
+            }
+    return out;
+}
+
+struct Nearest {
+    float t = INFINITY;
+    uint32_t source = UINT32_MAX;   // UINT32_MAX: miss
+};
+
+// Nearest hit over all triangles with the same watertight test; a tie keeps the earlier (lower) source.
+// Any hit below tMax exists exactly when the nearest hit is below tMax, so one pass answers both queries.
+// For speed (121k triangles × 10k rays), a triangle whose bounding sphere, grown by 1e-3 of the model's
+// size (about 10^4 times the test's rounding), lies off the ray is skipped: a hit there is impossible.
+// Triangles go in cache-sized blocks in scene order, so the answer is exactly that of the plain loop.
+std::vector<Nearest> bruteForceAll(const std::vector<SceneTri>& tris, const std::vector<Ray>& rays) {
+    Aabb all;
+    for (const SceneTri& t : tris)
+        for (int k = 0; k < 3; ++k) all.extend(glm::make_vec3(t.v + 3 * k));
+    const float margin = 1e-3f * glm::length(all.hi - all.lo) + 1e-6f;
+    std::vector<float> sphere(4 * tris.size());  // centre and squared radius with margin; plain floats, fast at -O0
+    for (size_t i = 0; i < tris.size(); ++i) {
+        const glm::vec3 a = glm::make_vec3(tris[i].v), b = glm::make_vec3(tris[i].v + 3), c = glm::make_vec3(tris[i].v + 6);
+        const glm::vec3 m = (a + b + c) / 3.0f;
+        const float r = std::max({glm::length(a - m), glm::length(b - m), glm::length(c - m)}) + margin;
+        sphere[4 * i] = m.x, sphere[4 * i + 1] = m.y, sphere[4 * i + 2] = m.z, sphere[4 * i + 3] = r * r;
+    }
+    std::vector<Nearest> out(rays.size());
+    const size_t n = std::max(2u, std::thread::hardware_concurrency()), block = 1024;
+    std::vector<std::thread> workers;
+    for (size_t w = 0; w < n; ++w)
+        workers.emplace_back([&, w] {
+            std::vector<uint8_t> near(block);
+            for (size_t first = 0; first < tris.size(); first += block) {
+                const size_t count = std::min(block, tris.size() - first);
+                for (size_t i = w; i < rays.size(); i += n) {
+                    const float ox = rays[i].origin.x, oy = rays[i].origin.y, oz = rays[i].origin.z;
+                    const float dx = rays[i].dir.x, dy = rays[i].dir.y, dz = rays[i].dir.z;
+                    const float* sp = &sphere[4 * first];
+                    for (size_t k = 0; k < count; ++k, sp += 4) {  // branch-free, so it vectorizes
+                        const float cx = sp[0] - ox, cy = sp[1] - oy, cz = sp[2] - oz;
+                        const float along = cx * dx + cy * dy + cz * dz;
+                        const float px = cx - along * dx, py = cy - along * dy, pz = cz - along * dz;
+                        near[k] = (px * px + py * py + pz * pz <= sp[3]) & (along >= 0.0f || along * along <= sp[3]);
+                    }
+                    const WatertightRay wr = makeWatertightRay(rays[i]);
+                    Nearest best = out[i];
+                    for (size_t k = 0; k < count; ++k) {
+                        if (!near[k]) continue;
+                        const float* v = tris[first + k].v;
+                        const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, INFINITY);
+                        if (h && h->t < best.t) best = {h->t, tris[first + k].source};
+                    }
+                    out[i] = best;
+                }
+            }
+        });
+    for (std::thread& t : workers) t.join();
+    return out;
+}
+
+// Half the rays start anywhere in or around the bounds with a random direction; half aim at a random point
+// of a random triangle, so that most of those hit and probe the tree's interior.
+std::vector<Ray> randomRays(const std::vector<SceneTri>& tris, const Aabb& b, int n, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    std::normal_distribution<float> g;
+    const glm::vec3 ext = b.hi - b.lo;
+    const float pad = 0.25f * std::max({ext.x, ext.y, ext.z, 1e-3f});
+    const glm::vec3 lo = b.lo - glm::vec3(pad), size = ext + glm::vec3(2.0f * pad);
+    std::vector<Ray> rays;
+    for (int i = 0; i < n; ++i) {
+        const glm::vec3 o = lo + glm::vec3(u01(rng), u01(rng), u01(rng)) * size;
+        if (i % 2 == 0) {
+            rays.push_back(Ray{o, glm::normalize(glm::vec3(g(rng), g(rng), g(rng)))});
+            continue;
+        }
+        const SceneTri& t = tris[std::min(size_t(u01(rng) * float(tris.size())), tris.size() - 1)];
+        float w0 = u01(rng), w1 = u01(rng);
+        if (w0 + w1 > 1.0f) w0 = 1.0f - w0, w1 = 1.0f - w1;
+        const glm::vec3 a(t.v[0], t.v[1], t.v[2]), bb(t.v[3], t.v[4], t.v[5]), c(t.v[6], t.v[7], t.v[8]);
+        const glm::vec3 target = a + w0 * (bb - a) + w1 * (c - a);
+        if (glm::length(target - o) > 0.0f) rays.push_back(test::rayTowards(o, target));
+    }
+    return rays;
+}
+
+// "ray i o=(...) d=(...)" with every float digit, so a failing ray can be replayed.
+std::string describe(size_t i, const Ray& r) {
+    std::ostringstream s;
+    s << std::setprecision(9) << "ray " << i << " o=(" << r.origin.x << "f, " << r.origin.y << "f, " << r.origin.z
+      << "f) d=(" << r.dir.x << "f, " << r.dir.y << "f, " << r.dir.z << "f)";
+    return s.str();
+}
+
+struct Disagreement {
+    size_t rays = 0, hits = 0, closest = 0, any = 0;
+    std::string first, firstAny;
+};
+
+// MeshBvh against the brute-force answers: nearest hit (t bit-equal and the same source triangle, or both
+// miss) and anyHit at tMax = ∞, the brute-force t itself (strict, so false), half and twice it, and a
+// spread of fixed values. (tMax one float above a hit: MeshBvhRobustness below.)
+Disagreement compare(const MeshBvh& bvh, const std::vector<Ray>& rays, const std::vector<Nearest>& brute) {
+    Disagreement d;
+    d.rays = rays.size();
+    const float tScale = glm::length(bvh.bounds().hi - bvh.bounds().lo);
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const Nearest& b = brute[i];
+        const std::optional<MeshHit> h = bvh.closestHit(rays[i], INFINITY);
+        d.hits += b.source != UINT32_MAX;
+        const bool same = h ? (b.source != UINT32_MAX && h->t == b.t && bvh.sourceTriangle(h->slot) == b.source)
+                            : b.source == UINT32_MAX;
+        if (!same && d.closest++ == 0) {
+            std::ostringstream s;
+            s << std::setprecision(9) << describe(i, rays[i]) << ": bvh t " << (h ? h->t : -1.0f) << " tri "
+              << (h ? int64_t(bvh.sourceTriangle(h->slot)) : -1) << ", brute t " << b.t << " tri " << int64_t(b.source);
+            d.first = s.str();
+        }
+        const float tMaxes[] = {INFINITY, b.t, 0.5f * b.t, 2.0f * b.t, float(i % 97) * 0.05f * tScale};
+        for (const float tMax : tMaxes)
+            if (bvh.anyHit(rays[i], tMax) != (b.t < tMax) && d.any++ == 0)
+                d.firstAny = describe(i, rays[i]) + ", tMax " + std::to_string(tMax) + ", brute t " + std::to_string(b.t);
+    }
+    return d;
+}
+
+std::vector<Aabb> boxesOf(const std::vector<SceneTri>& tris) {
+    std::vector<Aabb> boxes(tris.size());
+    for (size_t i = 0; i < tris.size(); ++i)
+        for (int k = 0; k < 3; ++k) boxes[i].extend(glm::make_vec3(tris[i].v + 3 * k));
+    return boxes;
+}
+
+// ---- Structural invariants ------------------------------------------------------------------------
+
+bool contains(const float* outer, const Aabb& b) {
+    for (int a = 0; a < 3; ++a)
+        if (b.lo[a] < outer[a] || b.hi[a] > outer[3 + a]) return false;
+    return true;
+}
+
+Aabb box(glm::vec3 lo, glm::vec3 hi) { return Aabb{lo, hi}; }
+
+// Every primitive in exactly one leaf, leaves of 1..maxLeaf primitives whose boxes hold them, children
+// inside their parent, sibling pairs at even indices, and the reported depth right and below the limit.
+::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Aabb>& boxes, int maxLeaf) {
+    if (boxes.empty()) return bvh.empty() ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << "not empty";
+    if (bvh.order.size() != boxes.size()) return ::testing::AssertionFailure() << "order has " << bvh.order.size();
+    std::vector<int> seen(boxes.size(), 0);
+    int maxDepth = 0;
+    size_t visited = 0;
+    std::vector<std::pair<uint32_t, int>> stack{{0u, 0}};
+    while (!stack.empty()) {
+        const auto [ni, depth] = stack.back();
+        stack.pop_back();
+        ++visited;
+        maxDepth = std::max(maxDepth, depth);
+        const BvhNode& n = bvh.nodes[ni];
+        if (n.isLeaf()) {
+            if (n.count > uint32_t(maxLeaf)) return ::testing::AssertionFailure() << "leaf " << ni << " holds " << n.count;
+            if (size_t(n.first) + n.count > bvh.order.size()) return ::testing::AssertionFailure() << "leaf range";
+            for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+                const uint32_t p = bvh.order[k];
+                if (p >= boxes.size() || seen[p]++) return ::testing::AssertionFailure() << "primitive " << p << " twice";
+                if (!contains(n.bounds, boxes[p])) return ::testing::AssertionFailure() << "leaf " << ni << " misses box " << p;
+            }
+            continue;
+        }
+        if (n.first % 2 != 0 || n.first < 2 || size_t(n.first) + 1 >= bvh.nodes.size())
+            return ::testing::AssertionFailure() << "node " << ni << " has children at " << n.first;
+        for (uint32_t c = n.first; c <= n.first + 1; ++c) {
+            if (!contains(n.bounds, box(glm::make_vec3(bvh.nodes[c].lo()), glm::make_vec3(bvh.nodes[c].hi()))))
+                return ::testing::AssertionFailure() << "child " << c << " outside";
+            stack.emplace_back(c, depth + 1);
+        }
+    }
+    if (visited + 1 != bvh.nodes.size()) return ::testing::AssertionFailure() << "unreachable nodes";
+    if (maxDepth != bvh.depth || bvh.depth >= kMaxBvhDepth)
+        return ::testing::AssertionFailure() << "depth " << maxDepth << " vs reported " << bvh.depth;
+    return ::testing::AssertionSuccess();
+}
+
+// ---- Real models ---------------------------------------------------------------------------------
+
+struct ModelCase {
+    const char* path;   // under /usr/share/assimp/models/glTF2
+    int rays;
+};
+
+class BvhModel : public ::testing::TestWithParam<ModelCase> {};
+
+TEST_P(BvhModel, MatchesBruteForce) {
+    const std::string path = test::modelPath(GetParam().path);
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is missing (install assimp-testmodels)";
+    const Scene scene = loadScene(path);
+    const std::vector<SceneTri> tris = sceneTriangles(scene);
+    ASSERT_FALSE(tris.empty());
+    const MeshBvh bvh(scene);
+    ASSERT_EQ(bvh.triangleCount(), tris.size());
+    EXPECT_TRUE(bvhIsValid(bvh.bvh(), boxesOf(tris), BvhBuildOptions{}.maxLeafSize));
+
+    const std::vector<Ray> rays = randomRays(tris, bvh.bounds(), GetParam().rays, 20240611u);
+    ASSERT_GE(rays.size(), size_t(GetParam().rays) - 50);
+    const std::vector<Nearest> brute = bruteForceAll(tris, rays);
+    const Disagreement d = compare(bvh, rays, brute);
+    std::printf("%s: %zu triangles, %zu rays, %zu hits\n", GetParam().path, tris.size(), d.rays, d.hits);
+    EXPECT_GT(d.hits, d.rays / 4) << "too few hits to test anything";
+    EXPECT_EQ(d.closest, 0u) << "nearest-hit disagreements; first: " << d.first;
+    EXPECT_EQ(d.any, 0u) << "any-hit disagreements; first: " << d.firstAny;
+
+    // Negative control: brute force that lost every 7th triangle must disagree with the BVH.
+    std::vector<SceneTri> fewer;
+    for (size_t i = 0; i < tris.size(); ++i)
+        if (i % 7 != 1) fewer.push_back(tris[i]);
+    const std::vector<Ray> some(rays.begin(), rays.begin() + std::min<std::ptrdiff_t>(2000, std::ptrdiff_t(rays.size())));
+    EXPECT_GT(compare(bvh, some, bruteForceAll(fewer, some)).closest, 0u) << "the comparison cannot see a lost triangle";
+}
+
+INSTANTIATE_TEST_SUITE_P(AssimpTestModels, BvhModel,
+                         ::testing::Values(ModelCase{"2CylinderEngine-glTF-Binary/2CylinderEngine.glb", 10000},
+                                           ModelCase{"BoxTextured-glTF-Binary/BoxTextured.glb", 20000},
+                                           ModelCase{"BoxBadNormals-glTF-Binary/BoxBadNormals.glb", 10000},
+                                           ModelCase{"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 10000},
+                                           ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_04.gltf", 10000},
+                                           ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_05.gltf", 10000},
+                                           ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_13.gltf", 10000}),
+                         [](const ::testing::TestParamInfo<ModelCase>& modelInfo) {
+                             std::string n = std::filesystem::path(modelInfo.param.path).stem().string();
+                             std::replace_if(n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+                             return n;
+                         });
+
+// ---- Degenerate inputs -----------------------------------------------------------------------------
+
+TEST(BvhBuild, EmptyAndSinglePrimitive) {
+    EXPECT_TRUE(buildBvh({}).empty());
+    const std::vector<Aabb> one = {box({1, 2, 3}, {4, 5, 6})};
+    const Bvh b = buildBvh(one);
+    EXPECT_TRUE(bvhIsValid(b, one, 4));
+    EXPECT_TRUE(b.nodes[0].isLeaf());
+    EXPECT_EQ(b.nodes[0].count, 1u);
+    EXPECT_EQ(b.depth, 0);
+}
+
+TEST(BvhBuild, IdenticalBoxesSplitByCountWithinTheDepthLimit) {
+    for (const size_t n : {size_t(5), size_t(1000), size_t(100000)})
+        for (const int leaf : {1, 4}) {
+            const std::vector<Aabb> same(n, box({-1, 0, 2}, {1, 0.5f, 3}));
+            BvhBuildOptions o;
+            o.maxLeafSize = leaf;
+            const Bvh b = buildBvh(same, o);
+            EXPECT_TRUE(bvhIsValid(b, same, leaf)) << n << " boxes, leaf " << leaf;
+            EXPECT_LE(b.depth, int(std::ceil(std::log2(double(n)))) + 1) << "object-median fallback should halve";
+        }
+    // Points and flat boxes: zero area everywhere.
+    std::vector<Aabb> flat;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int i = 0; i < 3000; ++i) {
+        const glm::vec3 p(u(rng), u(rng), 0.0f);
+        flat.push_back(i % 2 ? box(p, p) : box(p, p + glm::vec3(0.1f, 0.0f, 0.0f)));
+    }
+    EXPECT_TRUE(bvhIsValid(buildBvh(flat), flat, 4));
+}
+
+TEST(BvhBuild, OptionsAndSahCostOnRandomBoxes) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(-10.0f, 10.0f), s(0.0f, 0.3f);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 5000; ++i) {
+        const glm::vec3 p(u(rng), u(rng), u(rng));
+        boxes.push_back(box(p, p + glm::vec3(s(rng), s(rng), s(rng))));
+    }
+    for (const int bins : {2, 16, 100})
+        for (const int leaf : {0, 1, 8}) {
+            BvhBuildOptions o;
+            o.bins = bins;
+            o.maxLeafSize = leaf;
+            const Bvh b = buildBvh(boxes, o);
+            EXPECT_TRUE(bvhIsValid(b, boxes, std::max(leaf, 1))) << "bins " << bins << " leaf " << leaf;
+            EXPECT_LT(sahCost(b, o), 0.02f * float(boxes.size())) << "far worse than SAH should give";
+        }
+    // Negative control: the validator notices a shrunken leaf and a lost primitive.
+    Bvh broken = buildBvh(boxes);
+    size_t leafIndex = 0;
+    while (!broken.nodes[leafIndex].isLeaf() || leafIndex == 1) ++leafIndex;
+    broken.nodes[leafIndex].bounds[3] = broken.nodes[leafIndex].bounds[0];
+    EXPECT_FALSE(bvhIsValid(broken, boxes, 4));
+    broken = buildBvh(boxes);
+    broken.order[0] = broken.order[1];
+    EXPECT_FALSE(bvhIsValid(broken, boxes, 4));
+}
+
+// Zero-area triangles: points (i % 3 == 0), collinear slivers a, a + d/2, a + d (1), and one segment with a
+// repeated vertex (2); among them 200 small real triangles and 200 copies of one big triangle on top.
+Scene degenerateScene() {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> u(-2.0f, 2.0f);
+    MeshPart p;
+    auto add = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+        for (const glm::vec3& v : {a, b, c}) {
+            p.indices.push_back(uint32_t(p.positions.size()));
+            p.positions.push_back(v);
+            p.normals.push_back({0, 0, 1});
+        }
+    };
+    for (int i = 0; i < 4000; ++i) {
+        const glm::vec3 a(u(rng), u(rng), u(rng)), d(u(rng), u(rng), u(rng));
+        if (i % 3 == 0) add(a, a, a);
+        else if (i % 3 == 1) add(a, a + 0.5f * d, a + d);
+        else add({0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, {1, 1, 1});
+        if (i % 20 == 0) add(a, a + glm::vec3(u(rng), u(rng), 0.0f) * 0.3f, a + glm::vec3(0.0f, u(rng), u(rng)) * 0.3f);
+        if (i % 20 == 10) add({-3, -3, 3}, {3, -3, 3}, {0, 3, 3});  // above everything else
+    }
+    Scene sc;
+    sc.meshes.push_back(Mesh{});
+    sc.meshes[0].parts.push_back(p);
+    return sc;
+}
+
+TEST(BvhBuild, ZeroAreaAndDuplicateTrianglesMatchBruteForce) {
+    // The builder copes with thousands of zero-area boxes, the traversal agrees with brute force, points and
+    // repeated-vertex segments are never hit, and 200 identical triangles tie to the first one.
+    const Scene sc = degenerateScene();
+    const std::vector<SceneTri> tris = sceneTriangles(sc);
+    const MeshBvh bvh(sc);
+    EXPECT_TRUE(bvhIsValid(bvh.bvh(), boxesOf(tris), 4));
+    std::vector<Ray> rays = randomRays(tris, bvh.bounds(), 10000, 99u);
+    rays.push_back(Ray{{0.1f, 0.1f, 5.0f}, {0, 0, -1}});
+    const std::vector<Nearest> brute = bruteForceAll(tris, rays);
+    const Disagreement d = compare(bvh, rays, brute);
+    EXPECT_EQ(d.closest, 0u) << d.first;
+    EXPECT_EQ(d.any, 0u) << d.firstAny;
+    for (const Nearest& n : brute) {
+        if (n.source == UINT32_MAX) continue;
+        // Degenerate triangles are left out of `tris` (and of the BVH), so look the hit up by source number.
+        const auto it = std::lower_bound(tris.begin(), tris.end(), n.source,
+                                         [](const SceneTri& t, uint32_t src) { return t.source < src; });
+        ASSERT_TRUE(it != tris.end() && it->source == n.source);
+        const float* v = it->v;
+        const bool point = v[0] == v[3] && v[1] == v[4] && v[2] == v[5] && v[0] == v[6] && v[1] == v[7] && v[2] == v[8];
+        EXPECT_FALSE(point || (v[0] == 0.5f && v[3] == 0.5f && v[6] == 1.0f)) << "triangle " << n.source << " was hit";
+    }
+    const std::optional<MeshHit> copy = bvh.closestHit(rays.back(), INFINITY);
+    ASSERT_TRUE(copy);
+    uint32_t firstCopy = 0;
+    while (tris[firstCopy].v[0] != -3.0f) ++firstCopy;
+    EXPECT_EQ(bvh.sourceTriangle(copy->slot), tris[firstCopy].source) << "a tie must go to the first copy";
+}
+
+TEST(SphereSetBvh, MatchesBruteForce) {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f), r(0.05f, 0.6f);
+    std::normal_distribution<float> g;
+    std::vector<Sphere> spheres;
+    for (int i = 0; i < 400; ++i) spheres.push_back(Sphere{"", {u(rng), u(rng), u(rng)}, r(rng), Material{}});
+    spheres.push_back(spheres[7]);  // an exact duplicate: ties go to the lower index
+    std::vector<Ray> rays;
+    for (int i = 0; i < 20000; ++i)
+        rays.push_back({{u(rng) * 1.3f, u(rng) * 1.3f, u(rng) * 1.3f}, glm::normalize(glm::vec3(g(rng), g(rng), g(rng)))});
+    size_t hits = 0;
+    auto mismatches = [&](const SphereSet& set) {
+        size_t bad = 0;
+        hits = 0;
+        for (size_t i = 0; i < rays.size(); ++i) {
+            const Ray& ray = rays[i];
+            const float tMin = i % 2 ? 0.0f : 1e-3f;
+            float best = INFINITY;
+            uint32_t index = UINT32_MAX;
+            for (size_t k = 0; k < spheres.size(); ++k) {
+                const float t = shading::intersectSphere(ray.origin, ray.dir, spheres[k].center, spheres[k].radius, tMin);
+                if (t > tMin && t < best) best = t, index = uint32_t(k);
+            }
+            const std::optional<SphereHit> h = set.closestHit(ray, tMin, INFINITY);
+            hits += index != UINT32_MAX;
+            bad += h ? !(h->t == best && h->index == index) : index != UINT32_MAX;
+            for (const float tMax : {INFINITY, best, std::nextafter(best, INFINITY), 0.5f * best})
+                bad += set.anyHit(ray, tMin, tMax) != (best < tMax);
+        }
+        return bad;
+    };
+    EXPECT_EQ(mismatches(SphereSet(spheres)), 0u);
+    EXPECT_GT(hits, 2000u);
+    // Negative control: a set of spheres 1 % smaller disagrees.
+    std::vector<Sphere> smaller(spheres);
+    for (Sphere& sp : smaller) sp.radius *= 0.99f;
+    EXPECT_GT(mismatches(SphereSet(smaller)), 100u);
+}
+
+}  // namespace
