@@ -21,8 +21,11 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
         vec3 c = shadeLight(N, L, V, Il, md, u_ms, u_s, u_flags.x, (terms & 2) != 0, (terms & 4) != 0);
+#if SL_SHADOWS
         // vis_l multiplies diffuse + specular only; no lookup where N·L <= 0 (the term is 0 there anyway).
-        if ((u_flags.w & 1) != 0 && dot(N, L) > 0.0f) c *= shadowVisibility(i, P, normalize(N));
+        // A compile-time switch, not a uniform one: llvmpipe would evaluate the lookup for every fragment.
+        if (dot(N, L) > 0.0f) c *= shadowVisibility(i, P, normalize(N));
+#endif
         I += c;
     }
     return I;

@@ -19,18 +19,26 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform1ui(p.uniform("u_objectId"), objectId);
 }
 
+const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const FrameBlock& frame) const {
+    return (frame.flags.w & kPassShadows) ? shadowed_ : local_;
+}
+
 void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, int skipPlane, bool mirrored) const {
+    const ColorPrograms& programs = programsFor(frame);
+    const gl::Program& meshProgram = programs.mesh;
+    const gl::Program& sphereProgram = programs.sphere;
+    const gl::Program& planeProgram = programs.plane;
     // A mirror reverses winding: front faces (for culling and gl_FrontFacing) become clockwise.
     glFrontFace(mirrored ? GL_CW : GL_CCW);
 
     // Meshes first: they keep early depth testing, and the impostors behind them are rejected cheaply.
     glDisable(GL_CULL_FACE);  // two-sided lighting: back faces are lit with the flipped normal
-    glUseProgram(meshProgram_.id());
+    glUseProgram(meshProgram.id());
     glBindVertexArray(meshVao_.id());
     for (const DrawRange& r : ranges_) {
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
         if (outsideClip(frame.viewProj, r.lo, r.hi)) continue;
-        setMaterial(meshProgram_, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
+        setMaterial(meshProgram, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
     }
@@ -38,40 +46,40 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, int
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
-    glUseProgram(sphereProgram_.id());
+    glUseProgram(sphereProgram.id());
     glBindVertexArray(cubeVao_.id());
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
-        setMaterial(sphereProgram_, s.material, sphereCoverageId(scene, i));
-        glUniform3fv(sphereProgram_.uniform("u_center"), 1, glm::value_ptr(s.center));
-        glUniform1f(sphereProgram_.uniform("u_radius"), s.radius);
+        setMaterial(sphereProgram, s.material, sphereCoverageId(scene, i));
+        glUniform3fv(sphereProgram.uniform("u_center"), 1, glm::value_ptr(s.center));
+        glUniform1f(sphereProgram.uniform("u_radius"), s.radius);
         glDrawArrays(GL_TRIANGLES, 0, 36);
     }
     glDisable(GL_CULL_FACE);
 
     // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
-    glUseProgram(planeProgram_.id());
+    glUseProgram(planeProgram.id());
     glBindVertexArray(emptyVao_.id());
     const glm::vec3 eye(frame.eye);
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         if (int(i) == skipPlane) continue;  // a mirror does not see itself
         const Plane& p = scene.planes[i];
-        setMaterial(planeProgram_, p.material, planeCoverageId(scene, i));
+        setMaterial(planeProgram, p.material, planeCoverageId(scene, i));
         const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
         const glm::vec3 centre = eye - eyeHeight * p.normal;
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
-        glUniform3fv(planeProgram_.uniform("u_planeCenter"), 1, glm::value_ptr(centre));
-        glUniform3fv(planeProgram_.uniform("u_planeT"), 1, glm::value_ptr(t));
-        glUniform3fv(planeProgram_.uniform("u_planeB"), 1, glm::value_ptr(b));
-        glUniform3fv(planeProgram_.uniform("u_planeNormal"), 1, glm::value_ptr(p.normal));
-        glUniform1f(planeProgram_.uniform("u_planeOffset"), p.offset);
-        glUniform1i(planeProgram_.uniform("u_checker"), p.checker ? 1 : 0);
+        glUniform3fv(planeProgram.uniform("u_planeCenter"), 1, glm::value_ptr(centre));
+        glUniform3fv(planeProgram.uniform("u_planeT"), 1, glm::value_ptr(t));
+        glUniform3fv(planeProgram.uniform("u_planeB"), 1, glm::value_ptr(b));
+        glUniform3fv(planeProgram.uniform("u_planeNormal"), 1, glm::value_ptr(p.normal));
+        glUniform1f(planeProgram.uniform("u_planeOffset"), p.offset);
+        glUniform1i(planeProgram.uniform("u_checker"), p.checker ? 1 : 0);
         const Checker c = p.checker.value_or(Checker{});
-        glUniform3fv(planeProgram_.uniform("u_md2"), 1, glm::value_ptr(c.md2));
-        glUniform1f(planeProgram_.uniform("u_checkerSize"), c.size);
+        glUniform3fv(planeProgram.uniform("u_md2"), 1, glm::value_ptr(c.md2));
+        glUniform1f(planeProgram.uniform("u_checkerSize"), c.size);
         const int mirror = !mirrored && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
-        glUniform1i(planeProgram_.uniform("u_mirror"), mirror >= 0 ? 1 : 0);
-        glUniform3fv(planeProgram_.uniform("u_kr"), 1, glm::value_ptr(p.material.kr));
+        glUniform1i(planeProgram.uniform("u_mirror"), mirror >= 0 ? 1 : 0);
+        glUniform3fv(planeProgram.uniform("u_kr"), 1, glm::value_ptr(p.material.kr));
         if (mirror >= 0) {
             glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
             glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());

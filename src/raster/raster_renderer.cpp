@@ -46,8 +46,9 @@ std::array<glm::vec3, 36> unitCube() {
     return v;
 }
 
-std::string programDefines() {
-    return "#define SL_MAX_LIGHTS " + std::to_string(kMaxLights) + "\n#define SL_MAX_SHADOWED " +
+std::string programDefines(bool shadows) {
+    return std::string("#define SL_SHADOWS ") + (shadows ? "1" : "0") + "\n#define SL_MAX_LIGHTS " +
+           std::to_string(kMaxLights) + "\n#define SL_MAX_SHADOWED " +
            std::to_string(kMaxShadowedLights) + "\n#define SL_MAX_SHADOW_LAYERS " + std::to_string(kMaxShadowLayers) +
            "\n#define SL_MAX_SHADOW_PLANES " + std::to_string(kMaxShadowPlanes) + "\n";
 }
@@ -93,19 +94,23 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
 
 }  // namespace
 
-RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
-    : meshProgram_(gl::Program::build(shaders, "mesh.vert", "mesh.frag", programDefines())),
-      sphereProgram_(gl::Program::build(shaders, "sphere.vert", "sphere.frag", programDefines())),
-      planeProgram_(gl::Program::build(shaders, "plane.vert", "plane.frag", programDefines())),
-      shadows_(shaders) {
-    for (const gl::Program* p : {&meshProgram_, &sphereProgram_, &planeProgram_}) {
-        p->bindBlock("Frame", kFrameBinding);
-        p->bindBlock("Shadows", kShadowBinding);
-        glUseProgram(p->id());
-        glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
+RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shadows_(shaders) {
+    // llvmpipe compiles lazily at the first draw, so the variant a scene never uses costs almost nothing.
+    for (bool withShadows : {false, true}) {
+        ColorPrograms& set = withShadows ? shadowed_ : local_;
+        const std::string defines = programDefines(withShadows);
+        set.mesh = gl::Program::build(shaders, "mesh.vert", "mesh.frag", defines);
+        set.sphere = gl::Program::build(shaders, "sphere.vert", "sphere.frag", defines);
+        set.plane = gl::Program::build(shaders, "plane.vert", "plane.frag", defines);
+        for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane}) {
+            p->bindBlock("Frame", kFrameBinding);
+            p->bindBlock("Shadows", kShadowBinding);
+            glUseProgram(p->id());
+            glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
+        }
+        glUseProgram(set.plane.id());
+        glUniform1i(set.plane.uniform("t_reflection"), GLint(kReflectionUnit));
     }
-    glUseProgram(planeProgram_.id());
-    glUniform1i(planeProgram_.uniform("t_reflection"), GLint(kReflectionUnit));
     glUseProgram(0);
 
     frameUbo_ = gl::Buffer::create();

@@ -56,7 +56,12 @@ private:
     void prepareShadows(const Scene& scene);
 
     RasterSettings settings_;
-    gl::Program meshProgram_, sphereProgram_, planeProgram_;
+    // The colour passes' programs, built twice: without and with shadow lookups (SL_SHADOWS).
+    struct ColorPrograms {
+        gl::Program mesh, sphere, plane;
+    };
+    const ColorPrograms& programsFor(const FrameBlock& frame) const;
+    ColorPrograms local_, shadowed_;
     ShadowMaps shadows_;
     std::vector<float> shadowKey_;        // what the current shadow maps were rendered from
     uint64_t meshGeneration_ = 0;         // bumped by uploadMeshes
