@@ -8,6 +8,7 @@
 #include "scene/coverage.h"
 #include "trace/trace_image.h"
 #include "gl_fixture.h"
+#include "render_compare.h"
 #include "test_output.h"
 
 #include <memory>
@@ -19,11 +20,7 @@ namespace {
 
 constexpr int kWidth = 192, kHeight = 128;
 
-raster::RasterRenderer& renderer() {
-    static std::unique_ptr<raster::RasterRenderer> r;
-    if (!r) r = std::make_unique<raster::RasterRenderer>();
-    return *r;
-}
+raster::RasterRenderer& renderer() { return test::sharedRasterRenderer(); }
 
 Material material(glm::vec3 colour) {
     Material m;
@@ -72,46 +69,20 @@ void addReflectedIds(std::vector<uint32_t>& coverage, const std::vector<uint32_t
         if (coverage[i] == mirrorId) coverage[i] = mirrorId | ((reflected[i] + 1u) << 16);
 }
 
-struct Rendered {
-    Image8 pixels;
-    std::vector<uint32_t> coverage;
-};
+using test::Rendered;
 
-Rendered rasterize(const Scene& scene) {
-    raster::RasterRenderer& r = renderer();
-    r.uploadMeshes(scene);
-    raster::OffscreenOptions o;
-    o.width = kWidth;
-    o.height = kHeight;
-    o.coverage = true;
-    raster::OffscreenResult out = raster::renderOffscreen(r, scene, o);
-    return {std::move(out.pixels), std::move(out.coverage)};
-}
+Rendered rasterize(const Scene& scene) { return test::rasterizeWithCoverage(scene, kWidth, kHeight); }
+Rendered traceAtDepthOne(const Scene& scene) { return test::traceWithCoverage(scene, kWidth, kHeight, 1); }
 
-Rendered traceAtDepthOne(const Scene& scene) {
-    trace::TraceSettings s;
-    s.width = kWidth;
-    s.height = kHeight;
-    s.maxDepth = 1;
-    trace::TraceOutput out = trace::traceImage(scene, s);
-    return {toImage8(out.color, Encoding::Srgb), std::move(out.coverage)};
-}
-
-CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene, const std::string& name) {
+// Each renderer supplies its own reflected coverage, from the mirrored scene, so reflected silhouettes fall
+// in the silhouette band like direct ones.
+CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene, const std::string& name,
+                             const CompareGates& gates = {}) {
     Rendered a = rasterize(rasterScene), b = traceAtDepthOne(tracedScene);
     const uint32_t mirrorId = planeCoverageId(rasterScene, 0);
-    // Each renderer supplies its own reflected coverage, from the mirrored scene.
     addReflectedIds(a.coverage, rasterize(reflectedOnly(rasterScene)).coverage, mirrorId);
     addReflectedIds(b.coverage, traceAtDepthOne(reflectedOnly(tracedScene)).coverage, mirrorId);
-    CompareResult c = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
-    std::printf("%s: interior mean %.3f, %.3f%% over 3/255, max %d; band %lld px\n", name.c_str(), c.interior.mean,
-                100.0 * c.interior.fractionOver(), c.interior.max, (long long)c.band.pixels);
-    if (!c.pass) {
-        std::printf("%s: gates failed; evidence:\n", name.c_str());
-        for (const std::string& f : writeCompareEvidence(test::outputPath(name), a.pixels, b.pixels, c))
-            std::printf("  %s\n", f.c_str());
-    }
-    return c;
+    return test::gateWithEvidence(a, b, gates, name);
 }
 
 }  // namespace
@@ -127,11 +98,7 @@ TEST_F(RasterReflection, MirrorPlaneMatchesReferenceAtDepthOne) {
 TEST_F(RasterReflection, MirrorPlaneWithShadowsMatchesReferenceUnderShadowGates) {
     Scene scene = mirrorScene(0.5f);
     scene.terms.shadows = true;
-    Rendered a = rasterize(scene), b = traceAtDepthOne(scene);
-    const uint32_t mirrorId = planeCoverageId(scene, 0);
-    addReflectedIds(a.coverage, rasterize(reflectedOnly(scene)).coverage, mirrorId);
-    addReflectedIds(b.coverage, traceAtDepthOne(reflectedOnly(scene)).coverage, mirrorId);
-    CompareResult r = compareImages(a.pixels, b.pixels, a.coverage, b.coverage, CompareGates{3, 0.01, 255, 0.02, 1.0});
+    CompareResult r = compareRenders(scene, scene, "reflection_with_shadows", CompareGates{3, 0.01, 255, 0.02, 1.0});
     EXPECT_TRUE(r.pass) << compareSummary(r);
 }
 

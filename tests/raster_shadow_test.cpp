@@ -8,6 +8,7 @@
 #include "scene/scene_load.h"
 #include "trace/trace_image.h"
 #include "gl_fixture.h"
+#include "render_compare.h"
 #include "test_output.h"
 
 #include <cmath>
@@ -25,11 +26,7 @@ constexpr int kWidth = 192, kHeight = 128;
 // gate is 1 % (not 0.1 %), no hard maximum, and the interior mean must stay within 1/255.
 const CompareGates kShadowGates{3, 0.01, 255, 0.02, 1.0};
 
-raster::RasterRenderer& renderer() {
-    static std::unique_ptr<raster::RasterRenderer> r;
-    if (!r) r = std::make_unique<raster::RasterRenderer>();
-    return *r;
-}
+raster::RasterRenderer& renderer() { return test::sharedRasterRenderer(); }
 
 Material material(glm::vec3 colour) {
     Material m;
@@ -78,28 +75,8 @@ Scene spheresOnPlane(int lights) {
 }
 
 CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene, const std::string& name) {
-    raster::RasterRenderer& r = renderer();
-    r.uploadMeshes(rasterScene);
-    raster::OffscreenOptions o;
-    o.width = kWidth;
-    o.height = kHeight;
-    o.coverage = true;
-    raster::OffscreenResult a = raster::renderOffscreen(r, rasterScene, o);
-    trace::TraceSettings s;
-    s.width = kWidth;
-    s.height = kHeight;
-    s.maxDepth = 1;
-    trace::TraceOutput b = trace::traceImage(tracedScene, s);
-    const Image8 traced = toImage8(b.color, Encoding::Srgb);
-    CompareResult c = compareImages(a.pixels, traced, a.coverage, b.coverage, kShadowGates);
-    std::printf("%s: interior mean %.3f, %.3f%% over 3/255, max %d\n", name.c_str(), c.interior.mean,
-                100.0 * c.interior.fractionOver(), c.interior.max);
-    if (!c.pass) {
-        std::printf("%s: gates failed; evidence:\n", name.c_str());
-        for (const std::string& f : writeCompareEvidence(test::outputPath(name), a.pixels, traced, c))
-            std::printf("  %s\n", f.c_str());
-    }
-    return c;
+    return test::gateWithEvidence(test::rasterizeWithCoverage(rasterScene, kWidth, kHeight),
+                                  test::traceWithCoverage(tracedScene, kWidth, kHeight, 1), kShadowGates, name);
 }
 
 }  // namespace

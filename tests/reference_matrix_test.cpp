@@ -10,7 +10,7 @@
 #include "scene/scene_load.h"
 #include "trace/trace_image.h"
 #include "gl_fixture.h"
-#include "test_output.h"
+#include "render_compare.h"
 
 #include <memory>
 #include <string>
@@ -100,42 +100,9 @@ Scene makeScene(const Case& c) {
     return scene;
 }
 
-struct Rendered {
-    Image8 pixels;
-    std::vector<uint32_t> coverage;
-};
-
-Rendered rasterize(const Scene& scene) {
-    static std::unique_ptr<raster::RasterRenderer> renderer;
-    if (!renderer) renderer = std::make_unique<raster::RasterRenderer>();
-    renderer->uploadMeshes(scene);
-    raster::OffscreenOptions o;
-    o.width = kWidth;
-    o.height = kHeight;
-    o.coverage = true;
-    raster::OffscreenResult r = raster::renderOffscreen(*renderer, scene, o);
-    return {std::move(r.pixels), std::move(r.coverage)};
-}
-
-Rendered traceReference(const Scene& scene) {
-    trace::TraceSettings s;
-    s.width = kWidth;
-    s.height = kHeight;
-    s.coverage = true;
-    trace::TraceOutput out = trace::traceImage(scene, s);
-    return {toImage8(out.color, Encoding::Srgb), std::move(out.coverage)};
-}
-
 CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene, const std::string& name) {
-    Rendered a = rasterize(rasterScene);
-    Rendered b = traceReference(tracedScene);
-    CompareResult r = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
-    if (!r.pass) {
-        std::vector<std::string> files = writeCompareEvidence(test::outputPath(name), a.pixels, b.pixels, r);
-        std::printf("%s: gates failed; evidence:\n", name.c_str());
-        for (const std::string& f : files) std::printf("  %s\n", f.c_str());
-    }
-    return r;
+    return test::gateWithEvidence(test::rasterizeWithCoverage(rasterScene, kWidth, kHeight),
+                                  test::traceWithCoverage(tracedScene, kWidth, kHeight), CompareGates{}, name);
 }
 
 std::vector<Case> allCases() {

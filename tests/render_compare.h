@@ -1,0 +1,68 @@
+// Raster against reference in the tests: render one scene with both renderers (pixels + coverage ids),
+// then gate the pair under design.md §4 and, when it fails, leave both images, the heatmap and the JSON
+// report behind. Shared by the matrix, shadow and reflection tests; the gates are the caller's.
+#pragma once
+
+#include "image/compare.h"
+#include "image/compare_report.h"
+#include "image/encode.h"
+#include "raster/offscreen.h"
+#include "trace/trace_image.h"
+#include "test_output.h"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shadelab::test {
+
+struct Rendered {
+    Image8 pixels;
+    std::vector<uint32_t> coverage;
+};
+
+// One renderer per test binary: programs compile once.
+inline raster::RasterRenderer& sharedRasterRenderer() {
+    static std::unique_ptr<raster::RasterRenderer> r;
+    if (!r) r = std::make_unique<raster::RasterRenderer>();
+    return *r;
+}
+
+inline Rendered rasterizeWithCoverage(const Scene& scene, int width, int height) {
+    raster::RasterRenderer& r = sharedRasterRenderer();
+    r.uploadMeshes(scene);
+    raster::OffscreenOptions o;
+    o.width = width;
+    o.height = height;
+    o.coverage = true;
+    raster::OffscreenResult out = raster::renderOffscreen(r, scene, o);
+    return {std::move(out.pixels), std::move(out.coverage)};
+}
+
+// maxDepth -1 keeps the scene's own depth.
+inline Rendered traceWithCoverage(const Scene& scene, int width, int height, int maxDepth = -1) {
+    trace::TraceSettings s;
+    s.width = width;
+    s.height = height;
+    s.maxDepth = maxDepth;
+    s.coverage = true;
+    trace::TraceOutput out = trace::traceImage(scene, s);
+    return {toImage8(out.color, Encoding::Srgb), std::move(out.coverage)};
+}
+
+// Compares raster `a` with reference `b`; on failure writes the evidence under `name` and prints its paths.
+inline CompareResult gateWithEvidence(const Rendered& a, const Rendered& b, const CompareGates& gates,
+                                      const std::string& name) {
+    CompareResult c = compareImages(a.pixels, b.pixels, a.coverage, b.coverage, gates);
+    std::printf("%s: interior mean %.3f, %.3f%% over %d/255, max %d\n", name.c_str(), c.interior.mean,
+                100.0 * c.interior.fractionOver(), gates.threshold, c.interior.max);
+    if (!c.pass) {
+        std::printf("%s: gates failed; evidence:\n", name.c_str());
+        for (const std::string& f : writeCompareEvidence(outputPath(name), a.pixels, b.pixels, c))
+            std::printf("  %s\n", f.c_str());
+    }
+    return c;
+}
+
+}  // namespace shadelab::test
