@@ -1,0 +1,148 @@
+// Scene JSON validation (issue 6): one case per rule, each error naming the file, the JSON path and the
+// reason in one line (e.g. "lights[2].color: expected 3 numbers, got 2").
+#include "scene/scene_json.h"
+
+#include "util/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace shadelab {
+namespace {
+
+Scene parse(const std::string& text) { return parseSceneJson(text, "a.json"); }
+
+// ---- Errors: each names the file, the JSON path and the reason -------------------------------------------
+
+struct ErrorCase {
+    const char* place;   // expected JSON path or "line L, column C"
+    const char* reason;  // expected substring of the reason
+};
+
+std::string lightsJson(int n) {
+    std::string s = R"({"lights": [)";
+    for (int i = 0; i < n; ++i) s += std::string(i ? "," : "") + R"({"type": "point", "position": [0, 1, 0]})";
+    return s + "]}";
+}
+
+TEST(SceneJson, ErrorsNameThePathAndTheReason) {
+    const std::string sphere = R"({"objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1, )";
+    const std::string plane = R"({"objects": [{"type": "plane", )";
+    const std::string mesh = R"({"objects": [{"type": "mesh", "source": "m.glb", )";
+    const std::string ball = R"({"objects": [{"type": "sphere", )";
+    const std::string light = R"({"lights": [{"type": "point", "position": [0, 1, 0], )";
+    const std::string dirLight = R"({"lights": [{"type": "directional", "direction": [0, -1, 0], )";
+    std::string threeLights = R"({"lights": [{"type": "point", "position": [0, 1, 0]},
+        {"type": "directional", "direction": [0, -1, 0]}, {"type": "point", "position": [0, 1, 0], "color": [1, 1]}]})";
+    std::string tooMany = lightsJson(kMaxLights + 1);
+    std::string m = sphere + R"("material": )";
+    std::vector<std::pair<std::string, ErrorCase>> cases = {
+        {threeLights, {"lights[2].color", "expected 3 numbers, got 2"}},
+        {m + R"({"s": "high"}}]})", {"objects[0].material.s", "expected a number, got string"}},
+        {m + R"({"s": 20000}}]})", {"objects[0].material.s", "must be in [0, 10000]"}},
+        {m + R"({"s": -1}}]})", {"objects[0].material.s", "must be in [0, 10000]"}},
+        {m + R"({"ior": 0}}]})", {"objects[0].material.ior", "must be > 0"}},
+        {m + R"({"ms": -0.5}}]})", {"objects[0].material.ms", "must be >= 0"}},
+        {m + R"({"kr": [0.5, -1, 0]}}]})", {"objects[0].material.kr[1]", "must be >= 0"}},
+        {m + R"({"md": [1, 1, 1, 1]}}]})", {"objects[0].material.md", "expected 3 numbers, got 4"}},
+        {m + R"("golld"}]})", {"objects[0].material", "unknown material 'golld'"}},
+        {m + R"(7}]})", {"objects[0].material", "expected an object, got number"}},
+        {R"({"camera": {"fovY": 180}})", {"camera.fovY", "must be in (0, 180)"}},
+        {R"({"camera": {"fovY": 0}})", {"camera.fovY", "must be in (0, 180)"}},
+        {R"({"camera": {"fovY": 1e39}})", {"camera.fovY", "must be finite"}},
+        {R"({"camera": {"position": [0, "a", 0]}})", {"camera.position[1]", "expected a number, got string"}},
+        {R"({"camera": {"position": [0, 0.5, 0]}})", {"camera.target", "must differ from camera.position"}},
+        {R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})", {"camera.up", "parallel"}},
+        {R"({"camera": {"up": [0, 0, 0]}})", {"camera.up", "must be non-zero"}},
+        {R"({"camera": null})", {"camera", "expected an object, got null"}},
+        {R"({"lights": [{"type": "spot", "position": [0, 1, 0]}]})",
+         {"lights[0].type", "unknown light type 'spot'; expected point or directional"}},
+        {R"({"lights": [{"position": [0, 1, 0]}]})", {"lights[0].type", "missing required field"}},
+        {R"({"lights": [{"type": "point"}]})", {"lights[0].position", "missing required field"}},
+        {R"({"lights": [{"type": "directional"}]})", {"lights[0].direction", "missing required field"}},
+        {R"({"lights": [{"type": "directional", "direction": [0, 0, 0]}]})", {"lights[0].direction", "non-zero"}},
+        {light + R"("color": [-1, 1, 1]}]})", {"lights[0].color[0]", "must be >= 0"}},
+        {dirLight + R"("color": "white"}]})", {"lights[0].color", "expected 3 numbers or one number, got string"}},
+        {light + R"("attenuation": [0, 0, 0]}]})", {"lights[0].attenuation", "must not be all zero"}},
+        {light + R"("attenuation": [1, -0.1, 0]}]})", {"lights[0].attenuation[1]", "must be >= 0"}},
+        {light + R"("attenuation": 1}]})", {"lights[0].attenuation", "expected an array of 3 numbers"}},
+        {tooMany, {"lights", "too many lights: 33; at most 32"}},
+        {R"({"lights": {}})", {"lights", "expected an array, got object"}},
+        {R"({"objects": [{"type": "sphere", "radius": 1}]})", {"objects[0].center", "missing required field"}},
+        {R"({"objects": [{"type": "sphere", "center": [0, 0, 0]}]})", {"objects[0].radius", "missing required"}},
+        {ball + R"("center": [0, 0, 0], "radius": 0}]})", {"objects[0].radius", "must be > 0"}},
+        {ball + R"("center": [1e39, 0, 0], "radius": 1}]})", {"objects[0].center[0]", "must be finite"}},
+        {R"({"objects": [{"type": "cube"}]})", {"objects[0].type", "unknown object type 'cube'"}},
+        {R"({"objects": [3]})", {"objects[0]", "expected an object, got number"}},
+        {plane + R"("normal": [0, 0, 0]}]})", {"objects[0].normal", "must be non-zero"}},
+        {plane + R"("offset": 1, "point": [0, 1, 0]}]})", {"objects[0].point", "not both"}},
+        {plane + R"("checker": {"size": 0}}]})", {"objects[0].checker.size", "must be > 0"}},
+        {plane + R"("checker": {"md2": "grey"}}]})", {"objects[0].checker.md2", "expected 3 numbers or one number"}},
+        {R"({"objects": [{"type": "mesh"}]})", {"objects[0].source", "missing required field"}},
+        {R"({"objects": [{"type": "mesh", "source": ""}]})", {"objects[0].source", "must not be empty"}},
+        {mesh + R"("transform": {}, "matrix": []}]})", {"objects[0].matrix", "not both"}},
+        {mesh + R"("matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0]}]})",
+         {"objects[0].matrix", "expected 16 numbers"}},
+        {mesh + R"("matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 1]}]})", {"objects[0].matrix", "affine"}},
+        {mesh + R"("matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]}]})",
+         {"objects[0].matrix", "invertible"}},
+        {mesh + R"("transform": {"scale": 0}}]})", {"objects[0].transform.scale", "must be non-zero"}},
+        {mesh + R"("transform": {"scale": [1, 0, 1]}}]})", {"objects[0].transform.scale[1]", "must be non-zero"}},
+        {mesh + R"("transform": {"rotate": [0, 90]}}]})", {"objects[0].transform.rotate", "expected 3 numbers, got 2"}},
+        {mesh + R"("material": {"s": 1e5}}]})", {"objects[0].material.s", "must be in [0, 10000]"}},
+        {R"({"materials": {"gold": {"s": -3}}})", {"materials.gold.s", "must be in [0, 10000]"}},
+        {R"({"materials": {"my gold": {"ior": -3}}})", {"materials[\"my gold\"].ior", "must be > 0"}},
+        {R"({"materials": []})", {"materials", "expected an object, got array"}},
+        {R"({"maxDepth": 65})", {"maxDepth", "must be in [0, 64]"}},
+        {R"({"maxDepth": -1})", {"maxDepth", "must be in [0, 64]"}},
+        {R"({"maxDepth": 2.5})", {"maxDepth", "expected an integer"}},
+        {R"({"ambient": [0.1, 0.1, -0.1]})", {"ambient[2]", "must be >= 0"}},
+        {R"({"background": "black"})", {"background", "expected 3 numbers or one number, got string"}},
+        {R"({"model": "gouraud"})", {"model", "unknown shading model 'gouraud'; expected phong or blinn-phong"}},
+        {R"({"model": 1})", {"model", "expected a string, got number"}},
+        {R"({"terms": {"shadows": "yes"}})", {"terms.shadows", "expected true or false, got string"}},
+        {R"({"title": 5})", {"title", "expected a string, got number"}},
+        {R"({"shadelab": 2})", {"shadelab", "format version 2"}},
+        {R"({"shadelab": 0})", {"shadelab", "must be in [1, "}},
+        {"{\n  \"title\": \"x\",\n  \"notes\": y\n}", {"line 3, column 12", "syntax error while parsing value"}},
+        {"{\"title\": \"h\xC3\xA9llo\", x}", {"line 1, column 20", "syntax error"}},
+        {"", {"line 1, column 1", "unexpected end of input"}},
+        {R"({"title": "x",})", {"line 1, column 15", "syntax error"}},
+        {R"({"radius": 1e400})", {"", "number overflow"}},
+    };
+    for (const auto& [json, c] : cases) {
+        SCOPED_TRACE(json);
+        try {
+            parse(json);
+            ADD_FAILURE() << "no error; expected " << c.place << ": " << c.reason;
+        } catch (const InputError& e) {
+            std::string what = e.what();
+            std::string prefix = std::string("a.json: ") + (c.place[0] ? std::string(c.place) + ": " : "");
+            EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
+            EXPECT_NE(what.find(c.reason), std::string::npos) << what;
+            EXPECT_EQ(e.file(), "a.json");
+        }
+    }
+}
+
+TEST(SceneJson, ErrorMessageIsOneLineInTheDocumentedShape) {
+    try {
+        parse(R"({"lights": [{"type": "point", "position": [0, 1, 0]}, {"type": "point", "position": [0, 1, 0]},
+                             {"type": "point", "position": [0, 1, 0], "color": [1, 1]}]})");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "a.json: lights[2].color: expected 3 numbers, got 2");
+    }
+    try {
+        parse("{\"a\": 1,\n  x}");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "a.json: line 2, column 3: syntax error while parsing object key - invalid literal; "
+                               "last read: '1,<U+000A>  x'; expected string literal");
+    }
+}
+
+}  // namespace
+}  // namespace shadelab
