@@ -60,7 +60,7 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
     // Bands hold whole output rows (multiples of k sub-rows) and stay near the target budget.
     const int outRowsPerBand = std::max(1, (o.height + bandCount(hiW, hiH, o.maxTargetBytes) - 1) /
                                                bandCount(hiW, hiH, o.maxTargetBytes));
-    const int coverageSample = (k - 1) / 2;
+    const int coverageSample = k / 2;  // the tracer's choice: the pixel centre when k is odd
     ImageF hiStrip, loStrip;
     std::vector<uint32_t> bandCoverage;
     for (int outTop = 0; outTop < o.height; outTop += outRowsPerBand) {

@@ -17,7 +17,7 @@ struct OffscreenOptions {
     int width = 1280, height = 720;     // output pixels
     int spp = 1;                        // samples per pixel: a perfect square k², on the grid (i + (a+0.5)/k)
     Encoding encoding = Encoding::Srgb;
-    bool coverage = false;              // also return coverage ids (of sample a = b = (k-1)/2)
+    bool coverage = false;              // also return coverage ids (of sample a = b = k/2, as the tracer)
     size_t maxTargetBytes = size_t(8) << 20;  // float colour target budget per band
 };
 

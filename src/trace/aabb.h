@@ -38,6 +38,8 @@ struct Aabb {
 struct BoxRay {
     float org[3];
     float invDir[3];
+    int nearIdx[3];     // per axis, the index in a bounds[6] array (lo xyz, hi xyz) of the slab entered first
+    int farIdx[3];
 };
 
 inline BoxRay makeBoxRay(const Ray& ray) {
@@ -47,6 +49,9 @@ inline BoxRay makeBoxRay(const Ray& ray) {
     for (int a = 0; a < 3; ++a) {
         b.org[a] = o[a];
         b.invDir[a] = std::fabs(d[a]) > 1e-30f ? 1.0f / d[a] : std::copysign(1e30f, d[a]);
+        // Kay & Kajiya: with the direction's sign known per ray, the near slab needs no min/max.
+        b.nearIdx[a] = b.invDir[a] < 0.0f ? 3 + a : a;
+        b.farIdx[a] = b.invDir[a] < 0.0f ? a : 3 + a;
     }
     return b;
 }
@@ -55,15 +60,17 @@ inline BoxRay makeBoxRay(const Ray& ray) {
 // the float slab test conservative, so a box is never culled while a primitive inside it is hit.
 inline constexpr float kSlabFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// Entry distance of the ray into the box [lo, hi] (float[3] each), or +infinity when it misses the box
-// or enters it beyond tMax. Entry may be negative when the origin is inside.
-inline float slabEntry(const BoxRay& r, const float* lo, const float* hi, float tMax) {
-    const float tx0 = (lo[0] - r.org[0]) * r.invDir[0], tx1 = (hi[0] - r.org[0]) * r.invDir[0];
-    const float ty0 = (lo[1] - r.org[1]) * r.invDir[1], ty1 = (hi[1] - r.org[1]) * r.invDir[1];
-    const float tz0 = (lo[2] - r.org[2]) * r.invDir[2], tz1 = (hi[2] - r.org[2]) * r.invDir[2];
-    const float tNear = std::max(std::max(std::min(tx0, tx1), std::min(ty0, ty1)), std::min(tz0, tz1));
-    const float tFar = std::min(std::min(std::max(tx0, tx1), std::max(ty0, ty1)), std::max(tz0, tz1)) *
-                       kSlabFarScale;
+// Entry distance of the ray into the box `bounds` (lo x, y, z, hi x, y, z), or +infinity when it misses
+// the box or enters it beyond tMax. Entry may be negative when the origin is inside.
+inline float slabEntry(const BoxRay& r, const float* bounds, float tMax) {
+    const float tx0 = (bounds[r.nearIdx[0]] - r.org[0]) * r.invDir[0];
+    const float tx1 = (bounds[r.farIdx[0]] - r.org[0]) * r.invDir[0];
+    const float ty0 = (bounds[r.nearIdx[1]] - r.org[1]) * r.invDir[1];
+    const float ty1 = (bounds[r.farIdx[1]] - r.org[1]) * r.invDir[1];
+    const float tz0 = (bounds[r.nearIdx[2]] - r.org[2]) * r.invDir[2];
+    const float tz1 = (bounds[r.farIdx[2]] - r.org[2]) * r.invDir[2];
+    const float tNear = std::max(std::max(tx0, ty0), tz0);
+    const float tFar = std::min(std::min(tx1, ty1), tz1) * kSlabFarScale;
     return (tNear <= tFar && tFar >= 0.0f && tNear <= tMax) ? tNear : INFINITY;
 }
 

@@ -19,7 +19,7 @@ template <typename LeafFn>
 void traverseClosest(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
     if (bvh.empty()) return;
     const BvhNode* nodes = bvh.nodes.data();
-    if (slabEntry(br, nodes[0].lo(), nodes[0].hi(), tMax) == INFINITY) return;
+    if (slabEntry(br, nodes[0].bounds, tMax) == INFINITY) return;
     struct Entry {
         uint32_t node;
         float tEntry;
@@ -33,8 +33,8 @@ void traverseClosest(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf
         } else {
             const BvhNode& c0 = nodes[node.first];
             const BvhNode& c1 = nodes[node.first + 1];
-            float t0 = slabEntry(br, c0.lo(), c0.hi(), tMax);
-            float t1 = slabEntry(br, c1.lo(), c1.hi(), tMax);
+            float t0 = slabEntry(br, c0.bounds, tMax);
+            float t1 = slabEntry(br, c1.bounds, tMax);
             uint32_t nearNode = node.first, farNode = node.first + 1;
             if (t1 < t0) {
                 std::swap(t0, t1);
@@ -62,7 +62,7 @@ template <typename LeafFn>
 bool traverseAny(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
     if (bvh.empty()) return false;
     const BvhNode* nodes = bvh.nodes.data();
-    if (slabEntry(br, nodes[0].lo(), nodes[0].hi(), tMax) == INFINITY) return false;
+    if (slabEntry(br, nodes[0].bounds, tMax) == INFINITY) return false;
     uint32_t stack[kMaxBvhDepth];
     int sp = 0;
     uint32_t ni = 0;
@@ -73,8 +73,8 @@ bool traverseAny(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
         } else {
             const BvhNode& c0 = nodes[node.first];
             const BvhNode& c1 = nodes[node.first + 1];
-            const float t0 = slabEntry(br, c0.lo(), c0.hi(), tMax);
-            const float t1 = slabEntry(br, c1.lo(), c1.hi(), tMax);
+            const float t0 = slabEntry(br, c0.bounds, tMax);
+            const float t1 = slabEntry(br, c1.bounds, tMax);
             if (t0 != INFINITY && t1 != INFINITY) {
                 ni = t0 <= t1 ? node.first : node.first + 1;
                 stack[sp++] = t0 <= t1 ? node.first + 1 : node.first;

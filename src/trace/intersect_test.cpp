@@ -372,7 +372,7 @@ TEST(MeshBvhRobustness, HitsInBoxFacesAreNeverCulled) {
         lostOccluded += !ts.occluded(r, std::nextafter(bt, INFINITY));
     }
     const char* bug =
-        "\nKNOWN BUG: aabb.h:67 slabEntry() culls a box when its rounded entry tNear > tMax, and bvh_traverse.h:53 "
+        "\nKNOWN BUG: aabb.h (slabEntry) slabEntry() culls a box when its rounded entry tNear > tMax, and bvh_traverse.h (the pop test) "
         "pops only `tEntry <= tMax`, both without margin; a triangle lying in its box's face can have a rounded t "
         "below the box's rounded entry (by up to ~3e-4 relative here), so the box is culled: anyHit/occluded miss "
         "hits just below tMax, and closestHit returns a farther triangle or breaks the lower-source tie rule.";

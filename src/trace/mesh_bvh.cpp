@@ -116,6 +116,7 @@ bool MeshBvh::matches(const Scene& scene) const {
 }
 
 std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
+    if (bvh_.empty()) return std::nullopt;  // skip the per-ray set-up for scenes without triangles
     const WatertightRay wr = makeWatertightRay(ray);
     MeshHit best{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
     traverseClosest(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
@@ -135,6 +136,7 @@ std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
 }
 
 bool MeshBvh::anyHit(const Ray& ray, float tMax) const {
+    if (bvh_.empty()) return false;
     const WatertightRay wr = makeWatertightRay(ray);
     return traverseAny(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
         for (uint32_t s = first, end = first + count; s < end; ++s) {

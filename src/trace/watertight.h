@@ -16,6 +16,7 @@ struct WatertightRay {
     float org[3];
     int kx, ky, kz;
     float Sx, Sy, Sz;
+    float ox, oy, oz;   // org[kx], org[ky], org[kz]: the test reads only the permuted components it needs
 };
 
 inline WatertightRay makeWatertightRay(const Ray& ray) {
@@ -33,6 +34,9 @@ inline WatertightRay makeWatertightRay(const Ray& ray) {
     w.Sx = d[w.kx] / d[w.kz];
     w.Sy = d[w.ky] / d[w.kz];
     w.Sz = 1.0f / d[w.kz];
+    w.ox = w.org[w.kx];
+    w.oy = w.org[w.ky];
+    w.oz = w.org[w.kz];
     return w;
 }
 
@@ -44,15 +48,16 @@ struct TriangleHit {
 // The triangle (v0, v1, v2), each a float[3], hit at 0 < t <= tMax; std::nullopt otherwise.
 inline std::optional<TriangleHit> intersectTriangle(const WatertightRay& r, const float* v0, const float* v1,
                                                     const float* v2, float tMax) {
-    // Vertices relative to the ray origin.
-    const float A[3] = {v0[0] - r.org[0], v0[1] - r.org[1], v0[2] - r.org[2]};
-    const float B[3] = {v1[0] - r.org[0], v1[1] - r.org[1], v1[2] - r.org[2]};
-    const float C[3] = {v2[0] - r.org[0], v2[1] - r.org[1], v2[2] - r.org[2]};
+    // Vertices relative to the ray origin, read straight in the permuted order (x, y, z = kx, ky, kz).
+    const int kx = r.kx, ky = r.ky, kz = r.kz;
+    const float Akx = v0[kx] - r.ox, Aky = v0[ky] - r.oy, Akz = v0[kz] - r.oz;
+    const float Bkx = v1[kx] - r.ox, Bky = v1[ky] - r.oy, Bkz = v1[kz] - r.oz;
+    const float Ckx = v2[kx] - r.ox, Cky = v2[ky] - r.oy, Ckz = v2[kz] - r.oz;
 
     // Woop et al. Fig. 5: shear and scale so the ray runs along +z through (0, 0).
-    const float Ax = A[r.kx] - r.Sx * A[r.kz], Ay = A[r.ky] - r.Sy * A[r.kz];
-    const float Bx = B[r.kx] - r.Sx * B[r.kz], By = B[r.ky] - r.Sy * B[r.kz];
-    const float Cx = C[r.kx] - r.Sx * C[r.kz], Cy = C[r.ky] - r.Sy * C[r.kz];
+    const float Ax = Akx - r.Sx * Akz, Ay = Aky - r.Sy * Akz;
+    const float Bx = Bkx - r.Sx * Bkz, By = Bky - r.Sy * Bkz;
+    const float Cx = Ckx - r.Sx * Ckz, Cy = Cky - r.Sy * Ckz;
 
     // Scaled barycentrics: 2D edge functions of the sheared triangle at the origin.
     float U = Cx * By - Cy * Bx;
@@ -70,7 +75,7 @@ inline std::optional<TriangleHit> intersectTriangle(const WatertightRay& r, cons
     if (det == 0.0f) return std::nullopt;   // the ray lies in the triangle's plane
 
     // Scaled hit distance from the sheared z coordinates.
-    const float Az = r.Sz * A[r.kz], Bz = r.Sz * B[r.kz], Cz = r.Sz * C[r.kz];
+    const float Az = r.Sz * Akz, Bz = r.Sz * Bkz, Cz = r.Sz * Ckz;
     const float T = U * Az + V * Bz + W * Cz;
     const float rcpDet = 1.0f / det;
     const float t = T * rcpDet;
