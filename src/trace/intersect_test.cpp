@@ -372,10 +372,10 @@ TEST(MeshBvhRobustness, HitsInBoxFacesAreNeverCulled) {
         lostOccluded += !ts.occluded(r, std::nextafter(bt, INFINITY));
     }
     const char* bug =
-        "\nKNOWN BUG: aabb.h (slabEntry) slabEntry() culls a box when its rounded entry tNear > tMax, and bvh_traverse.h (the pop test) "
-        "pops only `tEntry <= tMax`, both without margin; a triangle lying in its box's face can have a rounded t "
-        "below the box's rounded entry (by up to ~3e-4 relative here), so the box is culled: anyHit/occluded miss "
-        "hits just below tMax, and closestHit returns a farther triangle or breaks the lower-source tie rule.";
+        "\nRegression: slabEntry (aabb.h) and the traversal's pop test (bvh_traverse.h) cull a box whose rounded "
+        "entry exceeds tMax. A triangle lying in its box's face can round to a t just below that entry, so "
+        "MeshBvh pads every box (mesh_bvh.cpp); without the padding anyHit/occluded miss hits just below tMax "
+        "and closestHit returns a farther triangle or breaks the lower-source tie rule.";
     EXPECT_GT(hits, 15000u);
     EXPECT_EQ(lostAny, 0u) << "of " << hits << " rays, anyHit(t of the hit + 1 ulp) was false" << bug;
     EXPECT_EQ(lostOccluded, 0u) << "of " << hits << " rays, occluded(t of the hit + 1 ulp) was false" << bug;
