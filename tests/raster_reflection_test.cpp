@@ -22,32 +22,18 @@ constexpr int kWidth = 192, kHeight = 128;
 
 raster::RasterRenderer& renderer() { return test::sharedRasterRenderer(); }
 
-Material material(glm::vec3 colour) {
-    Material m;
-    m.ma = colour;
-    m.md = colour;
-    m.ms = glm::vec3(0.5f);
-    m.s = 32.0f;
-    return m;
-}
-
 Scene mirrorScene(float kr) {
-    Scene scene;
-    scene.camera.position = {0.0f, 2.2f, 6.0f};
-    scene.camera.target = {0.0f, 0.6f, 0.0f};
-    scene.camera.fovY = 40.0f;
-    scene.ambient = glm::vec3(0.15f);
-    scene.background = glm::vec3(0.05f, 0.05f, 0.08f);
+    Scene scene = test::comparisonStage();
     scene.terms = Terms{true, true, true, false, true};
     Plane floor;
-    floor.material = material(glm::vec3(0.6f));
+    floor.material = test::colourMaterial(glm::vec3(0.6f));
     floor.material.kr = glm::vec3(kr);
     floor.checker = Checker{glm::vec3(0.2f), 0.75f};
     scene.planes.push_back(floor);
     const glm::vec3 colours[3] = {{0.8f, 0.2f, 0.2f}, {0.2f, 0.7f, 0.3f}, {0.2f, 0.3f, 0.9f}};
     const glm::vec3 centres[3] = {{-1.5f, 0.7f, 0.0f}, {0.0f, 1.0f, -0.6f}, {1.4f, 0.6f, 0.7f}};
     const float radii[3] = {0.6f, 0.8f, 0.5f};
-    for (int i = 0; i < 3; ++i) scene.spheres.push_back({"", centres[i], radii[i], material(colours[i])});
+    for (int i = 0; i < 3; ++i) scene.spheres.push_back({"", centres[i], radii[i], test::colourMaterial(colours[i])});
     Light key;
     key.position = {-3.0f, 5.0f, 4.0f};
     scene.lights.push_back(key);

@@ -28,43 +28,22 @@ const CompareGates kShadowGates{3, 0.01, 255, 0.02, 1.0};
 
 raster::RasterRenderer& renderer() { return test::sharedRasterRenderer(); }
 
-Material material(glm::vec3 colour) {
-    Material m;
-    m.ma = colour;
-    m.md = colour;
-    m.ms = glm::vec3(0.5f);
-    m.s = 32.0f;
-    return m;
-}
-
-Light pointLight(glm::vec3 p, glm::vec3 colour) {
-    Light l;
-    l.position = p;
-    l.color = colour;
-    return l;
-}
-
 Scene spheresOnPlane(int lights) {
-    Scene scene;
-    scene.camera.position = {0.0f, 2.2f, 6.0f};
-    scene.camera.target = {0.0f, 0.6f, 0.0f};
-    scene.camera.fovY = 40.0f;
-    scene.ambient = glm::vec3(0.15f);
-    scene.background = glm::vec3(0.05f, 0.05f, 0.08f);
+    Scene scene = test::comparisonStage();
     scene.terms = Terms{true, true, true, true, false};
     Plane floor;
-    floor.material = material(glm::vec3(0.8f));
+    floor.material = test::colourMaterial(glm::vec3(0.8f));
     floor.checker = Checker{glm::vec3(0.25f), 0.75f};
     scene.planes.push_back(floor);
     const glm::vec3 colours[3] = {{0.8f, 0.2f, 0.2f}, {0.2f, 0.7f, 0.3f}, {0.2f, 0.3f, 0.9f}};
     const glm::vec3 centres[3] = {{-1.5f, 0.6f, 0.0f}, {0.0f, 0.8f, -0.6f}, {1.4f, 0.5f, 0.7f}};
     const float radii[3] = {0.6f, 0.8f, 0.5f};
-    for (int i = 0; i < 3; ++i) scene.spheres.push_back({"", centres[i], radii[i], material(colours[i])});
+    for (int i = 0; i < 3; ++i) scene.spheres.push_back({"", centres[i], radii[i], test::colourMaterial(colours[i])});
     if (lights == 1) {
-        scene.lights.push_back(pointLight({-3.0f, 5.0f, 4.0f}, glm::vec3(1.0f)));
+        scene.lights.push_back(test::pointLight({-3.0f, 5.0f, 4.0f}, glm::vec3(1.0f)));
     } else {
-        scene.lights.push_back(pointLight({-3.0f, 4.0f, 3.0f}, {0.7f, 0.3f, 0.3f}));
-        scene.lights.push_back(pointLight({0.5f, 1.2f, 0.9f}, {0.2f, 0.5f, 0.2f}));  // between the spheres: cube map
+        scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, {0.7f, 0.3f, 0.3f}));
+        scene.lights.push_back(test::pointLight({0.5f, 1.2f, 0.9f}, {0.2f, 0.5f, 0.2f}));  // between the spheres: cube map
         Light sun;
         sun.type = LightType::Directional;
         sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.6f));
@@ -107,7 +86,7 @@ TEST_F(RasterShadows, LightMovedInOneRendererFails) {
 // A sphere far outside the view still makes the renderer build and sample a shadow map.
 TEST_F(RasterShadows, UnoccludedPlaneHasNoAcne) {
     Scene scene = spheresOnPlane(3);
-    scene.spheres = {{"", {40.0f, 1.0f, -40.0f}, 0.5f, material(glm::vec3(0.5f))}};
+    scene.spheres = {{"", {40.0f, 1.0f, -40.0f}, 0.5f, test::colourMaterial(glm::vec3(0.5f))}};
     raster::RasterRenderer& r = renderer();
     r.uploadMeshes(scene);
     scene.terms.shadows = false;

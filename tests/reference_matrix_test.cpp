@@ -41,34 +41,21 @@ std::string caseName(const Case& c) {
     return n + "_s" + std::to_string(int(c.s));
 }
 
-Material material(glm::vec3 colour, float s) {
-    Material m;
-    m.ma = colour;
-    m.md = colour;
-    m.ms = glm::vec3(0.6f);
-    m.s = s;
-    return m;
-}
-
 Scene makeScene(const Case& c) {
-    Scene scene;
-    scene.camera.position = {0.0f, 2.2f, 6.0f};
-    scene.camera.target = {0.0f, 0.6f, 0.0f};
-    scene.camera.fovY = 40.0f;
+    Scene scene = test::comparisonStage();
     scene.model = c.model;
-    scene.ambient = glm::vec3(0.15f);
-    scene.background = glm::vec3(0.05f, 0.05f, 0.08f);
     scene.terms = Terms{true, c.terms != TermSet::Ambient, c.terms == TermSet::Specular, false, false};
 
     Plane floor;
-    floor.material = material(glm::vec3(0.8f), c.s);
+    floor.material = test::colourMaterial(glm::vec3(0.8f), c.s, 0.6f);
     floor.checker = Checker{glm::vec3(0.25f), 0.75f};
     scene.planes.push_back(floor);
     if (c.geometry == Geometry::Spheres) {
         const glm::vec3 colours[3] = {{0.8f, 0.2f, 0.2f}, {0.2f, 0.7f, 0.3f}, {0.2f, 0.3f, 0.9f}};
         const glm::vec3 centres[3] = {{-1.5f, 0.6f, 0.0f}, {0.0f, 0.8f, -0.6f}, {1.4f, 0.5f, 0.7f}};
         const float radii[3] = {0.6f, 0.8f, 0.5f};
-        for (int i = 0; i < 3; ++i) scene.spheres.push_back({"", centres[i], radii[i], material(colours[i], c.s)});
+        for (int i = 0; i < 3; ++i)
+            scene.spheres.push_back({"", centres[i], radii[i], test::colourMaterial(colours[i], c.s, 0.6f)});
     } else {
         Mesh torus;
         torus.source = test::sourcePath("assets/models/torus.gltf");
@@ -80,17 +67,11 @@ Scene makeScene(const Case& c) {
         scene.meshes.push_back(torus);
         importSceneMeshes(scene, "");
     }
-    auto point = [](glm::vec3 p, glm::vec3 colour) {
-        Light l;
-        l.position = p;
-        l.color = colour;
-        return l;
-    };
     if (c.lights == LightRig::OneWhite) {
-        scene.lights.push_back(point({-3.0f, 5.0f, 4.0f}, glm::vec3(1.0f)));
+        scene.lights.push_back(test::pointLight({-3.0f, 5.0f, 4.0f}, glm::vec3(1.0f)));
     } else {
-        scene.lights.push_back(point({-3.0f, 4.0f, 3.0f}, {0.7f, 0.1f, 0.1f}));
-        scene.lights.push_back(point({3.0f, 5.0f, 2.0f}, {0.1f, 0.6f, 0.1f}));
+        scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, {0.7f, 0.1f, 0.1f}));
+        scene.lights.push_back(test::pointLight({3.0f, 5.0f, 2.0f}, {0.1f, 0.6f, 0.1f}));
         Light sun;
         sun.type = LightType::Directional;
         sun.direction = glm::normalize(glm::vec3(0.2f, -1.0f, -0.6f));

@@ -17,6 +17,35 @@
 
 namespace shadelab::test {
 
+// The stage every raster-vs-reference scene stands on: camera, ambient and background. Each test adds its
+// floor, objects, lights, model and terms.
+inline Scene comparisonStage() {
+    Scene scene;
+    scene.camera.position = {0.0f, 2.2f, 6.0f};
+    scene.camera.target = {0.0f, 0.6f, 0.0f};
+    scene.camera.fovY = 40.0f;
+    scene.ambient = glm::vec3(0.15f);
+    scene.background = glm::vec3(0.05f, 0.05f, 0.08f);
+    return scene;
+}
+
+// A plastic-like material whose ambient and diffuse coefficients are `colour`.
+inline Material colourMaterial(glm::vec3 colour, float s = 32.0f, float ms = 0.5f) {
+    Material m;
+    m.ma = colour;
+    m.md = colour;
+    m.ms = glm::vec3(ms);
+    m.s = s;
+    return m;
+}
+
+inline Light pointLight(glm::vec3 position, glm::vec3 colour) {
+    Light l;
+    l.position = position;
+    l.color = colour;
+    return l;
+}
+
 struct Rendered {
     Image8 pixels;
     std::vector<uint32_t> coverage;
