@@ -1,10 +1,18 @@
 // Shadow visibility vis_l for the colour passes (design.md §1): planes occlude analytically, exactly as the
 // tracer's shadow ray; meshes and spheres through shadow maps (Williams 1978) with a depth bias and a
 // normal-offset bias (Holbert 2011). Mirrored by src/raster/shadow_block.h (std140). Not the lighting sum.
+// Each light's map kind and blocking planes are compile-time constants of the variant
+// (src/raster/shader_variant.h), so only the code a light needs runs.
+const int SL_SHADOW_NONE = 0;
+const int SL_SHADOW_ORTHO = 1;
+const int SL_SHADOW_PERSPECTIVE = 2;
+const int SL_SHADOW_CUBE = 3;
+
 layout(std140) uniform Shadows {
     mat4 u_layerViewProj[SL_MAX_SHADOW_LAYERS];
-    ivec4 u_shadowLight[SL_MAX_SHADOWED];       // x: kind (0 none, 1 ortho, 2 perspective, 3 cube), y: first layer
-    vec4 u_shadowRange[SL_MAX_SHADOWED];        // x: texel footprint (ortho: world; else per unit depth), y: near, z: far
+    ivec4 u_shadowLight[SL_MAX_SHADOWED];       // x: kind, y: first layer, z: blocking planes (bits)
+    vec4 u_shadowRange[SL_MAX_SHADOWED];        // x: texel footprint (ortho: world; else per unit distance), y: near, z: far
+    vec4 u_shadowDepth[SL_MAX_SHADOWED];        // x, y: A, B of the perspective test; z: ortho depth bias (window units)
     vec4 u_shadowPlanes[SL_MAX_SHADOW_PLANES];  // xyz: unit normal, w: offset
     ivec4 u_shadowInfo;                         // x: plane count, y: pcf, z: map size (texels)
     vec4 u_shadowBias;                          // x: depth bias (texels), y: normal bias (texels), z: scene epsilon
@@ -12,63 +20,77 @@ layout(std140) uniform Shadows {
 
 uniform sampler2DArray t_shadowMaps;
 
-// The tracer's shadow ray against every plane: from P + ε·Nf toward the light, blocked when 0 < t < tMax.
-float planeVisibility(vec3 origin, vec3 Ldir, float tMax) {
-    for (int k = 0; k < u_shadowInfo.x; ++k) {
-        float t = intersectPlane(origin, Ldir, u_shadowPlanes[k].xyz, u_shadowPlanes[k].w, 0.0f);
-        if (t > 0.0f && t < tMax) return 0.0f;
+// The tracer's shadow ray from `origin` against the planes in `mask`: blocked exactly when the origin and
+// the light lie strictly on opposite sides of a plane (intersectPlane's 0 < t < tMax, without the division).
+bool planesBlock(int i, bool isPoint, int mask, vec3 origin) {
+    bool blocked = false;
+    for (int k = 0; k < SL_SHADOW_PLANES; ++k) {
+        if ((mask & (1 << k)) == 0) continue;
+        vec4 plane = u_shadowPlanes[k];
+        float a = dot(plane.xyz, origin) - plane.w;
+        float b = isPoint ? dot(plane.xyz, u_lightPos[i].xyz) - plane.w : -dot(plane.xyz, u_lightPos[i].xyz);
+        blocked = blocked || (a < 0.0f && b > 0.0f) || (a > 0.0f && b < 0.0f);
     }
-    return 1.0f;
+    return blocked;
 }
 
-// Stored window depth back to light-space distance along the layer's axis.
-float linearShadowDepth(float d, bool ortho, float zNear, float zFar) {
-    if (ortho) return zNear + d * (zFar - zNear);
-    float ndc = 2.0f * d - 1.0f;
-    return 2.0f * zNear * zFar / ((zFar + zNear) - ndc * (zFar - zNear));
+// Cube face (+X −X +Y −Y +Z −Z) of direction d from the light, and d in that face's camera: xy over the
+// axis distance, z the axis distance. The bases are shadow_maps.cpp's glm::lookAt ones (up +Y, +Z for ±Y).
+vec3 cubeFaceCoords(vec3 d, out int face) {
+    vec3 a = abs(d);
+    bool xMajor = a.x >= a.y && a.x >= a.z;
+    bool yMajor = !xMajor && a.y >= a.z;
+    float ma = xMajor ? a.x : yMajor ? a.y : a.z;
+    float sgn = (xMajor ? d.x : yMajor ? d.y : d.z) > 0.0f ? 1.0f : -1.0f;
+    vec2 uv = xMajor ? vec2(sgn * d.z, d.y) : yMajor ? vec2(sgn * d.x, d.z) : vec2(-sgn * d.x, d.y);
+    face = (xMajor ? 0 : yMajor ? 2 : 4) + (sgn > 0.0f ? 0 : 1);
+    return vec3(uv / ma, ma);
 }
 
-// 1 lit, 0 shadowed (fractions with PCF) by light i's shadow map.
-float mapVisibility(int i, vec3 P, vec3 Nf, vec3 lightPos) {
-    ivec4 s = u_shadowLight[i];
-    if (s.x == 0) return 1.0f;
-    bool ortho = s.x == 1;
+// One map texel against the receiver: lit when nothing was drawn there (d = 1) or the receiver is not
+// behind the stored depth. Ortho: r is the receiver's window depth; otherwise its distance along the axis.
+bool texelLit(ivec2 q, int layer, float r, vec4 test, bool ortho) {
+    float d = texelFetch(t_shadowMaps, ivec3(q, layer), 0).r;
+    return d >= 1.0f || (ortho ? r <= d : (test.x - d) * r <= test.y);
+}
+
+// 1 lit, 0 shadowed (fractions with PCF) by light i's shadow map of the given kind.
+float mapVisibility(int i, int kind, vec3 P, vec3 Nf) {
+    bool ortho = kind == SL_SHADOW_ORTHO;
+    vec3 lightPos = u_lightPos[i].xyz;
     // Holbert 2011: move the receiver along its normal by a number of texels of the map at P.
     float texel = ortho ? u_shadowRange[i].x : u_shadowRange[i].x * length(P - lightPos);
     vec3 Pn = P + (u_shadowBias.y * texel + u_shadowBias.z) * Nf;
-    int layer = s.y;
-    if (s.x == 3) {
-        vec3 d = Pn - lightPos;
-        vec3 a = abs(d);
-        layer += a.x >= a.y && a.x >= a.z ? (d.x > 0.0f ? 0 : 1) : a.y >= a.z ? (d.y > 0.0f ? 2 : 3) : (d.z > 0.0f ? 4 : 5);
+    int layer = u_shadowLight[i].y;
+    vec3 c;  // xy: the receiver in the layer's NDC; z: ortho its window depth, else its distance along the axis
+    bool inside = true;
+    if (kind == SL_SHADOW_CUBE) {
+        int face;
+        c = cubeFaceCoords(Pn - lightPos, face);
+        layer += face;
+    } else {
+        vec4 clip = u_layerViewProj[layer] * vec4(Pn, 1.0f);
+        inside = clip.w > 0.0f && abs(clip.x) <= clip.w && abs(clip.y) <= clip.w;  // else no caster covers it
+        c = ortho ? vec3(clip.xy, 0.5f * clip.z + 0.5f) : vec3(clip.xy / clip.w, clip.w);
     }
-    vec4 clip = u_layerViewProj[layer] * vec4(Pn, 1.0f);
-    if (clip.w <= 0.0f) return 1.0f;
-    vec3 ndc = clip.xyz / clip.w;
-    if (abs(ndc.x) > 1.0f || abs(ndc.y) > 1.0f) return 1.0f;   // outside every caster's footprint
-    float zNear = u_shadowRange[i].y, zFar = u_shadowRange[i].z;
-    float receiver = (ortho ? zNear + (0.5f * ndc.z + 0.5f) * (zFar - zNear) : clip.w) - u_shadowBias.x * texel;
+    vec4 test = u_shadowDepth[i];
+    float r = ortho ? c.z - test.z : c.z - u_shadowBias.x * texel;
     int size = u_shadowInfo.z;
-    ivec2 texelAt = clamp(ivec2((0.5f * ndc.xy + 0.5f) * float(size)), ivec2(0), ivec2(size - 1));
-    int radius = u_shadowInfo.y != 0 ? 1 : 0;
-    float lit = 0.0f, taps = 0.0f;
-    for (int y = -radius; y <= radius; ++y)
-        for (int x = -radius; x <= radius; ++x) {
-            ivec2 q = clamp(texelAt + ivec2(x, y), ivec2(0), ivec2(size - 1));
-            float d = texelFetch(t_shadowMaps, ivec3(q, layer), 0).r;
-            lit += (d >= 1.0f || receiver <= linearShadowDepth(d, ortho, zNear, zFar)) ? 1.0f : 0.0f;
-            taps += 1.0f;
-        }
-    return lit / taps;
+    ivec2 q = clamp(ivec2((0.5f * c.xy + 0.5f) * float(size)), ivec2(0), ivec2(size - 1));
+#if SL_PCF
+    float lit = 0.0f;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x)
+            lit += texelLit(clamp(q + ivec2(x, y), ivec2(0), ivec2(size - 1)), layer, r, test, ortho) ? 1.0f : 0.0f;
+    lit *= 1.0f / 9.0f;
+#else
+    float lit = texelLit(q, layer, r, test, ortho) ? 1.0f : 0.0f;
+#endif
+    return inside ? lit : 1.0f;
 }
 
 // vis_l for light i at P (Nf: the unit normal facing the viewer), as the tracer's one shadow ray.
-float shadowVisibility(int i, vec3 P, vec3 Nf) {
-    if (i >= SL_MAX_SHADOWED) return 1.0f;
-    bool isPoint = u_lightPos[i].w != 0.0f;
-    vec3 origin = P + u_shadowBias.z * Nf;
-    vec3 toLight = isPoint ? u_lightPos[i].xyz - origin : -u_lightPos[i].xyz;
-    float tMax = isPoint ? length(toLight) : 3.4e38f;
-    if (planeVisibility(origin, normalize(toLight), tMax) == 0.0f) return 0.0f;
-    return mapVisibility(i, P, Nf, u_lightPos[i].xyz);
+float shadowVisibility(int i, bool isPoint, int kind, int planeMask, vec3 P, vec3 Nf) {
+    if (planeMask != 0 && planesBlock(i, isPoint, planeMask, P + u_shadowBias.z * Nf)) return 0.0f;
+    return kind == SL_SHADOW_NONE ? 1.0f : mapVisibility(i, kind, P, Nf);
 }

@@ -13,21 +13,35 @@ uniform uint u_objectId;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_coverage;
 
+// One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint,
+// kind and planeMask are compile-time constants for the specialised lights, so their branches fold away.
+vec3 lightTerm(int i, bool isPoint, int kind, int planeMask, vec3 P, vec3 N, vec3 V, vec3 md) {
+    vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
+    vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
+    vec3 c = shadeLight(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR);
+#if SL_SHADOWS
+    // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
+    c *= shadowVisibility(i, isPoint, kind, planeMask, P, normalize(N));
+#endif
+    return c;
+}
+
+// Ia·ma plus the sum over lights, as src/shading/local_illumination.h (the variant fixes model and terms).
 vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
-    int terms = u_flags.y;
-    vec3 I = shadeAmbient(u_ambient.xyz, u_ma, (terms & 1) != 0);
-    for (int i = 0; i < u_flags.z; ++i) {
+    vec3 I = shadeAmbient(u_ambient.xyz, u_ma, SL_AMBIENT);
+    // One call per specialised light with literal arguments (the variant's X-macro, unrolled).
+#define SL_LIGHT_TERM(i, isPoint, kind, planeMask) I += lightTerm(i, isPoint, kind, planeMask, P, N, V, md);
+    SL_FOR_EACH_LIGHT(SL_LIGHT_TERM)
+#undef SL_LIGHT_TERM
+#if SL_MORE_LIGHTS
+    // Lights past the specialised (and shadowed) ones: a generic loop, unshadowed.
+    for (int i = SL_LIGHTS; i < u_flags.z; ++i) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
-        vec3 c = shadeLight(N, L, V, Il, md, u_ms, u_s, u_flags.x, (terms & 2) != 0, (terms & 4) != 0);
-#if SL_SHADOWS
-        // vis_l multiplies diffuse + specular only; no lookup where N·L <= 0 (the term is 0 there anyway).
-        // A compile-time switch, not a uniform one: llvmpipe would evaluate the lookup for every fragment.
-        if (dot(N, L) > 0.0f) c *= shadowVisibility(i, P, normalize(N));
-#endif
-        I += c;
+        I += shadeLight(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR);
     }
+#endif
     return I;
 }
 

@@ -19,12 +19,27 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform1ui(p.uniform("u_objectId"), objectId);
 }
 
-const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const FrameBlock& frame) const {
-    return (frame.flags.w & kPassShadows) ? shadowed_ : local_;
+const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant) {
+    const std::string defines = variant.defines();
+    if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
+    if (programs_.size() >= 32) programs_.clear();  // a long viewer session: drop them all, not one by one
+    ColorPrograms set;
+    set.mesh = gl::Program::build(shaders_, "mesh.vert", "mesh.frag", defines);
+    set.sphere = gl::Program::build(shaders_, "sphere.vert", "sphere.frag", defines);
+    set.plane = gl::Program::build(shaders_, "plane.vert", "plane.frag", defines);
+    for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane}) {
+        p->bindBlock("Frame", kFrameBinding);
+        p->bindBlock("Shadows", kShadowBinding);
+        glUseProgram(p->id());
+        glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
+    }
+    glUseProgram(set.plane.id());
+    glUniform1i(set.plane.uniform("t_reflection"), GLint(kReflectionUnit));
+    return programs_.emplace(defines, std::move(set)).first->second;
 }
 
-void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, int skipPlane, bool mirrored) const {
-    const ColorPrograms& programs = programsFor(frame);
+void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
+                                int skipPlane, bool mirrored) const {
     const gl::Program& meshProgram = programs.mesh;
     const gl::Program& sphereProgram = programs.sphere;
     const gl::Program& planeProgram = programs.plane;

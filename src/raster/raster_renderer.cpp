@@ -46,13 +46,6 @@ std::array<glm::vec3, 36> unitCube() {
     return v;
 }
 
-std::string programDefines(bool shadows) {
-    return std::string("#define SL_SHADOWS ") + (shadows ? "1" : "0") + "\n#define SL_MAX_LIGHTS " +
-           std::to_string(kMaxLights) + "\n#define SL_MAX_SHADOWED " +
-           std::to_string(kMaxShadowedLights) + "\n#define SL_MAX_SHADOW_LAYERS " + std::to_string(kMaxShadowLayers) +
-           "\n#define SL_MAX_SHADOW_PLANES " + std::to_string(kMaxShadowPlanes) + "\n";
-}
-
 // Maps the full image's clip space onto one band's: y' = a·y + b·w, so the band's rows fill its viewport.
 glm::mat4 bandMatrix(int height, Band band) {
     glm::mat4 m(1.0f);
@@ -94,23 +87,19 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
 
 }  // namespace
 
-RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shadows_(shaders) {
-    // llvmpipe compiles lazily at the first draw, so the variant a scene never uses costs almost nothing.
-    for (bool withShadows : {false, true}) {
-        ColorPrograms& set = withShadows ? shadowed_ : local_;
-        const std::string defines = programDefines(withShadows);
-        set.mesh = gl::Program::build(shaders, "mesh.vert", "mesh.frag", defines);
-        set.sphere = gl::Program::build(shaders, "sphere.vert", "sphere.frag", defines);
-        set.plane = gl::Program::build(shaders, "plane.vert", "plane.frag", defines);
-        for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane}) {
-            p->bindBlock("Frame", kFrameBinding);
-            p->bindBlock("Shadows", kShadowBinding);
-            glUseProgram(p->id());
-            glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
-        }
-        glUseProgram(set.plane.id());
-        glUniform1i(set.plane.uniform("t_reflection"), GLint(kReflectionUnit));
-    }
+RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shaders), shadows_(shaders) {
+    // Compile errors surface here, not at a later draw: every variant is the same source with different
+    // constants, so these two (without shadows; with every optional block) check all of it. llvmpipe
+    // generates code lazily at the first draw, so variants a scene never uses cost little.
+    ShaderVariant local;
+    ShaderVariant full;
+    full.shadows = full.pcf = full.moreLights = true;
+    full.lights = 3;
+    full.shadowKind = {kShadowOrtho, kShadowPerspective, kShadowCube};
+    full.planes = 1;
+    full.planeMask = {1, 1, 1};
+    programsFor(local);
+    programsFor(full);
     glUseProgram(0);
 
     frameUbo_ = gl::Buffer::create();
@@ -225,6 +214,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     const FrameBlock frame = makeFrameBlock(scene, view, band);
     if (frame.flags.w & kPassShadows) prepareShadows(scene);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
+    const ColorPrograms& programs = programsFor(makeShaderVariant(frame, &shadows_.block()));
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);
@@ -255,7 +245,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
         glClearBufferfv(GL_DEPTH, 0, &farDepth);
         uploadFrame(*mirrored);
         glEnable(GL_CLIP_DISTANCE0);
-        drawPasses(scene, *mirrored, int(i), true);
+        drawPasses(scene, *mirrored, programs, int(i), true);
         glDisable(GL_CLIP_DISTANCE0);
         mirrorOfPlane_[i] = int(mirrors++);
     }
@@ -266,7 +256,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     if (target_.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
     uploadFrame(frame);
-    drawPasses(scene, frame, -1, false);
+    drawPasses(scene, frame, programs, -1, false);
     gl::checkError("RasterRenderer::draw");
 }
 

@@ -8,11 +8,14 @@
 #include "raster/draw_range.h"
 #include "raster/raster_settings.h"
 #include "raster/render_target.h"
+#include "raster/shader_variant.h"
 #include "raster/shadow_maps.h"
 #include "scene/scene.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace shadelab::raster {
@@ -52,16 +55,19 @@ public:
 private:
     void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const;
     void uploadFrame(const FrameBlock& frame) const;
-    void drawPasses(const Scene& scene, const FrameBlock& frame, int skipPlane, bool mirrored) const;
+    struct ColorPrograms;
+    void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs, int skipPlane,
+                    bool mirrored) const;
     void prepareShadows(const Scene& scene);
 
     RasterSettings settings_;
-    // The colour passes' programs, built twice: without and with shadow lookups (SL_SHADOWS).
+    // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
     struct ColorPrograms {
         gl::Program mesh, sphere, plane;
     };
-    const ColorPrograms& programsFor(const FrameBlock& frame) const;
-    ColorPrograms local_, shadowed_;
+    const ColorPrograms& programsFor(const ShaderVariant& variant);
+    const gl::ShaderLibrary shaders_;
+    std::map<std::string, ColorPrograms> programs_;
     ShadowMaps shadows_;
     std::vector<float> shadowKey_;        // what the current shadow maps were rendered from
     uint64_t meshGeneration_ = 0;         // bumped by uploadMeshes

@@ -40,7 +40,51 @@ glm::vec3 upFor(const glm::vec3& forward) {
     return std::abs(forward.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
 }
 
+// Signed distance of a point from a plane, and the side of it a light shines from (0: in the plane).
+float side(const Plane& p, const glm::vec3& x) { return glm::dot(p.normal, x) - p.offset; }
+float lightSide(const Plane& p, const Light& l) {
+    return l.type == LightType::Point ? side(p, l.position) : -glm::dot(p.normal, l.direction);
+}
+
+// Planes that can block light l for some visible receiver (ShadowBlock::light[].z). The tracer's shadow ray
+// from origin O is blocked by plane k exactly when O and the light lie strictly on opposite sides of it.
+// Plane k's own pixels never need the test: their origin lies on the viewer's side, so when the light is on
+// the other side N·L <= 0 and the diffuse and specular terms are 0 anyway. So plane k matters only when a
+// caster's box reaches its far side, or another plane does (every non-parallel plane crosses it).
+int planeMask(const Scene& scene, const Box& casters, const Light& l) {
+    int mask = 0;
+    const int planes = std::min<int>(int(scene.planes.size()), kMaxShadowPlanes);
+    for (int k = 0; k < planes; ++k) {
+        const Plane& p = scene.planes[size_t(k)];
+        const float ls = lightSide(p, l);
+        bool matters = ls == 0.0f || !std::isfinite(ls);
+        for (int c = 0; c < 8 && !casters.empty() && !matters; ++c) {
+            const glm::vec3 x(c & 1 ? casters.hi.x : casters.lo.x, c & 2 ? casters.hi.y : casters.lo.y,
+                              c & 4 ? casters.hi.z : casters.lo.z);
+            matters = side(p, x) * ls < 0.0f;
+        }
+        for (size_t j = 0; j < scene.planes.size() && !matters; ++j) {
+            if (int(j) == k) continue;
+            const Plane& q = scene.planes[j];
+            const bool parallel = glm::length(glm::cross(p.normal, q.normal)) <= 1e-6f;
+            // A parallel plane j lies at a constant signed distance from plane k: its point nearest the origin.
+            matters = !parallel || side(p, q.offset * q.normal) * ls <= 0.0f;
+        }
+        if (matters) mask |= 1 << k;
+    }
+    return mask;
+}
+
 }  // namespace
+
+glm::vec4 perspectiveDepthTest(float zNear, float zFar) {
+    const float span = zFar - zNear;
+    return glm::vec4(0.5f + 0.5f * (zFar + zNear) / span, zFar * zNear / span, 0.0f, 0.0f);
+}
+
+glm::vec4 orthoDepthTest(float zNear, float zFar, float texelWorld, float depthBiasTexels) {
+    return glm::vec4(0.0f, 0.0f, depthBiasTexels * texelWorld / (zFar - zNear), 0.0f);
+}
 
 float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges) {
     Box box = casterBounds(scene, ranges);
@@ -121,6 +165,7 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
                                                  view;
                 kind.x = kShadowOrtho;
                 range = glm::vec4(extent / float(size), zNear, zFar, 0.0f);
+                block_.depth[i] = orthoDepthTest(zNear, zFar, range.x, settings.depthBias);
                 continue;
             }
             const float d = glm::length(c - l.position);
@@ -133,9 +178,11 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
                     glm::perspective(2.0f * half, 1.0f, zNear, zFar) * glm::lookAt(l.position, c, upFor(f));
                 kind.x = kShadowPerspective;
                 range = glm::vec4(2.0f * std::tan(half) / float(size), zNear, zFar, 0.0f);
+                block_.depth[i] = perspectiveDepthTest(zNear, zFar);
                 continue;
             }
-            // Inside: a cube of six 90° faces, in the order +X −X +Y −Y +Z −Z that shadow.glsl selects by.
+            // Inside: a cube of six 90° faces, in the order +X −X +Y −Y +Z −Z. shadow.glsl selects the face and
+            // its coordinates from these lookAt bases directly (cubeFaceCoords), so keep the two in step.
             const float zFar = 1.02f * (d + R), zNear = 1e-3f * zFar;
             const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, zNear, zFar);
             for (int face = 0; face < 6; ++face) {
@@ -146,8 +193,10 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
             }
             kind.x = kShadowCube;
             range = glm::vec4(2.0f / float(size), zNear, zFar, 0.0f);
+            block_.depth[i] = perspectiveDepthTest(zNear, zFar);
         }
     }
+    for (int i = 0; i < lights; ++i) block_.light[i].z = planeMask(scene, box, scene.lights[size_t(i)]);
     layerCount_ = layers;
     allocate(layers > 0 ? size : std::max(size_, 1), std::max(layers, 1));
 

@@ -1,0 +1,60 @@
+#include "raster/shader_variant.h"
+
+#include "raster/frame_block.h"
+#include "raster/shadow_block.h"
+
+#include <algorithm>
+
+namespace shadelab::raster {
+
+std::string ShaderVariant::defines() const {
+    const auto define = [](const char* name, const std::string& value) {
+        return std::string("#define ") + name + " " + value + "\n";
+    };
+    std::string s;
+    s += define("SL_SHADOWS", shadows ? "1" : "0");
+    s += define("SL_MAX_LIGHTS", std::to_string(kMaxLights));
+    s += define("SL_MAX_SHADOWED", std::to_string(kMaxShadowedLights));
+    s += define("SL_MAX_SHADOW_LAYERS", std::to_string(kMaxShadowLayers));
+    s += define("SL_MAX_SHADOW_PLANES", std::to_string(kMaxShadowPlanes));
+    s += define("SL_MODEL", std::to_string(model));
+    s += define("SL_AMBIENT", terms & kTermAmbient ? "true" : "false");
+    s += define("SL_DIFFUSE", terms & kTermDiffuse ? "true" : "false");
+    s += define("SL_SPECULAR", terms & kTermSpecular ? "true" : "false");
+    s += define("SL_LIGHTS", std::to_string(lights));
+    s += define("SL_MORE_LIGHTS", moreLights ? "1" : "0");
+    // An X-macro over the specialised lights, unrolled here: Mesa does not unroll the loop itself, and only
+    // literal arguments let it fold each light's branches. F(index, isPoint, shadow kind, plane mask).
+    std::string each;
+    for (int i = 0; i < lights; ++i) {
+        const size_t k = size_t(i);
+        each += " F(" + std::to_string(i) + ", " + (point[k] ? "true" : "false") + ", " +
+                std::to_string(shadowKind[k]) + ", " + std::to_string(planeMask[k]) + ")";
+    }
+    s += define("SL_FOR_EACH_LIGHT(F)", each);
+    s += define("SL_SHADOW_PLANES", std::to_string(planes));
+    s += define("SL_PCF", pcf ? "1" : "0");
+    return s;
+}
+
+ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows) {
+    ShaderVariant v;
+    v.model = frame.flags.x;
+    v.terms = frame.flags.y;
+    const int count = std::clamp(frame.flags.z, 0, kMaxLights);
+    v.lights = std::min(count, kMaxShadowedLights);
+    v.moreLights = count > kMaxShadowedLights;
+    for (int i = 0; i < v.lights; ++i) v.point[size_t(i)] = frame.lightPos[i].w != 0.0f;
+    if (shadows && (frame.flags.w & kPassShadows)) {
+        v.shadows = true;
+        v.planes = std::clamp(shadows->info.x, 0, kMaxShadowPlanes);
+        v.pcf = shadows->info.y != 0;
+        for (int i = 0; i < v.lights; ++i) {
+            v.shadowKind[size_t(i)] = shadows->light[i].x;
+            v.planeMask[size_t(i)] = shadows->light[i].z;
+        }
+    }
+    return v;
+}
+
+}  // namespace shadelab::raster

@@ -1,0 +1,41 @@
+// ShaderVariant: the compile-time specialisation of the colour passes. llvmpipe runs every side of a
+// branch, uniform or not, so a program that decides per fragment between Phong and Blinn-Phong, between
+// ortho, perspective and cube shadow maps, and whether a plane can block a light, pays for all of them.
+// The colour programs are therefore compiled per variant: the model, the term switches, the first
+// kMaxShadowedLights lights' types and shadow techniques, and the planes that can block each of them are
+// #defines. A scene edit that changes one of these compiles a new variant once (RasterRenderer caches
+// them); material, colour, position and camera edits do not. Lights past kMaxShadowedLights are shaded by
+// a generic loop, unshadowed, as before.
+#pragma once
+
+#include "raster/raster_settings.h"
+
+#include <array>
+#include <string>
+
+namespace shadelab::raster {
+
+struct FrameBlock;
+struct ShadowBlock;
+
+struct ShaderVariant {
+    bool shadows = false;   // SL_SHADOWS: the shadow lookups exist at all
+    int model = 0;          // shading::SL_MODEL_*
+    int terms = 0;          // TermBits
+    int lights = 0;         // specialised lights: min(light count, kMaxShadowedLights)
+    bool moreLights = false;
+    std::array<bool, kMaxShadowedLights> point{};    // point light (else directional)
+    std::array<int, kMaxShadowedLights> shadowKind{};  // ShadowKind of each light's map
+    std::array<int, kMaxShadowedLights> planeMask{};   // planes (bits) that can block each light
+    int planes = 0;         // planes uploaded to the Shadows block
+    bool pcf = false;
+
+    // The #define prelude that selects this variant in shaders/surface.glsl and shadow.glsl; also the
+    // variant's cache key.
+    std::string defines() const;
+};
+
+// The variant for one draw. `shadows` is null when the frame has no shadow pass.
+ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows);
+
+}  // namespace shadelab::raster
