@@ -54,14 +54,13 @@ bool texelLit(ivec2 q, int layer, float r, vec4 test, bool ortho) {
     return d >= 1.0f || (ortho ? r <= d : (test.x - d) * r <= test.y);
 }
 
-// 1 lit, 0 shadowed (fractions with PCF) by light i's shadow map of the given kind.
-float mapVisibility(int i, int kind, vec3 P, vec3 Nf) {
+// 1 lit, 0 shadowed (fractions with PCF) by light i's shadow map of the given kind, from its first layer on.
+float mapVisibility(int i, int kind, int layer, vec3 P, vec3 Nf) {
     bool ortho = kind == SL_SHADOW_ORTHO;
     vec3 lightPos = u_lightPos[i].xyz;
     // Holbert 2011: move the receiver along its normal by a number of texels of the map at P.
     float texel = ortho ? u_shadowRange[i].x : u_shadowRange[i].x * length(P - lightPos);
     vec3 Pn = P + (u_shadowBias.y * texel + u_shadowBias.z) * Nf;
-    int layer = u_shadowLight[i].y;
     vec3 c;  // xy: the receiver in the layer's NDC; z: ortho its window depth, else its distance along the axis
     bool inside = true;
     if (kind == SL_SHADOW_CUBE) {
@@ -90,7 +89,7 @@ float mapVisibility(int i, int kind, vec3 P, vec3 Nf) {
 }
 
 // vis_l for light i at P (Nf: the unit normal facing the viewer), as the tracer's one shadow ray.
-float shadowVisibility(int i, bool isPoint, int kind, int planeMask, vec3 P, vec3 Nf) {
+float shadowVisibility(int i, bool isPoint, int kind, int planeMask, int layer, vec3 P, vec3 Nf) {
     if (planeMask != 0 && planesBlock(i, isPoint, planeMask, P + u_shadowBias.z * Nf)) return 0.0f;
-    return kind == SL_SHADOW_NONE ? 1.0f : mapVisibility(i, kind, P, Nf);
+    return kind == SL_SHADOW_NONE ? 1.0f : mapVisibility(i, kind, layer, P, Nf);
 }

@@ -14,14 +14,14 @@ layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_coverage;
 
 // One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint,
-// kind and planeMask are compile-time constants for the specialised lights, so their branches fold away.
-vec3 lightTerm(int i, bool isPoint, int kind, int planeMask, vec3 P, vec3 N, vec3 V, vec3 md) {
+// kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the specialised lights, so their branches fold away.
+vec3 lightTerm(int i, bool isPoint, int kind, int planeMask, int layer, vec3 P, vec3 N, vec3 V, vec3 md) {
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
     vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
     vec3 c = shadeLight(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
-    c *= shadowVisibility(i, isPoint, kind, planeMask, P, normalize(N));
+    c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
 #endif
     return c;
 }
@@ -30,7 +30,7 @@ vec3 lightTerm(int i, bool isPoint, int kind, int planeMask, vec3 P, vec3 N, vec
 vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
     vec3 I = shadeAmbient(u_ambient.xyz, u_ma, SL_AMBIENT);
     // One call per specialised light with literal arguments (the variant's X-macro, unrolled).
-#define SL_LIGHT_TERM(i, isPoint, kind, planeMask) I += lightTerm(i, isPoint, kind, planeMask, P, N, V, md);
+#define SL_LIGHT_TERM(i, isPoint, kind, planeMask, layer) I += lightTerm(i, isPoint, kind, planeMask, layer, P, N, V, md);
     SL_FOR_EACH_LIGHT(SL_LIGHT_TERM)
 #undef SL_LIGHT_TERM
 #if SL_MORE_LIGHTS

@@ -1,6 +1,7 @@
 // Viewer display pass (src/app/image_view.cpp): shows the raster image, the progressive reference, a wipe
-// between them, or an amplified difference, encoding linear colour with the exact sRGB curve
-// (IEC 61966-2-1, as src/image/encode.cpp) or not at all. Draws into the window; never into captures.
+// between them, or an amplified difference, encoding linear colour with the sRGB curve (IEC 61966-2-1:
+// exact, as src/image/encode.cpp, where 8-bit values are compared; a close fit for display) or not at
+// all. Draws into the window; never into captures.
 // One program per VIEW_MODE (0 raster, 1 traced, 2 split, 3 difference) and SRGB (1 or 0): llvmpipe
 // runs every branch of a uniform `if`, and this pass covers the whole image every frame.
 uniform sampler2D t_raster;     // RGBA32F linear, GL row order
@@ -15,10 +16,24 @@ uniform float u_tileSize;       // reference tile edge, pixels
 
 layout(location = 0) out vec4 o_color;
 
-vec3 encode(vec3 c) {
+// The exact sRGB curve, as the PNGs (and the difference view, which compares 8-bit values) use.
+vec3 encodeExact(vec3 c) {
     c = clamp(c, vec3(0.0f), vec3(1.0f));
 #if SRGB
     return mix(12.92f * c, 1.055f * pow(c, vec3(1.0f / 2.4f)) - 0.055f, step(vec3(0.0031308f), c));
+#else
+    return c;
+#endif
+}
+
+// For showing an image: c^(1/2.4) from three square roots (Ian Taylor's fit, chilliant.com), within
+// 0.40/255 of the exact curve (one 8-bit step at most, in 12 % of values), about 1 ms less per 720p
+// frame on llvmpipe. Screenshots never come from here (they encode the float image exactly).
+vec3 encode(vec3 c) {
+    c = clamp(c, vec3(0.0f), vec3(1.0f));
+#if SRGB
+    vec3 s1 = sqrt(c), s2 = sqrt(s1), s3 = sqrt(s2);
+    return mix(12.92f * c, 0.585122381f * s1 + 0.783140355f * s2 - 0.368262736f * s3, step(vec3(0.0031308f), c));
 #else
     return c;
 #endif
@@ -44,8 +59,8 @@ void main() {
     vec3 c = (left ? 1.0f : tileWeight(texel)) * encode(linear);
     if (abs(local.x - u_split) < 1.5f) c = vec3(1.0f, 0.85f, 0.2f);
 #else
-    vec3 a = floor(encode(texelFetch(t_raster, texel, 0).rgb) * 255.0f + 0.5f);
-    vec3 b = floor(encode(texelFetch(t_traced, texel, 0).rgb) * 255.0f + 0.5f);
+    vec3 a = floor(encodeExact(texelFetch(t_raster, texel, 0).rgb) * 255.0f + 0.5f);
+    vec3 b = floor(encodeExact(texelFetch(t_traced, texel, 0).rgb) * 255.0f + 0.5f);
     vec3 d = abs(a - b);
     float v = min(max(d.r, max(d.g, d.b)) * u_gain, 255.0f);
     vec3 c = texelFetch(t_ramp, ivec2(int(v), 0), 0).rgb;

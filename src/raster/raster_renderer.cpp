@@ -184,9 +184,11 @@ void RasterRenderer::uploadFrame(const FrameBlock& frame) const {
 
 // Shadow maps depend on lights, casters and settings only, not on the camera or the band: re-render them
 // when that key changes, so a banded image renders them once and a material edit not at all.
-void RasterRenderer::prepareShadows(const Scene& scene) {
-    std::vector<float> key = {float(settings_.shadowMapSize), settings_.depthBias, settings_.normalBias,
-                              float(settings_.pcf), float(meshGeneration_), float(scene.meshes.size())};
+void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
+    RasterSettings settings = settings_;
+    settings.shadowMapSize = shadowMapSizeFor(settings_, width, height);
+    std::vector<float> key = {float(settings.shadowMapSize), settings.depthBias, settings.normalBias,
+                              float(settings.pcf), float(meshGeneration_), float(scene.meshes.size())};
     auto push = [&key](const glm::vec3& v) { key.insert(key.end(), {v.x, v.y, v.z}); };
     for (const Light& l : scene.lights) {
         key.push_back(float(l.type));
@@ -203,7 +205,7 @@ void RasterRenderer::prepareShadows(const Scene& scene) {
     }
     push(scene.camera.position);  // the shadow-ray epsilon is scaled by the scene's box, eye included
     if (key != shadowKey_) {
-        shadows_.render(scene, settings_, ranges_, meshVao_ ? meshVao_.id() : emptyVao_.id(), cubeVao_.id());
+        shadows_.render(scene, settings, ranges_, meshVao_ ? meshVao_.id() : emptyVao_.id(), cubeVao_.id());
         shadowKey_ = std::move(key);
     }
 }
@@ -212,7 +214,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     if (band.rows <= 0) band = Band{0, height};
     const ViewSetup view = makeViewSetup(scene, width, height);
     const FrameBlock frame = makeFrameBlock(scene, view, band);
-    if (frame.flags.w & kPassShadows) prepareShadows(scene);
+    if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
     const ColorPrograms& programs = programsFor(makeShaderVariant(frame, &shadows_.block()));
 

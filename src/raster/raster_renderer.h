@@ -46,7 +46,8 @@ public:
 
     const RenderTarget& target() const { return target_; }
 
-    // Shadow-map resolution, biases, PCF (raster_settings.h). Takes effect at the next draw.
+    // Shadow-map resolution (auto: shadowMapSizeFor the image), biases, PCF (raster_settings.h). Takes effect
+    // at the next draw.
     void setSettings(const RasterSettings& settings) { settings_ = settings; }
     const RasterSettings& settings() const { return settings_; }
     // Shadow-map layers rendered for the last shadowed draw (0: none needed), for reports and benches.
@@ -58,7 +59,7 @@ private:
     struct ColorPrograms;
     void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs, int skipPlane,
                     bool mirrored) const;
-    void prepareShadows(const Scene& scene);
+    void prepareShadows(const Scene& scene, int width, int height);
 
     RasterSettings settings_;
     // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).

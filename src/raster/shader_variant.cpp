@@ -24,12 +24,14 @@ std::string ShaderVariant::defines() const {
     s += define("SL_LIGHTS", std::to_string(lights));
     s += define("SL_MORE_LIGHTS", moreLights ? "1" : "0");
     // An X-macro over the specialised lights, unrolled here: Mesa does not unroll the loop itself, and only
-    // literal arguments let it fold each light's branches. F(index, isPoint, shadow kind, plane mask).
+    // literal arguments let it fold each light's branches and load its matrices as uniform (an index read
+    // from a uniform block makes llvmpipe gather per fragment). F(index, isPoint, kind, plane mask, layer).
     std::string each;
     for (int i = 0; i < lights; ++i) {
         const size_t k = size_t(i);
         each += " F(" + std::to_string(i) + ", " + (point[k] ? "true" : "false") + ", " +
-                std::to_string(shadowKind[k]) + ", " + std::to_string(planeMask[k]) + ")";
+                std::to_string(shadowKind[k]) + ", " + std::to_string(planeMask[k]) + ", " +
+                std::to_string(firstLayer[k]) + ")";
     }
     s += define("SL_FOR_EACH_LIGHT(F)", each);
     s += define("SL_SHADOW_PLANES", std::to_string(planes));
@@ -52,6 +54,7 @@ ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shad
         for (int i = 0; i < v.lights; ++i) {
             v.shadowKind[size_t(i)] = shadows->light[i].x;
             v.planeMask[size_t(i)] = shadows->light[i].z;
+            v.firstLayer[size_t(i)] = shadows->light[i].y;
         }
     }
     return v;

@@ -27,6 +27,7 @@ struct ShaderVariant {
     std::array<bool, kMaxShadowedLights> point{};    // point light (else directional)
     std::array<int, kMaxShadowedLights> shadowKind{};  // ShadowKind of each light's map
     std::array<int, kMaxShadowedLights> planeMask{};   // planes (bits) that can block each light
+    std::array<int, kMaxShadowedLights> firstLayer{};  // its first shadow-map layer
     int planes = 0;         // planes uploaded to the Shadows block
     bool pcf = false;
 
