@@ -185,8 +185,8 @@ void RasterRenderer::uploadFrame(const FrameBlock& frame) const {
 // Shadow maps depend on lights, casters and settings only, not on the camera or the band: re-render them
 // when that key changes, so a banded image renders them once and a material edit not at all.
 void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
-    RasterSettings settings = settings_;
-    settings.shadowMapSize = shadowMapSizeFor(settings_, width, height);
+    RasterSettings settings = scene.raster;
+    settings.shadowMapSize = shadowMapSizeFor(scene.raster, width, height);
     std::vector<float> key = {float(settings.shadowMapSize), settings.depthBias, settings.normalBias,
                               float(settings.pcf), float(meshGeneration_), float(scene.meshes.size())};
     auto push = [&key](const glm::vec3& v) { key.insert(key.end(), {v.x, v.y, v.z}); };

@@ -6,7 +6,7 @@
 #include "gl/program.h"
 #include "image/image.h"
 #include "raster/draw_range.h"
-#include "raster/raster_settings.h"
+#include "raster/raster_limits.h"
 #include "raster/render_target.h"
 #include "raster/shader_variant.h"
 #include "raster/shadow_maps.h"
@@ -40,16 +40,12 @@ public:
 
     // Draws the scene (or one band of it) into the internal target, with coverage ids when asked. The
     // target is width x band rows. uploadMeshes must have seen the scene's current geometry. With
-    // scene.terms.shadows, shadow maps are re-rendered only when lights, casters or settings change; with
+    // scene.terms.shadows, shadow maps are re-rendered only when lights, casters or scene.raster change; with
     // scene.terms.reflections, each mirror plane (kr > 0) gets a mirrored pass of the same band.
     void draw(const Scene& scene, int width, int height, bool withCoverage = false, Band band = {});
 
     const RenderTarget& target() const { return target_; }
 
-    // Shadow-map resolution (auto: shadowMapSizeFor the image), biases, PCF (raster_settings.h). Takes effect
-    // at the next draw.
-    void setSettings(const RasterSettings& settings) { settings_ = settings; }
-    const RasterSettings& settings() const { return settings_; }
     // Shadow-map layers rendered for the last shadowed draw (0: none needed), for reports and benches.
     int shadowLayers() const { return shadows_.layers(); }
 
@@ -61,7 +57,6 @@ private:
                     bool mirrored) const;
     void prepareShadows(const Scene& scene, int width, int height);
 
-    RasterSettings settings_;
     // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
     struct ColorPrograms {
         gl::Program mesh, sphere, plane;

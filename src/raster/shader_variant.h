@@ -8,7 +8,7 @@
 // a generic loop, unshadowed, as before.
 #pragma once
 
-#include "raster/raster_settings.h"
+#include "raster/raster_limits.h"
 
 #include <array>
 #include <string>

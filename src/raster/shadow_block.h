@@ -2,7 +2,7 @@
 // (as frame_block.h). Filled by ShadowMaps; read by every colour pass when scene.terms.shadows is on.
 #pragma once
 
-#include "raster/raster_settings.h"
+#include "raster/raster_limits.h"
 
 #include <cstddef>
 #include <glm/mat4x4.hpp>

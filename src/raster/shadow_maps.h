@@ -6,7 +6,7 @@
 
 #include "gl/program.h"
 #include "raster/draw_range.h"
-#include "raster/raster_settings.h"
+#include "raster/raster_limits.h"
 #include "raster/shadow_block.h"
 #include "scene/scene.h"
 

@@ -5,6 +5,7 @@
 #include "scene/camera.h"
 #include "scene/light.h"
 #include "scene/objects.h"
+#include "scene/raster_settings.h"
 
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ struct Scene {
     glm::vec3 ambient{0.2f};                 // Ia, linear RGB intensity
     glm::vec3 background{0.0f};              // colour of rays that leave the scene, linear RGB
     int maxDepth = 5;                        // secondary-ray depth for the tracer, >= 0
+    RasterSettings raster;                   // the rasterizer's shadow-map and reflection settings
     std::vector<Light> lights;
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
