@@ -1,6 +1,9 @@
 // Sphere impostor: intersect the pixel's primary ray with the exact sphere, as the tracer does, and write
 // its depth. Exact silhouette and normal, no tessellation.
 #include "surface.glsl"
+#if SL_ENVIRONMENT
+#include "environment.glsl"
+#endif
 
 uniform vec3 u_center;
 uniform float u_radius;
@@ -14,6 +17,10 @@ void main() {
     vec3 V = -dir;
     vec3 N = faceForward((P - u_center) / u_radius, V);
     gl_FragDepth = depthOf(P);
-    o_color = vec4(shadeSurface(P, N, V, u_md), 1.0f);
+    vec3 I = shadeSurface(P, N, V, u_md);
+#if SL_ENVIRONMENT
+    I += environmentReflection(N, V);
+#endif
+    o_color = vec4(I, 1.0f);
     o_coverage = u_objectId;
 }

@@ -43,5 +43,6 @@ inline constexpr GLuint kFrameBinding = 0;
 inline constexpr GLuint kShadowBinding = 1;
 inline constexpr GLuint kShadowUnit = 1;
 inline constexpr GLuint kReflectionUnit = 2;
+inline constexpr GLuint kEnvironmentUnit = 3;
 
 }  // namespace shadelab::raster

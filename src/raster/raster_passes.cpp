@@ -17,6 +17,7 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(m.ms));
     glUniform1f(p.uniform("u_s"), m.s);
     glUniform1ui(p.uniform("u_objectId"), objectId);
+    glUniform3fv(p.uniform("u_kr"), 1, glm::value_ptr(m.kr));  // planes' mirrors and objects' cubes
 }
 
 const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant) {
@@ -24,10 +25,13 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
     if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
     if (programs_.size() >= 32) programs_.clear();  // a long viewer session: drop them all, not one by one
     ColorPrograms set;
+    const std::string environment = defines + "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n";
     set.mesh = gl::Program::build(shaders_, "mesh.vert", "mesh.frag", defines);
     set.sphere = gl::Program::build(shaders_, "sphere.vert", "sphere.frag", defines);
     set.plane = gl::Program::build(shaders_, "plane.vert", "plane.frag", defines);
-    for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane}) {
+    set.meshEnvironment = gl::Program::build(shaders_, "mesh.vert", "mesh.frag", environment);
+    set.sphereEnvironment = gl::Program::build(shaders_, "sphere.vert", "sphere.frag", environment);
+    for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane, &set.meshEnvironment, &set.sphereEnvironment}) {
         p->bindBlock("Frame", kFrameBinding);
         p->bindBlock("Shadows", kShadowBinding);
         glUseProgram(p->id());
@@ -35,25 +39,49 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
     }
     glUseProgram(set.plane.id());
     glUniform1i(set.plane.uniform("t_reflection"), GLint(kReflectionUnit));
+    for (const gl::Program* p : {&set.meshEnvironment, &set.sphereEnvironment}) {
+        glUseProgram(p->id());
+        glUniform1i(p->uniform("t_environment"), GLint(kEnvironmentUnit));
+    }
     return programs_.emplace(defines, std::move(set)).first->second;
 }
 
+// The program for one object: with its environment cube when it has one and this pass looks them up.
+const gl::Program& RasterRenderer::objectProgram(const gl::Program& plain, const gl::Program& environment, int sphere,
+                                                  int range, const PassOptions& options) const {
+    if (!options.reflections) {
+        glUseProgram(plain.id());
+        return plain;
+    }
+    for (size_t cube = 0; cube < probes_.size(); ++cube) {
+        const EnvironmentProbe& probe = probes_[cube];
+        if ((sphere >= 0 && probe.sphere == sphere) || (range >= 0 && probe.range == range)) {
+            glUseProgram(environment.id());
+            glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
+            glBindTexture(GL_TEXTURE_CUBE_MAP, environments_.texture(int(cube)));
+            glActiveTexture(GL_TEXTURE0);
+            return environment;
+        }
+    }
+    glUseProgram(plain.id());
+    return plain;
+}
+
 void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
-                                int skipPlane, bool mirrored) const {
-    const gl::Program& meshProgram = programs.mesh;
-    const gl::Program& sphereProgram = programs.sphere;
-    const gl::Program& planeProgram = programs.plane;
+                                const PassOptions& options) const {
     // A mirror reverses winding: front faces (for culling and gl_FrontFacing) become clockwise.
-    glFrontFace(mirrored ? GL_CW : GL_CCW);
+    glFrontFace(options.mirrored ? GL_CW : GL_CCW);
 
     // Meshes first: they keep early depth testing, and the impostors behind them are rejected cheaply.
     glDisable(GL_CULL_FACE);  // two-sided lighting: back faces are lit with the flipped normal
-    glUseProgram(meshProgram.id());
     glBindVertexArray(meshVao_.id());
-    for (const DrawRange& r : ranges_) {
+    for (size_t k = 0; k < ranges_.size(); ++k) {
+        const DrawRange& r = ranges_[k];
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
-        if (outsideClip(frame.viewProj, r.lo, r.hi)) continue;
-        setMaterial(meshProgram, scene.meshes[r.mesh].parts[r.part].material, meshCoverageId(scene, r.mesh));
+        if (int(k) == options.skipRange || outsideClip(frame.viewProj, r.lo, r.hi)) continue;
+        const Material& m = scene.meshes[r.mesh].parts[r.part].material;
+        const gl::Program& p = objectProgram(programs.mesh, programs.meshEnvironment, -1, int(k), options);
+        setMaterial(p, m, meshCoverageId(scene, r.mesh));
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
     }
@@ -61,23 +89,25 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
-    glUseProgram(sphereProgram.id());
     glBindVertexArray(cubeVao_.id());
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
+        if (int(i) == options.skipSphere) continue;
         const Sphere& s = scene.spheres[i];
-        setMaterial(sphereProgram, s.material, sphereCoverageId(scene, i));
-        glUniform3fv(sphereProgram.uniform("u_center"), 1, glm::value_ptr(s.center));
-        glUniform1f(sphereProgram.uniform("u_radius"), s.radius);
+        const gl::Program& p = objectProgram(programs.sphere, programs.sphereEnvironment, int(i), -1, options);
+        setMaterial(p, s.material, sphereCoverageId(scene, i));
+        glUniform3fv(p.uniform("u_center"), 1, glm::value_ptr(s.center));
+        glUniform1f(p.uniform("u_radius"), s.radius);
         glDrawArrays(GL_TRIANGLES, 0, 36);
     }
     glDisable(GL_CULL_FACE);
 
     // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
+    const gl::Program& planeProgram = programs.plane;
     glUseProgram(planeProgram.id());
     glBindVertexArray(emptyVao_.id());
     const glm::vec3 eye(frame.eye);
     for (size_t i = 0; i < scene.planes.size(); ++i) {
-        if (int(i) == skipPlane) continue;  // a mirror does not see itself
+        if (int(i) == options.skipPlane) continue;  // a mirror does not see itself
         const Plane& p = scene.planes[i];
         setMaterial(planeProgram, p.material, planeCoverageId(scene, i));
         const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
@@ -92,9 +122,8 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         const Checker c = p.checker.value_or(Checker{});
         glUniform3fv(planeProgram.uniform("u_md2"), 1, glm::value_ptr(c.md2));
         glUniform1f(planeProgram.uniform("u_checkerSize"), c.size);
-        const int mirror = !mirrored && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
+        const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
         glUniform1i(planeProgram.uniform("u_mirror"), mirror >= 0 ? 1 : 0);
-        glUniform3fv(planeProgram.uniform("u_kr"), 1, glm::value_ptr(p.material.kr));
         if (mirror >= 0) {
             glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
             glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());

@@ -85,6 +85,42 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
     return f;
 }
 
+// Everything an environment cube's pixels depend on except the camera: the frame's shading flags, ambient
+// and lights, the background, and every object's geometry and material.
+std::vector<float> environmentKey(const Scene& scene, const FrameBlock& frame) {
+    std::vector<float> key;
+    auto push = [&key](const glm::vec3& v) { key.insert(key.end(), {v.x, v.y, v.z}); };
+    auto material = [&](const Material& m) {
+        push(m.ma);
+        push(m.md);
+        push(m.ms);
+        push(m.kr);
+        key.push_back(m.s);
+    };
+    key.insert(key.end(), {float(frame.flags.x), float(frame.flags.y), float(frame.flags.z), float(frame.flags.w)});
+    push(scene.ambient);
+    push(scene.background);
+    for (int i = 0; i < frame.flags.z; ++i)
+        for (const glm::vec4& v : {frame.lightPos[i], frame.lightColor[i], frame.lightAtten[i]})
+            key.insert(key.end(), {v.x, v.y, v.z, v.w});
+    for (const Sphere& sp : scene.spheres) {
+        push(sp.center);
+        key.push_back(sp.radius);
+        material(sp.material);
+    }
+    for (const Plane& p : scene.planes) {
+        push(p.normal);
+        key.push_back(p.offset);
+        material(p.material);
+        const Checker c = p.checker.value_or(Checker{glm::vec3(-1.0f), -1.0f});
+        push(c.md2);
+        key.push_back(c.size);
+    }
+    for (const Mesh& m : scene.meshes)
+        for (const MeshPart& part : m.parts) material(part.material);
+    return key;
+}
+
 }  // namespace
 
 RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shaders), shadows_(shaders) {
@@ -210,6 +246,48 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
     }
 }
 
+// Reflective spheres and mesh parts (kr > 0, reflections on): one environment cube each, rendered from its
+// centre with the image's programs, re-rendered only when something but the camera changes.
+void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs) {
+    probes_.clear();
+    if (!(frame.flags.w & kPassMirrors)) return;
+    const auto reflective = [](const Material& m) { return m.kr.x > 0.0f || m.kr.y > 0.0f || m.kr.z > 0.0f; };
+    for (size_t i = 0; i < scene.spheres.size() && probes_.size() < size_t(kMaxEnvironmentCubes); ++i) {
+        const Sphere& s = scene.spheres[i];
+        if (reflective(s.material)) probes_.push_back({int(i), -1, s.center, 0.5f * s.radius});
+    }
+    for (size_t k = 0; k < ranges_.size() && probes_.size() < size_t(kMaxEnvironmentCubes); ++k) {
+        const DrawRange& r = ranges_[k];
+        if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
+        if (!reflective(scene.meshes[r.mesh].parts[r.part].material)) continue;
+        probes_.push_back({-1, int(k), 0.5f * (r.lo + r.hi), std::max(1e-3f * glm::length(r.hi - r.lo), 1e-5f)});
+    }
+    if (probes_.empty()) return;
+
+    const int size = std::clamp(scene.raster.reflectionCubeSize, kMinReflectionCubeSize, kMaxReflectionCubeSize);
+    std::vector<float> key = environmentKey(scene, frame);
+    key.insert(key.end(), shadowKey_.begin(), shadowKey_.end());
+    key.insert(key.end(), {float(size), float(meshGeneration_), float(probes_.size())});
+    if (key == environmentKey_) return;
+
+    environments_.resize(int(probes_.size()), size);
+    const float background[4] = {scene.background.r, scene.background.g, scene.background.b, 1.0f};
+    const float farDepth = 1.0f;
+    for (size_t cube = 0; cube < probes_.size(); ++cube) {
+        const EnvironmentProbe& probe = probes_[cube];
+        for (int face = 0; face < 6; ++face) {
+            environments_.bindFace(int(cube), face);
+            glClearBufferfv(GL_COLOR, 0, background);
+            glClearBufferfv(GL_DEPTH, 0, &farDepth);
+            const FrameBlock faceFrame = cubeFaceFrame(frame, probe.centre, probe.zNear, face, size);
+            uploadFrame(faceFrame);
+            drawPasses(scene, faceFrame, programs, PassOptions{-1, probe.sphere, probe.range, false, false});
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    environmentKey_ = std::move(key);
+}
+
 void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage, Band band) {
     if (band.rows <= 0) band = Band{0, height};
     const ViewSetup view = makeViewSetup(scene, width, height);
@@ -229,6 +307,8 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     const GLuint noObject[4] = {kBackgroundId, 0, 0, 0};
     const float farDepth = 1.0f;
 
+    prepareEnvironments(scene, frame, programs);
+
     // Mirror passes first, each into its own float target of the band's size (one bounce, local shading).
     mirrorOfPlane_.assign(scene.planes.size(), -1);
     glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
@@ -247,7 +327,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
         glClearBufferfv(GL_DEPTH, 0, &farDepth);
         uploadFrame(*mirrored);
         glEnable(GL_CLIP_DISTANCE0);
-        drawPasses(scene, *mirrored, programs, int(i), true);
+        drawPasses(scene, *mirrored, programs, PassOptions{int(i), -1, -1, true, false});
         glDisable(GL_CLIP_DISTANCE0);
         mirrorOfPlane_[i] = int(mirrors++);
     }
@@ -258,7 +338,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     if (target_.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
     uploadFrame(frame);
-    drawPasses(scene, frame, programs, -1, false);
+    drawPasses(scene, frame, programs, PassOptions{});
     gl::checkError("RasterRenderer::draw");
 }
 

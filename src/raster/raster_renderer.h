@@ -6,6 +6,7 @@
 #include "gl/program.h"
 #include "image/image.h"
 #include "raster/draw_range.h"
+#include "raster/environment_cubes.h"
 #include "raster/raster_limits.h"
 #include "raster/render_target.h"
 #include "raster/shader_variant.h"
@@ -50,16 +51,27 @@ public:
     int shadowLayers() const { return shadows_.layers(); }
 
 private:
-    void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const;
-    void uploadFrame(const FrameBlock& frame) const;
     struct ColorPrograms;
-    void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs, int skipPlane,
-                    bool mirrored) const;
+    // What one run of the colour passes leaves out or changes: the mirror pass skips its plane and reverses
+    // winding; an environment face skips its own object and adds no environment reflections (one bounce).
+    struct PassOptions {
+        int skipPlane = -1, skipSphere = -1, skipRange = -1;
+        bool mirrored = false;
+        bool reflections = true;   // planar mirrors and environment cubes looked up (the primary pass only)
+    };
+    void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const;
+    const gl::Program& objectProgram(const gl::Program& plain, const gl::Program& environment, int sphere, int range,
+                                     const PassOptions& options) const;
+    void uploadFrame(const FrameBlock& frame) const;
+    void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
+                    const PassOptions& options) const;
     void prepareShadows(const Scene& scene, int width, int height);
+    void prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs);
 
     // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
     struct ColorPrograms {
         gl::Program mesh, sphere, plane;
+        gl::Program meshEnvironment, sphereEnvironment;   // + kr ⊙ env(R) from the object's cube (SL_ENVIRONMENT)
     };
     const ColorPrograms& programsFor(const ShaderVariant& variant);
     const gl::ShaderLibrary shaders_;
@@ -67,6 +79,9 @@ private:
     ShadowMaps shadows_;
     std::vector<float> shadowKey_;        // what the current shadow maps were rendered from
     uint64_t meshGeneration_ = 0;         // bumped by uploadMeshes
+    EnvironmentCubes environments_;
+    std::vector<EnvironmentProbe> probes_;   // this draw's reflective spheres and mesh parts, cube i for probe i
+    std::vector<float> environmentKey_;     // what the cubes were rendered from
     std::vector<RenderTarget> mirrorTargets_;
     std::vector<int> mirrorOfPlane_;      // per plane: index into mirrorTargets_ for this band, or -1
     gl::Buffer frameUbo_;

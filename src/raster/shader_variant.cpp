@@ -36,6 +36,7 @@ std::string ShaderVariant::defines() const {
     s += define("SL_FOR_EACH_LIGHT(F)", each);
     s += define("SL_SHADOW_PLANES", std::to_string(planes));
     s += define("SL_PCF", pcf ? "1" : "0");
+    s += define("SL_ENVIRONMENT", "0");  // RasterRenderer redefines it to 1 for its environment programs
     return s;
 }
 
