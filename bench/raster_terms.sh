@@ -15,7 +15,7 @@ sed 's/"material": {"ma": 0.8, "md": 0.8, "ms": 0.1, "s": 16}/"material": {"ma":
     "$scene" > "$mirror"
 grep -q '"kr": 0.3' "$mirror" || { echo "raster_terms: could not add kr to the default floor" >&2; exit 1; }
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-echo "shadow maps: 2048x2048 texels per layer (RasterSettings::shadowMapSize), one perspective layer per point light"
+echo "shadow maps: auto size, 2048x2048 texels per layer at 1080p (RasterSettings::shadowMapSize), one perspective layer per point light"
 bench() {  # label, then shadelab render arguments
     local label=$1; shift
     echo "$label:"
@@ -23,6 +23,6 @@ bench() {  # label, then shadelab render arguments
         tail -1
 }
 bench "default scene, shadows + reflections off" "$scene" --terms ambient,diffuse,specular
-bench "default scene, all terms on (shadows; its mirror sphere needs no raster pass)" "$scene"
+bench "default scene, all terms on (shadows; environment cube for its mirror sphere)" "$scene"
 bench "default scene + kr 0.3 floor, shadows + reflections off" "$mirror" --terms ambient,diffuse,specular
 bench "default scene + kr 0.3 floor, shadows + planar reflection on" "$mirror"
