@@ -8,8 +8,11 @@ uniform int u_checker;          // 1 when the plane has a checker pattern
 uniform vec3 u_md2;
 uniform float u_checkerSize;
 uniform vec3 u_kr;
-uniform int u_mirror;               // 1: add kr ⊙ I(reflected) from the planar reflection pass
+#if SL_ENVIRONMENT
+// A mirror plane (its program is the variant's environment program): add kr ⊙ I(reflected) from the
+// planar reflection pass. A compile-time switch: llvmpipe would fetch for every plane otherwise.
 uniform sampler2D t_reflection;     // the mirrored render of this band, pixel for pixel
+#endif
 
 void main() {
     vec3 dir = fragmentRay();
@@ -22,7 +25,9 @@ void main() {
     vec3 md = (u_checker != 0 && checkerParity(P, u_planeNormal, u_checkerSize) == 1) ? u_md2 : u_md;
     vec3 I = shadeSurface(P, N, V, md);
     // Planar reflection: the mirrored scene seen through this pixel is exactly I(reflected ray).
-    if (u_mirror != 0) I += u_kr * texelFetch(t_reflection, ivec2(gl_FragCoord.xy), 0).rgb;
+#if SL_ENVIRONMENT
+    I += u_kr * texelFetch(t_reflection, ivec2(gl_FragCoord.xy), 0).rgb;
+#endif
     o_color = vec4(I, 1.0f);
     o_coverage = u_objectId;
 }

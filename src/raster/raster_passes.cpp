@@ -31,14 +31,16 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
     set.plane = gl::Program::build(shaders_, "plane.vert", "plane.frag", defines);
     set.meshEnvironment = gl::Program::build(shaders_, "mesh.vert", "mesh.frag", environment);
     set.sphereEnvironment = gl::Program::build(shaders_, "sphere.vert", "sphere.frag", environment);
-    for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane, &set.meshEnvironment, &set.sphereEnvironment}) {
+    set.planeMirror = gl::Program::build(shaders_, "plane.vert", "plane.frag", environment);
+    for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane, &set.meshEnvironment, &set.sphereEnvironment,
+                                 &set.planeMirror}) {
         p->bindBlock("Frame", kFrameBinding);
         p->bindBlock("Shadows", kShadowBinding);
         glUseProgram(p->id());
         glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
     }
-    glUseProgram(set.plane.id());
-    glUniform1i(set.plane.uniform("t_reflection"), GLint(kReflectionUnit));
+    glUseProgram(set.planeMirror.id());
+    glUniform1i(set.planeMirror.uniform("t_reflection"), GLint(kReflectionUnit));
     for (const gl::Program* p : {&set.meshEnvironment, &set.sphereEnvironment}) {
         glUseProgram(p->id());
         glUniform1i(p->uniform("t_environment"), GLint(kEnvironmentUnit));
@@ -102,13 +104,19 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     glDisable(GL_CULL_FACE);
 
     // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
-    const gl::Program& planeProgram = programs.plane;
-    glUseProgram(planeProgram.id());
     glBindVertexArray(emptyVao_.id());
     const glm::vec3 eye(frame.eye);
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         if (int(i) == options.skipPlane) continue;  // a mirror does not see itself
         const Plane& p = scene.planes[i];
+        const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
+        const gl::Program& planeProgram = mirror >= 0 ? programs.planeMirror : programs.plane;
+        glUseProgram(planeProgram.id());
+        if (mirror >= 0) {
+            glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
+            glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());
+            glActiveTexture(GL_TEXTURE0);
+        }
         setMaterial(planeProgram, p.material, planeCoverageId(scene, i));
         const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
         const glm::vec3 centre = eye - eyeHeight * p.normal;
@@ -122,13 +130,6 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         const Checker c = p.checker.value_or(Checker{});
         glUniform3fv(planeProgram.uniform("u_md2"), 1, glm::value_ptr(c.md2));
         glUniform1f(planeProgram.uniform("u_checkerSize"), c.size);
-        const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
-        glUniform1i(planeProgram.uniform("u_mirror"), mirror >= 0 ? 1 : 0);
-        if (mirror >= 0) {
-            glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
-            glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());
-            glActiveTexture(GL_TEXTURE0);
-        }
         glDrawArrays(GL_TRIANGLES, 0, 12);
     }
     glFrontFace(GL_CCW);

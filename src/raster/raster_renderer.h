@@ -72,6 +72,7 @@ private:
     struct ColorPrograms {
         gl::Program mesh, sphere, plane;
         gl::Program meshEnvironment, sphereEnvironment;   // + kr ⊙ env(R) from the object's cube (SL_ENVIRONMENT)
+        gl::Program planeMirror;                          // + kr ⊙ the planar reflection pass (SL_ENVIRONMENT)
     };
     const ColorPrograms& programsFor(const ShaderVariant& variant);
     const gl::ShaderLibrary shaders_;
