@@ -171,6 +171,40 @@ TEST(AppState, LightsAddRemoveAndAmbient) {
     EXPECT_EQ(joinIntensity(ci), glm::vec3(2.0f, 1.0f, 0.5f));
 }
 
+TEST(AppState, RasterSettingsChangeOnlySceneRasterAndClamp) {
+    ViewerState s = defaultState();
+    select(s, idOf(s, "gold"));
+    setMode(s, ViewMode::Split);
+    const ViewerState before = s;
+    const RasterSettings wanted{2048, 0.5f, 3.25f, true, 256};
+    setRasterSettings(s, wanted);
+    EXPECT_EQ(s.scene.raster.shadowMapSize, 2048);
+    EXPECT_EQ(s.scene.raster.depthBias, 0.5f);
+    EXPECT_EQ(s.scene.raster.normalBias, 3.25f);
+    EXPECT_TRUE(s.scene.raster.pcf);
+    EXPECT_EQ(s.scene.raster.reflectionCubeSize, 256);
+    EXPECT_GT(s.revision, before.revision) << "the rasterizer must redraw";
+    // Nothing else changed: the scene with its old raster settings saves to the same text, and the view is kept.
+    Scene restored = s.scene;
+    restored.raster = before.scene.raster;
+    EXPECT_EQ(sceneToJson(restored), sceneToJson(before.scene));
+    EXPECT_NE(sceneToJson(s.scene), sceneToJson(before.scene)) << "a save keeps the new settings";
+    EXPECT_EQ(s.selected, before.selected);
+    EXPECT_EQ(s.mode, before.mode);
+    EXPECT_EQ(s.geometryRevision, before.geometryRevision);
+
+    setRasterSettings(s, RasterSettings{5, -1.0f, 1e9f, false, 1 << 20});
+    EXPECT_EQ(s.scene.raster.shadowMapSize, kMinShadowMapSize);
+    EXPECT_EQ(s.scene.raster.depthBias, 0.0f);
+    EXPECT_EQ(s.scene.raster.normalBias, kMaxShadowBias);
+    EXPECT_FALSE(s.scene.raster.pcf);
+    EXPECT_EQ(s.scene.raster.reflectionCubeSize, kMaxReflectionCubeSize);
+    setRasterSettings(s, RasterSettings{-3, std::nanf(""), 2.0f, false, 1});
+    EXPECT_EQ(s.scene.raster.shadowMapSize, 0) << "<= 0 is auto";
+    EXPECT_EQ(s.scene.raster.depthBias, 0.0f);
+    EXPECT_EQ(s.scene.raster.reflectionCubeSize, kMinReflectionCubeSize);
+}
+
 TEST(AppState, MeshMaterialEditsGoToTheOverrideAndEveryPart) {
     const std::string path = test::sourcePath("assets/scenes/torus.json");
     ViewerState s = makeViewerState(loadScene(path), path);
@@ -366,6 +400,33 @@ TEST(AppScript, ParsesFramesAndActions) {
     EXPECT_EQ(a.probe.y, 20);
     // A bare list works too.
     EXPECT_EQ(parse(R"([{"action": "frameAll"}])").actions.size(), 1u);
+}
+
+TEST(AppScript, SetRasterChangesOnlyTheFieldsGiven) {
+    const Script sc = parse(R"([{"action": "setRaster", "shadowMapSize": 512, "pcf": true},
+                                {"action": "setRaster", "shadowMapSize": "auto", "normalBias": 0.75},
+                                {"action": "setRaster", "depthBias": 2, "reflectionCubeSize": 64}])");
+    ASSERT_EQ(sc.actions.size(), 3u);
+    EXPECT_TRUE(isStateAction(sc.actions[0].kind));
+    ViewerState a = defaultState(), b = defaultState();
+    applyScriptAction(a, sc.actions[0], sc.file);
+    EXPECT_EQ(a.scene.raster.shadowMapSize, 512);
+    EXPECT_TRUE(a.scene.raster.pcf);
+    EXPECT_EQ(a.scene.raster.depthBias, RasterSettings{}.depthBias);
+    applyScriptAction(a, sc.actions[1], sc.file);
+    applyScriptAction(a, sc.actions[2], sc.file);
+    setRasterSettings(b, RasterSettings{0, 2.0f, 0.75f, true, 64});
+    EXPECT_EQ(sceneToJson(a.scene), sceneToJson(b.scene));
+    // Errors name the field as the scene file's do; a field of another action is refused.
+    EXPECT_EQ(parseError(R"([{"action": "setRaster", "shadowMapSize": 5}])"),
+              "actions.json: actions[0].shadowMapSize: expected \"auto\" or an integer in 16..8192, got 5");
+    EXPECT_NE(parseError(R"([{"action": "setRaster", "reflectionCubeSize": 4096}])")
+                  .find("actions[0].reflectionCubeSize: must be in [8, 2048]"),
+              std::string::npos);
+    EXPECT_NE(parseError(R"([{"action": "setRaster", "pcf": "on"}])").find("actions[0].pcf: expected true or false"),
+              std::string::npos);
+    EXPECT_NE(parseError(R"([{"action": "setRaster", "s": 3}])").find("actions[0].s: not a field of 'setRaster'"),
+              std::string::npos);
 }
 
 TEST(AppScript, ErrorsNameTheFileAndTheAction) {

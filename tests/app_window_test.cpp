@@ -1,7 +1,8 @@
 // Tests of the real viewer window under Xvfb (issue 4): after 30 frames its screenshot equals the
 // headless `shadelab render` of the same scene and size; a scripted shininess change changes the
 // screenshot and matches the headless render of the changed scene; the probe on a known pixel reports
-// the object and the NoL of the shared C++ shading; a broken shader reload keeps the last good program.
+// the object and the NoL of the shared C++ shading; a broken shader reload keeps the last good program; the
+// raster flags and the setRaster action give the images `shadelab render` gives with those settings.
 // Every comparison has a negative control. Without xvfb-run the tests report SKIPPED with the reason.
 #include "image/compare.h"
 #include "image/compare_report.h"
@@ -56,8 +57,8 @@ Result view(const std::string& args, const std::string& env = "") {
     return shell(env + "xvfb-run -a -s '-screen 0 1920x1200x24' " + binary() + " view " + args);
 }
 
-Result render(const std::string& scene, const std::string& out) {
-    return shell(binary() + " render " + scene + " --size " + kSize + " -o " + out);
+Result render(const std::string& scene, const std::string& out, const std::string& flags = "") {
+    return shell(binary() + " render " + scene + " --size " + kSize + " -o " + out + " " + flags);
 }
 
 bool haveXvfb() { return shell("command -v xvfb-run").code == 0; }
@@ -110,6 +111,12 @@ TEST(AppWindow, HelpAndNoDisplayNeedNoWindow) {
     EXPECT_NE(none.out.find("shadelab render"), std::string::npos) << none.out;
     Result usage = shell(binary() + " view --size 0x10");
     EXPECT_EQ(usage.code, 2) << usage.out;
+    // The raster flags are render's (cli/raster_flags.h): same names, ranges and messages.
+    EXPECT_NE(help.out.find("--reflection-cube-size N"), std::string::npos) << help.out;
+    Result badFlag = shell(binary() + " view --shadow-map-size 5");
+    EXPECT_EQ(badFlag.code, 2) << badFlag.out;
+    EXPECT_NE(badFlag.out.find("--shadow-map-size: expected auto or a whole number from 16 to 8192, got '5'"),
+              std::string::npos) << badFlag.out;
     Result badScript = shell("env DISPLAY=:0 " + binary() + " view --script " + writeText("bad.json", "[{\"action\": 1}]"));
     EXPECT_EQ(badScript.code, 1) << badScript.out;
     EXPECT_NE(badScript.out.find("bad.json: actions[0].action:"), std::string::npos) << badScript.out;
@@ -164,6 +171,31 @@ TEST(AppWindow, ScriptedShininessChangeMatchesHeadlessRenderOfChangedScene) {
     EXPECT_FALSE(sameBytes(after, unchanged));
     // What the viewer saved is the changed scene.
     EXPECT_EQ(sceneToJson(parseSceneJson(readFile(saved), saved)), changedJson);
+}
+
+TEST(AppWindow, RasterFlagsAndSetRasterMatchHeadlessRenders) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string flagged = test::outputPath("raster_view_flags.png");
+    const std::string scripted = test::outputPath("raster_view_script.png");
+    const std::string script = writeText("raster_script.json", R"({"actions": [
+        {"frame": 5, "action": "screenshot", "path": ")" + flagged + R"("},
+        {"frame": 6, "action": "setRaster", "shadowMapSize": "auto", "pcf": false, "reflectionCubeSize": 8}
+    ]})");
+    Result v = view(scenePath + " --size " + kSize + " --frames 10 --pcf --shadow-map-size 16 --script " + script +
+                    " --screenshot " + scripted);
+    ASSERT_EQ(v.code, 0) << v.out;
+    const std::string expectFlagged = test::outputPath("raster_render_flags.png");
+    const std::string expectScripted = test::outputPath("raster_render_cube8.png");
+    const std::string plain = test::outputPath("raster_render_plain.png");
+    ASSERT_EQ(render(scenePath, expectFlagged, "--pcf --shadow-map-size 16").code, 0);
+    ASSERT_EQ(render(scenePath, expectScripted, "--reflection-cube-size 8").code, 0);
+    ASSERT_EQ(render(scenePath, plain).code, 0);
+    expectSameImage("raster_view_flags", flagged, expectFlagged);
+    expectSameImage("raster_view_script", scripted, expectScripted);
+    // Negative controls: each setting is visible.
+    EXPECT_FALSE(sameBytes(flagged, plain)) << "--pcf --shadow-map-size 16 did not reach the viewer's scene";
+    EXPECT_FALSE(sameBytes(scripted, plain)) << "setRaster reflectionCubeSize 8 did not change the image";
 }
 
 TEST(AppWindow, ProbeReportsObjectAndNoLOfSharedShading) {

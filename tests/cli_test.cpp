@@ -44,6 +44,11 @@ std::string writeText(const std::string& name, const std::string& text) {
     return path;
 }
 
+std::string readAll(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 int lineCount(const std::string& s) {
     int n = 0;
     for (char c : s) n += c == '\n';
@@ -135,6 +140,8 @@ TEST(Cli, HelpExitsZero) {
     EXPECT_EQ(r.code, 0);
     EXPECT_NE(r.out.find("--size"), std::string::npos);
     EXPECT_NE(r.out.find("--encoding"), std::string::npos);
+    EXPECT_NE(r.out.find("--shadow-map-size N|auto"), std::string::npos);
+    EXPECT_NE(r.out.find("--pcf"), std::string::npos);
 }
 
 // Hiding glvnd's EGL vendor files makes every EGL platform fail, as on a machine without Mesa's EGL.
@@ -177,6 +184,64 @@ TEST(Cli, EncodingLinearIsDarkerThanSrgb) {
         sumL += l.data[i];
     }
     EXPECT_GT(sumS, sumL + long(s.data.size()) * 5) << a << " vs " << b;
+}
+
+TEST(Cli, RasterFlagsRefuseBadValuesWithExitTwo) {
+    std::string scene = test::sourcePath("assets/scenes/default.json");
+    std::string out = test::outputPath("raster_flags_bad.png");
+    fs::remove(out);
+    const std::pair<const char*, const char*> cases[] = {
+        {"--shadow-map-size 5", "--shadow-map-size: expected auto or a whole number from 16 to 8192, got '5'"},
+        {"--shadow-map-size huge", "--shadow-map-size: expected auto or a whole number from 16 to 8192, got 'huge'"},
+        {"--shadow-map-size 16384", "got '16384'"},
+        {"--shadow-bias -1", "--shadow-bias: expected a number from 0 to 64, got '-1'"},
+        {"--shadow-bias nan", "--shadow-bias: expected a number from 0 to 64, got 'nan'"},
+        {"--normal-bias 64.5", "--normal-bias: expected a number from 0 to 64, got '64.5'"},
+        {"--normal-bias 1x", "got '1x'"},
+        {"--reflection-cube-size 4", "--reflection-cube-size: expected a whole number from 8 to 2048, got '4'"},
+        {"--reflection-cube-size 128.5", "got '128.5'"},
+        {"--pcf=on", "unknown option '--pcf=on'"},
+        {"--shadow-bias", "--shadow-bias needs a value"},
+    };
+    for (const auto& [flags, message] : cases) {
+        Result r = run("render " + scene + " -o " + out + " " + flags);
+        EXPECT_EQ(r.code, 2) << flags << ": " << r.out;
+        EXPECT_NE(r.out.find(message), std::string::npos) << flags << ": " << r.out;
+        EXPECT_EQ(lineCount(r.out), 1) << r.out;
+        EXPECT_FALSE(fs::exists(out)) << flags;
+    }
+}
+
+TEST(Cli, RasterFlagsOverrideTheScenesRasterSettings) {
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    auto render = [](const std::string& input, const std::string& name, const std::string& flags) {
+        const std::string out = test::outputPath(name);
+        Result r = run("render " + input + " -o " + out + " --size 160x90 " + flags);
+        EXPECT_EQ(r.code, 0) << flags << ": " << r.out;
+        return r.code == 0 ? readPng(out).data : std::vector<uint8_t>();
+    };
+    const std::vector<uint8_t> base = render(scene, "raster_flags_base.png", "");
+    ASSERT_FALSE(base.empty());
+    // The scene's defaults restated change nothing (the negative control for the differences below).
+    EXPECT_EQ(render(scene, "raster_flags_defaults.png",
+                     "--shadow-map-size auto --shadow-bias 1 --normal-bias=1.5 --reflection-cube-size 128"),
+              base);
+    EXPECT_NE(render(scene, "raster_flags_pcf.png", "--pcf"), base) << "PCF softens the shadow edges";
+    EXPECT_NE(render(scene, "raster_flags_map16.png", "--shadow-map-size 16"), base) << "16-texel maps are coarse";
+    EXPECT_NE(render(scene, "raster_flags_cube8.png", "--reflection-cube-size 8"), base)
+        << "the mirror sphere's 8-texel cube is blurred";
+    // The flags override the file's "raster" object, and mean what its fields mean.
+    std::string text = readAll(scene);
+    ASSERT_EQ(text.substr(0, 1), "{");
+    const std::string withRaster =
+        writeText("raster_flags_scene.json",
+                  R"({"raster": {"shadowMapSize": 16, "pcf": true, "reflectionCubeSize": 8},)" + text.substr(1));
+    const std::vector<uint8_t> fromFile = render(withRaster, "raster_flags_from_file.png", "");
+    EXPECT_EQ(render(scene, "raster_flags_as_file.png", "--shadow-map-size 16 --pcf --reflection-cube-size 8"),
+              fromFile);
+    EXPECT_NE(fromFile, base);
+    EXPECT_EQ(render(withRaster, "raster_flags_file_overridden.png", "--shadow-map-size auto --reflection-cube-size 128"),
+              render(scene, "raster_flags_pcf_only.png", "--pcf"));
 }
 
 TEST(CliCompare, ExitCodesFollowTheGates) {
@@ -222,11 +287,6 @@ std::vector<std::string> listDir(const std::string& dir) {
     for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
-}
-
-std::string readAll(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace

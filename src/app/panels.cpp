@@ -24,6 +24,7 @@ void drawSidePanel(PanelContext& ctx, float width, float height) {
     if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) drawMaterialSection(ctx);
     if (ImGui::CollapsingHeader("Lights")) drawLightsSection(ctx);
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) drawViewSection(ctx);
+    if (ImGui::CollapsingHeader("Raster shadows & reflections")) drawRasterSection(ctx);
     if (ImGui::CollapsingHeader("Scene")) drawSceneSection(ctx);
     if (ImGui::CollapsingHeader("Keys and mouse")) drawHelpSection();
     ImGui::End();
@@ -54,6 +55,10 @@ void drawHelpSection() {
         }
         ImGui::EndTable();
     }
+    ImGui::TextWrapped("Raster reflections: planes with kr > 0 are exact planar mirrors; reflective spheres and "
+                       "meshes use an environment cube rendered from the object's centre (one bounce of local "
+                       "shading and shadows, no self-reflection, parallax error for nearby objects). Compare "
+                       "with the reference (Split / Difference) to see the error.");
 }
 
 }  // namespace shadelab::app

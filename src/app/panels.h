@@ -1,7 +1,7 @@
 // The Dear ImGui panels. Each draws widgets for part of ViewerState and changes it only through the
 // actions in viewer_state.h; what needs the window (open, save, screenshot, reload) goes through
 // PanelServices. One file per panel: panels_scene, panels_lighting, panels_material, panels_lights,
-// panels_view, panels_probe; panels.cpp lays out the side panel.
+// panels_view, panels_raster, panels_probe; panels.cpp lays out the side panel.
 #pragma once
 
 #include "app/probe.h"
@@ -68,6 +68,7 @@ void drawLightingSection(PanelContext& ctx);
 void drawMaterialSection(PanelContext& ctx);
 void drawLightsSection(PanelContext& ctx);
 void drawViewSection(PanelContext& ctx);
+void drawRasterSection(PanelContext& ctx);
 void drawHelpSection();
 // Floating windows over the image area (x, y, width in window units).
 // The lesson (title and notes) sits at the bottom left; it folds to its title bar while a probe is shown.

@@ -19,7 +19,9 @@ void drawLightingSection(PanelContext& ctx) {
         if (i != 0 && i != 3) ImGui::SameLine();
         if (ImGui::Checkbox(toString(terms[i]), &on)) setTerm(s, terms[i], on);
     }
-    ImGui::TextDisabled("raster: shadow maps (8 lights), mirror planes; other reflections: reference only");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("raster: shadow maps, mirror planes, environment cubes; transmission (kt): reference only");
+    ImGui::PopStyleColor();
 
     ImGui::TextDisabled("Progression (keys 1-5)");
     const char* labels[] = {"1 ambient", "2 +diffuse", "3 +specular", "4 +shadows", "5 +reflections"};

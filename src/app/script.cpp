@@ -32,6 +32,7 @@ const ActionInfo kActions[] = {
     {"setEncoding", ActionKind::SetEncoding, {"encoding"}},
     {"setSplit", ActionKind::SetSplit, {"position"}},
     {"setAmbient", ActionKind::SetAmbient, {"value"}},
+    {"setRaster", ActionKind::SetRaster, {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"}},
     {"addLight", ActionKind::AddLight, {"type", "position", "direction", "color"}},
     {"removeLight", ActionKind::RemoveLight, {"index"}},
     {"setLight", ActionKind::SetLight, {"index", "position", "direction", "color"}},
@@ -115,6 +116,7 @@ void parseFields(const JsonNode& a, ScriptAction& act) {
             break;
         case ActionKind::SetSplit: act.value = a.child("position").inRange(0.0f, 1.0f, false, false); break;
         case ActionKind::SetAmbient: act.color = a.child("value").rgb(); break;
+        case ActionKind::SetRaster: act.raster = parseRasterOverride(a); break;
         case ActionKind::AddLight:
             act.text = a.has("type") ? a.child("type").string() : "point";
             if (act.text != "point" && act.text != "directional")
@@ -254,6 +256,12 @@ void applyScriptAction(ViewerState& state, const ScriptAction& a, const std::str
             break;
         case ActionKind::SetSplit: setSplitPosition(state, a.value); break;
         case ActionKind::SetAmbient: setAmbient(state, *a.color); break;
+        case ActionKind::SetRaster: {
+            RasterSettings r = state.scene.raster;
+            a.raster.applyTo(r);
+            setRasterSettings(state, r);
+            break;
+        }
         case ActionKind::AddLight: {
             const int i = addLight(state, a.text == "directional" ? LightType::Directional : LightType::Point);
             if (i < 0) failAction(file, a, "", "the scene already has " + std::to_string(kMaxLights) + " lights");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "app/viewer_state.h"
+#include "scene/raster_override.h"
 
 #include <glm/vec3.hpp>
 #include <optional>
@@ -15,7 +16,7 @@ namespace shadelab::app {
 enum class ActionKind {
     // state actions (applyScriptAction)
     SetShininess, SetMaterial, Preset, Select, SetTerm, ToggleTerm, Progression, SetModel, SwitchModel,
-    SetMode, SetEncoding, SetSplit, SetAmbient, AddLight, RemoveLight, SetLight, Orbit, Zoom, FrameAll,
+    SetMode, SetEncoding, SetSplit, SetAmbient, SetRaster, AddLight, RemoveLight, SetLight, Orbit, Zoom, FrameAll,
     ResetCamera, Probe, ClearProbe,
     // app actions (performed by the window loop)
     Screenshot, ReferenceScreenshot, WindowScreenshot, ProbeReport, SaveScene, Open, ReloadShaders, WaitReference,
@@ -36,6 +37,7 @@ struct ScriptAction {
     float value2 = 0.0f;              // orbit pitch (degrees)
     std::optional<glm::vec3> position, direction, color;     // addLight / setLight; color also setAmbient
     MaterialOverride material;        // setMaterial
+    RasterOverride raster;            // setRaster
 };
 
 struct Script {

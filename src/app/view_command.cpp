@@ -2,6 +2,8 @@
 // script before the window opens (so bad input fails fast with exit code 1, usage errors with 2).
 #include "app/app.h"
 
+#include "cli/args.h"
+#include "cli/raster_flags.h"
 #include "scene/scene_load.h"
 #include "util/input_error.h"
 
@@ -15,7 +17,7 @@
 namespace shadelab::app {
 namespace {
 
-const char* const kViewHelp =
+const char* const kViewHelpHead =
     "usage: shadelab view [scene.json | model.gltf | model.glb] [options]\n"
     "\n"
     "Opens the interactive viewer (GLFW + Dear ImGui): live raster image, progressive ray-traced reference,\n"
@@ -33,41 +35,17 @@ const char* const kViewHelp =
     "  --encoding NAME            srgb (default) | linear, for the display and the screenshots\n"
     "  --stats                    redraw the image every other frame; print median and 95th-percentile\n"
     "                             frame times with and without a redraw\n"
-    "  --ui-scale F               UI scale, 0.5..4 (default: the monitor's content scale)\n"
+    "  --ui-scale F               UI scale, 0.5..4 (default: the monitor's content scale)\n";
+
+// Then the raster flags (cli/raster_flags.h), which apply to the scene named on the command line.
+const char* const kViewHelpTail =
     "  --verbose                  log GL_RENDERER, GL_VERSION and where shaders come from\n"
     "  -h, --help                 show this help\n"
     "\n"
+    "The raster flags override the \"raster\" settings of the scene opened at start, not of scenes opened later.\n"
     "exit codes: 0 done, 1 bad input or no display (one line on stderr), 2 usage error\n";
 
 void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
-
-std::pair<int, int> parseSizeOption(const std::string& s) {
-    const std::string what = "--size: expected WxH with each side in 1..16384, got '" + s + "'";
-    const size_t x = s.find_first_of("xX");
-    if (x == std::string::npos) throw UsageError(what);
-    auto side = [&](const std::string& part) {
-        if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos)
-            throw UsageError(what);
-        const int v = std::atoi(part.c_str());
-        if (v < 1 || v > 16384) throw UsageError(what);
-        return v;
-    };
-    return {side(s.substr(0, x)), side(s.substr(x + 1))};
-}
-
-int parseFrames(const std::string& s) {
-    if (s.empty() || s.size() > 8 || s.find_first_not_of("0123456789") != std::string::npos)
-        throw UsageError("--frames: expected a whole number from 0 to 99999999, got '" + s + "'");
-    return std::atoi(s.c_str());
-}
-
-float parseUiScale(const std::string& s) {
-    char* end = nullptr;
-    const float v = std::strtof(s.c_str(), &end);
-    if (s.empty() || *end != '\0' || !(v >= 0.5f && v <= 4.0f))
-        throw UsageError("--ui-scale: expected a number from 0.5 to 4, got '" + s + "'");
-    return v;
-}
 
 std::string defaultScenePath() {
 #ifdef SHADELAB_SOURCE_DIR
@@ -92,8 +70,11 @@ int viewCommand(int argc, char** argv) {
     ViewerOptions options;
     std::vector<std::string> positionals;
     std::string scriptPath, encoding;
-    const std::vector<std::string> valued = {"--size", "--frames", "--screenshot", "--window-screenshot",
-                                             "--script", "--probe-report", "--encoding", "--ui-scale"};
+    RasterOverride raster;
+    std::vector<std::string> valued = {"--size", "--frames", "--screenshot", "--window-screenshot",
+                                       "--script", "--probe-report", "--encoding", "--ui-scale"};
+    valued.insert(valued.end(), cli::rasterValuedFlags().begin(), cli::rasterValuedFlags().end());
+    const std::vector<std::string>& switches = cli::rasterSwitchFlags();
     bool help = false;
     for (int i = 2; i < argc; ++i) {
         std::string a = argv[i], value;
@@ -109,6 +90,10 @@ int viewCommand(int argc, char** argv) {
             (a == "--stats" ? options.stats : options.verbose) = true;
             continue;
         }
+        if (std::find(switches.begin(), switches.end(), a) != switches.end()) {
+            cli::parseRasterFlag(a, "", raster);
+            continue;
+        }
         const size_t eq = a.find('=');
         const std::string name = a.substr(0, eq);
         if (std::find(valued.begin(), valued.end(), name) == valued.end())
@@ -116,17 +101,18 @@ int viewCommand(int argc, char** argv) {
         if (eq != std::string::npos) value = a.substr(eq + 1);
         else if (i + 1 < argc) value = argv[++i];
         else throw UsageError(name + " needs a value");
-        if (name == "--size") std::tie(options.width, options.height) = parseSizeOption(value);
-        else if (name == "--frames") options.frames = parseFrames(value);
+        if (name == "--size") std::tie(options.width, options.height) = cli::parseSize(value);
+        else if (name == "--frames") options.frames = cli::parseInt(name, value, 0, 99999999);
         else if (name == "--screenshot") options.screenshot = value;
         else if (name == "--window-screenshot") options.windowScreenshot = value;
         else if (name == "--script") scriptPath = value;
         else if (name == "--probe-report") options.probeReport = value;
         else if (name == "--encoding") encoding = value;
-        else if (name == "--ui-scale") options.uiScale = parseUiScale(value);
+        else if (name == "--ui-scale") options.uiScale = cli::parseNumber(name, value, 0.5f, 4.0f);
+        else cli::parseRasterFlag(name, value, raster);
     }
     if (help) {
-        std::fputs(kViewHelp, stdout);
+        std::fputs((std::string(kViewHelpHead) + cli::kRasterFlagsHelp + kViewHelpTail).c_str(), stdout);
         return 0;
     }
     if (positionals.size() > 1)
@@ -146,6 +132,7 @@ int viewCommand(int argc, char** argv) {
     const std::string path = positionals.empty() ? defaultScenePath() : positionals[0];
     Scene scene;
     if (!path.empty()) scene = loadScene(path, printWarning);
+    raster.applyTo(scene.raster);
     ViewerState state = makeViewerState(std::move(scene), path);
     setEncoding(state, enc);
     return runViewer(options, std::move(state), std::move(script));

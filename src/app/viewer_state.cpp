@@ -214,6 +214,18 @@ void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool a
     setModel(state, model);
 }
 
+void setRasterSettings(ViewerState& state, const RasterSettings& raster) {
+    auto bias = [](float b) { return b >= 0.0f ? std::min(b, kMaxShadowBias) : 0.0f; };
+    RasterSettings& r = state.scene.raster;
+    r.shadowMapSize =
+        raster.shadowMapSize <= 0 ? 0 : std::clamp(raster.shadowMapSize, kMinShadowMapSize, kMaxShadowMapSize);
+    r.depthBias = bias(raster.depthBias);
+    r.normalBias = bias(raster.normalBias);
+    r.pcf = raster.pcf;
+    r.reflectionCubeSize = std::clamp(raster.reflectionCubeSize, kMinReflectionCubeSize, kMaxReflectionCubeSize);
+    markChanged(state);
+}
+
 void setAmbient(ViewerState& state, const glm::vec3& Ia) {
     state.scene.ambient = glm::max(Ia, glm::vec3(0.0f));
     markChanged(state);

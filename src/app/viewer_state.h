@@ -80,6 +80,12 @@ void setModel(ViewerState& state, ShadingModel model);
 // object when `allObjects` or nothing is selected. No-op on s when the model already is `model`.
 void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects);
 
+// --- rasterizer settings (scene.raster; the tracer ignores them) ---
+// Sets all of them, each brought into the scene file's range (raster_settings.h): a shadow-map size <= 0 is
+// auto, others are clamped to [kMinShadowMapSize, kMaxShadowMapSize]; biases to [0, kMaxShadowBias] (NaN: 0);
+// the cube size to [kMinReflectionCubeSize, kMaxReflectionCubeSize].
+void setRasterSettings(ViewerState& state, const RasterSettings& raster);
+
 // --- lights ---
 void setAmbient(ViewerState& state, const glm::vec3& Ia);
 // Adds a light above and in front of the scene (white, intensity 1); -1 when kMaxLights are in use.

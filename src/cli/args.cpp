@@ -4,6 +4,8 @@
 #include "util/input_error.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <cstdlib>
 
 namespace shadelab::cli {
@@ -63,6 +65,16 @@ int parseInt(const std::string& name, const std::string& value, int lo, int hi) 
         throw UsageError(what);
     int v = std::atoi(value.c_str());
     if (v < lo || v > hi) throw UsageError(what);
+    return v;
+}
+
+float parseNumber(const std::string& name, const std::string& value, float lo, float hi) {
+    char range[64];
+    std::snprintf(range, sizeof range, "from %g to %g", double(lo), double(hi));
+    char* end = nullptr;
+    const float v = std::strtof(value.c_str(), &end);
+    if (value.empty() || std::isspace(static_cast<unsigned char>(value[0])) || *end != '\0' || !(v >= lo && v <= hi))
+        throw UsageError(name + ": expected a number " + range + ", got '" + value + "'");
     return v;
 }
 

@@ -26,6 +26,9 @@ private:
 // A whole number in [lo, hi] for option `name`. Throws UsageError naming the option.
 int parseInt(const std::string& name, const std::string& value, int lo, int hi);
 
+// A finite number in [lo, hi] for option `name`. Throws UsageError naming the option.
+float parseNumber(const std::string& name, const std::string& value, float lo, float hi);
+
 // "1920x1080" → {1920, 1080}; each side in [1, 16384]. Throws UsageError.
 std::pair<int, int> parseSize(const std::string& s);
 

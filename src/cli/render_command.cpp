@@ -85,7 +85,7 @@ Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& 
 int renderCommand(int argc, char** argv) {
     const RenderOptions o = parseRenderOptions(argc, argv);
     if (o.help) {
-        std::fputs(kRenderHelp, stdout);
+        std::fputs(renderHelp().c_str(), stdout);
         return 0;
     }
     const bool needRaster = o.renderer != RendererChoice::Trace;
@@ -108,6 +108,7 @@ int renderCommand(int argc, char** argv) {
     timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
     if (o.model) scene.model = *o.model;
     if (o.terms) scene.terms = *o.terms;
+    o.raster.applyTo(scene.raster);
     if (needRaster && scene.lights.size() > size_t(kMaxLights))
         throw InputError(o.input, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
 

@@ -2,6 +2,7 @@
 #include "cli/render_options.h"
 
 #include "cli/args.h"
+#include "cli/raster_flags.h"
 #include "raster/offscreen.h"
 #include "util/input_error.h"
 
@@ -9,32 +10,40 @@
 
 namespace shadelab::cli {
 
-const char* const kRenderHelp =
+namespace {
+
+const char* const kHelpHead =
     "usage: shadelab render <scene.json | model.gltf | model.glb> -o out.png [options]\n"
     "\n"
     "Renders a scene headlessly and writes a PNG: with the OpenGL rasterizer (EGL or OSMesa, no X server),\n"
     "the CPU ray-traced reference, or both side by side with their difference heatmap.\n"
     "\n"
     "options:\n"
-    "  -o, --output PATH        PNG to write (required); written atomically\n"
-    "  --size WxH               image size in pixels, each side 1..16384 (default 1280x720)\n"
-    "  --renderer NAME          raster (default) | trace | both (raster | traced | heatmap in one PNG)\n"
-    "  --model NAME             phong | blinn-phong (default: the scene's)\n"
-    "  --terms LIST             comma-separated terms to switch on, the rest off:\n"
-    "                           ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
-    "  --spp N                  samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
-    "  --threads N              tracer threads, 0 = every core (default 0)\n"
-    "  --depth N                tracer secondary-ray depth, 0..64 (default: the scene's maxDepth)\n"
-    "  --encoding NAME          srgb (default) | linear: how linear colour becomes 8-bit\n"
-    "  --gl-backend NAME        auto | egl-device | egl-surfaceless | osmesa\n"
-    "                           (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
-    "  --allow-external-paths   let glTF buffer URIs point outside the model's folder (../, absolute)\n"
-    "  --timings                print a per-stage timing and memory breakdown to stderr\n"
-    "  --verbose                log the GL backend, GL_RENDERER and GL_VERSION to stderr\n"
-    "  -h, --help               show this help\n"
+    "  -o, --output PATH          PNG to write (required); written atomically\n"
+    "  --size WxH                 image size in pixels, each side 1..16384 (default 1280x720)\n"
+    "  --renderer NAME            raster (default) | trace | both (raster | traced | heatmap in one PNG)\n"
+    "  --model NAME               phong | blinn-phong (default: the scene's)\n"
+    "  --terms LIST               comma-separated terms to switch on, the rest off:\n"
+    "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
+    "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
+    "  --threads N                tracer threads, 0 = every core (default 0)\n"
+    "  --depth N                  tracer secondary-ray depth, 0..64 (default: the scene's maxDepth)\n";
+
+const char* const kHelpTail =
+    "  --encoding NAME            srgb (default) | linear: how linear colour becomes 8-bit\n"
+    "  --gl-backend NAME          auto | egl-device | egl-surfaceless | osmesa\n"
+    "                             (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
+    "  --allow-external-paths     let glTF buffer URIs point outside the model's folder (../, absolute)\n"
+    "  --timings                  print a per-stage timing and memory breakdown to stderr\n"
+    "  --verbose                  log the GL backend, GL_RENDERER and GL_VERSION to stderr\n"
+    "  -h, --help                 show this help\n"
     "\n"
     "The tracer shows a progress bar on stderr when stderr is a terminal.\n"
     "exit codes: 0 written, 1 bad input or rendering failure (one line on stderr), 2 usage error\n";
+
+}  // namespace
+
+std::string renderHelp() { return std::string(kHelpHead) + kRasterFlagsHelp + kHelpTail; }
 
 Terms parseTerms(const std::string& list) {
     Terms t{false, false, false, false, false};
@@ -71,10 +80,12 @@ RendererChoice parseRenderer(const std::string& s) {
 }  // namespace
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
-    Args args(argc, argv, 2,
-              {"-o", "--output", "--size", "--model", "--terms", "--encoding", "--gl-backend", "--spp", "--renderer",
-               "--threads", "--depth"},
-              {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"});
+    std::vector<std::string> valued = {"-o", "--output", "--size", "--model", "--terms", "--encoding",
+                                       "--gl-backend", "--spp", "--renderer", "--threads", "--depth"};
+    std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"};
+    valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
+    flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
+    Args args(argc, argv, 2, valued, flags);
     RenderOptions o;
     if (args.flag("-h") || args.flag("--help")) {
         o.help = true;
@@ -98,6 +109,10 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);
     if (auto v = args.value("--depth")) o.depth = parseInt("--depth", *v, 0, 64);
     if (auto v = args.value("--gl-backend")) o.backend = gl::parseGlBackend(*v);
+    for (const std::string& name : rasterValuedFlags())
+        if (auto v = args.value(name)) parseRasterFlag(name, *v, o.raster);
+    for (const std::string& name : rasterSwitchFlags())
+        if (args.flag(name)) parseRasterFlag(name, "", o.raster);
     o.allowExternalPaths = args.flag("--allow-external-paths");
     o.verbose = args.flag("--verbose");
     o.timings = args.flag("--timings");

@@ -3,6 +3,7 @@
 
 #include "gl/headless_context.h"
 #include "image/encode.h"
+#include "scene/raster_override.h"
 #include "scene/scene.h"
 
 #include <optional>
@@ -23,14 +24,16 @@ struct RenderOptions {
     RendererChoice renderer = RendererChoice::Raster;
     int threads = 0;                        // tracer worker threads; 0 = every core
     std::optional<int> depth;               // tracer secondary-ray depth; unset: the scene's maxDepth
+    RasterOverride raster;                  // --shadow-map-size, --pcf, ...: over the scene's "raster"
     gl::GlBackend backend = gl::GlBackend::Auto;
     bool allowExternalPaths = false;        // glTF buffers may live outside the model's folder
     bool verbose = false;
     bool timings = false;
-    bool help = false;                      // --help was given: print kRenderHelp and do nothing else
+    bool help = false;                      // --help was given: print renderHelp() and do nothing else
 };
 
-extern const char* const kRenderHelp;
+// The --help text.
+std::string renderHelp();
 
 // Parses argv[2..]; throws UsageError on anything wrong.
 RenderOptions parseRenderOptions(int argc, char** argv);

@@ -7,6 +7,7 @@
 #include "scene/scene_json.h"
 
 #include "scene/json_reader.h"
+#include "scene/raster_override.h"
 #include "util/atomic_file.h"
 #include "util/input_error.h"
 
@@ -196,7 +197,7 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
     nlohmann::json doc = parseJsonText(text, file);
     JsonNode root(doc, "", file, warn);
     root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "terms", "ambient",
-                                          "background", "maxDepth", "lights", "objects", "materials"});
+                                          "background", "maxDepth", "raster", "lights", "objects", "materials"});
     Scene scene;
     if (auto f = root.find("shadelab")) {
         int version = f->integerIn(1, INT_MAX);
@@ -225,6 +226,10 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
     if (auto f = root.find("ambient")) scene.ambient = f->rgb();
     if (auto f = root.find("background")) scene.background = f->rgb();
     if (auto f = root.find("maxDepth")) scene.maxDepth = f->integerIn(0, kMaxDepthLimit);
+    if (auto f = root.find("raster")) {
+        f->requireObject().warnUnknownKeys({"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"});
+        parseRasterOverride(*f).applyTo(scene.raster);
+    }
 
     if (auto f = root.find("lights")) {
         size_t n = f->arraySize();
@@ -338,6 +343,10 @@ std::string sceneToJson(const Scene& scene) {
     doc["ambient"] = vec(scene.ambient);
     doc["background"] = vec(scene.background);
     doc["maxDepth"] = scene.maxDepth;
+    const RasterSettings& r = scene.raster;
+    doc["raster"] = {{"shadowMapSize", r.shadowMapSize == 0 ? OJson("auto") : OJson(r.shadowMapSize)},
+                     {"depthBias", exact(r.depthBias)}, {"normalBias", exact(r.normalBias)}, {"pcf", r.pcf},
+                     {"reflectionCubeSize", r.reflectionCubeSize}};
 
     OJson lights = OJson::array();
     for (const Light& l : scene.lights) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cfloat>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
@@ -72,6 +73,11 @@ std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
     d.eq("terms.reflections", a.terms.reflections, b.terms.reflections);
     d.v("ambient", a.ambient, b.ambient), d.v("background", a.background, b.background);
     d.eq("maxDepth", a.maxDepth, b.maxDepth);
+    d.eq("raster.shadowMapSize", a.raster.shadowMapSize, b.raster.shadowMapSize);
+    d.f("raster.depthBias", a.raster.depthBias, b.raster.depthBias);
+    d.f("raster.normalBias", a.raster.normalBias, b.raster.normalBias);
+    d.eq("raster.pcf", a.raster.pcf, b.raster.pcf);
+    d.eq("raster.reflectionCubeSize", a.raster.reflectionCubeSize, b.raster.reflectionCubeSize);
     d.eq("lights.size", a.lights.size(), b.lights.size());
     for (size_t i = 0; i < std::min(a.lights.size(), b.lights.size()); ++i) {
         const Light &x = a.lights[i], &y = b.lights[i];
@@ -206,6 +212,13 @@ struct RandomSceneMaker {
         s.model = coin() ? ShadingModel::Phong : ShadingModel::BlinnPhong;
         s.terms = {coin(), coin(), coin(), coin(), coin()};
         s.ambient = rgb(), s.background = rgb(), s.maxDepth = upTo(64);
+        if (coin()) {  // else the defaults
+            s.raster.shadowMapSize = coin() ? 0 : (coin() ? kMaxShadowMapSize : kMinShadowMapSize + upTo(4000));
+            s.raster.depthBias = coin() ? in(0.0f, kMaxShadowBias) : (coin() ? 0.0f : kMaxShadowBias);
+            s.raster.normalBias = coin() ? in(0.0f, kMaxShadowBias) : 0.1f;
+            s.raster.pcf = coin();
+            s.raster.reflectionCubeSize = kMinReflectionCubeSize + upTo(kMaxReflectionCubeSize - kMinReflectionCubeSize);
+        }
         for (int i = upTo(kMaxLights); i > 0; --i) {
             Light l;
             l.type = coin() ? LightType::Point : LightType::Directional;
@@ -263,8 +276,34 @@ TEST(SceneJson, SavedFileIsReadableAndComplete) {
     EXPECT_EQ(text.find("0.10000000149"), std::string::npos) << text;
     for (const char* key : {"\"shadelab\": 1", "\"title\"", "\"notes\"", "\"camera\"", "\"fovY\"",
                             "\"model\": \"phong\"", "\"terms\"", "\"reflections\"", "\"background\"",
-                            "\"maxDepth\": 5", "\"lights\"", "\"ior\""})
+                            "\"maxDepth\": 5", "\"raster\"", "\"shadowMapSize\": \"auto\"", "\"lights\"",
+                            "\"ior\""})
         EXPECT_NE(text.find(key), std::string::npos) << key << "\n" << text;
+}
+
+TEST(SceneJson, RasterSettingsRoundTripAndAcceptAutoOrZero) {
+    Scene s;
+    s.raster = RasterSettings{2048, 0.25f, 3.0f, true, 256};
+    std::string text = sceneToJson(s);
+    EXPECT_EQ(nlohmann::json::parse(text)["raster"], nlohmann::json::parse(R"({"shadowMapSize": 2048,
+        "depthBias": 0.25, "normalBias": 3.0, "pcf": true, "reflectionCubeSize": 256})")) << text;
+    expectRoundTrip(s);
+    s.raster = RasterSettings{kMinShadowMapSize, 0.0f, kMaxShadowBias, false, kMaxReflectionCubeSize};
+    expectRoundTrip(s);
+
+    Scene a = parse(R"({"raster": {"shadowMapSize": "auto", "pcf": true}})");
+    EXPECT_EQ(a.raster.shadowMapSize, 0);
+    EXPECT_TRUE(a.raster.pcf);
+    EXPECT_EQ(a.raster.depthBias, RasterSettings{}.depthBias) << "fields left out keep their defaults";
+    EXPECT_EQ(a.raster.reflectionCubeSize, RasterSettings{}.reflectionCubeSize);
+    EXPECT_EQ(parse(R"({"raster": {"shadowMapSize": 0}})").raster.shadowMapSize, 0);
+    EXPECT_EQ(parse(R"({"raster": {"shadowMapSize": 512.0}})").raster.shadowMapSize, 512);
+    EXPECT_EQ(parse(R"({"raster": {}})").raster.normalBias, RasterSettings{}.normalBias);
+    EXPECT_TRUE(gWarnings.empty()) << joined(gWarnings);
+    // Negative control: the comparison does see a changed setting.
+    Scene b = s;
+    b.raster.normalBias = std::nextafter(b.raster.normalBias, 0.0f);
+    EXPECT_EQ(joined(diffScenes(s, b)).rfind("raster.normalBias", 0), 0u);
 }
 
 TEST(SceneJson, SaveWritesTheFile) {
@@ -357,7 +396,7 @@ TEST(SceneJson, GreyNumbersCommentsVersionAndModel) {
 
 TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
     Scene s = parse(R"({"foo": 1, "camera": {"fovy": 30},
-        "lights": [{"type": "point", "position": [0, 1, 0], "colour": [1, 0, 0]}],
+        "lights": [{"type": "point", "position": [0, 1, 0], "colour": [1, 0, 0]}], "raster": {"PCF": true},
         "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"ks": 0.5, "zzz": 1}}]})");
     ASSERT_EQ(s.lights.size(), 1u);
     EXPECT_EQ(s.lights[0].color, glm::vec3(1.0f));
@@ -365,6 +404,7 @@ TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
     std::vector<std::string> expected = {
         "a.json: unknown field 'foo' (ignored)",
         "a.json: camera: unknown field 'fovy' (ignored); did you mean 'fovY'?",
+        "a.json: raster: unknown field 'PCF' (ignored); did you mean 'pcf'?",
         "a.json: lights[0]: unknown field 'colour' (ignored); did you mean 'color'?",
         "a.json: objects[0].material: unknown field 'ks' (ignored); did you mean 'ms'?",
         "a.json: objects[0].material: unknown field 'zzz' (ignored)"};
