@@ -14,10 +14,13 @@ layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_coverage;
 
 // One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint,
-// kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the specialised lights, so their branches fold away.
-vec3 lightTerm(int i, bool isPoint, int kind, int planeMask, int layer, vec3 P, vec3 N, vec3 V, vec3 md) {
+// isAttenuated, kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
+// specialised lights, so their branches fold away.
+vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, int layer, vec3 P, vec3 N, vec3 V,
+               vec3 md) {
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
-    vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
+    // Attenuation (1, 0, 0) divides by exactly 1: skipped, bit for bit the same.
+    vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L) : u_lightColor[i].xyz;
     vec3 c = shadeLight(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
@@ -30,7 +33,7 @@ vec3 lightTerm(int i, bool isPoint, int kind, int planeMask, int layer, vec3 P, 
 vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
     vec3 I = shadeAmbient(u_ambient.xyz, u_ma, SL_AMBIENT);
     // One call per specialised light with literal arguments (the variant's X-macro, unrolled).
-#define SL_LIGHT_TERM(i, isPoint, kind, planeMask, layer) I += lightTerm(i, isPoint, kind, planeMask, layer, P, N, V, md);
+#define SL_LIGHT_TERM(i, isPoint, isAttenuated, kind, mask, layer) I += lightTerm(i, isPoint, isAttenuated, kind, mask, layer, P, N, V, md);
     SL_FOR_EACH_LIGHT(SL_LIGHT_TERM)
 #undef SL_LIGHT_TERM
 #if SL_MORE_LIGHTS

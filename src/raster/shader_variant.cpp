@@ -25,11 +25,13 @@ std::string ShaderVariant::defines() const {
     s += define("SL_MORE_LIGHTS", moreLights ? "1" : "0");
     // An X-macro over the specialised lights, unrolled here: Mesa does not unroll the loop itself, and only
     // literal arguments let it fold each light's branches and load its matrices as uniform (an index read
-    // from a uniform block makes llvmpipe gather per fragment). F(index, isPoint, kind, plane mask, layer).
+    // from a uniform block makes llvmpipe gather per fragment).
+    // F(index, isPoint, isAttenuated, shadow kind, plane mask, first layer).
     std::string each;
     for (int i = 0; i < lights; ++i) {
         const size_t k = size_t(i);
         each += " F(" + std::to_string(i) + ", " + (point[k] ? "true" : "false") + ", " +
+                (attenuated[k] ? "true" : "false") + ", " +
                 std::to_string(shadowKind[k]) + ", " + std::to_string(planeMask[k]) + ", " +
                 std::to_string(firstLayer[k]) + ")";
     }
@@ -47,7 +49,10 @@ ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shad
     const int count = std::clamp(frame.flags.z, 0, kMaxLights);
     v.lights = std::min(count, kMaxShadowedLights);
     v.moreLights = count > kMaxShadowedLights;
-    for (int i = 0; i < v.lights; ++i) v.point[size_t(i)] = frame.lightPos[i].w != 0.0f;
+    for (int i = 0; i < v.lights; ++i) {
+        v.point[size_t(i)] = frame.lightPos[i].w != 0.0f;
+        v.attenuated[size_t(i)] = v.point[size_t(i)] && glm::vec3(frame.lightAtten[i]) != glm::vec3(1.0f, 0.0f, 0.0f);
+    }
     if (shadows && (frame.flags.w & kPassShadows)) {
         v.shadows = true;
         v.planes = std::clamp(shadows->info.x, 0, kMaxShadowPlanes);

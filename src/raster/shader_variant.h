@@ -25,6 +25,7 @@ struct ShaderVariant {
     int lights = 0;         // specialised lights: min(light count, kMaxShadowedLights)
     bool moreLights = false;
     std::array<bool, kMaxShadowedLights> point{};    // point light (else directional)
+    std::array<bool, kMaxShadowedLights> attenuated{};  // a point light whose attenuation is not (1, 0, 0)
     std::array<int, kMaxShadowedLights> shadowKind{};  // ShadowKind of each light's map
     std::array<int, kMaxShadowedLights> planeMask{};   // planes (bits) that can block each light
     std::array<int, kMaxShadowedLights> firstLayer{};  // its first shadow-map layer
