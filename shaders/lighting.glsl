@@ -127,10 +127,16 @@ SL_FN vec3 planeBitangent(vec3 n) {
     return vec3(b, sgn + n.y * n.y * a, -n.y);
 }
 
-// Checker parity at point P on a plane: 0 for material.md tiles, 1 for checker md2 tiles.
-SL_FN int checkerParity(vec3 P, vec3 n, float size) {
-    float u = floor(dot(P, planeTangent(n)) / size);
-    float v = floor(dot(P, planeBitangent(n)) / size);
+// Checker parity at point P on a plane with tangent basis (t, b): 0 for material.md tiles, 1 for checker
+// md2 tiles. The rasterizer passes the basis the CPU computed once per plane (a uniform).
+SL_FN int checkerParityInBasis(vec3 P, vec3 t, vec3 b, float size) {
+    float u = floor(dot(P, t) / size);
+    float v = floor(dot(P, b) / size);
     float sum = u + v;
     return sum - 2.0f * floor(sum * 0.5f) > 0.5f ? 1 : 0;
+}
+
+// The same with the basis of the plane's normal n.
+SL_FN int checkerParity(vec3 P, vec3 n, float size) {
+    return checkerParityInBasis(P, planeTangent(n), planeBitangent(n), size);
 }

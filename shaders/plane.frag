@@ -7,6 +7,8 @@ uniform float u_planeOffset;
 uniform int u_checker;          // 1 when the plane has a checker pattern
 uniform vec3 u_md2;
 uniform float u_checkerSize;
+uniform vec3 u_planeT;          // planeTangent(u_planeNormal), as plane.vert
+uniform vec3 u_planeB;          // planeBitangent(u_planeNormal)
 uniform vec3 u_kr;
 #if SL_ENVIRONMENT
 // A mirror plane (its program is the variant's environment program): add kr ⊙ I(reflected) from the
@@ -22,7 +24,8 @@ void main() {
     if (clippedByMirror(P)) discard;
     vec3 V = -dir;
     vec3 N = faceForward(u_planeNormal, V);
-    vec3 md = (u_checker != 0 && checkerParity(P, u_planeNormal, u_checkerSize) == 1) ? u_md2 : u_md;
+    // The tangent basis as computed on the CPU (the tracer's own planeTangent/planeBitangent), once per plane.
+    vec3 md = (u_checker != 0 && checkerParityInBasis(P, u_planeT, u_planeB, u_checkerSize) == 1) ? u_md2 : u_md;
     vec3 I = shadeSurface(P, N, V, md);
     // Planar reflection: the mirrored scene seen through this pixel is exactly I(reflected ray).
 #if SL_ENVIRONMENT
