@@ -242,6 +242,10 @@ TEST(Cli, RasterFlagsOverrideTheScenesRasterSettings) {
     EXPECT_NE(fromFile, base);
     EXPECT_EQ(render(withRaster, "raster_flags_file_overridden.png", "--shadow-map-size auto --reflection-cube-size 128"),
               render(scene, "raster_flags_pcf_only.png", "--pcf"));
+    EXPECT_EQ(render(withRaster, "raster_flags_all_overridden.png",
+                     "--shadow-map-size auto --reflection-cube-size 128 --no-pcf"),
+              base)
+        << "--no-pcf turns the file's PCF off";
 }
 
 TEST(CliCompare, ExitCodesFollowTheGates) {

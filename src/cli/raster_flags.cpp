@@ -11,7 +11,8 @@ const char* const kRasterFlagsHelp =
     "                             1448 px on the image's longer side (default: the scene's \"raster\")\n"
     "  --shadow-bias TEXELS       raster shadow depth bias in shadow-map texels, 0..64 (default: the scene's)\n"
     "  --normal-bias TEXELS       raster shadow normal-offset bias in texels, 0..64 (default: the scene's)\n"
-    "  --pcf                      raster shadows filtered 3x3 (PCF), softer than the reference's hard edges\n"
+    "  --pcf, --no-pcf            raster shadows filtered 3x3 (PCF), softer than the reference's hard edges,\n"
+    "                             or hard (default: the scene's, normally hard)\n"
     "  --reflection-cube-size N   texels per face of the raster environment cube of reflective spheres and\n"
     "                             meshes, 8..2048 (default: the scene's)\n";
 
@@ -22,7 +23,7 @@ const std::vector<std::string>& rasterValuedFlags() {
 }
 
 const std::vector<std::string>& rasterSwitchFlags() {
-    static const std::vector<std::string> flags = {"--pcf"};
+    static const std::vector<std::string> flags = {"--pcf", "--no-pcf"};
     return flags;
 }
 
@@ -42,8 +43,8 @@ bool parseRasterFlag(const std::string& name, const std::string& value, RasterOv
         o.depthBias = parseNumber(name, value, 0.0f, kMaxShadowBias);
     } else if (name == "--normal-bias") {
         o.normalBias = parseNumber(name, value, 0.0f, kMaxShadowBias);
-    } else if (name == "--pcf") {
-        o.pcf = true;
+    } else if (name == "--pcf" || name == "--no-pcf") {
+        o.pcf = name == "--pcf";
     } else if (name == "--reflection-cube-size") {
         o.reflectionCubeSize = parseInt(name, value, kMinReflectionCubeSize, kMaxReflectionCubeSize);
     } else {
