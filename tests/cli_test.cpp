@@ -86,6 +86,26 @@ TEST(Cli, RenderGlbAsScene) {
     EXPECT_GT(int(centre[0]) + centre[1] + centre[2], 30) << "the box should be lit at the image centre: " << out;
 }
 
+// Issue 5: compared with the rasterizer (one bounce), the reference traces one bounce too, unless --depth.
+TEST(Cli, BothTracesTheReferenceAtDepthOneUnlessDepthIsGiven) {
+    // The default scene with a kr 0.3 floor: the floor and the mirror sphere see each other, so depth 2 and
+    // more add reflections of reflections.
+    std::string text = readAll(test::sourcePath("assets/scenes/default.json"));
+    const std::string floor = R"("material": {"ma": 0.8, "md": 0.8, "ms": 0.1, "s": 16})";
+    const size_t at = text.find(floor);
+    ASSERT_NE(at, std::string::npos) << "the default floor's material changed; update this test";
+    text.replace(at, floor.size(), R"("material": {"ma": 0.8, "md": 0.8, "ms": 0.1, "s": 16, "kr": 0.3})");
+    const std::string scene = writeText("both_depth_scene.json", text);
+    const std::string one = test::outputPath("both_depth_default.png"), five = test::outputPath("both_depth_5.png");
+    Result a = run("render " + scene + " -o " + one + " --size 160x90 --renderer both");
+    ASSERT_EQ(a.code, 0) << a.out;
+    EXPECT_NE(a.out.find("traced (depth 1)"), std::string::npos) << a.out;
+    Result b = run("render " + scene + " -o " + five + " --size 160x90 --renderer both --depth 5");
+    ASSERT_EQ(b.code, 0) << b.out;
+    EXPECT_NE(b.out.find("traced (depth 5)"), std::string::npos) << b.out;
+    EXPECT_NE(readPng(one).data, readPng(five).data) << one << " and " << five << " should differ";
+}
+
 TEST(Cli, MissingFileExitsOneNamingIt) {
     std::string out = test::outputPath("never.png");
     fs::remove(out);

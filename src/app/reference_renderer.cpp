@@ -71,6 +71,7 @@ void ReferenceRenderer::controllerLoop() {
                 settings.threads = threads_;
                 settings.tileSize = kTileSize;
                 settings.coverage = true;
+                settings.maxDepth = job->maxDepth;
                 trace.start(scene, settings);
                 running = job->id;
             } catch (const std::exception& e) {
@@ -113,20 +114,21 @@ void ReferenceRenderer::resize(int width, int height) {
 }
 
 void ReferenceRenderer::request(const Scene& scene, int width, int height, uint64_t revision,
-                                uint64_t geometryRevision) {
+                                uint64_t geometryRevision, int maxDepth) {
     if (width <= 0 || height <= 0) return;
-    if (job_ != 0 && revision == revision_ && width == width_ && height == height_) return;
+    if (job_ != 0 && revision == revision_ && width == width_ && height == height_ && maxDepth == maxDepth_) return;
     if (width != width_ || height != height_ || !color_) resize(width, height);
     std::fill(tileState_.begin(), tileState_.end(), uint8_t(0));
     tilesDirty_ = true;
     tilesDone_ = 0;
     tileTotal_ = tilesX_ * tilesY_;
     revision_ = revision;
+    maxDepth_ = maxDepth;
     job_ = nextJob_++;
     started_ = std::chrono::steady_clock::now();
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        pending_ = Job{job_, scene, width, height, geometryRevision};
+        pending_ = Job{job_, scene, width, height, geometryRevision, maxDepth};
         error_.clear();
     }
     wake_.notify_all();

@@ -28,8 +28,10 @@ public:
     ReferenceRenderer(const ReferenceRenderer&) = delete;
     ReferenceRenderer& operator=(const ReferenceRenderer&) = delete;
 
-    // UI thread. Restarts the trace when (revision, size) differ from the last request; cheap otherwise.
-    void request(const Scene& scene, int width, int height, uint64_t revision, uint64_t geometryRevision);
+    // UI thread. Restarts the trace when (revision, size, depth) differ from the last request; cheap
+    // otherwise. maxDepth -1 keeps the scene's secondary-ray depth.
+    void request(const Scene& scene, int width, int height, uint64_t revision, uint64_t geometryRevision,
+                 int maxDepth = -1);
     // Cancels any trace in progress (e.g. back in Raster mode); the next request starts afresh.
     void pause();
     // UI thread, GL context current: moves finished tiles into the image and the textures. True when
@@ -56,6 +58,7 @@ private:
         Scene scene;
         int width, height;
         uint64_t geometryRevision;
+        int maxDepth;
     };
     void controllerLoop();
     void resize(int width, int height);
@@ -73,6 +76,7 @@ private:
 
     // UI thread only.
     uint64_t nextJob_ = 1, job_ = 0, revision_ = 0;
+    int maxDepth_ = -1;
     int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0, tilesDone_ = 0, tileTotal_ = 0;
     ImageF image_;
     std::vector<uint32_t> coverage_;

@@ -174,7 +174,11 @@ void Viewer::updateReference() {
         reference_->pause();
         return;
     }
-    reference_->request(state_.scene, renderW_, renderH_, state_.revision, state_.geometryRevision);
+    // Split and Difference compare with the rasterizer, which reflects once: the reference traces one bounce
+    // there too (issue 5); Traced shows it at the scene's own depth.
+    const bool comparing = state_.mode == ViewMode::Split || state_.mode == ViewMode::Difference;
+    reference_->request(state_.scene, renderW_, renderH_, state_.revision, state_.geometryRevision,
+                        comparing ? std::min(state_.scene.maxDepth, 1) : -1);
     reference_->update();
 }
 

@@ -16,6 +16,7 @@
 #include "util/atomic_file.h"
 #include "util/input_error.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <future>
 #include <memory>
@@ -67,7 +68,10 @@ Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& 
     settings.height = o.height;
     settings.spp = o.spp;
     settings.threads = o.threads;
-    settings.maxDepth = o.depth.value_or(-1);
+    // Compared with the rasterizer (--renderer both), the reference reflects once as the rasterizer does
+    // (issue 5), unless --depth says otherwise; alone it keeps the scene's depth.
+    const bool comparing = o.renderer == RendererChoice::Both;
+    settings.maxDepth = o.depth.value_or(comparing ? std::min(scene.maxDepth, 1) : -1);
     settings.coverage = o.renderer == RendererChoice::Both;
     trace::TraceOutput out;
     {
@@ -124,8 +128,8 @@ int renderCommand(int argc, char** argv) {
         Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
         output = sideBySide({&a.pixels, &b.pixels, &heat});
         timer.stage("compare + heatmap");
-        std::fprintf(stderr, "shadelab: raster | traced | heatmap; raster vs reference:\n%s",
-                     compareSummary(cmp).c_str());
+        std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
+                     o.depth.value_or(std::min(scene.maxDepth, 1)), compareSummary(cmp).c_str());
     }
     std::vector<uint8_t> png = encodePng(output);
     timer.stage("PNG encode");

@@ -27,7 +27,8 @@ const char* const kHelpHead =
     "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
     "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
     "  --threads N                tracer threads, 0 = every core (default 0)\n"
-    "  --depth N                  tracer secondary-ray depth, 0..64 (default: the scene's maxDepth)\n";
+    "  --depth N                  tracer secondary-ray depth, 0..64 (default: the scene's maxDepth; with\n"
+    "                             --renderer both at most 1, the rasterizer's one bounce)\n";
 
 const char* const kHelpTail =
     "  --encoding NAME            srgb (default) | linear: how linear colour becomes 8-bit\n"
