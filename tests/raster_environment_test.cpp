@@ -15,7 +15,6 @@ using namespace shadelab;
 namespace {
 
 constexpr int kWidth = 192, kHeight = 128;
-const CompareGates kEnvironmentGates{3, 0.01, 255, 0.02, 1.0};
 
 // The mirror sphere (radius 1) at the origin; four large spheres 200 units away (left, right, behind, above the camera)
 // and one light, no floor, so every mirror pixel reflects a distant sphere or the background.
@@ -37,8 +36,7 @@ Scene distantWorld(float kr) {
 }
 
 CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene, const std::string& name) {
-    return test::gateWithEvidence(test::rasterizeWithCoverage(rasterScene, kWidth, kHeight),
-                                  test::traceWithCoverage(tracedScene, kWidth, kHeight, 1), kEnvironmentGates, name);
+    return test::compareWithReference(rasterScene, tracedScene, kWidth, kHeight, 1, test::kShadowEdgeGates, name);
 }
 
 }  // namespace

@@ -84,7 +84,7 @@ TEST_F(RasterReflection, MirrorPlaneMatchesReferenceAtDepthOne) {
 TEST_F(RasterReflection, MirrorPlaneWithShadowsMatchesReferenceUnderShadowGates) {
     Scene scene = mirrorScene(0.5f);
     scene.terms.shadows = true;
-    CompareResult r = compareRenders(scene, scene, "reflection_with_shadows", CompareGates{3, 0.01, 255, 0.02, 1.0});
+    CompareResult r = compareRenders(scene, scene, "reflection_with_shadows", test::kShadowEdgeGates);
     EXPECT_TRUE(r.pass) << compareSummary(r);
 }
 

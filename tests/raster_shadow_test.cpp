@@ -22,10 +22,6 @@ namespace {
 
 constexpr int kWidth = 192, kHeight = 128;
 
-// Shadow edges: a shadow-map texel straddling the tracer's exact edge flips whole pixels, so the fraction
-// gate is 1 % (not 0.1 %), no hard maximum, and the interior mean must stay within 1/255.
-const CompareGates kShadowGates{3, 0.01, 255, 0.02, 1.0};
-
 raster::RasterRenderer& renderer() { return test::sharedRasterRenderer(); }
 
 Scene spheresOnPlane(int lights) {
@@ -54,8 +50,7 @@ Scene spheresOnPlane(int lights) {
 }
 
 CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene, const std::string& name) {
-    return test::gateWithEvidence(test::rasterizeWithCoverage(rasterScene, kWidth, kHeight),
-                                  test::traceWithCoverage(tracedScene, kWidth, kHeight, 1), kShadowGates, name);
+    return test::compareWithReference(rasterScene, tracedScene, kWidth, kHeight, 1, test::kShadowEdgeGates, name);
 }
 
 }  // namespace
