@@ -219,7 +219,7 @@ void RasterRenderer::uploadFrame(const FrameBlock& frame) const {
 }
 
 // Shadow maps depend on lights, casters and settings only, not on the camera or the band: re-render them
-// when that key changes, so a banded image renders them once and a material edit not at all.
+// when that key changes, so a banded image renders them once and a material edit or an orbit not at all.
 void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
     RasterSettings settings = scene.raster;
     settings.shadowMapSize = shadowMapSizeFor(scene.raster, width, height);
@@ -239,11 +239,11 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
         push(p.normal);
         key.push_back(p.offset);
     }
-    push(scene.camera.position);  // the shadow-ray epsilon is scaled by the scene's box, eye included
     if (key != shadowKey_) {
         shadows_.render(scene, settings, ranges_, meshVao_ ? meshVao_.id() : emptyVao_.id(), cubeVao_.id());
         shadowKey_ = std::move(key);
     }
+    shadows_.setEpsilon(sceneEpsilon(scene, ranges_));  // scaled by the box of casters and eye: follows the camera
 }
 
 // Reflective spheres and mesh parts (kr > 0, reflections on): one environment cube each, rendered from its

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -256,6 +257,13 @@ void ShadowMaps::drawLayer(const Scene& scene, const std::vector<DrawRange>& ran
     }
     glDisable(GL_CULL_FACE);
     glBindVertexArray(0);
+}
+
+void ShadowMaps::setEpsilon(float epsilon) {
+    if (block_.bias.z == epsilon) return;
+    block_.bias.z = epsilon;
+    glBindBuffer(GL_UNIFORM_BUFFER, ubo_.id());
+    glBufferSubData(GL_UNIFORM_BUFFER, GLintptr(offsetof(ShadowBlock, bias)), sizeof(block_.bias), &block_.bias);
 }
 
 void ShadowMaps::bind(GLuint blockBinding, GLuint textureUnit) const {

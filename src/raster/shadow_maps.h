@@ -25,6 +25,10 @@ public:
     void render(const Scene& scene, const RasterSettings& settings, const std::vector<DrawRange>& ranges,
                 GLuint meshVao, GLuint cubeVao);
 
+    // The shadow-ray offset ε (sceneEpsilon) scales with the box of casters and eye, so it follows the
+    // camera; the maps do not depend on it. Updates the block only (no depth pass) when it changed.
+    void setEpsilon(float epsilon);
+
     // Binds the block and the array texture for the colour passes.
     void bind(GLuint blockBinding, GLuint textureUnit) const;
 
