@@ -28,6 +28,8 @@ bench() {  # label, then shadelab view arguments
     echo "  raster draw: $(median <<<"$draw") ms; frame without redraw: $(median <<<"$idle") ms"
 }
 bench "default scene, Raster" assets/scenes/default.json
+bench "default scene, Raster, orbiting 1.5 degrees every frame" assets/scenes/default.json \
+    --script bench/viewer_orbit.json
 bench "default scene, Split, reference restarting every frame" assets/scenes/default.json \
     --script bench/viewer_split_restart.json
 if [[ -f $engine ]]; then
