@@ -13,6 +13,10 @@ uniform vec2 u_scale;           // image pixels per window pixel
 uniform float u_split;          // wipe position in window pixels from u_origin.x
 uniform float u_gain;           // difference amplification
 uniform float u_tileSize;       // reference tile edge, pixels
+#if OUTLINE
+uniform usampler2D t_coverage;  // R32UI coverage ids of the raster image, GL row order
+uniform uint u_selected;        // the selected object's id
+#endif
 
 layout(location = 0) out vec4 o_color;
 
@@ -64,6 +68,18 @@ void main() {
     vec3 d = abs(a - b);
     float v = min(max(d.r, max(d.g, d.b)) * u_gain, 255.0f);
     vec3 c = texelFetch(t_ramp, ivec2(int(v), 0), 0).rgb;
+#endif
+#if OUTLINE
+    // The selected object's outline: pixels just outside it (2 image pixels), from the raster's coverage.
+    ivec2 last = textureSize(t_coverage, 0) - 1;
+    if (texelFetch(t_coverage, texel, 0).r != u_selected) {
+        bool near = false;
+        for (int k = 0; k < 4; ++k) {
+            ivec2 offset = k == 0 ? ivec2(2, 0) : k == 1 ? ivec2(-2, 0) : k == 2 ? ivec2(0, 2) : ivec2(0, -2);
+            near = near || texelFetch(t_coverage, clamp(texel + offset, ivec2(0), last), 0).r == u_selected;
+        }
+        if (near) c = vec3(1.0f, 0.55f, 0.1f);
+    }
 #endif
     o_color = vec4(c, 1.0f);
 }

@@ -9,11 +9,15 @@
 namespace shadelab::app {
 
 ImageView::ImageView(const gl::ShaderLibrary& shaders) {
+    // llvmpipe compiles each lazily, at its first draw.
     for (int mode = 0; mode < 4; ++mode)
         for (int srgb = 0; srgb < 2; ++srgb)
-            programs_[mode][srgb] = gl::Program::build(
-                shaders, "fullscreen.vert", "view_image.frag",
-                "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " + std::to_string(srgb) + "\n");
+            for (int outline = 0; outline < 2; ++outline)
+                programs_[mode][srgb][outline] =
+                    gl::Program::build(shaders, "fullscreen.vert", "view_image.frag",
+                                       "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " +
+                                           std::to_string(srgb) + "\n#define OUTLINE " + std::to_string(outline) +
+                                           "\n");
     vao_ = gl::VertexArray::create();
     // The heat ramp of the CLI's heatmaps, so the live difference view reads the same way.
     std::vector<uint8_t> ramp(256 * 3);
@@ -41,11 +45,12 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
     const bool haveTrace = in.traced != 0 && in.tiles != 0;
     const int mode = !haveTrace ? 0 : in.mode == ViewMode::Traced ? 1 : in.mode == ViewMode::Split ? 2
                                   : in.mode == ViewMode::Difference ? 3 : 0;
-    const gl::Program& program = programs_[mode][in.encoding == Encoding::Srgb ? 1 : 0];
+    const bool outline = in.selected != 0 && in.coverage != 0;
+    const gl::Program& program = programs_[mode][in.encoding == Encoding::Srgb ? 1 : 0][outline ? 1 : 0];
     glUseProgram(program.id());
-    const GLuint textures[4] = {in.raster, in.traced ? in.traced : in.raster, in.tiles, ramp_.id()};
-    const char* samplers[4] = {"t_raster", "t_traced", "t_tiles", "t_ramp"};
-    for (int i = 0; i < 4; ++i) {
+    const GLuint textures[5] = {in.raster, in.traced ? in.traced : in.raster, in.tiles, ramp_.id(), in.coverage};
+    const char* samplers[5] = {"t_raster", "t_traced", "t_tiles", "t_ramp", "t_coverage"};
+    for (int i = 0; i < 5; ++i) {
         glActiveTexture(GLenum(GL_TEXTURE0 + i));
         glBindTexture(GL_TEXTURE_2D, textures[i]);
         glUniform1i(program.uniform(samplers[i]), i);
@@ -56,10 +61,11 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
     glUniform1f(program.uniform("u_split"), in.split * float(rect.width));
     glUniform1f(program.uniform("u_gain"), in.gain);
     glUniform1f(program.uniform("u_tileSize"), float(in.tileSize));
+    glUniform1ui(program.uniform("u_selected"), in.selected);
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
-    for (int i = 3; i >= 0; --i) {
+    for (int i = 4; i >= 0; --i) {
         glActiveTexture(GLenum(GL_TEXTURE0 + i));
         glBindTexture(GL_TEXTURE_2D, 0);
     }

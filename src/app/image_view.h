@@ -1,10 +1,12 @@
 // ImageView: draws the rendered image into a rectangle of the window (raster, reference, wipe or
-// difference), with the exact sRGB curve in shaders/view_image.frag. Display only: captures read the
+// difference), with the sRGB curve in shaders/view_image.frag, and the selected object's outline. Display only: captures read the
 // renderers' float images, never the window.
 #pragma once
 
 #include "app/viewer_state.h"
 #include "gl/program.h"
+
+#include <cstdint>
 
 namespace shadelab::app {
 
@@ -23,6 +25,8 @@ struct ImageViewInputs {
     Encoding encoding = Encoding::Srgb;
     float split = 0.5f;
     float gain = 16.0f;
+    GLuint coverage = 0;        // R32UI coverage ids of the raster image, or 0
+    uint32_t selected = 0;      // coverage id outlined in the image (scene/coverage.h); 0: none
 };
 
 class ImageView {
@@ -32,7 +36,7 @@ public:
     void draw(const ImageRect& rect, const ImageViewInputs& in) const;
 
 private:
-    gl::Program programs_[4][2];   // [mode][sRGB]
+    gl::Program programs_[4][2][2];   // [mode][sRGB][selection outline]
     gl::VertexArray vao_;
     gl::Texture ramp_;
 };

@@ -224,6 +224,8 @@ void Viewer::compose() {
     in.encoding = state_.encoding;
     in.split = state_.splitPosition;
     in.gain = float(state_.heatGain);
+    in.coverage = raster_->target().coverageTexture();
+    in.selected = state_.selected;
     imageView_->draw(fbRect_, in);
     if (probe_ && probe_->hit) {
         const std::vector<ArrowLabel> labels =
