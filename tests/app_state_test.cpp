@@ -344,6 +344,36 @@ TEST(AppState, ProbeFindsPlanesMeshesAndBackground) {
     EXPECT_GT(glm::dot(m.N, m.V), 0.0f);  // faces the viewer
 }
 
+// A floor point in a sphere's shadow: the probe's vis_l is the shadow ray's, and the totals hold only the
+// ambient term; with shadows off (the negative control) the same pixel is lit.
+TEST(AppState, ProbeReportsShadowRayVisibility) {
+    Scene scene;
+    scene.camera.position = {0.0f, 2.0f, 6.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.ambient = glm::vec3(0.1f);
+    scene.planes.push_back(Plane{});
+    scene.spheres.push_back({"blocker", {0.0f, 1.0f, 0.0f}, 0.5f, Material{}});
+    Light above;
+    above.position = {0.0f, 5.0f, 0.0f};
+    scene.lights.push_back(above);
+    const int w = 320, h = 180;
+    const glm::ivec2 under = pixelOf(scene, w, h, glm::vec3(0.0f, 0.0f, 0.0f));
+    const ProbeResult shadowed = probePixel(scene, w, h, under.x, under.y);
+    ASSERT_TRUE(shadowed.hit);
+    ASSERT_EQ(shadowed.kind, ObjectKind::Plane);
+    EXPECT_EQ(shadowed.lights[0].visibility, 0.0f);
+    EXPECT_EQ(shadowed.lights[0].diffuse, glm::vec3(0.0f));
+    EXPECT_NEAR(glm::length(shadowed.totalPhong - shadowed.ambient), 0.0f, 1e-7f);
+    const glm::ivec2 aside = pixelOf(scene, w, h, glm::vec3(2.0f, 0.0f, 0.0f));
+    EXPECT_EQ(probePixel(scene, w, h, aside.x, aside.y).lights[0].visibility, 1.0f);
+    scene.terms.shadows = false;
+    const ProbeResult lit = probePixel(scene, w, h, under.x, under.y);
+    EXPECT_EQ(lit.lights[0].visibility, 1.0f);
+    EXPECT_GT(lit.totalPhong.r, shadowed.totalPhong.r + 0.1f);
+    const nlohmann::json j = nlohmann::json::parse(probeReportJson(shadowed, scene, shadowed.objectId));
+    EXPECT_EQ(j["lights"][0]["visibility"].get<float>(), 0.0f);
+}
+
 // ---- Equivalent Blinn exponent -------------------------------------------------------------------------
 
 TEST(AppState, EquivalentBlinnExponentMatchesHalfMaximum) {

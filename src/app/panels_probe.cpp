@@ -20,7 +20,7 @@ void rowLabel(const char* label) {
     ImGui::TextUnformatted(label);
 }
 
-void lightTable(const ProbeResult& p) {
+void lightTable(const ProbeResult& p, bool shadows) {
     const int columns = 1 + int(p.lights.size());
     if (!ImGui::BeginTable("lights", columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
         return;
@@ -50,6 +50,13 @@ void lightTable(const ProbeResult& p) {
     scalarRow("(R·V)^s", &ProbeLight::specPhong);
     scalarRow("(N·H)^s", &ProbeLight::specBlinn);
     rgbRow("Il", &ProbeLight::Il);
+    if (shadows) {
+        rowLabel("visible");
+        for (size_t i = 0; i < p.lights.size(); ++i) {
+            ImGui::TableSetColumnIndex(int(i) + 1);
+            ImGui::TextUnformatted(p.lights[i].visibility > 0.0f ? "yes" : "no: in shadow");
+        }
+    }
     rgbRow("diffuse", &ProbeLight::diffuse);
     rgbRow("spec Phong", &ProbeLight::specularPhong);
     rgbRow("spec Blinn", &ProbeLight::specularBlinn);
@@ -119,9 +126,11 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
         ImGui::Text("N %+.3f %+.3f %+.3f", p.N.x, p.N.y, p.N.z);
         ImGui::Text("V %+.3f %+.3f %+.3f", p.V.x, p.V.y, p.V.z);
         ImGui::Text("s %.1f   ms %.2f %.2f %.2f", p.material.s, p.material.ms.r, p.material.ms.g, p.material.ms.b);
-        if (!p.lights.empty()) lightTable(p);
+        const bool shadows = ctx.state.scene.terms.shadows;
+        if (!p.lights.empty()) lightTable(p, shadows);
         totalsTable(p, ctx.state.scene.model, ctx.state.encoding);
-        ImGui::TextDisabled("local terms as the rasterizer computes them (no shadows)");
+        ImGui::TextDisabled(shadows ? "visible: the reference's shadow ray; no reflections"
+                                    : "local terms, as both renderers compute them");
     }
     if (io.Fonts->Fonts.Size > 1) ImGui::PopFont();
     ctx.fields.probeWindowWidth = ImGui::GetWindowWidth();

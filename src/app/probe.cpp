@@ -2,11 +2,15 @@
 #include "app/probe.h"
 
 #include "scene/coverage.h"
+#include "scene/scene_load.h"
 #include "scene/view.h"
 #include "shading/local_illumination.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <optional>
 
 namespace shadelab::app {
@@ -58,6 +62,52 @@ void nearestMeshHit(const Scene& scene, const glm::vec3& eye, const glm::vec3& d
                 if (glm::dot(glm::cross(b - a, c - a), -dir) < 0.0f) n = -n;
                 best = Hit{float(h->x), meshCoverageId(scene, mi), n, part.material.md, part.material};
             }
+}
+
+// True when the segment from `o` along unit `d` up to tMax hits any triangle (brute force, as above).
+bool meshBlocks(const Scene& scene, const glm::vec3& o, const glm::vec3& d, float tMax) {
+    const glm::dvec3 od(o), dd(d);
+    for (const Mesh& mesh : scene.meshes)
+        for (const MeshPart& part : mesh.parts)
+            for (size_t k = 0; k + 2 < part.indices.size(); k += 3) {
+                const uint32_t i0 = part.indices[k], i1 = part.indices[k + 1], i2 = part.indices[k + 2];
+                if (i0 >= part.positions.size() || i1 >= part.positions.size() || i2 >= part.positions.size())
+                    continue;
+                auto h = intersectTriangle(od, dd, glm::dvec3(part.positions[i0]), glm::dvec3(part.positions[i1]),
+                                           glm::dvec3(part.positions[i2]));
+                if (h && h->x < double(tMax)) return true;
+            }
+    return false;
+}
+
+// The tracer's shadow-ray offset: scaled by the box of the bounded geometry and the eye.
+float shadowEpsilon(const Scene& scene) {
+    Bounds b = sceneBounds(scene);
+    const glm::vec3 eye = scene.camera.position;
+    b.lo = b.empty() ? eye : glm::min(b.lo, eye);
+    b.hi = b.empty() ? eye : glm::max(b.hi, eye);
+    const float radius = 0.5f * glm::length(b.hi - b.lo);
+    const glm::vec3 mag = glm::max(glm::abs(b.lo), glm::abs(b.hi));
+    const float e = std::max({1e-4f * radius, 1e-6f * std::max({mag.x, mag.y, mag.z}), 1e-7f});
+    return std::isfinite(e) ? e : 1e-4f;
+}
+
+// vis_l by one shadow ray from P + ε·N toward the light, as the tracer casts it.
+float shadowRayVisibility(const Scene& scene, const glm::vec3& P, const glm::vec3& N, const Light& light) {
+    const glm::vec3 origin = P + shadowEpsilon(scene) * N;
+    const bool isPoint = light.type == LightType::Point;
+    const glm::vec3 toLight = isPoint ? light.position - origin : -light.direction;
+    const float tMax = isPoint ? glm::length(toLight) : std::numeric_limits<float>::infinity();
+    const glm::vec3 d = glm::normalize(toLight);
+    for (const Sphere& s : scene.spheres) {
+        const float t = shading::intersectSphere(origin, d, s.center, s.radius, 0.0f);
+        if (t > 0.0f && t < tMax) return 0.0f;
+    }
+    for (const Plane& p : scene.planes) {
+        const float t = shading::intersectPlane(origin, d, p.normal, p.offset, 0.0f);
+        if (t > 0.0f && t < tMax) return 0.0f;
+    }
+    return meshBlocks(scene, origin, d, tMax) ? 0.0f : 1.0f;
 }
 
 }  // namespace
@@ -116,7 +166,9 @@ ProbeResult probePixel(const Scene& scene, int width, int height, int x, int y) 
         const bool isPoint = light.type == LightType::Point;
         const glm::vec3 Lraw = shading::lightVector(isPoint ? light.position : light.direction, isPoint, r.P);
         const glm::vec3 Il = shading::lightIntensityAt(light.color, isPoint, light.attenuation, Lraw);
-        samples.push_back({Lraw, Il, 1.0f});
+        const bool lit = glm::dot(r.N, Lraw) > 0.0f;   // the terms are 0 on the unlit side: no ray needed
+        const float vis = scene.terms.shadows && lit ? shadowRayVisibility(scene, r.P, r.N, light) : 1.0f;
+        samples.push_back({Lraw, Il, vis});
         ProbeLight pl;
         pl.name = light.name;
         pl.L = glm::normalize(Lraw);
@@ -126,12 +178,13 @@ ProbeResult probePixel(const Scene& scene, int width, int height, int x, int y) 
         pl.RoV = glm::dot(pl.R, r.V);
         pl.NoH = glm::dot(r.N, pl.H);
         pl.Il = Il;
+        pl.visibility = vis;
         pl.specPhong = shading::specularPhong(r.N, pl.L, r.V, m.s);
         pl.specBlinn = shading::specularBlinnPhong(r.N, pl.L, r.V, m.s);
         const int phong = shading::SL_MODEL_PHONG, blinn = shading::SL_MODEL_BLINN_PHONG;
-        pl.diffuse = shading::shadeLight(best->N, Lraw, V, Il, m.md, m.ms, m.s, phong, true, false);
-        pl.specularPhong = shading::shadeLight(best->N, Lraw, V, Il, m.md, m.ms, m.s, phong, false, true);
-        pl.specularBlinn = shading::shadeLight(best->N, Lraw, V, Il, m.md, m.ms, m.s, blinn, false, true);
+        pl.diffuse = vis * shading::shadeLight(best->N, Lraw, V, Il, m.md, m.ms, m.s, phong, true, false);
+        pl.specularPhong = vis * shading::shadeLight(best->N, Lraw, V, Il, m.md, m.ms, m.s, phong, false, true);
+        pl.specularBlinn = vis * shading::shadeLight(best->N, Lraw, V, Il, m.md, m.ms, m.s, blinn, false, true);
         r.lights.push_back(pl);
     }
     const shading::SurfaceParams params{m.ma, m.md, m.ms, m.s};

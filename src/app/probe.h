@@ -18,11 +18,12 @@ struct ProbeLight {
     glm::vec3 L{0.0f}, R{0.0f}, H{0.0f};  // unit; L toward the light, R = 2N(N·L) − L, H = normalize(L + V)
     float NoL = 0.0f, RoV = 0.0f, NoH = 0.0f;
     glm::vec3 Il{0.0f};                   // intensity arriving at P (attenuation applied), linear RGB
+    float visibility = 1.0f;              // vis_l: the tracer's shadow ray, 1 lit, 0 blocked; 1 with shadows off
     float specPhong = 0.0f;               // max(R·V, 0)^s, 0 on the unlit side
     float specBlinn = 0.0f;               // max(N·H, 0)^s, 0 on the unlit side
-    glm::vec3 diffuse{0.0f};              // Il ⊙ md · max(N·L, 0)
-    glm::vec3 specularPhong{0.0f};        // Il ⊙ ms · specPhong
-    glm::vec3 specularBlinn{0.0f};        // Il ⊙ ms · specBlinn
+    glm::vec3 diffuse{0.0f};              // vis_l · Il ⊙ md · max(N·L, 0)
+    glm::vec3 specularPhong{0.0f};        // vis_l · Il ⊙ ms · specPhong
+    glm::vec3 specularBlinn{0.0f};        // vis_l · Il ⊙ ms · specBlinn
 };
 
 struct ProbeResult {
@@ -45,8 +46,9 @@ struct ProbeResult {
 // (makeViewSetup + shading::cameraRayDirection) and evaluates local illumination at the nearest hit
 // with shading::shadeLight / shadeLocal. Spheres and planes use shading::intersectSphere/intersectPlane,
 // as the rasterizer's impostors do; mesh triangles are tested by brute force (Möller–Trumbore), with the
-// interpolated vertex normal flipped by winding as gl_FrontFacing does. Shadows are not evaluated
-// (vis = 1), as in the rasterizer.
+// interpolated vertex normal flipped by winding as gl_FrontFacing does. With the shadows term on, each
+// light's vis_l comes from the tracer's shadow ray (from P + ε·N, blocked by any hit short of the light):
+// the exact answer that the rasterizer's shadow maps approximate.
 ProbeResult probePixel(const Scene& scene, int width, int height, int x, int y);
 
 // The JSON written by the script's "probeReport" action and --probe-report (docs/viewer.md).

@@ -46,6 +46,7 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                           {"RoV", l.RoV},
                           {"NoH", l.NoH},
                           {"Il", vec(l.Il)},
+                          {"visibility", l.visibility},
                           {"spec_phong", l.specPhong},
                           {"spec_blinn", l.specBlinn},
                           {"diffuse", vec(l.diffuse)},
