@@ -2,12 +2,14 @@
 // the first perspective camera, and metallic-roughness → Phong (docs/gltf-import.md). Reading the file is
 // gltf_file.cpp; accessor bytes are read, bounds-checked, by gltf_accessors.cpp.
 //
-// Sections: 1. node transforms   2. primitives (triangulation, normals)   3. materials
+// Sections: 1. node transforms   2. primitives (triangulation, normals)   3. (materials: gltf_materials.cpp)
 //           4. the importer: hierarchy walk, meshes, lights, camera   5. public functions
 #include "scene/gltf_import.h"
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_file.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_values.h"
 #include "util/input_error.h"
 
 #include <tiny_gltf.h>
@@ -120,63 +122,6 @@ void generateNormals(const MeshPart& part, std::vector<glm::vec3>& out) {
         const float len2 = glm::dot(n, n);
         n = len2 > 0.0f && std::isfinite(len2) ? n / std::sqrt(len2) : kFallbackNormal;
     }
-}
-
-// ---------------------------------------------------------------------------------------------------------
-// 3. Materials
-// ---------------------------------------------------------------------------------------------------------
-
-float finiteClamp(double x, float lo, float hi, float fallback) {
-    return std::isfinite(x) ? std::clamp(float(x), lo, hi) : fallback;
-}
-
-glm::vec3 colorFrom(const std::vector<double>& v, glm::vec3 fallback) {
-    if (v.size() < 3) return fallback;
-    return {finiteClamp(v[0], 0.0f, 1.0f, fallback.r), finiteClamp(v[1], 0.0f, 1.0f, fallback.g),
-            finiteClamp(v[2], 0.0f, 1.0f, fallback.b)};
-}
-
-double numberOr(const tinygltf::Value& obj, const char* key, double fallback) {
-    if (!obj.IsObject() || !obj.Has(key)) return fallback;
-    const tinygltf::Value& v = obj.Get(key);
-    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
-}
-
-std::vector<double> numbersOf(const tinygltf::Value& obj, const char* key) {
-    std::vector<double> out;
-    if (!obj.IsObject() || !obj.Has(key) || !obj.Get(key).IsArray()) return out;
-    const tinygltf::Value& a = obj.Get(key);
-    for (size_t i = 0; i < a.ArrayLen(); ++i) {
-        const tinygltf::Value& x = a.Get(int(i));
-        out.push_back(x.IsNumber() ? x.GetNumberAsDouble() : std::nan(""));
-    }
-    return out;
-}
-
-Material materialFrom(const tinygltf::Material& gm, const std::string& place, std::vector<std::string>& warnings) {
-    const auto& pbr = gm.pbrMetallicRoughness;
-    Material m = phongFromMetallicRoughness(colorFrom(pbr.baseColorFactor, glm::vec3(1.0f)),
-                                            finiteClamp(pbr.metallicFactor, 0.0f, 1.0f, 1.0f),
-                                            finiteClamp(pbr.roughnessFactor, 0.0f, 1.0f, 1.0f));
-    // KHR_materials_pbrSpecularGlossiness is a Phong-like model already: diffuse → md, specular → ms.
-    auto sg = gm.extensions.find("KHR_materials_pbrSpecularGlossiness");
-    if (sg != gm.extensions.end()) {
-        const float roughness = 1.0f - finiteClamp(numberOr(sg->second, "glossinessFactor", 1.0), 0.0f, 1.0f, 1.0f);
-        const Material shape = phongFromMetallicRoughness(glm::vec3(1.0f), 0.0f, roughness);
-        m.md = m.ma = colorFrom(numbersOf(sg->second, "diffuseFactor"), glm::vec3(1.0f));
-        m.ms = colorFrom(numbersOf(sg->second, "specularFactor"), glm::vec3(1.0f));
-        m.s = shape.s;
-    }
-    auto ior = gm.extensions.find("KHR_materials_ior");
-    if (ior != gm.extensions.end()) {
-        const double value = numberOr(ior->second, "ior", 1.5);
-        if (std::isfinite(value) && value > 0.0)
-            m.ior = float(value);
-        else
-            warnings.push_back(place + ".extensions.KHR_materials_ior: ior " + std::to_string(value) +
-                               " ignored (kept 1.5)");
-    }
-    return m;
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -505,25 +450,6 @@ GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::str
     const tinygltf::Model model = gltf::parseModel(bytes, binary, name, "", out.warnings);
     Importer(model, name, out, limits).run(glm::dmat4(1.0));
     return out;
-}
-
-Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, float roughness) {
-    metallic = std::clamp(metallic, 0.0f, 1.0f);
-    roughness = std::clamp(roughness, 0.0f, 1.0f);
-    Material m;
-    // glTF 2.0 Appendix B: dielectrics have F0 = 0.04 and a diffuse lobe; metals tint F0 and have none.
-    m.md = baseColor * (1.0f - metallic);
-    m.ms = glm::mix(glm::vec3(0.04f), baseColor, metallic);
-    // Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces", eq. 33: a Blinn-Phong
-    // exponent s = 2/alpha^2 - 2 matches a Beckmann lobe of width alpha; glTF's alpha = roughness^2.
-    const float alpha = roughness * roughness;
-    const float alpha2 = std::max(alpha * alpha, 1e-12f);
-    m.s = std::clamp(2.0f / alpha2 - 2.0f, 1.0f, kMaxShininess);
-    m.ma = m.md;  // ambient light shows the surface's own colour
-    m.kr = glm::vec3(0.0f);
-    m.kt = glm::vec3(0.0f);
-    m.ior = 1.5f;
-    return m;
 }
 
 }  // namespace shadelab
