@@ -77,6 +77,40 @@ TEST_F(RasterShadows, LightMovedInOneRendererFails) {
     EXPECT_FALSE(r.pass) << "a light moved in one renderer passed the shadow gates:\n" << compareSummary(r);
 }
 
+// Planes occlude analytically, and only for the lights the CPU finds they can block (shadow_maps.cpp
+// planeMask). A wall between a second light and the stage must block that light everywhere the camera
+// sees, as the tracer's shadow ray does: the raster image is then exactly the image without that light,
+// and without the wall (the control) the light does reach the stage.
+Scene walledStage(bool wall, bool lightBehind) {
+    Scene scene = spheresOnPlane(1);
+    scene.lights[0].position = {-2.0f, 3.0f, 2.0f};
+    if (lightBehind) scene.lights.push_back(test::pointLight({4.0f, 2.5f, 0.5f}, {0.6f, 0.5f, 0.3f}));
+    if (wall) {
+        Plane w;
+        w.normal = {-1.0f, 0.0f, 0.0f};
+        w.offset = -2.6f;  // the plane x = 2.6, facing the stage; the second light stands at x = 4
+        w.material = test::colourMaterial(glm::vec3(0.5f, 0.55f, 0.6f));
+        scene.planes.push_back(w);
+    }
+    return scene;
+}
+
+TEST_F(RasterShadows, WallPlaneBlocksTheLightBehindItAsTheReference) {
+    const Scene scene = walledStage(true, true);
+    CompareResult r = compareRenders(scene, scene, "shadow_wall_plane");
+    EXPECT_TRUE(r.pass) << compareSummary(r);
+
+    raster::RasterRenderer& renderer = test::sharedRasterRenderer();
+    auto pixels = [&renderer](const Scene& s) {
+        renderer.uploadMeshes(s);
+        return raster::renderRaster(renderer, s, kWidth, kHeight, false).color.rgba;
+    };
+    EXPECT_EQ(pixels(walledStage(true, true)), pixels(walledStage(true, false)))
+        << "the light behind the wall reached something the camera sees";
+    EXPECT_NE(pixels(walledStage(false, true)), pixels(walledStage(false, false)))
+        << "control: without the wall the second light should light the stage";
+}
+
 // Acne: a lit plane with no occluders has no shadowed pixel, so shadows on renders exactly shadows off.
 // A sphere far outside the view still makes the renderer build and sample a shadow map.
 TEST_F(RasterShadows, UnoccludedPlaneHasNoAcne) {
