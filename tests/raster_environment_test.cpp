@@ -1,10 +1,9 @@
 // Raster environment cubes against the reference (issue 5): a kr = 0.5 mirror sphere (and an icosphere
 // mesh) among distant coloured spheres, the tracer at depth 1. The cube is seen from the object's centre,
-// so its error grows with
-// (sphere radius / distance of what it reflects), and its 128² faces blur the reflected edges: the gate is
-// the shadow gate's (1 % of interior pixels over 3/255, mean within 1/255), met here because everything
-// reflected is far. A kr differing between the renderers, and the cube left out, must fail; a near object
-// shows the documented parallax error.
+// so its error grows with (object radius / distance of what it reflects), and its 128² faces blur the
+// reflected edges: the gate is the shadow gate's (1 % of interior pixels over 3/255, mean within 1/255),
+// met here because everything reflected is far. A kr differing between the renderers, and the cube left
+// out, must fail; a near object shows the documented parallax error.
 #include "image/compare.h"
 #include "trace/trace_test_util.h"
 #include "gl_fixture.h"
