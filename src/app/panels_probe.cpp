@@ -54,7 +54,8 @@ void lightTable(const ProbeResult& p, bool shadows) {
         rowLabel("visible");
         for (size_t i = 0; i < p.lights.size(); ++i) {
             ImGui::TableSetColumnIndex(int(i) + 1);
-            ImGui::TextUnformatted(p.lights[i].visibility > 0.0f ? "yes" : "no: in shadow");
+            const ProbeLight& l = p.lights[i];
+            ImGui::TextUnformatted(l.NoL <= 0.0f ? "faces away" : l.visibility > 0.0f ? "yes" : "no: in shadow");
         }
     }
     rgbRow("diffuse", &ProbeLight::diffuse);
