@@ -65,10 +65,11 @@ TEST(AppState, SetShininessChangesOnlyThatObjectAndClamps) {
     ViewerState s = defaultState();
     const Scene before = s.scene;
     const uint32_t red = idOf(s, "red plastic"), blue = idOf(s, "shiny blue");
-    const uint64_t rev = s.revision;
+    const uint64_t rev = s.revision, referenceRev = s.referenceRevision;
     ASSERT_TRUE(setShininess(s, red, 300.0f));
     EXPECT_EQ(s.scene.spheres[red - 1].material.s, 300.0f);
     EXPECT_GT(s.revision, rev);
+    EXPECT_GT(s.referenceRevision, referenceRev) << "a material edit restarts the reference";
     // Negative control: the other objects keep their exponent.
     EXPECT_EQ(s.scene.spheres[blue - 1].material.s, before.spheres[blue - 1].material.s);
     setShininess(s, red, 1e9f);
@@ -184,6 +185,7 @@ TEST(AppState, RasterSettingsChangeOnlySceneRasterAndClamp) {
     EXPECT_TRUE(s.scene.raster.pcf);
     EXPECT_EQ(s.scene.raster.reflectionCubeSize, 256);
     EXPECT_GT(s.revision, before.revision) << "the rasterizer must redraw";
+    EXPECT_EQ(s.referenceRevision, before.referenceRevision) << "the tracer has no raster settings: no restart";
     // Nothing else changed: the scene with its old raster settings saves to the same text, and the view is kept.
     Scene restored = s.scene;
     restored.raster = before.scene.raster;

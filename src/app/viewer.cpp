@@ -177,7 +177,7 @@ void Viewer::updateReference() {
     // Split and Difference compare with the rasterizer, which reflects once: the reference traces one bounce
     // there too (issue 5); Traced shows it at the scene's own depth.
     const bool comparing = state_.mode == ViewMode::Split || state_.mode == ViewMode::Difference;
-    reference_->request(state_.scene, renderW_, renderH_, state_.revision, state_.geometryRevision,
+    reference_->request(state_.scene, renderW_, renderH_, state_.referenceRevision, state_.geometryRevision,
                         comparing ? std::min(state_.scene.maxDepth, 1) : -1);
     reference_->update();
 }

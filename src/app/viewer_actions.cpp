@@ -26,7 +26,7 @@ void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: war
 void Viewer::runScript() {
     if (!cursor_) return;
     if (waiting_) {
-        if (reference_->complete() && reference_->revision() == state_.revision) {
+        if (reference_->complete() && reference_->revision() == state_.referenceRevision) {
             waiting_ = nullptr;
         } else if (glfwGetTime() - waitStarted_ > double(waiting_->value)) {
             throw InputError(script_->file, "actions[" + std::to_string(waiting_->index) + "]",
@@ -46,7 +46,7 @@ void Viewer::performAction(const ScriptAction& a) {
     switch (a.kind) {
         case ActionKind::Screenshot: writePng(a.text, captureRaster()); break;
         case ActionKind::ReferenceScreenshot:
-            if (!reference_->complete() || reference_->revision() != state_.revision)
+            if (!reference_->complete() || reference_->revision() != state_.referenceRevision)
                 throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
                                  "the reference is not complete (use waitReference first)");
             writePng(a.text, toImage8(reference_->image(), state_.encoding));
@@ -122,7 +122,7 @@ void Viewer::writeWindowScreenshot(const std::string& path) {
 
 void Viewer::updateMetrics() {
     if (state_.mode != ViewMode::Difference || !reference_->complete() ||
-        reference_->revision() != state_.revision || metricsRevision_ == state_.revision)
+        reference_->revision() != state_.referenceRevision || metricsRevision_ == state_.revision)
         return;
     const Image8 raster = captureRaster();
     std::vector<uint32_t> rasterCoverage;

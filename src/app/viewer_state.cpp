@@ -50,7 +50,12 @@ void openScene(ViewerState& state, Scene scene, std::string path) {
     markChanged(state);
 }
 
-void markChanged(ViewerState& state) { ++state.revision; }
+void markChanged(ViewerState& state) {
+    ++state.revision;
+    ++state.referenceRevision;
+}
+
+void markRasterChanged(ViewerState& state) { ++state.revision; }
 
 ObjectRef objectRef(const Scene& scene, uint32_t id) {
     if (id == kBackgroundId) return {};
@@ -223,7 +228,7 @@ void setRasterSettings(ViewerState& state, const RasterSettings& raster) {
     r.normalBias = bias(raster.normalBias);
     r.pcf = raster.pcf;
     r.reflectionCubeSize = std::clamp(raster.reflectionCubeSize, kMinReflectionCubeSize, kMaxReflectionCubeSize);
-    markChanged(state);
+    markRasterChanged(state);  // the tracer has no shadow maps or cubes: the reference keeps running
 }
 
 void setAmbient(ViewerState& state, const glm::vec3& Ia) {

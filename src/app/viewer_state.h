@@ -1,6 +1,7 @@
 // ViewerState: everything the viewer's panels edit, as plain data (issue 4 §3), and the actions that change
 // it. The GUI, the --script automation and the unit tests all call these same functions; drawing reads
-// the state and never writes it. Actions that change what a renderer sees bump `revision`.
+// the state and never writes it. Actions that change what a renderer sees bump `revision` (and, unless only
+// the rasterizer sees it, `referenceRevision`).
 #pragma once
 
 #include "app/material_presets.h"
@@ -35,6 +36,7 @@ struct ViewerState {
     float splitPosition = 0.5f;       // Split mode wipe, fraction of the image width from the left
     int heatGain = 16;                // Difference mode amplification (compare_report.h)
     uint64_t revision = 1;            // bumped by every change a renderer can see
+    uint64_t referenceRevision = 1;   // bumped by every change the tracer can see (not scene.raster)
     uint64_t geometryRevision = 1;    // bumped when the meshes change (a new scene)
 };
 
@@ -42,6 +44,8 @@ ViewerState makeViewerState(Scene scene, std::string path);
 // Replaces the scene (drag and drop, Open): camera, selection and probe are reset; the view mode is kept.
 void openScene(ViewerState& state, Scene scene, std::string path);
 void markChanged(ViewerState& state);
+// A change only the rasterizer sees (scene.raster): the reference keeps running.
+void markRasterChanged(ViewerState& state);
 
 // --- objects, by coverage id (1-based: spheres, planes, meshes in scene order) ---
 struct ObjectRef {
