@@ -106,6 +106,25 @@ TEST(Cli, BothTracesTheReferenceAtDepthOneUnlessDepthIsGiven) {
     EXPECT_NE(readPng(one).data, readPng(five).data) << one << " and " << five << " should differ";
 }
 
+// Shadow maps beyond the memory budget are refused with one line, not allocated lazily and killed later.
+TEST(Cli, ShadowMapsOverBudgetAreAClearError) {
+    std::string text = readAll(test::sourcePath("assets/scenes/default.json"));
+    const std::string key = R"({"type": "point", "name": "warm key", "position": [-5, 7, 5])";
+    const size_t at = text.find(key);
+    ASSERT_NE(at, std::string::npos) << "the default key light changed; update this test";
+    // Two point lights among the spheres: two cube maps, 12 layers of 8192² (3 GiB).
+    text.replace(at, key.size(), R"({"type": "point", "position": [0, 1.5, 0]}, {"type": "point", "name": "warm key", "position": [1, 1.5, 0])");
+    const std::string scene = writeText("shadow_budget_scene.json", text);
+    const std::string out = test::outputPath("shadow_budget.png");
+    fs::remove(out);
+    Result r = run("render " + scene + " -o " + out + " --size 64x36 --shadow-map-size 8192");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("budget"), std::string::npos) << r.out;
+    EXPECT_EQ(lineCount(r.out), 1) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_EQ(run("render " + scene + " -o " + out + " --size 64x36").code, 0) << "control: auto size fits";
+}
+
 TEST(Cli, MissingFileExitsOneNamingIt) {
     std::string out = test::outputPath("never.png");
     fs::remove(out);

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace shadelab::app {
 
@@ -159,7 +160,16 @@ bool Viewer::ensureRasterCurrent(bool force) {
     }
     if (!force && rasterRevision_ == state_.revision && rasterW_ == renderW_ && rasterH_ == renderH_) return false;
     const double t0 = glfwGetTime();
-    raster_->draw(state_.scene, renderW_, renderH_, true);
+    try {
+        raster_->draw(state_.scene, renderW_, renderH_, true);
+    } catch (const std::runtime_error& e) {
+        // A shadow-map size too large for memory (raster_limits.h budget): say so and fall back to auto.
+        if (state_.scene.raster.shadowMapSize == 0) throw;
+        setStatus(std::string(e.what()) + "; using auto", true);
+        state_.scene.raster.shadowMapSize = 0;
+        markRasterChanged(state_);
+        return ensureRasterCurrent(force);
+    }
     if (options_.stats) glFinish();  // so the figure is the draw, not just its submission
     if (options_.stats) rasterStats_.add((glfwGetTime() - t0) * 1000.0);
     rasterRevision_ = state_.revision;

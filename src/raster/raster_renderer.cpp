@@ -137,6 +137,8 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shad
     programsFor(local);
     programsFor(full);
     glUseProgram(0);
+    // Environment cubes are sampled bilinearly across face edges (core profile leaves this off).
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
     frameUbo_ = gl::Buffer::create();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
@@ -243,7 +245,8 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
         shadows_.render(scene, settings, ranges_, meshVao_ ? meshVao_.id() : emptyVao_.id(), cubeVao_.id());
         shadowKey_ = std::move(key);
     }
-    shadows_.setEpsilon(sceneEpsilon(scene, ranges_));  // scaled by the box of casters and eye: follows the camera
+    // Scaled by the box of casters and eye, so it follows the camera (a uniform, not a new map).
+    shadows_.setEpsilon(sceneEpsilon(scene, ranges_, scene.camera.position));
 }
 
 // Reflective spheres and mesh parts (kr > 0, reflections on): one environment cube each, rendered from its
@@ -275,6 +278,9 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
     const float farDepth = 1.0f;
     for (size_t cube = 0; cube < probes_.size(); ++cube) {
         const EnvironmentProbe& probe = probes_[cube];
+        // The faces' shadow rays start at the cube's centre, not the camera: ε from there keeps the cubes
+        // independent of the camera they were first rendered for.
+        shadows_.setEpsilon(sceneEpsilon(scene, ranges_, probe.centre));
         for (int face = 0; face < 6; ++face) {
             environments_.bindFace(int(cube), face);
             glClearBufferfv(GL_COLOR, 0, background);
@@ -285,6 +291,7 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    shadows_.setEpsilon(sceneEpsilon(scene, ranges_, scene.camera.position));
     environmentKey_ = std::move(key);
 }
 

@@ -9,6 +9,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace shadelab::raster {
 namespace {
@@ -87,9 +89,8 @@ glm::vec4 orthoDepthTest(float zNear, float zFar, float texelWorld, float depthB
     return glm::vec4(0.0f, 0.0f, depthBiasTexels * texelWorld / (zFar - zNear), 0.0f);
 }
 
-float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges) {
+float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges, const glm::vec3& eye) {
     Box box = casterBounds(scene, ranges);
-    const glm::vec3 eye = scene.camera.position;
     box.extend(eye);
     for (const Plane& p : scene.planes) box.extend(eye - (glm::dot(p.normal, eye) - p.offset) * p.normal);
     const float radius = 0.5f * glm::length(box.hi - box.lo);
@@ -110,10 +111,30 @@ ShadowMaps::ShadowMaps(const gl::ShaderLibrary& shaders) {
 
 void ShadowMaps::allocate(int size, int layers) {
     if (size == size_ && layers <= allocatedLayers_) return;
+    GLint maxSize = 0, maxLayers = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    const double mib = double(size) * double(size) * 4.0 * double(layers) / (1024.0 * 1024.0);
+    const std::string what = "shadow maps of " + std::to_string(size) + "x" + std::to_string(size) + " texels x " +
+                             std::to_string(layers) + " layers (" + std::to_string(int(mib + 0.5)) + " MiB)";
+    const std::string advice = "; use a smaller shadow-map size (--shadow-map-size, raster.shadowMapSize)";
+    if (size > maxSize || layers > maxLayers)
+        throw std::runtime_error(what + " exceed this GL's limits (" + std::to_string(maxSize) + " texels, " +
+                                 std::to_string(maxLayers) + " layers)" + advice);
+    // llvmpipe allocates lazily and a later page fault would kill the process instead of failing here.
+    if (mib > double(kMaxShadowMapMiB))
+        throw std::runtime_error(what + " exceed the " + std::to_string(kMaxShadowMapMiB) + " MiB budget" + advice);
+    while (glGetError() != GL_NO_ERROR) {
+    }
     maps_ = gl::Texture::create();
     glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                  nullptr);
+    if (glGetError() == GL_OUT_OF_MEMORY) {
+        maps_ = gl::Texture();
+        size_ = allocatedLayers_ = 0;
+        throw std::runtime_error(what + " do not fit in memory" + advice);
+    }
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -129,7 +150,7 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
     block_ = ShadowBlock{};
     const int size = std::max(1, settings.shadowMapSize);
     block_.info = glm::ivec4(0, settings.pcf ? 1 : 0, size, 0);
-    block_.bias = glm::vec4(settings.depthBias, settings.normalBias, sceneEpsilon(scene, ranges), 0.0f);
+    block_.bias = glm::vec4(settings.depthBias, settings.normalBias, sceneEpsilon(scene, ranges, scene.camera.position), 0.0f);
     for (const Plane& p : scene.planes) {
         if (block_.info.x == kMaxShadowPlanes) break;
         block_.planes[block_.info.x++] = glm::vec4(p.normal, p.offset);

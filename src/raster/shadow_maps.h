@@ -50,6 +50,7 @@ private:
 };
 
 // The tracer's scene-scaled epsilon (trace_scene.cpp), computed from the same boxes: the shadow-ray offset.
-float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges);
+// `eye` is where the rays start: the camera, or an environment cube's centre.
+float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges, const glm::vec3& eye);
 
 }  // namespace shadelab::raster
