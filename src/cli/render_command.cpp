@@ -62,16 +62,19 @@ Rendered rasterize(const Scene& scene, const RenderOptions& o, bool coverage, St
     return {std::move(r.pixels), std::move(r.coverage)};
 }
 
+// The tracer's depth: --depth, else the scene's; compared with the rasterizer (--renderer both), which
+// reflects once, at most 1 (issue 5).
+int referenceDepth(const Scene& scene, const RenderOptions& o) {
+    return o.depth.value_or(o.renderer == RendererChoice::Both ? std::min(scene.maxDepth, 1) : scene.maxDepth);
+}
+
 Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& timer) {
     trace::TraceSettings settings;
     settings.width = o.width;
     settings.height = o.height;
     settings.spp = o.spp;
     settings.threads = o.threads;
-    // Compared with the rasterizer (--renderer both), the reference reflects once as the rasterizer does
-    // (issue 5), unless --depth says otherwise; alone it keeps the scene's depth.
-    const bool comparing = o.renderer == RendererChoice::Both;
-    settings.maxDepth = o.depth.value_or(comparing ? std::min(scene.maxDepth, 1) : -1);
+    settings.maxDepth = referenceDepth(scene, o);
     settings.coverage = o.renderer == RendererChoice::Both;
     trace::TraceOutput out;
     {
@@ -129,7 +132,7 @@ int renderCommand(int argc, char** argv) {
         output = sideBySide({&a.pixels, &b.pixels, &heat});
         timer.stage("compare + heatmap");
         std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
-                     o.depth.value_or(std::min(scene.maxDepth, 1)), compareSummary(cmp).c_str());
+                     referenceDepth(scene, o), compareSummary(cmp).c_str());
     }
     std::vector<uint8_t> png = encodePng(output);
     timer.stage("PNG encode");
