@@ -5,6 +5,7 @@
 #include "raster/frame_block.h"
 #include "raster/planar_reflection.h"
 #include "scene/coverage.h"
+#include "scene/ray_epsilon.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
 
@@ -246,7 +247,7 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
         shadowKey_ = std::move(key);
     }
     // Scaled by the box of casters and eye, so it follows the camera (a uniform, not a new map).
-    shadows_.setEpsilon(sceneEpsilon(scene, ranges_, scene.camera.position));
+    shadows_.setEpsilon(secondaryRayEpsilon(scene, scene.camera.position));
 }
 
 // Reflective spheres and mesh parts (kr > 0, reflections on): one environment cube each, rendered from its
@@ -280,7 +281,7 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
         const EnvironmentProbe& probe = probes_[cube];
         // The faces' shadow rays start at the cube's centre, not the camera: ε from there keeps the cubes
         // independent of the camera they were first rendered for.
-        shadows_.setEpsilon(sceneEpsilon(scene, ranges_, probe.centre));
+        shadows_.setEpsilon(secondaryRayEpsilon(scene, probe.centre));
         for (int face = 0; face < 6; ++face) {
             environments_.bindFace(int(cube), face);
             glClearBufferfv(GL_COLOR, 0, background);
@@ -291,7 +292,7 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    shadows_.setEpsilon(sceneEpsilon(scene, ranges_, scene.camera.position));
+    shadows_.setEpsilon(secondaryRayEpsilon(scene, scene.camera.position));
     environmentKey_ = std::move(key);
 }
 

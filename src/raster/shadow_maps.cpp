@@ -1,6 +1,9 @@
 // ShadowMaps: fitting a light's projection to the casters' bounds, and the depth-only passes per layer.
 #include "raster/shadow_maps.h"
 
+#include "scene/bounds.h"
+#include "scene/ray_epsilon.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -15,18 +18,9 @@
 namespace shadelab::raster {
 namespace {
 
-struct Box {
-    glm::vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
-    bool empty() const { return lo.x > hi.x; }
-    void extend(const glm::vec3& p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-};
-
 // Bounds of everything that casts: spheres and uploaded mesh parts (planes occlude analytically).
-Box casterBounds(const Scene& scene, const std::vector<DrawRange>& ranges) {
-    Box b;
+Bounds casterBounds(const Scene& scene, const std::vector<DrawRange>& ranges) {
+    Bounds b;
     for (const Sphere& s : scene.spheres) {
         b.extend(s.center - glm::vec3(s.radius));
         b.extend(s.center + glm::vec3(s.radius));
@@ -54,7 +48,7 @@ float lightSide(const Plane& p, const Light& l) {
 // Plane k's own pixels never need the test: their origin lies on the viewer's side, so when the light is on
 // the other side N·L <= 0 and the diffuse and specular terms are 0 anyway. So plane k matters only when a
 // caster's box reaches its far side, or another plane does (every non-parallel plane crosses it).
-int planeMask(const Scene& scene, const Box& casters, const Light& l) {
+int planeMask(const Scene& scene, const Bounds& casters, const Light& l) {
     int mask = 0;
     const int planes = std::min<int>(int(scene.planes.size()), kMaxShadowPlanes);
     for (int k = 0; k < planes; ++k) {
@@ -62,9 +56,7 @@ int planeMask(const Scene& scene, const Box& casters, const Light& l) {
         const float ls = lightSide(p, l);
         bool matters = ls == 0.0f || !std::isfinite(ls);
         for (int c = 0; c < 8 && !casters.empty() && !matters; ++c) {
-            const glm::vec3 x(c & 1 ? casters.hi.x : casters.lo.x, c & 2 ? casters.hi.y : casters.lo.y,
-                              c & 4 ? casters.hi.z : casters.lo.z);
-            matters = side(p, x) * ls < 0.0f;
+            matters = side(p, casters.corner(c)) * ls < 0.0f;
         }
         for (size_t j = 0; j < scene.planes.size() && !matters; ++j) {
             if (int(j) == k) continue;
@@ -87,16 +79,6 @@ glm::vec4 perspectiveDepthTest(float zNear, float zFar) {
 
 glm::vec4 orthoDepthTest(float zNear, float zFar, float texelWorld, float depthBiasTexels) {
     return glm::vec4(0.0f, 0.0f, depthBiasTexels * texelWorld / (zFar - zNear), 0.0f);
-}
-
-float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges, const glm::vec3& eye) {
-    Box box = casterBounds(scene, ranges);
-    box.extend(eye);
-    for (const Plane& p : scene.planes) box.extend(eye - (glm::dot(p.normal, eye) - p.offset) * p.normal);
-    const float radius = 0.5f * glm::length(box.hi - box.lo);
-    const glm::vec3 mag = glm::max(glm::abs(box.lo), glm::abs(box.hi));
-    const float e = std::max({1e-4f * radius, 1e-6f * std::max({mag.x, mag.y, mag.z}), 1e-7f});
-    return std::isfinite(e) ? e : 1e-4f;
 }
 
 ShadowMaps::ShadowMaps(const gl::ShaderLibrary& shaders) {
@@ -150,18 +132,18 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
     block_ = ShadowBlock{};
     const int size = std::max(1, settings.shadowMapSize);
     block_.info = glm::ivec4(0, settings.pcf ? 1 : 0, size, 0);
-    block_.bias = glm::vec4(settings.depthBias, settings.normalBias, sceneEpsilon(scene, ranges, scene.camera.position), 0.0f);
+    block_.bias = glm::vec4(settings.depthBias, settings.normalBias, secondaryRayEpsilon(scene, scene.camera.position), 0.0f);
     for (const Plane& p : scene.planes) {
         if (block_.info.x == kMaxShadowPlanes) break;
         block_.planes[block_.info.x++] = glm::vec4(p.normal, p.offset);
     }
 
     // Fit each light's layers to the casters' bounding box and sphere.
-    const Box box = casterBounds(scene, ranges);
+    const Bounds box = casterBounds(scene, ranges);
     int layers = 0;
     const int lights = std::min<int>(int(scene.lights.size()), kMaxShadowedLights);
     if (!box.empty()) {
-        const glm::vec3 c = 0.5f * (box.lo + box.hi);
+        const glm::vec3 c = box.centroid();
         const float R = std::max(0.5f * glm::length(box.hi - box.lo), 1e-6f);
         for (int i = 0; i < lights; ++i) {
             const Light& l = scene.lights[size_t(i)];
@@ -174,8 +156,7 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
                 const glm::mat4 view = glm::lookAt(c - 2.0f * R * f, c, upFor(f));
                 glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
                 for (int k = 0; k < 8; ++k) {
-                    glm::vec3 p(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y, k & 4 ? box.hi.z : box.lo.z);
-                    glm::vec3 q = glm::vec3(view * glm::vec4(p, 1.0f));
+                    glm::vec3 q = glm::vec3(view * glm::vec4(box.corner(k), 1.0f));
                     lo = glm::min(lo, q);
                     hi = glm::max(hi, q);
                 }

@@ -25,7 +25,7 @@ public:
     void render(const Scene& scene, const RasterSettings& settings, const std::vector<DrawRange>& ranges,
                 GLuint meshVao, GLuint cubeVao);
 
-    // The shadow-ray offset ε (sceneEpsilon) scales with the box of casters and eye, so it follows the
+    // The shadow-ray offset ε (scene/ray_epsilon.h) scales with the box of casters and eye, so it follows the
     // camera; the maps do not depend on it. Updates the block only (no depth pass) when it changed.
     void setEpsilon(float epsilon);
 
@@ -48,9 +48,5 @@ private:
     int size_ = 0, allocatedLayers_ = 0, layerCount_ = 0;
     ShadowBlock block_{};
 };
-
-// The tracer's scene-scaled epsilon (trace_scene.cpp), computed from the same boxes: the shadow-ray offset.
-// `eye` is where the rays start: the camera, or an environment cube's centre.
-float sceneEpsilon(const Scene& scene, const std::vector<DrawRange>& ranges, const glm::vec3& eye);
 
 }  // namespace shadelab::raster

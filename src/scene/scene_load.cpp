@@ -66,11 +66,6 @@ void importMeshes(Scene& scene, const std::string& baseDir, WarnFn warn, const G
 
 }  // namespace
 
-void Bounds::extend(const glm::vec3& p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-}
-
 Bounds sceneBounds(const Scene& scene) {
     Bounds b;
     for (const Sphere& s : scene.spheres) {

@@ -3,6 +3,7 @@
 // (or its own glTF camera) and a default light rig (or its own KHR_lights_punctual lights).
 #pragma once
 
+#include "scene/bounds.h"
 #include "scene/gltf_import.h"
 #include "scene/scene.h"
 
@@ -10,13 +11,6 @@
 #include <string>
 
 namespace shadelab {
-
-struct Bounds {
-    glm::vec3 lo{1e30f};
-    glm::vec3 hi{-1e30f};
-    bool empty() const { return lo.x > hi.x; }
-    void extend(const glm::vec3& p);
-};
 
 // Throws InputError naming the file and problem. `gltf` applies to every model the scene loads.
 Scene loadScene(const std::string& path, void (*warn)(const std::string& line) = nullptr,

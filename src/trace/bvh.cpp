@@ -33,8 +33,8 @@ inline int binOf(float c, float lo, float scale, int bins) {
     return std::min(std::max(b, 0), bins - 1);
 }
 
-Split findSahSplit(const std::vector<Aabb>& boxes, const std::vector<glm::vec3>& centroids,
-                   const uint32_t* prims, uint32_t count, const Aabb& centroidBounds, float parentArea,
+Split findSahSplit(const std::vector<Bounds>& boxes, const std::vector<glm::vec3>& centroids,
+                   const uint32_t* prims, uint32_t count, const Bounds& centroidBounds, float parentArea,
                    const BvhBuildOptions& o) {
     Split best;
     const int bins = std::min(std::max(o.bins, 2), kMaxBins);
@@ -42,7 +42,7 @@ Split findSahSplit(const std::vector<Aabb>& boxes, const std::vector<glm::vec3>&
         const float lo = centroidBounds.lo[axis], extent = centroidBounds.hi[axis] - lo;
         if (!(extent > 0.0f)) continue;
         const float scale = float(bins) / extent;
-        std::array<Aabb, kMaxBins> binBox;
+        std::array<Bounds, kMaxBins> binBox;
         std::array<uint32_t, kMaxBins> binCount{};
         for (uint32_t i = 0; i < count; ++i) {
             const uint32_t p = prims[i];
@@ -53,7 +53,7 @@ Split findSahSplit(const std::vector<Aabb>& boxes, const std::vector<glm::vec3>&
         // Sweep from the right to get each suffix's area and count, then from the left.
         std::array<float, kMaxBins> rightArea{};
         std::array<uint32_t, kMaxBins> rightCount{};
-        Aabb acc;
+        Bounds acc;
         uint32_t n = 0;
         for (int b = bins - 1; b > 0; --b) {
             acc.extend(binBox[b]);
@@ -61,7 +61,7 @@ Split findSahSplit(const std::vector<Aabb>& boxes, const std::vector<glm::vec3>&
             rightArea[b] = acc.area();
             rightCount[b] = n;
         }
-        acc = Aabb();
+        acc = Bounds();
         n = 0;
         for (int b = 0; b < bins - 1; ++b) {
             acc.extend(binBox[b]);
@@ -78,7 +78,7 @@ Split findSahSplit(const std::vector<Aabb>& boxes, const std::vector<glm::vec3>&
 
 }  // namespace
 
-Bvh buildBvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options) {
+Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options) {
     Bvh bvh;
     const uint32_t n = uint32_t(boxes.size());
     if (n == 0) return bvh;
@@ -96,7 +96,7 @@ Bvh buildBvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options) {
         const Task task = stack.back();
         stack.pop_back();
         uint32_t* prims = bvh.order.data() + task.first;
-        Aabb box, centroidBox;
+        Bounds box, centroidBox;
         for (uint32_t i = 0; i < task.count; ++i) {
             box.extend(boxes[prims[i]]);
             centroidBox.extend(centroids[prims[i]]);
@@ -152,7 +152,7 @@ Bvh buildBvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options) {
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
     if (bvh.empty()) return 0.0f;
     auto area = [](const BvhNode& nd) {
-        Aabb b;
+        Bounds b;
         b.lo = glm::vec3(nd.bounds[0], nd.bounds[1], nd.bounds[2]);
         b.hi = glm::vec3(nd.bounds[3], nd.bounds[4], nd.bounds[5]);
         return b.area();

@@ -3,7 +3,7 @@
 // primitives (mesh_bvh.cpp for triangles, sphere_set.cpp for spheres).
 #pragma once
 
-#include "trace/aabb.h"
+#include "trace/slab_test.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -58,7 +58,7 @@ struct Bvh {
 };
 
 // Builds over `boxes` (one per primitive, none empty). An empty input gives an empty Bvh.
-Bvh buildBvh(const std::vector<Aabb>& boxes, const BvhBuildOptions& options = {});
+Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options = {});
 
 // SAH cost of a built tree (for tests and tuning): Σ area(node)/area(root) weighted by visit/test cost.
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options = {});

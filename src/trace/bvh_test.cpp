@@ -61,7 +61,7 @@ struct Nearest {
 // size (about 10^4 times the test's rounding), lies off the ray is skipped: a hit there is impossible.
 // Triangles go in cache-sized blocks in scene order, so the answer is exactly that of the plain loop.
 std::vector<Nearest> bruteForceAll(const std::vector<SceneTri>& tris, const std::vector<Ray>& rays) {
-    Aabb all;
+    Bounds all;
     for (const SceneTri& t : tris)
         for (int k = 0; k < 3; ++k) all.extend(glm::make_vec3(t.v + 3 * k));
     const float margin = 1e-3f * glm::length(all.hi - all.lo) + 1e-6f;
@@ -108,7 +108,7 @@ std::vector<Nearest> bruteForceAll(const std::vector<SceneTri>& tris, const std:
 
 // Half the rays start anywhere in or around the bounds with a random direction; half aim at a random point
 // of a random triangle, so that most of those hit and probe the tree's interior.
-std::vector<Ray> randomRays(const std::vector<SceneTri>& tris, const Aabb& b, int n, uint32_t seed) {
+std::vector<Ray> randomRays(const std::vector<SceneTri>& tris, const Bounds& b, int n, uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     std::normal_distribution<float> g;
@@ -172,8 +172,8 @@ Disagreement compare(const MeshBvh& bvh, const std::vector<Ray>& rays, const std
     return d;
 }
 
-std::vector<Aabb> boxesOf(const std::vector<SceneTri>& tris) {
-    std::vector<Aabb> boxes(tris.size());
+std::vector<Bounds> boxesOf(const std::vector<SceneTri>& tris) {
+    std::vector<Bounds> boxes(tris.size());
     for (size_t i = 0; i < tris.size(); ++i)
         for (int k = 0; k < 3; ++k) boxes[i].extend(glm::make_vec3(tris[i].v + 3 * k));
     return boxes;
@@ -181,17 +181,17 @@ std::vector<Aabb> boxesOf(const std::vector<SceneTri>& tris) {
 
 // ---- Structural invariants ------------------------------------------------------------------------
 
-bool contains(const float* outer, const Aabb& b) {
+bool contains(const float* outer, const Bounds& b) {
     for (int a = 0; a < 3; ++a)
         if (b.lo[a] < outer[a] || b.hi[a] > outer[3 + a]) return false;
     return true;
 }
 
-Aabb box(glm::vec3 lo, glm::vec3 hi) { return Aabb{lo, hi}; }
+Bounds box(glm::vec3 lo, glm::vec3 hi) { return Bounds{lo, hi}; }
 
 // Every primitive in exactly one leaf, leaves of 1..maxLeaf primitives whose boxes hold them, children
 // inside their parent, sibling pairs at even indices, and the reported depth right and below the limit.
-::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Aabb>& boxes, int maxLeaf) {
+::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Bounds>& boxes, int maxLeaf) {
     if (boxes.empty()) return bvh.empty() ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << "not empty";
     if (bvh.order.size() != boxes.size()) return ::testing::AssertionFailure() << "order has " << bvh.order.size();
     std::vector<int> seen(boxes.size(), 0);
@@ -282,7 +282,7 @@ INSTANTIATE_TEST_SUITE_P(AssimpTestModels, BvhModel,
 
 TEST(BvhBuild, EmptyAndSinglePrimitive) {
     EXPECT_TRUE(buildBvh({}).empty());
-    const std::vector<Aabb> one = {box({1, 2, 3}, {4, 5, 6})};
+    const std::vector<Bounds> one = {box({1, 2, 3}, {4, 5, 6})};
     const Bvh b = buildBvh(one);
     EXPECT_TRUE(bvhIsValid(b, one, 4));
     EXPECT_TRUE(b.nodes[0].isLeaf());
@@ -293,7 +293,7 @@ TEST(BvhBuild, EmptyAndSinglePrimitive) {
 TEST(BvhBuild, IdenticalBoxesSplitByCountWithinTheDepthLimit) {
     for (const size_t n : {size_t(5), size_t(1000), size_t(100000)})
         for (const int leaf : {1, 4}) {
-            const std::vector<Aabb> same(n, box({-1, 0, 2}, {1, 0.5f, 3}));
+            const std::vector<Bounds> same(n, box({-1, 0, 2}, {1, 0.5f, 3}));
             BvhBuildOptions o;
             o.maxLeafSize = leaf;
             const Bvh b = buildBvh(same, o);
@@ -301,7 +301,7 @@ TEST(BvhBuild, IdenticalBoxesSplitByCountWithinTheDepthLimit) {
             EXPECT_LE(b.depth, int(std::ceil(std::log2(double(n)))) + 1) << "object-median fallback should halve";
         }
     // Points and flat boxes: zero area everywhere.
-    std::vector<Aabb> flat;
+    std::vector<Bounds> flat;
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     for (int i = 0; i < 3000; ++i) {
@@ -314,7 +314,7 @@ TEST(BvhBuild, IdenticalBoxesSplitByCountWithinTheDepthLimit) {
 TEST(BvhBuild, OptionsAndSahCostOnRandomBoxes) {
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> u(-10.0f, 10.0f), s(0.0f, 0.3f);
-    std::vector<Aabb> boxes;
+    std::vector<Bounds> boxes;
     for (int i = 0; i < 5000; ++i) {
         const glm::vec3 p(u(rng), u(rng), u(rng));
         boxes.push_back(box(p, p + glm::vec3(s(rng), s(rng), s(rng))));

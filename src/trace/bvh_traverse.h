@@ -2,7 +2,7 @@
 // come in as leaf callbacks, so triangles (mesh_bvh.cpp) and spheres (sphere_set.cpp) walk one code path.
 #pragma once
 
-#include "trace/aabb.h"
+#include "trace/slab_test.h"
 #include "trace/bvh.h"
 
 #include <cmath>

@@ -27,7 +27,7 @@ bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec
 
 MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     // Gather the finite triangles in scene order; `source` numbers every triangle, kept or not.
-    std::vector<Aabb> boxes;
+    std::vector<Bounds> boxes;
     std::vector<uint32_t> tmpPart, tmpSource;
     std::vector<float> tmpPos, tmpNrm;
     uint32_t source = 0, partIndex = 0;
@@ -46,7 +46,7 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
                 }
                 if (!finite(v[0]) || !finite(v[1]) || !finite(v[2])) continue;
                 if (isDegenerateTriangle(v[0], v[1], v[2])) continue;
-                Aabb box;
+                Bounds box;
                 for (const glm::vec3& q : v) box.extend(q);
                 boxes.push_back(box);
                 bounds_.extend(box);
@@ -69,7 +69,7 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     if (!boxes.empty()) {
         const glm::vec3 m = glm::max(glm::abs(bounds_.lo), glm::abs(bounds_.hi));
         const glm::vec3 pad(1e-6f * std::max({m.x, m.y, m.z, 1e-30f}));
-        for (Aabb& b : boxes) {
+        for (Bounds& b : boxes) {
             b.lo -= pad;
             b.hi += pad;
         }

@@ -50,7 +50,7 @@ public:
 
     // Mesh index (into Scene::meshes) of each flattened part.
     const std::vector<uint32_t>& partMesh() const { return partMesh_; }
-    Aabb bounds() const { return bounds_; }
+    Bounds bounds() const { return bounds_; }
     const Bvh& bvh() const { return bvh_; }
     // Whether `scene` has the same meshes, parts and triangle counts as the scene this was built from
     // (a cheap sanity check; it cannot see moved vertices).
@@ -64,7 +64,7 @@ private:
     std::vector<uint32_t> source_;      // per slot
     std::vector<uint32_t> partMesh_;    // per flattened part
     std::vector<size_t> partTriangles_; // triangle count per flattened part, for matches()
-    Aabb bounds_;
+    Bounds bounds_;
 };
 
 }  // namespace shadelab::trace

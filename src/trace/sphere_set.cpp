@@ -12,14 +12,14 @@
 namespace shadelab::trace {
 
 SphereSet::SphereSet(const std::vector<Sphere>& spheres) {
-    std::vector<Aabb> boxes;
+    std::vector<Bounds> boxes;
     boxes.reserve(spheres.size());
     for (const Sphere& s : spheres) {
         // Pad by a little more than intersectSphere's rounding, relative to the radius and to the
         // magnitude of the coordinates, so grazing hits are never culled.
         const float m = std::max({std::fabs(s.center.x), std::fabs(s.center.y), std::fabs(s.center.z)});
         const float r = s.radius * (1.0f + 1e-4f) + 1e-6f * m;
-        Aabb b;
+        Bounds b;
         b.lo = s.center - glm::vec3(r);
         b.hi = s.center + glm::vec3(r);
         boxes.push_back(b);

@@ -29,13 +29,13 @@ public:
     bool anyHit(const Ray& ray, float tMin, float tMax) const;
 
     size_t size() const { return spheres_.size(); }
-    Aabb bounds() const { return bounds_; }
+    Bounds bounds() const { return bounds_; }
 
 private:
     Bvh bvh_;
     std::vector<glm::vec4> spheres_;    // centre and radius, in BVH order
     std::vector<uint32_t> index_;       // scene index, in BVH order
-    Aabb bounds_;
+    Bounds bounds_;
 };
 
 }  // namespace shadelab::trace

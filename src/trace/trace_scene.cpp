@@ -3,6 +3,7 @@
 #include "trace/trace_scene.h"
 
 #include "scene/coverage.h"
+#include "scene/ray_epsilon.h"
 #include "shading/lighting.h"
 #include "util/check.h"
 
@@ -59,16 +60,7 @@ void TraceScene::prepare(const Scene& scene) {
     for (size_t m = 0; m < scene_.meshes.size(); ++m)
         for (size_t p = 0; p < scene_.meshes[m].parts.size(); ++p) partRef_.emplace_back(uint32_t(m), uint32_t(p));
 
-    Aabb box = spheres_->bounds();
-    box.extend(meshes_->bounds());
-    const glm::vec3 eye = scene.camera.position;
-    box.extend(eye);
-    for (const Plane& p : scene.planes) box.extend(eye - (glm::dot(p.normal, eye) - p.offset) * p.normal);
-    const float radius = 0.5f * glm::length(box.hi - box.lo);
-    const glm::vec3 mag = glm::max(glm::abs(box.lo), glm::abs(box.hi));
-    const float maxAbs = std::max({mag.x, mag.y, mag.z});
-    const float e = std::max({1e-4f * radius, 1e-6f * maxAbs, 1e-7f});
-    epsilon_ = std::isfinite(e) ? e : 1e-4f;
+    epsilon_ = secondaryRayEpsilon(scene, scene.camera.position);
 }
 
 std::optional<Hit> TraceScene::intersect(const Ray& ray) const {

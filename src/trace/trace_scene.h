@@ -39,10 +39,7 @@ public:
     const Scene& scene() const { return scene_; }
     const std::shared_ptr<const MeshBvh>& meshBvh() const { return meshes_; }
 
-    // Offset of secondary-ray origins along the normal, world units: 1e-4 × the radius of the box around
-    // the spheres, the mesh triangles, the camera and each plane's point nearest the camera (so a scene
-    // seen from afar gets a larger offset, as its hit points are less precise), and never below
-    // 1e-6 × the largest coordinate magnitude there, where float spacing sets the floor.
+    // Offset of secondary-ray origins along the normal, world units (scene/ray_epsilon.h).
     float epsilon() const { return epsilon_; }
 
     // Nearest hit with t > 0. An exact tie in t goes to spheres, then planes, then triangles, and within

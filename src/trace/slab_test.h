@@ -1,7 +1,8 @@
-// Aabb, an axis-aligned box, and the robust ray–box slab test the BVH traversals share (Kay & Kajiya
-// 1986 slabs; Ize 2013 "Robust BVH Ray Traversal" for the conservative far distance). No primitives here.
+// The robust ray–box slab test the BVH traversals share, over scene/bounds.h boxes (Kay & Kajiya 1986
+// slabs; Ize 2013 "Robust BVH Ray Traversal" for the conservative far distance). No primitives here.
 #pragma once
 
+#include "scene/bounds.h"
 #include "trace/ray.h"
 
 #include <algorithm>
@@ -10,28 +11,6 @@
 #include <glm/vec3.hpp>
 
 namespace shadelab::trace {
-
-struct Aabb {
-    glm::vec3 lo{1e30f};
-    glm::vec3 hi{-1e30f};
-
-    bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
-    void extend(const glm::vec3& p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    void extend(const Aabb& b) {
-        lo = glm::min(lo, b.lo);
-        hi = glm::max(hi, b.hi);
-    }
-    glm::vec3 centroid() const { return 0.5f * (lo + hi); }
-    // Surface area, the SAH's probability measure (MacDonald & Booth 1990). 0 for an empty box.
-    float area() const {
-        if (empty()) return 0.0f;
-        const glm::vec3 e = hi - lo;
-        return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
-    }
-};
 
 // Per-ray constants of the slab test. A zero (or denormal) direction component becomes a huge finite
 // reciprocal, so a ray parallel to a slab never multiplies 0 by infinity (which would give NaN).
