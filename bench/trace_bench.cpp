@@ -151,7 +151,7 @@ struct EmbreeScene {
         size_t nv = 0, nt = 0;
         for (const Mesh& m : s.meshes)
             for (const MeshPart& p : m.parts) {
-                nv += p.positions.size();
+                nv += p.geometry->positions.size();
                 nt += p.triangleCount();
             }
         auto* v = static_cast<float*>(
@@ -160,7 +160,8 @@ struct EmbreeScene {
             rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
         size_t vb = 0, ti = 0;
         for (const Mesh& m : s.meshes)
-            for (const MeshPart& p : m.parts) {
+            for (const MeshPart& part : m.parts) {
+                const MeshGeometry& p = *part.geometry;
                 for (size_t k = 0; k < p.positions.size(); ++k) {
                     v[3 * (vb + k) + 0] = p.positions[k].x;
                     v[3 * (vb + k) + 1] = p.positions[k].y;

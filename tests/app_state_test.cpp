@@ -289,7 +289,7 @@ TEST(AppState, ProbeOnSphereEqualsSharedShading) {
     const uint32_t green = idOf(s, "matte green");
     const Sphere& sphere = s.scene.spheres[green - 1];
     const glm::ivec2 px = pixelOf(s.scene, w, h, sphere.center + glm::vec3(0.3f, 0.3f, 0.0f));
-    const ProbeResult p = probePixel(s.scene, w, h, px.x, px.y);
+    const ProbeResult p = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
     ASSERT_TRUE(p.hit);
     EXPECT_EQ(p.objectId, green);
     EXPECT_EQ(p.kind, ObjectKind::Sphere);
@@ -317,7 +317,7 @@ TEST(AppState, ProbeOnSphereEqualsSharedShading) {
     }
     EXPECT_NEAR(glm::length(p.totalPhong - sum), 0.0f, 1e-5f);
     // Negative control: a pixel 40 to the left sees a different normal.
-    const ProbeResult q = probePixel(s.scene, w, h, px.x - 40, px.y);
+    const ProbeResult q = probePixel(trace::TraceScene(s.scene), w, h, px.x - 40, px.y);
     EXPECT_GT(std::fabs(q.lights[0].NoL - p.lights[0].NoL), 1e-3f);
     // The report carries the numbers.
     const nlohmann::json j = nlohmann::json::parse(probeReportJson(p, s.scene, green));
@@ -327,20 +327,19 @@ TEST(AppState, ProbeOnSphereEqualsSharedShading) {
 
 TEST(AppState, ProbeFindsPlanesMeshesAndBackground) {
     ViewerState s = defaultState();
-    const ProbeResult floor = probePixel(s.scene, 640, 360, 320, 350);
+    const ProbeResult floor = probePixel(trace::TraceScene(s.scene), 640, 360, 320, 350);
     EXPECT_TRUE(floor.hit);
     EXPECT_EQ(floor.kind, ObjectKind::Plane);
-    const ProbeResult sky = probePixel(s.scene, 640, 360, 320, 2);
+    const ProbeResult sky = probePixel(trace::TraceScene(s.scene), 640, 360, 320, 2);
     EXPECT_FALSE(sky.hit);
     const std::string path = test::sourcePath("assets/scenes/torus.json");
     ViewerState t = makeViewerState(loadScene(path), path);
     const Mesh& torus = t.scene.meshes[0];
-    Bounds b;
-    for (const glm::vec3& q : torus.parts[0].positions) b.extend(q);
+    const Bounds b = torus.parts[0].geometry->bounds;
     // The near side of the tube, above the torus' centre.
     const glm::vec3 c = 0.5f * (b.lo + b.hi);
     const glm::ivec2 px = pixelOf(t.scene, 640, 360, glm::vec3(c.x, b.hi.y, c.z));
-    const ProbeResult m = probePixel(t.scene, 640, 360, px.x, px.y + 2);
+    const ProbeResult m = probePixel(trace::TraceScene(t.scene), 640, 360, px.x, px.y + 2);
     ASSERT_TRUE(m.hit);
     EXPECT_EQ(m.kind, ObjectKind::Mesh);
     EXPECT_GT(glm::dot(m.N, m.V), 0.0f);  // faces the viewer
@@ -360,16 +359,16 @@ TEST(AppState, ProbeReportsShadowRayVisibility) {
     scene.lights.push_back(above);
     const int w = 320, h = 180;
     const glm::ivec2 under = pixelOf(scene, w, h, glm::vec3(0.0f, 0.0f, 0.0f));
-    const ProbeResult shadowed = probePixel(scene, w, h, under.x, under.y);
+    const ProbeResult shadowed = probePixel(trace::TraceScene(scene), w, h, under.x, under.y);
     ASSERT_TRUE(shadowed.hit);
     ASSERT_EQ(shadowed.kind, ObjectKind::Plane);
     EXPECT_EQ(shadowed.lights[0].visibility, 0.0f);
     EXPECT_EQ(shadowed.lights[0].diffuse, glm::vec3(0.0f));
     EXPECT_NEAR(glm::length(shadowed.totalPhong - shadowed.ambient), 0.0f, 1e-7f);
     const glm::ivec2 aside = pixelOf(scene, w, h, glm::vec3(2.0f, 0.0f, 0.0f));
-    EXPECT_EQ(probePixel(scene, w, h, aside.x, aside.y).lights[0].visibility, 1.0f);
+    EXPECT_EQ(probePixel(trace::TraceScene(scene), w, h, aside.x, aside.y).lights[0].visibility, 1.0f);
     scene.terms.shadows = false;
-    const ProbeResult lit = probePixel(scene, w, h, under.x, under.y);
+    const ProbeResult lit = probePixel(trace::TraceScene(scene), w, h, under.x, under.y);
     EXPECT_EQ(lit.lights[0].visibility, 1.0f);
     EXPECT_GT(lit.totalPhong.r, shadowed.totalPhong.r + 0.1f);
     const nlohmann::json j = nlohmann::json::parse(probeReportJson(shadowed, scene, shadowed.objectId));

@@ -1,10 +1,11 @@
 // The lighting probe (teaching): for one pixel, what the primary ray hits and every quantity of the
 // lighting model there (N, V, and per light L, R, H, the dot products and each term), for Phong and
-// Blinn-Phong side by side. Pure C++ on the shared shading code; no GL.
+// Blinn-Phong side by side. Pure C++ over the tracer's scene and the shared shading code; no GL.
 #pragma once
 
 #include "app/viewer_state.h"
 #include "scene/scene.h"
+#include "trace/trace_scene.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -42,14 +43,13 @@ struct ProbeResult {
     glm::vec3 totalBlinn{0.0f};           // the same, Blinn-Phong
 };
 
-// Casts the pixel-centre ray of pixel (x, y) of a width x height image exactly as both renderers do
-// (makeViewSetup + shading::cameraRayDirection) and evaluates local illumination at the nearest hit
-// with shading::shadeLight / shadeLocal. Spheres and planes use shading::intersectSphere/intersectPlane,
-// as the rasterizer's impostors do; mesh triangles are tested by brute force (Möller–Trumbore), with the
-// interpolated vertex normal flipped by winding as gl_FrontFacing does. With the shadows term on, each
-// light's vis_l comes from the tracer's shadow ray (from P + ε·N, blocked by any hit short of the light):
-// the exact answer that the rasterizer's shadow maps approximate.
-ProbeResult probePixel(const Scene& scene, int width, int height, int x, int y);
+// Asks the tracer about pixel (x, y) of a width x height image: its primary ray through the pixel centre
+// (trace::sampleRay), its nearest hit (TraceScene::intersect, the reference's BVH), its surface
+// (WhittedIntegrator::surfaceAt: normal flipped to the viewer, checker applied) and, with the shadows
+// term on, each light's vis_l from its shadow ray (WhittedIntegrator::visibility, the same origin
+// offset): the exact answer the rasterizer's shadow maps approximate. Then evaluates every local term
+// with shading::shadeLight / shadeLocal, for Phong and Blinn-Phong side by side.
+ProbeResult probePixel(const trace::TraceScene& scene, int width, int height, int x, int y);
 
 // The JSON written by the script's "probeReport" action and --probe-report (docs/viewer.md).
 std::string probeReportJson(const ProbeResult& probe, const Scene& scene, uint32_t coverageId);

@@ -1,4 +1,4 @@
-// ReferenceRenderer: the controller thread (owns ProgressiveTrace and the mesh BVH) and the UI-side tile
+// ReferenceRenderer: the controller thread (owns ProgressiveTrace; the mesh BVH comes from the cache) and the UI-side tile
 // collection into a CPU image and two textures.
 #include "app/reference_renderer.h"
 
@@ -34,8 +34,7 @@ void ReferenceRenderer::controllerLoop() {
     const sched_param idle{};
     if (sched_setscheduler(0, SCHED_IDLE, &idle) != 0) setpriority(PRIO_PROCESS, 0, 19);
     trace::ProgressiveTrace trace;
-    std::shared_ptr<const trace::MeshBvh> meshes;
-    uint64_t meshGeometry = 0, running = 0;
+    uint64_t running = 0;
     for (;;) {
         std::optional<Job> job;
         {
@@ -57,14 +56,7 @@ void ReferenceRenderer::controllerLoop() {
             trace.cancel();
             running = 0;
             try {
-                std::shared_ptr<const trace::TraceScene> scene;
-                if (meshes && meshGeometry == job->geometryRevision) {
-                    scene = std::make_shared<trace::TraceScene>(job->scene, meshes);
-                } else {
-                    scene = std::make_shared<trace::TraceScene>(job->scene);
-                    meshes = scene->meshBvh();
-                    meshGeometry = job->geometryRevision;
-                }
+                auto scene = std::make_shared<trace::TraceScene>(job->scene, meshes_.get(job->scene));
                 trace::TraceSettings settings;
                 settings.width = job->width;
                 settings.height = job->height;
@@ -113,8 +105,7 @@ void ReferenceRenderer::resize(int width, int height) {
     tilesDirty_ = true;
 }
 
-void ReferenceRenderer::request(const Scene& scene, int width, int height, uint64_t revision,
-                                uint64_t geometryRevision, int maxDepth) {
+void ReferenceRenderer::request(const Scene& scene, int width, int height, uint64_t revision, int maxDepth) {
     if (width <= 0 || height <= 0) return;
     if (job_ != 0 && revision == revision_ && width == width_ && height == height_ && maxDepth == maxDepth_) return;
     if (width != width_ || height != height_ || !color_) resize(width, height);
@@ -128,7 +119,7 @@ void ReferenceRenderer::request(const Scene& scene, int width, int height, uint6
     started_ = std::chrono::steady_clock::now();
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        pending_ = Job{job_, scene, width, height, geometryRevision, maxDepth};
+        pending_ = Job{job_, scene, width, height, maxDepth};
         error_.clear();
     }
     wake_.notify_all();

@@ -6,6 +6,7 @@
 #include "gl/objects.h"
 #include "image/image.h"
 #include "scene/scene.h"
+#include "trace/mesh_bvh_cache.h"
 #include "trace/tile_renderer.h"
 
 #include <chrono>
@@ -29,9 +30,11 @@ public:
     ReferenceRenderer& operator=(const ReferenceRenderer&) = delete;
 
     // UI thread. Restarts the trace when (revision, size, depth) differ from the last request; cheap
-    // otherwise. maxDepth -1 keeps the scene's secondary-ray depth.
-    void request(const Scene& scene, int width, int height, uint64_t revision, uint64_t geometryRevision,
-                 int maxDepth = -1);
+    // otherwise (the scene copy is O(objects)). maxDepth -1 keeps the scene's secondary-ray depth.
+    void request(const Scene& scene, int width, int height, uint64_t revision, int maxDepth = -1);
+    // The mesh BVH of `scene`'s geometry, shared with the trace workers (built once per geometry). The
+    // probe traces through it, so it asks the very scene the reference renders.
+    std::shared_ptr<const trace::MeshBvh> meshBvh(const Scene& scene) { return meshes_.get(scene); }
     // Cancels any trace in progress (e.g. back in Raster mode); the next request starts afresh.
     void pause();
     // UI thread, GL context current: moves finished tiles into the image and the textures. True when
@@ -57,7 +60,6 @@ private:
         uint64_t id;
         Scene scene;
         int width, height;
-        uint64_t geometryRevision;
         int maxDepth;
     };
     void controllerLoop();
@@ -71,6 +73,7 @@ private:
     bool quit_ = false;
     std::vector<std::pair<uint64_t, trace::TileResult>> arrived_;  // (job id, tile), not yet collected
     std::string error_;
+    trace::MeshBvhCache meshes_;
     std::thread controller_;
     int threads_ = 1;
 

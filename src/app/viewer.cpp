@@ -187,7 +187,7 @@ void Viewer::updateReference() {
     // Split and Difference compare with the rasterizer, which reflects once: the reference traces one bounce
     // there too (issue 5); Traced shows it at the scene's own depth.
     const bool comparing = state_.mode == ViewMode::Split || state_.mode == ViewMode::Difference;
-    reference_->request(state_.scene, renderW_, renderH_, state_.referenceRevision, state_.geometryRevision,
+    reference_->request(state_.scene, renderW_, renderH_, state_.referenceRevision,
                         comparing ? std::min(state_.scene.maxDepth, 1) : -1);
     reference_->update();
 }
@@ -201,7 +201,8 @@ void Viewer::updateProbe() {
     if (probe_ && probeRevision_ == state_.revision && probeX_ == p.x && probeY_ == p.y && probeW_ == renderW_ &&
         probeH_ == renderH_)
         return;
-    probe_ = probePixel(state_.scene, renderW_, renderH_, p.x, p.y);
+    probe_ = probePixel(trace::TraceScene(state_.scene, reference_->meshBvh(state_.scene)), renderW_, renderH_, p.x,
+                        p.y);
     probeRevision_ = state_.revision;
     probeX_ = p.x, probeY_ = p.y, probeW_ = renderW_, probeH_ = renderH_;
 }

@@ -164,8 +164,8 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
     size_t vertexCount = 0, indexCount = 0;
     for (const Mesh& m : scene.meshes)
         for (const MeshPart& p : m.parts) {
-            vertexCount += p.positions.size();
-            indexCount += p.indices.size();
+            vertexCount += p.geometry->positions.size();
+            indexCount += p.geometry->indices.size();
         }
     if (!meshVao_) {
         meshVao_ = gl::VertexArray::create();
@@ -187,23 +187,18 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
     for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
         const Mesh& m = scene.meshes[mi];
         for (size_t pi = 0; pi < m.parts.size(); ++pi) {
-            const MeshPart& p = m.parts[pi];
-            size_t bytes = p.positions.size() * sizeof(glm::vec3);
-            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(vBase * sizeof(glm::vec3)), GLsizeiptr(bytes), p.positions.data());
+            const MeshGeometry& g = *m.parts[pi].geometry;
+            size_t bytes = g.positions.size() * sizeof(glm::vec3);
+            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(vBase * sizeof(glm::vec3)), GLsizeiptr(bytes), g.positions.data());
             glBufferSubData(GL_ARRAY_BUFFER, GLintptr((vertexCount + vBase) * sizeof(glm::vec3)), GLsizeiptr(bytes),
-                            p.normals.data());
-            rebased.resize(p.indices.size());
-            for (size_t k = 0; k < p.indices.size(); ++k) rebased[k] = p.indices[k] + uint32_t(vBase);
+                            g.normals.data());
+            rebased.resize(g.indices.size());
+            for (size_t k = 0; k < g.indices.size(); ++k) rebased[k] = g.indices[k] + uint32_t(vBase);
             glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(iBase * sizeof(uint32_t)),
                             GLsizeiptr(rebased.size() * sizeof(uint32_t)), rebased.data());
-            glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-            for (const glm::vec3& q : p.positions) {
-                lo = glm::min(lo, q);
-                hi = glm::max(hi, q);
-            }
-            ranges_.push_back({mi, pi, iBase, p.indices.size(), lo, hi});
-            vBase += p.positions.size();
-            iBase += p.indices.size();
+            ranges_.push_back({mi, pi, iBase, g.indices.size(), g.bounds.lo, g.bounds.hi});
+            vBase += g.positions.size();
+            iBase += g.indices.size();
         }
     }
     glEnableVertexAttribArray(0);

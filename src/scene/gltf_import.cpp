@@ -108,11 +108,11 @@ size_t triangulate(int mode, const std::vector<uint32_t>& v, std::vector<uint32_
 
 // Area-weighted vertex normals: each triangle adds its unnormalised cross product (twice its area) to its
 // three vertices. Unshared vertices (non-indexed data) therefore get flat face normals.
-void generateNormals(const MeshPart& part, std::vector<glm::vec3>& out) {
-    out.assign(part.positions.size(), glm::vec3(0.0f));
-    const auto& p = part.positions;
-    for (size_t t = 0; t + 2 < part.indices.size(); t += 3) {
-        const uint32_t a = part.indices[t], b = part.indices[t + 1], c = part.indices[t + 2];
+void generateNormals(const MeshGeometry& g, std::vector<glm::vec3>& out) {
+    out.assign(g.positions.size(), glm::vec3(0.0f));
+    const auto& p = g.positions;
+    for (size_t t = 0; t + 2 < g.indices.size(); t += 3) {
+        const uint32_t a = g.indices[t], b = g.indices[t + 1], c = g.indices[t + 2];
         const glm::vec3 n = glm::cross(p[b] - p[a], p[c] - p[a]);
         out[a] += n;
         out[b] += n;
@@ -254,13 +254,13 @@ private:
             return;
         }
 
-        MeshPart part;
+        MeshGeometry geo;
         const size_t vertexCount =
             gltf::accessorCount(model_, position->second, file_, where + ".attributes.POSITION");
         const size_t indexCount =
             prim.indices >= 0 ? gltf::accessorCount(model_, prim.indices, file_, where + ".indices") : vertexCount;
         chargeBudget(where, vertexCount, indexCount);
-        gltf::readVec3(model_, position->second, file_, part.positions);
+        gltf::readVec3(model_, position->second, file_, geo.positions);
 
         // Indices (or 0..n-1), each checked against the vertex count, then triangulated.
         if (prim.indices >= 0) {
@@ -275,16 +275,16 @@ private:
             indices_.resize(vertexCount);
             for (size_t k = 0; k < vertexCount; ++k) indices_[k] = uint32_t(k);
         }
-        const size_t leftover = triangulate(mode, indices_, part.indices);
+        const size_t leftover = triangulate(mode, indices_, geo.indices);
         if (leftover > 0 && mode == TINYGLTF_MODE_TRIANGLES)
             warnOnce(where + ": " + std::to_string(leftover) + " trailing indices form no triangle; dropped");
-        if (part.indices.empty()) {
+        if (geo.indices.empty()) {
             warnOnce(where + ": no complete triangle; skipped");
             return;
         }
 
         // Positions: non-finite input is an error (docs/gltf-import.md), as is overflow to infinity.
-        for (glm::vec3& p : part.positions) {
+        for (glm::vec3& p : geo.positions) {
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw InputError(file_, indexed("accessors", size_t(position->second)), "non-finite value");
             p = glm::vec3(toWorld * glm::vec4(p, 1.0f));
@@ -293,7 +293,7 @@ private:
         }
         // A mirroring transform turns counter-clockwise triangles clockwise; swap two corners to undo it.
         if (mirrored)
-            for (size_t t = 0; t + 2 < part.indices.size(); t += 3) std::swap(part.indices[t + 1], part.indices[t + 2]);
+            for (size_t t = 0; t + 2 < geo.indices.size(); t += 3) std::swap(geo.indices[t + 1], geo.indices[t + 2]);
 
         // Normals: given ones go through the normal matrix; missing, zero or non-finite ones are generated.
         size_t bad = vertexCount;
@@ -304,9 +304,9 @@ private:
                 throw InputError(file_, indexed("accessors", size_t(normal->second)),
                                  "NORMAL count " + std::to_string(count) + " differs from POSITION count " +
                                      std::to_string(vertexCount));
-            gltf::readVec3(model_, normal->second, file_, part.normals);
+            gltf::readVec3(model_, normal->second, file_, geo.normals);
             bad = 0;
-            for (glm::vec3& n : part.normals) {
+            for (glm::vec3& n : geo.normals) {
                 n = toWorldNormal * n;
                 const float len2 = glm::dot(n, n);
                 if (len2 > 1e-30f && std::isfinite(len2)) {
@@ -318,13 +318,13 @@ private:
             }
         }
         if (bad > 0) {
-            generateNormals(part, generated_);
-            if (part.normals.empty()) {
-                part.normals = generated_;
+            generateNormals(geo, generated_);
+            if (geo.normals.empty()) {
+                geo.normals = generated_;
             } else {
                 warnOnce(where + ": " + std::to_string(bad) + " zero or non-finite normals replaced by generated ones");
                 for (size_t i = 0; i < vertexCount; ++i)
-                    if (part.normals[i] == glm::vec3(0.0f)) part.normals[i] = generated_[i];
+                    if (geo.normals[i] == glm::vec3(0.0f)) geo.normals[i] = generated_[i];
             }
         }
 
@@ -332,6 +332,8 @@ private:
             throw InputError(file_, where + ".material",
                              "material " + std::to_string(prim.material) + " out of range (" +
                                  std::to_string(materials_.size()) + " materials)");
+        MeshPart part;
+        part.geometry = shareGeometry(std::move(geo));
         part.material = prim.material >= 0 ? materials_[size_t(prim.material)] : defaultMaterial_;
         out_.parts.push_back(std::move(part));
     }

@@ -18,7 +18,7 @@ TEST(GltfImport, BoxTexturedVariantsHaveTwelveTriangles) {
         const GltfImport g = importGltf(model(path));
         EXPECT_EQ(triangleCount(g), 12u);
         ASSERT_EQ(g.parts.size(), 1u);
-        EXPECT_EQ(g.parts[0].positions.size(), 24u);  // accessor count of POSITION
+        EXPECT_EQ(g.parts[0].geometry->positions.size(), 24u);  // accessor count of POSITION
         expectWellFormed(g);
     }
 }
@@ -56,7 +56,7 @@ TEST(GltfImport, AssetGeneratorPrimitiveModes) {
         expectWellFormed(g);
         // The README's figure: a unit square in z = 0 facing +z; no normals given, so they are generated.
         for (const MeshPart& p : g.parts) {
-            for (const glm::vec3& n : p.normals) expectNear(n, {0, 0, 1});
+            for (const glm::vec3& n : p.geometry->normals) expectNear(n, {0, 0, 1});
             for (size_t t = 0; t < p.triangleCount(); ++t) expectNear(faceNormal(p, t), {0, 0, 1});
         }
     }
@@ -99,7 +99,7 @@ TEST(GltfImport, GeneratedNormalsOfAFlatQuadAreTheFaceNormal) {
     const GltfImport g = importGltf(writeGltf("quad.gltf", quad(), "[{\"mesh\":0}]"));
     ASSERT_EQ(g.parts.size(), 1u);
     EXPECT_EQ(g.parts[0].triangleCount(), 2u);
-    for (const glm::vec3& n : g.parts[0].normals) expectNear(n, {0, 0, 1});
+    for (const glm::vec3& n : g.parts[0].geometry->normals) expectNear(n, {0, 0, 1});
 }
 
 // Area weighting: a vertex shared by a big triangle facing +z and a small one facing +x leans to +z.
@@ -110,8 +110,8 @@ TEST(GltfImport, GeneratedNormalsAreAreaWeighted) {
     const GltfImport g = importGltf(writeGltf("weighted.gltf", m, "[{\"mesh\":0}]"));
     ASSERT_EQ(g.parts.size(), 1u);
     const glm::vec3 expected = glm::normalize(glm::vec3(2 * 2, 0, 2 * 8));
-    expectNear(g.parts[0].normals[0], expected);
-    expectNear(g.parts[0].normals[2], {0, 0, 1});
+    expectNear(g.parts[0].geometry->normals[0], expected);
+    expectNear(g.parts[0].geometry->normals[2], {0, 0, 1});
 }
 
 TEST(GltfImport, GivenNormalsUseTheInverseTranspose) {
@@ -122,9 +122,9 @@ TEST(GltfImport, GivenNormalsUseTheInverseTranspose) {
     m.indices = {0, 1, 2};
     const GltfImport g = importGltf(writeGltf("slope.gltf", m, "[{\"mesh\":0,\"scale\":[2,1,1]}]"));
     ASSERT_EQ(g.parts.size(), 1u);
-    for (const glm::vec3& n : g.parts[0].normals) expectNear(n, glm::normalize(glm::vec3(-1, 2, 0)));
+    for (const glm::vec3& n : g.parts[0].geometry->normals) expectNear(n, glm::normalize(glm::vec3(-1, 2, 0)));
     // It is perpendicular to the transformed surface.
-    const MeshPart& p = g.parts[0];
+    const MeshGeometry& p = *g.parts[0].geometry;
     EXPECT_NEAR(glm::dot(p.normals[0], p.positions[1] - p.positions[0]), 0.0f, 1e-5f);
 }
 
@@ -138,7 +138,7 @@ TEST(GltfImport, TranslationRotationScaleAndParents) {
                               "],\"scale\":[2,2,2]}]";
     const GltfImport g = importGltf(writeGltf("trs.gltf", quad(), nodes));
     ASSERT_EQ(g.parts.size(), 1u);
-    const MeshPart& p = g.parts[0];
+    const MeshGeometry& p = *g.parts[0].geometry;
     // Ry(90) sends +x to -z and +z to +x; (1,0,0) → scale (2,0,0) → rotate (0,0,-2) → translate (1,2,1).
     expectNear(p.positions[0], {1, 2, 3});
     expectNear(p.positions[1], {1, 2, 1});
@@ -152,14 +152,14 @@ TEST(GltfImport, MatrixNodeAndImportTransform) {
     const std::string path = writeGltf("matrix.gltf", quad(), nodes);
     const GltfImport g = importGltf(path);
     ASSERT_EQ(g.parts.size(), 1u);
-    expectNear(g.parts[0].positions[1], {5, 1, 0});
-    expectNear(g.parts[0].positions[2], {4, 1, 0});
+    expectNear(g.parts[0].geometry->positions[1], {5, 1, 0});
+    expectNear(g.parts[0].geometry->positions[2], {4, 1, 0});
 
     // The import transform applies on top: move everything up by 10.
     glm::mat4 up(1.0f);
     up[3] = glm::vec4(0, 10, 0, 1);
     const GltfImport lifted = importGltf(path, up);
-    expectNear(lifted.parts[0].positions[2], {4, 11, 0});
+    expectNear(lifted.parts[0].geometry->positions[2], {4, 11, 0});
 }
 
 TEST(GltfImport, NegativeScaleFlipsWinding) {
@@ -169,7 +169,7 @@ TEST(GltfImport, NegativeScaleFlipsWinding) {
         m.normals.assign(withNormals ? 4 : 0, glm::vec3(0, 0, 1));
         const GltfImport g = importGltf(writeGltf("mirror.gltf", m, "[{\"mesh\":0,\"scale\":[-1,1,1]}]"));
         ASSERT_EQ(g.parts.size(), 1u);
-        const MeshPart& p = g.parts[0];
+        const MeshGeometry& p = *g.parts[0].geometry;
         expectNear(p.positions[1], {-1, 0, 0});
         // Mirroring in x keeps the normal +z; the winding is swapped so the front face still agrees with it.
         for (size_t t = 0; t < p.triangleCount(); ++t) expectNear(faceNormal(p, t), {0, 0, 1});

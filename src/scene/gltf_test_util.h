@@ -56,7 +56,8 @@ inline void expectNear(const glm::vec3& a, const glm::vec3& b, float tol = 1e-5f
 
 // Every part is well formed: one unit, finite normal per position, indices in range, whole triangles.
 inline void expectWellFormed(const GltfImport& g) {
-    for (const MeshPart& p : g.parts) {
+    for (const MeshPart& part : g.parts) {
+        const MeshGeometry& p = *part.geometry;
         ASSERT_EQ(p.normals.size(), p.positions.size());
         ASSERT_EQ(p.indices.size() % 3, 0u);
         for (uint32_t i : p.indices) ASSERT_LT(i, p.positions.size());
@@ -154,12 +155,13 @@ inline std::string writeGltf(const std::string& name, const TinyMesh& mesh, cons
 }
 
 // A triangle's geometric normal from its winding (counter-clockwise = front).
-inline glm::vec3 faceNormal(const MeshPart& p, size_t t) {
+inline glm::vec3 faceNormal(const MeshGeometry& p, size_t t) {
     const glm::vec3& a = p.positions[p.indices[3 * t]];
     const glm::vec3& b = p.positions[p.indices[3 * t + 1]];
     const glm::vec3& c = p.positions[p.indices[3 * t + 2]];
     return glm::normalize(glm::cross(b - a, c - a));
 }
+inline glm::vec3 faceNormal(const MeshPart& p, size_t t) { return faceNormal(*p.geometry, t); }
 
 // ---- Real files: triangle counts ----------------------------------------------------------------------------
 

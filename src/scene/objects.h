@@ -2,10 +2,12 @@
 #pragma once
 
 #include "scene/material.h"
+#include "scene/mesh_geometry.h"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,14 +36,13 @@ struct Plane {
     std::optional<Checker> checker;
 };
 
-// Triangles with one material, in world space (the mesh transform already applied).
+// Triangles with one material, in world space (the mesh transform already applied). The geometry is shared
+// with every copy of the scene; the material is the part's own.
 struct MeshPart {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;      // one per position, unit length
-    std::vector<uint32_t> indices;       // three per triangle
+    std::shared_ptr<const MeshGeometry> geometry;   // never null once imported
     Material material;
 
-    size_t triangleCount() const { return indices.size() / 3; }
+    size_t triangleCount() const { return geometry ? geometry->triangleCount() : 0; }
 };
 
 // A glTF file placed in the scene. `source`, `transform` and `material` are what the scene file stores;

@@ -74,7 +74,7 @@ Bounds sceneBounds(const Scene& scene) {
     }
     for (const Mesh& mesh : scene.meshes)
         for (const MeshPart& part : mesh.parts)
-            for (const glm::vec3& p : part.positions) b.extend(p);
+            if (part.geometry) b.extend(part.geometry->bounds);
     return b;
 }
 

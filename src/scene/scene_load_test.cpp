@@ -95,7 +95,7 @@ TEST(SceneLoad, ImportSceneMeshesAppliesTransformAndOverride) {
     s.meshes.push_back(m);
     importSceneMeshes(s, SHADELAB_TEST_OUTPUT_DIR);
     ASSERT_EQ(s.meshes[0].parts.size(), 1u);
-    expectNear(s.meshes[0].parts[0].positions[2], {1, 1, 7});
+    expectNear(s.meshes[0].parts[0].geometry->positions[2], {1, 1, 7});
     expectNear(s.meshes[0].parts[0].material.md, {0.1f, 0.2f, 0.3f});
     expectNear(s.meshes[0].parts[0].material.ms, Material{}.ms);  // not overridden: the default material's
 

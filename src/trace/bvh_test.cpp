@@ -40,8 +40,9 @@ std::vector<SceneTri> sceneTriangles(const Scene& scene) {
     std::vector<SceneTri> out;
     uint32_t source = 0;
     for (const Mesh& m : scene.meshes)
-        for (const MeshPart& p : m.parts)
-            for (size_t t = 0; t < p.triangleCount(); ++t, ++source) {
+        for (const MeshPart& part : m.parts)
+            for (size_t t = 0, n = part.triangleCount(); t < n; ++t, ++source) {
+                const MeshGeometry& p = *part.geometry;
                 const glm::vec3 a = p.positions[p.indices[3 * t]], b = p.positions[p.indices[3 * t + 1]],
                                 c = p.positions[p.indices[3 * t + 2]];
                 if (finite(a) && finite(b) && finite(c) && !isDegenerateTriangle(a, b, c))
@@ -344,7 +345,7 @@ TEST(BvhBuild, OptionsAndSahCostOnRandomBoxes) {
 Scene degenerateScene() {
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> u(-2.0f, 2.0f);
-    MeshPart p;
+    MeshGeometry p;
     auto add = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
         for (const glm::vec3& v : {a, b, c}) {
             p.indices.push_back(uint32_t(p.positions.size()));
@@ -362,7 +363,7 @@ Scene degenerateScene() {
     }
     Scene sc;
     sc.meshes.push_back(Mesh{});
-    sc.meshes[0].parts.push_back(p);
+    sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(p)), Material{}});
     return sc;
 }
 

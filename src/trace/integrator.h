@@ -41,9 +41,11 @@ public:
     // weighted by its shadow-ray visibility when the shadows term is on.
     glm::vec3 local(const Ray& ray, const Surface& s) const;
 
+    // vis_l: 1 when the shadow ray from s.P + ε·s.Nf toward the light reaches it, else 0.
+    float visibility(const Surface& s, const Light& light) const;
+
 private:
     glm::vec3 shade(const Ray& ray, const Hit& hit, int depth) const;
-    float visibility(const Surface& s, const Light& light) const;
 
     const TraceScene& scene_;
     int maxDepth_;

@@ -122,8 +122,7 @@ enum class SlabKind { None, Planes, Mesh };
 
 // The box [lo, hi] with one normal per face (4 own vertices each), counter-clockwise seen from outside.
 MeshPart flatBox(glm::vec3 lo, glm::vec3 hi, const Material& m) {
-    MeshPart p;
-    p.material = m;
+    MeshGeometry p;
     for (int axis = 0; axis < 3; ++axis)
         for (const bool high : {false, true}) {
             const int u = (axis + 1) % 3, v = (axis + 2) % 3;   // e_u × e_v = e_axis
@@ -140,7 +139,7 @@ MeshPart flatBox(glm::vec3 lo, glm::vec3 hi, const Material& m) {
             if (high) p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
             else p.indices.insert(p.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
         }
-    return p;
+    return MeshPart{shareGeometry(std::move(p)), m};
 }
 
 Scene slabScene(const Slab& s, SlabKind kind) {

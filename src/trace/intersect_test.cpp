@@ -185,7 +185,8 @@ struct Tri {
 };
 using HitFn = std::function<bool(const Ray&, const std::vector<Tri>&)>;
 
-std::vector<Tri> trianglesOf(const MeshPart& p) {
+std::vector<Tri> trianglesOf(const MeshPart& part) {
+    const MeshGeometry& p = *part.geometry;
     std::vector<Tri> t;
     for (size_t i = 0; i < p.indices.size(); i += 3)
         t.push_back({p.positions[p.indices[i]], p.positions[p.indices[i + 1]], p.positions[p.indices[i + 2]]});
@@ -215,7 +216,8 @@ bool strictMollerTrumboreAny(const Ray& r, const std::vector<Tri>& tris) {
 // Rays aimed at every vertex and at 7 points along every edge of a closed mesh around `centre`: from
 // inside (centre and nearby points, each direction also nudged by one float step) and from outside
 // through the target toward the centre. Each one must hit.
-std::vector<Ray> edgeVertexRays(const MeshPart& p, glm::vec3 centre, float inner) {
+std::vector<Ray> edgeVertexRays(const MeshPart& part, glm::vec3 centre, float inner) {
+    const MeshGeometry& p = *part.geometry;
     std::set<std::pair<uint32_t, uint32_t>> edges;
     for (size_t i = 0; i < p.indices.size(); i += 3)
         for (int k = 0; k < 3; ++k) {
@@ -306,9 +308,10 @@ TEST(Watertight, FansAroundAVertexNeverFallThrough) {
         const MeshPart fan = test::fanPart({0, 0, apexZ}, 1.0f, 0.0f, 12);
         const std::vector<Tri> tris = trianglesOf(fan);
         std::vector<glm::vec3> targets = {{0, 0, apexZ}};
-        for (size_t k = 1; k < fan.positions.size(); ++k)
+        const std::vector<glm::vec3>& ring = fan.geometry->positions;
+        for (size_t k = 1; k < ring.size(); ++k)
             for (int s = 1; s < 64; ++s)
-                targets.push_back(glm::vec3(0, 0, apexZ) + (float(s) / 64.0f) * (fan.positions[k] - glm::vec3(0, 0, apexZ)));
+                targets.push_back(glm::vec3(0, 0, apexZ) + (float(s) / 64.0f) * (ring[k] - glm::vec3(0, 0, apexZ)));
         std::vector<Ray> rays;
         for (int i = -62; i <= 62; ++i)
             for (int j = -62; j <= 62; ++j)
@@ -387,7 +390,7 @@ TEST(MeshBvhRobustness, ExactlyCollinearTrianglesAreNeverHit) {
     // with it, where watertight.h's U, V, W are rounding noise. 2CylinderEngine.glb has 11,160 such triangles.
     std::mt19937 rng(41);
     std::uniform_real_distribution<float> u(-2.0f, 2.0f), u01(0.0f, 1.0f);
-    MeshPart p;
+    MeshGeometry p;
     while (p.indices.size() < 3 * 800) {
         const glm::vec3 a(u(rng), u(rng), u(rng)), d(u(rng), u(rng), u(rng)), b = a + 0.5f * d, c = a + d;
         const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a), e2 = glm::dvec3(c) - glm::dvec3(a);  // exact
@@ -400,7 +403,7 @@ TEST(MeshBvhRobustness, ExactlyCollinearTrianglesAreNeverHit) {
     }
     Scene sc;
     sc.meshes.push_back(Mesh{});
-    sc.meshes[0].parts = {p};
+    sc.meshes[0].parts = {MeshPart{shareGeometry(p), Material{}}};
     const MeshBvh bvh(sc);
     size_t hits = 0;
     float worst = 0.0f;     // distance of a reported hit point from the triangle's segment

@@ -32,9 +32,11 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     std::vector<float> tmpPos, tmpNrm;
     uint32_t source = 0, partIndex = 0;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
-        for (const MeshPart& p : scene.meshes[m].parts) {
+        for (const MeshPart& part : scene.meshes[m].parts) {
+            SHADELAB_CHECK(part.geometry != nullptr);
+            const MeshGeometry& p = *part.geometry;
             partMesh_.push_back(uint32_t(m));
-            partTriangles_.push_back(p.triangleCount());
+            geometry_.push_back(part.geometry);
             const bool hasNormals = p.normals.size() == p.positions.size();
             for (size_t t = 0; t < p.triangleCount(); ++t, ++source) {
                 uint32_t idx[3];
@@ -109,10 +111,10 @@ bool MeshBvh::matches(const Scene& scene) const {
     size_t k = 0;
     for (size_t m = 0; m < scene.meshes.size(); ++m)
         for (const MeshPart& p : scene.meshes[m].parts) {
-            if (k >= partMesh_.size() || partMesh_[k] != m || partTriangles_[k] != p.triangleCount()) return false;
+            if (k >= geometry_.size() || geometry_[k] != p.geometry || partMesh_[k] != m) return false;
             ++k;
         }
-    return k == partMesh_.size();
+    return k == geometry_.size();
 }
 
 std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {

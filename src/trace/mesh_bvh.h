@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -52,8 +53,8 @@ public:
     const std::vector<uint32_t>& partMesh() const { return partMesh_; }
     Bounds bounds() const { return bounds_; }
     const Bvh& bvh() const { return bvh_; }
-    // Whether `scene` has the same meshes, parts and triangle counts as the scene this was built from
-    // (a cheap sanity check; it cannot see moved vertices).
+    // Whether `scene`'s mesh parts hold, in order, the very geometry this was built from (by identity:
+    // MeshGeometry is immutable, so the same pointer means the same triangles). O(parts).
     bool matches(const Scene& scene) const;
 
 private:
@@ -63,7 +64,7 @@ private:
     std::vector<uint32_t> part_;        // per slot
     std::vector<uint32_t> source_;      // per slot
     std::vector<uint32_t> partMesh_;    // per flattened part
-    std::vector<size_t> partTriangles_; // triangle count per flattened part, for matches()
+    std::vector<std::shared_ptr<const MeshGeometry>> geometry_;  // per flattened part, for matches()
     Bounds bounds_;
 };
 

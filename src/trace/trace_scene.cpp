@@ -1,4 +1,4 @@
-// TraceScene: copying the shading data, building the accelerators, the scene-scaled epsilon, and the
+// TraceScene: building the accelerators, the scene-scaled epsilon, and the
 // nearest-hit and occlusion queries over spheres, planes and triangles.
 #include "trace/trace_scene.h"
 
@@ -11,45 +11,10 @@
 #include <cmath>
 
 namespace shadelab::trace {
-namespace {
-
-// The scene without its mesh vertex data: shading needs only each part's material.
-Scene shadingCopy(const Scene& s) {
-    Scene c;
-    c.title = s.title;
-    c.notes = s.notes;
-    c.camera = s.camera;
-    c.model = s.model;
-    c.terms = s.terms;
-    c.ambient = s.ambient;
-    c.background = s.background;
-    c.maxDepth = s.maxDepth;
-    c.lights = s.lights;
-    c.spheres = s.spheres;
-    c.planes = s.planes;
-    c.meshes.reserve(s.meshes.size());
-    for (const Mesh& m : s.meshes) {
-        Mesh mc;
-        mc.name = m.name;
-        mc.source = m.source;
-        mc.transform = m.transform;
-        mc.material = m.material;
-        for (const MeshPart& p : m.parts) {
-            MeshPart pc;
-            pc.material = p.material;
-            mc.parts.push_back(std::move(pc));
-        }
-        c.meshes.push_back(std::move(mc));
-    }
-    return c;
-}
-
-}  // namespace
-
 TraceScene::TraceScene(const Scene& scene) : TraceScene(scene, std::make_shared<const MeshBvh>(scene)) {}
 
 TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const MeshBvh> meshes)
-    : scene_(shadingCopy(scene)), meshes_(std::move(meshes)) {
+    : scene_(scene), meshes_(std::move(meshes)) {
     SHADELAB_CHECK(meshes_ != nullptr);
     SHADELAB_CHECK(meshes_->matches(scene));
     prepare(scene);

@@ -1,6 +1,6 @@
-// TraceScene: a Scene made ready to trace. It holds the mesh BVH (shared, geometry only), a BVH over the
-// spheres, the planes, the secondary-ray epsilon, and a copy of what shading reads (materials, lights,
-// camera, terms). Rebuild it when geometry changes; reuse the mesh BVH when only the rest does.
+// TraceScene: a Scene made ready to trace. It holds a copy of the scene (O(objects): mesh geometry is
+// shared), the mesh BVH (shared, geometry only), a BVH over the spheres, and the secondary-ray epsilon.
+// Rebuild it when anything changes; reuse the mesh BVH while the mesh geometry is the same.
 #pragma once
 
 #include "scene/scene.h"
@@ -30,12 +30,11 @@ class TraceScene {
 public:
     // Builds everything, the mesh BVH included.
     explicit TraceScene(const Scene& scene);
-    // Reuses `meshes`, which must have been built from a scene with this scene's mesh geometry (checked
-    // by triangle counts only): the cheap path when only materials, lights, camera, spheres or planes
-    // changed. Spheres and planes are always taken from `scene`.
+    // Reuses `meshes`, which must have been built over this scene's very mesh geometry (MeshBvh::matches,
+    // by identity): the cheap path when only materials, lights, camera, spheres or planes changed.
     TraceScene(const Scene& scene, std::shared_ptr<const MeshBvh> meshes);
 
-    // Everything shading reads. Mesh parts keep their material but no vertex data (that is in the BVH).
+    // The scene as given: everything shading reads.
     const Scene& scene() const { return scene_; }
     const std::shared_ptr<const MeshBvh>& meshBvh() const { return meshes_; }
 

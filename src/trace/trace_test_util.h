@@ -37,13 +37,15 @@ inline Ray rayTowards(glm::vec3 origin, glm::vec3 target) { return Ray{origin, g
 // the directions from `centre`, as a smooth closed surface would have.
 inline MeshPart makePart(std::vector<glm::vec3> positions, std::vector<uint32_t> indices, glm::vec3 centre,
                          const Material& m = Material{}) {
-    MeshPart p;
+    MeshGeometry g;
     for (const glm::vec3& v : positions) {
         const glm::vec3 d = v - centre;
-        p.normals.push_back(glm::length(d) > 0.0f ? glm::normalize(d) : glm::vec3(0.0f, 0.0f, 1.0f));
+        g.normals.push_back(glm::length(d) > 0.0f ? glm::normalize(d) : glm::vec3(0.0f, 0.0f, 1.0f));
     }
-    p.positions = std::move(positions);
-    p.indices = std::move(indices);
+    g.positions = std::move(positions);
+    g.indices = std::move(indices);
+    MeshPart p;
+    p.geometry = shareGeometry(std::move(g));
     p.material = m;
     return p;
 }

@@ -1,0 +1,28 @@
+// MeshGeometry: one mesh part's triangles in world space, immutable once shared. Scenes hold it through
+// std::shared_ptr<const MeshGeometry>, so copying a scene costs O(objects), never O(triangles), and an
+// accelerator built over it (the tracer's MeshBvh) is matched to its scene by identity.
+#pragma once
+
+#include "scene/bounds.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
+
+namespace shadelab {
+
+struct MeshGeometry {
+    std::vector<glm::vec3> positions;    // world units
+    std::vector<glm::vec3> normals;      // one per position, unit length; empty = flat shading
+    std::vector<uint32_t> indices;       // three per triangle, each < positions.size()
+    Bounds bounds;                       // of every position; set by shareGeometry
+
+    size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// Computes the bounds and hands the geometry out as shared, immutable data.
+std::shared_ptr<const MeshGeometry> shareGeometry(MeshGeometry geometry);
+
+}  // namespace shadelab
