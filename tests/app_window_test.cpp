@@ -14,6 +14,7 @@
 #include "shading/lighting.h"
 #include "test_output.h"
 #include "util/atomic_file.h"
+#include "util/read_file.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

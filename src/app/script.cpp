@@ -3,7 +3,7 @@
 
 #include "app/material_presets.h"
 #include "scene/json_reader.h"
-#include "util/atomic_file.h"
+#include "util/read_file.h"
 #include "util/input_error.h"
 
 #include <cstdio>
@@ -227,7 +227,7 @@ Script parseScript(const std::string& text, const std::string& file) {
     return script;
 }
 
-Script loadScript(const std::string& path) { return parseScript(readFile(path), path); }
+Script loadScript(const std::string& path) { return parseScript(readFile(path, kMaxScriptFileBytes), path); }
 
 bool isStateAction(ActionKind kind) { return kind < ActionKind::Screenshot; }
 

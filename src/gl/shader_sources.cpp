@@ -1,7 +1,7 @@
 // ShaderLibrary: embedded or on-disk shader text with #include expansion and #line bookkeeping.
 #include "gl/shader_sources.h"
 
-#include "util/atomic_file.h"
+#include "util/read_file.h"
 #include "util/input_error.h"
 
 #include <cstdlib>
@@ -15,7 +15,7 @@ ShaderLibrary::ShaderLibrary(std::string dir) : dir_(std::move(dir)) {
 }
 
 std::string ShaderLibrary::readRaw(const std::string& name) const {
-    if (!dir_.empty()) return readFile(dir_ + "/" + name);
+    if (!dir_.empty()) return readFile(dir_ + "/" + name, kMaxShaderFileBytes);
     for (const EmbeddedShader& s : embeddedShaders())
         if (name == s.name) return s.text;
     throw InputError("shaders/" + name, "no such shader");

@@ -3,6 +3,7 @@
 #include "image/png.h"
 
 #include "util/atomic_file.h"
+#include "util/read_file.h"
 #include "util/check.h"
 #include "util/input_error.h"
 
@@ -185,7 +186,7 @@ void writePng(const std::string& path, const Image8& img) {
 }
 
 Image8 readPng(const std::string& path) {
-    const std::string file = readFile(path);
+    const std::string file = readFile(path, kMaxPngFileBytes);
     if (file.size() < 8 || std::memcmp(file.data(), kSignature, 8) != 0)
         throw InputError(path, "not a PNG file (bad signature)");
     if (file.size() > size_t(0x7FFFFFFF)) throw InputError(path, "PNG file too large");

@@ -3,7 +3,7 @@
 // gltf_import.cpp.
 #include "scene/gltf_file.h"
 
-#include "util/atomic_file.h"
+#include "util/read_file.h"
 #include "util/input_error.h"
 
 #include <algorithm>
@@ -37,11 +37,13 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;
 }
 
-// The model's folder, for the file callbacks that resolve external buffers and keep them inside it.
+// The model's folder, for the file callbacks that resolve external buffers and images, keep them inside it
+// and bound what is read of them.
 struct FolderGuard {
     std::string baseDir;            // as given to tinygltf
     std::filesystem::path root;     // weakly canonical
     bool allowOutside = false;
+    uint64_t maxSideFileBytes = 0;  // the largest declared buffer, or one image's limit if larger
 
     // tinygltf joins the folder and an absolute URI into "<baseDir>//abs"; undo that join.
     std::string resolve(const std::string& joined) const {
@@ -59,18 +61,31 @@ struct FolderGuard {
     }
 };
 
+// Whether an external file exists, by stat alone: nothing is opened here (a FIFO would block), and a path
+// outside the folder is not even looked at, so that readInsideFolder refuses it by name.
 bool existsResolved(const std::string& joined, void* user) {
-    return tinygltf::FileExists(static_cast<const FolderGuard*>(user)->resolve(joined), nullptr);
+    const FolderGuard& guard = *static_cast<const FolderGuard*>(user);
+    const std::string file = guard.resolve(joined);
+    if (file.find('\0') != std::string::npos || (!guard.allowOutside && !guard.contains(file))) return true;
+    std::error_code ec;
+    return std::filesystem::exists(file, ec);
 }
 
+// The path policy first, then util/read_file.h's checks (regular file, size bound) before any byte is read.
 bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const std::string& joined, void* user) {
     const FolderGuard& guard = *static_cast<const FolderGuard*>(user);
     const std::string file = guard.resolve(joined);
-    if (!guard.allowOutside && !guard.contains(file)) {
-        if (err) *err += "buffer '" + file + "' is outside the model's folder (pass --allow-external-paths to allow)\n";
+    try {
+        if (file.find('\0') != std::string::npos) throw InputError(printablePath(file), "file name contains a NUL character");
+        if (!guard.allowOutside && !guard.contains(file))
+            throw InputError(file, "outside the model's folder (pass --allow-external-paths to allow)");
+        const std::string bytes = readFile(file, guard.maxSideFileBytes);
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const InputError& e) {
+        if (err) *err += std::string("external file ") + e.what() + "\n";
         return false;
     }
-    return tinygltf::ReadWholeFile(out, err, file, nullptr);
 }
 
 // Parses glTF text (`binary` false) or GLB bytes. External buffers resolve through `guard` (which refuses
@@ -105,7 +120,11 @@ tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::s
     if (!ok) {
         std::vector<std::string> lines;
         appendLines(err, lines);
-        throw InputError(name, lines.empty() ? std::string("tinygltf failed without a message") : lines.front());
+        std::string reason = lines.empty() ? std::string("tinygltf failed without a message") : lines.front();
+        // tinygltf wraps readInsideFolder's reason in "File read error : <path> : "; the reason names the file.
+        const size_t ours = reason.find("external file ");
+        if (ours != std::string::npos) reason = reason.substr(ours);
+        throw InputError(name, reason);
     }
     appendLines(warn, warnings);
     appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
@@ -121,6 +140,7 @@ tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::str
 
 tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options,
                           std::vector<std::string>& warnings) {
+    if (path.find('\0') != std::string::npos) throw InputError(printablePath(path), "file name contains a NUL character");
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");
     if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a glTF file");
@@ -134,12 +154,9 @@ tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& opti
     guard.root = std::filesystem::weakly_canonical(baseDir, ec);
     guard.allowOutside = options.allowExternalPaths;
     if (ec) throw InputError(path, "cannot resolve the model's folder: " + ec.message());
-    const uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > options.limits.maxFileBytes)
-        throw InputError(path, "file of " + std::to_string(size) + " bytes exceeds the limit of " +
-                                   std::to_string(options.limits.maxFileBytes) + " bytes");
-    const std::string bytes = readFile(path);
-    checkDeclaredSizes(bytes, ext == ".glb", path, options.limits);
+    const std::string bytes = readFile(path, options.limits.maxFileBytes);
+    guard.maxSideFileBytes =
+        std::max(checkDeclaredSizes(bytes, ext == ".glb", path, options.limits), options.limits.maxImageBytes);
     return parseGuarded(bytes, ext == ".glb", path, baseDir, warnings, &guard);
 }
 

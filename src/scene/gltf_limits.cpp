@@ -4,6 +4,7 @@
 
 #include "util/input_error.h"
 
+#include <algorithm>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
@@ -42,10 +43,11 @@ void checkDataUri(const nlohmann::json& item, const std::string& file, const std
 
 }  // namespace
 
-void checkDeclaredSizes(const std::string& bytes, bool binary, const std::string& file, const GltfLimits& limits) {
+uint64_t checkDeclaredSizes(const std::string& bytes, bool binary, const std::string& file, const GltfLimits& limits) {
     if (bytes.size() > limits.maxFileBytes) throw InputError(file, over("file", bytes.size(), limits.maxFileBytes));
     const nlohmann::json doc = nlohmann::json::parse(binary ? glbJson(bytes) : bytes, nullptr, false);
-    if (!doc.is_object()) return;  // not JSON: tinygltf says why
+    if (!doc.is_object()) return 0;  // not JSON: tinygltf says why
+    uint64_t largest = 0;
 
     const auto buffers = doc.find("buffers");
     if (buffers != doc.end() && buffers->is_array())
@@ -54,6 +56,7 @@ void checkDeclaredSizes(const std::string& bytes, bool binary, const std::string
             if (!b.is_object()) continue;
             if (declaredLength(b) > limits.maxBufferBytes)
                 throw InputError(file, place("buffers", i), over("byteLength", declaredLength(b), limits.maxBufferBytes));
+            largest = std::max(largest, declaredLength(b));
             checkDataUri(b, file, place("buffers", i), limits);
         }
 
@@ -71,6 +74,7 @@ void checkDeclaredSizes(const std::string& bytes, bool binary, const std::string
                 throw InputError(file, place("images", i),
                                  over("texture", declaredLength((*views)[v]), limits.maxImageBytes));
         }
+    return largest;
 }
 
 }  // namespace shadelab

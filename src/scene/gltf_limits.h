@@ -19,7 +19,8 @@ struct GltfLimits {
 
 // Checks what the glTF JSON (a .gltf's text, or a .glb's JSON chunk) declares against `limits`, before
 // tinygltf reads any buffer. Throws InputError(file, place, reason). Text that is not valid JSON is left
-// for the glTF parser to report.
-void checkDeclaredSizes(const std::string& bytes, bool binary, const std::string& file, const GltfLimits& limits);
+// for the glTF parser to report. Returns the largest byteLength a buffer declares (0 when none), which
+// bounds how much of any external buffer file is read.
+uint64_t checkDeclaredSizes(const std::string& bytes, bool binary, const std::string& file, const GltfLimits& limits);
 
 }  // namespace shadelab

@@ -3,7 +3,7 @@
 // errors: scene_json_errors_test.cpp). Text only: loadScene() owns files and glTF import.
 #include "scene/scene_json.h"
 
-#include "util/atomic_file.h"
+#include "util/read_file.h"
 #include "util/input_error.h"
 
 #include <gtest/gtest.h>

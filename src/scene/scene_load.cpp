@@ -4,7 +4,7 @@
 
 #include "scene/gltf_import.h"
 #include "scene/scene_json.h"
-#include "util/atomic_file.h"
+#include "util/read_file.h"
 #include "util/input_error.h"
 
 #include <glm/common.hpp>
@@ -117,17 +117,13 @@ void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImpor
 }
 
 Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
+    // stat only: nothing is opened before readFile has refused FIFOs and devices.
     std::error_code ec;
-    if (!fs::exists(path, ec)) throw InputError(path, "no such file");
+    if (path.find('\0') == std::string::npos && !fs::exists(path, ec)) throw InputError(path, "no such file");
     if (fs::is_directory(path, ec)) throw InputError(path, "is a directory, not a scene file");
-    {
-        std::ifstream probe(path, std::ios::binary);
-        if (!probe) throw InputError(path, std::string("cannot read: ") + std::strerror(errno));
-    }
-
     const std::string ext = lowerExtension(path);
     if (ext == ".json") {
-        Scene scene = parseSceneJson(readFile(path), path, warn);
+        Scene scene = parseSceneJson(readFile(path, kMaxSceneFileBytes), path, warn);
         importMeshes(scene, fs::path(path).parent_path().string(), warn, gltf);
         return scene;
     }

@@ -1,4 +1,4 @@
-// Atomic whole-file writes (temp file in the same folder, fsync, rename) and whole-file reads.
+// Atomic whole-file writes (temp file in the same folder, fsync, rename).
 // POSIX only. Every failure becomes an InputError naming the path; nothing is left half-written.
 #include "util/atomic_file.h"
 
@@ -96,37 +96,6 @@ void writeFileAtomic(const std::string& path, const void* data, size_t size) {
     if (::rename(tmpPath.c_str(), path.c_str()) != 0)
         throw InputError(path, "cannot write: " + errnoText(errno));
     tmp.release();
-}
-
-std::string readFile(const std::string& path) {
-    int fd;
-    do {
-        fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    } while (fd < 0 && errno == EINTR);
-    if (fd < 0) throw InputError(path, "cannot read: " + errnoText(errno));
-
-    struct FdGuard {
-        int fd;
-        ~FdGuard() { ::close(fd); }
-    } guard{fd};
-
-    struct stat st;
-    if (::fstat(fd, &st) != 0) throw InputError(path, "cannot read: " + errnoText(errno));
-    if (S_ISDIR(st.st_mode)) throw InputError(path, "cannot read: is a directory");
-
-    std::string out;
-    if (S_ISREG(st.st_mode) && st.st_size > 0) out.reserve(size_t(st.st_size));
-    char buf[1 << 16];
-    for (;;) {
-        ssize_t n = ::read(fd, buf, sizeof buf);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            throw InputError(path, "cannot read: " + errnoText(errno));
-        }
-        if (n == 0) break;
-        out.append(buf, size_t(n));
-    }
-    return out;
 }
 
 }  // namespace shadelab

@@ -14,7 +14,4 @@ inline void writeFileAtomic(const std::string& path, const std::string& text) {
     writeFileAtomic(path, text.data(), text.size());
 }
 
-// Reads a whole file; throws InputError naming the path when it cannot be read.
-std::string readFile(const std::string& path);
-
 }  // namespace shadelab

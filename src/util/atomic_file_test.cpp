@@ -1,6 +1,7 @@
 // Tests for writeFileAtomic / readFile: round trips, no temp files left behind, and failures that
 // leave the destination untouched and name the path.
 #include "util/atomic_file.h"
+#include "util/read_file.h"
 
 #include "util/input_error.h"
 

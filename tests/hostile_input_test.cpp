@@ -1,0 +1,185 @@
+// Hostile inputs (issue 11): every file shadelab reads goes through util/read_file.h, so a FIFO, a device
+// behind a symlink, a 10 GB side file or a NUL in a path ends in one line naming the file, exit 1, within a
+// second and a small memory bound. Each case runs the real binary under `timeout`, so a hang fails it.
+#include "test_output.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+#include <csignal>
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int code = -1;
+    std::string out;      // stdout and stderr together
+    double seconds = 0;
+    double peakMiB = 0;   // the process's peak resident set
+};
+
+// Runs shadelab with `args` (no shell), killing it after 10 s (code 124). Captures stdout and stderr and the
+// process's own peak resident memory (wait4).
+Result run(const std::vector<std::string>& args) {
+    Result r;
+    int fds[2];
+    if (pipe(fds) != 0) return r;
+    const auto t0 = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        dup2(fds[1], 1);
+        dup2(fds[1], 2);
+        close(fds[0]);
+        close(fds[1]);
+        std::vector<char*> argv{const_cast<char*>(SHADELAB_BINARY)};
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(SHADELAB_BINARY, argv.data());
+        _exit(127);
+    }
+    close(fds[1]);
+    fcntl(fds[0], F_SETFL, O_NONBLOCK);
+    int status = 0;
+    rusage usage{};
+    bool killed = false;
+    auto drain = [&] {
+        char buf[4096];
+        ssize_t n;
+        while ((n = read(fds[0], buf, sizeof buf)) > 0) r.out.append(buf, size_t(n));
+    };
+    for (;;) {
+        drain();
+        if (wait4(pid, &status, WNOHANG, &usage) == pid) break;
+        if (!killed && std::chrono::steady_clock::now() - t0 > std::chrono::seconds(10)) {
+            kill(pid, SIGKILL);
+            killed = true;
+        }
+        usleep(2000);
+    }
+    drain();
+    close(fds[0]);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.peakMiB = double(usage.ru_maxrss) / 1024.0;  // Linux: KiB
+    r.code = killed ? 124 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return r;
+}
+
+Result render(const std::string& input, const std::string& dir) { return run({"render", input, "-o", dir + "/out.png"}); }
+
+// A private folder per test, emptied first.
+std::string folder(const std::string& name) {
+    const fs::path dir = fs::path(shadelab::test::outputPath("hostile")) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir.string();
+}
+
+void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// One line on stderr, the exit code for bad input (1; compare's is 2, docs/cli.md), naming `file` and
+// containing `reason`, in well under a second and 100 MiB.
+void expectRefused(const Result& r, const std::string& file, const std::string& reason, int code = 1) {
+    EXPECT_EQ(r.code, code) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_NE(r.out.find(file), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(reason), std::string::npos) << r.out;
+    EXPECT_LT(r.seconds, 1.0) << r.out;
+    EXPECT_LT(r.peakMiB, 100.0) << r.out;
+}
+
+std::string gltfWithBuffer(const std::string& uri, int byteLength) {
+    return R"({"asset":{"version":"2.0"},"buffers":[{"uri":")" + uri + R"(","byteLength":)" +
+           std::to_string(byteLength) + R"(}],"scenes":[{"nodes":[]}],"scene":0})";
+}
+
+}  // namespace
+
+TEST(HostileInput, FifoAsSceneModelOrCompareInputNeverBlocks) {
+    const std::string dir = folder("fifo");
+    for (const char* name : {"scene.json", "model.gltf", "model.glb", "image.png"}) {
+        const std::string fifo = dir + "/" + name;
+        ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+        const bool png = std::string(name) == "image.png";
+        const Result r = png ? run({"compare", fifo, fifo}) : render(fifo, dir);
+        SCOPED_TRACE(name);
+        expectRefused(r, fifo, "is a FIFO, not a regular file", png ? 2 : 1);
+    }
+    EXPECT_FALSE(fs::exists(dir + "/out.png"));
+}
+
+TEST(HostileInput, FifoAsMeshSourceOrGltfBufferNeverBlocks) {
+    const std::string dir = folder("fifo-side");
+    ASSERT_EQ(mkfifo((dir + "/pipe.gltf").c_str(), 0600), 0);
+    ASSERT_EQ(mkfifo((dir + "/pipe.bin").c_str(), 0600), 0);
+    writeText(dir + "/scene.json", R"({"shadelab": 1, "objects": [{"type": "mesh", "source": "pipe.gltf"}]})");
+    expectRefused(render(dir + "/scene.json", dir), "pipe.gltf", "is a FIFO");
+    writeText(dir + "/model.gltf", gltfWithBuffer("pipe.bin", 840));
+    expectRefused(render(dir + "/model.gltf", dir), "pipe.bin", "is a FIFO");
+}
+
+TEST(HostileInput, RefusedBufferOutsideTheFolderIsNeverOpened) {
+    // The path policy comes before any open: a FIFO outside the model's folder is refused by name, at once.
+    const std::string outside = folder("outside");
+    const std::string dir = folder("outside-model");
+    ASSERT_EQ(mkfifo((outside + "/secret.bin").c_str(), 0600), 0);
+    writeText(dir + "/model.gltf", gltfWithBuffer("../outside/secret.bin", 840));
+    expectRefused(render(dir + "/model.gltf", dir), "secret.bin",
+                  "outside the model's folder");
+}
+
+TEST(HostileInput, DevZeroBehindASymlinkIsRefusedBeforeReading) {
+    const std::string dir = folder("devzero");
+    for (const char* name : {"x.json", "x.glb", "x.gltf", "x.png"}) {
+        const std::string link = dir + "/" + name;
+        fs::create_symlink("/dev/zero", link);
+        const bool png = std::string(name) == "x.png";
+        const Result r = png ? run({"compare", link, link}) : render(link, dir);
+        SCOPED_TRACE(name);
+        expectRefused(r, link, "is a device, not a regular file", png ? 2 : 1);
+    }
+}
+
+TEST(HostileInput, HugeSparseBufferIsRefusedByItsSizeBeforeReading) {
+    // 10 GB on disk (sparse), 840 bytes declared: refused from fstat against the declared size, not read.
+    const std::string dir = folder("sparse");
+    const std::string bin = dir + "/big.bin";
+    { std::ofstream(bin).put('x'); }
+    std::error_code ec;
+    fs::resize_file(bin, uint64_t(10) << 30, ec);
+    if (ec) GTEST_SKIP() << "cannot make a 10 GB sparse file here: " << ec.message();
+    writeText(dir + "/model.gltf", gltfWithBuffer("big.bin", 840));
+    const Result r = render(dir + "/model.gltf", dir);
+    fs::remove(bin);
+    expectRefused(r, "big.bin", "exceeds the limit of");
+}
+
+TEST(HostileInput, NulInAMeshSourceIsRefusedAndEscaped) {
+    // "/etc/passwd\u0000.gltf" once passed the extension check and opened /etc/passwd as glTF.
+    const std::string dir = folder("nul");
+    writeText(dir + "/scene.json", R"({"shadelab": 1, "objects": [{"type": "mesh", "source": "/etc/passwd\u0000.gltf"}]})");
+    const Result r = render(dir + "/scene.json", dir);
+    expectRefused(r, "/etc/passwd\\x00.gltf", "NUL");
+}
+
+TEST(HostileInput, NegativeControlARegularBufferIsRead) {
+    // The same model with a real 840-byte buffer loads: the refusals above are about the files, not the model.
+    const std::string dir = folder("control");
+    { std::ofstream(dir + "/ok.bin", std::ios::binary) << std::string(840, '\0'); }
+    writeText(dir + "/model.gltf", gltfWithBuffer("ok.bin", 840));
+    const Result r = run({"render", dir + "/model.gltf", "-o", dir + "/out.png", "--size", "32x24"});
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(fs::exists(dir + "/out.png"));
+}
