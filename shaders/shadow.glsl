@@ -3,6 +3,8 @@
 // normal-offset bias (Holbert 2011). Mirrored by src/raster/shadow_block.h (std140). Not the lighting sum.
 // Each light's map kind and blocking planes are compile-time constants of the variant
 // (src/raster/shader_variant.h), so only the code a light needs runs.
+#include "cube_face.glsl"
+
 const int SL_SHADOW_NONE = 0;
 const int SL_SHADOW_ORTHO = 1;
 const int SL_SHADOW_PERSPECTIVE = 2;
@@ -34,19 +36,6 @@ bool planesBlock(int i, bool isPoint, int mask, vec3 origin) {
     return blocked;
 }
 
-// Cube face (+X −X +Y −Y +Z −Z) of direction d from the light, and d in that face's camera: xy over the
-// axis distance, z the axis distance. The bases are shadow_maps.cpp's glm::lookAt ones (up +Y, +Z for ±Y).
-vec3 cubeFaceCoords(vec3 d, out int face) {
-    vec3 a = abs(d);
-    bool xMajor = a.x >= a.y && a.x >= a.z;
-    bool yMajor = !xMajor && a.y >= a.z;
-    float ma = xMajor ? a.x : yMajor ? a.y : a.z;
-    float sgn = (xMajor ? d.x : yMajor ? d.y : d.z) > 0.0f ? 1.0f : -1.0f;
-    vec2 uv = xMajor ? vec2(sgn * d.z, d.y) : yMajor ? vec2(sgn * d.x, d.z) : vec2(-sgn * d.x, d.y);
-    face = (xMajor ? 0 : yMajor ? 2 : 4) + (sgn > 0.0f ? 0 : 1);
-    return vec3(uv / ma, ma);
-}
-
 // One map texel against the receiver: lit when nothing was drawn there (d = 1) or the receiver is not
 // behind the stored depth. Ortho: r is the receiver's window depth; otherwise its distance along the axis.
 bool texelLit(ivec2 q, int layer, float r, vec4 test, bool ortho) {
@@ -64,7 +53,7 @@ float mapVisibility(int i, int kind, int layer, vec3 P, vec3 Nf) {
     vec3 c;  // xy: the receiver in the layer's NDC; z: ortho its window depth, else its distance along the axis
     bool inside = true;
     if (kind == SL_SHADOW_CUBE) {
-        int face;
+        int face = cubeFace(Pn - lightPos);
         c = cubeFaceCoords(Pn - lightPos, face);
         layer += face;
     } else {

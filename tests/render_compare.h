@@ -3,6 +3,7 @@
 // report behind. Shared by the matrix, shadow and reflection tests; the gates are the caller's.
 #pragma once
 
+#include "compare/comparison.h"
 #include "image/compare.h"
 #include "image/compare_report.h"
 #include "image/encode.h"
@@ -12,6 +13,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,10 +48,7 @@ inline Light pointLight(glm::vec3 position, glm::vec3 colour) {
     return l;
 }
 
-struct Rendered {
-    Image8 pixels;
-    std::vector<uint32_t> coverage;
-};
+using ::shadelab::Rendered;  // compare/comparison.h
 
 // One renderer per test binary: programs compile once.
 inline raster::RasterRenderer& sharedRasterRenderer() {
@@ -99,11 +98,14 @@ inline CompareResult gateWithEvidence(const Rendered& a, const Rendered& b, cons
 // interior mean must stay within 1/255. The environment-cube test uses them too.
 inline const CompareGates kShadowEdgeGates{3, 0.01, 255, 0.02, 1.0};
 
-// `raster` rasterized and `traced` traced at `traceDepth`, both width x height with coverage, gated.
+// `raster` rasterized and `traced` traced at comparisonDepth(traced, traceDepth), as the CLI's --renderer
+// both and the viewer's Split mode do, both width x height with coverage, gated.
 inline CompareResult compareWithReference(const Scene& raster, const Scene& traced, int width, int height,
-                                          int traceDepth, const CompareGates& gates, const std::string& name) {
+                                          std::optional<int> traceDepth, const CompareGates& gates,
+                                          const std::string& name) {
     return gateWithEvidence(rasterizeWithCoverage(raster, width, height),
-                            traceWithCoverage(traced, width, height, traceDepth), gates, name);
+                            traceWithCoverage(traced, width, height, comparisonDepth(traced, traceDepth)), gates,
+                            name);
 }
 
 }  // namespace shadelab::test

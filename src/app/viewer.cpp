@@ -2,6 +2,7 @@
 // and the image area, and --stats. Setup and teardown are in viewer_setup.cpp.
 #include "app/viewer.h"
 
+#include "compare/comparison.h"
 #include "image/png.h"
 
 #define GLFW_INCLUDE_NONE
@@ -184,11 +185,11 @@ void Viewer::updateReference() {
         reference_->pause();
         return;
     }
-    // Split and Difference compare with the rasterizer, which reflects once: the reference traces one bounce
-    // there too (issue 5); Traced shows it at the scene's own depth.
+    // Split and Difference compare with the rasterizer: the reference traces at the comparison's depth
+    // (compare/comparison.h); Traced shows it at the scene's own depth.
     const bool comparing = state_.mode == ViewMode::Split || state_.mode == ViewMode::Difference;
     reference_->request(state_.scene, renderW_, renderH_, state_.referenceRevision,
-                        comparing ? std::min(state_.scene.maxDepth, 1) : -1);
+                        comparing ? comparisonDepth(state_.scene) : -1);
     reference_->update();
 }
 

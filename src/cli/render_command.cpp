@@ -6,6 +6,7 @@
 #include "cli/progress_bar.h"
 #include "cli/render_options.h"
 #include "cli/stage_timer.h"
+#include "compare/comparison.h"
 #include "gl/headless_context.h"
 #include "image/compare.h"
 #include "image/compare_report.h"
@@ -26,11 +27,6 @@ namespace shadelab::cli {
 namespace {
 
 void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
-
-struct Rendered {
-    Image8 pixels;
-    std::vector<uint32_t> coverage;
-};
 
 std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageTimer& timer) {
     std::vector<std::string> log;
@@ -62,10 +58,10 @@ Rendered rasterize(const Scene& scene, const RenderOptions& o, bool coverage, St
     return {std::move(r.pixels), std::move(r.coverage)};
 }
 
-// The tracer's depth: --depth, else the scene's; compared with the rasterizer (--renderer both), which
-// reflects once, at most 1 (issue 5).
+// The tracer's depth: --depth, else the scene's; compared with the rasterizer (--renderer both), the
+// comparison's (compare/comparison.h).
 int referenceDepth(const Scene& scene, const RenderOptions& o) {
-    return o.depth.value_or(o.renderer == RendererChoice::Both ? std::min(scene.maxDepth, 1) : scene.maxDepth);
+    return o.renderer == RendererChoice::Both ? comparisonDepth(scene, o.depth) : o.depth.value_or(scene.maxDepth);
 }
 
 Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& timer) {

@@ -32,6 +32,7 @@ static_assert(sizeof(ShadowBlock) == 64 * kMaxShadowLayers + 48 * kMaxShadowedLi
 // ShadowBlock::depth for a light whose map stores window depth of a perspective projection (near n, far f):
 // a receiver at distance r along the layer's axis is lit by a stored depth d when window(r) <= d, i.e.
 // A - B/r <= d, tested as (A - d)·r <= B. For an orthographic map: z = the depth bias in window units.
+// Defined in shadow_fit.cpp.
 glm::vec4 perspectiveDepthTest(float zNear, float zFar);
 glm::vec4 orthoDepthTest(float zNear, float zFar, float texelWorld, float depthBiasTexels);
 

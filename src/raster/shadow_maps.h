@@ -19,8 +19,8 @@ public:
     // Builds the depth-only programs; needs a current GL 3.3 core context.
     explicit ShadowMaps(const gl::ShaderLibrary& shaders);
 
-    // Renders every layer the scene's first kMaxShadowedLights lights need (casters: meshes and spheres;
-    // planes occlude analytically in the shader) and uploads the block. Leaves the framebuffer unbound.
+    // Renders every layer fitShadows (shadow_fit.h) fits for the scene's first kMaxShadowedLights lights
+    // (casters: meshes and spheres; planes occlude analytically in the shader) and uploads the block. Leaves the framebuffer unbound.
     // meshVao draws `ranges`; cubeVao holds the 36-vertex unit cube of the sphere impostors.
     void render(const Scene& scene, const RasterSettings& settings, const std::vector<DrawRange>& ranges,
                 GLuint meshVao, GLuint cubeVao);
