@@ -105,7 +105,32 @@ std::string gltfWithBuffer(const std::string& uri, int byteLength) {
            std::to_string(byteLength) + R"(}],"scenes":[{"nodes":[]}],"scene":0})";
 }
 
+// A 47-triangle mesh (zero bytes: the count matters, not the shape) under a node DAG `levels` deep, where
+// each level's node lists the level below twice: 2^levels instances in a file of about 3 KB.
+std::string dagGltf(int levels) {
+    const int bytes = 47 * 3 * 12;
+    std::string nodes = R"({"mesh":0})";
+    for (int l = 1; l <= levels; ++l) nodes += R"(,{"children":[)" + std::to_string(l - 1) + "," + std::to_string(l - 1) + "]}";
+    return R"({"asset":{"version":"2.0"},"buffers":[{"uri":"data:application/octet-stream;base64,)" +
+           std::string(size_t(bytes) / 3 * 4, 'A') + R"(","byteLength":)" + std::to_string(bytes) +
+           R"(}],"bufferViews":[{"buffer":0,"byteLength":)" + std::to_string(bytes) +
+           R"(}],"accessors":[{"bufferView":0,"componentType":5126,"count":141,"type":"VEC3","min":[0,0,0],"max":[0,0,0]}],)"
+           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[)" + nodes +
+           R"(],"scenes":[{"nodes":[)" + std::to_string(levels) + R"(]}],"scene":0})";
+}
+
 }  // namespace
+
+TEST(HostileInput, NodeDagIsRefusedByTheTriangleBudgetBeforeExpanding) {
+    // 2^19 × 47 = 24,641,536 triangles from 3 KB: once 6.6 GB and 16 s of raster; now one line at once.
+    const std::string dir = folder("dag");
+    writeText(dir + "/dag.gltf", dagGltf(19));
+    expectRefused(render(dir + "/dag.gltf", dir), "dag.gltf", "24641536 triangles once its node hierarchy is expanded");
+    // Negative control: the same graph 8 levels deep (12,032 triangles) renders.
+    writeText(dir + "/small.gltf", dagGltf(8));
+    const Result ok = run({"render", dir + "/small.gltf", "-o", dir + "/small.png", "--size", "32x24"});
+    EXPECT_EQ(ok.code, 0) << ok.out;
+}
 
 TEST(HostileInput, FifoAsSceneModelOrCompareInputNeverBlocks) {
     const std::string dir = folder("fifo");

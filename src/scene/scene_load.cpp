@@ -52,11 +52,13 @@ void boundingSphere(const Bounds& b, glm::vec3& center, float& radius) {
 }
 
 void importMeshes(Scene& scene, const std::string& baseDir, WarnFn warn, const GltfImportOptions& gltf) {
+    GltfImportOptions options = gltf;  // the triangle limit bounds the whole scene
     for (Mesh& mesh : scene.meshes) {
         const fs::path source(mesh.source);
         const std::string path = source.is_absolute() || baseDir.empty() ? mesh.source
                                                                            : (fs::path(baseDir) / source).string();
-        GltfImport imported = importGltf(path, mesh.transform, gltf);
+        GltfImport imported = importGltf(path, mesh.transform, options);
+        for (const MeshPart& part : imported.parts) options.trianglesBefore += part.triangleCount();
         forwardWarnings(imported.warnings, path, warn);
         if (!mesh.material.empty())
             for (MeshPart& part : imported.parts) mesh.material.applyTo(part.material);
