@@ -6,12 +6,14 @@
 #include "image/compare.h"
 #include "image/compare_report.h"
 #include "image/png.h"
-#include "util/atomic_file.h"
 #include "util/input_error.h"
+#include "util/output_file.h"
 
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab::cli {
 namespace {
@@ -24,8 +26,8 @@ const char* const kCompareHelp =
     "threshold. Differences are in 8-bit units. Without coverage data every pixel counts as interior.\n"
     "\n"
     "options:\n"
-    "  --diff PATH              write a heatmap of |a-b| (amplified) as PNG\n"
-    "  --json PATH              write the full report as JSON\n"
+    "  --diff PATH              write a heatmap of |a-b| (amplified) as PNG; - for stdout\n"
+    "  --json PATH              write the full report as JSON; - for stdout\n"
     "  --threshold T            a pixel is over when any channel differs by more than T (default 3)\n"
     "  --max-fraction F         fraction of pixels allowed over the threshold (default 0.001)\n"
     "  --hard-max M             no channel may differ by more than M (default 16)\n"
@@ -34,7 +36,10 @@ const char* const kCompareHelp =
     "  -q, --quiet              print only the verdict line\n"
     "  -h, --help               show this help\n"
     "\n"
-    "exit codes: 0 within the gates, 1 outside them, 2 on an error (unreadable file, size mismatch, usage)\n";
+    "With --diff - or --json -, the summary goes to stderr. An output that is one of the two images, or an\n"
+    "existing file that is not a regular file (device, FIFO, directory), is refused.\n"
+    "exit codes: 0 within the gates, 1 outside them, 2 on an error (unreadable file, size mismatch, refused\n"
+    "output, usage)\n";
 
 double parseDouble(const std::string& name, const std::string& v, double lo, double hi) {
     char* end = nullptr;
@@ -67,18 +72,33 @@ int compareCommand(int argc, char** argv) {
 
         const std::string& pathA = args.positionals()[0];
         const std::string& pathB = args.positionals()[1];
+        const std::optional<std::string> diffPath = args.value("--diff"), jsonPath = args.value("--json");
+        if (diffPath && jsonPath && isStdout(*diffPath) && isStdout(*jsonPath))
+            throw UsageError("--diff and --json cannot both write to stdout");
+        // Before reading anything: an output must not replace either image (nor be a device, a FIFO, ...).
+        if (diffPath) checkOutput(*diffPath, "--diff", {pathA, pathB});
+        if (jsonPath) checkOutput(*jsonPath, "--json", {pathA, pathB});
+        // With an output on stdout, stdout carries only that output.
+        FILE* summary = (diffPath && isStdout(*diffPath)) || (jsonPath && isStdout(*jsonPath)) ? stderr : stdout;
+
         Image8 a = readPng(pathA), b = readPng(pathB);
         if (a.width != b.width || a.height != b.height)
             throw InputError(pathB, "image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                                         " (" + pathA + ") vs " + std::to_string(b.width) + "x" +
                                         std::to_string(b.height));
         CompareResult r = compareImages(a, b, gates);
-        if (auto diff = args.value("--diff")) writePng(*diff, diffHeatmap(a, b, gain));
-        if (auto json = args.value("--json")) writeFileAtomic(*json, compareReportJson(r, pathA, pathB));
+        if (diffPath) {
+            const std::vector<uint8_t> png = encodePng(diffHeatmap(a, b, gain));
+            writeOutput(*diffPath, png.data(), png.size());
+        }
+        if (jsonPath) {
+            const std::string json = compareReportJson(r, pathA, pathB);
+            writeOutput(*jsonPath, json.data(), json.size());
+        }
         if (args.flag("-q") || args.flag("--quiet"))
-            std::printf("%s\n", r.pass ? "PASS" : "FAIL");
+            std::fprintf(summary, "%s\n", r.pass ? "PASS" : "FAIL");
         else
-            std::fputs(compareSummary(r).c_str(), stdout);
+            std::fputs(compareSummary(r).c_str(), summary);
         return r.pass ? 0 : 1;
     } catch (const UsageError& e) {
         std::fprintf(stderr, "shadelab: usage error: %s\n", e.what());

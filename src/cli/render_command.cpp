@@ -1,6 +1,6 @@
 // `shadelab render`: load the scene (on a worker thread while the GL context starts), render it with the
-// rasterizer, the tracer or both, convert once to 8-bit, write the PNG atomically. --timings prints the
-// per-stage breakdown.
+// rasterizer, the tracer or both, convert once to 8-bit, write the PNG atomically (or to stdout for `-o -`).
+// --timings prints the per-stage breakdown.
 #include "cli/render_command.h"
 
 #include "cli/progress_bar.h"
@@ -14,11 +14,12 @@
 #include "raster/offscreen.h"
 #include "scene/scene_load.h"
 #include "trace/trace_image.h"
-#include "util/atomic_file.h"
 #include "util/input_error.h"
+#include "util/output_file.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <future>
 #include <memory>
 #include <string>
@@ -83,6 +84,19 @@ Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& 
     return r;
 }
 
+// The files a render reads that -o must not replace: the scene and the glTF files its meshes name, resolved
+// as scene_load.cpp resolves them. The buffers and images inside a glTF are not listed.
+std::vector<std::string> sceneInputs(const std::string& input, const Scene& scene) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> files = {input};
+    const fs::path base = fs::path(input).parent_path();
+    for (const Mesh& mesh : scene.meshes) {
+        const fs::path source(mesh.source);
+        files.push_back(source.is_absolute() || base.empty() ? mesh.source : (base / source).string());
+    }
+    return files;
+}
+
 }  // namespace
 
 int renderCommand(int argc, char** argv) {
@@ -92,6 +106,8 @@ int renderCommand(int argc, char** argv) {
         return 0;
     }
     const bool needRaster = o.renderer != RendererChoice::Trace;
+    // Before any work: a render that cannot be written, or would replace its own scene, is refused now.
+    checkOutput(o.output, "-o", {o.input});
 
     StageTimer timer;
     // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
@@ -109,6 +125,7 @@ int renderCommand(int argc, char** argv) {
     }
     Scene scene = sceneFuture.get();
     timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
+    refuseInputAsOutput(o.output, "-o", sceneInputs(o.input, scene));
     if (o.model) scene.model = *o.model;
     if (o.terms) scene.terms = *o.terms;
     o.raster.applyTo(scene.raster);
@@ -132,12 +149,13 @@ int renderCommand(int argc, char** argv) {
     }
     std::vector<uint8_t> png = encodePng(output);
     timer.stage("PNG encode");
-    writeFileAtomic(o.output, png.data(), png.size());
+    writeOutput(o.output, png.data(), png.size());
     timer.stage("write");
 
     if (o.timings) timer.print(stderr);
     if (o.verbose)
-        std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n", o.output.c_str(), output.width,
+        std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n",
+                     isStdout(o.output) ? "stdout" : o.output.c_str(), output.width,
                      output.height, toString(o.encoding), png.size());
     return 0;
 }

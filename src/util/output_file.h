@@ -1,0 +1,27 @@
+// Output paths of the commands: `-` is stdout, anything else a file written atomically (util/atomic_file.h).
+// Also the refusals made before any work: an output that is one of the inputs, or that cannot be written.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+// "-", or "/dev/stdout" spelt out: the output goes to this process's stdout, whatever that is (pipe,
+// terminal, file). Other links to a descriptor (/proc/self/fd/1) follow the file rules of atomic_file.h.
+bool isStdout(const std::string& path);
+
+// Throws InputError naming `path` when the output is the same existing file (device and inode, through
+// symlinks) as one of `inputs`: "<path>: refusing to overwrite an input with the output (<flag>)". Inputs
+// that do not exist are skipped; their own read reports them.
+void refuseInputAsOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs);
+
+// refuseInputAsOutput, then checkWritableTarget (an existing non-regular file, a missing or read-only
+// folder), so a command fails before it renders. Nothing to check for stdout.
+void checkOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs);
+
+// Writes `data` to stdout when isStdout (errors name "stdout"), else writeFileAtomic.
+void writeOutput(const std::string& path, const void* data, size_t size);
+
+}  // namespace shadelab
