@@ -1,6 +1,7 @@
 // Hostile inputs (issue 11): every file shadelab reads goes through util/read_file.h, so a FIFO, a device
 // behind a symlink, a 10 GB side file or a NUL in a path ends in one line naming the file, exit 1, within a
 // second and a small memory bound. Each case runs the real binary under `timeout`, so a hang fails it.
+#include "image/png.h"
 #include "test_output.h"
 
 #include <gtest/gtest.h>
@@ -119,7 +120,36 @@ std::string dagGltf(int levels) {
            R"(],"scenes":[{"nodes":[)" + std::to_string(levels) + R"(]}],"scene":0})";
 }
 
+// A real 16x16 PNG whose IHDR then claims `w` x `h` (the CRC is left stale: nothing may decode it).
+std::string pngClaiming(const std::string& path, uint32_t w, uint32_t h) {
+    shadelab::Image8 img;
+    img.width = img.height = 16;
+    img.channels = 3;
+    img.data.assign(16 * 16 * 3, 128);
+    std::vector<uint8_t> bytes = shadelab::encodePng(img);
+    for (int k = 0; k < 4; ++k) {
+        bytes[size_t(16 + k)] = uint8_t(w >> (24 - 8 * k));
+        bytes[size_t(20 + k)] = uint8_t(h >> (24 - 8 * k));
+    }
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    return path;
+}
+
 }  // namespace
+
+TEST(HostileInput, PngHeadersAreCheckedBeforeDecoding) {
+    const std::string dir = folder("png");
+    const std::string bomb = pngClaiming(dir + "/bomb.png", 65536, 65536);
+    const std::string big = pngClaiming(dir + "/big.png", 16384, 16384);
+    const std::string small = pngClaiming(dir + "/small.png", 16, 16);
+    // A decompression bomb is refused from its header; compare exits 2 on any error (docs/cli.md).
+    expectRefused(run({"compare", bomb, small}), "bomb.png", "65536x65536 pixels exceeds the limit", 2);
+    // A size mismatch is found from the two headers, before the 16384² image would be decoded (1 GiB).
+    expectRefused(run({"compare", small, big}), "big.png", "image sizes differ: 16x16", 2);
+    // Negative control: the honest 16x16 pair compares.
+    const Result ok = run({"compare", small, pngClaiming(dir + "/same.png", 16, 16)});
+    EXPECT_EQ(ok.code, 0) << ok.out;
+}
 
 TEST(HostileInput, NodeDagIsRefusedByTheTriangleBudgetBeforeExpanding) {
     // 2^19 × 47 = 24,641,536 triangles from 3 KB: once 6.6 GB and 16 s of raster; now one line at once.

@@ -81,11 +81,13 @@ int compareCommand(int argc, char** argv) {
         // With an output on stdout, stdout carries only that output.
         FILE* summary = (diffPath && isStdout(*diffPath)) || (jsonPath && isStdout(*jsonPath)) ? stderr : stdout;
 
-        Image8 a = readPng(pathA), b = readPng(pathB);
-        if (a.width != b.width || a.height != b.height)
-            throw InputError(pathB, "image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-                                        " (" + pathA + ") vs " + std::to_string(b.width) + "x" +
-                                        std::to_string(b.height));
+        // Both headers before either image is decoded: a mismatch or a decompression bomb costs nothing.
+        const PngFile fileA = readPngFile(pathA), fileB = readPngFile(pathB);
+        if (fileA.width != fileB.width || fileA.height != fileB.height)
+            throw InputError(pathB, "image sizes differ: " + std::to_string(fileA.width) + "x" +
+                                        std::to_string(fileA.height) + " (" + pathA + ") vs " +
+                                        std::to_string(fileB.width) + "x" + std::to_string(fileB.height));
+        Image8 a = decodePng(fileA), b = decodePng(fileB);
         CompareResult r = compareImages(a, b, gates);
         if (diffPath) {
             const std::vector<uint8_t> png = encodePng(diffHeatmap(a, b, gain));

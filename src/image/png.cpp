@@ -185,22 +185,46 @@ void writePng(const std::string& path, const Image8& img) {
     writeFileAtomic(path, bytes.data(), bytes.size());
 }
 
-Image8 readPng(const std::string& path) {
-    const std::string file = readFile(path, kMaxPngFileBytes);
-    if (file.size() < 8 || std::memcmp(file.data(), kSignature, 8) != 0)
-        throw InputError(path, "not a PNG file (bad signature)");
-    if (file.size() > size_t(0x7FFFFFFF)) throw InputError(path, "PNG file too large");
+PngFile readPngFile(const std::string& path) {
+    PngFile f;
+    f.path = path;
+    f.bytes = readFile(path, kMaxPngFileBytes);
+    const std::string& b = f.bytes;
+    if (b.size() < 8 || std::memcmp(b.data(), kSignature, 8) != 0) throw InputError(path, "not a PNG file (bad signature)");
+    // PNG spec §5.2/§11.2.2: the first chunk is IHDR, 13 bytes, width and height big-endian in [1, 2^31).
+    if (b.size() < 8 + 8 + 13 || b.compare(12, 4, "IHDR") != 0) throw InputError(path, "corrupt PNG: no IHDR chunk first");
+    const auto be32 = [&](size_t at) {
+        return uint32_t(uint8_t(b[at])) << 24 | uint32_t(uint8_t(b[at + 1])) << 16 | uint32_t(uint8_t(b[at + 2])) << 8 |
+               uint32_t(uint8_t(b[at + 3]));
+    };
+    const uint32_t w = be32(16), h = be32(20);
+    if (w == 0 || h == 0 || w > 0x7FFFFFFFu || h > 0x7FFFFFFFu)
+        throw InputError(path, "corrupt PNG: IHDR declares " + std::to_string(w) + "x" + std::to_string(h) + " pixels");
+    if (uint64_t(w) * uint64_t(h) > kMaxPngPixels)
+        throw InputError(path, "PNG of " + std::to_string(w) + "x" + std::to_string(h) +
+                                   " pixels exceeds the limit of " + std::to_string(kMaxPngPixels) +
+                                   " pixels (16384x16384); nothing was decoded");
+    f.width = int(w);
+    f.height = int(h);
+    return f;
+}
 
-    const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
-    const int len = int(file.size());
+Image8 decodePng(const PngFile& file) {
+    const std::string& path = file.path;
+    if (file.bytes.size() > size_t(0x7FFFFFFF)) throw InputError(path, "PNG file too large");
+    const auto* bytes = reinterpret_cast<const stbi_uc*>(file.bytes.data());
+    const int len = int(file.bytes.size());
     stbi_set_flip_vertically_on_load_thread(0);  // another module may have set the global flag
+    const auto reason = [] {
+        const char* r = stbi_failure_reason();
+        return std::string("corrupt PNG: ") + (r && *r ? r : "the decoder gave no reason");
+    };
     int w = 0, h = 0, stored = 0;
-    if (!stbi_info_from_memory(bytes, len, &w, &h, &stored))
-        throw InputError(path, std::string("corrupt PNG: ") + stbi_failure_reason());
+    if (!stbi_info_from_memory(bytes, len, &w, &h, &stored)) throw InputError(path, reason());
     const int channels = (stored == 2 || stored == 4) ? 4 : 3;  // grey → RGB, grey+alpha → RGBA
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load_from_memory(bytes, len, &w, &h, &stored, channels),
                                                      stbi_image_free);
-    if (!pixels) throw InputError(path, std::string("corrupt PNG: ") + stbi_failure_reason());
+    if (!pixels) throw InputError(path, reason());
 
     Image8 img;
     img.width = w;
@@ -209,5 +233,7 @@ Image8 readPng(const std::string& path) {
     img.data.assign(pixels.get(), pixels.get() + size_t(w) * size_t(h) * size_t(channels));
     return img;
 }
+
+Image8 readPng(const std::string& path) { return decodePng(readPngFile(path)); }
 
 }  // namespace shadelab

@@ -17,8 +17,22 @@ std::vector<uint8_t> encodePng(const Image8& img);
 // destination is then untouched.
 void writePng(const std::string& path, const Image8& img);
 
-// Reads any PNG as 8-bit RGB or RGBA (channels as stored, grey expanded to RGB).
-// Throws InputError naming the path and the reason.
+// Largest image readPng decodes: 16384 × 16384 pixels (1 GiB as RGBA), as large as shadelab renders.
+inline constexpr uint64_t kMaxPngPixels = uint64_t(16384) * 16384;
+
+// A PNG file's bytes with its size read from the IHDR chunk, before anything is decoded.
+struct PngFile {
+    std::string path;
+    std::string bytes;
+    int width = 0, height = 0;          // pixels, from IHDR
+};
+
+// Reads a PNG file (util/read_file.h) and its header: signature, IHDR present, width and height in
+// [1, 2^31) and their product within kMaxPngPixels. Throws InputError naming the path and the reason.
+PngFile readPngFile(const std::string& path);
+// Decodes a file readPngFile returned as 8-bit RGB or RGBA (channels as stored, grey expanded to RGB).
+Image8 decodePng(const PngFile& file);
+// readPngFile then decodePng.
 Image8 readPng(const std::string& path);
 
 namespace detail {
