@@ -3,8 +3,9 @@
 // gltf_import.cpp.
 #include "scene/gltf_file.h"
 
-#include "util/read_file.h"
+#include "util/error_line.h"
 #include "util/input_error.h"
+#include "util/read_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -76,7 +77,7 @@ bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const s
     const FolderGuard& guard = *static_cast<const FolderGuard*>(user);
     const std::string file = guard.resolve(joined);
     try {
-        if (file.find('\0') != std::string::npos) throw InputError(printablePath(file), "file name contains a NUL character");
+        if (file.find('\0') != std::string::npos) throw InputError(errorLine(file), "file name contains a NUL character");
         if (!guard.allowOutside && !guard.contains(file))
             throw InputError(file, "outside the model's folder (pass --allow-external-paths to allow)");
         const std::string bytes = readFile(file, guard.maxSideFileBytes);
@@ -140,7 +141,7 @@ tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::str
 
 tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options,
                           std::vector<std::string>& warnings) {
-    if (path.find('\0') != std::string::npos) throw InputError(printablePath(path), "file name contains a NUL character");
+    if (path.find('\0') != std::string::npos) throw InputError(errorLine(path), "file name contains a NUL character");
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");
     if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a glTF file");

@@ -1,10 +1,10 @@
 // readFile: path checks, a non-blocking open, fstat checks, and a read bounded by the limit.
 #include "util/read_file.h"
 
+#include "util/error_line.h"
 #include "util/input_error.h"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -29,21 +29,6 @@ std::string overLimit(uint64_t size, uint64_t maxBytes) {
 
 }  // namespace
 
-std::string printablePath(const std::string& path) {
-    std::string out;
-    for (const char c : path) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02x", u);
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
-
 bool isRegularFile(const std::string& path) {
     struct stat st;
     return path.find('\0') == std::string::npos && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
@@ -51,7 +36,7 @@ bool isRegularFile(const std::string& path) {
 
 std::string readFile(const std::string& path, uint64_t maxBytes) {
     if (path.empty()) throw InputError("\"\"", "empty file name");
-    if (path.find('\0') != std::string::npos) throw InputError(printablePath(path), "file name contains a NUL character");
+    if (path.find('\0') != std::string::npos) throw InputError(errorLine(path), "file name contains a NUL character");
     struct stat st;
     if (::stat(path.c_str(), &st) != 0) {
         const int err = errno;

@@ -25,7 +25,4 @@ std::string readFile(const std::string& path, uint64_t maxBytes = kDefaultMaxFil
 // Whether `path` names an existing regular file, without opening it (stat only; a FIFO is never opened).
 bool isRegularFile(const std::string& path);
 
-// A path as it may appear in a message: control characters (a NUL, a newline, ESC) escaped as \xNN.
-std::string printablePath(const std::string& path);
-
 }  // namespace shadelab
