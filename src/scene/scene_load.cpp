@@ -120,6 +120,7 @@ void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImpor
 
 Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
     // stat only: nothing is opened before readFile has refused FIFOs and devices.
+    if (path.empty()) throw InputError("\"\"", "empty file name");
     std::error_code ec;
     if (path.find('\0') == std::string::npos && !fs::exists(path, ec)) throw InputError(path, "no such file");
     if (fs::is_directory(path, ec)) throw InputError(path, "is a directory, not a scene file");
