@@ -51,8 +51,13 @@ MaterialOverride parseMaterialRef(const JsonNode& n, const NamedMaterials& named
     std::string name = n.string();
     auto it = named.find(name);
     if (it != named.end()) return it->second;
+    // The first few names only: a file may define thousands (the message stays one short line).
+    constexpr size_t kListed = 8;
     std::string known;
-    for (const auto& [k, v] : named) known += (known.empty() ? "" : ", ") + k;
+    size_t listed = 0;
+    for (const auto& entry : named)
+        if (listed++ < kListed) known += (known.empty() ? "" : ", ") + entry.first;
+    if (named.size() > kListed) known += " and " + std::to_string(named.size() - kListed) + " more";
     n.fail("unknown material '" + name + "'; " +
            (known.empty() ? std::string("the file has no \"materials\"") : "named materials are: " + known));
 }
