@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -293,4 +294,20 @@ TEST(AppWindow, ProgressiveReferenceCompletesWhileTheWindowRuns) {
     Result v = view(scenePath + " --size 160x90 --frames 3 --script " + script);
     ASSERT_EQ(v.code, 0) << v.out;
     EXPECT_TRUE(fs::exists(window));
+}
+
+TEST(AppWindow, TracedGlassTreeExitsPromptlyAfterItsFrames) {
+    // Issue 11: 45 spheres with kr = kt = 1 at depth 64, every pixel glass. Before the ray tree was bounded
+    // and cancellable inside a tree, the reference workers never stopped and the viewer never exited;
+    // `timeout` turns such a hang into a failure (exit code 124) instead of a stuck test.
+    REQUIRE_XVFB();
+    const std::string script =
+        writeText("glass_tree_script.json", R"([{"frame": 0, "action": "setMode", "mode": "traced"}])");
+    const auto t0 = std::chrono::steady_clock::now();
+    Result v = view(test::sourcePath("bench/glass-tree.json") + " --size 320x180 --frames 5 --script " + script,
+                    "timeout 60 ");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("viewer, glass tree in Traced mode, --frames 5: exited after %.2f s (X server start included)\n",
+                seconds);
+    ASSERT_EQ(v.code, 0) << v.out;
 }

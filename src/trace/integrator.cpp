@@ -1,5 +1,5 @@
 // WhittedIntegrator: surface set-up (normals and checker exactly as the rasterizer's shaders), local
-// shading through shading::shadeLocal, hard shadows, and the kr / kt recursion.
+// shading through shading::shadeLocal, hard shadows, and the kr / kt recursion bounded by RayTreeLimits.
 #include "trace/integrator.h"
 
 #include "scene/coverage.h"
@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadelab::trace {
 namespace {
@@ -15,21 +16,61 @@ bool positive(const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0
 
 }  // namespace
 
-WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth)
+// The tree of one camera sample, walked depth first in a fixed order (refracted child, then reflected), so
+// which children the budget cuts depends only on the sample: never on threads, tiles or timing.
+struct WhittedIntegrator::Tree {
+    int64_t raysLeft;                       // secondary rays this sample may still trace
+    const std::atomic<bool>* cancel;
+    TreeStats stats;
+};
+
+WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, const RayTreeLimits& limits)
     : scene_(scene),
       maxDepth_(std::max(maxDepth, 0)),
       model_(scene.scene().model == ShadingModel::Phong ? shading::SL_MODEL_PHONG
-                                                       : shading::SL_MODEL_BLINN_PHONG) {}
+                                                       : shading::SL_MODEL_BLINN_PHONG),
+      limits_(limits) {}
 
-PrimarySample WhittedIntegrator::primary(const Ray& ray) const {
+PrimarySample WhittedIntegrator::primary(const Ray& ray, const std::atomic<bool>* cancel, TreeStats* stats) const {
+    Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, cancel, {}};
     const std::optional<Hit> hit = scene_.intersect(ray);
-    if (!hit) return {scene_.scene().background, kBackgroundId};
-    return {shade(ray, *hit, 0), scene_.coverageId(*hit)};
+    PrimarySample s{scene_.scene().background, kBackgroundId};
+    if (hit) s = {shade(ray, *hit, 0, glm::vec3(1.0f), tree), scene_.coverageId(*hit)};
+    if (stats) *stats = tree.stats;
+    return s;
 }
 
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth) const {
+    Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, nullptr, {}};
+    return radiance(ray, depth, glm::vec3(1.0f), tree);
+}
+
+glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const {
     const std::optional<Hit> hit = scene_.intersect(ray);
-    return hit ? shade(ray, *hit, depth) : scene_.scene().background;
+    return hit ? shade(ray, *hit, depth, weight, tree) : scene_.scene().background;
+}
+
+bool WhittedIntegrator::admit(const glm::vec3& weight, Tree& tree) const {
+    if (tree.stats.cancelled || (tree.cancel && tree.cancel->load(std::memory_order_relaxed))) {
+        tree.stats.cancelled = true;
+        return false;
+    }
+    // POV-Ray's adc_bailout: the child's whole contribution is weight ⊙ its radiance, so skipping it costs
+    // less than minWeight × (the largest radiance a ray can carry) in every channel.
+    const float w = std::max(weight.x, std::max(weight.y, weight.z));
+    if (w < limits_.minWeight) {
+        ++tree.stats.pruned;
+        tree.stats.prunedWeight += w;
+        return false;
+    }
+    // The budget bounds trees whose weights never fall (kr + kt >= 1, as in a glass tree).
+    if (tree.raysLeft <= 0) {
+        ++tree.stats.cut;
+        return false;
+    }
+    --tree.raysLeft;
+    ++tree.stats.secondaryRays;
+    return true;
 }
 
 Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit) const {
@@ -119,7 +160,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s) const {
     return I;
 }
 
-glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth) const {
+glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,
+                                   Tree& tree) const {
     const Surface s = surfaceAt(ray, hit);
     glm::vec3 I = local(ray, s);
     if (!scene_.scene().terms.reflections || depth >= maxDepth_) return I;
@@ -138,15 +180,15 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth) co
         const float cos2 = 1.0f - eta * eta * (1.0f - NoV * NoV);
         if (cos2 < 0.0f) {
             reflectWeight += m.kt;  // total internal reflection: the transmitted energy is reflected
-        } else {
+        } else if (admit(weight * m.kt, tree)) {
             const glm::vec3 T = glm::normalize(-eta * V + (eta * NoV - std::sqrt(cos2)) * N);
-            transmitted = m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1);
+            transmitted = m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1, weight * m.kt, tree);
         }
     }
-    if (positive(reflectWeight)) {
+    if (positive(reflectWeight) && admit(weight * reflectWeight, tree)) {
         // Whitted 1980: mirror direction 2N(N·V) − V.
         const glm::vec3 R = glm::normalize(2.0f * NoV * N - V);
-        I += reflectWeight * radiance(Ray{s.P + eps * s.Nf, R}, depth + 1);
+        I += reflectWeight * radiance(Ray{s.P + eps * s.Nf, R}, depth + 1, weight * reflectWeight, tree);
     }
     return I + transmitted;
 }

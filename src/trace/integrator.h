@@ -5,7 +5,9 @@
 
 #include "trace/ray.h"
 #include "trace/trace_scene.h"
+#include "trace/trace_settings.h"
 
+#include <atomic>
 #include <cstdint>
 #include <glm/vec3.hpp>
 
@@ -27,13 +29,27 @@ struct PrimarySample {
     uint32_t coverage = 0;      // coverage id of the first hit (scene/coverage.h), 0 for the background
 };
 
+// What one camera sample's ray tree did (RayTreeLimits). A skipped child contributes 0, as one past
+// maxDepth does, so the sample's error is at most prunedWeight × (the largest radiance a ray can carry).
+struct TreeStats {
+    int secondaryRays = 0;      // reflected and refracted rays traced
+    int pruned = 0;             // children not traced because their weight < minWeight
+    float prunedWeight = 0.0f;  // sum of those children's weights (max channel each)
+    int cut = 0;                // children not traced because the sample's maxRays were spent
+    bool cancelled = false;     // the cancel flag was seen: the colour is incomplete, throw it away
+};
+
 class WhittedIntegrator {
 public:
     // maxDepth: how many secondary bounces a path may take; 0 traces primary and shadow rays only.
-    WhittedIntegrator(const TraceScene& scene, int maxDepth);
+    // limits: how the tree is pruned within that depth (trace_settings.h).
+    WhittedIntegrator(const TraceScene& scene, int maxDepth, const RayTreeLimits& limits = {});
 
-    PrimarySample primary(const Ray& ray) const;
-    // Radiance arriving along `ray`, which is `depth` bounces from the camera. Background on a miss.
+    // One camera sample. `cancel`, when set, is read before every secondary ray: once it is true no
+    // further child is traced, so the call returns within about one shade() of it.
+    PrimarySample primary(const Ray& ray, const std::atomic<bool>* cancel = nullptr, TreeStats* stats = nullptr) const;
+    // Radiance arriving along `ray`, which is `depth` bounces from the camera, as the root of a tree of
+    // its own (weight 1, a fresh ray budget). Background on a miss.
     glm::vec3 radiance(const Ray& ray, int depth) const;
 
     Surface surfaceAt(const Ray& ray, const Hit& hit) const;
@@ -45,11 +61,16 @@ public:
     float visibility(const Surface& s, const Light& light) const;
 
 private:
-    glm::vec3 shade(const Ray& ray, const Hit& hit, int depth) const;
+    struct Tree;  // one sample's budget, cancel flag and stats
+    glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const;
+    glm::vec3 shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight, Tree& tree) const;
+    // Whether a child of weight `weight` is traced; counts it in the stats either way.
+    bool admit(const glm::vec3& weight, Tree& tree) const;
 
     const TraceScene& scene_;
     int maxDepth_;
     int model_;
+    RayTreeLimits limits_;
 };
 
 }  // namespace shadelab::trace

@@ -17,7 +17,7 @@ struct ProgressiveTrace::Job {
           settings(st),
           k(samplesPerAxis(st)),
           sampleView(makeViewSetup(scene->scene(), k * st.width, k * st.height)),
-          integrator(*scene, st.maxDepth >= 0 ? st.maxDepth : scene->scene().maxDepth),
+          integrator(*scene, st.maxDepth >= 0 ? st.maxDepth : scene->scene().maxDepth, st.rayTree),
           tiles(makeTiles(st.width, st.height, st.tileSize)) {}
 
     std::shared_ptr<const TraceScene> scene;

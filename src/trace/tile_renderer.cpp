@@ -32,7 +32,6 @@ bool renderTile(const WhittedIntegrator& integrator, const ViewSetup& sampleView
     const float count = float(k * k);
     const int centre = k / 2;
     for (int y = 0; y < tile.height; ++y) {
-        if (cancel && cancel->load(std::memory_order_relaxed)) return false;
         const int j = tile.y0 + y;
         for (int x = 0; x < tile.width; ++x) {
             const int i = tile.x0 + x;
@@ -40,7 +39,9 @@ bool renderTile(const WhittedIntegrator& integrator, const ViewSetup& sampleView
             uint32_t id = 0;
             for (int b = 0; b < k; ++b)
                 for (int a = 0; a < k; ++a) {
-                    const PrimarySample s = integrator.primary(sampleRay(sampleView, k, i, j, a, b));
+                    // The integrator also reads `cancel` before each secondary ray, so a deep tree stops too.
+                    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+                    const PrimarySample s = integrator.primary(sampleRay(sampleView, k, i, j, a, b), cancel);
                     sum += s.color;
                     if (a == centre && b == centre) id = s.coverage;
                 }
@@ -52,7 +53,8 @@ bool renderTile(const WhittedIntegrator& integrator, const ViewSetup& sampleView
             if (coverage) out.coverage[p] = id;
         }
     }
-    return true;
+    // A tree the flag stopped returns a partial colour: the last sample may have been one.
+    return !(cancel && cancel->load(std::memory_order_relaxed));
 }
 
 }  // namespace shadelab::trace

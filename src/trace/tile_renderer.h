@@ -35,7 +35,7 @@ Ray sampleRay(const ViewSetup& sampleView, int k, int i, int j, int a, int b);
 // Renders one tile. Colour: the k² samples summed in row order (b outer, a inner) from 0, then divided by
 // k². Coverage: the id seen by the centre-most sample (a, b) = (k/2, k/2), which for odd k is the pixel
 // centre and for even k the sample just below and right of it. Returns false, with `out` incomplete, when
-// `cancel` became true (checked before each row).
+// `cancel` became true (checked before each sample, and by the integrator before each secondary ray).
 bool renderTile(const WhittedIntegrator& integrator, const ViewSetup& sampleView, int k, bool coverage,
                 const Tile& tile, TileResult& out, const std::atomic<bool>* cancel = nullptr);
 

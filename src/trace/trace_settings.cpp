@@ -29,6 +29,12 @@ void validate(const TraceSettings& s) {
     if (s.threads < 0) throw std::invalid_argument("--threads must be >= 0 (0 = all cores), got " + std::to_string(s.threads));
     if (s.maxDepth < -1 || s.maxDepth > 64)
         throw std::invalid_argument("--depth must be in [0, 64], got " + std::to_string(s.maxDepth));
+    if (!(s.rayTree.minWeight >= 0.0f && s.rayTree.minWeight <= 1.0f))
+        throw std::invalid_argument("ray-tree minimum weight must be in [0, 1], got " +
+                                    std::to_string(s.rayTree.minWeight));
+    if (s.rayTree.maxRays < -1)
+        throw std::invalid_argument("ray-tree budget must be >= 0 secondary rays per sample (-1 = no limit), got " +
+                                    std::to_string(s.rayTree.maxRays));
     if (s.tileSize < 1) throw std::invalid_argument("tile size must be >= 1, got " + std::to_string(s.tileSize));
 }
 

@@ -7,6 +7,17 @@
 
 namespace shadelab::trace {
 
+// Bounds on the Whitted ray tree within maxDepth (docs/lighting.md, "The tracer's ray tree"). A ray's weight is
+// the componentwise product of the kr / kt factors along its path (1 for the camera ray); its contribution
+// to the sample is weight ⊙ radiance. With kr + kt <= 1 the weights shrink and minWeight ends every path;
+// with kr = kt = 1 they never do, and maxRays is what bounds the work.
+struct RayTreeLimits {
+    float minWeight = 1.0f / 255.0f;  // POV-Ray's adc_bailout: a child ray whose weight (max channel) is below
+                                      // this is not traced; fraction of the sample, [0, 1]; 0 = off
+    int maxRays = 1024;               // secondary (reflected + refracted) rays per camera sample, >= 0; -1 = no
+                                      // limit. A full tree of depth d <= 9 (2^(d+1) - 2 rays) is never cut
+};
+
 struct TraceSettings {
     int width = 1280;           // pixels, >= 1
     int height = 720;           // pixels, >= 1
@@ -15,6 +26,7 @@ struct TraceSettings {
     int maxDepth = -1;          // secondary-ray depth, >= 0; -1 = the scene's maxDepth
     int tileSize = 32;          // tile edge, pixels, >= 1
     bool coverage = true;       // also fill the coverage buffer
+    RayTreeLimits rayTree;      // pruning of secondary rays (weight threshold, per-sample ray budget)
 };
 
 // Throws std::invalid_argument with a message fit for the command line (e.g. "--spp must be a perfect
