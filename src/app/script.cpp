@@ -5,6 +5,7 @@
 #include "scene/json_reader.h"
 #include "util/atomic_file.h"
 #include "util/input_error.h"
+#include "util/warning.h"
 
 #include <cstdio>
 #include <glm/trigonometric.hpp>
@@ -52,8 +53,6 @@ const ActionInfo kActions[] = {
     {"waitReference", ActionKind::WaitReference, {"timeout"}},
     {"resizeWindow", ActionKind::ResizeWindow, {"width", "height"}},
 };
-
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
 
 std::string objectField(const JsonNode& a) {
     const JsonNode o = a.child("object");

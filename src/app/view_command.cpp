@@ -6,6 +6,7 @@
 #include "cli/raster_flags.h"
 #include "scene/scene_load.h"
 #include "util/input_error.h"
+#include "util/warning.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -44,8 +45,6 @@ const char* const kViewHelpTail =
     "\n"
     "The raster flags override the \"raster\" settings of the scene opened at start, not of scenes opened later.\n"
     "exit codes: 0 done, 1 bad input or no display (one line on stderr), 2 usage error\n";
-
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
 
 std::string defaultScenePath() {
 #ifdef SHADELAB_SOURCE_DIR

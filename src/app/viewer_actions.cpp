@@ -9,6 +9,7 @@
 #include "scene/scene_load.h"
 #include "util/atomic_file.h"
 #include "util/input_error.h"
+#include "util/warning.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -17,11 +18,6 @@
 #include <cstring>
 
 namespace shadelab::app {
-namespace {
-
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
-
-}  // namespace
 
 void Viewer::runScript() {
     if (!cursor_) return;

@@ -15,6 +15,7 @@
 #include "trace/trace_image.h"
 #include "util/atomic_file.h"
 #include "util/input_error.h"
+#include "util/warning.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,8 +25,6 @@
 
 namespace shadelab::cli {
 namespace {
-
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
 
 struct Rendered {
     Image8 pixels;
