@@ -247,8 +247,8 @@ void applyScriptAction(ViewerState& state, const ScriptAction& a, const std::str
         case ActionKind::SetTerm: setTerm(state, *parseTerm(a.text), a.on); break;
         case ActionKind::ToggleTerm: toggleTerm(state, *parseTerm(a.text)); break;
         case ActionKind::Progression: applyProgression(state, a.step); break;
-        case ActionKind::SetModel: setModel(state, parseShadingModel(a.text)); break;
-        case ActionKind::SwitchModel: switchModelKeepingHighlights(state, parseShadingModel(a.text), a.on); break;
+        case ActionKind::SetModel: setModel(state, *parseShadingModel(a.text)); break;
+        case ActionKind::SwitchModel: switchModelKeepingHighlights(state, *parseShadingModel(a.text), a.on); break;
         case ActionKind::SetMode: setMode(state, *parseViewMode(a.text)); break;
         case ActionKind::SetEncoding:
             setEncoding(state, a.text == "linear" ? Encoding::Linear : Encoding::Srgb);

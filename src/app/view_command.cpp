@@ -117,7 +117,7 @@ int viewCommand(int argc, char** argv) {
     if (positionals.size() > 1)
         throw UsageError("view takes at most one scene file, got " + std::to_string(positionals.size()));
     Encoding enc = Encoding::Srgb;
-    if (!encoding.empty()) enc = parseEncoding(encoding);
+    if (!encoding.empty()) enc = cli::parseChoice("--encoding", encoding, kEncodingNames);
 
     std::optional<Script> script;
     if (!scriptPath.empty()) script = loadScript(scriptPath);

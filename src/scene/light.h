@@ -1,5 +1,8 @@
-// Light: point or directional, RGB intensity Il, optional attenuation 1/(kc + kl·d + kq·d²) (design.md §1).
+// Light: point or directional, RGB intensity Il, optional attenuation 1/(kc + kl·d + kq·d²) (design.md §1),
+// and the name table of its type (the words of a scene file's and a script's "type").
 #pragma once
+
+#include "util/name_table.h"
 
 #include <glm/vec3.hpp>
 #include <string>
@@ -7,6 +10,14 @@
 namespace shadelab {
 
 enum class LightType { Point, Directional };
+
+inline constexpr EnumName<LightType> kLightTypeNames[] = {
+    {LightType::Point, "point"},
+    {LightType::Directional, "directional"},
+};
+
+inline const char* toString(LightType t) { return nameOf(kLightTypeNames, t); }
+inline std::optional<LightType> parseLightType(std::string_view name) { return lookupName(kLightTypeNames, name); }
 
 struct Light {
     LightType type = LightType::Point;

@@ -80,11 +80,7 @@ Camera parseCamera(const JsonNode& n) {
 Light parseLight(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"type", "name", "position", "direction", "color", "attenuation"});
     Light l;
-    JsonNode type = n.child("type");
-    std::string t = type.string();
-    if (t == "point") l.type = LightType::Point;
-    else if (t == "directional") l.type = LightType::Directional;
-    else type.fail("unknown light type '" + t + "'; expected point or directional");
+    l.type = n.child("type").oneOf(kLightTypeNames, "light type");
     if (auto f = n.find("name")) l.name = f->string();
     // The other type's fields are optional and unused, but kept so that a saved scene loads back exactly.
     if (l.type == LightType::Point) l.position = n.child("position").vec3();
@@ -208,20 +204,11 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
     if (auto f = root.find("title")) scene.title = f->string();
     if (auto f = root.find("notes")) scene.notes = f->string();
     if (auto f = root.find("camera")) scene.camera = parseCamera(*f);
-    if (auto f = root.find("model")) {
-        try {
-            scene.model = parseShadingModel(f->string());
-        } catch (const std::invalid_argument& e) {
-            f->fail(e.what());
-        }
-    }
+    if (auto f = root.find("model")) scene.model = f->oneOf(kShadingModelNames, "shading model");
     if (auto f = root.find("terms")) {
-        f->requireObject().warnUnknownKeys({"ambient", "diffuse", "specular", "shadows", "reflections"});
-        Terms& t = scene.terms;
-        const std::pair<const char*, bool*> switches[] = {{"ambient", &t.ambient}, {"diffuse", &t.diffuse},
-            {"specular", &t.specular}, {"shadows", &t.shadows}, {"reflections", &t.reflections}};
-        for (const auto& [key, value] : switches)
-            if (auto g = f->find(key)) *value = g->boolean();
+        f->requireObject().warnUnknownKeys(canonicalNames(kTermNames));
+        for (const EnumName<Term>& term : kTermNames)
+            if (auto g = f->find(term.name)) termFlag(scene.terms, term.value) = g->boolean();
     }
     if (auto f = root.find("ambient")) scene.ambient = f->rgb();
     if (auto f = root.find("background")) scene.background = f->rgb();
@@ -338,8 +325,8 @@ std::string sceneToJson(const Scene& scene) {
                      {"fovY", exact(c.fovY)}};
     doc["model"] = toString(scene.model);
     const Terms& t = scene.terms;
-    doc["terms"] = {{"ambient", t.ambient}, {"diffuse", t.diffuse}, {"specular", t.specular},
-                    {"shadows", t.shadows}, {"reflections", t.reflections}};
+    doc["terms"] = OJson::object();
+    for (const EnumName<Term>& term : kTermNames) doc["terms"][term.name] = termEnabled(t, term.value);
     doc["ambient"] = vec(scene.ambient);
     doc["background"] = vec(scene.background);
     doc["maxDepth"] = scene.maxDepth;
@@ -350,7 +337,7 @@ std::string sceneToJson(const Scene& scene) {
 
     OJson lights = OJson::array();
     for (const Light& l : scene.lights) {
-        lights.push_back({{"type", l.type == LightType::Point ? "point" : "directional"}, {"name", l.name},
+        lights.push_back({{"type", toString(l.type)}, {"name", l.name},
                           {"position", vec(l.position)}, {"direction", vec(l.direction)},
                           {"color", vec(l.color)}, {"attenuation", vec(l.attenuation)}});
     }
