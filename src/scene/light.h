@@ -5,6 +5,7 @@
 #include "util/name_table.h"
 
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 
 namespace shadelab {
@@ -26,6 +27,20 @@ struct Light {
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the direction light travels
     glm::vec3 color{1.0f};                   // Il, linear RGB intensity
     glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // (kc, kl, kq); point lights only
+};
+
+// Each set field replaces the same field of the light it is applied to (a viewer script's addLight and
+// setLight; a scene file's light reads the same fields the same way).
+struct LightOverride {
+    std::optional<glm::vec3> position;       // world units
+    std::optional<glm::vec3> direction;      // unit vector, the direction light travels
+    std::optional<glm::vec3> color;          // Il, linear RGB intensity
+
+    void applyTo(Light& l) const {
+        if (position) l.position = *position;
+        if (direction) l.direction = *direction;
+        if (color) l.color = *color;
+    }
 };
 
 }  // namespace shadelab
