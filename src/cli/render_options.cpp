@@ -88,10 +88,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);
     if (auto v = args.value("--depth")) o.depth = parseInt("--depth", *v, 0, 64);
     if (auto v = args.value("--gl-backend")) o.backend = parseChoice("--gl-backend", *v, gl::kGlBackendNames);
-    for (const std::string& name : rasterValuedFlags())
-        if (auto v = args.value(name)) parseRasterFlag(name, *v, o.raster);
-    for (const std::string& name : rasterSwitchFlags())
-        if (args.flag(name)) parseRasterFlag(name, "", o.raster);
+    o.raster = parseRasterFlags(args);
     o.allowExternalPaths = args.flag("--allow-external-paths");
     o.verbose = args.flag("--verbose");
     o.timings = args.flag("--timings");
