@@ -1,4 +1,5 @@
-// `shadelab view`: the viewer's command line, parsed here with cli::Args; app/app.h runs the window.
+// `shadelab view`: the viewer's command line, parsed here with cli::Args; app/app.h runs the window. A build
+// without the viewer (SHADELAB_BUILD_VIEWER=OFF) links view_unavailable.cpp instead, which only says so.
 #pragma once
 
 namespace shadelab::cli {
