@@ -411,7 +411,7 @@ TEST(AppScript, ParsesFramesAndActions) {
     EXPECT_EQ(sc.actions[2].frame, 5);
     EXPECT_EQ(sc.actions[3].frame, 5);
     EXPECT_EQ(sc.lastFrame(), 9);
-    EXPECT_FALSE(isStateAction(sc.actions[4].kind));
+    EXPECT_FALSE(isStateAction(sc.actions[4]));
     ScriptCursor cursor(sc);
     int dueAtZero = 0;
     while (cursor.next(0)) ++dueAtZero;
@@ -421,7 +421,7 @@ TEST(AppScript, ParsesFramesAndActions) {
 
     ViewerState a = defaultState(), b = defaultState();
     for (const ScriptAction& act : sc.actions)
-        if (isStateAction(act.kind)) applyScriptAction(a, act, sc.file);
+        if (isStateAction(act)) applyScriptAction(a, act, sc.file);
     setShininess(b, idOf(b, "gold"), 128.0f);
     setTerm(b, Term::Specular, false);
     setModel(b, ShadingModel::BlinnPhong);
@@ -433,12 +433,51 @@ TEST(AppScript, ParsesFramesAndActions) {
     EXPECT_EQ(parse(R"([{"action": "frameAll"}])").actions.size(), 1u);
 }
 
+TEST(AppScript, ActionsAreParsedOnceIntoTypedFields) {
+    const Script sc = parse(R"([
+        {"action": "setTerm", "term": "shadows", "on": false},
+        {"action": "switchModel", "model": "blinn", "all": true},
+        {"action": "setMode", "mode": "difference"},
+        {"action": "setEncoding", "encoding": "linear"},
+        {"action": "addLight", "type": "directional", "direction": [0, -2, 0]},
+        {"action": "setMaterial", "object": 2, "s": 7, "kr": 0.5},
+        {"action": "resizeWindow", "width": 640, "height": 480}
+    ])");
+    ASSERT_EQ(sc.actions.size(), 7u);
+    const auto& term = std::get<actions::SetTerm>(sc.actions[0].action);
+    EXPECT_EQ(term.term, Term::Shadows);
+    EXPECT_FALSE(term.on);
+    const auto& model = std::get<actions::SwitchModel>(sc.actions[1].action);
+    EXPECT_EQ(model.model, ShadingModel::BlinnPhong) << "blinn is the table's alias, as on the command line";
+    EXPECT_TRUE(model.allObjects);
+    EXPECT_EQ(std::get<actions::SetMode>(sc.actions[2].action).mode, ViewMode::Difference);
+    EXPECT_EQ(std::get<actions::SetEncoding>(sc.actions[3].action).encoding, Encoding::Linear);
+    const auto& light = std::get<actions::AddLight>(sc.actions[4].action);
+    EXPECT_EQ(light.type, LightType::Directional);
+    EXPECT_EQ(light.light.direction, glm::vec3(0, -1, 0)) << "the scene file's unit-vector reader";
+    EXPECT_FALSE(light.light.position.has_value());
+    const auto& material = std::get<actions::SetMaterial>(sc.actions[5].action);
+    EXPECT_EQ(material.object, "#2");
+    EXPECT_EQ(material.material.s, 7.0f);
+    EXPECT_EQ(material.material.kr, glm::vec3(0.5f));
+    EXPECT_FALSE(material.material.md.has_value());
+    EXPECT_FALSE(isStateAction(sc.actions[6]));
+    EXPECT_EQ(std::get<actions::ResizeWindow>(sc.actions[6].action).height, 480);
+    // Words outside a table are refused at their path, listing the table.
+    EXPECT_EQ(parseError(R"([{"action": "setMode", "mode": "both"}])"),
+              "actions.json: actions[0].mode: unknown view mode 'both'; expected raster, traced, split or difference");
+    EXPECT_EQ(parseError(R"([{"action": "setEncoding", "encoding": "gamma"}])"),
+              "actions.json: actions[0].encoding: unknown encoding 'gamma'; expected srgb or linear");
+    EXPECT_EQ(parseError(R"([{"action": "addLight", "type": "spot"}])"),
+              "actions.json: actions[0].type: unknown light type 'spot'; expected point or directional");
+}
+
 TEST(AppScript, SetRasterChangesOnlyTheFieldsGiven) {
     const Script sc = parse(R"([{"action": "setRaster", "shadowMapSize": 512, "pcf": true},
                                 {"action": "setRaster", "shadowMapSize": "auto", "normalBias": 0.75},
                                 {"action": "setRaster", "depthBias": 2, "reflectionCubeSize": 64}])");
     ASSERT_EQ(sc.actions.size(), 3u);
-    EXPECT_TRUE(isStateAction(sc.actions[0].kind));
+    EXPECT_TRUE(isStateAction(sc.actions[0]));
     ViewerState a = defaultState(), b = defaultState();
     applyScriptAction(a, sc.actions[0], sc.file);
     EXPECT_EQ(a.scene.raster.shadowMapSize, 512);

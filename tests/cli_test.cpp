@@ -178,6 +178,38 @@ TEST(Cli, UsageErrorsExitTwo) {
     EXPECT_FALSE(fs::exists("x.png"));
 }
 
+// One name table per enum: the flags accept the tables' words (aliases included) and their errors name the
+// flag and list the words; image/ and scene/ know no flags.
+TEST(Cli, EnumFlagsListTheirWordsAndAcceptTheSameAliasesAsSceneFiles) {
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    const std::pair<const char*, const char*> cases[] = {
+        {"--encoding gamma", "shadelab: usage error: --encoding: expected srgb or linear, got 'gamma'"},
+        {"--model gouraud", "shadelab: usage error: --model: expected phong or blinn-phong, got 'gouraud'"},
+        {"--renderer gpu", "shadelab: usage error: --renderer: expected raster, trace or both, got 'gpu'"},
+        {"--terms ambient,glow", "shadelab: usage error: --terms: unknown term 'glow'; expected ambient, diffuse, "
+                                 "specular, shadows, reflections or none"},
+    };
+    for (const auto& [flags, message] : cases) {
+        Result r = run("render " + scene + " -o x.png " + flags);
+        EXPECT_EQ(r.code, 2) << flags;
+        EXPECT_EQ(r.out, std::string(message) + "\n") << flags;
+    }
+    // "blinn" on the command line and in a scene file give the same pixels as "blinn-phong".
+    const std::string canonical = test::outputPath("model_blinn_phong.png");
+    const std::string alias = test::outputPath("model_blinn.png"), file = test::outputPath("model_blinn_file.png");
+    std::string text = readAll(scene);
+    const size_t at = text.find(R"("model": "phong")");
+    ASSERT_NE(at, std::string::npos) << "the default scene's model changed; update this test";
+    text.replace(at, 16, R"("model": "blinn")");
+    const std::string blinnScene = writeText("model_blinn_scene.json", text);
+    ASSERT_EQ(run("render " + scene + " -o " + canonical + " --size 96x54 --model blinn-phong").code, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + alias + " --size 96x54 --model blinn").code, 0);
+    Result r = run("render " + blinnScene + " -o " + file + " --size 96x54");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(readAll(alias), readAll(canonical));
+    EXPECT_EQ(readAll(file), readAll(canonical));
+}
+
 TEST(Cli, HelpExitsZero) {
     Result r = run("--help");
     EXPECT_EQ(r.code, 0);

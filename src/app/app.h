@@ -1,5 +1,5 @@
-// The viewer's entry points: `shadelab view` (viewCommand, parsing the command line) and runViewer
-// (opening the window with a ready state). See docs/viewer.md.
+// The viewer's entry point: runViewer opens the window with a ready state and options. The `shadelab view`
+// command line is parsed in cli/view_command.cpp; app/ knows nothing of cli/. See docs/viewer.md.
 #pragma once
 
 #include "app/script.h"
@@ -25,9 +25,6 @@ struct ViewerOptions {
 // Opens the window and runs until it closes or the frames and script are done. Returns the exit code.
 // Throws InputError for bad input (scene, script actions) and std::runtime_error for window/GL failures.
 int runViewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script);
-
-// `shadelab view [scene] [options]`: argv[1] is "view". Throws UsageError (exit 2) and InputError (exit 1).
-int viewCommand(int argc, char** argv);
 
 // The folder hot reload reads shaders from: $SHADELAB_SHADER_DIR, else the source tree's shaders/.
 std::string shaderSourceDir();

@@ -2,6 +2,7 @@
 #include "app/panels.h"
 
 #include <imgui.h>
+#include <iterator>
 
 namespace shadelab::app {
 
@@ -13,11 +14,11 @@ void drawLightingSection(PanelContext& ctx) {
     if (ImGui::RadioButton("Blinn-Phong  (N·H)^s", &model, 1)) setModel(s, ShadingModel::BlinnPhong);
 
     ImGui::TextDisabled("Terms");
-    const Term terms[] = {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections};
-    for (int i = 0; i < 5; ++i) {
-        bool on = termEnabled(s.scene.terms, terms[i]);
+    for (size_t i = 0; i < std::size(kTermNames); ++i) {
+        const Term t = kTermNames[i].value;
+        bool on = termEnabled(s.scene.terms, t);
         if (i != 0 && i != 3) ImGui::SameLine();
-        if (ImGui::Checkbox(toString(terms[i]), &on)) setTerm(s, terms[i], on);
+        if (ImGui::Checkbox(kTermNames[i].name, &on)) setTerm(s, t, on);
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("raster: shadow maps, mirror planes, environment cubes; transmission (kt): reference only");

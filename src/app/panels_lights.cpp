@@ -20,7 +20,7 @@ void drawLightsSection(PanelContext& ctx) {
         Light l = s.scene.lights[i];
         ImGui::PushID(int(i));
         const std::string title = "L" + std::to_string(i + 1) + "  " + (l.name.empty() ? "light" : l.name) +
-                                  (l.type == LightType::Point ? "  (point)" : "  (directional)");
+                                  "  (" + toString(l.type) + ")";
         const bool open = ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "%s", title.c_str());
         if (open) {
             bool changed = false;

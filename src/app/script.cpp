@@ -1,59 +1,20 @@
-// Script parsing (JSON through the scene loader's path-naming reader) and the state actions.
+// Script parsing (JSON through the scene loader's path-naming reader, and its material, light and raster
+// readers) into typed actions, once; and the state actions, applied without parsing anything again.
 #include "app/script.h"
 
-#include "app/material_presets.h"
 #include "scene/json_reader.h"
+#include "scene/scene_json.h"
 #include "util/read_file.h"
 #include "util/input_error.h"
+#include "util/warning.h"
 
-#include <cstdio>
 #include <glm/trigonometric.hpp>
+#include <type_traits>
 
 namespace shadelab::app {
 namespace {
 
-struct ActionInfo {
-    const char* name;
-    ActionKind kind;
-    std::initializer_list<const char*> fields;   // besides "action" and "frame"
-};
-
-const ActionInfo kActions[] = {
-    {"setShininess", ActionKind::SetShininess, {"object", "s"}},
-    {"setMaterial", ActionKind::SetMaterial, {"object", "ma", "md", "ms", "s", "kr", "kt", "ior"}},
-    {"preset", ActionKind::Preset, {"object", "name"}},
-    {"select", ActionKind::Select, {"object"}},
-    {"setTerm", ActionKind::SetTerm, {"term", "on"}},
-    {"toggleTerm", ActionKind::ToggleTerm, {"term"}},
-    {"progression", ActionKind::Progression, {"step"}},
-    {"setModel", ActionKind::SetModel, {"model"}},
-    {"switchModel", ActionKind::SwitchModel, {"model", "all"}},
-    {"setMode", ActionKind::SetMode, {"mode"}},
-    {"setEncoding", ActionKind::SetEncoding, {"encoding"}},
-    {"setSplit", ActionKind::SetSplit, {"position"}},
-    {"setAmbient", ActionKind::SetAmbient, {"value"}},
-    {"setRaster", ActionKind::SetRaster, {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"}},
-    {"addLight", ActionKind::AddLight, {"type", "position", "direction", "color"}},
-    {"removeLight", ActionKind::RemoveLight, {"index"}},
-    {"setLight", ActionKind::SetLight, {"index", "position", "direction", "color"}},
-    {"orbit", ActionKind::Orbit, {"yaw", "pitch"}},
-    {"zoom", ActionKind::Zoom, {"steps"}},
-    {"frameAll", ActionKind::FrameAll, {}},
-    {"resetCamera", ActionKind::ResetCamera, {}},
-    {"probe", ActionKind::Probe, {"x", "y"}},
-    {"clearProbe", ActionKind::ClearProbe, {}},
-    {"screenshot", ActionKind::Screenshot, {"path"}},
-    {"referenceScreenshot", ActionKind::ReferenceScreenshot, {"path"}},
-    {"windowScreenshot", ActionKind::WindowScreenshot, {"path"}},
-    {"probeReport", ActionKind::ProbeReport, {"path"}},
-    {"saveScene", ActionKind::SaveScene, {"path"}},
-    {"open", ActionKind::Open, {"path"}},
-    {"reloadShaders", ActionKind::ReloadShaders, {"dir"}},
-    {"waitReference", ActionKind::WaitReference, {"timeout"}},
-    {"resizeWindow", ActionKind::ResizeWindow, {"width", "height"}},
-};
-
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
+using namespace actions;
 
 std::string objectField(const JsonNode& a) {
     const JsonNode o = a.child("object");
@@ -61,110 +22,105 @@ std::string objectField(const JsonNode& a) {
     return o.string();
 }
 
-void parseFields(const JsonNode& a, ScriptAction& act) {
-    auto optVec = [&](const char* key, bool unit) -> std::optional<glm::vec3> {
-        if (auto n = a.find(key)) return unit ? n->unitVec3() : n->vec3();
-        return std::nullopt;
-    };
-    switch (act.kind) {
-        case ActionKind::SetShininess:
-            act.object = objectField(a);
-            act.value = a.child("s").inRange(0.0f, kMaxShininess, false, false);
-            break;
-        case ActionKind::SetMaterial:
-            act.object = objectField(a);
-            if (auto n = a.find("ma")) act.material.ma = n->rgb();
-            if (auto n = a.find("md")) act.material.md = n->rgb();
-            if (auto n = a.find("ms")) act.material.ms = n->rgb();
-            if (auto n = a.find("kr")) act.material.kr = n->rgb();
-            if (auto n = a.find("kt")) act.material.kt = n->rgb();
-            if (auto n = a.find("s")) act.material.s = n->inRange(0.0f, kMaxShininess, false, false);
-            if (auto n = a.find("ior")) act.material.ior = n->positive();
-            break;
-        case ActionKind::Preset:
-            act.object = objectField(a);
-            act.text = a.child("name").string();
-            if (!findMaterialPreset(act.text)) a.failAt("name", "unknown preset '" + act.text + "'");
-            break;
-        case ActionKind::Select: act.object = objectField(a); break;
-        case ActionKind::SetTerm:
-        case ActionKind::ToggleTerm:
-            act.text = a.child("term").string();
-            if (!parseTerm(act.text))
-                a.failAt("term", "unknown term '" + act.text +
-                                     "'; expected ambient, diffuse, specular, shadows or reflections");
-            if (act.kind == ActionKind::SetTerm) act.on = a.child("on").boolean();
-            break;
-        case ActionKind::Progression: act.step = a.child("step").integerIn(1, kProgressionSteps); break;
-        case ActionKind::SetModel:
-        case ActionKind::SwitchModel:
-            act.text = a.child("model").string();
-            if (act.text != "phong" && act.text != "blinn-phong")
-                a.failAt("model", "expected phong or blinn-phong, got '" + act.text + "'");
-            if (auto n = a.find("all")) act.on = n->boolean();
-            else act.on = false;
-            break;
-        case ActionKind::SetMode:
-            act.text = a.child("mode").string();
-            if (!parseViewMode(act.text))
-                a.failAt("mode", "expected raster, traced, split or difference, got '" + act.text + "'");
-            break;
-        case ActionKind::SetEncoding:
-            act.text = a.child("encoding").string();
-            if (act.text != "srgb" && act.text != "linear")
-                a.failAt("encoding", "expected srgb or linear, got '" + act.text + "'");
-            break;
-        case ActionKind::SetSplit: act.value = a.child("position").inRange(0.0f, 1.0f, false, false); break;
-        case ActionKind::SetAmbient: act.color = a.child("value").rgb(); break;
-        case ActionKind::SetRaster: act.raster = parseRasterOverride(a); break;
-        case ActionKind::AddLight:
-            act.text = a.has("type") ? a.child("type").string() : "point";
-            if (act.text != "point" && act.text != "directional")
-                a.failAt("type", "expected point or directional, got '" + act.text + "'");
-            act.position = optVec("position", false);
-            act.direction = optVec("direction", true);
-            if (auto n = a.find("color")) act.color = n->rgb();
-            break;
-        case ActionKind::RemoveLight: act.step = a.child("index").integerIn(0, kMaxLights - 1); break;
-        case ActionKind::SetLight:
-            act.step = a.child("index").integerIn(0, kMaxLights - 1);
-            act.position = optVec("position", false);
-            act.direction = optVec("direction", true);
-            if (auto n = a.find("color")) act.color = n->rgb();
-            break;
-        case ActionKind::Orbit:
-            act.value = a.has("yaw") ? a.child("yaw").finite() : 0.0f;
-            act.value2 = a.has("pitch") ? a.child("pitch").finite() : 0.0f;
-            break;
-        case ActionKind::Zoom: act.value = a.child("steps").finite(); break;
-        case ActionKind::Probe:
-            act.step = a.child("x").integerIn(0, 16383);
-            act.y = a.child("y").integerIn(0, 16383);
-            break;
-        case ActionKind::Screenshot:
-        case ActionKind::ReferenceScreenshot:
-        case ActionKind::WindowScreenshot:
-        case ActionKind::ProbeReport:
-        case ActionKind::SaveScene:
-        case ActionKind::Open:
-            act.text = a.child("path").string();
-            if (act.text.empty()) a.failAt("path", "must not be empty");
-            break;
-        case ActionKind::WaitReference:
-            act.value = a.has("timeout") ? a.child("timeout").positive() : 60.0f;
-            break;
-        case ActionKind::ResizeWindow:
-            act.step = a.child("width").integerIn(1, 16384);
-            act.y = a.child("height").integerIn(1, 16384);
-            break;
-        case ActionKind::ReloadShaders:
-            if (auto n = a.find("dir")) act.text = n->string();
-            break;
-        case ActionKind::FrameAll:
-        case ActionKind::ResetCamera:
-        case ActionKind::ClearProbe: break;
-    }
+template <typename PathAction>
+Action pathAction(const JsonNode& a) {
+    std::string path = a.child("path").string();
+    if (path.empty()) a.failAt("path", "must not be empty");
+    return PathAction{std::move(path)};
 }
+
+float optionalFinite(const JsonNode& a, const char* key) { return a.has(key) ? a.child(key).finite() : 0.0f; }
+
+// Every action: its name, its fields besides "action" and "frame", and its parser (fields in list order).
+struct ActionInfo {
+    const char* name;
+    std::initializer_list<const char*> fields;
+    Action (*parse)(const JsonNode& a);
+};
+
+const ActionInfo kActions[] = {
+    {"setShininess", {"object", "s"},
+     [](const JsonNode& a) -> Action {
+         return SetShininess{objectField(a), a.child("s").inRange(0.0f, kMaxShininess, false, false)};
+     }},
+    {"setMaterial", {"object", "ma", "md", "ms", "s", "kr", "kt", "ior"},
+     [](const JsonNode& a) -> Action { return SetMaterial{objectField(a), parseMaterialOverride(a)}; }},
+    {"preset", {"object", "name"},
+     [](const JsonNode& a) -> Action {
+         Preset p;
+         p.object = objectField(a);
+         const std::string name = a.child("name").string();
+         p.preset = findMaterialPreset(name);
+         if (!p.preset) a.failAt("name", "unknown preset '" + name + "'");
+         return p;
+     }},
+    {"select", {"object"}, [](const JsonNode& a) -> Action { return Select{objectField(a)}; }},
+    {"setTerm", {"term", "on"},
+     [](const JsonNode& a) -> Action {
+         return SetTerm{a.child("term").oneOf(kTermNames, "term"), a.child("on").boolean()};
+     }},
+    {"toggleTerm", {"term"},
+     [](const JsonNode& a) -> Action { return ToggleTerm{a.child("term").oneOf(kTermNames, "term")}; }},
+    {"progression", {"step"},
+     [](const JsonNode& a) -> Action { return Progression{a.child("step").integerIn(1, kProgressionSteps)}; }},
+    {"setModel", {"model"},
+     [](const JsonNode& a) -> Action {
+         return SetModel{a.child("model").oneOf(kShadingModelNames, "shading model")};
+     }},
+    {"switchModel", {"model", "all"},
+     [](const JsonNode& a) -> Action {
+         return SwitchModel{a.child("model").oneOf(kShadingModelNames, "shading model"),
+                            a.has("all") && a.child("all").boolean()};
+     }},
+    {"setMode", {"mode"},
+     [](const JsonNode& a) -> Action { return SetMode{a.child("mode").oneOf(kViewModeNames, "view mode")}; }},
+    {"setEncoding", {"encoding"},
+     [](const JsonNode& a) -> Action {
+         return SetEncoding{a.child("encoding").oneOf(kEncodingNames, "encoding")};
+     }},
+    {"setSplit", {"position"},
+     [](const JsonNode& a) -> Action { return SetSplit{a.child("position").inRange(0.0f, 1.0f, false, false)}; }},
+    {"setAmbient", {"value"}, [](const JsonNode& a) -> Action { return SetAmbient{a.child("value").rgb()}; }},
+    {"setRaster", {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"},
+     [](const JsonNode& a) -> Action { return SetRaster{parseRasterOverride(a)}; }},
+    {"addLight", {"type", "position", "direction", "color"},
+     [](const JsonNode& a) -> Action {
+         const LightType type = a.has("type") ? a.child("type").oneOf(kLightTypeNames, "light type") : LightType::Point;
+         return AddLight{type, parseLightOverride(a)};
+     }},
+    {"removeLight", {"index"},
+     [](const JsonNode& a) -> Action { return RemoveLight{a.child("index").integerIn(0, kMaxLights - 1)}; }},
+    {"setLight", {"index", "position", "direction", "color"},
+     [](const JsonNode& a) -> Action {
+         return SetLight{a.child("index").integerIn(0, kMaxLights - 1), parseLightOverride(a)};
+     }},
+    {"orbit", {"yaw", "pitch"},
+     [](const JsonNode& a) -> Action { return Orbit{optionalFinite(a, "yaw"), optionalFinite(a, "pitch")}; }},
+    {"zoom", {"steps"}, [](const JsonNode& a) -> Action { return Zoom{a.child("steps").finite()}; }},
+    {"frameAll", {}, [](const JsonNode&) -> Action { return FrameAll{}; }},
+    {"resetCamera", {}, [](const JsonNode&) -> Action { return ResetCamera{}; }},
+    {"probe", {"x", "y"},
+     [](const JsonNode& a) -> Action {
+         return Probe{a.child("x").integerIn(0, 16383), a.child("y").integerIn(0, 16383)};
+     }},
+    {"clearProbe", {}, [](const JsonNode&) -> Action { return ClearProbe{}; }},
+    {"screenshot", {"path"}, pathAction<Screenshot>},
+    {"referenceScreenshot", {"path"}, pathAction<ReferenceScreenshot>},
+    {"windowScreenshot", {"path"}, pathAction<WindowScreenshot>},
+    {"probeReport", {"path"}, pathAction<ProbeReport>},
+    {"saveScene", {"path"}, pathAction<SaveScene>},
+    {"open", {"path"}, pathAction<Open>},
+    {"reloadShaders", {"dir"},
+     [](const JsonNode& a) -> Action { return ReloadShaders{a.has("dir") ? a.child("dir").string() : ""}; }},
+    {"waitReference", {"timeout"},
+     [](const JsonNode& a) -> Action {
+         return WaitReference{a.has("timeout") ? a.child("timeout").positive() : 60.0f};
+     }},
+    {"resizeWindow", {"width", "height"},
+     [](const JsonNode& a) -> Action {
+         return ResizeWindow{a.child("width").integerIn(1, 16384), a.child("height").integerIn(1, 16384)};
+     }},
+};
 
 [[noreturn]] void failAction(const std::string& file, const ScriptAction& a, const std::string& field,
                              const std::string& reason) {
@@ -173,11 +129,81 @@ void parseFields(const JsonNode& a, ScriptAction& act) {
     throw InputError(file, place, reason);
 }
 
-uint32_t resolveObject(const ViewerState& state, const ScriptAction& a, const std::string& file) {
-    if (auto id = findObject(state.scene, a.object)) return *id;
-    failAction(file, a, "object", "no object '" + a.object + "' in the scene (names, or #1..#" +
-                                      std::to_string(objectCount(state.scene)) + ")");
-}
+// Applies each state action; window actions have no overload here, which is what isStateAction asks.
+struct StateApplier {
+    ViewerState& state;
+    const ScriptAction& a;
+    const std::string& file;
+
+    uint32_t object(const std::string& nameOrId) const {
+        if (auto id = findObject(state.scene, nameOrId)) return *id;
+        failAction(file, a, "object", "no object '" + nameOrId + "' in the scene (names, or #1..#" +
+                                          std::to_string(objectCount(state.scene)) + ")");
+    }
+    void requireLight(int index) const {
+        if (size_t(index) >= state.scene.lights.size())
+            failAction(file, a, "index", "no light " + std::to_string(index) + " (the scene has " +
+                                             std::to_string(state.scene.lights.size()) + ")");
+    }
+
+    void operator()(const SetShininess& x) const { setShininess(state, object(x.object), x.s); }
+    void operator()(const SetMaterial& x) const {
+        const uint32_t id = object(x.object);
+        Material m = objectMaterial(state.scene, id);
+        x.material.applyTo(m);
+        setObjectMaterial(state, id, m);
+    }
+    void operator()(const Preset& x) const { applyPreset(state, object(x.object), *x.preset); }
+    void operator()(const Select& x) const { select(state, object(x.object)); }
+    void operator()(const SetTerm& x) const { setTerm(state, x.term, x.on); }
+    void operator()(const ToggleTerm& x) const { toggleTerm(state, x.term); }
+    void operator()(const Progression& x) const { applyProgression(state, x.step); }
+    void operator()(const SetModel& x) const { setModel(state, x.model); }
+    void operator()(const SwitchModel& x) const { switchModelKeepingHighlights(state, x.model, x.allObjects); }
+    void operator()(const SetMode& x) const { setMode(state, x.mode); }
+    void operator()(const SetEncoding& x) const { setEncoding(state, x.encoding); }
+    void operator()(const SetSplit& x) const { setSplitPosition(state, x.position); }
+    void operator()(const SetAmbient& x) const { setAmbient(state, x.Ia); }
+    void operator()(const SetRaster& x) const {
+        RasterSettings r = state.scene.raster;
+        x.raster.applyTo(r);
+        setRasterSettings(state, r);
+    }
+    void operator()(const AddLight& x) const {
+        const int i = addLight(state, x.type);
+        if (i < 0) failAction(file, a, "", "the scene already has " + std::to_string(kMaxLights) + " lights");
+        Light l = state.scene.lights[size_t(i)];
+        x.light.applyTo(l);
+        setLight(state, i, l);
+    }
+    void operator()(const RemoveLight& x) const {
+        requireLight(x.index);
+        removeLight(state, x.index);
+    }
+    void operator()(const SetLight& x) const {
+        requireLight(x.index);
+        Light l = state.scene.lights[size_t(x.index)];
+        x.light.applyTo(l);
+        setLight(state, x.index, l);
+    }
+    void operator()(const Orbit& x) const {
+        OrbitCamera o = state.orbit;
+        orbitRotate(o, glm::radians(x.yaw), glm::radians(x.pitch));
+        applyOrbit(state, o);
+    }
+    void operator()(const Zoom& x) const {
+        OrbitCamera o = state.orbit;
+        orbitZoom(o, x.steps);
+        applyOrbit(state, o);
+    }
+    void operator()(const FrameAll&) const { frameAll(state); }
+    void operator()(const ResetCamera&) const { resetCamera(state); }
+    void operator()(const Probe& x) const { setProbe(state, x.x, x.y); }
+    void operator()(const ClearProbe&) const { clearProbe(state); }
+};
+
+template <typename T>
+constexpr bool kIsStateAction = std::is_invocable_v<StateApplier, const T&>;
 
 }  // namespace
 
@@ -206,7 +232,6 @@ Script parseScript(const std::string& text, const std::string& file) {
         for (const ActionInfo& candidate : kActions)
             if (act.name == candidate.name) info = &candidate;
         if (!info) a.failAt("action", "unknown action '" + act.name + "' (docs/viewer.md lists them)");
-        act.kind = info->kind;
         if (auto f = a.find("frame")) {
             const int n = f->integerIn(0, 1 << 24);
             if (n < frame) f->fail("frames must not decrease (the previous action runs at frame " +
@@ -221,7 +246,7 @@ Script parseScript(const std::string& text, const std::string& file) {
             for (const char* k : known) ok = ok || item.key() == k;
             if (!ok) a.failAt(item.key(), "not a field of '" + act.name + "'");
         }
-        parseFields(a, act);
+        act.action = info->parse(a);
         script.actions.push_back(std::move(act));
     }
     return script;
@@ -229,83 +254,17 @@ Script parseScript(const std::string& text, const std::string& file) {
 
 Script loadScript(const std::string& path) { return parseScript(readFile(path, kMaxScriptFileBytes), path); }
 
-bool isStateAction(ActionKind kind) { return kind < ActionKind::Screenshot; }
+bool isStateAction(const ScriptAction& action) {
+    return std::visit([](const auto& x) { return kIsStateAction<std::decay_t<decltype(x)>>; }, action.action);
+}
 
 void applyScriptAction(ViewerState& state, const ScriptAction& a, const std::string& file) {
-    switch (a.kind) {
-        case ActionKind::SetShininess: setShininess(state, resolveObject(state, a, file), a.value); break;
-        case ActionKind::SetMaterial: {
-            const uint32_t id = resolveObject(state, a, file);
-            Material m = objectMaterial(state.scene, id);
-            a.material.applyTo(m);
-            setObjectMaterial(state, id, m);
-            break;
-        }
-        case ActionKind::Preset:
-            applyPreset(state, resolveObject(state, a, file), *findMaterialPreset(a.text));
-            break;
-        case ActionKind::Select: select(state, resolveObject(state, a, file)); break;
-        case ActionKind::SetTerm: setTerm(state, *parseTerm(a.text), a.on); break;
-        case ActionKind::ToggleTerm: toggleTerm(state, *parseTerm(a.text)); break;
-        case ActionKind::Progression: applyProgression(state, a.step); break;
-        case ActionKind::SetModel: setModel(state, parseShadingModel(a.text)); break;
-        case ActionKind::SwitchModel: switchModelKeepingHighlights(state, parseShadingModel(a.text), a.on); break;
-        case ActionKind::SetMode: setMode(state, *parseViewMode(a.text)); break;
-        case ActionKind::SetEncoding:
-            setEncoding(state, a.text == "linear" ? Encoding::Linear : Encoding::Srgb);
-            break;
-        case ActionKind::SetSplit: setSplitPosition(state, a.value); break;
-        case ActionKind::SetAmbient: setAmbient(state, *a.color); break;
-        case ActionKind::SetRaster: {
-            RasterSettings r = state.scene.raster;
-            a.raster.applyTo(r);
-            setRasterSettings(state, r);
-            break;
-        }
-        case ActionKind::AddLight: {
-            const int i = addLight(state, a.text == "directional" ? LightType::Directional : LightType::Point);
-            if (i < 0) failAction(file, a, "", "the scene already has " + std::to_string(kMaxLights) + " lights");
-            Light l = state.scene.lights[size_t(i)];
-            if (a.position) l.position = *a.position;
-            if (a.direction) l.direction = *a.direction;
-            if (a.color) l.color = *a.color;
-            setLight(state, i, l);
-            break;
-        }
-        case ActionKind::RemoveLight:
-        case ActionKind::SetLight: {
-            if (size_t(a.step) >= state.scene.lights.size())
-                failAction(file, a, "index", "no light " + std::to_string(a.step) + " (the scene has " +
-                                                 std::to_string(state.scene.lights.size()) + ")");
-            if (a.kind == ActionKind::RemoveLight) {
-                removeLight(state, a.step);
-                break;
-            }
-            Light l = state.scene.lights[size_t(a.step)];
-            if (a.position) l.position = *a.position;
-            if (a.direction) l.direction = *a.direction;
-            if (a.color) l.color = *a.color;
-            setLight(state, a.step, l);
-            break;
-        }
-        case ActionKind::Orbit: {
-            OrbitCamera o = state.orbit;
-            orbitRotate(o, glm::radians(a.value), glm::radians(a.value2));
-            applyOrbit(state, o);
-            break;
-        }
-        case ActionKind::Zoom: {
-            OrbitCamera o = state.orbit;
-            orbitZoom(o, a.value);
-            applyOrbit(state, o);
-            break;
-        }
-        case ActionKind::FrameAll: frameAll(state); break;
-        case ActionKind::ResetCamera: resetCamera(state); break;
-        case ActionKind::Probe: setProbe(state, a.step, a.y); break;
-        case ActionKind::ClearProbe: clearProbe(state); break;
-        default: failAction(file, a, "", "'" + a.name + "' needs the viewer window");
-    }
+    std::visit(
+        [&](const auto& x) {
+            if constexpr (kIsStateAction<std::decay_t<decltype(x)>>) StateApplier{state, a, file}(x);
+            else failAction(file, a, "", "'" + a.name + "' needs the viewer window");
+        },
+        a.action);
 }
 
 const ScriptAction* ScriptCursor::next(int frame) {

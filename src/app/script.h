@@ -1,43 +1,76 @@
 // Viewer automation (--script actions.json): a list of actions applied between frames, so tests and
-// teachers can drive the viewer without a mouse. Parsing and the state actions are pure; the app performs
-// the few actions that need the window (screenshots, reports, shader reload). Format: docs/viewer.md.
+// teachers can drive the viewer without a mouse. Each action is parsed once into a typed struct; parsing and
+// the state actions are pure, and the app performs the few that need the window. Format: docs/viewer.md.
 #pragma once
 
+#include "app/material_presets.h"
 #include "app/viewer_state.h"
+#include "scene/light.h"
 #include "scene/raster_override.h"
 
 #include <glm/vec3.hpp>
-#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace shadelab::app {
 
-enum class ActionKind {
-    // state actions (applyScriptAction)
-    SetShininess, SetMaterial, Preset, Select, SetTerm, ToggleTerm, Progression, SetModel, SwitchModel,
-    SetMode, SetEncoding, SetSplit, SetAmbient, SetRaster, AddLight, RemoveLight, SetLight, Orbit, Zoom, FrameAll,
-    ResetCamera, Probe, ClearProbe,
-    // app actions (performed by the window loop)
-    Screenshot, ReferenceScreenshot, WindowScreenshot, ProbeReport, SaveScene, Open, ReloadShaders, WaitReference,
-    ResizeWindow,
-};
+// One struct per action, named as in the file; `object` is an object's name or "#<coverage id>".
+namespace actions {
+
+// State actions: applyScriptAction applies them to a ViewerState.
+struct SetShininess { std::string object; float s = 0.0f; };
+struct SetMaterial { std::string object; MaterialOverride material; };
+struct Preset { std::string object; const MaterialPreset* preset = nullptr; };   // never null once parsed
+struct Select { std::string object; };
+struct SetTerm { Term term = Term::Ambient; bool on = true; };
+struct ToggleTerm { Term term = Term::Ambient; };
+struct Progression { int step = 1; };                              // 1..kProgressionSteps
+struct SetModel { ShadingModel model = ShadingModel::Phong; };
+struct SwitchModel { ShadingModel model = ShadingModel::Phong; bool allObjects = false; };
+struct SetMode { ViewMode mode = ViewMode::Raster; };
+struct SetEncoding { Encoding encoding = Encoding::Srgb; };
+struct SetSplit { float position = 0.5f; };                        // fraction of the image width
+struct SetAmbient { glm::vec3 Ia{0.0f}; };                         // linear RGB intensity
+struct SetRaster { RasterOverride raster; };
+struct AddLight { LightType type = LightType::Point; LightOverride light; };
+struct RemoveLight { int index = 0; };                             // from 0
+struct SetLight { int index = 0; LightOverride light; };           // from 0
+struct Orbit { float yaw = 0.0f, pitch = 0.0f; };                  // degrees
+struct Zoom { float steps = 0.0f; };                               // mouse-wheel steps
+struct FrameAll {};
+struct ResetCamera {};
+struct Probe { int x = 0, y = 0; };                                // pixels, row 0 at the top
+struct ClearProbe {};
+
+// Window actions: the viewer performs them.
+struct Screenshot { std::string path; };
+struct ReferenceScreenshot { std::string path; };
+struct WindowScreenshot { std::string path; };
+struct ProbeReport { std::string path; };
+struct SaveScene { std::string path; };
+struct Open { std::string path; };
+struct ReloadShaders { std::string dir; };                         // empty: shaderSourceDir()
+struct WaitReference { float timeout = 60.0f; };                   // seconds
+struct ResizeWindow { int width = 0, height = 0; };                // window units
+
+}  // namespace actions
+
+using Action = std::variant<actions::SetShininess, actions::SetMaterial, actions::Preset, actions::Select,
+                            actions::SetTerm, actions::ToggleTerm, actions::Progression, actions::SetModel,
+                            actions::SwitchModel, actions::SetMode, actions::SetEncoding, actions::SetSplit,
+                            actions::SetAmbient, actions::SetRaster, actions::AddLight, actions::RemoveLight,
+                            actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
+                            actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::Screenshot,
+                            actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport,
+                            actions::SaveScene, actions::Open, actions::ReloadShaders, actions::WaitReference,
+                            actions::ResizeWindow>;
 
 struct ScriptAction {
     int index = 0;                    // position in the file's list, for messages ("actions[3]")
     int frame = 0;                    // runs before this frame is drawn; frames count from 0
-    ActionKind kind = ActionKind::Select;
     std::string name;                 // the action's name as written
-    std::string object;               // object name, or "#<coverage id>"
-    std::string text;                 // term, model, mode, encoding, preset name, light type, path or dir
-    bool on = true;                   // setTerm; switchModel's "all"
-    int step = 0;                     // progression step; light index; probe x
-    int y = 0;                        // probe y; resizeWindow height (step: width)
-    float value = 0.0f;               // s, split position, zoom steps, orbit yaw (degrees), timeout (s)
-    float value2 = 0.0f;              // orbit pitch (degrees)
-    std::optional<glm::vec3> position, direction, color;     // addLight / setLight; color also setAmbient
-    MaterialOverride material;        // setMaterial
-    RasterOverride raster;            // setRaster
+    Action action;                    // what it does, with its fields
 };
 
 struct Script {
@@ -51,10 +84,10 @@ Script parseScript(const std::string& text, const std::string& file);
 Script loadScript(const std::string& path);
 
 // True for the actions applyScriptAction handles; the others need the window.
-bool isStateAction(ActionKind kind);
+bool isStateAction(const ScriptAction& action);
 
 // Applies a state action. Throws InputError naming the file and action when it cannot apply (an object
-// or light that does not exist in the current scene).
+// or light that does not exist in the current scene, or an action that needs the window).
 void applyScriptAction(ViewerState& state, const ScriptAction& action, const std::string& file);
 
 // Hands out the actions of each frame in order.

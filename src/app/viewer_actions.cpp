@@ -9,64 +9,71 @@
 #include "scene/scene_load.h"
 #include "util/atomic_file.h"
 #include "util/input_error.h"
+#include "util/warning.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
 #include <cstring>
+#include <type_traits>
+#include <variant>
 
 namespace shadelab::app {
-namespace {
-
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
-
-}  // namespace
 
 void Viewer::runScript() {
     if (!cursor_) return;
     if (waiting_) {
+        const float timeout = std::get<actions::WaitReference>(waiting_->action).timeout;
         if (reference_->complete() && reference_->revision() == state_.referenceRevision) {
             waiting_ = nullptr;
-        } else if (glfwGetTime() - waitStarted_ > double(waiting_->value)) {
+        } else if (glfwGetTime() - waitStarted_ > double(timeout)) {
             throw InputError(script_->file, "actions[" + std::to_string(waiting_->index) + "]",
-                             "the reference did not finish within " + std::to_string(int(waiting_->value)) + " s");
+                             "the reference did not finish within " + std::to_string(int(timeout)) + " s");
         } else {
             return;
         }
     }
     while (const ScriptAction* a = cursor_->next(frame_)) {
-        if (isStateAction(a->kind)) applyScriptAction(state_, *a, script_->file);
+        if (isStateAction(*a)) applyScriptAction(state_, *a, script_->file);
         else performAction(*a);
         if (waiting_) break;
     }
 }
 
 void Viewer::performAction(const ScriptAction& a) {
-    switch (a.kind) {
-        case ActionKind::Screenshot: writePng(a.text, captureRaster()); break;
-        case ActionKind::ReferenceScreenshot:
-            if (!reference_->complete() || reference_->revision() != state_.referenceRevision)
-                throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
-                                 "the reference is not complete (use waitReference first)");
-            writePng(a.text, toImage8(reference_->image(), state_.encoding));
-            break;
-        case ActionKind::WindowScreenshot: pendingWindowShot_ = a.text; break;
-        case ActionKind::ProbeReport: writeProbeReport(a.text); break;
-        case ActionKind::SaveScene: saveSceneJson(state_.scene, a.text); break;
-        case ActionKind::Open: {
-            Scene scene = loadScene(a.text, printWarning);  // a script stops on a bad file
-            app::openScene(state_, std::move(scene), a.text);
-            break;
-        }
-        case ActionKind::ReloadShaders: reloadShaders(a.text); break;
-        case ActionKind::ResizeWindow: glfwSetWindowSize(window_, a.step, a.y); break;
-        case ActionKind::WaitReference:
-            waiting_ = &a;
-            waitStarted_ = glfwGetTime();
-            break;
-        default: applyScriptAction(state_, a, script_->file);
-    }
+    using namespace actions;
+    std::visit(
+        [&](const auto& x) {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, Screenshot>) {
+                writePng(x.path, captureRaster());
+            } else if constexpr (std::is_same_v<T, ReferenceScreenshot>) {
+                if (!reference_->complete() || reference_->revision() != state_.referenceRevision)
+                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
+                                     "the reference is not complete (use waitReference first)");
+                writePng(x.path, toImage8(reference_->image(), state_.encoding));
+            } else if constexpr (std::is_same_v<T, WindowScreenshot>) {
+                pendingWindowShot_ = x.path;
+            } else if constexpr (std::is_same_v<T, ProbeReport>) {
+                writeProbeReport(x.path);
+            } else if constexpr (std::is_same_v<T, SaveScene>) {
+                saveSceneJson(state_.scene, x.path);
+            } else if constexpr (std::is_same_v<T, Open>) {
+                Scene scene = loadScene(x.path, printWarning);  // a script stops on a bad file
+                app::openScene(state_, std::move(scene), x.path);
+            } else if constexpr (std::is_same_v<T, ReloadShaders>) {
+                reloadShaders(x.dir);
+            } else if constexpr (std::is_same_v<T, ResizeWindow>) {
+                glfwSetWindowSize(window_, x.width, x.height);
+            } else if constexpr (std::is_same_v<T, WaitReference>) {
+                waiting_ = &a;
+                waitStarted_ = glfwGetTime();
+            } else {
+                applyScriptAction(state_, a, script_->file);
+            }
+        },
+        a.action);
 }
 
 Image8 Viewer::captureRaster() {

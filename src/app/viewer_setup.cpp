@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
@@ -41,6 +42,15 @@ void installDropCallback(GLFWwindow* window);   // viewer_input.cpp
 int runViewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script) {
     Viewer viewer(options, std::move(state), std::move(script));
     return viewer.run();
+}
+
+std::string shaderSourceDir() {
+    if (const char* env = std::getenv("SHADELAB_SHADER_DIR"); env && *env) return env;
+#ifdef SHADELAB_SOURCE_DIR
+    return std::string(SHADELAB_SOURCE_DIR) + "/shaders";
+#else
+    return "shaders";
+#endif
 }
 
 Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script)

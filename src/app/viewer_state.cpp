@@ -139,41 +139,6 @@ bool applyPreset(ViewerState& state, uint32_t id, const MaterialPreset& preset) 
     return setObjectMaterial(state, id, withPreset(objectMaterial(state.scene, id), preset));
 }
 
-const char* toString(Term t) {
-    switch (t) {
-        case Term::Ambient: return "ambient";
-        case Term::Diffuse: return "diffuse";
-        case Term::Specular: return "specular";
-        case Term::Shadows: return "shadows";
-        case Term::Reflections: return "reflections";
-    }
-    return "ambient";
-}
-
-std::optional<Term> parseTerm(const std::string& name) {
-    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
-        if (name == toString(t)) return t;
-    return std::nullopt;
-}
-
-namespace {
-
-template <typename T>  // Terms or const Terms
-auto& termFlag(T& terms, Term t) {
-    switch (t) {
-        case Term::Ambient: return terms.ambient;
-        case Term::Diffuse: return terms.diffuse;
-        case Term::Specular: return terms.specular;
-        case Term::Shadows: return terms.shadows;
-        case Term::Reflections: return terms.reflections;
-    }
-    return terms.ambient;
-}
-
-}  // namespace
-
-bool termEnabled(const Terms& terms, Term t) { return termFlag(terms, t); }
-
 void setTerm(ViewerState& state, Term t, bool on) {
     termFlag(state.scene.terms, t) = on;
     markChanged(state);
@@ -295,22 +260,6 @@ void resetCamera(ViewerState& state) {
     state.scene.camera = state.fileCamera;
     state.orbit = orbitFromCamera(state.fileCamera);
     markChanged(state);
-}
-
-const char* toString(ViewMode m) {
-    switch (m) {
-        case ViewMode::Raster: return "raster";
-        case ViewMode::Traced: return "traced";
-        case ViewMode::Split: return "split";
-        case ViewMode::Difference: return "difference";
-    }
-    return "raster";
-}
-
-std::optional<ViewMode> parseViewMode(const std::string& name) {
-    for (ViewMode m : {ViewMode::Raster, ViewMode::Traced, ViewMode::Split, ViewMode::Difference})
-        if (name == toString(m)) return m;
-    return std::nullopt;
 }
 
 void setMode(ViewerState& state, ViewMode mode) { state.mode = mode; }

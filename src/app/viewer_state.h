@@ -6,6 +6,7 @@
 
 #include "app/material_presets.h"
 #include "app/orbit_camera.h"
+#include "app/view_mode.h"
 #include "image/encode.h"
 #include "scene/scene.h"
 
@@ -15,8 +16,6 @@
 
 namespace shadelab::app {
 
-enum class ViewMode { Raster, Traced, Split, Difference };
-enum class Term { Ambient, Diffuse, Specular, Shadows, Reflections };
 enum class ObjectKind { None, Sphere, Plane, Mesh };
 
 struct ProbeState {
@@ -67,10 +66,7 @@ void select(ViewerState& state, uint32_t id);
 bool setShininess(ViewerState& state, uint32_t id, float s);   // clamped to [0, kMaxShininess]
 bool applyPreset(ViewerState& state, uint32_t id, const MaterialPreset& preset);
 
-// --- lighting model and terms ---
-const char* toString(Term t);
-std::optional<Term> parseTerm(const std::string& name);
-bool termEnabled(const Terms& terms, Term t);
+// --- lighting model and terms (Term, termEnabled and the names: scene/terms.h) ---
 void setTerm(ViewerState& state, Term t, bool on);
 void toggleTerm(ViewerState& state, Term t);
 // The lecture's progression: step 1 ambient, 2 +diffuse, 3 +specular, 4 +shadows, 5 +reflections.
@@ -110,8 +106,6 @@ void frameAll(ViewerState& state);                              // key F
 void resetCamera(ViewerState& state);                           // key R: the scene file's camera
 
 // --- view ---
-const char* toString(ViewMode m);
-std::optional<ViewMode> parseViewMode(const std::string& name);
 void setMode(ViewerState& state, ViewMode mode);
 void setEncoding(ViewerState& state, Encoding encoding);
 void setSplitPosition(ViewerState& state, float position);     // clamped to [0, 1]

@@ -2,6 +2,9 @@
 // and missing values are UsageErrors (exit code 2).
 #pragma once
 
+#include "util/input_error.h"
+#include "util/name_table.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,5 +34,13 @@ float parseNumber(const std::string& name, const std::string& value, float lo, f
 
 // "1920x1080" → {1920, 1080}; each side in [1, 16384]. Throws UsageError.
 std::pair<int, int> parseSize(const std::string& s);
+
+// The word `value` of option `name`, looked up in an enum's name table (util/name_table.h). Throws
+// UsageError "<name>: expected a, b or c, got '<value>'", listing the table's names.
+template <typename E, size_t N>
+E parseChoice(const std::string& name, const std::string& value, const EnumName<E> (&table)[N]) {
+    if (auto v = lookupName(table, value)) return *v;
+    throw UsageError(name + ": expected " + nameChoices(table) + ", got '" + value + "'");
+}
 
 }  // namespace shadelab::cli

@@ -1,8 +1,8 @@
 // shadelab: the command-line entry point. Dispatches subcommands and turns exceptions into one line on
 // stderr and an exit code: 1 for bad input or a failed render, 2 for usage errors.
-#include "app/app.h"
 #include "cli/compare_command.h"
 #include "cli/render_command.h"
+#include "cli/view_command.h"
 #include "util/input_error.h"
 
 #include <cstdio>
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     try {
         if (command == "render") return cli::renderCommand(argc, argv);
         if (command == "compare") return cli::compareCommand(argc, argv);
-        if (command == "view") return app::viewCommand(argc, argv);
+        if (command == "view") return cli::viewCommand(argc, argv);
         if (command == "-h" || command == "--help" || command == "help") {
             std::fputs(kHelp, stdout);
             return 0;

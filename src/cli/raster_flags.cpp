@@ -53,4 +53,13 @@ bool parseRasterFlag(const std::string& name, const std::string& value, RasterOv
     return true;
 }
 
+RasterOverride parseRasterFlags(const Args& args) {
+    RasterOverride o;
+    for (const std::string& name : rasterValuedFlags())
+        if (auto v = args.value(name)) parseRasterFlag(name, *v, o);
+    for (const std::string& name : rasterSwitchFlags())
+        if (args.flag(name)) parseRasterFlag(name, "", o);
+    return o;
+}
+
 }  // namespace shadelab::cli

@@ -16,6 +16,7 @@
 #include "trace/trace_image.h"
 #include "util/input_error.h"
 #include "util/output_file.h"
+#include "util/warning.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -27,7 +28,6 @@
 namespace shadelab::cli {
 namespace {
 
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
 
 std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageTimer& timer) {
     std::vector<std::string> log;

@@ -23,7 +23,7 @@ const char* const kHelpHead =
     "                             it is the scene or a model it loads, or exists and is not a regular file\n"
     "  --size WxH                 image size in pixels, each side 1..16384 (default 1280x720)\n"
     "  --renderer NAME            raster (default) | trace | both (raster | traced | heatmap in one PNG)\n"
-    "  --model NAME               phong | blinn-phong (default: the scene's)\n"
+    "  --model NAME               phong | blinn-phong, also written blinn (default: the scene's)\n"
     "  --terms LIST               comma-separated terms to switch on, the rest off:\n"
     "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
     "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
@@ -52,34 +52,12 @@ Terms parseTerms(const std::string& list) {
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
-        if (name == "ambient") t.ambient = true;
-        else if (name == "diffuse") t.diffuse = true;
-        else if (name == "specular") t.specular = true;
-        else if (name == "shadows") t.shadows = true;
-        else if (name == "reflections") t.reflections = true;
+        if (auto term = parseTerm(name)) termFlag(t, *term) = true;
         else if (name != "none" && !name.empty())
-            throw UsageError("--terms: unknown term '" + name +
-                             "'; expected ambient, diffuse, specular, shadows, reflections or none");
+            throw UsageError("--terms: unknown term '" + name + "'; expected " + nameChoices(kTermNames, "none"));
     }
     return t;
 }
-
-namespace {
-
-ShadingModel parseModel(const std::string& s) {
-    if (s == "phong") return ShadingModel::Phong;
-    if (s == "blinn-phong" || s == "blinn") return ShadingModel::BlinnPhong;
-    throw UsageError("--model: expected phong or blinn-phong, got '" + s + "'");
-}
-
-RendererChoice parseRenderer(const std::string& s) {
-    if (s == "raster") return RendererChoice::Raster;
-    if (s == "trace") return RendererChoice::Trace;
-    if (s == "both") return RendererChoice::Both;
-    throw UsageError("--renderer: expected raster, trace or both, got '" + s + "'");
-}
-
-}  // namespace
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
     std::vector<std::string> valued = {"-o", "--output", "--size", "--model", "--terms", "--encoding",
@@ -102,19 +80,16 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--output")) o.output = *v;
     if (o.output.empty()) throw UsageError("render needs -o out.png");
     if (auto v = args.value("--size")) std::tie(o.width, o.height) = parseSize(*v);
-    if (auto v = args.value("--model")) o.model = parseModel(*v);
+    if (auto v = args.value("--model")) o.model = parseChoice("--model", *v, kShadingModelNames);
     if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
-    if (auto v = args.value("--encoding")) o.encoding = parseEncoding(*v);
+    if (auto v = args.value("--encoding")) o.encoding = parseChoice("--encoding", *v, kEncodingNames);
     if (auto v = args.value("--spp")) o.spp = parseInt("--spp", *v, 1, 64);
     raster::samplesPerSide(o.spp);  // a perfect square
-    if (auto v = args.value("--renderer")) o.renderer = parseRenderer(*v);
+    if (auto v = args.value("--renderer")) o.renderer = parseChoice("--renderer", *v, kRendererNames);
     if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);
     if (auto v = args.value("--depth")) o.depth = parseInt("--depth", *v, 0, 64);
-    if (auto v = args.value("--gl-backend")) o.backend = gl::parseGlBackend(*v);
-    for (const std::string& name : rasterValuedFlags())
-        if (auto v = args.value(name)) parseRasterFlag(name, *v, o.raster);
-    for (const std::string& name : rasterSwitchFlags())
-        if (args.flag(name)) parseRasterFlag(name, "", o.raster);
+    if (auto v = args.value("--gl-backend")) o.backend = parseChoice("--gl-backend", *v, gl::kGlBackendNames);
+    o.raster = parseRasterFlags(args);
     o.allowExternalPaths = args.flag("--allow-external-paths");
     o.verbose = args.flag("--verbose");
     o.timings = args.flag("--timings");

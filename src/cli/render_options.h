@@ -5,6 +5,7 @@
 #include "image/encode.h"
 #include "scene/raster_override.h"
 #include "scene/scene.h"
+#include "util/name_table.h"
 
 #include <optional>
 #include <string>
@@ -12,6 +13,15 @@
 namespace shadelab::cli {
 
 enum class RendererChoice { Raster, Trace, Both };
+
+// The words of --renderer.
+inline constexpr EnumName<RendererChoice> kRendererNames[] = {
+    {RendererChoice::Raster, "raster"},
+    {RendererChoice::Trace, "trace"},
+    {RendererChoice::Both, "both"},
+};
+
+inline const char* toString(RendererChoice r) { return nameOf(kRendererNames, r); }
 
 struct RenderOptions {
     std::string input;                      // scene.json, model.gltf or model.glb
@@ -38,7 +48,8 @@ std::string renderHelp();
 // Parses argv[2..]; throws UsageError on anything wrong.
 RenderOptions parseRenderOptions(int argc, char** argv);
 
-// "ambient,diffuse" → those terms on and the rest off. Throws UsageError naming --terms.
+// "ambient,diffuse" → those terms on and the rest off; "none" or "" → all off. Throws UsageError naming
+// --terms and listing the term names.
 Terms parseTerms(const std::string& list);
 
 }  // namespace shadelab::cli

@@ -10,24 +10,6 @@
 
 namespace shadelab::gl {
 
-GlBackend parseGlBackend(const std::string& name) {
-    if (name == "auto" || name.empty()) return GlBackend::Auto;
-    if (name == "egl-device") return GlBackend::EglDevice;
-    if (name == "egl-surfaceless") return GlBackend::EglSurfaceless;
-    if (name == "osmesa") return GlBackend::OSMesa;
-    throw UsageError("unknown GL backend '" + name + "'; expected auto, egl-device, egl-surfaceless or osmesa");
-}
-
-const char* toString(GlBackend b) {
-    switch (b) {
-        case GlBackend::Auto: return "auto";
-        case GlBackend::EglDevice: return "egl-device";
-        case GlBackend::EglSurfaceless: return "egl-surfaceless";
-        case GlBackend::OSMesa: return "osmesa";
-    }
-    return "?";
-}
-
 void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*)) {
     if (const char* missing = loadFunctions(getProc))
         throw std::runtime_error(std::string("OpenGL entry point ") + missing + " not found");
@@ -46,12 +28,12 @@ void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*)) {
 
 std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced, std::vector<std::string>* log) {
     if (forced == GlBackend::Auto) {
-        if (const char* env = std::getenv(kGlBackendEnv)) {
-            try {
-                forced = parseGlBackend(env);
-            } catch (const UsageError& e) {
-                throw UsageError(std::string(kGlBackendEnv) + ": " + e.what());
-            }
+        if (const char* env = std::getenv(kGlBackendEnv); env && *env) {
+            const std::optional<GlBackend> named = parseGlBackend(env);
+            if (!named)
+                throw UsageError(std::string(kGlBackendEnv) + ": unknown GL backend '" + env + "'; expected " +
+                                 nameChoices(kGlBackendNames));
+            forced = *named;
         }
     }
     struct Attempt {

@@ -3,6 +3,8 @@
 // Rendering goes into the renderer's own framebuffer objects; these contexts have no default surface.
 #pragma once
 
+#include "util/name_table.h"
+
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -12,9 +14,16 @@ namespace shadelab::gl {
 
 enum class GlBackend { Auto, EglDevice, EglSurfaceless, OSMesa };
 
-// "auto", "egl-device", "egl-surfaceless", "osmesa". Throws UsageError otherwise.
-GlBackend parseGlBackend(const std::string& name);
-const char* toString(GlBackend b);
+// The words of --gl-backend and of kGlBackendEnv.
+inline constexpr EnumName<GlBackend> kGlBackendNames[] = {
+    {GlBackend::Auto, "auto"},
+    {GlBackend::EglDevice, "egl-device"},
+    {GlBackend::EglSurfaceless, "egl-surfaceless"},
+    {GlBackend::OSMesa, "osmesa"},
+};
+
+inline const char* toString(GlBackend b) { return nameOf(kGlBackendNames, b); }
+inline std::optional<GlBackend> parseGlBackend(std::string_view name) { return lookupName(kGlBackendNames, name); }
 
 // The environment variable that forces a backend when no flag does.
 inline constexpr const char* kGlBackendEnv = "SHADELAB_GL_BACKEND";

@@ -3,7 +3,6 @@
 #include "image/encode.h"
 
 #include "util/check.h"
-#include "util/input_error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,13 +138,5 @@ Image8 toImage8(const ImageF& img, Encoding e) {
     }
     return out;
 }
-
-Encoding parseEncoding(const std::string& s) {
-    if (s == "srgb") return Encoding::Srgb;
-    if (s == "linear") return Encoding::Linear;
-    throw UsageError("--encoding: expected srgb or linear, got '" + s + "'");
-}
-
-const char* toString(Encoding e) { return e == Encoding::Srgb ? "srgb" : "linear"; }
 
 }  // namespace shadelab

@@ -2,14 +2,13 @@
 // sRGB curve (default) or no curve ("linear", lecture-style images). Both renderers go through it.
 #pragma once
 
+#include "image/encoding.h"
 #include "image/image.h"
 
 #include <cstdint>
 #include <string>
 
 namespace shadelab {
-
-enum class Encoding { Srgb, Linear };
 
 // Exact IEC 61966-2-1 sRGB transfer function on a linear value in [0, 1].
 float linearToSrgb(float linear);
@@ -20,9 +19,5 @@ uint8_t encodeChannel(float linear, Encoding e);
 
 // RGB8 image (alpha dropped) from a float image.
 Image8 toImage8(const ImageF& img, Encoding e);
-
-// "srgb" / "linear"; throws UsageError on anything else.
-Encoding parseEncoding(const std::string& s);
-const char* toString(Encoding e);
 
 }  // namespace shadelab

@@ -135,6 +135,10 @@ std::optional<JsonNode> JsonNode::find(const std::string& key) const {
 }
 
 void JsonNode::warnUnknownKeys(std::initializer_list<const char*> known) const {
+    warnUnknownKeys(std::vector<const char*>(known));
+}
+
+void JsonNode::warnUnknownKeys(const std::vector<const char*>& known) const {
     requireObject();
     for (auto it = j_->begin(); it != j_->end(); ++it) {
         const std::string& key = it.key();

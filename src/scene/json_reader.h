@@ -3,11 +3,14 @@
 // Shared by the scene loader and the viewer's --script reader; not a general JSON library.
 #pragma once
 
+#include "util/name_table.h"
+
 #include <glm/vec3.hpp>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -38,6 +41,7 @@ public:
     std::optional<JsonNode> find(const std::string& key) const;
     // Warns about every key not in `known`, suggesting a close known key when there is one.
     void warnUnknownKeys(std::initializer_list<const char*> known) const;
+    void warnUnknownKeys(const std::vector<const char*>& known) const;
 
     // Arrays.
     size_t arraySize() const;
@@ -52,6 +56,14 @@ public:
     float positive() const;          // finite, > 0
     float inRange(float lo, float hi, bool openLo, bool openHi) const;
     int integerIn(int lo, int hi) const;
+    // A string naming an entry of an enum's name table (util/name_table.h). Anything else fails with
+    // "unknown <what> '<word>'; expected <the table's names>".
+    template <typename E, size_t N>
+    E oneOf(const EnumName<E> (&table)[N], const char* what) const {
+        const std::string word = string();
+        if (auto v = lookupName(table, word)) return *v;
+        fail("unknown " + std::string(what) + " '" + word + "'; expected " + nameChoices(table));
+    }
 
     // Vectors: exactly three finite numbers.
     glm::vec3 vec3() const;

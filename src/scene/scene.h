@@ -6,22 +6,13 @@
 #include "scene/light.h"
 #include "scene/objects.h"
 #include "scene/raster_settings.h"
+#include "scene/shading_model.h"
+#include "scene/terms.h"
 
 #include <string>
 #include <vector>
 
 namespace shadelab {
-
-enum class ShadingModel { Phong, BlinnPhong };
-
-// The lecture's term switches (design.md §1). A switched-off term contributes nothing.
-struct Terms {
-    bool ambient = true;
-    bool diffuse = true;
-    bool specular = true;
-    bool shadows = true;        // tracer; rasterizer from issue 5
-    bool reflections = true;    // includes refraction; tracer; rasterizer from issue 5
-};
 
 struct Scene {
     std::string title;                       // shown by the viewer
@@ -41,9 +32,5 @@ struct Scene {
 
 // Largest number of lights either renderer accepts (the rasterizer's uniform block size).
 inline constexpr int kMaxLights = 32;
-
-const char* toString(ShadingModel m);
-// The inverse of toString: "phong" or "blinn-phong". Throws std::invalid_argument naming the choices.
-ShadingModel parseShadingModel(const std::string& name);
 
 }  // namespace shadelab

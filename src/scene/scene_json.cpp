@@ -2,7 +2,8 @@
 // path in errors; saving writes every field, so a saved file documents itself and loads back exactly.
 // Mesh geometry is not touched here: loadScene() (scene_load.h) imports it.
 //
-// Sections: 1. loading materials, camera, lights   2. loading objects   3. parseSceneJson
+// Sections: 1. loading materials, camera, lights   2. loading objects
+//           3. the material and light readers scripts share; parseSceneJson
 //           4. saving (exact floats, layout)      5. sceneToJson, saveSceneJson
 #include "scene/scene_json.h"
 
@@ -34,15 +35,7 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior"});
-    MaterialOverride m;
-    if (auto f = n.find("ma")) m.ma = f->rgb();
-    if (auto f = n.find("md")) m.md = f->rgb();
-    if (auto f = n.find("ms")) m.ms = f->rgb();
-    if (auto f = n.find("s")) m.s = f->inRange(0.0f, kMaxShininess, false, false);
-    if (auto f = n.find("kr")) m.kr = f->rgb();
-    if (auto f = n.find("kt")) m.kt = f->rgb();
-    if (auto f = n.find("ior")) m.ior = f->positive();
-    return m;
+    return parseMaterialOverride(n);
 }
 
 // An object's "material": inline fields, or a string naming an entry of the top-level "materials".
@@ -85,18 +78,12 @@ Camera parseCamera(const JsonNode& n) {
 Light parseLight(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"type", "name", "position", "direction", "color", "attenuation"});
     Light l;
-    JsonNode type = n.child("type");
-    std::string t = type.string();
-    if (t == "point") l.type = LightType::Point;
-    else if (t == "directional") l.type = LightType::Directional;
-    else type.fail("unknown light type '" + t + "'; expected point or directional");
+    l.type = n.child("type").oneOf(kLightTypeNames, "light type");
     if (auto f = n.find("name")) l.name = f->string();
-    // The other type's fields are optional and unused, but kept so that a saved scene loads back exactly.
-    if (l.type == LightType::Point) l.position = n.child("position").vec3();
-    else if (auto f = n.find("position")) l.position = f->vec3();
-    if (l.type == LightType::Directional) l.direction = n.child("direction").unitVec3();
-    else if (auto f = n.find("direction")) l.direction = f->unitVec3();
-    if (auto f = n.find("color")) l.color = f->rgb();
+    // Each type requires its own field (child() fails "missing required field"); the other type's is optional
+    // and unused, but kept so that a saved scene loads back exactly.
+    n.child(l.type == LightType::Point ? "position" : "direction");
+    parseLightOverride(n).applyTo(l);
     if (auto f = n.find("attenuation")) {
         f->vec3();  // shape and finiteness
         l.attenuation = {(*f)[0].nonNegative(), (*f)[1].nonNegative(), (*f)[2].nonNegative()};
@@ -196,7 +183,29 @@ void parseObject(const JsonNode& n, const NamedMaterials& named, Scene& scene) {
 
 }  // namespace
 
-// ---- 3. parseSceneJson ---------------------------------------------------------------------------------
+// ---- 3. The material and light readers scripts share; parseSceneJson ---------------------------------
+
+MaterialOverride parseMaterialOverride(const JsonNode& n) {
+    n.requireObject();
+    MaterialOverride m;
+    if (auto f = n.find("ma")) m.ma = f->rgb();
+    if (auto f = n.find("md")) m.md = f->rgb();
+    if (auto f = n.find("ms")) m.ms = f->rgb();
+    if (auto f = n.find("s")) m.s = f->inRange(0.0f, kMaxShininess, false, false);
+    if (auto f = n.find("kr")) m.kr = f->rgb();
+    if (auto f = n.find("kt")) m.kt = f->rgb();
+    if (auto f = n.find("ior")) m.ior = f->positive();
+    return m;
+}
+
+LightOverride parseLightOverride(const JsonNode& n) {
+    n.requireObject();
+    LightOverride l;
+    if (auto f = n.find("position")) l.position = f->vec3();
+    if (auto f = n.find("direction")) l.direction = f->unitVec3();
+    if (auto f = n.find("color")) l.color = f->rgb();
+    return l;
+}
 
 Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line)) {
     nlohmann::json doc = parseJsonText(text, file);
@@ -213,20 +222,11 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
     if (auto f = root.find("title")) scene.title = f->string();
     if (auto f = root.find("notes")) scene.notes = f->string();
     if (auto f = root.find("camera")) scene.camera = parseCamera(*f);
-    if (auto f = root.find("model")) {
-        try {
-            scene.model = parseShadingModel(f->string());
-        } catch (const std::invalid_argument& e) {
-            f->fail(e.what());
-        }
-    }
+    if (auto f = root.find("model")) scene.model = f->oneOf(kShadingModelNames, "shading model");
     if (auto f = root.find("terms")) {
-        f->requireObject().warnUnknownKeys({"ambient", "diffuse", "specular", "shadows", "reflections"});
-        Terms& t = scene.terms;
-        const std::pair<const char*, bool*> switches[] = {{"ambient", &t.ambient}, {"diffuse", &t.diffuse},
-            {"specular", &t.specular}, {"shadows", &t.shadows}, {"reflections", &t.reflections}};
-        for (const auto& [key, value] : switches)
-            if (auto g = f->find(key)) *value = g->boolean();
+        f->requireObject().warnUnknownKeys(canonicalNames(kTermNames));
+        for (const EnumName<Term>& term : kTermNames)
+            if (auto g = f->find(term.name)) termFlag(scene.terms, term.value) = g->boolean();
     }
     if (auto f = root.find("ambient")) scene.ambient = f->rgb();
     if (auto f = root.find("background")) scene.background = f->rgb();
@@ -343,8 +343,8 @@ std::string sceneToJson(const Scene& scene) {
                      {"fovY", exact(c.fovY)}};
     doc["model"] = toString(scene.model);
     const Terms& t = scene.terms;
-    doc["terms"] = {{"ambient", t.ambient}, {"diffuse", t.diffuse}, {"specular", t.specular},
-                    {"shadows", t.shadows}, {"reflections", t.reflections}};
+    doc["terms"] = OJson::object();
+    for (const EnumName<Term>& term : kTermNames) doc["terms"][term.name] = termEnabled(t, term.value);
     doc["ambient"] = vec(scene.ambient);
     doc["background"] = vec(scene.background);
     doc["maxDepth"] = scene.maxDepth;
@@ -355,7 +355,7 @@ std::string sceneToJson(const Scene& scene) {
 
     OJson lights = OJson::array();
     for (const Light& l : scene.lights) {
-        lights.push_back({{"type", l.type == LightType::Point ? "point" : "directional"}, {"name", l.name},
+        lights.push_back({{"type", toString(l.type)}, {"name", l.name},
                           {"position", vec(l.position)}, {"direction", vec(l.direction)},
                           {"color", vec(l.color)}, {"attenuation", vec(l.attenuation)}});
     }

@@ -1,20 +1,21 @@
 // `shadelab view`: command-line parsing for the viewer, the display check, and loading the scene and
 // script before the window opens (so bad input fails fast with exit code 1, usage errors with 2).
-#include "app/app.h"
+#include "cli/view_command.h"
 
+#include "app/app.h"
 #include "cli/args.h"
 #include "cli/raster_flags.h"
 #include "scene/scene_load.h"
 #include "util/input_error.h"
+#include "util/warning.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 #include <tuple>
 
-namespace shadelab::app {
+namespace shadelab::cli {
 namespace {
 
 const char* const kViewHelpHead =
@@ -45,8 +46,6 @@ const char* const kViewHelpTail =
     "The raster flags override the \"raster\" settings of the scene opened at start, not of scenes opened later.\n"
     "exit codes: 0 done, 1 bad input or no display (one line on stderr), 2 usage error\n";
 
-void printWarning(const std::string& line) { std::fprintf(stderr, "shadelab: warning: %s\n", line.c_str()); }
-
 std::string defaultScenePath() {
 #ifdef SHADELAB_SOURCE_DIR
     const std::string p = std::string(SHADELAB_SOURCE_DIR) + "/assets/scenes/default.json";
@@ -57,71 +56,34 @@ std::string defaultScenePath() {
 
 }  // namespace
 
-std::string shaderSourceDir() {
-    if (const char* env = std::getenv("SHADELAB_SHADER_DIR"); env && *env) return env;
-#ifdef SHADELAB_SOURCE_DIR
-    return std::string(SHADELAB_SOURCE_DIR) + "/shaders";
-#else
-    return "shaders";
-#endif
-}
-
 int viewCommand(int argc, char** argv) {
-    ViewerOptions options;
-    std::vector<std::string> positionals;
-    std::string scriptPath, encoding;
-    RasterOverride raster;
     std::vector<std::string> valued = {"--size", "--frames", "--screenshot", "--window-screenshot",
                                        "--script", "--probe-report", "--encoding", "--ui-scale"};
-    valued.insert(valued.end(), cli::rasterValuedFlags().begin(), cli::rasterValuedFlags().end());
-    const std::vector<std::string>& switches = cli::rasterSwitchFlags();
-    bool help = false;
-    for (int i = 2; i < argc; ++i) {
-        std::string a = argv[i], value;
-        if (a == "-h" || a == "--help") {
-            help = true;
-            continue;
-        }
-        if (a.size() < 2 || a[0] != '-') {
-            positionals.push_back(a);
-            continue;
-        }
-        if (a == "--stats" || a == "--verbose") {
-            (a == "--stats" ? options.stats : options.verbose) = true;
-            continue;
-        }
-        if (std::find(switches.begin(), switches.end(), a) != switches.end()) {
-            cli::parseRasterFlag(a, "", raster);
-            continue;
-        }
-        const size_t eq = a.find('=');
-        const std::string name = a.substr(0, eq);
-        if (std::find(valued.begin(), valued.end(), name) == valued.end())
-            throw UsageError("unknown option '" + a + "' (see shadelab view --help)");
-        if (eq != std::string::npos) value = a.substr(eq + 1);
-        else if (i + 1 < argc) value = argv[++i];
-        else throw UsageError(name + " needs a value");
-        if (name == "--size") std::tie(options.width, options.height) = cli::parseSize(value);
-        else if (name == "--frames") options.frames = cli::parseInt(name, value, 0, 99999999);
-        else if (name == "--screenshot") options.screenshot = value;
-        else if (name == "--window-screenshot") options.windowScreenshot = value;
-        else if (name == "--script") scriptPath = value;
-        else if (name == "--probe-report") options.probeReport = value;
-        else if (name == "--encoding") encoding = value;
-        else if (name == "--ui-scale") options.uiScale = cli::parseNumber(name, value, 0.5f, 4.0f);
-        else cli::parseRasterFlag(name, value, raster);
-    }
-    if (help) {
-        std::fputs((std::string(kViewHelpHead) + cli::kRasterFlagsHelp + kViewHelpTail).c_str(), stdout);
+    std::vector<std::string> flags = {"-h", "--help", "--stats", "--verbose"};
+    valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
+    flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
+    const Args args(argc, argv, 2, valued, flags);
+    if (args.flag("-h") || args.flag("--help")) {
+        std::fputs((std::string(kViewHelpHead) + kRasterFlagsHelp + kViewHelpTail).c_str(), stdout);
         return 0;
     }
-    if (positionals.size() > 1)
-        throw UsageError("view takes at most one scene file, got " + std::to_string(positionals.size()));
-    Encoding enc = Encoding::Srgb;
-    if (!encoding.empty()) enc = parseEncoding(encoding);
+    if (args.positionals().size() > 1)
+        throw UsageError("view takes at most one scene file, got " + std::to_string(args.positionals().size()));
+    app::ViewerOptions options;
+    if (auto v = args.value("--size")) std::tie(options.width, options.height) = parseSize(*v);
+    if (auto v = args.value("--frames")) options.frames = parseInt("--frames", *v, 0, 99999999);
+    if (auto v = args.value("--screenshot")) options.screenshot = *v;
+    if (auto v = args.value("--window-screenshot")) options.windowScreenshot = *v;
+    if (auto v = args.value("--probe-report")) options.probeReport = *v;
+    if (auto v = args.value("--ui-scale")) options.uiScale = parseNumber("--ui-scale", *v, 0.5f, 4.0f);
+    options.stats = args.flag("--stats");
+    options.verbose = args.flag("--verbose");
+    Encoding encoding = Encoding::Srgb;
+    if (auto v = args.value("--encoding")) encoding = parseChoice("--encoding", *v, kEncodingNames);
+    const RasterOverride raster = parseRasterFlags(args);
 
-    std::optional<Script> script;
-    if (!scriptPath.empty()) script = loadScript(scriptPath);
+    std::optional<app::Script> script;
+    if (auto v = args.value("--script"); v && !v->empty()) script = app::loadScript(*v);
 
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -129,13 +91,13 @@ int viewCommand(int argc, char** argv) {
         throw std::runtime_error("view needs a display, but neither DISPLAY nor WAYLAND_DISPLAY is set; "
                                  "use 'shadelab render <scene> -o out.png' for images without one");
 
-    const std::string path = positionals.empty() ? defaultScenePath() : positionals[0];
+    const std::string path = args.positionals().empty() ? defaultScenePath() : args.positionals()[0];
     Scene scene;
     if (!path.empty()) scene = loadScene(path, printWarning);
     raster.applyTo(scene.raster);
-    ViewerState state = makeViewerState(std::move(scene), path);
-    setEncoding(state, enc);
-    return runViewer(options, std::move(state), std::move(script));
+    app::ViewerState state = app::makeViewerState(std::move(scene), path);
+    app::setEncoding(state, encoding);
+    return app::runViewer(options, std::move(state), std::move(script));
 }
 
-}  // namespace shadelab::app
+}  // namespace shadelab::cli

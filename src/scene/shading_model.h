@@ -1,0 +1,22 @@
+// ShadingModel and its one name table: the words scene files, `--model` and viewer scripts accept.
+// "blinn" is an alias of blinn-phong on input; files and messages always use the canonical names.
+#pragma once
+
+#include "util/name_table.h"
+
+namespace shadelab {
+
+enum class ShadingModel { Phong, BlinnPhong };
+
+inline constexpr EnumName<ShadingModel> kShadingModelNames[] = {
+    {ShadingModel::Phong, "phong"},
+    {ShadingModel::BlinnPhong, "blinn-phong"},
+    {ShadingModel::BlinnPhong, "blinn", true},
+};
+
+inline const char* toString(ShadingModel m) { return nameOf(kShadingModelNames, m); }
+inline std::optional<ShadingModel> parseShadingModel(std::string_view name) {
+    return lookupName(kShadingModelNames, name);
+}
+
+}  // namespace shadelab
