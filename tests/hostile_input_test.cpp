@@ -151,6 +151,34 @@ TEST(HostileInput, PngHeadersAreCheckedBeforeDecoding) {
     EXPECT_EQ(ok.code, 0) << ok.out;
 }
 
+TEST(HostileInput, RenderOverTheMemoryBudgetIsOneLine) {
+    // 16384² through both renderers: about 17 GB of images. Refused from the estimate, before any pixel.
+    const std::string dir = folder("memory");
+    const std::string scene = shadelab::test::sourcePath("assets/scenes/default.json");
+    const Result r = run({"render", scene, "-o", dir + "/out.png", "--size", "16384x16384", "--renderer", "both",
+                          "--max-memory", "2G"});
+    expectRefused(r, "default.json", "over the limit of 2048 MiB (--max-memory)");
+    const Result bad = run({"render", scene, "-o", dir + "/out.png", "--max-memory", "lots"});
+    EXPECT_EQ(bad.code, 2) << bad.out;
+    // Negative control: the same scene at 64x48 fits in 2G.
+    const Result ok = run({"render", scene, "-o", dir + "/ok.png", "--size", "64x48", "--max-memory", "2G"});
+    EXPECT_EQ(ok.code, 0) << ok.out;
+}
+
+TEST(HostileInput, ControlCharactersAndHugeTextStayOnOneCappedLine) {
+    const std::string dir = folder("text");
+    // A newline and an ANSI escape in a light type, a name 100,000 characters long in a material reference.
+    writeText(dir + "/newline.json", R"({"shadelab": 1, "lights": [{"type": "point\n\u001b[31mred", "position": [0,1,0]}]})");
+    const Result nl = render(dir + "/newline.json", dir);
+    expectRefused(nl, "newline.json", "\\n\\x1b[31mred");
+    EXPECT_EQ(nl.out.find('\x1b'), std::string::npos) << nl.out;
+    writeText(dir + "/long.json", R"({"shadelab": 1, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": ")" +
+                                      std::string(100000, 'm') + R"("}]})");
+    const Result lng = render(dir + "/long.json", dir);
+    expectRefused(lng, "long.json", "unknown material");
+    EXPECT_LT(lng.out.size(), 400u) << lng.out.substr(0, 400);
+}
+
 TEST(HostileInput, NodeDagIsRefusedByTheTriangleBudgetBeforeExpanding) {
     // 2^19 × 47 = 24,641,536 triangles from 3 KB: once 6.6 GB and 16 s of raster; now one line at once.
     const std::string dir = folder("dag");

@@ -6,7 +6,7 @@
 #include "scene/scene_json.h"
 #include "util/read_file.h"
 #include "util/input_error.h"
-#include "util/warning.h"
+#include "util/messages.h"
 
 #include <glm/trigonometric.hpp>
 #include <type_traits>

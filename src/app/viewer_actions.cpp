@@ -8,8 +8,9 @@
 #include "scene/scene_json.h"
 #include "scene/scene_load.h"
 #include "util/atomic_file.h"
+#include "util/error_line.h"
 #include "util/input_error.h"
-#include "util/warning.h"
+#include "util/messages.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -197,7 +198,8 @@ void Viewer::setStatus(const std::string& message, bool error) {
     status_ = message;
     statusError_ = error;
     statusTime_ = glfwGetTime();
-    if (error || options_.verbose) std::fprintf(stderr, "shadelab: %s\n", message.c_str());
+    if (error) printError(message);
+    else if (options_.verbose) std::fprintf(stderr, "shadelab: %s\n", errorLine(message).c_str());
 }
 
 }  // namespace shadelab::app

@@ -7,6 +7,7 @@
 #include "image/compare_report.h"
 #include "image/png.h"
 #include "util/input_error.h"
+#include "util/messages.h"
 #include "util/output_file.h"
 
 #include <cstdio>
@@ -103,10 +104,10 @@ int compareCommand(int argc, char** argv) {
             std::fputs(compareSummary(r).c_str(), summary);
         return r.pass ? 0 : 1;
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "shadelab: usage error: %s\n", e.what());
+        printUsageError(e.what());
         return 2;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "shadelab: error: %s\n", e.what());
+        printError(e.what());
         return 2;
     }
 }

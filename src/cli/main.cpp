@@ -4,6 +4,7 @@
 #include "cli/render_command.h"
 #include "cli/view_command.h"
 #include "util/input_error.h"
+#include "util/messages.h"
 
 #include <cstdio>
 #include <exception>
@@ -41,11 +42,11 @@ int main(int argc, char** argv) {
         }
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "shadelab: usage error: %s\n", e.what());
+        printUsageError(e.what());
         if (command != "render" && command != "compare" && command != "view") std::fputs(kHelp, stderr);
         return 2;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "shadelab: error: %s\n", e.what());
+        printError(e.what());
         return 1;
     }
 }

@@ -3,6 +3,7 @@
 // --timings prints the per-stage breakdown.
 #include "cli/render_command.h"
 
+#include "cli/memory_budget.h"
 #include "cli/progress_bar.h"
 #include "cli/render_options.h"
 #include "cli/stage_timer.h"
@@ -16,7 +17,7 @@
 #include "trace/trace_image.h"
 #include "util/input_error.h"
 #include "util/output_file.h"
-#include "util/warning.h"
+#include "util/messages.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -97,18 +98,9 @@ std::vector<std::string> sceneInputs(const std::string& input, const Scene& scen
     return files;
 }
 
-}  // namespace
-
-int renderCommand(int argc, char** argv) {
-    const RenderOptions o = parseRenderOptions(argc, argv);
-    if (o.help) {
-        std::fputs(renderHelp().c_str(), stdout);
-        return 0;
-    }
+// The render itself; `doing` names the stage in progress, for an out-of-memory message.
+int render(const RenderOptions& o, std::string& doing) {
     const bool needRaster = o.renderer != RendererChoice::Trace;
-    // Before any work: a render that cannot be written, or would replace its own scene, is refused now.
-    checkOutput(o.output, "-o", {o.input});
-
     StageTimer timer;
     // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
     GltfImportOptions gltf;
@@ -124,6 +116,7 @@ int renderCommand(int argc, char** argv) {
         }
     }
     Scene scene = sceneFuture.get();
+    doing = "rendering";
     timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
     refuseInputAsOutput(o.output, "-o", sceneInputs(o.input, scene));
     if (o.model) scene.model = *o.model;
@@ -131,6 +124,7 @@ int renderCommand(int argc, char** argv) {
     o.raster.applyTo(scene.raster);
     if (needRaster && scene.lights.size() > size_t(kMaxLights))
         throw InputError(o.input, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
+    checkMemoryBudget(scene, o);
 
     Image8 output;
     if (o.renderer == RendererChoice::Raster) {
@@ -147,6 +141,7 @@ int renderCommand(int argc, char** argv) {
         std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
                      referenceDepth(scene, o), compareSummary(cmp).c_str());
     }
+    doing = "encoding the PNG";
     std::vector<uint8_t> png = encodePng(output);
     timer.stage("PNG encode");
     writeOutput(o.output, png.data(), png.size());
@@ -158,6 +153,26 @@ int renderCommand(int argc, char** argv) {
                      isStdout(o.output) ? "stdout" : o.output.c_str(), output.width,
                      output.height, toString(o.encoding), png.size());
     return 0;
+}
+
+}  // namespace
+
+int renderCommand(int argc, char** argv) {
+    const RenderOptions o = parseRenderOptions(argc, argv);
+    if (o.help) {
+        std::fputs(renderHelp().c_str(), stdout);
+        return 0;
+    }
+    // Before any work: a render that cannot be written, or would replace its own scene, is refused now.
+    checkOutput(o.output, "-o", {o.input});
+
+    // std::bad_alloc names no file and no stage; say both (an allocation the budget did not foresee).
+    std::string doing = "loading the scene";
+    try {
+        return render(o, doing);
+    } catch (const std::bad_alloc&) {
+        throw InputError(o.input, "out of memory while " + doing + " (see --max-memory and --size)");
+    }
 }
 
 }  // namespace shadelab::cli

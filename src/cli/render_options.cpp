@@ -2,6 +2,7 @@
 #include "cli/render_options.h"
 
 #include "cli/args.h"
+#include "cli/memory_budget.h"
 #include "cli/raster_flags.h"
 #include "raster/offscreen.h"
 #include "util/input_error.h"
@@ -36,6 +37,8 @@ const char* const kHelpTail =
     "  --gl-backend NAME          auto | egl-device | egl-surfaceless | osmesa\n"
     "                             (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
     "  --allow-external-paths     let glTF buffer URIs point outside the model's folder (../, absolute)\n"
+    "  --max-memory SIZE          refuse a render estimated to need more, e.g. 512M or 4G\n"
+    "                             (default: half of physical memory, within ulimit -v)\n"
     "  --timings                  print a per-stage timing and memory breakdown to stderr\n"
     "  --verbose                  log the GL backend, GL_RENDERER and GL_VERSION to stderr\n"
     "  -h, --help                 show this help\n"
@@ -61,7 +64,7 @@ Terms parseTerms(const std::string& list) {
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
     std::vector<std::string> valued = {"-o", "--output", "--size", "--model", "--terms", "--encoding",
-                                       "--gl-backend", "--spp", "--renderer", "--threads", "--depth"};
+                                       "--gl-backend", "--spp", "--renderer", "--threads", "--depth", "--max-memory"};
     std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
@@ -80,6 +83,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--output")) o.output = *v;
     if (o.output.empty()) throw UsageError("render needs -o out.png");
     if (auto v = args.value("--size")) std::tie(o.width, o.height) = parseSize(*v);
+    if (auto v = args.value("--max-memory")) o.maxMemory = parseMemorySize(*v);
     if (auto v = args.value("--model")) o.model = parseChoice("--model", *v, kShadingModelNames);
     if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
     if (auto v = args.value("--encoding")) o.encoding = parseChoice("--encoding", *v, kEncodingNames);

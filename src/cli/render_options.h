@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 #include "util/name_table.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -37,6 +38,7 @@ struct RenderOptions {
     RasterOverride raster;                  // --shadow-map-size, --pcf, ...: over the scene's "raster"
     gl::GlBackend backend = gl::GlBackend::Auto;
     bool allowExternalPaths = false;        // glTF buffers may live outside the model's folder
+    uint64_t maxMemory = 0;                 // --max-memory, bytes; 0 = defaultMaxMemory() (memory_budget.h)
     bool verbose = false;
     bool timings = false;
     bool help = false;                      // --help was given: print renderHelp() and do nothing else

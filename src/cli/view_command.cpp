@@ -7,7 +7,7 @@
 #include "cli/raster_flags.h"
 #include "scene/scene_load.h"
 #include "util/input_error.h"
-#include "util/warning.h"
+#include "util/messages.h"
 
 #include <cstdio>
 #include <cstdlib>

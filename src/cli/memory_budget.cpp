@@ -1,0 +1,68 @@
+// Render memory estimate and the --max-memory check. Per-item costs measured on 2CylinderEngine and the
+// default scene (bench/README.md), rounded up.
+#include "cli/memory_budget.h"
+
+#include "util/input_error.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace shadelab::cli {
+namespace {
+
+constexpr uint64_t kMiB = uint64_t(1) << 20;
+constexpr uint64_t kTraceBytesPerTriangle = 320;   // MeshBvh: vertices, normals, ids, boxes and build scratch
+constexpr uint64_t kRasterBytesPerTriangle = 160;  // vertex and index buffers, the driver's copy included
+constexpr uint64_t kImageBytesPerPixel = 16 + 4 + 4 + 4;  // float RGBA, coverage, 8-bit RGBA, PNG rows
+
+uint64_t triangles(const Scene& scene) {
+    uint64_t n = 0;
+    for (const Mesh& m : scene.meshes) n += m.triangleCount();
+    return n;
+}
+
+}  // namespace
+
+uint64_t defaultMaxMemory() {
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    uint64_t limit = pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) / 2 : uint64_t(4) << 30;
+    rlimit as{};
+    if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) limit = std::min(limit, uint64_t(as.rlim_cur) / 4 * 3);
+    return limit;
+}
+
+uint64_t estimateRenderBytes(const Scene& scene, const RenderOptions& o) {
+    const uint64_t pixels = uint64_t(o.width) * uint64_t(o.height);
+    const bool raster = o.renderer != RendererChoice::Trace, trace = o.renderer != RendererChoice::Raster;
+    uint64_t bytes = 0;
+    if (raster) bytes += pixels * kImageBytesPerPixel + triangles(scene) * kRasterBytesPerTriangle;
+    if (trace) bytes += pixels * kImageBytesPerPixel + triangles(scene) * kTraceBytesPerTriangle;
+    if (raster && trace) bytes += pixels * 4 * 5;  // band mask, heatmap, and the three-wide side-by-side
+    return bytes;
+}
+
+void checkMemoryBudget(const Scene& scene, const RenderOptions& o) {
+    const uint64_t need = estimateRenderBytes(scene, o), limit = o.maxMemory ? o.maxMemory : defaultMaxMemory();
+    if (need <= limit) return;
+    throw InputError(o.input, "a " + std::to_string(o.width) + "x" + std::to_string(o.height) + " " +
+                                  toString(o.renderer) + " render of this scene needs about " +
+                                  std::to_string(need / kMiB) + " MiB, over the limit of " +
+                                  std::to_string(limit / kMiB) + " MiB (--max-memory)");
+}
+
+uint64_t parseMemorySize(const std::string& text) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    std::string unit = end ? std::string(end) : std::string();
+    double scale = double(kMiB);
+    if (unit == "G" || unit == "g" || unit == "GiB") scale = double(kMiB) * 1024.0;
+    else if (unit == "M" || unit == "m" || unit == "MiB" || unit.empty()) scale = double(kMiB);
+    else scale = 0.0;
+    if (end == text.c_str() || !std::isfinite(v) || v <= 0.0 || scale == 0.0 || v * scale > 1e18)
+        throw UsageError("--max-memory: expected a size such as 512M or 2G, got '" + text + "'");
+    return uint64_t(v * scale);
+}
+
+}  // namespace shadelab::cli
