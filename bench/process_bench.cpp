@@ -1,15 +1,15 @@
 // process_bench: runs a command N times and prints each run's wall time and peak resident memory, then
 // the medians. Whole-process figures, as the issues' speed targets are stated.
 // usage: process_bench [--runs N] [--warmup K] -- command [args...]
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -46,8 +46,10 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
     int runs = 5, warmup = 1, i = 1;
     for (; i < argc && std::strcmp(argv[i], "--") != 0; ++i) {
-        if (!std::strcmp(argv[i], "--runs") && i + 1 < argc) runs = std::atoi(argv[++i]);
-        else if (!std::strcmp(argv[i], "--warmup") && i + 1 < argc) warmup = std::atoi(argv[++i]);
+        if (!std::strcmp(argv[i], "--runs") && i + 1 < argc)
+            runs = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--warmup") && i + 1 < argc)
+            warmup = std::atoi(argv[++i]);
         else {
             std::fprintf(stderr, "usage: process_bench [--runs N] [--warmup K] -- command [args...]\n");
             return 2;

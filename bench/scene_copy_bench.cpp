@@ -31,7 +31,8 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     using namespace shadelab;
-    const char* model = argc > 1 ? argv[1] : "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+    const char* model =
+        argc > 1 ? argv[1] : "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 21;
     try {
         Scene scene = loadScene(model);

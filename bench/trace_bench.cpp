@@ -40,7 +40,7 @@ struct Options {
     std::string engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
     int runs = 5, threads = 2, width = 1920, height = 1080;
     bool skipSpheres = false, skipEngine = false;
-    std::string png;    // write the spheres image here when set
+    std::string png;  // write the spheres image here when set
 };
 
 double median(std::vector<double> v) {
@@ -91,8 +91,7 @@ struct RayCounts {
 };
 
 // The shadow ray of a hit: from P offset along the geometric normal on the viewer's side, toward light 0.
-bool shadowRay(const Scene& scene, glm::vec3 P, glm::vec3 Ng, glm::vec3 dir, float eps, trace::Ray& out,
-               float& tMax) {
+bool shadowRay(const Scene& scene, glm::vec3 P, glm::vec3 Ng, glm::vec3 dir, float eps, trace::Ray& out, float& tMax) {
     if (glm::dot(Ng, dir) > 0.0f) Ng = -Ng;
     const float len = glm::length(Ng);
     if (!(len > 0.0f) || scene.lights.empty()) return false;
@@ -123,8 +122,8 @@ RayCounts traceOurs(const trace::TraceScene& ts, const ViewSetup& view, int thre
             ++c.hits;
             trace::Ray sr;
             float tMax;
-            if (shadowRay(scene, ray.origin + hit->t * ray.dir, mb.geometricNormal(hit->index), ray.dir,
-                          ts.epsilon(), sr, tMax))
+            if (shadowRay(scene, ray.origin + hit->t * ray.dir, mb.geometricNormal(hit->index), ray.dir, ts.epsilon(),
+                          sr, tMax))
                 c.occluded += ts.occluded(sr, tMax) ? 1 : 0;
         }
         perRow[size_t(y)] = c;
@@ -142,7 +141,7 @@ RayCounts traceOurs(const trace::TraceScene& ts, const ViewSetup& view, int thre
 struct EmbreeScene {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
-    std::vector<glm::vec3> normals;     // geometric, per triangle, for the shadow-ray offset
+    std::vector<glm::vec3> normals;  // geometric, per triangle, for the shadow-ray offset
 
     explicit EmbreeScene(const Scene& s) {
         device = rtcNewDevice(nullptr);
@@ -211,7 +210,8 @@ RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, cons
             ++c.hits;
             trace::Ray sr;
             float tMax;
-            if (!shadowRay(scene, ray.origin + rh.ray.tfar * ray.dir, es.normals[rh.hit.primID], ray.dir, eps, sr, tMax))
+            if (!shadowRay(scene, ray.origin + rh.ray.tfar * ray.dir, es.normals[rh.hit.primID], ray.dir, eps, sr,
+                           tMax))
                 continue;
             RTCRay r{};
             r.org_x = sr.origin.x;
@@ -300,10 +300,14 @@ int main(int argc, char** argv) {
             }
             return argv[++i];
         };
-        if (a == "--spheres") o.spheres = next();
-        else if (a == "--engine") o.engine = next();
-        else if (a == "--runs") o.runs = std::max(1, std::atoi(next().c_str()));
-        else if (a == "--threads") o.threads = std::max(1, std::atoi(next().c_str()));
+        if (a == "--spheres")
+            o.spheres = next();
+        else if (a == "--engine")
+            o.engine = next();
+        else if (a == "--runs")
+            o.runs = std::max(1, std::atoi(next().c_str()));
+        else if (a == "--threads")
+            o.threads = std::max(1, std::atoi(next().c_str()));
         else if (a == "--size") {
             const std::string s = next();
             if (std::sscanf(s.c_str(), "%dx%d", &o.width, &o.height) != 2) return 2;
@@ -311,7 +315,8 @@ int main(int argc, char** argv) {
             const std::string w = next();
             o.skipSpheres = w != "spheres";
             o.skipEngine = w != "engine";
-        } else if (a == "--png") o.png = next();
+        } else if (a == "--png")
+            o.png = next();
         else {
             std::fprintf(stderr,
                          "usage: trace_bench [--only spheres|engine] [--runs N] [--threads N] [--size WxH]\n"

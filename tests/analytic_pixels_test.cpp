@@ -1,12 +1,12 @@
 // Analytic pixels (issue 2): a headless raster render of a sphere under a directional light, checked
 // pixel by pixel against the C++ equations evaluated for each pixel's own ray and hit point.
+#include "gl_fixture.h"
 #include "image/encode.h"
 #include "image/png.h"
 #include "raster/raster_renderer.h"
 #include "scene/coverage.h"
 #include "scene/view.h"
 #include "shading/local_illumination.h"
-#include "gl_fixture.h"
 #include "test_output.h"
 
 #include <cmath>

@@ -76,8 +76,8 @@ TEST(AppState, SetShininessChangesOnlyThatObjectAndClamps) {
     EXPECT_EQ(s.scene.spheres[red - 1].material.s, kMaxShininess);
     setShininess(s, red, -3.0f);
     EXPECT_EQ(s.scene.spheres[red - 1].material.s, 0.0f);
-    EXPECT_FALSE(setShininess(s, 0, 10.0f));     // background
-    EXPECT_FALSE(setShininess(s, 999, 10.0f));   // no such object
+    EXPECT_FALSE(setShininess(s, 0, 10.0f));    // background
+    EXPECT_FALSE(setShininess(s, 999, 10.0f));  // no such object
 }
 
 TEST(AppState, TermsToggleOneAtATime) {
@@ -145,7 +145,7 @@ TEST(AppState, PresetsComeFromTheClassicTable) {
     EXPECT_EQ(m.md, glm::vec3(0.780392f, 0.568627f, 0.113725f));
     EXPECT_EQ(m.ms, glm::vec3(0.992157f, 0.941176f, 0.807843f));
     EXPECT_FLOAT_EQ(m.s, 0.21794872f * 128.0f);
-    EXPECT_EQ(m.kr, glm::vec3(0.6f));  // kept: presets set ma, md, ms and s only
+    EXPECT_EQ(m.kr, glm::vec3(0.6f));                               // kept: presets set ma, md, ms and s only
     EXPECT_EQ(s.scene.spheres[red - 1].material.md, redBefore.md);  // negative control
 }
 
@@ -161,8 +161,7 @@ TEST(AppState, LightsAddRemoveAndAmbient) {
     EXPECT_EQ(s.scene.lights.size(), 2u);
     EXPECT_NE(s.scene.lights[0].name, keyName);
     EXPECT_FALSE(removeLight(s, 5));
-    while (addLight(s, LightType::Point) >= 0) {
-    }
+    while (addLight(s, LightType::Point) >= 0) {}
     EXPECT_EQ(s.scene.lights.size(), size_t(kMaxLights));
     setAmbient(s, glm::vec3(0.3f, -1.0f, 0.1f));
     EXPECT_EQ(s.scene.ambient, glm::vec3(0.3f, 0.0f, 0.1f));
@@ -502,8 +501,9 @@ TEST(AppScript, SetRasterChangesOnlyTheFieldsGiven) {
 TEST(AppScript, ErrorsNameTheFileAndTheAction) {
     EXPECT_EQ(parseError(R"([{"action": "frameAll"}, {"action": "setShine", "s": 1}])"),
               "actions.json: actions[1].action: unknown action 'setShine' (docs/viewer.md lists them)");
-    EXPECT_NE(parseError(R"([{"action": "setTerm", "term": "spec", "on": true}])").find("actions.json: actions[0].term:"),
-              std::string::npos);
+    EXPECT_NE(
+        parseError(R"([{"action": "setTerm", "term": "spec", "on": true}])").find("actions.json: actions[0].term:"),
+        std::string::npos);
     EXPECT_NE(parseError(R"([{"action": "setShininess", "object": "gold"}])").find("actions[0].s: "),
               std::string::npos);
     EXPECT_NE(parseError(R"([{"frame": 3, "action": "frameAll"}, {"frame": 1, "action": "frameAll"}])")

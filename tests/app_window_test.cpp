@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/wait.h>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -26,7 +27,6 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
-#include <sys/wait.h>
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -65,7 +65,7 @@ Result render(const std::string& scene, const std::string& out, const std::strin
 
 bool haveXvfb() { return shell("command -v xvfb-run").code == 0; }
 
-#define REQUIRE_XVFB()                                                                                  \
+#define REQUIRE_XVFB() \
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: apt-get install xvfb xauth (scripts/install-deps.sh)"
 
 std::string writeText(const std::string& name, const std::string& text) {
@@ -118,8 +118,10 @@ TEST(AppWindow, HelpAndNoDisplayNeedNoWindow) {
     Result badFlag = shell(binary() + " view --shadow-map-size 5");
     EXPECT_EQ(badFlag.code, 2) << badFlag.out;
     EXPECT_NE(badFlag.out.find("--shadow-map-size: expected auto or a whole number from 16 to 8192, got '5'"),
-              std::string::npos) << badFlag.out;
-    Result badScript = shell("env DISPLAY=:0 " + binary() + " view --script " + writeText("bad.json", "[{\"action\": 1}]"));
+              std::string::npos)
+        << badFlag.out;
+    Result badScript =
+        shell("env DISPLAY=:0 " + binary() + " view --script " + writeText("bad.json", "[{\"action\": 1}]"));
     EXPECT_EQ(badScript.code, 1) << badScript.out;
     EXPECT_NE(badScript.out.find("bad.json: actions[0].action:"), std::string::npos) << badScript.out;
 }
@@ -181,7 +183,8 @@ TEST(AppWindow, RasterFlagsAndSetRasterMatchHeadlessRenders) {
     const std::string flagged = test::outputPath("raster_view_flags.png");
     const std::string scripted = test::outputPath("raster_view_script.png");
     const std::string script = writeText("raster_script.json", R"({"actions": [
-        {"frame": 5, "action": "screenshot", "path": ")" + flagged + R"("},
+        {"frame": 5, "action": "screenshot", "path": ")" + flagged +
+                                                                   R"("},
         {"frame": 6, "action": "setRaster", "shadowMapSize": "auto", "pcf": false, "reflectionCubeSize": 8}
     ]})");
     Result v = view(scenePath + " --size " + kSize + " --frames 10 --pcf --shadow-map-size 16 --script " + script +
@@ -211,11 +214,17 @@ TEST(AppWindow, ProbeReportsObjectAndNoLOfSharedShading) {
     const glm::ivec2 px = pixelOf(scene, sphere.center + glm::vec3(-0.3f, 0.4f, 0.0f));
     const std::string onSphere = test::outputPath("probe_sphere.json");
     const std::string onFloor = test::outputPath("probe_floor.json");
-    const std::string script = writeText("probe_script.json", "[" 
-        R"({"frame": 2, "action": "probe", "x": )" + std::to_string(px.x) + R"(, "y": )" + std::to_string(px.y) + "},"
-        R"({"action": "probeReport", "path": ")" + onSphere + R"("},)"
-        R"({"action": "probe", "x": 160, "y": 175},)"
-        R"({"action": "probeReport", "path": ")" + onFloor + R"("}])");
+    const std::string script = writeText("probe_script.json",
+                                         "["
+                                         R"({"frame": 2, "action": "probe", "x": )" +
+                                             std::to_string(px.x) + R"(, "y": )" + std::to_string(px.y) +
+                                             "},"
+                                             R"({"action": "probeReport", "path": ")" +
+                                             onSphere +
+                                             R"("},)"
+                                             R"({"action": "probe", "x": 160, "y": 175},)"
+                                             R"({"action": "probeReport", "path": ")" +
+                                             onFloor + R"("}])");
     Result v = view(scenePath + " --size " + kSize + " --frames 5 --script " + script);
     ASSERT_EQ(v.code, 0) << v.out;
 
@@ -226,8 +235,8 @@ TEST(AppWindow, ProbeReportsObjectAndNoLOfSharedShading) {
     EXPECT_EQ(j["coverage_id"].get<uint32_t>(), id) << "the rasterizer's coverage disagrees with the probe";
     // The C++ shading's NoL for this pixel, computed here from the shared functions.
     const ViewSetup vs = makeViewSetup(scene, kW, kH);
-    const glm::vec3 dir = shading::cameraRayDirection(vs.forward, vs.right, vs.up, vs.tanHalfFovY, float(kW),
-                                                      float(kH), px.x + 0.5f, px.y + 0.5f);
+    const glm::vec3 dir = shading::cameraRayDirection(vs.forward, vs.right, vs.up, vs.tanHalfFovY, float(kW), float(kH),
+                                                      px.x + 0.5f, px.y + 0.5f);
     const float t = shading::intersectSphere(vs.eye, dir, sphere.center, sphere.radius, 0.0f);
     ASSERT_GT(t, 0.0f);
     const glm::vec3 P = vs.eye + t * dir;
@@ -249,14 +258,12 @@ TEST(AppWindow, BrokenShaderReloadKeepsLastGoodProgram) {
     const fs::path broken = test::outputPath("broken_shaders");
     fs::remove_all(broken);
     fs::copy(test::sourcePath("shaders"), broken);
-    {
-        std::ofstream(broken / "sphere.frag", std::ios::app) << "this is not GLSL;\n";
-    }
+    { std::ofstream(broken / "sphere.frag", std::ios::app) << "this is not GLSL;\n"; }
     const std::string scenePath = test::sourcePath("assets/scenes/default.json");
     const std::string shot = test::outputPath("reload_view.png");
     const std::string ref = test::outputPath("reload_render.png");
-    const std::string script = writeText("reload_script.json", R"([{"frame": 3, "action": "reloadShaders", "dir": ")" +
-                                                                    broken.string() + R"("}])");
+    const std::string script = writeText(
+        "reload_script.json", R"([{"frame": 3, "action": "reloadShaders", "dir": ")" + broken.string() + R"("}])");
     Result v = view(scenePath + " --size " + kSize + " --frames 8 --script " + script + " --screenshot " + shot);
     ASSERT_EQ(v.code, 0) << v.out;
     EXPECT_NE(v.out.find("sphere.frag: line"), std::string::npos) << "the error should name file and line: " << v.out;
@@ -271,7 +278,8 @@ TEST(AppWindow, ResizingKeepsRenderingCorrect) {
     const std::string small = test::outputPath("resize_small.png");
     const std::string script = writeText("resize_script.json", R"([
         {"frame": 2, "action": "resizeWindow", "width": 200, "height": 120},
-        {"frame": 6, "action": "windowScreenshot", "path": ")" + small + R"("},
+        {"frame": 6, "action": "windowScreenshot", "path": ")" + small +
+                                                                   R"("},
         {"frame": 8, "action": "resizeWindow", "width": 1, "height": 1},
         {"frame": 12, "action": "resizeWindow", "width": 900, "height": 600}])");
     // A fixed --size renders the same pixels at any window size; the window only shows them scaled.

@@ -5,6 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -14,12 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <spawn.h>
 #include <string>
-#include <sys/stat.h>
-#include <sys/sysmacros.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 using namespace shadelab;
@@ -120,7 +120,9 @@ TEST(Cli, ShadowMapsOverBudgetAreAClearError) {
     const size_t at = text.find(key);
     ASSERT_NE(at, std::string::npos) << "the default key light changed; update this test";
     // Two point lights among the spheres: two cube maps, 12 layers of 8192² (3 GiB).
-    text.replace(at, key.size(), R"({"type": "point", "position": [0, 1.5, 0]}, {"type": "point", "name": "warm key", "position": [1, 1.5, 0])");
+    text.replace(
+        at, key.size(),
+        R"({"type": "point", "position": [0, 1.5, 0]}, {"type": "point", "name": "warm key", "position": [1, 1.5, 0])");
     const std::string scene = writeText("shadow_budget_scene.json", text);
     const std::string out = test::outputPath("shadow_budget.png");
     fs::remove(out);
@@ -155,8 +157,8 @@ TEST(Cli, MalformedJsonExitsOneWithPlace) {
 }
 
 TEST(Cli, WrongFieldTypeNamesJsonPath) {
-    std::string bad = writeText("badcolor.json",
-                                R"({"lights": [{"type": "point", "position": [0, 1, 0], "color": [1, 1]}]})");
+    std::string bad =
+        writeText("badcolor.json", R"({"lights": [{"type": "point", "position": [0, 1, 0], "color": [1, 1]}]})");
     Result r = run("render " + bad + " -o " + test::outputPath("badcolor.png"));
     EXPECT_EQ(r.code, 1) << r.out;
     EXPECT_NE(r.out.find("lights[0].color"), std::string::npos) << r.out;
@@ -186,8 +188,9 @@ TEST(Cli, EnumFlagsListTheirWordsAndAcceptTheSameAliasesAsSceneFiles) {
         {"--encoding gamma", "shadelab: usage error: --encoding: expected srgb or linear, got 'gamma'"},
         {"--model gouraud", "shadelab: usage error: --model: expected phong or blinn-phong, got 'gouraud'"},
         {"--renderer gpu", "shadelab: usage error: --renderer: expected raster, trace or both, got 'gpu'"},
-        {"--terms ambient,glow", "shadelab: usage error: --terms: unknown term 'glow'; expected ambient, diffuse, "
-                                 "specular, shadows, reflections or none"},
+        {"--terms ambient,glow",
+         "shadelab: usage error: --terms: unknown term 'glow'; expected ambient, diffuse, "
+         "specular, shadows, reflections or none"},
     };
     for (const auto& [flags, message] : cases) {
         Result r = run("render " + scene + " -o x.png " + flags);
@@ -318,8 +321,9 @@ TEST(Cli, RasterFlagsOverrideTheScenesRasterSettings) {
     EXPECT_EQ(render(scene, "raster_flags_as_file.png", "--shadow-map-size 16 --pcf --reflection-cube-size 8"),
               fromFile);
     EXPECT_NE(fromFile, base);
-    EXPECT_EQ(render(withRaster, "raster_flags_file_overridden.png", "--shadow-map-size auto --reflection-cube-size 128"),
-              render(scene, "raster_flags_pcf_only.png", "--pcf"));
+    EXPECT_EQ(
+        render(withRaster, "raster_flags_file_overridden.png", "--shadow-map-size auto --reflection-cube-size 128"),
+        render(scene, "raster_flags_pcf_only.png", "--pcf"));
     EXPECT_EQ(render(withRaster, "raster_flags_all_overridden.png",
                      "--shadow-map-size auto --reflection-cube-size 128 --no-pcf"),
               base)
@@ -378,8 +382,8 @@ TEST(CliNothingLost, ReadOnlyFolder) {
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::ofstream(dir + "/out.png") << "previous";
-    fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-                             fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read | fs::perms::group_exec |
+                             fs::perms::others_read | fs::perms::others_exec);
     // Root ignores folder permissions: run as the unprivileged user `nobody` instead.
     std::string asUser = geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
     if (!asUser.empty() && std::system((asUser + "test -x " + std::string(SHADELAB_BINARY) + " -a -r " +
@@ -404,8 +408,9 @@ TEST(CliNothingLost, FileSizeLimitHitMidWrite) {
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::ofstream(dir + "/out.png") << "previous";
-    Result r = run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 320x180",
-                   "trap '' XFSZ; ulimit -f 8; ");
+    Result r =
+        run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 320x180",
+            "trap '' XFSZ; ulimit -f 8; ");
     EXPECT_EQ(r.code, 1) << r.out;
     EXPECT_NE(r.out.find("File too large"), std::string::npos) << r.out;
     EXPECT_EQ(readAll(dir + "/out.png"), "previous");
@@ -415,11 +420,13 @@ TEST(CliNothingLost, FileSizeLimitHitMidWrite) {
 TEST(CliNothingLost, FullDisk) {
     std::string dir = test::outputPath("fulldisk");
     fs::create_directories(dir);
-    if (std::system(("mountpoint -q " + dir + " || mount -t tmpfs -o size=64k tmpfs " + dir + " 2>/dev/null").c_str()) != 0)
+    if (std::system(
+            ("mountpoint -q " + dir + " || mount -t tmpfs -o size=64k tmpfs " + dir + " 2>/dev/null").c_str()) != 0)
         GTEST_SKIP() << "cannot mount a small tmpfs here (needs root); FileSizeLimitHitMidWrite covers the write path";
     for (const std::string& f : listDir(dir)) fs::remove(dir + "/" + f);
     std::ofstream(dir + "/out.png") << "previous";
-    Result r = run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 640x360");
+    Result r =
+        run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 640x360");
     std::vector<std::string> left = listDir(dir);
     std::string kept = readAll(dir + "/out.png");
     (void)std::system(("umount " + dir).c_str());
@@ -676,8 +683,8 @@ TEST(CliOutputs, LongestOutputNamesWork) {
     // 254 bytes: the old "<name>.tmp.<pid>.<n>" temporary pushed it past NAME_MAX (255).
     const std::string dir = freshDir("long_name");
     const std::string name = std::string(250, 'x') + ".png";
-    Result r = run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/" + name +
-                   " --size 32x18");
+    Result r =
+        run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/" + name + " --size 32x18");
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_EQ(readPng(dir + "/" + name).width, 32);
     EXPECT_EQ(listDir(dir), std::vector<std::string>{name});
@@ -689,8 +696,8 @@ TEST(CliOutputs, FileThenFolderAreSyncedAroundTheRename) {
     fs::remove(log);
     std::string env;
     for (const std::string& v : probeEnvironment(log, 0)) env += v + " ";
-    Result r = run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 32x18",
-                   env);
+    Result r =
+        run("render " + test::sourcePath("assets/scenes/default.json") + " -o " + dir + "/out.png --size 32x18", env);
     ASSERT_EQ(r.code, 0) << r.out;
     const std::vector<std::string> calls = linesWith(readAll(log), dir);
     ASSERT_GE(calls.size(), 3u) << readAll(log);

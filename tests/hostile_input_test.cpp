@@ -6,20 +6,20 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
-#include <chrono>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <string>
-#include <vector>
-#include <csignal>
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -27,9 +27,9 @@ namespace {
 
 struct Result {
     int code = -1;
-    std::string out;      // stdout and stderr together
+    std::string out;  // stdout and stderr together
     double seconds = 0;
-    double peakMiB = 0;   // the process's peak resident set
+    double peakMiB = 0;  // the process's peak resident set
 };
 
 // Runs shadelab with `args` (no shell), killing it after 10 s (code 124). Captures stdout and stderr and the
@@ -78,7 +78,9 @@ Result run(const std::vector<std::string>& args) {
     return r;
 }
 
-Result render(const std::string& input, const std::string& dir) { return run({"render", input, "-o", dir + "/out.png"}); }
+Result render(const std::string& input, const std::string& dir) {
+    return run({"render", input, "-o", dir + "/out.png"});
+}
 
 // A private folder per test, emptied first.
 std::string folder(const std::string& name) {
@@ -111,13 +113,14 @@ std::string gltfWithBuffer(const std::string& uri, int byteLength) {
 std::string dagGltf(int levels) {
     const int bytes = 47 * 3 * 12;
     std::string nodes = R"({"mesh":0})";
-    for (int l = 1; l <= levels; ++l) nodes += R"(,{"children":[)" + std::to_string(l - 1) + "," + std::to_string(l - 1) + "]}";
+    for (int l = 1; l <= levels; ++l)
+        nodes += R"(,{"children":[)" + std::to_string(l - 1) + "," + std::to_string(l - 1) + "]}";
     return R"({"asset":{"version":"2.0"},"buffers":[{"uri":"data:application/octet-stream;base64,)" +
            std::string(size_t(bytes) / 3 * 4, 'A') + R"(","byteLength":)" + std::to_string(bytes) +
            R"(}],"bufferViews":[{"buffer":0,"byteLength":)" + std::to_string(bytes) +
            R"(}],"accessors":[{"bufferView":0,"componentType":5126,"count":141,"type":"VEC3","min":[0,0,0],"max":[0,0,0]}],)"
-           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[)" + nodes +
-           R"(],"scenes":[{"nodes":[)" + std::to_string(levels) + R"(]}],"scene":0})";
+           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[)" +
+           nodes + R"(],"scenes":[{"nodes":[)" + std::to_string(levels) + R"(]}],"scene":0})";
 }
 
 // A real 16x16 PNG whose IHDR then claims `w` x `h` (the CRC is left stale: nothing may decode it).
@@ -131,7 +134,8 @@ std::string pngClaiming(const std::string& path, uint32_t w, uint32_t h) {
         bytes[size_t(16 + k)] = uint8_t(w >> (24 - 8 * k));
         bytes[size_t(20 + k)] = uint8_t(h >> (24 - 8 * k));
     }
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     return path;
 }
 
@@ -155,8 +159,8 @@ TEST(HostileInput, RenderOverTheMemoryBudgetIsOneLine) {
     // 16384² through both renderers: about 17 GB of images. Refused from the estimate, before any pixel.
     const std::string dir = folder("memory");
     const std::string scene = shadelab::test::sourcePath("assets/scenes/default.json");
-    const Result r = run({"render", scene, "-o", dir + "/out.png", "--size", "16384x16384", "--renderer", "both",
-                          "--max-memory", "2G"});
+    const Result r = run(
+        {"render", scene, "-o", dir + "/out.png", "--size", "16384x16384", "--renderer", "both", "--max-memory", "2G"});
     expectRefused(r, "default.json", "over the limit of 2048 MiB (--max-memory)");
     const Result bad = run({"render", scene, "-o", dir + "/out.png", "--max-memory", "lots"});
     EXPECT_EQ(bad.code, 2) << bad.out;
@@ -168,12 +172,14 @@ TEST(HostileInput, RenderOverTheMemoryBudgetIsOneLine) {
 TEST(HostileInput, ControlCharactersAndHugeTextStayOnOneCappedLine) {
     const std::string dir = folder("text");
     // A newline and an ANSI escape in a light type, a name 100,000 characters long in a material reference.
-    writeText(dir + "/newline.json", R"({"shadelab": 1, "lights": [{"type": "point\n\u001b[31mred", "position": [0,1,0]}]})");
+    writeText(dir + "/newline.json",
+              R"({"shadelab": 1, "lights": [{"type": "point\n\u001b[31mred", "position": [0,1,0]}]})");
     const Result nl = render(dir + "/newline.json", dir);
     expectRefused(nl, "newline.json", "\\n\\x1b[31mred");
     EXPECT_EQ(nl.out.find('\x1b'), std::string::npos) << nl.out;
-    writeText(dir + "/long.json", R"({"shadelab": 1, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": ")" +
-                                      std::string(100000, 'm') + R"("}]})");
+    writeText(dir + "/long.json",
+              R"({"shadelab": 1, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": ")" +
+                  std::string(100000, 'm') + R"("}]})");
     const Result lng = render(dir + "/long.json", dir);
     expectRefused(lng, "long.json", "unknown material");
     EXPECT_LT(lng.out.size(), 400u) << lng.out.substr(0, 400);
@@ -219,8 +225,7 @@ TEST(HostileInput, RefusedBufferOutsideTheFolderIsNeverOpened) {
     const std::string dir = folder("outside-model");
     ASSERT_EQ(mkfifo((outside + "/secret.bin").c_str(), 0600), 0);
     writeText(dir + "/model.gltf", gltfWithBuffer("../outside/secret.bin", 840));
-    expectRefused(render(dir + "/model.gltf", dir), "secret.bin",
-                  "outside the model's folder");
+    expectRefused(render(dir + "/model.gltf", dir), "secret.bin", "outside the model's folder");
 }
 
 TEST(HostileInput, DevZeroBehindASymlinkIsRefusedBeforeReading) {
@@ -252,7 +257,8 @@ TEST(HostileInput, HugeSparseBufferIsRefusedByItsSizeBeforeReading) {
 TEST(HostileInput, NulInAMeshSourceIsRefusedAndEscaped) {
     // "/etc/passwd\u0000.gltf" once passed the extension check and opened /etc/passwd as glTF.
     const std::string dir = folder("nul");
-    writeText(dir + "/scene.json", R"({"shadelab": 1, "objects": [{"type": "mesh", "source": "/etc/passwd\u0000.gltf"}]})");
+    writeText(dir + "/scene.json",
+              R"({"shadelab": 1, "objects": [{"type": "mesh", "source": "/etc/passwd\u0000.gltf"}]})");
     const Result r = render(dir + "/scene.json", dir);
     expectRefused(r, "/etc/passwd\\x00.gltf", "NUL");
 }

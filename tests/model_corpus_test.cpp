@@ -6,13 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -121,7 +121,8 @@ TEST(ModelCorpus, DamagedCopiesFailCleanly) {
             fs::remove(png);
             Outcome o = renderFile(path, png);
             std::string why = check(path, png, o);
-            if (!why.empty()) failures += seed.filename().string() + " copy " + std::to_string(i) + ": " + why + "\n" + o.out;
+            if (!why.empty())
+                failures += seed.filename().string() + " copy " + std::to_string(i) + ": " + why + "\n" + o.out;
             ++runs;
         }
     }
@@ -139,5 +140,6 @@ TEST(ModelCorpus, CheckerRejectsBrokenPromises) {
     EXPECT_NE(check(model, png, {1, "shadelab: error: something went wrong\n"}), "") << "must name the file";
     EXPECT_NE(check(model, png, {1, "error: /x/broken.glb: a\nerror: /x/broken.glb: b\n"}), "") << "one line";
     EXPECT_NE(check(model, png, {0, ""}), "") << "exit 0 needs a PNG";
-    EXPECT_EQ(check(model, png, {1, "shadelab: warning: /x/broken.glb: odd\nshadelab: error: /x/broken.glb: bad\n"}), "");
+    EXPECT_EQ(check(model, png, {1, "shadelab: warning: /x/broken.glb: odd\nshadelab: error: /x/broken.glb: bad\n"}),
+              "");
 }

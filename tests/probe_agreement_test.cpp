@@ -29,7 +29,7 @@ struct Expected {
     bool hit = false;
     uint32_t id = 0;
     glm::vec3 P{0.0f};
-    std::vector<float> visibility;      // per light
+    std::vector<float> visibility;  // per light
 };
 
 // What the reference itself computes for pixel (x, y): its primary ray, nearest hit, surface and shadow rays.
@@ -66,7 +66,8 @@ void boundaryPixels(const trace::TraceScene& ts, const std::vector<Expected>& al
                     const Expected& n = all[size_t((y + dy) * kW + x + dx)];
                     edge = edge || n.id != c.id || n.hit != c.hit;
                     if (c.hit && n.hit)
-                        for (size_t l = 0; l < lights; ++l) shadowEdge = shadowEdge || n.visibility[l] != c.visibility[l];
+                        for (size_t l = 0; l < lights; ++l)
+                            shadowEdge = shadowEdge || n.visibility[l] != c.visibility[l];
                 }
             if (edge) edges.push_back(y * kW + x);
             if (shadowEdge) shadowEdges.push_back(y * kW + x);

@@ -1,13 +1,13 @@
 // Banded rendering (raster_renderer.h Band): drawing an image in horizontal bands must give the same
 // pixels and coverage as drawing it whole, because every band samples the full image's pixel centres.
+#include "gl_fixture.h"
 #include "image/encode.h"
 #include "image/png.h"
 #include "raster/offscreen.h"
 #include "raster/raster_renderer.h"
-#include "util/input_error.h"
 #include "scene/scene_load.h"
-#include "gl_fixture.h"
 #include "test_output.h"
+#include "util/input_error.h"
 
 #include <filesystem>
 
@@ -69,8 +69,8 @@ TEST_F(RasterBandsTest, BandsEqualWholeImage) {
         Banded split = renderInBands(r, scene, w, h, bands);
         size_t diff = countDifferentPixels(whole.pixels, split.pixels);
         // Impostor pixels are exact; mesh edges may move by a rounding step of the band transform.
-        EXPECT_LE(diff, size_t(w * h) / 1000) << bands << " bands: " << diff << " pixels differ; images in "
-                                              << test::outputPath("");
+        EXPECT_LE(diff, size_t(w * h) / 1000)
+            << bands << " bands: " << diff << " pixels differ; images in " << test::outputPath("");
         EXPECT_EQ(whole.coverage.size(), split.coverage.size());
         size_t covDiff = 0;
         for (size_t i = 0; i < whole.coverage.size(); ++i) covDiff += whole.coverage[i] != split.coverage[i];

@@ -4,10 +4,10 @@
 // reflected edges: the gate is the shadow gate's (1 % of interior pixels over 3/255, mean within 1/255),
 // met here because everything reflected is far. A kr differing between the renderers, and the cube left
 // out, must fail; a near object shows the documented parallax error.
-#include "image/compare.h"
-#include "trace/trace_test_util.h"
 #include "gl_fixture.h"
+#include "image/compare.h"
 #include "render_compare.h"
+#include "trace/trace_test_util.h"
 
 #include <string>
 
@@ -28,7 +28,8 @@ Scene distantWorld(float kr) {
     Material mirror = test::colourMaterial(glm::vec3(0.15f), 64.0f, 0.3f);
     mirror.kr = glm::vec3(kr);
     scene.spheres.push_back({"mirror", {0.0f, 0.0f, 0.0f}, 1.0f, mirror});
-    const glm::vec3 centres[4] = {{-200.0f, 0.0f, 0.0f}, {200.0f, 25.0f, 0.0f}, {0.0f, 0.0f, 225.0f}, {25.0f, 200.0f, 0.0f}};
+    const glm::vec3 centres[4] = {
+        {-200.0f, 0.0f, 0.0f}, {200.0f, 25.0f, 0.0f}, {0.0f, 0.0f, 225.0f}, {25.0f, 200.0f, 0.0f}};
     const glm::vec3 colours[4] = {{0.8f, 0.2f, 0.2f}, {0.2f, 0.7f, 0.3f}, {0.2f, 0.3f, 0.9f}, {0.8f, 0.7f, 0.2f}};
     for (int i = 0; i < 4; ++i)
         scene.spheres.push_back({"", centres[i], 60.0f, test::colourMaterial(colours[i], 8.0f, 0.1f)});
@@ -75,7 +76,7 @@ TEST_F(RasterEnvironment, KrDifferingBetweenRenderersFails) {
 
 TEST_F(RasterEnvironment, WithoutTheCubeTheMirrorDiffers) {
     Scene raster = distantWorld(0.5f);
-    raster.terms.reflections = false;   // the raster sphere without its environment
+    raster.terms.reflections = false;  // the raster sphere without its environment
     CompareResult r = compareRenders(raster, distantWorld(0.5f), "environment_off_control");
     EXPECT_FALSE(r.pass) << "a mirror sphere without its cube passed: " << compareSummary(r);
 }

@@ -1,15 +1,15 @@
 // Raster planar reflection against the reference (issue 5): a kr = 0.5 checker mirror under three spheres,
 // the tracer at depth 1, gated as design.md §4 with the reflected silhouettes added to the silhouette band;
 // a kr that differs between the renderers must fail.
+#include "gl_fixture.h"
 #include "image/compare.h"
 #include "image/compare_report.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
-#include "scene/coverage.h"
-#include "trace/trace_image.h"
-#include "gl_fixture.h"
 #include "render_compare.h"
+#include "scene/coverage.h"
 #include "test_output.h"
+#include "trace/trace_image.h"
 
 #include <memory>
 #include <string>

@@ -1,15 +1,15 @@
 // Raster shadows against the reference (issue 5): spheres on a checker plane under 1 and 3 lights (point and
 // directional), shadows on, gated as design.md §4 with a shadow-edge allowance; a light moved in one renderer
 // must fail. Also: no acne on an unoccluded lit plane, and no NaNs in any example scene with every term on.
+#include "gl_fixture.h"
 #include "image/compare.h"
 #include "image/compare_report.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
-#include "scene/scene_load.h"
-#include "trace/trace_image.h"
-#include "gl_fixture.h"
 #include "render_compare.h"
+#include "scene/scene_load.h"
 #include "test_output.h"
+#include "trace/trace_image.h"
 
 #include <cmath>
 #include <filesystem>
@@ -39,7 +39,8 @@ Scene spheresOnPlane(int lights) {
         scene.lights.push_back(test::pointLight({-3.0f, 5.0f, 4.0f}, glm::vec3(1.0f)));
     } else {
         scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, {0.7f, 0.3f, 0.3f}));
-        scene.lights.push_back(test::pointLight({0.5f, 1.2f, 0.9f}, {0.2f, 0.5f, 0.2f}));  // between the spheres: cube map
+        scene.lights.push_back(
+            test::pointLight({0.5f, 1.2f, 0.9f}, {0.2f, 0.5f, 0.2f}));  // between the spheres: cube map
         Light sun;
         sun.type = LightType::Directional;
         sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.6f));

@@ -3,14 +3,14 @@
 // {s = 1, 32, 500} is rendered headless through EGL and by the CPU tracer, and gated as in design.md §4.
 // Negative controls below must fail the same gates. Failures leave both images, the heatmap and the
 // JSON report in build/test-output/reference_matrix_test/.
+#include "gl_fixture.h"
 #include "image/compare.h"
 #include "image/compare_report.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
+#include "render_compare.h"
 #include "scene/scene_load.h"
 #include "trace/trace_image.h"
-#include "gl_fixture.h"
-#include "render_compare.h"
 
 #include <memory>
 #include <string>

@@ -8,8 +8,8 @@
 #include "image/compare_report.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
-#include "trace/trace_image.h"
 #include "test_output.h"
+#include "trace/trace_image.h"
 
 #include <cstdio>
 #include <memory>
@@ -104,8 +104,7 @@ inline CompareResult compareWithReference(const Scene& raster, const Scene& trac
                                           std::optional<int> traceDepth, const CompareGates& gates,
                                           const std::string& name) {
     return gateWithEvidence(rasterizeWithCoverage(raster, width, height),
-                            traceWithCoverage(traced, width, height, comparisonDepth(traced, traceDepth)), gates,
-                            name);
+                            traceWithCoverage(traced, width, height, comparisonDepth(traced, traceDepth)), gates, name);
 }
 
 }  // namespace shadelab::test

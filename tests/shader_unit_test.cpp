@@ -1,9 +1,9 @@
 // Shader-unit test (issue 2): the GLSL lighting functions, run on the GPU over a sweep of N, L, V and s,
 // must equal the same functions compiled as C++ within 1e-4. This proves the two are one implementation.
 #include "gl/program.h"
+#include "gl_fixture.h"
 #include "raster/render_target.h"
 #include "shading/lighting.h"
-#include "gl_fixture.h"
 #include "test_output.h"
 
 #include <cmath>
@@ -118,11 +118,12 @@ TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
         const float* gpu = result.pixel(x, kH - 1 - yGl);  // readColor put GL's bottom row last
         glm::vec3 cpu = shading::shadeLight(c.N, c.L, c.V, Il, md, ms, c.s, c.model, true, true);
         glm::vec3 Nn = glm::normalize(c.N), Ln = glm::normalize(c.L), Vn = glm::normalize(c.V);
-        float spec = c.model == 0 ? shading::specularPhong(Nn, Ln, Vn, c.s) : shading::specularBlinnPhong(Nn, Ln, Vn, c.s);
-        float err = std::max({std::abs(gpu[0] - cpu.x), std::abs(gpu[1] - cpu.y), std::abs(gpu[2] - cpu.z),
-                              std::abs(gpu[3] - spec)});
-        report << i << ',' << c.model << ',' << c.s << ',' << gpu[0] << ',' << cpu.x << ',' << gpu[3] << ','
-               << spec << '\n';
+        float spec =
+            c.model == 0 ? shading::specularPhong(Nn, Ln, Vn, c.s) : shading::specularBlinnPhong(Nn, Ln, Vn, c.s);
+        float err = std::max(
+            {std::abs(gpu[0] - cpu.x), std::abs(gpu[1] - cpu.y), std::abs(gpu[2] - cpu.z), std::abs(gpu[3] - spec)});
+        report << i << ',' << c.model << ',' << c.s << ',' << gpu[0] << ',' << cpu.x << ',' << gpu[3] << ',' << spec
+               << '\n';
         if (err > worst) {
             worst = err;
             worstIndex = int(i);

@@ -1,15 +1,15 @@
 // An LD_PRELOAD shim for cli_test: logs the fsync, linkat and rename calls that reach libc, with the paths
 // they touch, and can hold each fsync of a regular file for a while, so a test can check the order of an
 // atomic write and signal a render in the middle of it. Test-only; never linked into shadelab.
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
-#include <dlfcn.h>
-#include <fcntl.h>
 #include <string>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace {
 

@@ -12,14 +12,14 @@
 namespace shadelab::app {
 
 struct ViewerOptions {
-    int width = 0, height = 0;         // --size: fixed render size in pixels; 0 = follow the window
-    int frames = -1;                   // --frames: exit after this many frames; -1 = when closed
-    std::string screenshot;            // --screenshot: the rendered image at exit (no UI)
-    std::string windowScreenshot;      // --window-screenshot: the whole window at exit, UI included
-    std::string probeReport;           // --probe-report: the probe's JSON at exit
-    bool stats = false;                // --stats: redraw every other frame, print median and p95 frame times
-    bool verbose = false;              // --verbose: GL_RENDERER, GL_VERSION, scene and shader sources
-    float uiScale = 0.0f;              // --ui-scale: 0 = the monitor's content scale
+    int width = 0, height = 0;     // --size: fixed render size in pixels; 0 = follow the window
+    int frames = -1;               // --frames: exit after this many frames; -1 = when closed
+    std::string screenshot;        // --screenshot: the rendered image at exit (no UI)
+    std::string windowScreenshot;  // --window-screenshot: the whole window at exit, UI included
+    std::string probeReport;       // --probe-report: the probe's JSON at exit
+    bool stats = false;            // --stats: redraw every other frame, print median and p95 frame times
+    bool verbose = false;          // --verbose: GL_RENDERER, GL_VERSION, scene and shader sources
+    float uiScale = 0.0f;          // --ui-scale: 0 = the monitor's content scale
 };
 
 // Opens the window and runs until it closes or the frames and script are done. Returns the exit code.

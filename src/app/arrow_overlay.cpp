@@ -15,8 +15,8 @@ struct Vertex {
     glm::vec3 base, tip, where, color;
 };
 
-void addArrow(std::vector<Vertex>& v, const glm::vec3& base, const glm::vec3& tip, const glm::vec3& color,
-              float width, float headLength, float headWidth) {
+void addArrow(std::vector<Vertex>& v, const glm::vec3& base, const glm::vec3& tip, const glm::vec3& color, float width,
+              float headLength, float headWidth) {
     const float w = 0.5f * width, hl = headLength, hw = 0.5f * headWidth;
     const glm::vec3 shaft[6] = {{0, 0, -w}, {0, 0, w}, {1, -hl, w}, {0, 0, -w}, {1, -hl, w}, {1, -hl, -w}};
     const glm::vec3 head[3] = {{1, 0, 0}, {1, -hl, hw}, {1, -hl, -hw}};

@@ -15,14 +15,14 @@ namespace shadelab::app {
 
 struct ArrowLabel {
     std::string text;
-    glm::vec2 position;         // framebuffer pixels, y down from the top of the window
+    glm::vec2 position;  // framebuffer pixels, y down from the top of the window
     glm::vec3 color;
 };
 
 struct Arrow {
     std::string label;
-    glm::vec3 direction;        // unit
-    glm::vec3 color;            // display colour (sRGB-ish, for the overlay only)
+    glm::vec3 direction;  // unit
+    glm::vec3 color;      // display colour (sRGB-ish, for the overlay only)
 };
 
 // The arrows of a probe: N, V, then L, R, H for each light (labelled L1, R1, H1, ... with two or more lights).

@@ -13,11 +13,10 @@ ImageView::ImageView(const gl::ShaderLibrary& shaders) {
     for (int mode = 0; mode < 4; ++mode)
         for (int srgb = 0; srgb < 2; ++srgb)
             for (int outline = 0; outline < 2; ++outline)
-                programs_[mode][srgb][outline] =
-                    gl::Program::build(shaders, "fullscreen.vert", "view_image.frag",
-                                       "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " +
-                                           std::to_string(srgb) + "\n#define OUTLINE " + std::to_string(outline) +
-                                           "\n");
+                programs_[mode][srgb][outline] = gl::Program::build(
+                    shaders, "fullscreen.vert", "view_image.frag",
+                    "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " + std::to_string(srgb) +
+                        "\n#define OUTLINE " + std::to_string(outline) + "\n");
     vao_ = gl::VertexArray::create();
     // The heat ramp of the CLI's heatmaps, so the live difference view reads the same way.
     std::vector<uint8_t> ramp(256 * 3);
@@ -43,8 +42,11 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
     glDisable(GL_SCISSOR_TEST);
     // Without a reference yet, traced modes fall back to the raster image.
     const bool haveTrace = in.traced != 0 && in.tiles != 0;
-    const int mode = !haveTrace ? 0 : in.mode == ViewMode::Traced ? 1 : in.mode == ViewMode::Split ? 2
-                                  : in.mode == ViewMode::Difference ? 3 : 0;
+    const int mode = !haveTrace                        ? 0
+                     : in.mode == ViewMode::Traced     ? 1
+                     : in.mode == ViewMode::Split      ? 2
+                     : in.mode == ViewMode::Difference ? 3
+                                                       : 0;
     const bool outline = in.selected != 0 && in.coverage != 0;
     const gl::Program& program = programs_[mode][in.encoding == Encoding::Srgb ? 1 : 0][outline ? 1 : 0];
     glUseProgram(program.id());

@@ -1,6 +1,6 @@
 // ImageView: draws the rendered image into a rectangle of the window (raster, reference, wipe or
-// difference), with the sRGB curve in shaders/view_image.frag, and the selected object's outline. Display only: captures read the
-// renderers' float images, never the window.
+// difference), with the sRGB curve in shaders/view_image.frag, and the selected object's outline. Display only:
+// captures read the renderers' float images, never the window.
 #pragma once
 
 #include "app/viewer_state.h"
@@ -11,22 +11,22 @@
 namespace shadelab::app {
 
 struct ImageRect {
-    int x = 0, y = 0;           // framebuffer pixels, GL convention: y is the bottom edge
+    int x = 0, y = 0;  // framebuffer pixels, GL convention: y is the bottom edge
     int width = 0, height = 0;
 };
 
 struct ImageViewInputs {
-    GLuint raster = 0;          // RGBA32F texture
-    int imageWidth = 0, imageHeight = 0;   // its size (the traced texture has the same)
-    GLuint traced = 0;          // RGBA32F texture, or 0
-    GLuint tiles = 0;           // R8 tile-state texture, or 0
+    GLuint raster = 0;                    // RGBA32F texture
+    int imageWidth = 0, imageHeight = 0;  // its size (the traced texture has the same)
+    GLuint traced = 0;                    // RGBA32F texture, or 0
+    GLuint tiles = 0;                     // R8 tile-state texture, or 0
     int tileSize = 32;
     ViewMode mode = ViewMode::Raster;
     Encoding encoding = Encoding::Srgb;
     float split = 0.5f;
     float gain = 16.0f;
-    GLuint coverage = 0;        // R32UI coverage ids of the raster image, or 0
-    uint32_t selected = 0;      // coverage id outlined in the image (scene/coverage.h); 0: none
+    GLuint coverage = 0;    // R32UI coverage ids of the raster image, or 0
+    uint32_t selected = 0;  // coverage id outlined in the image (scene/coverage.h); 0: none
 };
 
 class ImageView {
@@ -36,7 +36,7 @@ public:
     void draw(const ImageRect& rect, const ImageViewInputs& in) const;
 
 private:
-    gl::Program programs_[4][2][2];   // [mode][sRGB][selection outline]
+    gl::Program programs_[4][2][2];  // [mode][sRGB][selection outline]
     gl::VertexArray vao_;
     gl::Texture ramp_;
 };

@@ -11,8 +11,8 @@ namespace shadelab::app {
 
 struct MaterialPreset {
     const char* name;
-    glm::vec3 ma, md, ms;       // GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR as they are in the table
-    float s;                    // GL_SHININESS: the table's value × 128
+    glm::vec3 ma, md, ms;  // GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR as they are in the table
+    float s;               // GL_SHININESS: the table's value × 128
 };
 
 const std::vector<MaterialPreset>& materialPresets();

@@ -69,8 +69,6 @@ void orbitPan(OrbitCamera& o, float dx, float dy, float viewportHeight) {
     o.target += (-dx * right + dy * camUp) * scale;
 }
 
-void orbitZoom(OrbitCamera& o, float steps) {
-    o.distance = std::max(o.distance * std::pow(0.85f, steps), 1e-4f);
-}
+void orbitZoom(OrbitCamera& o, float steps) { o.distance = std::max(o.distance * std::pow(0.85f, steps), 1e-4f); }
 
 }  // namespace shadelab::app

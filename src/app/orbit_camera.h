@@ -10,11 +10,11 @@ namespace shadelab::app {
 
 struct OrbitCamera {
     glm::vec3 target{0.0f, 0.5f, 0.0f};  // point orbited about, world units
-    float distance = 6.0f;                // eye to target, world units, > 0
-    float yaw = 0.0f;                     // about `up`, radians
-    float pitch = 0.0f;                   // above the plane normal to `up`, radians, within ±kMaxPitch
-    glm::vec3 up{0.0f, 1.0f, 0.0f};       // unit orbit axis (the camera's up)
-    float fovY = 45.0f;                   // vertical field of view, degrees
+    float distance = 6.0f;               // eye to target, world units, > 0
+    float yaw = 0.0f;                    // about `up`, radians
+    float pitch = 0.0f;                  // above the plane normal to `up`, radians, within ±kMaxPitch
+    glm::vec3 up{0.0f, 1.0f, 0.0f};      // unit orbit axis (the camera's up)
+    float fovY = 45.0f;                  // vertical field of view, degrees
 };
 
 inline constexpr float kMaxPitch = 1.5533430f;  // 89 degrees: the view never flips over the pole

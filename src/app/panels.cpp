@@ -8,9 +8,8 @@ namespace shadelab::app {
 void drawSidePanel(PanelContext& ctx, float width, float height) {
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(width, height));
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
-                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::Begin("shadelab", nullptr, flags);
     ImGui::TextDisabled("shadelab view  %dx%d  %.1f ms/frame", ctx.renderWidth, ctx.renderHeight, ctx.frameMs);
     if (!ctx.status.empty()) {
@@ -55,10 +54,11 @@ void drawHelpSection() {
         }
         ImGui::EndTable();
     }
-    ImGui::TextWrapped("Raster reflections: planes with kr > 0 are exact planar mirrors; reflective spheres and "
-                       "meshes use an environment cube rendered from the object's centre (one bounce of local "
-                       "shading and shadows, no self-reflection, parallax error for nearby objects). Compare "
-                       "with the reference (Split / Difference) to see the error.");
+    ImGui::TextWrapped(
+        "Raster reflections: planes with kr > 0 are exact planar mirrors; reflective spheres and "
+        "meshes use an environment cube rendered from the object's centre (one bounce of local "
+        "shading and shadows, no self-reflection, parallax error for nearby objects). Compare "
+        "with the reference (Split / Difference) to see the error.");
 }
 
 }  // namespace shadelab::app

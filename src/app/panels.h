@@ -27,9 +27,9 @@ struct UiFields {
     std::string openPath;
     std::string savePath;
     std::string screenshotPath = "shadelab-view.png";
-    bool convertAllObjects = false;     // the equivalent-exponent buttons act on every object
-    bool lessonFolded = false;          // the lesson window was folded for the probe
-    float probeWindowWidth = 0.0f;      // window units, as last drawn (for placing it inside the image)
+    bool convertAllObjects = false;  // the equivalent-exponent buttons act on every object
+    bool lessonFolded = false;       // the lesson window was folded for the probe
+    float probeWindowWidth = 0.0f;   // window units, as last drawn (for placing it inside the image)
 };
 
 // Where Save writes by default: "<stem>-saved.json" beside the opened file, so neither a lesson file (whose
@@ -49,13 +49,13 @@ struct PanelContext {
     ViewerState& state;
     PanelServices& services;
     UiFields& fields;
-    const ProbeResult* probe = nullptr;         // null when no probe is set
+    const ProbeResult* probe = nullptr;  // null when no probe is set
     ReferenceInfo reference;
-    const CompareResult* metrics = nullptr;     // raster vs complete reference, when available
+    const CompareResult* metrics = nullptr;  // raster vs complete reference, when available
     std::string shaderError;
     std::string status;
     bool statusError = false;
-    double frameMs = 0.0;                       // median of the last frames
+    double frameMs = 0.0;  // median of the last frames
     int renderWidth = 0, renderHeight = 0;
     float uiScale = 1.0f;
 };

@@ -2,9 +2,9 @@
 // scalar intensity, attenuation), with add and remove.
 #include "app/panels.h"
 
-#include <glm/gtc/type_ptr.hpp>
-#include <glm/geometric.hpp>
 #include <imgui.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <string>
 
@@ -19,8 +19,8 @@ void drawLightsSection(PanelContext& ctx) {
     for (size_t i = 0; i < s.scene.lights.size(); ++i) {
         Light l = s.scene.lights[i];
         ImGui::PushID(int(i));
-        const std::string title = "L" + std::to_string(i + 1) + "  " + (l.name.empty() ? "light" : l.name) +
-                                  "  (" + toString(l.type) + ")";
+        const std::string title =
+            "L" + std::to_string(i + 1) + "  " + (l.name.empty() ? "light" : l.name) + "  (" + toString(l.type) + ")";
         const bool open = ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "%s", title.c_str());
         if (open) {
             bool changed = false;

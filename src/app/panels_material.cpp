@@ -6,8 +6,8 @@
 #include "app/material_presets.h"
 #include "app/specular_lobe.h"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <string>
 
@@ -63,11 +63,14 @@ void drawMaterialSection(PanelContext& ctx) {
 
     ImGui::TextDisabled("Equivalent exponent: keep the highlight's size");
     if (s.scene.model == ShadingModel::Phong) {
-        const std::string label = "Switch to Blinn-Phong, s' = " + std::to_string(int(equivalentBlinnExponent(s2) + 0.5f));
-        if (ImGui::Button(label.c_str())) switchModelKeepingHighlights(s, ShadingModel::BlinnPhong, ctx.fields.convertAllObjects);
+        const std::string label =
+            "Switch to Blinn-Phong, s' = " + std::to_string(int(equivalentBlinnExponent(s2) + 0.5f));
+        if (ImGui::Button(label.c_str()))
+            switchModelKeepingHighlights(s, ShadingModel::BlinnPhong, ctx.fields.convertAllObjects);
     } else {
         const std::string label = "Switch to Phong, s = " + std::to_string(int(equivalentPhongExponent(s2) + 0.5f));
-        if (ImGui::Button(label.c_str())) switchModelKeepingHighlights(s, ShadingModel::Phong, ctx.fields.convertAllObjects);
+        if (ImGui::Button(label.c_str()))
+            switchModelKeepingHighlights(s, ShadingModel::Phong, ctx.fields.convertAllObjects);
     }
     ImGui::SameLine();
     ImGui::Checkbox("all objects", &ctx.fields.convertAllObjects);
@@ -79,7 +82,7 @@ void drawSpecularLobe(float s, ShadingModel model, float width, float height) {
     const bool phong = model == ShadingModel::Phong;
     const float sPhong = phong ? s : equivalentPhongExponent(s);
     const float sBlinn = phong ? equivalentBlinnExponent(s) : s;
-    const float range = lobePlotRange(sPhong);   // degrees: the x axis zooms in on narrow lobes
+    const float range = lobePlotRange(sPhong);  // degrees: the x axis zooms in on narrow lobes
     struct Curve {
         std::vector<float> v;
         ImU32 color;

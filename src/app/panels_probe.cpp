@@ -13,7 +13,6 @@ namespace {
 
 void rgbCell(const glm::vec3& v) { ImGui::Text("%.3f %.3f %.3f", v.r, v.g, v.b); }
 
-
 void rowLabel(const char* label) {
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
@@ -22,8 +21,7 @@ void rowLabel(const char* label) {
 
 void lightTable(const ProbeResult& p, bool shadows) {
     const int columns = 1 + int(p.lights.size());
-    if (!ImGui::BeginTable("lights", columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
-        return;
+    if (!ImGui::BeginTable("lights", columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
     ImGui::TableSetupColumn("");
     for (size_t i = 0; i < p.lights.size(); ++i) {
         const std::string name = "L" + std::to_string(i + 1) + " " + p.lights[i].name;

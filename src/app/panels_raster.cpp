@@ -35,16 +35,17 @@ void drawRasterSection(PanelContext& ctx) {
     ViewerState& s = ctx.state;
     RasterSettings r = s.scene.raster;
     const int autoSize = raster::shadowMapSizeFor(RasterSettings{}, ctx.renderWidth, ctx.renderHeight);
-    bool changed = sizeCombo("shadow map", r.shadowMapSize, {0, 512, 1024, 2048, 4096},
-                             "auto (" + std::to_string(autoSize) + ")");
+    bool changed =
+        sizeCombo("shadow map", r.shadowMapSize, {0, 512, 1024, 2048, 4096}, "auto (" + std::to_string(autoSize) + ")");
     changed |= ImGui::SliderFloat("depth bias", &r.depthBias, 0.0f, 8.0f, "%.2f texels");
     changed |= ImGui::SliderFloat("normal bias", &r.normalBias, 0.0f, 8.0f, "%.2f texels");
     changed |= ImGui::Checkbox("PCF 3x3 (soft edges; the reference's are hard)", &r.pcf);
     changed |= sizeCombo("reflection cube", r.reflectionCubeSize, {32, 64, 128, 256, 512}, "");
     if (changed) setRasterSettings(s, r);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("Too little bias: acne; too much: shadows detach from their casters. The cube size is "
-                       "texels per face, one cube per reflective sphere or mesh.");
+    ImGui::TextWrapped(
+        "Too little bias: acne; too much: shadows detach from their casters. The cube size is "
+        "texels per face, one cube per reflective sphere or mesh.");
     ImGui::PopStyleColor();
 }
 

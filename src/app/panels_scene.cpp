@@ -2,9 +2,9 @@
 // the scene file's title and notes over the image.
 #include "app/panels.h"
 
-#include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
+#include <filesystem>
 
 namespace shadelab::app {
 
@@ -49,7 +49,8 @@ void drawLessonWindow(PanelContext& ctx, float x, float bottom, float width, boo
     const std::string title = (scene.title.empty() ? std::string("Lesson") : scene.title) + "###lesson";
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
-    if (ImGui::Begin(title.c_str(), nullptr, flags) && !scene.notes.empty()) ImGui::TextWrapped("%s", scene.notes.c_str());
+    if (ImGui::Begin(title.c_str(), nullptr, flags) && !scene.notes.empty())
+        ImGui::TextWrapped("%s", scene.notes.c_str());
     ImGui::End();
 }
 

@@ -71,13 +71,15 @@ void drawViewSection(PanelContext& ctx) {
         return;
     }
     char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", ref.complete ? "done" : "tracing",
-                  100.0 * ref.progress, ref.seconds);
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", ref.complete ? "done" : "tracing", 100.0 * ref.progress,
+                  ref.seconds);
     ImGui::ProgressBar(ref.progress, ImVec2(-1.0f, 0.0f), overlay);
     ImGui::TextDisabled("CPU reference, %d thread(s) at low priority; restarts on every change", ref.threads);
     if (s.mode == ViewMode::Difference) {
-        if (ctx.metrics) metricsTable(*ctx.metrics);
-        else ImGui::TextDisabled("metrics when the reference is complete");
+        if (ctx.metrics)
+            metricsTable(*ctx.metrics);
+        else
+            ImGui::TextDisabled("metrics when the reference is complete");
     }
 }
 

@@ -47,7 +47,7 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
         const bool isPoint = light.type == LightType::Point;
         const glm::vec3 Lraw = shading::lightVector(isPoint ? light.position : light.direction, isPoint, r.P);
         const glm::vec3 Il = shading::lightIntensityAt(light.color, isPoint, light.attenuation, Lraw);
-        const bool lit = glm::dot(s.N, Lraw) > 0.0f;   // the terms are 0 on the unlit side: no ray needed
+        const bool lit = glm::dot(s.N, Lraw) > 0.0f;  // the terms are 0 on the unlit side: no ray needed
         const float vis = scene.terms.shadows && lit ? integrator.visibility(s, light) : 1.0f;
         samples.push_back({Lraw, Il, vis});
         ProbeLight pl;

@@ -18,20 +18,20 @@ struct ProbeLight {
     std::string name;
     glm::vec3 L{0.0f}, R{0.0f}, H{0.0f};  // unit; L toward the light, R = 2N(N·L) − L, H = normalize(L + V)
     float NoL = 0.0f, RoV = 0.0f, NoH = 0.0f;
-    glm::vec3 Il{0.0f};                   // intensity arriving at P (attenuation applied), linear RGB
-    float visibility = 1.0f;              // vis_l: the tracer's shadow ray, 1 lit, 0 blocked; 1 with shadows off
-    float specPhong = 0.0f;               // max(R·V, 0)^s, 0 on the unlit side
-    float specBlinn = 0.0f;               // max(N·H, 0)^s, 0 on the unlit side
-    glm::vec3 diffuse{0.0f};              // vis_l · Il ⊙ md · max(N·L, 0)
-    glm::vec3 specularPhong{0.0f};        // vis_l · Il ⊙ ms · specPhong
-    glm::vec3 specularBlinn{0.0f};        // vis_l · Il ⊙ ms · specBlinn
+    glm::vec3 Il{0.0f};             // intensity arriving at P (attenuation applied), linear RGB
+    float visibility = 1.0f;        // vis_l: the tracer's shadow ray, 1 lit, 0 blocked; 1 with shadows off
+    float specPhong = 0.0f;         // max(R·V, 0)^s, 0 on the unlit side
+    float specBlinn = 0.0f;         // max(N·H, 0)^s, 0 on the unlit side
+    glm::vec3 diffuse{0.0f};        // vis_l · Il ⊙ md · max(N·L, 0)
+    glm::vec3 specularPhong{0.0f};  // vis_l · Il ⊙ ms · specPhong
+    glm::vec3 specularBlinn{0.0f};  // vis_l · Il ⊙ ms · specBlinn
 };
 
 struct ProbeResult {
-    int x = 0, y = 0;                     // pixel, row 0 at the top
-    int width = 0, height = 0;            // image size the pixel belongs to
+    int x = 0, y = 0;           // pixel, row 0 at the top
+    int width = 0, height = 0;  // image size the pixel belongs to
     bool hit = false;
-    uint32_t objectId = 0;                // coverage id (scene/coverage.h); 0 = background
+    uint32_t objectId = 0;  // coverage id (scene/coverage.h); 0 = background
     ObjectKind kind = ObjectKind::None;
     std::string label;                    // objectLabel()
     float t = 0.0f;                       // ray parameter of the hit, world units
@@ -39,8 +39,8 @@ struct ProbeResult {
     Material material;                    // the object's, with the checker tile's md at P
     glm::vec3 ambient{0.0f};              // Ia ⊙ ma
     std::vector<ProbeLight> lights;
-    glm::vec3 totalPhong{0.0f};           // shadeLocal with the scene's term switches, Phong
-    glm::vec3 totalBlinn{0.0f};           // the same, Blinn-Phong
+    glm::vec3 totalPhong{0.0f};  // shadeLocal with the scene's term switches, Phong
+    glm::vec3 totalBlinn{0.0f};  // the same, Blinn-Phong
 };
 
 // Asks the tracer about pixel (x, y) of a width x height image: its primary ray through the pixel centre

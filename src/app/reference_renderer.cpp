@@ -1,14 +1,14 @@
-// ReferenceRenderer: the controller thread (owns ProgressiveTrace; the mesh BVH comes from the cache) and the UI-side tile
-// collection into a CPU image and two textures.
+// ReferenceRenderer: the controller thread (owns ProgressiveTrace; the mesh BVH comes from the cache) and the UI-side
+// tile collection into a CPU image and two textures.
 #include "app/reference_renderer.h"
 
 #include "trace/progressive_trace.h"
 #include "trace/trace_scene.h"
 
-#include <algorithm>
-#include <cstring>
 #include <sched.h>
 #include <sys/resource.h>
+#include <algorithm>
+#include <cstring>
 
 namespace shadelab::app {
 
@@ -39,8 +39,7 @@ void ReferenceRenderer::controllerLoop() {
         std::optional<Job> job;
         {
             std::unique_lock<std::mutex> lock(mutex_);
-            if (running == 0 || trace.done())
-                wake_.wait(lock, [&] { return quit_ || pending_ || pauseRequested_; });
+            if (running == 0 || trace.done()) wake_.wait(lock, [&] { return quit_ || pending_ || pauseRequested_; });
             if (quit_) break;
             if (pauseRequested_) {
                 pauseRequested_ = false;
@@ -161,8 +160,8 @@ bool ReferenceRenderer::update() {
             std::memcpy(&flipped_[size_t(tile.height - 1 - row) * rowFloats], &t.rgba[size_t(row) * rowFloats],
                         rowFloats * sizeof(float));
         glBindTexture(GL_TEXTURE_2D, color_.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, tile.x0, height_ - tile.y0 - tile.height, tile.width, tile.height,
-                                GL_RGBA, GL_FLOAT, flipped_.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, tile.x0, height_ - tile.y0 - tile.height, tile.width, tile.height, GL_RGBA,
+                        GL_FLOAT, flipped_.data());
         const int tx = tile.x0 / kTileSize, ty = tile.y0 / kTileSize;
         uint8_t& state = tileState_[size_t(ty) * size_t(tilesX_) + size_t(tx)];
         if (state == 0) ++tilesDone_;

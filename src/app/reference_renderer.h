@@ -41,15 +41,15 @@ public:
     // anything arrived.
     bool update();
 
-    GLuint texture() const { return color_.id(); }        // RGBA32F, GL row order, like the raster target
-    GLuint tileTexture() const { return tiles_.id(); }    // R8, 1 = tile rendered for the current request
+    GLuint texture() const { return color_.id(); }      // RGBA32F, GL row order, like the raster target
+    GLuint tileTexture() const { return tiles_.id(); }  // R8, 1 = tile rendered for the current request
     int tileSize() const { return kTileSize; }
     bool active() const { return job_ != 0; }
     bool complete() const { return job_ != 0 && tilesDone_ == tileTotal_; }
     float progress() const { return tileTotal_ ? float(tilesDone_) / float(tileTotal_) : 0.0f; }
-    double seconds() const;                               // since the current request, or its total
-    uint64_t revision() const { return revision_; }       // the state revision being traced
-    const ImageF& image() const { return image_; }        // linear, row 0 at the top
+    double seconds() const;                          // since the current request, or its total
+    uint64_t revision() const { return revision_; }  // the state revision being traced
+    const ImageF& image() const { return image_; }   // linear, row 0 at the top
     const std::vector<uint32_t>& coverage() const { return coverage_; }
     std::string error() const;
     int threads() const { return threads_; }

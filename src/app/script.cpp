@@ -4,9 +4,9 @@
 
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
-#include "util/read_file.h"
 #include "util/input_error.h"
 #include "util/messages.h"
+#include "util/read_file.h"
 
 #include <glm/trigonometric.hpp>
 #include <type_traits>
@@ -39,13 +39,18 @@ struct ActionInfo {
 };
 
 const ActionInfo kActions[] = {
-    {"setShininess", {"object", "s"},
+    {"setShininess",
+     {"object", "s"},
      [](const JsonNode& a) -> Action {
          return SetShininess{objectField(a), a.child("s").inRange(0.0f, kMaxShininess, false, false)};
      }},
-    {"setMaterial", {"object", "ma", "md", "ms", "s", "kr", "kt", "ior"},
-     [](const JsonNode& a) -> Action { return SetMaterial{objectField(a), parseMaterialOverride(a)}; }},
-    {"preset", {"object", "name"},
+    {"setMaterial",
+     {"object", "ma", "md", "ms", "s", "kr", "kt", "ior"},
+     [](const JsonNode& a) -> Action {
+         return SetMaterial{objectField(a), parseMaterialOverride(a)};
+     }},
+    {"preset",
+     {"object", "name"},
      [](const JsonNode& a) -> Action {
          Preset p;
          p.object = objectField(a);
@@ -55,51 +60,63 @@ const ActionInfo kActions[] = {
          return p;
      }},
     {"select", {"object"}, [](const JsonNode& a) -> Action { return Select{objectField(a)}; }},
-    {"setTerm", {"term", "on"},
+    {"setTerm",
+     {"term", "on"},
      [](const JsonNode& a) -> Action {
          return SetTerm{a.child("term").oneOf(kTermNames, "term"), a.child("on").boolean()};
      }},
-    {"toggleTerm", {"term"},
+    {"toggleTerm",
+     {"term"},
      [](const JsonNode& a) -> Action { return ToggleTerm{a.child("term").oneOf(kTermNames, "term")}; }},
-    {"progression", {"step"},
+    {"progression",
+     {"step"},
      [](const JsonNode& a) -> Action { return Progression{a.child("step").integerIn(1, kProgressionSteps)}; }},
-    {"setModel", {"model"},
-     [](const JsonNode& a) -> Action {
-         return SetModel{a.child("model").oneOf(kShadingModelNames, "shading model")};
-     }},
-    {"switchModel", {"model", "all"},
+    {"setModel",
+     {"model"},
+     [](const JsonNode& a) -> Action { return SetModel{a.child("model").oneOf(kShadingModelNames, "shading model")}; }},
+    {"switchModel",
+     {"model", "all"},
      [](const JsonNode& a) -> Action {
          return SwitchModel{a.child("model").oneOf(kShadingModelNames, "shading model"),
                             a.has("all") && a.child("all").boolean()};
      }},
-    {"setMode", {"mode"},
+    {"setMode",
+     {"mode"},
      [](const JsonNode& a) -> Action { return SetMode{a.child("mode").oneOf(kViewModeNames, "view mode")}; }},
-    {"setEncoding", {"encoding"},
-     [](const JsonNode& a) -> Action {
-         return SetEncoding{a.child("encoding").oneOf(kEncodingNames, "encoding")};
-     }},
-    {"setSplit", {"position"},
+    {"setEncoding",
+     {"encoding"},
+     [](const JsonNode& a) -> Action { return SetEncoding{a.child("encoding").oneOf(kEncodingNames, "encoding")}; }},
+    {"setSplit",
+     {"position"},
      [](const JsonNode& a) -> Action { return SetSplit{a.child("position").inRange(0.0f, 1.0f, false, false)}; }},
     {"setAmbient", {"value"}, [](const JsonNode& a) -> Action { return SetAmbient{a.child("value").rgb()}; }},
-    {"setRaster", {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"},
+    {"setRaster",
+     {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"},
      [](const JsonNode& a) -> Action { return SetRaster{parseRasterOverride(a)}; }},
-    {"addLight", {"type", "position", "direction", "color"},
+    {"addLight",
+     {"type", "position", "direction", "color"},
      [](const JsonNode& a) -> Action {
          const LightType type = a.has("type") ? a.child("type").oneOf(kLightTypeNames, "light type") : LightType::Point;
          return AddLight{type, parseLightOverride(a)};
      }},
-    {"removeLight", {"index"},
+    {"removeLight",
+     {"index"},
      [](const JsonNode& a) -> Action { return RemoveLight{a.child("index").integerIn(0, kMaxLights - 1)}; }},
-    {"setLight", {"index", "position", "direction", "color"},
+    {"setLight",
+     {"index", "position", "direction", "color"},
      [](const JsonNode& a) -> Action {
          return SetLight{a.child("index").integerIn(0, kMaxLights - 1), parseLightOverride(a)};
      }},
-    {"orbit", {"yaw", "pitch"},
-     [](const JsonNode& a) -> Action { return Orbit{optionalFinite(a, "yaw"), optionalFinite(a, "pitch")}; }},
+    {"orbit",
+     {"yaw", "pitch"},
+     [](const JsonNode& a) -> Action {
+         return Orbit{optionalFinite(a, "yaw"), optionalFinite(a, "pitch")};
+     }},
     {"zoom", {"steps"}, [](const JsonNode& a) -> Action { return Zoom{a.child("steps").finite()}; }},
     {"frameAll", {}, [](const JsonNode&) -> Action { return FrameAll{}; }},
     {"resetCamera", {}, [](const JsonNode&) -> Action { return ResetCamera{}; }},
-    {"probe", {"x", "y"},
+    {"probe",
+     {"x", "y"},
      [](const JsonNode& a) -> Action {
          return Probe{a.child("x").integerIn(0, 16383), a.child("y").integerIn(0, 16383)};
      }},
@@ -110,13 +127,16 @@ const ActionInfo kActions[] = {
     {"probeReport", {"path"}, pathAction<ProbeReport>},
     {"saveScene", {"path"}, pathAction<SaveScene>},
     {"open", {"path"}, pathAction<Open>},
-    {"reloadShaders", {"dir"},
+    {"reloadShaders",
+     {"dir"},
      [](const JsonNode& a) -> Action { return ReloadShaders{a.has("dir") ? a.child("dir").string() : ""}; }},
-    {"waitReference", {"timeout"},
+    {"waitReference",
+     {"timeout"},
      [](const JsonNode& a) -> Action {
          return WaitReference{a.has("timeout") ? a.child("timeout").positive() : 60.0f};
      }},
-    {"resizeWindow", {"width", "height"},
+    {"resizeWindow",
+     {"width", "height"},
      [](const JsonNode& a) -> Action {
          return ResizeWindow{a.child("width").integerIn(1, 16384), a.child("height").integerIn(1, 16384)};
      }},
@@ -137,13 +157,15 @@ struct StateApplier {
 
     uint32_t object(const std::string& nameOrId) const {
         if (auto id = findObject(state.scene, nameOrId)) return *id;
-        failAction(file, a, "object", "no object '" + nameOrId + "' in the scene (names, or #1..#" +
-                                          std::to_string(objectCount(state.scene)) + ")");
+        failAction(file, a, "object",
+                   "no object '" + nameOrId + "' in the scene (names, or #1..#" +
+                       std::to_string(objectCount(state.scene)) + ")");
     }
     void requireLight(int index) const {
         if (size_t(index) >= state.scene.lights.size())
-            failAction(file, a, "index", "no light " + std::to_string(index) + " (the scene has " +
-                                             std::to_string(state.scene.lights.size()) + ")");
+            failAction(file, a, "index",
+                       "no light " + std::to_string(index) + " (the scene has " +
+                           std::to_string(state.scene.lights.size()) + ")");
     }
 
     void operator()(const SetShininess& x) const { setShininess(state, object(x.object), x.s); }
@@ -234,8 +256,8 @@ Script parseScript(const std::string& text, const std::string& file) {
         if (!info) a.failAt("action", "unknown action '" + act.name + "' (docs/viewer.md lists them)");
         if (auto f = a.find("frame")) {
             const int n = f->integerIn(0, 1 << 24);
-            if (n < frame) f->fail("frames must not decrease (the previous action runs at frame " +
-                                   std::to_string(frame) + ")");
+            if (n < frame)
+                f->fail("frames must not decrease (the previous action runs at frame " + std::to_string(frame) + ")");
             frame = n;
         }
         act.frame = frame;
@@ -261,8 +283,10 @@ bool isStateAction(const ScriptAction& action) {
 void applyScriptAction(ViewerState& state, const ScriptAction& a, const std::string& file) {
     std::visit(
         [&](const auto& x) {
-            if constexpr (kIsStateAction<std::decay_t<decltype(x)>>) StateApplier{state, a, file}(x);
-            else failAction(file, a, "", "'" + a.name + "' needs the viewer window");
+            if constexpr (kIsStateAction<std::decay_t<decltype(x)>>)
+                StateApplier{state, a, file}(x);
+            else
+                failAction(file, a, "", "'" + a.name + "' needs the viewer window");
         },
         a.action);
 }

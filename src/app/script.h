@@ -19,62 +19,126 @@ namespace shadelab::app {
 namespace actions {
 
 // State actions: applyScriptAction applies them to a ViewerState.
-struct SetShininess { std::string object; float s = 0.0f; };
-struct SetMaterial { std::string object; MaterialOverride material; };
-struct Preset { std::string object; const MaterialPreset* preset = nullptr; };   // never null once parsed
-struct Select { std::string object; };
-struct SetTerm { Term term = Term::Ambient; bool on = true; };
-struct ToggleTerm { Term term = Term::Ambient; };
-struct Progression { int step = 1; };                              // 1..kProgressionSteps
-struct SetModel { ShadingModel model = ShadingModel::Phong; };
-struct SwitchModel { ShadingModel model = ShadingModel::Phong; bool allObjects = false; };
-struct SetMode { ViewMode mode = ViewMode::Raster; };
-struct SetEncoding { Encoding encoding = Encoding::Srgb; };
-struct SetSplit { float position = 0.5f; };                        // fraction of the image width
-struct SetAmbient { glm::vec3 Ia{0.0f}; };                         // linear RGB intensity
-struct SetRaster { RasterOverride raster; };
-struct AddLight { LightType type = LightType::Point; LightOverride light; };
-struct RemoveLight { int index = 0; };                             // from 0
-struct SetLight { int index = 0; LightOverride light; };           // from 0
-struct Orbit { float yaw = 0.0f, pitch = 0.0f; };                  // degrees
-struct Zoom { float steps = 0.0f; };                               // mouse-wheel steps
+struct SetShininess {
+    std::string object;
+    float s = 0.0f;
+};
+struct SetMaterial {
+    std::string object;
+    MaterialOverride material;
+};
+struct Preset {
+    std::string object;
+    const MaterialPreset* preset = nullptr;
+};  // never null once parsed
+struct Select {
+    std::string object;
+};
+struct SetTerm {
+    Term term = Term::Ambient;
+    bool on = true;
+};
+struct ToggleTerm {
+    Term term = Term::Ambient;
+};
+struct Progression {
+    int step = 1;
+};  // 1..kProgressionSteps
+struct SetModel {
+    ShadingModel model = ShadingModel::Phong;
+};
+struct SwitchModel {
+    ShadingModel model = ShadingModel::Phong;
+    bool allObjects = false;
+};
+struct SetMode {
+    ViewMode mode = ViewMode::Raster;
+};
+struct SetEncoding {
+    Encoding encoding = Encoding::Srgb;
+};
+struct SetSplit {
+    float position = 0.5f;
+};  // fraction of the image width
+struct SetAmbient {
+    glm::vec3 Ia{0.0f};
+};  // linear RGB intensity
+struct SetRaster {
+    RasterOverride raster;
+};
+struct AddLight {
+    LightType type = LightType::Point;
+    LightOverride light;
+};
+struct RemoveLight {
+    int index = 0;
+};  // from 0
+struct SetLight {
+    int index = 0;
+    LightOverride light;
+};  // from 0
+struct Orbit {
+    float yaw = 0.0f, pitch = 0.0f;
+};  // degrees
+struct Zoom {
+    float steps = 0.0f;
+};  // mouse-wheel steps
 struct FrameAll {};
 struct ResetCamera {};
-struct Probe { int x = 0, y = 0; };                                // pixels, row 0 at the top
+struct Probe {
+    int x = 0, y = 0;
+};  // pixels, row 0 at the top
 struct ClearProbe {};
 
 // Window actions: the viewer performs them.
-struct Screenshot { std::string path; };
-struct ReferenceScreenshot { std::string path; };
-struct WindowScreenshot { std::string path; };
-struct ProbeReport { std::string path; };
-struct SaveScene { std::string path; };
-struct Open { std::string path; };
-struct ReloadShaders { std::string dir; };                         // empty: shaderSourceDir()
-struct WaitReference { float timeout = 60.0f; };                   // seconds
-struct ResizeWindow { int width = 0, height = 0; };                // window units
+struct Screenshot {
+    std::string path;
+};
+struct ReferenceScreenshot {
+    std::string path;
+};
+struct WindowScreenshot {
+    std::string path;
+};
+struct ProbeReport {
+    std::string path;
+};
+struct SaveScene {
+    std::string path;
+};
+struct Open {
+    std::string path;
+};
+struct ReloadShaders {
+    std::string dir;
+};  // empty: shaderSourceDir()
+struct WaitReference {
+    float timeout = 60.0f;
+};  // seconds
+struct ResizeWindow {
+    int width = 0, height = 0;
+};  // window units
 
 }  // namespace actions
 
-using Action = std::variant<actions::SetShininess, actions::SetMaterial, actions::Preset, actions::Select,
-                            actions::SetTerm, actions::ToggleTerm, actions::Progression, actions::SetModel,
-                            actions::SwitchModel, actions::SetMode, actions::SetEncoding, actions::SetSplit,
-                            actions::SetAmbient, actions::SetRaster, actions::AddLight, actions::RemoveLight,
-                            actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
-                            actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::Screenshot,
-                            actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport,
-                            actions::SaveScene, actions::Open, actions::ReloadShaders, actions::WaitReference,
-                            actions::ResizeWindow>;
+using Action =
+    std::variant<actions::SetShininess, actions::SetMaterial, actions::Preset, actions::Select, actions::SetTerm,
+                 actions::ToggleTerm, actions::Progression, actions::SetModel, actions::SwitchModel, actions::SetMode,
+                 actions::SetEncoding, actions::SetSplit, actions::SetAmbient, actions::SetRaster, actions::AddLight,
+                 actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
+                 actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::Screenshot,
+                 actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
+                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow>;
 
 struct ScriptAction {
-    int index = 0;                    // position in the file's list, for messages ("actions[3]")
-    int frame = 0;                    // runs before this frame is drawn; frames count from 0
-    std::string name;                 // the action's name as written
-    Action action;                    // what it does, with its fields
+    int index = 0;     // position in the file's list, for messages ("actions[3]")
+    int frame = 0;     // runs before this frame is drawn; frames count from 0
+    std::string name;  // the action's name as written
+    Action action;     // what it does, with its fields
 };
 
 struct Script {
-    std::string file;                 // for messages
+    std::string file;                   // for messages
     std::vector<ScriptAction> actions;  // in file order; frames never decrease
     int lastFrame() const { return actions.empty() ? -1 : actions.back().frame; }
 };

@@ -20,8 +20,7 @@
 namespace shadelab::app {
 
 int Viewer::run() {
-    while (frame()) {
-    }
+    while (frame()) {}
     if (!options_.screenshot.empty()) writePng(options_.screenshot, captureRaster());
     if (!options_.probeReport.empty()) writeProbeReport(options_.probeReport);
     if (options_.stats) {
@@ -72,8 +71,8 @@ bool Viewer::frame() {
 
     PanelContext ctx(state_, *this, fields_);
     ctx.probe = probe_ ? &*probe_ : nullptr;
-    ctx.reference = {reference_->active(), reference_->complete(), reference_->progress(), reference_->seconds(),
-                     reference_->threads(), reference_->error()};
+    ctx.reference = {reference_->active(),  reference_->complete(), reference_->progress(),
+                     reference_->seconds(), reference_->threads(),  reference_->error()};
     ctx.metrics = metrics_ && metricsRevision_ == state_.revision ? &*metrics_ : nullptr;
     ctx.shaderError = shaderError_;
     if (glfwGetTime() - statusTime_ < 8.0) {
@@ -202,8 +201,8 @@ void Viewer::updateProbe() {
     if (probe_ && probeRevision_ == state_.revision && probeX_ == p.x && probeY_ == p.y && probeW_ == renderW_ &&
         probeH_ == renderH_)
         return;
-    probe_ = probePixel(trace::TraceScene(state_.scene, reference_->meshBvh(state_.scene)), renderW_, renderH_, p.x,
-                        p.y);
+    probe_ =
+        probePixel(trace::TraceScene(state_.scene, reference_->meshBvh(state_.scene)), renderW_, renderH_, p.x, p.y);
     probeRevision_ = state_.revision;
     probeX_ = p.x, probeY_ = p.y, probeW_ = renderW_, probeH_ = renderH_;
 }

@@ -27,7 +27,7 @@ struct GLFWwindow;
 
 namespace shadelab::app {
 
-inline constexpr float kViewerPanelWidth = 440.0f;   // side panel, window units at UI scale 1
+inline constexpr float kViewerPanelWidth = 440.0f;  // side panel, window units at UI scale 1
 
 class Viewer : public PanelServices {
 public:
@@ -40,7 +40,7 @@ public:
     void saveScene(const std::string& path) override;
     void screenshot(const std::string& path) override;
     void reloadShaders(const std::string& dir) override;
-    void queueDrop(const std::string& path);   // from GLFW's drop callback
+    void queueDrop(const std::string& path);  // from GLFW's drop callback
 
 private:
     // viewer_setup.cpp
@@ -50,7 +50,7 @@ private:
     // viewer.cpp
     bool frame();
     void computeLayout();
-    bool ensureRasterCurrent(bool force);     // true when it drew
+    bool ensureRasterCurrent(bool force);  // true when it drew
     void updateReference();
     void updateProbe();
     void compose();
@@ -75,7 +75,7 @@ private:
     ViewerState state_;
     std::optional<Script> script_;
     std::optional<ScriptCursor> cursor_;
-    const ScriptAction* waiting_ = nullptr;     // a waitReference action holding the script
+    const ScriptAction* waiting_ = nullptr;  // a waitReference action holding the script
     double waitStarted_ = 0.0;
 
     GLFWwindow* window_ = nullptr;
@@ -90,7 +90,7 @@ private:
     float fbScale_ = 1.0f, uiScale_ = 1.0f;
     float panelWidth_ = 0.0f;
     bool showPanel_ = true;
-    float imageX_ = 0, imageY_ = 0, imageW_ = 0, imageH_ = 0;   // where the image is shown
+    float imageX_ = 0, imageY_ = 0, imageW_ = 0, imageH_ = 0;  // where the image is shown
     ImageRect fbRect_;                                         // the same in framebuffer pixels (GL)
     int renderW_ = 0, renderH_ = 0;                            // rendered image size
 
@@ -120,7 +120,7 @@ private:
     std::string pendingWindowShot_;
 
     int frame_ = 0;
-    FrameStats frameStats_, idleStats_, rasterStats_;   // frames with / without a raster redraw
+    FrameStats frameStats_, idleStats_, rasterStats_;  // frames with / without a raster redraw
     std::array<double, 64> recentMs_{};
     double recentFrameMs() const;
     std::vector<std::string> glInfo_;

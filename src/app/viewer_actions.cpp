@@ -36,8 +36,10 @@ void Viewer::runScript() {
         }
     }
     while (const ScriptAction* a = cursor_->next(frame_)) {
-        if (isStateAction(*a)) applyScriptAction(state_, *a, script_->file);
-        else performAction(*a);
+        if (isStateAction(*a))
+            applyScriptAction(state_, *a, script_->file);
+        else
+            performAction(*a);
         if (waiting_) break;
     }
 }
@@ -184,7 +186,7 @@ void Viewer::reloadShaders(const std::string& from) {
         raster_ = std::move(raster);
         imageView_ = std::move(view);
         arrows_ = std::move(arrows);
-        meshGeometry_ = 0;      // the new renderer has no meshes yet
+        meshGeometry_ = 0;  // the new renderer has no meshes yet
         rasterRevision_ = 0;
         shaderError_.clear();
         setStatus("reloaded shaders from " + dir, false);
@@ -198,8 +200,10 @@ void Viewer::setStatus(const std::string& message, bool error) {
     status_ = message;
     statusError_ = error;
     statusTime_ = glfwGetTime();
-    if (error) printError(message);
-    else if (options_.verbose) std::fprintf(stderr, "shadelab: %s\n", errorLine(message).c_str());
+    if (error)
+        printError(message);
+    else if (options_.verbose)
+        std::fprintf(stderr, "shadelab: %s\n", errorLine(message).c_str());
 }
 
 }  // namespace shadelab::app

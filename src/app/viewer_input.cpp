@@ -15,7 +15,7 @@ namespace shadelab::app {
 namespace {
 
 constexpr float kRadiansPerPixel = 0.008f;
-constexpr float kClickSlop = 3.0f;      // window units a press may move and still count as a click
+constexpr float kClickSlop = 3.0f;  // window units a press may move and still count as a click
 
 bool sceneExtension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
@@ -109,8 +109,10 @@ void Viewer::clickAt(float windowX, float windowY) {
     if (p.x < 0 || p.y < 0 || p.x >= renderW_ || p.y >= renderH_) return;
     const uint32_t id = coverageAt(p.x, p.y);
     select(state_, id);
-    if (id != 0) setProbe(state_, p.x, p.y);
-    else clearProbe(state_);
+    if (id != 0)
+        setProbe(state_, p.x, p.y);
+    else
+        clearProbe(state_);
 }
 
 void Viewer::handleKeys() {

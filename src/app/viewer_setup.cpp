@@ -20,7 +20,7 @@
 namespace shadelab::app {
 namespace {
 
-constexpr float kFontSize = 17.0f;      // pixels at UI scale 1: readable when projected
+constexpr float kFontSize = 17.0f;  // pixels at UI scale 1: readable when projected
 std::string g_glfwError = "no error reported";
 
 void onGlfwError(int code, const char* what) {
@@ -37,7 +37,7 @@ std::string windowTitle(const ViewerState& s) {
 
 }  // namespace
 
-void installDropCallback(GLFWwindow* window);   // viewer_input.cpp
+void installDropCallback(GLFWwindow* window);  // viewer_input.cpp
 
 int runViewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script) {
     Viewer viewer(options, std::move(state), std::move(script));
@@ -103,7 +103,7 @@ void Viewer::initWindow() {
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    glfwWindowHint(GLFW_SAMPLES, 0);          // no MSAA anywhere near a capture (design.md §4)
+    glfwWindowHint(GLFW_SAMPLES, 0);  // no MSAA anywhere near a capture (design.md §4)
     glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);
 
     float contentScale = 1.0f, unused = 1.0f;
@@ -158,7 +158,8 @@ void Viewer::initImGui() {
     const float pixels = std::round(kFontSize * uiScale_ * fbScale);
     const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     const char* mono = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
-    if (std::filesystem::exists(sans)) io.Fonts->AddFontFromFileTTF(sans, pixels);
+    if (std::filesystem::exists(sans))
+        io.Fonts->AddFontFromFileTTF(sans, pixels);
     else {
         ImFontConfig config;
         config.SizePixels = std::round(13.0f * uiScale_ * fbScale);

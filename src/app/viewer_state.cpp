@@ -89,8 +89,7 @@ std::optional<uint32_t> findObject(const Scene& scene, const std::string& nameOr
             size_t used = 0;
             const unsigned long id = std::stoul(nameOrId.substr(1), &used);
             if (used + 1 == nameOrId.size() && id >= 1 && id <= objectCount(scene)) return uint32_t(id);
-        } catch (const std::exception&) {
-        }
+        } catch (const std::exception&) {}
         return std::nullopt;
     }
     for (size_t i = 0; i < scene.spheres.size(); ++i)
@@ -119,8 +118,10 @@ Material objectMaterial(const Scene& scene, uint32_t id) {
 bool setObjectMaterial(ViewerState& state, uint32_t id, const Material& m) {
     const ObjectRef r = objectRef(state.scene, id);
     if (r.kind == ObjectKind::None) return false;
-    if (Material* dst = sphereOrPlaneMaterial(state.scene, r)) *dst = m;
-    else setMeshMaterial(state.scene.meshes[r.index], objectMaterial(state.scene, id), m);
+    if (Material* dst = sphereOrPlaneMaterial(state.scene, r))
+        *dst = m;
+    else
+        setMeshMaterial(state.scene.meshes[r.index], objectMaterial(state.scene, id), m);
     markChanged(state);
     return true;
 }
@@ -177,8 +178,8 @@ void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool a
         for (uint32_t id = 1; id <= objectCount(state.scene); ++id) {
             if (!all && id != state.selected) continue;
             const float s = objectMaterial(state.scene, id).s;
-            setShininess(state, id, model == ShadingModel::BlinnPhong ? equivalentBlinnExponent(s)
-                                                                      : equivalentPhongExponent(s));
+            setShininess(state, id,
+                         model == ShadingModel::BlinnPhong ? equivalentBlinnExponent(s) : equivalentPhongExponent(s));
         }
     }
     setModel(state, model);

@@ -20,23 +20,23 @@ enum class ObjectKind { None, Sphere, Plane, Mesh };
 
 struct ProbeState {
     bool active = false;
-    int x = 0, y = 0;                 // pixel of the rendered image, row 0 at the top
+    int x = 0, y = 0;  // pixel of the rendered image, row 0 at the top
 };
 
 struct ViewerState {
-    Scene scene;                      // what both renderers draw and what Save writes
-    std::string scenePath;            // the file it was opened from; empty for none
-    Camera fileCamera;                // the scene file's camera, restored by resetCamera (key R)
-    OrbitCamera orbit;                // scene.camera as orbit parameters; written back on every move
+    Scene scene;            // what both renderers draw and what Save writes
+    std::string scenePath;  // the file it was opened from; empty for none
+    Camera fileCamera;      // the scene file's camera, restored by resetCamera (key R)
+    OrbitCamera orbit;      // scene.camera as orbit parameters; written back on every move
     ViewMode mode = ViewMode::Raster;
     Encoding encoding = Encoding::Srgb;
-    uint32_t selected = 0;            // coverage id of the selected object (scene/coverage.h), 0 = none
+    uint32_t selected = 0;  // coverage id of the selected object (scene/coverage.h), 0 = none
     ProbeState probe;
-    float splitPosition = 0.5f;       // Split mode wipe, fraction of the image width from the left
-    int heatGain = 16;                // Difference mode amplification (compare_report.h)
-    uint64_t revision = 1;            // bumped by every change a renderer can see
-    uint64_t referenceRevision = 1;   // bumped by every change the tracer can see (not scene.raster)
-    uint64_t geometryRevision = 1;    // bumped when the meshes change (a new scene)
+    float splitPosition = 0.5f;      // Split mode wipe, fraction of the image width from the left
+    int heatGain = 16;               // Difference mode amplification (compare_report.h)
+    uint64_t revision = 1;           // bumped by every change a renderer can see
+    uint64_t referenceRevision = 1;  // bumped by every change the tracer can see (not scene.raster)
+    uint64_t geometryRevision = 1;   // bumped when the meshes change (a new scene)
 };
 
 ViewerState makeViewerState(Scene scene, std::string path);
@@ -63,7 +63,7 @@ Material objectMaterial(const Scene& scene, uint32_t id);
 bool setObjectMaterial(ViewerState& state, uint32_t id, const Material& m);
 
 void select(ViewerState& state, uint32_t id);
-bool setShininess(ViewerState& state, uint32_t id, float s);   // clamped to [0, kMaxShininess]
+bool setShininess(ViewerState& state, uint32_t id, float s);  // clamped to [0, kMaxShininess]
 bool applyPreset(ViewerState& state, uint32_t id, const MaterialPreset& preset);
 
 // --- lighting model and terms (Term, termEnabled and the names: scene/terms.h) ---
@@ -71,9 +71,9 @@ void setTerm(ViewerState& state, Term t, bool on);
 void toggleTerm(ViewerState& state, Term t);
 // The lecture's progression: step 1 ambient, 2 +diffuse, 3 +specular, 4 +shadows, 5 +reflections.
 inline constexpr int kProgressionSteps = 5;
-Terms progressionTerms(int step);                  // step clamped to [1, 5]
+Terms progressionTerms(int step);  // step clamped to [1, 5]
 void applyProgression(ViewerState& state, int step);
-int progressionStep(const Terms& terms);           // 1..5 when the terms are exactly a step, else 0
+int progressionStep(const Terms& terms);  // 1..5 when the terms are exactly a step, else 0
 void setModel(ViewerState& state, ShadingModel model);
 // Switches the model and converts shininess so highlights keep their size (specular_lobe.h rule):
 // to Blinn-Phong s -> equivalentBlinnExponent(s), to Phong the inverse. Only the selected object, or every
@@ -101,15 +101,15 @@ ColorIntensity splitIntensity(const glm::vec3& Il);
 inline glm::vec3 joinIntensity(const ColorIntensity& c) { return c.color * c.intensity; }
 
 // --- camera ---
-void applyOrbit(ViewerState& state, const OrbitCamera& orbit);   // writes scene.camera
+void applyOrbit(ViewerState& state, const OrbitCamera& orbit);  // writes scene.camera
 void frameAll(ViewerState& state);                              // key F
 void resetCamera(ViewerState& state);                           // key R: the scene file's camera
 
 // --- view ---
 void setMode(ViewerState& state, ViewMode mode);
 void setEncoding(ViewerState& state, Encoding encoding);
-void setSplitPosition(ViewerState& state, float position);     // clamped to [0, 1]
-void setHeatGain(ViewerState& state, int gain);                 // clamped to [1, 255]
+void setSplitPosition(ViewerState& state, float position);  // clamped to [0, 1]
+void setHeatGain(ViewerState& state, int gain);             // clamped to [1, 255]
 void setProbe(ViewerState& state, int x, int y);
 void clearProbe(ViewerState& state);
 

@@ -4,17 +4,17 @@
 
 #include "util/input_error.h"
 
-#include <cmath>
-#include <cstdlib>
 #include <sys/resource.h>
 #include <unistd.h>
+#include <cmath>
+#include <cstdlib>
 
 namespace shadelab::cli {
 namespace {
 
 constexpr uint64_t kMiB = uint64_t(1) << 20;
-constexpr uint64_t kTraceBytesPerTriangle = 320;   // MeshBvh: vertices, normals, ids, boxes and build scratch
-constexpr uint64_t kRasterBytesPerTriangle = 160;  // vertex and index buffers, the driver's copy included
+constexpr uint64_t kTraceBytesPerTriangle = 320;          // MeshBvh: vertices, normals, ids, boxes and build scratch
+constexpr uint64_t kRasterBytesPerTriangle = 160;         // vertex and index buffers, the driver's copy included
 constexpr uint64_t kImageBytesPerPixel = 16 + 4 + 4 + 4;  // float RGBA, coverage, 8-bit RGBA, PNG rows
 
 uint64_t triangles(const Scene& scene) {
@@ -29,7 +29,8 @@ uint64_t defaultMaxMemory() {
     const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
     uint64_t limit = pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) / 2 : uint64_t(4) << 30;
     rlimit as{};
-    if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) limit = std::min(limit, uint64_t(as.rlim_cur) / 4 * 3);
+    if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
+        limit = std::min(limit, uint64_t(as.rlim_cur) / 4 * 3);
     return limit;
 }
 
@@ -57,9 +58,12 @@ uint64_t parseMemorySize(const std::string& text) {
     const double v = std::strtod(text.c_str(), &end);
     std::string unit = end ? std::string(end) : std::string();
     double scale = double(kMiB);
-    if (unit == "G" || unit == "g" || unit == "GiB") scale = double(kMiB) * 1024.0;
-    else if (unit == "M" || unit == "m" || unit == "MiB" || unit.empty()) scale = double(kMiB);
-    else scale = 0.0;
+    if (unit == "G" || unit == "g" || unit == "GiB")
+        scale = double(kMiB) * 1024.0;
+    else if (unit == "M" || unit == "m" || unit == "MiB" || unit.empty())
+        scale = double(kMiB);
+    else
+        scale = 0.0;
     if (end == text.c_str() || !std::isfinite(v) || v <= 0.0 || scale == 0.0 || v * scale > 1e18)
         throw UsageError("--max-memory: expected a size such as 512M or 2G, got '" + text + "'");
     return uint64_t(v * scale);

@@ -2,9 +2,9 @@
 // and CI output stay clean.
 #pragma once
 
+#include <unistd.h>
 #include <cstdio>
 #include <string>
-#include <unistd.h>
 
 namespace shadelab::cli {
 

@@ -16,8 +16,8 @@
 #include "scene/scene_load.h"
 #include "trace/trace_image.h"
 #include "util/input_error.h"
-#include "util/output_file.h"
 #include "util/messages.h"
+#include "util/output_file.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -28,7 +28,6 @@
 
 namespace shadelab::cli {
 namespace {
-
 
 std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageTimer& timer) {
     std::vector<std::string> log;
@@ -150,8 +149,8 @@ int render(const RenderOptions& o, std::string& doing) {
     if (o.timings) timer.print(stderr);
     if (o.verbose)
         std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n",
-                     isStdout(o.output) ? "stdout" : o.output.c_str(), output.width,
-                     output.height, toString(o.encoding), png.size());
+                     isStdout(o.output) ? "stdout" : o.output.c_str(), output.width, output.height,
+                     toString(o.encoding), png.size());
     return 0;
 }
 

@@ -55,7 +55,8 @@ Terms parseTerms(const std::string& list) {
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
-        if (auto term = parseTerm(name)) termFlag(t, *term) = true;
+        if (auto term = parseTerm(name))
+            termFlag(t, *term) = true;
         else if (name != "none" && !name.empty())
             throw UsageError("--terms: unknown term '" + name + "'; expected " + nameChoices(kTermNames, "none"));
     }
@@ -63,8 +64,9 @@ Terms parseTerms(const std::string& list) {
 }
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
-    std::vector<std::string> valued = {"-o", "--output", "--size", "--model", "--terms", "--encoding",
-                                       "--gl-backend", "--spp", "--renderer", "--threads", "--depth", "--max-memory"};
+    std::vector<std::string> valued = {"-o",         "--output",   "--size",       "--model",
+                                       "--terms",    "--encoding", "--gl-backend", "--spp",
+                                       "--renderer", "--threads",  "--depth",      "--max-memory"};
     std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());

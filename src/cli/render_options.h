@@ -25,23 +25,23 @@ inline constexpr EnumName<RendererChoice> kRendererNames[] = {
 inline const char* toString(RendererChoice r) { return nameOf(kRendererNames, r); }
 
 struct RenderOptions {
-    std::string input;                      // scene.json, model.gltf or model.glb
-    std::string output;                     // PNG path
-    int width = 1280, height = 720;         // pixels, 1..16384 each
-    std::optional<ShadingModel> model;      // unset: the scene's
-    std::optional<Terms> terms;             // unset: the scene's
+    std::string input;                  // scene.json, model.gltf or model.glb
+    std::string output;                 // PNG path
+    int width = 1280, height = 720;     // pixels, 1..16384 each
+    std::optional<ShadingModel> model;  // unset: the scene's
+    std::optional<Terms> terms;         // unset: the scene's
     Encoding encoding = Encoding::Srgb;
-    int spp = 1;                            // perfect square, both renderers
+    int spp = 1;  // perfect square, both renderers
     RendererChoice renderer = RendererChoice::Raster;
-    int threads = 0;                        // tracer worker threads; 0 = every core
-    std::optional<int> depth;               // tracer secondary-ray depth; unset: the scene's maxDepth
-    RasterOverride raster;                  // --shadow-map-size, --pcf, ...: over the scene's "raster"
+    int threads = 0;           // tracer worker threads; 0 = every core
+    std::optional<int> depth;  // tracer secondary-ray depth; unset: the scene's maxDepth
+    RasterOverride raster;     // --shadow-map-size, --pcf, ...: over the scene's "raster"
     gl::GlBackend backend = gl::GlBackend::Auto;
-    bool allowExternalPaths = false;        // glTF buffers may live outside the model's folder
-    uint64_t maxMemory = 0;                 // --max-memory, bytes; 0 = defaultMaxMemory() (memory_budget.h)
+    bool allowExternalPaths = false;  // glTF buffers may live outside the model's folder
+    uint64_t maxMemory = 0;           // --max-memory, bytes; 0 = defaultMaxMemory() (memory_budget.h)
     bool verbose = false;
     bool timings = false;
-    bool help = false;                      // --help was given: print renderHelp() and do nothing else
+    bool help = false;  // --help was given: print renderHelp() and do nothing else
 };
 
 // The --help text.

@@ -2,11 +2,11 @@
 // the benchmarks. Memory is read from /proc/self/statm (Linux); elsewhere it prints 0.
 #pragma once
 
+#include <unistd.h>
 #include <chrono>
 #include <cstdio>
 #include <string>
 #include <utility>
-#include <unistd.h>
 #include <vector>
 
 namespace shadelab::cli {
@@ -17,8 +17,8 @@ public:
     // Ends the current stage (which began at the last call, or at construction).
     void stage(std::string name) {
         Clock::time_point now = Clock::now();
-        stages_.push_back({std::move(name), std::chrono::duration<double, std::milli>(now - last_).count(),
-                           residentMiB()});
+        stages_.push_back(
+            {std::move(name), std::chrono::duration<double, std::milli>(now - last_).count(), residentMiB()});
         last_ = Clock::now();
     }
     // Ends the current stage as two interleaved ones whose durations were measured by the caller.

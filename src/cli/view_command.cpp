@@ -57,8 +57,8 @@ std::string defaultScenePath() {
 }  // namespace
 
 int viewCommand(int argc, char** argv) {
-    std::vector<std::string> valued = {"--size", "--frames", "--screenshot", "--window-screenshot",
-                                       "--script", "--probe-report", "--encoding", "--ui-scale"};
+    std::vector<std::string> valued = {"--size",   "--frames",       "--screenshot", "--window-screenshot",
+                                       "--script", "--probe-report", "--encoding",   "--ui-scale"};
     std::vector<std::string> flags = {"-h", "--help", "--stats", "--verbose"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
@@ -88,8 +88,9 @@ int viewCommand(int argc, char** argv) {
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland))
-        throw std::runtime_error("view needs a display, but neither DISPLAY nor WAYLAND_DISPLAY is set; "
-                                 "use 'shadelab render <scene> -o out.png' for images without one");
+        throw std::runtime_error(
+            "view needs a display, but neither DISPLAY nor WAYLAND_DISPLAY is set; "
+            "use 'shadelab render <scene> -o out.png' for images without one");
 
     const std::string path = args.positionals().empty() ? defaultScenePath() : args.positionals()[0];
     Scene scene;

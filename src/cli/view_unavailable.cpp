@@ -7,8 +7,9 @@
 namespace shadelab::cli {
 
 int viewCommand(int, char**) {
-    throw std::runtime_error("this build has no viewer (configured with SHADELAB_BUILD_VIEWER=OFF); "
-                             "use 'shadelab render <scene> -o out.png' for images");
+    throw std::runtime_error(
+        "this build has no viewer (configured with SHADELAB_BUILD_VIEWER=OFF); "
+        "use 'shadelab render <scene> -o out.png' for images");
 }
 
 }  // namespace shadelab::cli

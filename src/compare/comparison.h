@@ -15,7 +15,7 @@ namespace shadelab {
 // One renderer's side of a comparison: the 8-bit image and, per pixel, the object it shows (scene/coverage.h).
 struct Rendered {
     Image8 pixels;
-    std::vector<uint32_t> coverage;     // empty when coverage was not asked for
+    std::vector<uint32_t> coverage;  // empty when coverage was not asked for
 };
 
 // The reference's secondary-ray depth when it is compared with the rasterizer: `requested` (the user's

@@ -63,9 +63,9 @@ public:
                 throw std::runtime_error("no EGL config supports desktop OpenGL");
             config = EGL_NO_CONFIG_KHR;
         }
-        const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                         EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                         EGL_NONE};
+        const EGLint contextAttribs[] = {
+            EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttribs);
         if (context_ == EGL_NO_CONTEXT)
             throw std::runtime_error("eglCreateContext (OpenGL 3.3 core) failed: " + eglErrorName(eglGetError()));

@@ -4,15 +4,18 @@
 #include <stdexcept>
 #include <string>
 
-#define GL_FN(type, name) extern "C" { type shadelab_##name = nullptr; }
+#define GL_FN(type, name)           \
+    extern "C" {                    \
+    type shadelab_##name = nullptr; \
+    }
 #include "gl/gl_functions.inc"
 #undef GL_FN
 
 namespace shadelab::gl {
 
 const char* loadFunctions(GetProcFn getProc) {
-#define GL_FN(type, name)                                                   \
-    shadelab_##name = reinterpret_cast<type>(getProc(#name));              \
+#define GL_FN(type, name)                                     \
+    shadelab_##name = reinterpret_cast<type>(getProc(#name)); \
     if (!shadelab_##name) return #name;
 #include "gl/gl_functions.inc"
 #undef GL_FN

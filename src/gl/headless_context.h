@@ -30,9 +30,9 @@ inline constexpr const char* kGlBackendEnv = "SHADELAB_GL_BACKEND";
 
 struct ContextInfo {
     GlBackend backend = GlBackend::Auto;
-    std::string device;     // what the backend picked, e.g. "EGL device 0 (software)"
-    std::string renderer;   // GL_RENDERER
-    std::string version;    // GL_VERSION
+    std::string device;    // what the backend picked, e.g. "EGL device 0 (software)"
+    std::string renderer;  // GL_RENDERER
+    std::string version;   // GL_VERSION
 };
 
 // No backend worked. The message lists every backend tried and why it failed.

@@ -39,15 +39,15 @@ private:
     GLuint id_ = 0;
 };
 
-#define SHADELAB_GL_GEN_TRAITS(Name, gen, del)                        \
-    struct Name##Traits {                                             \
-        static GLuint create() {                                      \
-            GLuint id = 0;                                            \
-            gen(1, &id);                                              \
-            return id;                                                \
-        }                                                             \
-        static void destroy(GLuint id) { del(1, &id); }               \
-    };                                                                \
+#define SHADELAB_GL_GEN_TRAITS(Name, gen, del)          \
+    struct Name##Traits {                               \
+        static GLuint create() {                        \
+            GLuint id = 0;                              \
+            gen(1, &id);                                \
+            return id;                                  \
+        }                                               \
+        static void destroy(GLuint id) { del(1, &id); } \
+    };                                                  \
     using Name = Object<Name##Traits>;
 
 SHADELAB_GL_GEN_TRAITS(Buffer, glGenBuffers, glDeleteBuffers)

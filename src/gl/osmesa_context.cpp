@@ -35,8 +35,17 @@ public:
         gGetProcAddress = reinterpret_cast<GetProcAddressFn>(dlsym(lib_, "OSMesaGetProcAddress"));
         if (!create || !makeCurrent || !destroy_ || !gGetProcAddress)
             throw std::runtime_error("libOSMesa lacks OSMesaCreateContextAttribs");
-        const int attribs[] = {kOsmesaFormat, kOsmesaRgba, kOsmesaDepthBits, 0, kOsmesaProfile, kOsmesaCoreProfile,
-                               kOsmesaMajor, 3, kOsmesaMinor, 3, 0};
+        const int attribs[] = {kOsmesaFormat,
+                               kOsmesaRgba,
+                               kOsmesaDepthBits,
+                               0,
+                               kOsmesaProfile,
+                               kOsmesaCoreProfile,
+                               kOsmesaMajor,
+                               3,
+                               kOsmesaMinor,
+                               3,
+                               0};
         context_ = create(attribs, nullptr);
         if (!context_) throw std::runtime_error("OSMesaCreateContextAttribs (OpenGL 3.3 core) failed");
         if (!makeCurrent(context_, pixel_, kGlUnsignedByte, 1, 1)) throw std::runtime_error("OSMesaMakeCurrent failed");

@@ -12,11 +12,15 @@ namespace {
 
 std::string infoLog(GLuint object, bool isShader) {
     GLint length = 0;
-    if (isShader) glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-    else glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    if (isShader)
+        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    else
+        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
     std::vector<char> buf(size_t(length) + 1, '\0');
-    if (isShader) glGetShaderInfoLog(object, length, nullptr, buf.data());
-    else glGetProgramInfoLog(object, length, nullptr, buf.data());
+    if (isShader)
+        glGetShaderInfoLog(object, length, nullptr, buf.data());
+    else
+        glGetProgramInfoLog(object, length, nullptr, buf.data());
     return buf.data();
 }
 
@@ -83,7 +87,8 @@ Program Program::build(const ShaderLibrary& lib, const std::string& vertexFile, 
     glGetProgramiv(id, GL_LINK_STATUS, &ok);
     if (!ok) {
         std::string log = infoLog(id, false);
-        throw InputError("shaders/" + vertexFile + " + " + fragmentFile, "link failed: " + log.substr(0, log.find('\n')));
+        throw InputError("shaders/" + vertexFile + " + " + fragmentFile,
+                         "link failed: " + log.substr(0, log.find('\n')));
     }
     return p;
 }

@@ -1,8 +1,8 @@
 // ShaderLibrary: embedded or on-disk shader text with #include expansion and #line bookkeeping.
 #include "gl/shader_sources.h"
 
-#include "util/read_file.h"
 #include "util/input_error.h"
+#include "util/read_file.h"
 
 #include <cstdlib>
 #include <sstream>

@@ -9,7 +9,7 @@
 namespace shadelab::gl {
 
 struct EmbeddedShader {
-    const char* name;   // file name under shaders/
+    const char* name;  // file name under shaders/
     const char* text;
 };
 const std::vector<EmbeddedShader>& embeddedShaders();
@@ -18,8 +18,8 @@ const std::vector<EmbeddedShader>& embeddedShaders();
 inline constexpr const char* kShaderDirEnv = "SHADELAB_SHADER_DIR";
 
 struct ShaderSource {
-    std::string text;                   // ready for glShaderSource: #version, prelude, includes expanded
-    std::vector<std::string> files;     // files[i] is GLSL source-string number i in #line directives
+    std::string text;                // ready for glShaderSource: #version, prelude, includes expanded
+    std::vector<std::string> files;  // files[i] is GLSL source-string number i in #line directives
 };
 
 class ShaderLibrary {

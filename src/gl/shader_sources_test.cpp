@@ -1,7 +1,7 @@
 // ShaderLibrary and firstLogError without a GL context: #include expansion, the #line numbers that map
 // every line of the expanded text back to its file and line, and driver logs rewritten to "file:line".
-#include "gl/program.h"
 #include "gl/shader_sources.h"
+#include "gl/program.h"
 
 #include "util/input_error.h"
 

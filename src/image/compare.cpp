@@ -19,7 +19,7 @@ struct RegionAcc {
     uint64_t sum = 0;
     uint64_t sumSq = 0;
     int max = 0;
-    int64_t maxIndex = -1;                   // pixel index of the first pixel reaching max
+    int64_t maxIndex = -1;  // pixel index of the first pixel reaching max
     int maxChannel = -1;
     int64_t over = 0;
     int64_t overHard = 0;
@@ -76,8 +76,8 @@ inline void addPixel(RegionAcc& r, int64_t i, uint32_t sum, uint32_t sumSq, int 
 // locals picked by a branch, not an indexed array: byte loads may alias anything, and only locals
 // whose address never escapes stay in registers.
 template <int CA, int CB>
-void accumulate(const Image8& a, const Image8& b, const uint8_t* band, int threshold, int hardMax,
-                RegionAcc& interior, RegionAcc& inBand) {
+void accumulate(const Image8& a, const Image8& b, const uint8_t* band, int threshold, int hardMax, RegionAcc& interior,
+                RegionAcc& inBand) {
     constexpr int kChannels = CA > CB ? CA : CB;
     const int64_t n = int64_t(a.width) * a.height;
     const uint8_t* pa = a.data.data();
@@ -97,8 +97,10 @@ void accumulate(const Image8& a, const Image8& b, const uint8_t* band, int thres
                 pixelChannel = c;
             }
         }
-        if (band && band[i]) addPixel(accBand, i, sum, sumSq, pixelMax, pixelChannel, threshold, hardMax);
-        else addPixel(accIn, i, sum, sumSq, pixelMax, pixelChannel, threshold, hardMax);
+        if (band && band[i])
+            addPixel(accBand, i, sum, sumSq, pixelMax, pixelChannel, threshold, hardMax);
+        else
+            addPixel(accIn, i, sum, sumSq, pixelMax, pixelChannel, threshold, hardMax);
     }
     interior = accIn;
     inBand = accBand;
@@ -111,8 +113,8 @@ void checkImages(const Image8& a, const Image8& b) {
     }
     for (const Image8* img : {&a, &b}) {
         if (img->channels != 3 && img->channels != 4) {
-            throw InputError("", "cannot compare an image with " + std::to_string(img->channels) +
-                                     " channels (need RGB or RGBA)");
+            throw InputError(
+                "", "cannot compare an image with " + std::to_string(img->channels) + " channels (need RGB or RGBA)");
         }
         SHADELAB_CHECK_EQ(img->data.size(), size_t(img->width) * size_t(img->height) * size_t(img->channels));
     }
@@ -124,7 +126,7 @@ void checkGates(const CompareGates& g) {
         fail("threshold must be in [0, 255], got " + std::to_string(g.threshold));
     }
     if (g.hardMax < 0 || g.hardMax > 255) fail("hard max must be in [0, 255], got " + std::to_string(g.hardMax));
-    const auto isFraction = [](double f) { return f >= 0 && f <= 1; };   // false for NaN too
+    const auto isFraction = [](double f) { return f >= 0 && f <= 1; };  // false for NaN too
     if (!isFraction(g.maxFractionOver)) fail("max fraction over must be in [0, 1]");
     if (!isFraction(g.maxSilhouetteFraction)) fail("max silhouette fraction must be in [0, 1]");
     if (g.maxMean && !(*g.maxMean >= 0)) fail("max mean must be >= 0");
@@ -132,9 +134,7 @@ void checkGates(const CompareGates& g) {
 
 // Largest count that stays within a fraction limit; the epsilon keeps exact products (0.001 * 1000)
 // from rounding down.
-int64_t allowedCount(double fraction, int64_t total) {
-    return int64_t(std::floor(fraction * double(total) + 1e-9));
-}
+int64_t allowedCount(double fraction, int64_t total) { return int64_t(std::floor(fraction * double(total) + 1e-9)); }
 
 template <typename... Args>
 std::string format(const char* fmt, Args... args) {
@@ -152,10 +152,9 @@ void applyGates(CompareResult& r) {
                                    (long long)in.overThreshold, (long long)in.pixels));
     }
     if (in.overHardMax > 0) {
-        r.reasons.push_back("interior: max " + std::to_string(in.max) + "/255 at (" + std::to_string(in.maxX) +
-                            ", " + std::to_string(in.maxY) + ") channel " + channelName(in.maxChannel) +
-                            " (limit " + std::to_string(g.hardMax) + "/255; " + std::to_string(in.overHardMax) +
-                            " pixels over)");
+        r.reasons.push_back("interior: max " + std::to_string(in.max) + "/255 at (" + std::to_string(in.maxX) + ", " +
+                            std::to_string(in.maxY) + ") channel " + channelName(in.maxChannel) + " (limit " +
+                            std::to_string(g.hardMax) + "/255; " + std::to_string(in.overHardMax) + " pixels over)");
     }
     if (g.maxMean && in.mean > *g.maxMean) {
         r.reasons.push_back(format("interior: mean %.3f/255 (limit %.3f/255)", in.mean, *g.maxMean));
@@ -165,10 +164,11 @@ void applyGates(CompareResult& r) {
                             " pixels outside the silhouette band");
     }
     if (r.hasCoverage && r.coverageMismatches > allowedCount(g.maxSilhouetteFraction, r.band.pixels)) {
-        r.reasons.push_back(format("coverage differs at %.2f%% of silhouette band pixels (limit %.2f%%; "
-                                   "%lld of %lld pixels)",
-                                   100.0 * r.mismatchFractionOfBand(), 100.0 * g.maxSilhouetteFraction,
-                                   (long long)r.coverageMismatches, (long long)r.band.pixels));
+        r.reasons.push_back(
+            format("coverage differs at %.2f%% of silhouette band pixels (limit %.2f%%; "
+                   "%lld of %lld pixels)",
+                   100.0 * r.mismatchFractionOfBand(), 100.0 * g.maxSilhouetteFraction, (long long)r.coverageMismatches,
+                   (long long)r.band.pixels));
     }
     r.pass = r.reasons.empty();
 }
@@ -193,7 +193,7 @@ void bandAndMismatches(const std::vector<uint32_t>& coverageA, const std::vector
         const auto mixedAt = [&](int x, int l, int r) {
             return uint8_t((ra[l] != ra[x]) | (ra[r] != ra[x]) | (rb[l] != rb[x]) | (rb[r] != rb[x]));
         };
-        for (int x = 1; x + 1 < width; ++x) m[x] = mixedAt(x, x - 1, x + 1);   // straight loop: vectorises
+        for (int x = 1; x + 1 < width; ++x) m[x] = mixedAt(x, x - 1, x + 1);  // straight loop: vectorises
         m[0] = mixedAt(0, 0, std::min(1, width - 1));
         if (width > 1) m[width - 1] = mixedAt(width - 1, width - 2, width - 1);
     };
@@ -224,10 +224,14 @@ void bandAndMismatches(const std::vector<uint32_t>& coverageA, const std::vector
 CompareResult compareWithBand(const Image8& a, const Image8& b, const uint8_t* band, const CompareGates& gates) {
     RegionAcc acc[2];
     const int ca = a.channels, cb = b.channels, t = gates.threshold, h = gates.hardMax;
-    if (ca == 3 && cb == 3) accumulate<3, 3>(a, b, band, t, h, acc[0], acc[1]);
-    else if (ca == 4 && cb == 4) accumulate<4, 4>(a, b, band, t, h, acc[0], acc[1]);
-    else if (ca == 3) accumulate<3, 4>(a, b, band, t, h, acc[0], acc[1]);
-    else accumulate<4, 3>(a, b, band, t, h, acc[0], acc[1]);
+    if (ca == 3 && cb == 3)
+        accumulate<3, 3>(a, b, band, t, h, acc[0], acc[1]);
+    else if (ca == 4 && cb == 4)
+        accumulate<4, 4>(a, b, band, t, h, acc[0], acc[1]);
+    else if (ca == 3)
+        accumulate<3, 4>(a, b, band, t, h, acc[0], acc[1]);
+    else
+        accumulate<4, 3>(a, b, band, t, h, acc[0], acc[1]);
 
     CompareResult r;
     r.width = a.width;

@@ -19,13 +19,13 @@ namespace shadelab {
 
 namespace {
 
-using Json = nlohmann::ordered_json;   // keys in the order written: verdict first, for people reading it
+using Json = nlohmann::ordered_json;  // keys in the order written: verdict first, for people reading it
 
 // Inferno-like control points (sRGB bytes) with rising Rec. 709 luminance (0, 20, 51, 91, 176, 255),
 // so linear interpolation between them keeps the ramp monotone in brightness.
 constexpr int kStops = 6;
-constexpr uint8_t kStopRgb[kStops][3] = {
-    {0, 0, 0}, {20, 10, 120}, {120, 20, 160}, {220, 50, 120}, {250, 170, 20}, {255, 255, 255}};
+constexpr uint8_t kStopRgb[kStops][3] = {{0, 0, 0},      {20, 10, 120},  {120, 20, 160},
+                                         {220, 50, 120}, {250, 170, 20}, {255, 255, 255}};
 
 std::array<uint8_t, 256 * 3> makeRamp() {
     std::array<uint8_t, 256 * 3> t{};
@@ -41,8 +41,8 @@ std::array<uint8_t, 256 * 3> makeRamp() {
     return t;
 }
 
-constexpr uint8_t kBandFloor = 48;           // sRGB byte: band pixels are at least this grey
-constexpr uint8_t kGapGrey = 24;             // sRGB byte: gaps and padding in side-by-side strips
+constexpr uint8_t kBandFloor = 48;  // sRGB byte: band pixels are at least this grey
+constexpr uint8_t kGapGrey = 24;    // sRGB byte: gaps and padding in side-by-side strips
 
 void checkSameSize(const Image8& a, const Image8& b) {
     if (a.width != b.width || a.height != b.height) {
@@ -57,7 +57,7 @@ Json regionJson(const RegionStats& s) {
             {"mean", s.mean},
             {"rms", s.rms},
             {"max", s.max},
-            {"max_x", s.max > 0 ? Json(s.maxX) : Json()},   // null: no pixel differs
+            {"max_x", s.max > 0 ? Json(s.maxX) : Json()},  // null: no pixel differs
             {"max_y", s.max > 0 ? Json(s.maxY) : Json()},
             {"max_channel", s.max > 0 ? Json(channelName(s.maxChannel)) : Json()},
             {"over_threshold", s.overThreshold},
@@ -70,8 +70,8 @@ std::string regionLine(const char* name, const RegionStats& s, int threshold) {
     const int n = std::snprintf(buf, sizeof buf, "  %-9s %9lld px  mean %.3f  rms %.3f  max %3d", name,
                                 (long long)s.pixels, s.mean, s.rms, s.max);
     std::string line(buf, size_t(std::max(n, 0)));
-    if (s.max > 0) line += " at (" + std::to_string(s.maxX) + ", " + std::to_string(s.maxY) + ") " +
-                           channelName(s.maxChannel);
+    if (s.max > 0)
+        line += " at (" + std::to_string(s.maxX) + ", " + std::to_string(s.maxY) + ") " + channelName(s.maxChannel);
     std::snprintf(buf, sizeof buf, "  over %d/255: %.3f%% (%lld px)\n", threshold, 100.0 * s.fractionOver(),
                   (long long)s.overThreshold);
     return line + buf;

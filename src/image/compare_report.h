@@ -32,8 +32,7 @@ std::string compareSummary(const CompareResult& r);
 
 // Machine-readable report: gates, per-region metrics, coverage counts, verdict and reasons, with
 // snake_case keys and numbers as numbers. imageA/imageB, when given, are recorded as "image_a"/"image_b".
-std::string compareReportJson(const CompareResult& r, const std::string& imageA = {},
-                              const std::string& imageB = {});
+std::string compareReportJson(const CompareResult& r, const std::string& imageA = {}, const std::string& imageB = {});
 
 // Writes <stem>_a.png, <stem>_b.png, <stem>_heat.png and <stem>_report.json (atomically) and returns
 // their paths in that order, for tests that fail and the CLI's --diff/--json.

@@ -102,9 +102,9 @@ TEST(Compare, IdenticalImagesPassWithZeros) {
 TEST(Compare, SinglePixelDifferencesGiveExactMetrics) {
     const Image8 a = solid(10, 10);
     Image8 b = a;
-    at(b, 3, 7, 1) += 5;   // G +5 at (3, 7)
-    at(b, 8, 2, 2) -= 2;   // B -2 at (8, 2): earlier in row-major order but smaller
-    at(b, 9, 9, 0) += 5;   // ties with (3, 7) but later: the first one is reported
+    at(b, 3, 7, 1) += 5;  // G +5 at (3, 7)
+    at(b, 8, 2, 2) -= 2;  // B -2 at (8, 2): earlier in row-major order but smaller
+    at(b, 9, 9, 0) += 5;  // ties with (3, 7) but later: the first one is reported
     const CompareResult r = compareImages(a, b);
     EXPECT_DOUBLE_EQ(r.all.mean, 12.0 / 300.0);
     EXPECT_DOUBLE_EQ(r.all.rms, std::sqrt(54.0 / 300.0));
@@ -131,7 +131,7 @@ TEST(Compare, OverMeansStrictlyGreaterThanThreshold) {
 }
 
 TEST(Compare, FractionGateWithNegativeControl) {
-    const Image8 a = solid(100, 100);   // 10 000 interior pixels: the 0.1% limit is 10 pixels
+    const Image8 a = solid(100, 100);  // 10 000 interior pixels: the 0.1% limit is 10 pixels
     for (int n : {9, 10, 11}) {
         Image8 b = a;
         for (int i = 0; i < n; ++i) at(b, i * 7, i * 3, i % 3) += 10;
@@ -158,7 +158,7 @@ TEST(Compare, HardMaxGateWithNegativeControl) {
 TEST(Compare, OptionalMeanGate) {
     const Image8 a = solid(10, 10);
     Image8 b = a;
-    for (int x = 0; x < 10; ++x) at(b, x, 0, 0) += 3;   // 30 levels over 300 samples: mean 0.1
+    for (int x = 0; x < 10; ++x) at(b, x, 0, 0) += 3;  // 30 levels over 300 samples: mean 0.1
     CompareGates g;
     g.maxFractionOver = 1.0;
     EXPECT_TRUE(compareImages(a, b, g).pass);
@@ -223,9 +223,9 @@ TEST(SilhouetteBand, DiscAndRandomIdsMatchBruteForce) {
         for (int x = 0; x < w; ++x) disc[size_t(y * w + x)] = (x - 16) * (x - 16) + (y - 15) * (y - 15) <= 100;
     const std::vector<uint8_t> band = silhouetteBand(disc, disc, w, h);
     EXPECT_EQ(band, bruteForceBand(disc, disc, w, h));
-    EXPECT_EQ(band[size_t(15 * w + 16)], 0);   // disc centre is interior
-    EXPECT_EQ(band[0], 0);                     // far corner is interior
-    EXPECT_EQ(band[size_t(15 * w + 26)], 1);   // rim (x = 16 + 10) is band
+    EXPECT_EQ(band[size_t(15 * w + 16)], 0);  // disc centre is interior
+    EXPECT_EQ(band[0], 0);                    // far corner is interior
+    EXPECT_EQ(band[size_t(15 * w + 26)], 1);  // rim (x = 16 + 10) is band
     std::mt19937 rng(7);
     for (int trial = 0; trial < 20; ++trial) {
         const int tw = 1 + int(rng() % 9), th = 1 + int(rng() % 9);
@@ -241,7 +241,7 @@ TEST(Compare, DifferencesInsideTheBandDoNotCountForInteriorGates) {
     const std::vector<uint32_t> cov = edgeCoverage(w, h, 32);
     const Image8 a = solid(w, h);
     Image8 b = a;
-    for (int y = 0; y < h; ++y) at(b, 31, y, 0) = at(b, 32, y, 2) = 200;   // aliasing along the edge
+    for (int y = 0; y < h; ++y) at(b, 31, y, 0) = at(b, 32, y, 2) = 200;  // aliasing along the edge
     const CompareResult r = compareImages(a, b, cov, cov);
     EXPECT_TRUE(r.pass) << compareSummary(r);
     EXPECT_EQ(r.band.pixels, 2 * h);
@@ -283,7 +283,7 @@ TEST(Compare, CoverageMismatchOutsideBandFails) {
     for (int y = 4; y < 9; ++y)
         for (int x = 4; x < 9; ++x) ca[size_t(y * w + x)] = 1;
     std::vector<uint32_t> cb = ca;
-    for (auto& v : cb) v = v == 1 ? 3u : v;   // same shape, wrong object: the 3x3 inside is not band
+    for (auto& v : cb) v = v == 1 ? 3u : v;  // same shape, wrong object: the 3x3 inside is not band
     const CompareResult r = compareImages(img, img, ca, cb);
     EXPECT_EQ(r.coverageMismatches, 25);
     EXPECT_EQ(r.mismatchesOutsideBand, 9);
@@ -298,18 +298,18 @@ TEST(Heatmap, ZeroIsBlackAndTheRampRisesMonotonically) {
     EXPECT_TRUE(std::all_of(same.data.begin(), same.data.end(), [](uint8_t v) { return v == 0; }));
     auto luminance = [](const uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
     for (int v = 1; v < 256; ++v) EXPECT_GE(luminance(heatRamp(v)), luminance(heatRamp(v - 1))) << v;
-    for (int v : {255, 1000})                          // white, clamped above
+    for (int v : {255, 1000})  // white, clamped above
         for (int c = 0; c < 3; ++c) EXPECT_EQ(heatRamp(v)[c], 255);
 
     Image8 b = a;
-    at(b, 1, 1, 0) ^= 1;                               // difference of 1
+    at(b, 1, 1, 0) ^= 1;  // difference of 1
     const uint8_t v = a.pixel(2, 1)[2];
-    at(b, 2, 1, 2) = uint8_t(v < 128 ? v + 5 : v - 5);   // difference of 5
+    at(b, 2, 1, 2) = uint8_t(v < 128 ? v + 5 : v - 5);  // difference of 5
     const Image8 heat = diffHeatmap(a, b, 16);
     EXPECT_GT(luminance(heat.pixel(1, 1)), 0.0);
     EXPECT_GT(luminance(heat.pixel(2, 1)), luminance(heat.pixel(1, 1)));
 
-    const std::vector<uint8_t> band(16 * 8, 1);        // band outline: at least dark grey
+    const std::vector<uint8_t> band(16 * 8, 1);  // band outline: at least dark grey
     EXPECT_EQ(diffHeatmap(a, a, band).pixel(0, 0)[1], 48);
 }
 
@@ -320,8 +320,8 @@ TEST(Heatmap, SideBySideLaysImagesOutWithGaps) {
     EXPECT_EQ(s.height, 4);
     EXPECT_EQ(s.channels, 3);
     EXPECT_EQ(s.pixel(2, 1)[0], 10);
-    EXPECT_EQ(s.pixel(2, 2)[0], 24);    // padding below the shorter image
-    EXPECT_EQ(s.pixel(5, 0)[0], 24);    // gap
+    EXPECT_EQ(s.pixel(2, 2)[0], 24);  // padding below the shorter image
+    EXPECT_EQ(s.pixel(5, 0)[0], 24);  // gap
     EXPECT_EQ(s.pixel(8, 3)[2], 200);
     EXPECT_EQ(sideBySide({}).width, 0);
 }
@@ -337,7 +337,7 @@ TEST(Heatmap, DemoStripIsLeftInTheOutputFolder) {
             const bool inDisc = std::hypot(x - 48, y - 32) < 24.0;
             cov[size_t(y * w + x)] = inDisc;
             for (int c = 0; c < 3; ++c) at(a, x, y, c) = at(b, x, y, c) = uint8_t(inDisc ? 60 + 60 * c : 20);
-            if (inDisc) at(b, x, y, 1) = uint8_t(at(a, x, y, 1) + (x - 24) / 3);   // 0..16 levels
+            if (inDisc) at(b, x, y, 1) = uint8_t(at(a, x, y, 1) + (x - 24) / 3);  // 0..16 levels
         }
     const CompareResult r = compareImages(a, b, cov, cov);
     const Image8 heat = diffHeatmap(a, b, r.bandMask);
@@ -373,7 +373,7 @@ TEST(Report, JsonParsesBackWithVerdictAndMetrics) {
     EXPECT_EQ(in["max_channel"], "G");
     EXPECT_EQ(in["pixels"], 100 * 100 - 200);
     EXPECT_DOUBLE_EQ(in["mean"].get<double>(), r.interior.mean);
-    EXPECT_EQ(j["regions"]["band"]["max_channel"], nullptr);   // nothing differs in the band
+    EXPECT_EQ(j["regions"]["band"]["max_channel"], nullptr);  // nothing differs in the band
     EXPECT_EQ(j["regions"]["band"]["max_x"], nullptr);
     EXPECT_EQ(j["coverage"]["band_pixels"], 200);
     EXPECT_EQ(j["coverage"]["mismatches_outside_band"], 0);

@@ -47,8 +47,10 @@ struct Thresholds {
             uint32_t lo = 0, hi = oneBits;  // encode(hi) >= k always holds: encode(1) == 255
             while (lo < hi) {
                 uint32_t mid = lo + (hi - lo) / 2;
-                if (encodeChannel(floatFromBits(mid), e) >= k) hi = mid;
-                else lo = mid + 1;
+                if (encodeChannel(floatFromBits(mid), e) >= k)
+                    hi = mid;
+                else
+                    lo = mid + 1;
             }
             threshold[k] = floatFromBits(lo);
         }

@@ -45,9 +45,22 @@ size_t countMismatches(const std::vector<float>& values, Encoding e) {
 
 std::vector<float> edgeCases() {
     const float inf = std::numeric_limits<float>::infinity();
-    std::vector<float> v = {0.0f, -0.0f, 1.0f, -1.0f, 2.0f, inf, -inf, std::nanf(""), -std::nanf(""),
-                            std::numeric_limits<float>::min(), std::numeric_limits<float>::denorm_min(),
-                            std::numeric_limits<float>::max(), 0.0031308f, 0.5f, 0.99999994f, 1.0000001f};
+    std::vector<float> v = {0.0f,
+                            -0.0f,
+                            1.0f,
+                            -1.0f,
+                            2.0f,
+                            inf,
+                            -inf,
+                            std::nanf(""),
+                            -std::nanf(""),
+                            std::numeric_limits<float>::min(),
+                            std::numeric_limits<float>::denorm_min(),
+                            std::numeric_limits<float>::max(),
+                            0.0031308f,
+                            0.5f,
+                            0.99999994f,
+                            1.0000001f};
     // Every 8-bit code's decision point in both encodings, with neighbours a few ULPs either side.
     for (int k = 0; k < 256; ++k) {
         for (float mid : {srgbToLinear((k + 0.5f) / 255.0f), (k + 0.5f) / 255.0f}) {
@@ -67,7 +80,7 @@ TEST(Encode, SrgbCurveKnownValues) {
     EXPECT_NEAR(linearToSrgb(0.5f), 0.735356983f, 1e-6);
     EXPECT_NEAR(linearToSrgb(0.18f), 0.461356129f, 1e-6);
     EXPECT_NEAR(linearToSrgb(0.0031308f), 0.04045f, 1e-6);  // the two pieces meet here
-    EXPECT_FLOAT_EQ(linearToSrgb(0.001f), 0.01292f);         // linear segment
+    EXPECT_FLOAT_EQ(linearToSrgb(0.001f), 0.01292f);        // linear segment
     for (float x = 0.0f; x <= 1.0f; x += 0.01f) EXPECT_NEAR(srgbToLinear(linearToSrgb(x)), x, 1e-6);
 }
 
@@ -118,7 +131,7 @@ TEST(Encode, TableMatchesExactOnRandomFloats) {
             case 0: v.push_back(wide(rng)); break;
             case 1: v.push_back(unit(rng) * unit(rng) * 0.01f); break;  // dark values, steep part of the curve
             case 2: v.push_back(unit(rng)); break;
-            default: v.push_back(floatFromBits(bits(rng))); break;      // anything, NaNs included
+            default: v.push_back(floatFromBits(bits(rng))); break;  // anything, NaNs included
         }
     }
     for (Encoding e : {Encoding::Srgb, Encoding::Linear}) EXPECT_EQ(countMismatches(v, e), 0u);

@@ -11,7 +11,7 @@ namespace shadelab {
 struct ImageF {
     int width = 0;
     int height = 0;
-    std::vector<float> rgba;    // width*height*4 floats, row-major, row 0 at the top
+    std::vector<float> rgba;  // width*height*4 floats, row-major, row 0 at the top
 
     ImageF() = default;
     ImageF(int w, int h) : width(w), height(h), rgba(size_t(w) * size_t(h) * 4, 0.0f) {}

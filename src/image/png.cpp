@@ -3,9 +3,9 @@
 #include "image/png.h"
 
 #include "util/atomic_file.h"
-#include "util/read_file.h"
 #include "util/check.h"
 #include "util/input_error.h"
+#include "util/read_file.h"
 
 #include <stb_image.h>
 #include <zlib.h>
@@ -169,7 +169,7 @@ std::vector<uint8_t> detail::encodePngBands(const Image8& img, int requestedBand
     putU32(ihdr, uint32_t(img.width));
     putU32(ihdr, uint32_t(img.height));
     const uint8_t rest[5] = {8, uint8_t(img.channels == 4 ? 6 : 2), 0, 0, 0};  // depth, colour type, deflate,
-    ihdr.insert(ihdr.end(), rest, rest + 5);                                    // filter method 0, no interlace
+    ihdr.insert(ihdr.end(), rest, rest + 5);                                   // filter method 0, no interlace
     putChunk(out, "IHDR", ihdr.data(), ihdr.size());
 
     // IDAT chunks split anywhere; decoders concatenate them. One (or more, if huge) per band.
@@ -190,9 +190,11 @@ PngFile readPngFile(const std::string& path) {
     f.path = path;
     f.bytes = readFile(path, kMaxPngFileBytes);
     const std::string& b = f.bytes;
-    if (b.size() < 8 || std::memcmp(b.data(), kSignature, 8) != 0) throw InputError(path, "not a PNG file (bad signature)");
+    if (b.size() < 8 || std::memcmp(b.data(), kSignature, 8) != 0)
+        throw InputError(path, "not a PNG file (bad signature)");
     // PNG spec §5.2/§11.2.2: the first chunk is IHDR, 13 bytes, width and height big-endian in [1, 2^31).
-    if (b.size() < 8 + 8 + 13 || b.compare(12, 4, "IHDR") != 0) throw InputError(path, "corrupt PNG: no IHDR chunk first");
+    if (b.size() < 8 + 8 + 13 || b.compare(12, 4, "IHDR") != 0)
+        throw InputError(path, "corrupt PNG: no IHDR chunk first");
     const auto be32 = [&](size_t at) {
         return uint32_t(uint8_t(b[at])) << 24 | uint32_t(uint8_t(b[at + 1])) << 16 | uint32_t(uint8_t(b[at + 2])) << 8 |
                uint32_t(uint8_t(b[at + 3]));

@@ -24,7 +24,7 @@ inline constexpr uint64_t kMaxPngPixels = uint64_t(16384) * 16384;
 struct PngFile {
     std::string path;
     std::string bytes;
-    int width = 0, height = 0;          // pixels, from IHDR
+    int width = 0, height = 0;  // pixels, from IHDR
 };
 
 // Reads a PNG file (util/read_file.h) and its header: signature, IHDR present, width and height in

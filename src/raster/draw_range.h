@@ -11,7 +11,7 @@ namespace shadelab::raster {
 struct DrawRange {
     size_t mesh, part;
     size_t firstIndex, indexCount;
-    glm::vec3 lo, hi;           // world-space bounds, for culling
+    glm::vec3 lo, hi;  // world-space bounds, for culling
 };
 
 // Conservative test: true when the box lies wholly outside one side of the clip volume (far is ignored).

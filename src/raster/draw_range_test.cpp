@@ -11,15 +11,15 @@ namespace {
 const glm::mat4 kIdentity(1.0f);
 
 TEST(OutsideClip, BoxesAgainstTheUnitClipCube) {
-    EXPECT_FALSE(outsideClip(kIdentity, glm::vec3(-0.5f), glm::vec3(0.5f)));                  // inside
-    EXPECT_FALSE(outsideClip(kIdentity, glm::vec3(-5.0f), glm::vec3(5.0f)));                  // contains it
-    EXPECT_FALSE(outsideClip(kIdentity, {0.9f, 0.0f, 0.0f}, {3.0f, 0.1f, 0.1f}));             // straddles x = 1
-    EXPECT_TRUE(outsideClip(kIdentity, {1.1f, 0.0f, 0.0f}, {3.0f, 0.1f, 0.1f}));              // beyond x = 1
-    EXPECT_TRUE(outsideClip(kIdentity, {-3.0f, 0.0f, 0.0f}, {-1.1f, 0.1f, 0.1f}));            // beyond x = -1
-    EXPECT_TRUE(outsideClip(kIdentity, {0.0f, 1.1f, 0.0f}, {0.1f, 2.0f, 0.1f}));              // above
-    EXPECT_TRUE(outsideClip(kIdentity, {0.0f, -2.0f, 0.0f}, {0.1f, -1.1f, 0.1f}));            // below
-    EXPECT_TRUE(outsideClip(kIdentity, {0.0f, 0.0f, -2.0f}, {0.1f, 0.1f, -1.1f}));            // before near
-    EXPECT_FALSE(outsideClip(kIdentity, {0.0f, 0.0f, 1.1f}, {0.1f, 0.1f, 2.0f}));             // far is ignored
+    EXPECT_FALSE(outsideClip(kIdentity, glm::vec3(-0.5f), glm::vec3(0.5f)));        // inside
+    EXPECT_FALSE(outsideClip(kIdentity, glm::vec3(-5.0f), glm::vec3(5.0f)));        // contains it
+    EXPECT_FALSE(outsideClip(kIdentity, {0.9f, 0.0f, 0.0f}, {3.0f, 0.1f, 0.1f}));   // straddles x = 1
+    EXPECT_TRUE(outsideClip(kIdentity, {1.1f, 0.0f, 0.0f}, {3.0f, 0.1f, 0.1f}));    // beyond x = 1
+    EXPECT_TRUE(outsideClip(kIdentity, {-3.0f, 0.0f, 0.0f}, {-1.1f, 0.1f, 0.1f}));  // beyond x = -1
+    EXPECT_TRUE(outsideClip(kIdentity, {0.0f, 1.1f, 0.0f}, {0.1f, 2.0f, 0.1f}));    // above
+    EXPECT_TRUE(outsideClip(kIdentity, {0.0f, -2.0f, 0.0f}, {0.1f, -1.1f, 0.1f}));  // below
+    EXPECT_TRUE(outsideClip(kIdentity, {0.0f, 0.0f, -2.0f}, {0.1f, 0.1f, -1.1f}));  // before near
+    EXPECT_FALSE(outsideClip(kIdentity, {0.0f, 0.0f, 1.1f}, {0.1f, 0.1f, 2.0f}));   // far is ignored
 }
 
 // Conservative: only a box with all eight corners beyond one plane is culled.
@@ -46,8 +46,8 @@ TEST(OutsideClip, PerspectiveCamera) {
                          glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
     EXPECT_FALSE(outsideClip(vp, {-0.5f, -0.5f, -6.0f}, {0.5f, 0.5f, -5.0f}));
     EXPECT_TRUE(outsideClip(vp, {-0.5f, -0.5f, 5.0f}, {0.5f, 0.5f, 6.0f}));
-    EXPECT_TRUE(outsideClip(vp, {6.0f, -0.5f, -5.0f}, {7.0f, 0.5f, -4.0f}));   // x > |z|: right of the frustum
-    EXPECT_FALSE(outsideClip(vp, {4.0f, -0.5f, -5.0f}, {7.0f, 0.5f, -4.0f}));  // straddles its right side
+    EXPECT_TRUE(outsideClip(vp, {6.0f, -0.5f, -5.0f}, {7.0f, 0.5f, -4.0f}));        // x > |z|: right of the frustum
+    EXPECT_FALSE(outsideClip(vp, {4.0f, -0.5f, -5.0f}, {7.0f, 0.5f, -4.0f}));       // straddles its right side
     EXPECT_FALSE(outsideClip(vp, {-0.5f, -0.5f, -500.0f}, {0.5f, 0.5f, -400.0f}));  // beyond far: kept
 }
 

@@ -14,9 +14,8 @@ struct FaceBasis {
     glm::vec3 forward, right, up;
 };
 constexpr FaceBasis kFaces[6] = {
-    {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}},  {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}},
-    {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}},    {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}},
-    {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}},
+    {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}}, {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}}, {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}},
+    {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}}, {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}},
 };
 
 }  // namespace
@@ -24,8 +23,8 @@ constexpr FaceBasis kFaces[6] = {
 FrameBlock cubeFaceFrame(const FrameBlock& frame, const glm::vec3& centre, float zNear, int face, int size) {
     const FaceBasis& b = kFaces[face];
     FrameBlock f = frame;
-    f.viewProj = glm::infinitePerspective(glm::radians(90.0f), 1.0f, zNear) *
-                 glm::lookAt(centre, centre + b.forward, b.up);
+    f.viewProj =
+        glm::infinitePerspective(glm::radians(90.0f), 1.0f, zNear) * glm::lookAt(centre, centre + b.forward, b.up);
     f.eye = glm::vec4(centre, 1.0f);
     f.forward = glm::vec4(b.forward, 0.0f);
     f.right = glm::vec4(b.right, 0.0f);
@@ -43,8 +42,8 @@ void EnvironmentCubes::resize(int count, int size) {
         gl::Texture t = gl::Texture::create();
         glBindTexture(GL_TEXTURE_CUBE_MAP, t.id());
         for (int face = 0; face < 6; ++face)
-            glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA16F, size, size, 0, GL_RGBA,
-                         GL_FLOAT, nullptr);
+            glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA16F, size, size, 0, GL_RGBA, GL_FLOAT,
+                         nullptr);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -17,9 +17,9 @@ struct FrameBlock {
     glm::vec4 forward;
     glm::vec4 right;
     glm::vec4 up;
-    glm::vec4 viewport;          // full width, height, tan(fovY/2), GL row of the band's bottom
-    glm::vec4 ambient;           // Ia
-    glm::ivec4 flags;            // model, term bits, light count, pass bits
+    glm::vec4 viewport;  // full width, height, tan(fovY/2), GL row of the band's bottom
+    glm::vec4 ambient;   // Ia
+    glm::ivec4 flags;    // model, term bits, light count, pass bits
     glm::vec4 lightPos[kMaxLights];
     glm::vec4 lightColor[kMaxLights];
     glm::vec4 lightAtten[kMaxLights];

@@ -37,7 +37,8 @@ void boxDownsample(const ImageF& hi, int k, ImageF& lo) {
 int samplesPerSide(int spp) {
     int k = int(std::lround(std::sqrt(double(std::max(spp, 0)))));
     if (spp < 1 || spp > 64 || k * k != spp)
-        throw UsageError("--spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " + std::to_string(spp));
+        throw UsageError("--spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " +
+                         std::to_string(spp));
     return k;
 }
 
@@ -47,8 +48,9 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (hiW > maxSize)
-        throw UsageError("--size " + std::to_string(o.width) + " wide with --spp " + std::to_string(o.spp) + " needs a " +
-                         std::to_string(hiW) + "-pixel-wide target; this GL allows " + std::to_string(maxSize));
+        throw UsageError("--size " + std::to_string(o.width) + " wide with --spp " + std::to_string(o.spp) +
+                         " needs a " + std::to_string(hiW) + "-pixel-wide target; this GL allows " +
+                         std::to_string(maxSize));
 
     OffscreenResult r;
     r.pixels.width = o.width;
@@ -58,8 +60,8 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
     if (o.coverage) r.coverage.resize(size_t(o.width) * size_t(o.height));
 
     // Bands hold whole output rows (multiples of k sub-rows) and stay near the target budget.
-    const int outRowsPerBand = std::max(1, (o.height + bandCount(hiW, hiH, o.maxTargetBytes) - 1) /
-                                               bandCount(hiW, hiH, o.maxTargetBytes));
+    const int outRowsPerBand =
+        std::max(1, (o.height + bandCount(hiW, hiH, o.maxTargetBytes) - 1) / bandCount(hiW, hiH, o.maxTargetBytes));
     const int coverageSample = k / 2;  // the tracer's choice: the pixel centre when k is odd
     ImageF hiStrip, loStrip;
     std::vector<uint32_t> bandCoverage;

@@ -14,19 +14,19 @@
 namespace shadelab::raster {
 
 struct OffscreenOptions {
-    int width = 1280, height = 720;     // output pixels
-    int spp = 1;                        // samples per pixel: a perfect square k², on the grid (i + (a+0.5)/k)
+    int width = 1280, height = 720;  // output pixels
+    int spp = 1;                     // samples per pixel: a perfect square k², on the grid (i + (a+0.5)/k)
     Encoding encoding = Encoding::Srgb;
-    bool coverage = false;              // also return coverage ids (of sample a = b = k/2, as the tracer)
+    bool coverage = false;                    // also return coverage ids (of sample a = b = k/2, as the tracer)
     size_t maxTargetBytes = size_t(8) << 20;  // float colour target budget per band
 };
 
 struct OffscreenResult {
-    Image8 pixels;                      // RGB
-    std::vector<uint32_t> coverage;     // width*height ids when asked, row 0 at the top
+    Image8 pixels;                   // RGB
+    std::vector<uint32_t> coverage;  // width*height ids when asked, row 0 at the top
     int bands = 0;
-    double drawMs = 0.0;                // GPU time, summed over bands (glFinish after each)
-    double readMs = 0.0;                // readback + downsampling + conversion
+    double drawMs = 0.0;  // GPU time, summed over bands (glFinish after each)
+    double readMs = 0.0;  // readback + downsampling + conversion
 };
 
 // k for spp = k²; throws UsageError naming --spp when spp is not a perfect square in [1, 64].

@@ -21,7 +21,7 @@ std::optional<FrameBlock> mirroredFrame(const FrameBlock& frame, const Plane& pl
     FrameBlock f = frame;
     f.viewProj = frame.viewProj * m;
     f.eye = m * frame.eye;
-    f.forward = m * frame.forward;   // w = 0: directions are mirrored without the translation
+    f.forward = m * frame.forward;  // w = 0: directions are mirrored without the translation
     f.right = m * frame.right;
     f.up = m * frame.up;
     const float s = side > 0.0f ? 1.0f : -1.0f;

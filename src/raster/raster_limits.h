@@ -18,10 +18,10 @@ inline int shadowMapSizeFor(const RasterSettings& s, int width, int height) {
 }
 
 // Limits of the shadow and reflection passes (docs/lighting.md "Shadows and reflections in the rasterizer").
-inline constexpr int kMaxShadowedLights = 8;      // lights 0..7 cast shadows; later lights are unshadowed
+inline constexpr int kMaxShadowedLights = 8;  // lights 0..7 cast shadows; later lights are unshadowed
 inline constexpr int kMaxShadowLayers = 6 * kMaxShadowedLights;
-inline constexpr int kMaxShadowPlanes = 8;        // planes occlude analytically; later planes do not
-inline constexpr int kMaxMirrorPlanes = 4;        // planes with kr > 0 that get a planar reflection pass
-inline constexpr int kMaxShadowMapMiB = 2048;     // all layers together; a larger request is an error
+inline constexpr int kMaxShadowPlanes = 8;     // planes occlude analytically; later planes do not
+inline constexpr int kMaxMirrorPlanes = 4;     // planes with kr > 0 that get a planar reflection pass
+inline constexpr int kMaxShadowMapMiB = 2048;  // all layers together; a larger request is an error
 
 }  // namespace shadelab::raster

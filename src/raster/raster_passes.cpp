@@ -32,8 +32,8 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
     set.meshEnvironment = gl::Program::build(shaders_, "mesh.vert", "mesh.frag", environment);
     set.sphereEnvironment = gl::Program::build(shaders_, "sphere.vert", "sphere.frag", environment);
     set.planeMirror = gl::Program::build(shaders_, "plane.vert", "plane.frag", environment);
-    for (const gl::Program* p : {&set.mesh, &set.sphere, &set.plane, &set.meshEnvironment, &set.sphereEnvironment,
-                                 &set.planeMirror}) {
+    for (const gl::Program* p :
+         {&set.mesh, &set.sphere, &set.plane, &set.meshEnvironment, &set.sphereEnvironment, &set.planeMirror}) {
         p->bindBlock("Frame", kFrameBinding);
         p->bindBlock("Shadows", kShadowBinding);
         glUseProgram(p->id());
@@ -50,7 +50,7 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
 
 // The program for one object: with its environment cube when it has one and this pass looks them up.
 const gl::Program& RasterRenderer::objectProgram(const gl::Program& plain, const gl::Program& environment, int sphere,
-                                                  int range, const PassOptions& options) const {
+                                                 int range, const PassOptions& options) const {
     if (!options.reflections) {
         glUseProgram(plain.id());
         return plain;

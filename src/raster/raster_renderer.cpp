@@ -11,17 +11,16 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
-#include <optional>
 #include <cstring>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
+#include <optional>
 #include <string>
 
 namespace shadelab::raster {
 namespace {
-
 
 // 36 vertices of the cube [-1,1]^3, every triangle wound counter-clockwise seen from outside.
 std::array<glm::vec3, 36> unitCube() {
@@ -73,8 +72,8 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
     int model = scene.model == ShadingModel::Phong ? shading::SL_MODEL_PHONG : shading::SL_MODEL_BLINN_PHONG;
     int count = int(std::min(scene.lights.size(), size_t(kMaxLights)));
     const bool lit = scene.terms.diffuse || scene.terms.specular;
-    const int passes = (scene.terms.shadows && lit && count > 0 ? kPassShadows : 0) |
-                       (scene.terms.reflections ? kPassMirrors : 0);
+    const int passes =
+        (scene.terms.shadows && lit && count > 0 ? kPassShadows : 0) | (scene.terms.reflections ? kPassMirrors : 0);
     f.flags = glm::ivec4(model, terms, count, passes);
     for (int i = 0; i < count; ++i) {
         const Light& l = scene.lights[size_t(i)];
@@ -189,7 +188,8 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
         for (size_t pi = 0; pi < m.parts.size(); ++pi) {
             const MeshGeometry& g = *m.parts[pi].geometry;
             size_t bytes = g.positions.size() * sizeof(glm::vec3);
-            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(vBase * sizeof(glm::vec3)), GLsizeiptr(bytes), g.positions.data());
+            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(vBase * sizeof(glm::vec3)), GLsizeiptr(bytes),
+                            g.positions.data());
             glBufferSubData(GL_ARRAY_BUFFER, GLintptr((vertexCount + vBase) * sizeof(glm::vec3)), GLsizeiptr(bytes),
                             g.normals.data());
             rebased.resize(g.indices.size());
@@ -221,8 +221,8 @@ void RasterRenderer::uploadFrame(const FrameBlock& frame) const {
 void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
     RasterSettings settings = scene.raster;
     settings.shadowMapSize = shadowMapSizeFor(scene.raster, width, height);
-    std::vector<float> key = {float(settings.shadowMapSize), settings.depthBias, settings.normalBias,
-                              float(settings.pcf), float(meshGeneration_), float(scene.meshes.size())};
+    std::vector<float> key = {float(settings.shadowMapSize), settings.depthBias,     settings.normalBias,
+                              float(settings.pcf),           float(meshGeneration_), float(scene.meshes.size())};
     auto push = [&key](const glm::vec3& v) { key.insert(key.end(), {v.x, v.y, v.z}); };
     for (const Light& l : scene.lights) {
         key.push_back(float(l.type));

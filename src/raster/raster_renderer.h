@@ -57,7 +57,7 @@ private:
     struct PassOptions {
         int skipPlane = -1, skipSphere = -1, skipRange = -1;
         bool mirrored = false;
-        bool reflections = true;   // planar mirrors and environment cubes looked up (the primary pass only)
+        bool reflections = true;  // planar mirrors and environment cubes looked up (the primary pass only)
     };
     void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const;
     const gl::Program& objectProgram(const gl::Program& plain, const gl::Program& environment, int sphere, int range,
@@ -71,20 +71,20 @@ private:
     // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
     struct ColorPrograms {
         gl::Program mesh, sphere, plane;
-        gl::Program meshEnvironment, sphereEnvironment;   // + kr ⊙ env(R) from the object's cube (SL_ENVIRONMENT)
-        gl::Program planeMirror;                          // + kr ⊙ the planar reflection pass (SL_ENVIRONMENT)
+        gl::Program meshEnvironment, sphereEnvironment;  // + kr ⊙ env(R) from the object's cube (SL_ENVIRONMENT)
+        gl::Program planeMirror;                         // + kr ⊙ the planar reflection pass (SL_ENVIRONMENT)
     };
     const ColorPrograms& programsFor(const ShaderVariant& variant);
     const gl::ShaderLibrary shaders_;
     std::map<std::string, ColorPrograms> programs_;
     ShadowMaps shadows_;
-    std::vector<float> shadowKey_;        // what the current shadow maps were rendered from
-    uint64_t meshGeneration_ = 0;         // bumped by uploadMeshes
+    std::vector<float> shadowKey_;  // what the current shadow maps were rendered from
+    uint64_t meshGeneration_ = 0;   // bumped by uploadMeshes
     EnvironmentCubes environments_;
-    std::vector<EnvironmentProbe> probes_;   // this draw's reflective spheres and mesh parts, cube i for probe i
+    std::vector<EnvironmentProbe> probes_;  // this draw's reflective spheres and mesh parts, cube i for probe i
     std::vector<float> environmentKey_;     // what the cubes were rendered from
     std::vector<RenderTarget> mirrorTargets_;
-    std::vector<int> mirrorOfPlane_;      // per plane: index into mirrorTargets_ for this band, or -1
+    std::vector<int> mirrorOfPlane_;  // per plane: index into mirrorTargets_ for this band, or -1
     gl::Buffer frameUbo_;
     gl::VertexArray meshVao_, cubeVao_, emptyVao_;
     gl::Buffer meshVbo_, meshIbo_, cubeVbo_;
@@ -98,7 +98,7 @@ int bandCount(int width, int height, size_t maxTargetBytes = size_t(8) << 20);
 // Convenience for one-shot renders: draw, then read colour (and coverage when asked).
 struct RasterOutput {
     ImageF color;
-    std::vector<uint32_t> coverage;     // empty unless requested
+    std::vector<uint32_t> coverage;  // empty unless requested
 };
 RasterOutput renderRaster(RasterRenderer& r, const Scene& scene, int width, int height, bool withCoverage);
 

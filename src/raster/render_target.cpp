@@ -97,7 +97,6 @@ void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
     flipRows(out.data(), width_, height_, 1);
 }
 
-
 void RenderTarget::readColor8(Image8& out, int top, Encoding encoding) const {
     constexpr int kStripRows = 64;
     if (out.width != width_ || out.channels != 3 || top < 0 || top + height_ > out.height)
@@ -114,4 +113,3 @@ void RenderTarget::readColor8(Image8& out, int top, Encoding encoding) const {
 }
 
 }  // namespace shadelab::raster
-

@@ -31,9 +31,8 @@ std::string ShaderVariant::defines() const {
     for (int i = 0; i < lights; ++i) {
         const size_t k = size_t(i);
         each += " F(" + std::to_string(i) + ", " + (point[k] ? "true" : "false") + ", " +
-                (attenuated[k] ? "true" : "false") + ", " +
-                std::to_string(shadowKind[k]) + ", " + std::to_string(planeMask[k]) + ", " +
-                std::to_string(firstLayer[k]) + ")";
+                (attenuated[k] ? "true" : "false") + ", " + std::to_string(shadowKind[k]) + ", " +
+                std::to_string(planeMask[k]) + ", " + std::to_string(firstLayer[k]) + ")";
     }
     s += define("SL_FOR_EACH_LIGHT(F)", each);
     s += define("SL_SHADOW_PLANES", std::to_string(planes));

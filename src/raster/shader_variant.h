@@ -19,17 +19,17 @@ struct FrameBlock;
 struct ShadowBlock;
 
 struct ShaderVariant {
-    bool shadows = false;   // SL_SHADOWS: the shadow lookups exist at all
-    int model = 0;          // shading::SL_MODEL_*
-    int terms = 0;          // TermBits
-    int lights = 0;         // specialised lights: min(light count, kMaxShadowedLights)
+    bool shadows = false;  // SL_SHADOWS: the shadow lookups exist at all
+    int model = 0;         // shading::SL_MODEL_*
+    int terms = 0;         // TermBits
+    int lights = 0;        // specialised lights: min(light count, kMaxShadowedLights)
     bool moreLights = false;
-    std::array<bool, kMaxShadowedLights> point{};    // point light (else directional)
+    std::array<bool, kMaxShadowedLights> point{};       // point light (else directional)
     std::array<bool, kMaxShadowedLights> attenuated{};  // a point light whose attenuation is not (1, 0, 0)
-    std::array<int, kMaxShadowedLights> shadowKind{};  // ShadowKind of each light's map
-    std::array<int, kMaxShadowedLights> planeMask{};   // planes (bits) that can block each light
-    std::array<int, kMaxShadowedLights> firstLayer{};  // its first shadow-map layer
-    int planes = 0;         // planes uploaded to the Shadows block
+    std::array<int, kMaxShadowedLights> shadowKind{};   // ShadowKind of each light's map
+    std::array<int, kMaxShadowedLights> planeMask{};    // planes (bits) that can block each light
+    std::array<int, kMaxShadowedLights> firstLayer{};   // its first shadow-map layer
+    int planes = 0;                                     // planes uploaded to the Shadows block
     bool pcf = false;
 
     // The #define prelude that selects this variant in shaders/surface.glsl and shadow.glsl; also the

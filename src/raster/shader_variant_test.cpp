@@ -50,8 +50,9 @@ TEST(ShaderVariant, FromFrameAndShadows) {
     EXPECT_TRUE(contains(d, "#define SL_AMBIENT false\n"));
     EXPECT_TRUE(contains(d, "#define SL_DIFFUSE true\n"));
     EXPECT_TRUE(contains(d, "#define SL_LIGHTS 3\n"));
-    EXPECT_TRUE(contains(d, "#define SL_FOR_EACH_LIGHT(F)  F(0, true, false, 3, 1, 0) F(1, true, true, 2, 3, 6)"
-                            " F(2, false, false, 1, 0, 7)\n"))
+    EXPECT_TRUE(contains(d,
+                         "#define SL_FOR_EACH_LIGHT(F)  F(0, true, false, 3, 1, 0) F(1, true, true, 2, 3, 6)"
+                         " F(2, false, false, 1, 0, 7)\n"))
         << d;
     EXPECT_TRUE(contains(d, "#define SL_SHADOW_PLANES 2\n"));
     EXPECT_TRUE(contains(d, "#define SL_PCF 1\n"));

@@ -13,13 +13,13 @@ namespace shadelab::raster {
 enum ShadowKind : int { kShadowNone = 0, kShadowOrtho = 1, kShadowPerspective = 2, kShadowCube = 3 };
 
 struct ShadowBlock {
-    glm::mat4 layerViewProj[kMaxShadowLayers];   // world → clip space of each shadow-map layer
-    glm::ivec4 light[kMaxShadowedLights];        // x: ShadowKind, y: first layer, z: planes that can block it (bits)
-    glm::vec4 range[kMaxShadowedLights];         // x: texel footprint (ortho: world; else per unit distance), y: near, z: far
-    glm::vec4 depth[kMaxShadowedLights];         // the depth test without divisions, perspectiveDepthTest / orthoDepthTest
-    glm::vec4 planes[kMaxShadowPlanes];          // xyz: unit normal, w: offset
-    glm::ivec4 info;                             // x: plane count, y: pcf, z: map size (texels), w: 0
-    glm::vec4 bias;                              // x: depth bias (texels), y: normal bias (texels), z: scene epsilon
+    glm::mat4 layerViewProj[kMaxShadowLayers];  // world → clip space of each shadow-map layer
+    glm::ivec4 light[kMaxShadowedLights];       // x: ShadowKind, y: first layer, z: planes that can block it (bits)
+    glm::vec4 range[kMaxShadowedLights];  // x: texel footprint (ortho: world; else per unit distance), y: near, z: far
+    glm::vec4 depth[kMaxShadowedLights];  // the depth test without divisions, perspectiveDepthTest / orthoDepthTest
+    glm::vec4 planes[kMaxShadowPlanes];   // xyz: unit normal, w: offset
+    glm::ivec4 info;                      // x: plane count, y: pcf, z: map size (texels), w: 0
+    glm::vec4 bias;                       // x: depth bias (texels), y: normal bias (texels), z: scene epsilon
 };
 
 static_assert(offsetof(ShadowBlock, light) == 64 * kMaxShadowLayers);

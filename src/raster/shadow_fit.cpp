@@ -78,7 +78,8 @@ ShadowFit fitShadows(const Scene& scene, const Bounds& box, const RasterSettings
     ShadowBlock& block = fit.block;
     const int size = std::max(1, settings.shadowMapSize);
     block.info = glm::ivec4(0, settings.pcf ? 1 : 0, size, 0);
-    block.bias = glm::vec4(settings.depthBias, settings.normalBias, secondaryRayEpsilon(scene, scene.camera.position), 0.0f);
+    block.bias =
+        glm::vec4(settings.depthBias, settings.normalBias, secondaryRayEpsilon(scene, scene.camera.position), 0.0f);
     for (const Plane& p : scene.planes) {
         if (block.info.x == kMaxShadowPlanes) break;
         block.planes[block.info.x++] = glm::vec4(p.normal, p.offset);

@@ -13,8 +13,8 @@
 namespace shadelab::raster {
 
 struct ShadowFit {
-    ShadowBlock block{};    // ready to upload; block.info.z is the map size in texels
-    int layers = 0;         // layers used, from 0 (0: nothing casts, no depth pass)
+    ShadowBlock block{};  // ready to upload; block.info.z is the map size in texels
+    int layers = 0;       // layers used, from 0 (0: nothing casts, no depth pass)
 };
 
 // Bounds of everything that casts: spheres and the uploaded mesh parts (planes occlude analytically).

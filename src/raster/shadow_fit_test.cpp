@@ -1,8 +1,8 @@
 // fitShadows without a GL context: every caster inside its layer, the cube-face order of shaders/cube_face.glsl,
 // the plane mask against the tracer's opposite-side rule, and the depth-test constants; each with a negative
 // control that must fail the same check.
-#include "raster/cube_face.h"
 #include "raster/shadow_fit.h"
+#include "raster/cube_face.h"
 
 #include <gtest/gtest.h>
 
@@ -138,8 +138,8 @@ int castersOutsideTheirLayers(const Stage& stage, const ShadowFit& fit, Rng& rng
                 const glm::mat4& vp = fit.block.layerViewProj[layer];
                 const glm::vec4 clip = vp * glm::vec4(p, 1.0f);
                 const float w = clip.w * (1.0f + 1e-5f);
-                const bool inside = clip.w > 0.0f && std::abs(clip.x) <= w && std::abs(clip.y) <= w &&
-                                    std::abs(clip.z) <= w;
+                const bool inside =
+                    clip.w > 0.0f && std::abs(clip.x) <= w && std::abs(clip.y) <= w && std::abs(clip.z) <= w;
                 if (!inside || outsideClip(vp, b.lo, b.hi)) ++misses;
             }
         }
@@ -273,8 +273,8 @@ TEST(ShadowFit, CubeFaceOrderNegativeControl) {
 // plane k exactly when O and the light lie strictly on opposite sides of it.
 bool blockedByPlane(const Plane& p, const Light& l, const glm::vec3& O) {
     const float a = glm::dot(p.normal, O) - p.offset;
-    const float b = l.type == LightType::Point ? glm::dot(p.normal, l.position) - p.offset
-                                               : -glm::dot(p.normal, l.direction);
+    const float b =
+        l.type == LightType::Point ? glm::dot(p.normal, l.position) - p.offset : -glm::dot(p.normal, l.direction);
     return (a < 0.0f && b > 0.0f) || (a > 0.0f && b < 0.0f);
 }
 
@@ -362,9 +362,9 @@ TEST(ShadowFit, PlaneMaskOnStages) {
     scene.planes = {wall};
     EXPECT_EQ(planeMask(scene, box, between), 0);
     EXPECT_EQ(planeMask(scene, box, beyondWall), 0b1);
-    scene.planes = {floor, ceiling, wall};  // the wall reaches below the floor and above the ceiling, and
+    scene.planes = {floor, ceiling, wall};             // the wall reaches below the floor and above the ceiling, and
     EXPECT_EQ(planeMask(scene, box, between), 0b111);  // the floor beyond the wall
-    scene.planes = {through};  // the light lies in the plane
+    scene.planes = {through};                          // the light lies in the plane
     EXPECT_EQ(planeMask(scene, box, between), 0b1);
 }
 

@@ -38,8 +38,7 @@ void ShadowMaps::allocate(int size, int layers) {
     // llvmpipe allocates lazily and a later page fault would kill the process instead of failing here.
     if (mib > double(kMaxShadowMapMiB))
         throw std::runtime_error(what + " exceed the " + std::to_string(kMaxShadowMapMiB) + " MiB budget" + advice);
-    while (glGetError() != GL_NO_ERROR) {
-    }
+    while (glGetError() != GL_NO_ERROR) {}
     maps_ = gl::Texture::create();
     glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_FLOAT,

@@ -20,8 +20,8 @@ public:
     explicit ShadowMaps(const gl::ShaderLibrary& shaders);
 
     // Renders every layer fitShadows (shadow_fit.h) fits for the scene's first kMaxShadowedLights lights
-    // (casters: meshes and spheres; planes occlude analytically in the shader) and uploads the block. Leaves the framebuffer unbound.
-    // meshVao draws `ranges`; cubeVao holds the 36-vertex unit cube of the sphere impostors.
+    // (casters: meshes and spheres; planes occlude analytically in the shader) and uploads the block. Leaves the
+    // framebuffer unbound. meshVao draws `ranges`; cubeVao holds the 36-vertex unit cube of the sphere impostors.
     void render(const Scene& scene, const RasterSettings& settings, const std::vector<DrawRange>& ranges,
                 GLuint meshVao, GLuint cubeVao);
 

@@ -8,7 +8,7 @@
 namespace shadelab {
 
 struct Bounds {
-    glm::vec3 lo{1e30f};        // world units; lo > hi on some axis means empty
+    glm::vec3 lo{1e30f};  // world units; lo > hi on some axis means empty
     glm::vec3 hi{-1e30f};
 
     bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }

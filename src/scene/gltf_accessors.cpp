@@ -151,10 +151,9 @@ Span resolve(const tinygltf::Model& model, int viewIndex, size_t byteOffset, siz
                                      count - 1 <= (length - byteOffset - elementSize) / stride);
     if (!fits)
         throw InputError(file, where,
-                         std::to_string(count) + " elements of " + std::to_string(elementSize) +
-                             " bytes (stride " + std::to_string(stride) + ") from byte " +
-                             std::to_string(byteOffset) + " do not fit in " + viewPlace + " (" +
-                             std::to_string(length) + " bytes)");
+                         std::to_string(count) + " elements of " + std::to_string(elementSize) + " bytes (stride " +
+                             std::to_string(stride) + ") from byte " + std::to_string(byteOffset) + " do not fit in " +
+                             viewPlace + " (" + std::to_string(length) + " bytes)");
     return {bytes.data() + view.byteOffset + byteOffset, stride};
 }
 
@@ -173,9 +172,9 @@ void applySparse(const tinygltf::Model& model, const tinygltf::Accessor& acc, in
     const std::string where = accessorPlace(index) + ".sparse";
     const auto& sparse = acc.sparse;
     if (sparse.count < 0 || size_t(sparse.count) > acc.count)
-        throw InputError(file, where,
-                         "count " + std::to_string(sparse.count) + " exceeds the accessor's count " +
-                             std::to_string(acc.count));
+        throw InputError(
+            file, where,
+            "count " + std::to_string(sparse.count) + " exceeds the accessor's count " + std::to_string(acc.count));
     if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
         throw InputError(file, where, "negative byteOffset");
     const int indexType = sparse.indices.componentType;
@@ -185,16 +184,16 @@ void applySparse(const tinygltf::Model& model, const tinygltf::Accessor& acc, in
                          std::string("componentType must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, got ") +
                              componentName(indexType));
     const size_t n = size_t(sparse.count);
-    const Span indices = resolve(model, sparse.indices.bufferView, size_t(sparse.indices.byteOffset), n,
-                                 indexBytes, false, file, where + ".indices");
-    const Span values = resolve(model, sparse.values.bufferView, size_t(sparse.values.byteOffset), n,
-                                elementSize, false, file, where + ".values");
+    const Span indices = resolve(model, sparse.indices.bufferView, size_t(sparse.indices.byteOffset), n, indexBytes,
+                                 false, file, where + ".indices");
+    const Span values = resolve(model, sparse.values.bufferView, size_t(sparse.values.byteOffset), n, elementSize,
+                                false, file, where + ".values");
     for (size_t k = 0; k < n; ++k) {
         const uint32_t target = loadIndex(indices.at(k), indexType);
         if (target >= acc.count)
-            throw InputError(file, where + ".indices",
-                             "index " + std::to_string(target) + " out of range (count " +
-                                 std::to_string(acc.count) + ")");
+            throw InputError(
+                file, where + ".indices",
+                "index " + std::to_string(target) + " out of range (count " + std::to_string(acc.count) + ")");
         store(target, values.at(k));
     }
 }
@@ -237,8 +236,8 @@ void readVec3(const tinygltf::Model& model, int index, const std::string& file, 
     };
 
     if (acc.bufferView >= 0) {
-        const Span span = resolve(model, acc.bufferView, acc.byteOffset, acc.count, elementSize, true, file,
-                                  accessorPlace(index));
+        const Span span =
+            resolve(model, acc.bufferView, acc.byteOffset, acc.count, elementSize, true, file, accessorPlace(index));
         out.resize(acc.count);
         for (size_t i = 0; i < acc.count; ++i) load(span.at(i), out[i]);
     } else {
@@ -253,18 +252,17 @@ void readVec3(const tinygltf::Model& model, int index, const std::string& file, 
 void readIndices(const tinygltf::Model& model, int index, const std::string& file, std::vector<uint32_t>& out) {
     const tinygltf::Accessor& acc = accessorAt(model, index, file);
     if (acc.type != TINYGLTF_TYPE_SCALAR)
-        throw InputError(file, accessorPlace(index),
-                         std::string("indices must be SCALAR, got ") + typeName(acc.type));
+        throw InputError(file, accessorPlace(index), std::string("indices must be SCALAR, got ") + typeName(acc.type));
     const int type = acc.componentType;
     const size_t size = indexSize(type);
     if (size == 0)
-        throw InputError(file, accessorPlace(index),
-                         std::string("indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, got ") +
-                             componentName(type));
+        throw InputError(
+            file, accessorPlace(index),
+            std::string("indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, got ") + componentName(type));
 
     if (acc.bufferView >= 0) {
-        const Span span = resolve(model, acc.bufferView, acc.byteOffset, acc.count, size, true, file,
-                                  accessorPlace(index));
+        const Span span =
+            resolve(model, acc.bufferView, acc.byteOffset, acc.count, size, true, file, accessorPlace(index));
         out.resize(acc.count);
         if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && span.stride == 4) {
             if (acc.count > 0) std::memcpy(out.data(), span.data, acc.count * 4);

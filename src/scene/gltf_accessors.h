@@ -20,8 +20,7 @@ namespace shadelab::gltf {
 void readVec3(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec3>& out);
 
 // Reads index accessor `index` (SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT) into `out`.
-void readIndices(const tinygltf::Model& model, int index, const std::string& file,
-                 std::vector<uint32_t>& out);
+void readIndices(const tinygltf::Model& model, int index, const std::string& file, std::vector<uint32_t>& out);
 
 // Number of elements of accessor `index`; throws when the index is out of range. `what` names the
 // referrer in the error, e.g. "meshes[2].primitives[0].attributes.POSITION".

@@ -14,7 +14,6 @@
 namespace shadelab::gltf {
 namespace {
 
-
 std::string trim(const std::string& s) {
     const size_t b = s.find_first_not_of(" \t\r\n");
     if (b == std::string::npos) return {};
@@ -33,23 +32,23 @@ void appendLines(const std::string& text, std::vector<std::string>& out) {
 }
 
 // Textures are not sampled (docs/gltf-import.md), so images are read but never decoded.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-               void*) {
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
     return true;
 }
 
 // The model's folder, for the file callbacks that resolve external buffers and images, keep them inside it
 // and bound what is read of them.
 struct FolderGuard {
-    std::string baseDir;            // as given to tinygltf
-    std::filesystem::path root;     // weakly canonical
+    std::string baseDir;         // as given to tinygltf
+    std::filesystem::path root;  // weakly canonical
     bool allowOutside = false;
     uint64_t maxSideFileBytes = 0;  // the largest declared buffer, or one image's limit if larger
 
     // tinygltf joins the folder and an absolute URI into "<baseDir>//abs"; undo that join.
     std::string resolve(const std::string& joined) const {
         const std::string prefix = baseDir + "/";
-        if (joined.size() > prefix.size() && joined.compare(0, prefix.size(), prefix) == 0 && joined[prefix.size()] == '/')
+        if (joined.size() > prefix.size() && joined.compare(0, prefix.size(), prefix) == 0 &&
+            joined[prefix.size()] == '/')
             return joined.substr(prefix.size());
         return joined;
     }
@@ -77,7 +76,8 @@ bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const s
     const FolderGuard& guard = *static_cast<const FolderGuard*>(user);
     const std::string file = guard.resolve(joined);
     try {
-        if (file.find('\0') != std::string::npos) throw InputError(errorLine(file), "file name contains a NUL character");
+        if (file.find('\0') != std::string::npos)
+            throw InputError(errorLine(file), "file name contains a NUL character");
         if (!guard.allowOutside && !guard.contains(file))
             throw InputError(file, "outside the model's folder (pass --allow-external-paths to allow)");
         const std::string bytes = readFile(file, guard.maxSideFileBytes);
@@ -116,8 +116,9 @@ tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::s
     tinygltf::Model model;
     std::string err, warn;
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
-                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
+    const bool ok =
+        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
+               : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
     if (!ok) {
         std::vector<std::string> lines;
         appendLines(err, lines);

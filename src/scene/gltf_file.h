@@ -13,7 +13,8 @@ namespace shadelab::gltf {
 
 // Checks the file, its declared sizes against options.limits, and reads it with buffer files confined to
 // the model's folder (unless options.allowExternalPaths). Throws InputError naming the file.
-tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options, std::vector<std::string>& warnings);
+tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options,
+                          std::vector<std::string>& warnings);
 
 // Parses glTF text (`binary` false) or GLB bytes; with an empty baseDir every external file is refused.
 tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,

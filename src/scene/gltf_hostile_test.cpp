@@ -129,7 +129,8 @@ TEST(GltfImport, ExternalPathsRefusedUnlessAllowed) {
         EXPECT_EQ(triangleCount(importGltf(path, glm::mat4(1.0f), allow)), 12u) << uri;
     }
     // The same buffer beside the model is inside its folder and loads by default.
-    std::filesystem::copy_file(bin, root / "model" / "BoxTextured0.bin", std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(bin, root / "model" / "BoxTextured0.bin",
+                               std::filesystem::copy_options::overwrite_existing);
     std::ofstream((root / "model" / "inside.gltf").string()) << text;
     EXPECT_EQ(triangleCount(importGltf((root / "model" / "inside.gltf").string())), 12u);
 }
@@ -155,8 +156,10 @@ TEST(GltfImport, LimitsRefuseHostileFiles) {
                   small, "buffers[0]: data: URI of");
     GltfLimits tinyImages;
     tinyImages.maxImageBytes = 10;
-    expectRefused("{" + asset + R"(,"bufferViews":[{"buffer":0,"byteLength":1000}],"images":[{"bufferView":0,"mimeType":"image/png"}]})",
-                  tinyImages, "images[0]: texture of 1000 bytes");
+    expectRefused(
+        "{" + asset +
+            R"(,"bufferViews":[{"buffer":0,"byteLength":1000}],"images":[{"bufferView":0,"mimeType":"image/png"}]})",
+        tinyImages, "images[0]: texture of 1000 bytes");
     // Triangles: the quad below has 2; a limit of 1 refuses it, the default accepts it (negative control).
     const std::string quadText = readTextFile(writeGltf("limits_quad.gltf", quad(), "[{\"mesh\":0}]"));
     GltfLimits oneTriangle;
@@ -167,7 +170,6 @@ TEST(GltfImport, LimitsRefuseHostileFiles) {
     expectRefused(quadText, fewBytes, "bytes of geometry");
     EXPECT_EQ(triangleCount(importGltfBytes(quadText, false, "quad.gltf")), 2u);
 }
-
 
 }  // namespace
 }  // namespace shadelab

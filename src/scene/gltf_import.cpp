@@ -31,7 +31,7 @@
 namespace shadelab {
 namespace {
 
-constexpr int kMaxNodeDepth = 1000;             // deeper hierarchies are rejected, not walked
+constexpr int kMaxNodeDepth = 1000;                 // deeper hierarchies are rejected, not walked
 constexpr size_t kMaxNodeVisits = size_t(1) << 20;  // bounds node sharing (a node under several parents)
 const glm::vec3 kFallbackNormal{0.0f, 1.0f, 0.0f};  // for vertices whose faces have no area
 
@@ -133,8 +133,14 @@ class Importer {
 public:
     Importer(const tinygltf::Model& model, const std::string& file, GltfImport& out, const GltfLimits& limits,
              uint64_t trianglesBefore = 0)
-        : model_(model), file_(file), out_(out), limits_(limits), trianglesBefore_(trianglesBefore),
-          triangles_(trianglesBefore), onPath_(model.nodes.size(), 0), seen_(model.nodes.size(), 0) {
+        : model_(model),
+          file_(file),
+          out_(out),
+          limits_(limits),
+          trianglesBefore_(trianglesBefore),
+          triangles_(trianglesBefore),
+          onPath_(model.nodes.size(), 0),
+          seen_(model.nodes.size(), 0) {
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
@@ -176,20 +182,18 @@ public:
         // The price tag first, from accessor counts alone: a node DAG can place millions of triangles.
         const uint64_t planned = gltf::instancedTriangles(model_, roots, file_);
         if (planned > limits_.maxTriangles - std::min(trianglesBefore_, limits_.maxTriangles))
-            throw InputError(file_, "the model places " + std::to_string(planned) +
-                                        " triangles once its node hierarchy is expanded" +
-                                        (trianglesBefore_ ? " (and the scene's other models " +
-                                                                std::to_string(trianglesBefore_) + ")"
-                                                          : std::string()) +
-                                        ", which exceeds the limit of " + std::to_string(limits_.maxTriangles) +
-                                        " triangles");
+            throw InputError(
+                file_,
+                "the model places " + std::to_string(planned) + " triangles once its node hierarchy is expanded" +
+                    (trianglesBefore_ ? " (and the scene's other models " + std::to_string(trianglesBefore_) + ")"
+                                      : std::string()) +
+                    ", which exceeds the limit of " + std::to_string(limits_.maxTriangles) + " triangles");
         for (int r : roots) visit(size_t(r), transform, 0);
 
         // KHR_lights_punctual intensities are candela (point) or lux (directional); the lighting contract has
         // no units and no falloff by default, so keep only the ratios: the brightest light gets Il = color.
-        const float brightest = lightIntensities_.empty()
-                                    ? 0.0f
-                                    : *std::max_element(lightIntensities_.begin(), lightIntensities_.end());
+        const float brightest =
+            lightIntensities_.empty() ? 0.0f : *std::max_element(lightIntensities_.begin(), lightIntensities_.end());
         for (size_t i = 0; i < out_.lights.size(); ++i)
             out_.lights[i].color *= brightest > 0.0f ? lightIntensities_[i] / brightest : 0.0f;
         if (out_.parts.empty()) warnOnce("no triangles imported");
@@ -202,9 +206,9 @@ private:
 
     void checkNode(int index, const std::string& place) const {
         if (index < 0 || size_t(index) >= model_.nodes.size())
-            throw InputError(file_, place,
-                             "node " + std::to_string(index) + " out of range (" +
-                                 std::to_string(model_.nodes.size()) + " nodes)");
+            throw InputError(
+                file_, place,
+                "node " + std::to_string(index) + " out of range (" + std::to_string(model_.nodes.size()) + " nodes)");
     }
 
     void visit(size_t index, const glm::dmat4& parent, int depth) {
@@ -241,9 +245,8 @@ private:
         const bool mirrored = glm::determinant(linear) < 0.0;
         const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
         for (size_t i = 0; i < mesh.primitives.size(); ++i)
-            addPrimitive(mesh.primitives[i],
-                         indexed("meshes", size_t(node.mesh)) + "." + indexed("primitives", i), place, toWorld,
-                         toWorldNormal, mirrored);
+            addPrimitive(mesh.primitives[i], indexed("meshes", size_t(node.mesh)) + "." + indexed("primitives", i),
+                         place, toWorld, toWorldNormal, mirrored);
     }
 
     void addPrimitive(const tinygltf::Primitive& prim, const std::string& where, const std::string& nodePlace,
@@ -268,8 +271,7 @@ private:
         }
 
         MeshGeometry geo;
-        const size_t vertexCount =
-            gltf::accessorCount(model_, position->second, file_, where + ".attributes.POSITION");
+        const size_t vertexCount = gltf::accessorCount(model_, position->second, file_, where + ".attributes.POSITION");
         const size_t indexCount =
             prim.indices >= 0 ? gltf::accessorCount(model_, prim.indices, file_, where + ".indices") : vertexCount;
         chargeBudget(where, vertexCount, indexCount);
@@ -357,11 +359,12 @@ private:
         triangles_ += indexCount / 3 + (indexCount >= 3 ? 2 : 0);  // strips and fans make up to count - 2
         bytes_ += uint64_t(vertexCount) * 2 * sizeof(glm::vec3) + uint64_t(indexCount) * 3 * sizeof(uint32_t);
         if (triangles_ > limits_.maxTriangles)
-            throw InputError(file_, where, "the model exceeds the limit of " + std::to_string(limits_.maxTriangles) +
-                                               " triangles");
+            throw InputError(file_, where,
+                             "the model exceeds the limit of " + std::to_string(limits_.maxTriangles) + " triangles");
         if (bytes_ > limits_.maxMeshBytes)
-            throw InputError(file_, where, "the model needs more than the limit of " +
-                                               std::to_string(limits_.maxMeshBytes) + " bytes of geometry");
+            throw InputError(file_, where,
+                             "the model needs more than the limit of " + std::to_string(limits_.maxMeshBytes) +
+                                 " bytes of geometry");
     }
 
     void addCamera(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {
@@ -438,13 +441,13 @@ private:
     const GltfLimits& limits_;
     uint64_t trianglesBefore_ = 0;
     uint64_t triangles_ = 0, bytes_ = 0;
-    std::vector<char> onPath_;                 // nodes on the path from the root being walked
-    std::vector<char> seen_;                   // nodes visited at least once
+    std::vector<char> onPath_;  // nodes on the path from the root being walked
+    std::vector<char> seen_;    // nodes visited at least once
     size_t visits_ = 0;
-    std::vector<float> lightIntensities_;      // raw glTF intensity of each out_.lights entry
+    std::vector<float> lightIntensities_;  // raw glTF intensity of each out_.lights entry
     std::unordered_set<std::string> warned_;
-    std::vector<uint32_t> indices_;            // scratch, reused across primitives
-    std::vector<glm::vec3> generated_;         // scratch, reused across primitives
+    std::vector<uint32_t> indices_;     // scratch, reused across primitives
+    std::vector<glm::vec3> generated_;  // scratch, reused across primitives
 };
 
 }  // namespace

@@ -23,10 +23,10 @@ struct GltfImport {
 };
 
 struct GltfImportOptions {
-    bool allowExternalPaths = false;    // let buffer URIs point outside the model's folder (../, absolute)
-    GltfLimits limits;                  // sizes past which a model is refused (gltf_limits.h)
-    uint64_t trianglesBefore = 0;       // triangles the scene's earlier models placed: limits.maxTriangles
-                                        // bounds the whole scene, not each model
+    bool allowExternalPaths = false;  // let buffer URIs point outside the model's folder (../, absolute)
+    GltfLimits limits;                // sizes past which a model is refused (gltf_limits.h)
+    uint64_t trianglesBefore = 0;     // triangles the scene's earlier models placed: limits.maxTriangles
+                                      // bounds the whole scene, not each model
 };
 
 // Imports `path`, placing everything under `transform`. Throws InputError naming the file, the place

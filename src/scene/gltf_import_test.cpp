@@ -133,9 +133,10 @@ TEST(GltfImport, GivenNormalsUseTheInverseTranspose) {
 TEST(GltfImport, TranslationRotationScaleAndParents) {
     // Parent: translate (1, 2, 3). Child: rotate 90 degrees about +y, then scale 2.
     const float h = std::sqrt(0.5f);
-    const std::string nodes = "[{\"children\":[1],\"translation\":[1,2,3]},"
-                              "{\"mesh\":0,\"rotation\":[0," + std::to_string(h) + ",0," + std::to_string(h) +
-                              "],\"scale\":[2,2,2]}]";
+    const std::string nodes =
+        "[{\"children\":[1],\"translation\":[1,2,3]},"
+        "{\"mesh\":0,\"rotation\":[0," +
+        std::to_string(h) + ",0," + std::to_string(h) + "],\"scale\":[2,2,2]}]";
     const GltfImport g = importGltf(writeGltf("trs.gltf", quad(), nodes));
     ASSERT_EQ(g.parts.size(), 1u);
     const MeshGeometry& p = *g.parts[0].geometry;
@@ -251,7 +252,8 @@ TEST(GltfImport, PunctualLightsAndCamera) {
     const std::string nodes =
         "[{\"mesh\":0},"
         "{\"translation\":[1,2,3],\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}}},"
-        "{\"rotation\":[" + std::to_string(-h) + ",0,0," + std::to_string(h) +
+        "{\"rotation\":[" +
+        std::to_string(-h) + ",0,0," + std::to_string(h) +
         "],\"extensions\":{\"KHR_lights_punctual\":{\"light\":1}}},"
         "{\"translation\":[0,1,5],\"camera\":0}]";
     const std::string extra =

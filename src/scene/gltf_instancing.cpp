@@ -23,8 +23,9 @@ uint64_t meshTriangles(const tinygltf::Model& model, size_t m, const std::string
         const auto position = prim.attributes.find("POSITION");
         if (position == prim.attributes.end()) continue;
         const std::string where = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(i) + "]";
-        const uint64_t count = prim.indices >= 0 ? accessorCount(model, prim.indices, file, where + ".indices")
-                                                 : accessorCount(model, position->second, file, where + ".attributes.POSITION");
+        const uint64_t count = prim.indices >= 0
+                                   ? accessorCount(model, prim.indices, file, where + ".indices")
+                                   : accessorCount(model, position->second, file, where + ".attributes.POSITION");
         n = add(n, mode == TINYGLTF_MODE_TRIANGLES ? count / 3 : (count >= 3 ? count - 2 : 0));
     }
     return n;
@@ -33,7 +34,10 @@ uint64_t meshTriangles(const tinygltf::Model& model, size_t m, const std::string
 class Counter {
 public:
     Counter(const tinygltf::Model& model, const std::string& file)
-        : model_(model), file_(file), state_(model.nodes.size(), 0), memo_(model.nodes.size(), 0),
+        : model_(model),
+          file_(file),
+          state_(model.nodes.size(), 0),
+          memo_(model.nodes.size(), 0),
           meshMemo_(model.meshes.size(), kSaturated) {}
 
     uint64_t node(int index) {
@@ -58,8 +62,8 @@ private:
 
     const tinygltf::Model& model_;
     const std::string& file_;
-    std::vector<char> state_;        // 0 unseen, 1 on the current path, 2 done
-    std::vector<uint64_t> memo_;     // triangles under each node, itself included
+    std::vector<char> state_;     // 0 unseen, 1 on the current path, 2 done
+    std::vector<uint64_t> memo_;  // triangles under each node, itself included
     std::vector<uint64_t> meshMemo_;
 };
 

@@ -55,7 +55,8 @@ uint64_t checkDeclaredSizes(const std::string& bytes, bool binary, const std::st
             const nlohmann::json& b = (*buffers)[i];
             if (!b.is_object()) continue;
             if (declaredLength(b) > limits.maxBufferBytes)
-                throw InputError(file, place("buffers", i), over("byteLength", declaredLength(b), limits.maxBufferBytes));
+                throw InputError(file, place("buffers", i),
+                                 over("byteLength", declaredLength(b), limits.maxBufferBytes));
             largest = std::max(largest, declaredLength(b));
             checkDataUri(b, file, place("buffers", i), limits);
         }

@@ -21,10 +21,10 @@ namespace shadelab::gltftest {
 
 inline const std::filesystem::path kModels = "/usr/share/assimp/models";
 
-#define REQUIRE_MODELS()                                                                                   \
-    do {                                                                                                   \
-        if (!std::filesystem::exists(kModels / "glTF2"))                                                   \
-            GTEST_SKIP() << kModels << " is missing; install Debian's assimp-testmodels package";          \
+#define REQUIRE_MODELS()                                                                          \
+    do {                                                                                          \
+        if (!std::filesystem::exists(kModels / "glTF2"))                                          \
+            GTEST_SKIP() << kModels << " is missing; install Debian's assimp-testmodels package"; \
     } while (0)
 
 inline std::string model(const std::string& relative) { return (kModels / relative).string(); }
@@ -111,7 +111,7 @@ inline TinyMesh quad() {
 // Writes a glTF whose one buffer is embedded as a data: URI and whose mesh 0 is `mesh`. `nodes` is the JSON
 // array of nodes, `roots` the default scene's node list, `extra` further top-level members (",\"x\": ...").
 inline std::string writeGltf(const std::string& name, const TinyMesh& mesh, const std::string& nodes,
-                      const std::string& roots = "[0]", const std::string& extra = "") {
+                             const std::string& roots = "[0]", const std::string& extra = "") {
     std::string bytes, views, accessors, attributes;
     auto add = [&](const std::string& data, const std::string& accessor) {
         if (!views.empty()) {
@@ -127,8 +127,8 @@ inline std::string writeGltf(const std::string& name, const TinyMesh& mesh, cons
     auto vec3s = [&](const std::vector<glm::vec3>& v, const char* semantic) {
         std::string data;
         appendBytes(data, v);
-        add(data, "{\"bufferView\":" + std::to_string(next) + ",\"componentType\":5126,\"count\":" +
-                      std::to_string(v.size()) + ",\"type\":\"VEC3\"}");
+        add(data, "{\"bufferView\":" + std::to_string(next) +
+                      ",\"componentType\":5126,\"count\":" + std::to_string(v.size()) + ",\"type\":\"VEC3\"}");
         attributes += std::string(attributes.empty() ? "" : ",") + "\"" + semantic + "\":" + std::to_string(next++);
     };
     vec3s(mesh.positions, "POSITION");
@@ -141,12 +141,12 @@ inline std::string writeGltf(const std::string& name, const TinyMesh& mesh, cons
                       std::to_string(mesh.indices.size()) + ",\"type\":\"SCALAR\"}");
         indices = ",\"indices\":" + std::to_string(next++);
     }
-    const std::string json =
-        "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":" + roots + "}],\"nodes\":" + nodes +
-        ",\"meshes\":[{\"primitives\":[{\"attributes\":{" + attributes + "}" + indices +
-        ",\"mode\":" + std::to_string(mesh.mode) + "}]}],\"buffers\":[{\"byteLength\":" +
-        std::to_string(bytes.size()) + ",\"uri\":\"data:application/octet-stream;base64," + base64(bytes) +
-        "\"}],\"bufferViews\":[" + views + "],\"accessors\":[" + accessors + "]" + extra + "}";
+    const std::string json = "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":" + roots +
+                             "}],\"nodes\":" + nodes + ",\"meshes\":[{\"primitives\":[{\"attributes\":{" + attributes +
+                             "}" + indices + ",\"mode\":" + std::to_string(mesh.mode) +
+                             "}]}],\"buffers\":[{\"byteLength\":" + std::to_string(bytes.size()) +
+                             ",\"uri\":\"data:application/octet-stream;base64," + base64(bytes) +
+                             "\"}],\"bufferViews\":[" + views + "],\"accessors\":[" + accessors + "]" + extra + "}";
     const std::filesystem::path dir = std::filesystem::path(SHADELAB_TEST_OUTPUT_DIR);
     std::filesystem::create_directories(dir);
     const std::string path = (dir / name).string();

@@ -50,10 +50,10 @@ public:
     // Scalars.
     bool boolean() const;
     std::string string() const;
-    double number() const;           // any JSON number
-    float finite() const;            // a number that is finite as a float
-    float nonNegative() const;       // finite, >= 0
-    float positive() const;          // finite, > 0
+    double number() const;      // any JSON number
+    float finite() const;       // a number that is finite as a float
+    float nonNegative() const;  // finite, >= 0
+    float positive() const;     // finite, > 0
     float inRange(float lo, float hi, bool openLo, bool openHi) const;
     int integerIn(int lo, int hi) const;
     // A string naming an entry of an enum's name table (util/name_table.h). Anything else fails with
@@ -67,8 +67,8 @@ public:
 
     // Vectors: exactly three finite numbers.
     glm::vec3 vec3() const;
-    glm::vec3 nonZeroVec3() const;   // not (0, 0, 0)
-    glm::vec3 unitVec3() const;      // non-zero, normalised (kept as written when already unit)
+    glm::vec3 nonZeroVec3() const;  // not (0, 0, 0)
+    glm::vec3 unitVec3() const;     // non-zero, normalised (kept as written when already unit)
     // An RGB colour or coefficient: three numbers >= 0, or one number meaning grey.
     glm::vec3 rgb() const;
 

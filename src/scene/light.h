@@ -23,18 +23,18 @@ inline std::optional<LightType> parseLightType(std::string_view name) { return l
 struct Light {
     LightType type = LightType::Point;
     std::string name;
-    glm::vec3 position{0.0f, 5.0f, 5.0f};    // point lights, world units
-    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the direction light travels
-    glm::vec3 color{1.0f};                   // Il, linear RGB intensity
-    glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // (kc, kl, kq); point lights only
+    glm::vec3 position{0.0f, 5.0f, 5.0f};     // point lights, world units
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};   // directional lights: the direction light travels
+    glm::vec3 color{1.0f};                    // Il, linear RGB intensity
+    glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // (kc, kl, kq); point lights only
 };
 
 // Each set field replaces the same field of the light it is applied to (a viewer script's addLight and
 // setLight; a scene file's light reads the same fields the same way).
 struct LightOverride {
-    std::optional<glm::vec3> position;       // world units
-    std::optional<glm::vec3> direction;      // unit vector, the direction light travels
-    std::optional<glm::vec3> color;          // Il, linear RGB intensity
+    std::optional<glm::vec3> position;   // world units
+    std::optional<glm::vec3> direction;  // unit vector, the direction light travels
+    std::optional<glm::vec3> color;      // Il, linear RGB intensity
 
     void applyTo(Light& l) const {
         if (position) l.position = *position;

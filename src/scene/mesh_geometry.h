@@ -14,10 +14,10 @@
 namespace shadelab {
 
 struct MeshGeometry {
-    std::vector<glm::vec3> positions;    // world units
-    std::vector<glm::vec3> normals;      // one per position, unit length; empty = flat shading
-    std::vector<uint32_t> indices;       // three per triangle, each < positions.size()
-    Bounds bounds;                       // of every position; set by shareGeometry
+    std::vector<glm::vec3> positions;  // world units
+    std::vector<glm::vec3> normals;    // one per position, unit length; empty = flat shading
+    std::vector<uint32_t> indices;     // three per triangle, each < positions.size()
+    Bounds bounds;                     // of every position; set by shareGeometry
 
     size_t triangleCount() const { return indices.size() / 3; }
 };

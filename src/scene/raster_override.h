@@ -12,11 +12,11 @@ namespace shadelab {
 class JsonNode;
 
 struct RasterOverride {
-    std::optional<int> shadowMapSize;        // 0 = auto, else [kMinShadowMapSize, kMaxShadowMapSize]
-    std::optional<float> depthBias;          // shadow-map texels, [0, kMaxShadowBias]
-    std::optional<float> normalBias;         // shadow-map texels, [0, kMaxShadowBias]
+    std::optional<int> shadowMapSize;  // 0 = auto, else [kMinShadowMapSize, kMaxShadowMapSize]
+    std::optional<float> depthBias;    // shadow-map texels, [0, kMaxShadowBias]
+    std::optional<float> normalBias;   // shadow-map texels, [0, kMaxShadowBias]
     std::optional<bool> pcf;
-    std::optional<int> reflectionCubeSize;   // texels per face, [kMinReflectionCubeSize, kMaxReflectionCubeSize]
+    std::optional<int> reflectionCubeSize;  // texels per face, [kMinReflectionCubeSize, kMaxReflectionCubeSize]
 
     void applyTo(RasterSettings& r) const;
 };

@@ -6,17 +6,17 @@
 namespace shadelab {
 
 struct RasterSettings {
-    int shadowMapSize = 0;           // texels per side of every shadow-map layer; 0: auto (raster::shadowMapSizeFor)
-    float depthBias = 1.0f;          // shadow-map texels, subtracted from the receiver's light-space depth
-    float normalBias = 1.5f;         // shadow-map texels, receiver moved along its normal (Holbert 2011)
-    bool pcf = false;                // 3x3 percentage-closer filtering; off = one hard comparison, as the tracer
-    int reflectionCubeSize = 128;    // texels per face of a reflective sphere's or mesh's environment cube
+    int shadowMapSize = 0;         // texels per side of every shadow-map layer; 0: auto (raster::shadowMapSizeFor)
+    float depthBias = 1.0f;        // shadow-map texels, subtracted from the receiver's light-space depth
+    float normalBias = 1.5f;       // shadow-map texels, receiver moved along its normal (Holbert 2011)
+    bool pcf = false;              // 3x3 percentage-closer filtering; off = one hard comparison, as the tracer
+    int reflectionCubeSize = 128;  // texels per face of a reflective sphere's or mesh's environment cube
 };
 
 // Accepted ranges (scene-file validation, CLI, viewer sliders).
 inline constexpr int kMinShadowMapSize = 16;
 inline constexpr int kMaxShadowMapSize = 8192;
-inline constexpr float kMaxShadowBias = 64.0f;    // texels, for both biases (>= 0)
+inline constexpr float kMaxShadowBias = 64.0f;  // texels, for both biases (>= 0)
 inline constexpr int kMinReflectionCubeSize = 8;
 inline constexpr int kMaxReflectionCubeSize = 2048;
 

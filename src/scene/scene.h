@@ -15,15 +15,15 @@
 namespace shadelab {
 
 struct Scene {
-    std::string title;                       // shown by the viewer
-    std::string notes;                       // free text for a lesson
+    std::string title;  // shown by the viewer
+    std::string notes;  // free text for a lesson
     Camera camera;
     ShadingModel model = ShadingModel::Phong;
     Terms terms;
-    glm::vec3 ambient{0.2f};                 // Ia, linear RGB intensity
-    glm::vec3 background{0.0f};              // colour of rays that leave the scene, linear RGB
-    int maxDepth = 5;                        // secondary-ray depth for the tracer, >= 0
-    RasterSettings raster;                   // the rasterizer's shadow-map and reflection settings
+    glm::vec3 ambient{0.2f};     // Ia, linear RGB intensity
+    glm::vec3 background{0.0f};  // colour of rays that leave the scene, linear RGB
+    int maxDepth = 5;            // secondary-ray depth for the tracer, >= 0
+    RasterSettings raster;       // the rasterizer's shadow-map and reflection settings
     std::vector<Light> lights;
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;

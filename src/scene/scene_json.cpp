@@ -275,7 +275,7 @@ double exact(float f) {
 OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
 
 OJson materialJson(const Material& m) {
-    return {{"ma", vec(m.ma)}, {"md", vec(m.md)}, {"ms", vec(m.ms)}, {"s", exact(m.s)},
+    return {{"ma", vec(m.ma)}, {"md", vec(m.md)}, {"ms", vec(m.ms)},    {"s", exact(m.s)},
             {"kr", vec(m.kr)}, {"kt", vec(m.kt)}, {"ior", exact(m.ior)}};
 }
 
@@ -313,8 +313,7 @@ void writePretty(const OJson& j, int indent, std::string& out) {
         return isScalar(e) || (e.is_array() && std::all_of(e.begin(), e.end(), isScalar));
     });
     std::string one = inlineForm(j);
-    if (isScalar(j) || (j.is_array() && flat && one.size() <= 120) ||
-        (flat && indent + one.size() <= 100)) {
+    if (isScalar(j) || (j.is_array() && flat && one.size() <= 120) || (flat && indent + one.size() <= 100)) {
         out += one;
         return;
     }
@@ -339,8 +338,8 @@ std::string sceneToJson(const Scene& scene) {
     doc["title"] = scene.title;
     doc["notes"] = scene.notes;
     const Camera& c = scene.camera;
-    doc["camera"] = {{"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)},
-                     {"fovY", exact(c.fovY)}};
+    doc["camera"] = {
+        {"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)}, {"fovY", exact(c.fovY)}};
     doc["model"] = toString(scene.model);
     const Terms& t = scene.terms;
     doc["terms"] = OJson::object();
@@ -350,24 +349,35 @@ std::string sceneToJson(const Scene& scene) {
     doc["maxDepth"] = scene.maxDepth;
     const RasterSettings& r = scene.raster;
     doc["raster"] = {{"shadowMapSize", r.shadowMapSize == 0 ? OJson("auto") : OJson(r.shadowMapSize)},
-                     {"depthBias", exact(r.depthBias)}, {"normalBias", exact(r.normalBias)}, {"pcf", r.pcf},
+                     {"depthBias", exact(r.depthBias)},
+                     {"normalBias", exact(r.normalBias)},
+                     {"pcf", r.pcf},
                      {"reflectionCubeSize", r.reflectionCubeSize}};
 
     OJson lights = OJson::array();
     for (const Light& l : scene.lights) {
-        lights.push_back({{"type", toString(l.type)}, {"name", l.name},
-                          {"position", vec(l.position)}, {"direction", vec(l.direction)},
-                          {"color", vec(l.color)}, {"attenuation", vec(l.attenuation)}});
+        lights.push_back({{"type", toString(l.type)},
+                          {"name", l.name},
+                          {"position", vec(l.position)},
+                          {"direction", vec(l.direction)},
+                          {"color", vec(l.color)},
+                          {"attenuation", vec(l.attenuation)}});
     }
     doc["lights"] = lights;
 
     OJson objects = OJson::array();
     for (const Sphere& s : scene.spheres) {
-        objects.push_back({{"type", "sphere"}, {"name", s.name}, {"center", vec(s.center)},
-                           {"radius", exact(s.radius)}, {"material", materialJson(s.material)}});
+        objects.push_back({{"type", "sphere"},
+                           {"name", s.name},
+                           {"center", vec(s.center)},
+                           {"radius", exact(s.radius)},
+                           {"material", materialJson(s.material)}});
     }
     for (const Plane& p : scene.planes) {
-        OJson j = {{"type", "plane"}, {"name", p.name}, {"normal", vec(p.normal)}, {"offset", exact(p.offset)},
+        OJson j = {{"type", "plane"},
+                   {"name", p.name},
+                   {"normal", vec(p.normal)},
+                   {"offset", exact(p.offset)},
                    {"material", materialJson(p.material)}};
         if (p.checker) j["checker"] = {{"md2", vec(p.checker->md2)}, {"size", exact(p.checker->size)}};
         objects.push_back(j);

@@ -13,14 +13,13 @@ class JsonNode;
 // Parses scene JSON text. `file` names the source in errors. Throws InputError whose message names the
 // file, the JSON path and the problem, e.g. "a.json: lights[2].color: expected 3 numbers, got 2".
 // Unknown fields are reported through `warn` (one line each), never as errors.
-Scene parseSceneJson(const std::string& text, const std::string& file,
-                     void (*warn)(const std::string& line) = nullptr);
+Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line) = nullptr);
 
 // The scene file's readers of a material's and a light's fields, shared with the viewer's scripts so that
 // both accept the same values and word errors alike (the "raster" reader is raster_override.h's). Each reads
 // whichever of its fields object `n` holds; other keys are the caller's to warn about or refuse.
-MaterialOverride parseMaterialOverride(const JsonNode& n);   // "ma", "md", "ms", "s", "kr", "kt", "ior"
-LightOverride parseLightOverride(const JsonNode& n);         // "position", "direction", "color"
+MaterialOverride parseMaterialOverride(const JsonNode& n);  // "ma", "md", "ms", "s", "kr", "kt", "ior"
+LightOverride parseLightOverride(const JsonNode& n);        // "position", "direction", "color"
 
 // Serialises every described field (not imported geometry). parse(save(s)) == s, field by field.
 std::string sceneToJson(const Scene& scene);

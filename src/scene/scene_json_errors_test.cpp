@@ -154,8 +154,9 @@ TEST(SceneJson, ErrorMessageIsOneLineInTheDocumentedShape) {
         parse("{\"a\": 1,\n  x}");
         FAIL() << "no error";
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "a.json: line 2, column 3: syntax error while parsing object key - invalid literal; "
-                               "last read: '1,<U+000A>  x'; expected string literal");
+        EXPECT_STREQ(e.what(),
+                     "a.json: line 2, column 3: syntax error while parsing object key - invalid literal; "
+                     "last read: '1,<U+000A>  x'; expected string literal");
     }
 }
 

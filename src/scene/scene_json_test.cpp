@@ -3,8 +3,8 @@
 // errors: scene_json_errors_test.cpp). Text only: loadScene() owns files and glTF import.
 #include "scene/scene_json.h"
 
-#include "util/read_file.h"
 #include "util/input_error.h"
+#include "util/read_file.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -38,8 +38,10 @@ struct Diff {
     }
     template <class T, class Fn>
     void opt(const std::string& name, const std::optional<T>& a, const std::optional<T>& b, Fn cmp) {
-        if (a.has_value() != b.has_value()) fields.push_back(name + " presence");
-        else if (a) cmp(name, *a, *b);
+        if (a.has_value() != b.has_value())
+            fields.push_back(name + " presence");
+        else if (a)
+            cmp(name, *a, *b);
     }
     static std::string str(float x) {
         std::ostringstream s;
@@ -172,8 +174,9 @@ struct RandomSceneMaker {
     std::mt19937 rng{20240611u};
 
     float any() {  // awkward values a third of the time, else a random magnitude over many octaves
-        static const float awkward[] = {0.1f, 1e-7f, 12345.678f, 1.0f / 3.0f, 0.0f, -0.0f, 1e-45f, FLT_MIN,
-                                        16777217.0f, 0.3f, 2.5e30f, 1.0f - FLT_EPSILON / 2, 100.0f, 0.7f};
+        static const float awkward[] = {0.1f,   1e-7f,   12345.678f,  1.0f / 3.0f, 0.0f,    -0.0f,
+                                        1e-45f, FLT_MIN, 16777217.0f, 0.3f,        2.5e30f, 1.0f - FLT_EPSILON / 2,
+                                        100.0f, 0.7f};
         std::uniform_int_distribution<int> pick(0, 2);
         if (pick(rng) == 0) return awkward[std::uniform_int_distribution<size_t>(0, std::size(awkward) - 1)(rng)];
         float m = std::uniform_real_distribution<float>(-1.0f, 1.0f)(rng);
@@ -217,7 +220,8 @@ struct RandomSceneMaker {
             s.raster.depthBias = coin() ? in(0.0f, kMaxShadowBias) : (coin() ? 0.0f : kMaxShadowBias);
             s.raster.normalBias = coin() ? in(0.0f, kMaxShadowBias) : 0.1f;
             s.raster.pcf = coin();
-            s.raster.reflectionCubeSize = kMinReflectionCubeSize + upTo(kMaxReflectionCubeSize - kMinReflectionCubeSize);
+            s.raster.reflectionCubeSize =
+                kMinReflectionCubeSize + upTo(kMaxReflectionCubeSize - kMinReflectionCubeSize);
         }
         for (int i = upTo(kMaxLights); i > 0; --i) {
             Light l;
@@ -275,9 +279,8 @@ TEST(SceneJson, SavedFileIsReadableAndComplete) {
     EXPECT_NE(text.find("\"ambient\": [0.1, 0.1, 0.1]"), std::string::npos) << text;
     EXPECT_EQ(text.find("0.10000000149"), std::string::npos) << text;
     for (const char* key : {"\"shadelab\": 1", "\"title\"", "\"notes\"", "\"camera\"", "\"fovY\"",
-                            "\"model\": \"phong\"", "\"terms\"", "\"reflections\"", "\"background\"",
-                            "\"maxDepth\": 5", "\"raster\"", "\"shadowMapSize\": \"auto\"", "\"lights\"",
-                            "\"ior\""})
+                            "\"model\": \"phong\"", "\"terms\"", "\"reflections\"", "\"background\"", "\"maxDepth\": 5",
+                            "\"raster\"", "\"shadowMapSize\": \"auto\"", "\"lights\"", "\"ior\""})
         EXPECT_NE(text.find(key), std::string::npos) << key << "\n" << text;
 }
 
@@ -286,7 +289,8 @@ TEST(SceneJson, RasterSettingsRoundTripAndAcceptAutoOrZero) {
     s.raster = RasterSettings{2048, 0.25f, 3.0f, true, 256};
     std::string text = sceneToJson(s);
     EXPECT_EQ(nlohmann::json::parse(text)["raster"], nlohmann::json::parse(R"({"shadowMapSize": 2048,
-        "depthBias": 0.25, "normalBias": 3.0, "pcf": true, "reflectionCubeSize": 256})")) << text;
+        "depthBias": 0.25, "normalBias": 3.0, "pcf": true, "reflectionCubeSize": 256})"))
+        << text;
     expectRoundTrip(s);
     s.raster = RasterSettings{kMinShadowMapSize, 0.0f, kMaxShadowBias, false, kMaxReflectionCubeSize};
     expectRoundTrip(s);
@@ -373,7 +377,8 @@ TEST(SceneJson, MeshTransformComposesTranslateRotateScale) {
     EXPECT_EQ(s.meshes[3].transform, glm::mat4(1.0f));
     std::string text = sceneToJson(s);
     EXPECT_NE(text.find("\"matrix\": [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 4.0, 5.0, 6.0, 1.0]"),
-              std::string::npos) << text;
+              std::string::npos)
+        << text;
     nlohmann::json saved = nlohmann::json::parse(text);
     EXPECT_TRUE(saved["objects"][2].contains("matrix"));
     EXPECT_FALSE(saved["objects"][3].contains("matrix")) << "identity is omitted";

@@ -4,8 +4,8 @@
 
 #include "scene/gltf_import.h"
 #include "scene/scene_json.h"
-#include "util/read_file.h"
 #include "util/input_error.h"
+#include "util/read_file.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -55,8 +55,8 @@ void importMeshes(Scene& scene, const std::string& baseDir, WarnFn warn, const G
     GltfImportOptions options = gltf;  // the triangle limit bounds the whole scene
     for (Mesh& mesh : scene.meshes) {
         const fs::path source(mesh.source);
-        const std::string path = source.is_absolute() || baseDir.empty() ? mesh.source
-                                                                           : (fs::path(baseDir) / source).string();
+        const std::string path =
+            source.is_absolute() || baseDir.empty() ? mesh.source : (fs::path(baseDir) / source).string();
         GltfImport imported = importGltf(path, mesh.transform, options);
         for (const MeshPart& part : imported.parts) options.trianglesBefore += part.triangleCount();
         forwardWarnings(imported.warnings, path, warn);
@@ -130,8 +130,7 @@ Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& g
         importMeshes(scene, fs::path(path).parent_path().string(), warn, gltf);
         return scene;
     }
-    if (ext != ".gltf" && ext != ".glb")
-        throw InputError(path, "unknown scene type; expected .json, .gltf or .glb");
+    if (ext != ".gltf" && ext != ".glb") throw InputError(path, "unknown scene type; expected .json, .gltf or .glb");
 
     GltfImport imported = importGltf(path, glm::mat4(1.0f), gltf);
     forwardWarnings(imported.warnings, path, warn);

@@ -58,8 +58,9 @@ TEST(SceneLoad, GlbKeepsItsOwnCameraAndLights) {
     EXPECT_NEAR(s.camera.fovY, glm::degrees(0.3143463730812073f), 1e-4f);
     EXPECT_EQ(s.lights.size(), 2u);
 
-    const std::string nodes = "[{\"mesh\":0},{\"translation\":[0,3,0],"
-                              "\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}}}]";
+    const std::string nodes =
+        "[{\"mesh\":0},{\"translation\":[0,3,0],"
+        "\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}}}]";
     const std::string extra = ",\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"point\"}]}}";
     s = loadScene(writeGltf("lit.gltf", quad(), nodes, "[0,1]", extra));
     ASSERT_EQ(s.lights.size(), 1u);
@@ -129,7 +130,6 @@ TEST(SceneLoad, BoundsFramingAndRig) {
     EXPECT_LT(rig[1].color.r, rig[1].color.b);  // cool fill
     EXPECT_GT(glm::length(rig[0].color), glm::length(rig[1].color));
 }
-
 
 }  // namespace
 }  // namespace shadelab

@@ -56,8 +56,9 @@ TEST(SceneNames, JsonOneOfNamesThePathAndTheChoices) {
         root.child("term").oneOf(kTermNames, "term");
         FAIL() << "expected an InputError";
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "a.json: term: unknown term 'glow'; expected ambient, diffuse, specular, shadows "
-                               "or reflections");
+        EXPECT_STREQ(e.what(),
+                     "a.json: term: unknown term 'glow'; expected ambient, diffuse, specular, shadows "
+                     "or reflections");
     }
 }
 

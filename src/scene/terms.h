@@ -11,18 +11,15 @@ struct Terms {
     bool ambient = true;
     bool diffuse = true;
     bool specular = true;
-    bool shadows = true;        // tracer; rasterizer from issue 5
-    bool reflections = true;    // includes refraction; tracer; rasterizer from issue 5
+    bool shadows = true;      // tracer; rasterizer from issue 5
+    bool reflections = true;  // includes refraction; tracer; rasterizer from issue 5
 };
 
 enum class Term { Ambient, Diffuse, Specular, Shadows, Reflections };
 
 inline constexpr EnumName<Term> kTermNames[] = {
-    {Term::Ambient, "ambient"},
-    {Term::Diffuse, "diffuse"},
-    {Term::Specular, "specular"},
-    {Term::Shadows, "shadows"},
-    {Term::Reflections, "reflections"},
+    {Term::Ambient, "ambient"}, {Term::Diffuse, "diffuse"},         {Term::Specular, "specular"},
+    {Term::Shadows, "shadows"}, {Term::Reflections, "reflections"},
 };
 
 inline const char* toString(Term t) { return nameOf(kTermNames, t); }

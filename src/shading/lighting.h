@@ -2,23 +2,23 @@
 // tracer's C++ evaluate one set of equations (design.md §1). No GL and no scene types here.
 #pragma once
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 namespace shadelab::shading {
 
-using glm::vec3;
-using glm::dot;
-using glm::normalize;
-using glm::max;
-using glm::min;
-using glm::pow;
-using glm::sqrt;
 using glm::abs;
+using glm::dot;
 using glm::floor;
 using glm::length;
+using glm::max;
+using glm::min;
+using glm::normalize;
+using glm::pow;
+using glm::sqrt;
+using glm::vec3;
 
 #define SL_FN inline
 #include "shaders/lighting.glsl"

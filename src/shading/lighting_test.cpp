@@ -115,10 +115,10 @@ TEST(Lighting, TermSwitchesRemoveTheirTerm) {
 }
 
 TEST(Lighting, InputsAreNormalisedInside) {
-    vec3 a = shadeLight(kUp * 3.0f, fromAngle(30.0f) * 7.0f, fromAngle(-50.0f) * 0.1f, kWhite, vec3(0.5f),
-                        vec3(0.5f), 20.0f, kPhong, true, true);
-    vec3 b = shadeLight(kUp, fromAngle(30.0f), fromAngle(-50.0f), kWhite, vec3(0.5f), vec3(0.5f), 20.0f, kPhong,
-                        true, true);
+    vec3 a = shadeLight(kUp * 3.0f, fromAngle(30.0f) * 7.0f, fromAngle(-50.0f) * 0.1f, kWhite, vec3(0.5f), vec3(0.5f),
+                        20.0f, kPhong, true, true);
+    vec3 b =
+        shadeLight(kUp, fromAngle(30.0f), fromAngle(-50.0f), kWhite, vec3(0.5f), vec3(0.5f), 20.0f, kPhong, true, true);
     expectVec(a, b);
 }
 

@@ -10,9 +10,9 @@
 namespace shadelab::shading {
 
 struct LightSample {
-    vec3 L;                     // from the point toward the light, any length > 0
-    vec3 Il;                    // intensity arriving at the point (attenuation applied), linear RGB
-    float visibility = 1.0f;    // 0 when shadowed
+    vec3 L;                   // from the point toward the light, any length > 0
+    vec3 Il;                  // intensity arriving at the point (attenuation applied), linear RGB
+    float visibility = 1.0f;  // 0 when shadowed
 };
 
 struct SurfaceParams {
@@ -24,8 +24,8 @@ struct TermFlags {
     bool ambient = true, diffuse = true, specular = true;
 };
 
-inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCount, const SurfaceParams& m,
-                       vec3 Ia, int model, TermFlags t) {
+inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCount, const SurfaceParams& m, vec3 Ia,
+                       int model, TermFlags t) {
     vec3 I = shadeAmbient(Ia, m.ma, t.ambient);
     for (size_t i = 0; i < lightCount; ++i) {
         const LightSample& l = lights[i];

@@ -23,7 +23,7 @@ struct Task {
 
 struct Split {
     int axis = -1;
-    int bin = 0;                // primitives in bins [0, bin] go left
+    int bin = 0;  // primitives in bins [0, bin] go left
     float cost = INFINITY;
 };
 
@@ -33,9 +33,8 @@ inline int binOf(float c, float lo, float scale, int bins) {
     return std::min(std::max(b, 0), bins - 1);
 }
 
-Split findSahSplit(const std::vector<Bounds>& boxes, const std::vector<glm::vec3>& centroids,
-                   const uint32_t* prims, uint32_t count, const Bounds& centroidBounds, float parentArea,
-                   const BvhBuildOptions& o) {
+Split findSahSplit(const std::vector<Bounds>& boxes, const std::vector<glm::vec3>& centroids, const uint32_t* prims,
+                   uint32_t count, const Bounds& centroidBounds, float parentArea, const BvhBuildOptions& o) {
     Split best;
     const int bins = std::min(std::max(o.bins, 2), kMaxBins);
     for (int axis = 0; axis < 3; ++axis) {
@@ -68,8 +67,8 @@ Split findSahSplit(const std::vector<Bounds>& boxes, const std::vector<glm::vec3
             n += binCount[b];
             if (n == 0 || rightCount[b + 1] == 0) continue;
             // MacDonald & Booth 1990: C = Ct + (A_l·N_l + A_r·N_r) / A, in units of one primitive test.
-            const float cost = o.traversalCost +
-                               (acc.area() * float(n) + rightArea[b + 1] * float(rightCount[b + 1])) / parentArea;
+            const float cost =
+                o.traversalCost + (acc.area() * float(n) + rightArea[b + 1] * float(rightCount[b + 1])) / parentArea;
             if (cost < best.cost) best = Split{axis, b, cost};
         }
     }
@@ -113,8 +112,7 @@ Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options) {
 
         uint32_t leftCount = 0;
         if (task.depth < kMedianDepth) {
-            const Split split =
-                findSahSplit(boxes, centroids, prims, task.count, centroidBox, box.area(), options);
+            const Split split = findSahSplit(boxes, centroids, prims, task.count, centroidBox, box.area(), options);
             const float leafCost = float(task.count);
             if (task.count <= maxLeaf && !(split.cost < leafCost)) continue;  // a leaf is cheaper
             if (split.axis >= 0) {

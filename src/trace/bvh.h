@@ -15,9 +15,9 @@ namespace shadelab::trace {
 // One node. Siblings are stored next to each other (left at `first`, right at `first + 1`) and pairs start
 // at even indices, so with the 64-byte aligned array one cache line holds both children of a node.
 struct alignas(32) BvhNode {
-    float bounds[6];    // box: lo x, y, z then hi x, y, z, world units (indexable by slab side, see aabb.h)
-    uint32_t first;     // interior: index of the left child; leaf: first primitive in Bvh::order
-    uint32_t count;     // leaf: number of primitives (> 0); interior: 0
+    float bounds[6];  // box: lo x, y, z then hi x, y, z, world units (indexable by slab side, see aabb.h)
+    uint32_t first;   // interior: index of the left child; leaf: first primitive in Bvh::order
+    uint32_t count;   // leaf: number of primitives (> 0); interior: 0
 
     bool isLeaf() const { return count != 0; }
     const float* lo() const { return bounds; }
@@ -35,15 +35,19 @@ struct CacheLineAllocator {
     T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64))); }
     void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
     template <class U>
-    bool operator==(const CacheLineAllocator<U>&) const { return true; }
+    bool operator==(const CacheLineAllocator<U>&) const {
+        return true;
+    }
     template <class U>
-    bool operator!=(const CacheLineAllocator<U>&) const { return false; }
+    bool operator!=(const CacheLineAllocator<U>&) const {
+        return false;
+    }
 };
 
 struct BvhBuildOptions {
-    int bins = 16;                  // SAH candidate planes per axis are bins - 1
-    int maxLeafSize = 4;            // leaves never hold more primitives than this
-    float traversalCost = 1.0f;     // SAH cost of visiting a node, relative to one primitive test
+    int bins = 16;               // SAH candidate planes per axis are bins - 1
+    int maxLeafSize = 4;         // leaves never hold more primitives than this
+    float traversalCost = 1.0f;  // SAH cost of visiting a node, relative to one primitive test
 };
 
 // Deepest tree the builder makes; traversal stacks are sized from it.
@@ -51,8 +55,8 @@ inline constexpr int kMaxBvhDepth = 64;
 
 struct Bvh {
     std::vector<BvhNode, CacheLineAllocator<BvhNode>> nodes;  // [0] root, [1] padding, then sibling pairs
-    std::vector<uint32_t> order;    // order[k]: the input primitive at leaf slot k
-    int depth = 0;                  // levels below the root, < kMaxBvhDepth
+    std::vector<uint32_t> order;                              // order[k]: the input primitive at leaf slot k
+    int depth = 0;                                            // levels below the root, < kMaxBvhDepth
 
     bool empty() const { return order.empty(); }
 };

@@ -1,16 +1,16 @@
 // The SAH BVH (bvh.h) and its traversals (mesh_bvh.h, sphere_set.h) against brute force: same nearest hit (t
 // bit-equal, same triangle) and any-hit answers for random rays over real assimp-testmodels meshes.
 // Sections: brute force | structural invariants | real models | degenerate inputs | spheres.
+#include "trace/bvh.h"
 #include "scene/scene_load.h"
 #include "shading/lighting.h"
-#include "trace/bvh.h"
 #include "trace/mesh_bvh.h"
 #include "trace/sphere_set.h"
 #include "trace/trace_test_util.h"
 #include "trace/watertight.h"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +30,7 @@ namespace {
 
 struct SceneTri {
     float v[9];
-    uint32_t source;    // scene order over all triangles, as MeshBvh::sourceTriangle numbers them
+    uint32_t source;  // scene order over all triangles, as MeshBvh::sourceTriangle numbers them
 };
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
@@ -53,7 +53,7 @@ std::vector<SceneTri> sceneTriangles(const Scene& scene) {
 
 struct Nearest {
     float t = INFINITY;
-    uint32_t source = UINT32_MAX;   // UINT32_MAX: miss
+    uint32_t source = UINT32_MAX;  // UINT32_MAX: miss
 };
 
 // Nearest hit over all triangles with the same watertight test; a tie keeps the earlier (lower) source.
@@ -68,7 +68,8 @@ std::vector<Nearest> bruteForceAll(const std::vector<SceneTri>& tris, const std:
     const float margin = 1e-3f * glm::length(all.hi - all.lo) + 1e-6f;
     std::vector<float> sphere(4 * tris.size());  // centre and squared radius with margin; plain floats, fast at -O0
     for (size_t i = 0; i < tris.size(); ++i) {
-        const glm::vec3 a = glm::make_vec3(tris[i].v), b = glm::make_vec3(tris[i].v + 3), c = glm::make_vec3(tris[i].v + 6);
+        const glm::vec3 a = glm::make_vec3(tris[i].v), b = glm::make_vec3(tris[i].v + 3),
+                        c = glm::make_vec3(tris[i].v + 6);
         const glm::vec3 m = (a + b + c) / 3.0f;
         const float r = std::max({glm::length(a - m), glm::length(b - m), glm::length(c - m)}) + margin;
         sphere[4 * i] = m.x, sphere[4 * i + 1] = m.y, sphere[4 * i + 2] = m.z, sphere[4 * i + 3] = r * r;
@@ -168,7 +169,8 @@ Disagreement compare(const MeshBvh& bvh, const std::vector<Ray>& rays, const std
         const float tMaxes[] = {INFINITY, b.t, 0.5f * b.t, 2.0f * b.t, float(i % 97) * 0.05f * tScale};
         for (const float tMax : tMaxes)
             if (bvh.anyHit(rays[i], tMax) != (b.t < tMax) && d.any++ == 0)
-                d.firstAny = describe(i, rays[i]) + ", tMax " + std::to_string(tMax) + ", brute t " + std::to_string(b.t);
+                d.firstAny =
+                    describe(i, rays[i]) + ", tMax " + std::to_string(tMax) + ", brute t " + std::to_string(b.t);
     }
     return d;
 }
@@ -193,7 +195,8 @@ Bounds box(glm::vec3 lo, glm::vec3 hi) { return Bounds{lo, hi}; }
 // Every primitive in exactly one leaf, leaves of 1..maxLeaf primitives whose boxes hold them, children
 // inside their parent, sibling pairs at even indices, and the reported depth right and below the limit.
 ::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Bounds>& boxes, int maxLeaf) {
-    if (boxes.empty()) return bvh.empty() ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << "not empty";
+    if (boxes.empty())
+        return bvh.empty() ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << "not empty";
     if (bvh.order.size() != boxes.size()) return ::testing::AssertionFailure() << "order has " << bvh.order.size();
     std::vector<int> seen(boxes.size(), 0);
     int maxDepth = 0;
@@ -206,12 +209,15 @@ Bounds box(glm::vec3 lo, glm::vec3 hi) { return Bounds{lo, hi}; }
         maxDepth = std::max(maxDepth, depth);
         const BvhNode& n = bvh.nodes[ni];
         if (n.isLeaf()) {
-            if (n.count > uint32_t(maxLeaf)) return ::testing::AssertionFailure() << "leaf " << ni << " holds " << n.count;
+            if (n.count > uint32_t(maxLeaf))
+                return ::testing::AssertionFailure() << "leaf " << ni << " holds " << n.count;
             if (size_t(n.first) + n.count > bvh.order.size()) return ::testing::AssertionFailure() << "leaf range";
             for (uint32_t k = n.first; k < n.first + n.count; ++k) {
                 const uint32_t p = bvh.order[k];
-                if (p >= boxes.size() || seen[p]++) return ::testing::AssertionFailure() << "primitive " << p << " twice";
-                if (!contains(n.bounds, boxes[p])) return ::testing::AssertionFailure() << "leaf " << ni << " misses box " << p;
+                if (p >= boxes.size() || seen[p]++)
+                    return ::testing::AssertionFailure() << "primitive " << p << " twice";
+                if (!contains(n.bounds, boxes[p]))
+                    return ::testing::AssertionFailure() << "leaf " << ni << " misses box " << p;
             }
             continue;
         }
@@ -232,7 +238,7 @@ Bounds box(glm::vec3 lo, glm::vec3 hi) { return Bounds{lo, hi}; }
 // ---- Real models ---------------------------------------------------------------------------------
 
 struct ModelCase {
-    const char* path;   // under /usr/share/assimp/models/glTF2
+    const char* path;  // under /usr/share/assimp/models/glTF2
     int rays;
 };
 
@@ -261,23 +267,27 @@ TEST_P(BvhModel, MatchesBruteForce) {
     std::vector<SceneTri> fewer;
     for (size_t i = 0; i < tris.size(); ++i)
         if (i % 7 != 1) fewer.push_back(tris[i]);
-    const std::vector<Ray> some(rays.begin(), rays.begin() + std::min<std::ptrdiff_t>(2000, std::ptrdiff_t(rays.size())));
-    EXPECT_GT(compare(bvh, some, bruteForceAll(fewer, some)).closest, 0u) << "the comparison cannot see a lost triangle";
+    const std::vector<Ray> some(rays.begin(),
+                                rays.begin() + std::min<std::ptrdiff_t>(2000, std::ptrdiff_t(rays.size())));
+    EXPECT_GT(compare(bvh, some, bruteForceAll(fewer, some)).closest, 0u)
+        << "the comparison cannot see a lost triangle";
 }
 
-INSTANTIATE_TEST_SUITE_P(AssimpTestModels, BvhModel,
-                         ::testing::Values(ModelCase{"2CylinderEngine-glTF-Binary/2CylinderEngine.glb", 10000},
-                                           ModelCase{"BoxTextured-glTF-Binary/BoxTextured.glb", 20000},
-                                           ModelCase{"BoxBadNormals-glTF-Binary/BoxBadNormals.glb", 10000},
-                                           ModelCase{"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 10000},
-                                           ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_04.gltf", 10000},
-                                           ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_05.gltf", 10000},
-                                           ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_13.gltf", 10000}),
-                         [](const ::testing::TestParamInfo<ModelCase>& modelInfo) {
-                             std::string n = std::filesystem::path(modelInfo.param.path).stem().string();
-                             std::replace_if(n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
-                             return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    AssimpTestModels, BvhModel,
+    ::testing::Values(ModelCase{"2CylinderEngine-glTF-Binary/2CylinderEngine.glb", 10000},
+                      ModelCase{"BoxTextured-glTF-Binary/BoxTextured.glb", 20000},
+                      ModelCase{"BoxBadNormals-glTF-Binary/BoxBadNormals.glb", 10000},
+                      ModelCase{"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 10000},
+                      ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_04.gltf", 10000},
+                      ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_05.gltf", 10000},
+                      ModelCase{"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_13.gltf", 10000}),
+    [](const ::testing::TestParamInfo<ModelCase>& modelInfo) {
+        std::string n = std::filesystem::path(modelInfo.param.path).stem().string();
+        std::replace_if(
+            n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+        return n;
+    });
 
 // ---- Degenerate inputs -----------------------------------------------------------------------------
 
@@ -355,9 +365,12 @@ Scene degenerateScene() {
     };
     for (int i = 0; i < 4000; ++i) {
         const glm::vec3 a(u(rng), u(rng), u(rng)), d(u(rng), u(rng), u(rng));
-        if (i % 3 == 0) add(a, a, a);
-        else if (i % 3 == 1) add(a, a + 0.5f * d, a + d);
-        else add({0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, {1, 1, 1});
+        if (i % 3 == 0)
+            add(a, a, a);
+        else if (i % 3 == 1)
+            add(a, a + 0.5f * d, a + d);
+        else
+            add({0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, {1, 1, 1});
         if (i % 20 == 0) add(a, a + glm::vec3(u(rng), u(rng), 0.0f) * 0.3f, a + glm::vec3(0.0f, u(rng), u(rng)) * 0.3f);
         if (i % 20 == 10) add({-3, -3, 3}, {3, -3, 3}, {0, 3, 3});  // above everything else
     }
@@ -406,7 +419,8 @@ TEST(SphereSetBvh, MatchesBruteForce) {
     spheres.push_back(spheres[7]);  // an exact duplicate: ties go to the lower index
     std::vector<Ray> rays;
     for (int i = 0; i < 20000; ++i)
-        rays.push_back({{u(rng) * 1.3f, u(rng) * 1.3f, u(rng) * 1.3f}, glm::normalize(glm::vec3(g(rng), g(rng), g(rng)))});
+        rays.push_back(
+            {{u(rng) * 1.3f, u(rng) * 1.3f, u(rng) * 1.3f}, glm::normalize(glm::vec3(g(rng), g(rng), g(rng)))});
     size_t hits = 0;
     auto mismatches = [&](const SphereSet& set) {
         size_t bad = 0;
@@ -417,7 +431,8 @@ TEST(SphereSetBvh, MatchesBruteForce) {
             float best = INFINITY;
             uint32_t index = UINT32_MAX;
             for (size_t k = 0; k < spheres.size(); ++k) {
-                const float t = shading::intersectSphere(ray.origin, ray.dir, spheres[k].center, spheres[k].radius, tMin);
+                const float t =
+                    shading::intersectSphere(ray.origin, ray.dir, spheres[k].center, spheres[k].radius, tMin);
                 if (t > tMin && t < best) best = t, index = uint32_t(k);
             }
             const std::optional<SphereHit> h = set.closestHit(ray, tMin, INFINITY);

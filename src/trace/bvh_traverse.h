@@ -2,8 +2,8 @@
 // come in as leaf callbacks, so triangles (mesh_bvh.cpp) and spheres (sphere_set.cpp) walk one code path.
 #pragma once
 
-#include "trace/slab_test.h"
 #include "trace/bvh.h"
+#include "trace/slab_test.h"
 
 #include <cmath>
 #include <cstdint>

@@ -19,7 +19,7 @@ bool positive(const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0
 // The tree of one camera sample, walked depth first in a fixed order (refracted child, then reflected), so
 // which children the budget cuts depends only on the sample: never on threads, tiles or timing.
 struct WhittedIntegrator::Tree {
-    int64_t raysLeft;                       // secondary rays this sample may still trace
+    int64_t raysLeft;  // secondary rays this sample may still trace
     const std::atomic<bool>* cancel;
     TreeStats stats;
 };
@@ -27,8 +27,7 @@ struct WhittedIntegrator::Tree {
 WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, const RayTreeLimits& limits)
     : scene_(scene),
       maxDepth_(std::max(maxDepth, 0)),
-      model_(scene.scene().model == ShadingModel::Phong ? shading::SL_MODEL_PHONG
-                                                       : shading::SL_MODEL_BLINN_PHONG),
+      model_(scene.scene().model == ShadingModel::Phong ? shading::SL_MODEL_PHONG : shading::SL_MODEL_BLINN_PHONG),
       limits_(limits) {}
 
 PrimarySample WhittedIntegrator::primary(const Ray& ray, const std::atomic<bool>* cancel, TreeStats* stats) const {

@@ -1,9 +1,9 @@
 // Tracer-only physics with exact expected values (issue 3): hard shadows leave only ambient, a mirror sphere
 // returns a known colour, a glass slab shifts a checker as Snell's law predicts, total internal reflection
 // sends the transmitted energy into the reflected ray, and the depth limit. Each with a negative control.
+#include "trace/integrator.h"
 #include "scene/coverage.h"
 #include "shading/lighting.h"
-#include "trace/integrator.h"
 #include "trace/trace_image.h"
 #include "trace/trace_test_util.h"
 
@@ -50,7 +50,7 @@ TEST(TracerPhysics, PointInShadowReceivesOnlyAmbient) {
     directional.type = LightType::Directional;
     directional.direction = {0, -1, 0};
     directional.color = {0.7f, 0.8f, 0.9f};
-    const Ray toShadow = test::rayTowards({3, 0.4f, 0}, {0.1f, 0, 0.05f});   // passes under the sphere
+    const Ray toShadow = test::rayTowards({3, 0.4f, 0}, {0.1f, 0, 0.05f});  // passes under the sphere
     const Ray toLit = test::rayTowards({3, 0.4f, 0}, {1.6f, 0, 0.2f});
     const glm::vec3 ambientOnly = shading::shadeAmbient(sc.ambient, floor.ma, true);
     for (const Light& light : {pointLight({0, 3, 0}, {1.0f, 0.9f, 0.8f}), directional}) {
@@ -91,7 +91,7 @@ Scene mirrorScene(glm::vec3 kr) {
 
 glm::vec3 centrePixel(const Scene& sc, int maxDepth = -1) {
     TraceSettings st;
-    st.width = st.height = 5;   // odd: the centre pixel's ray is exactly the camera's forward axis
+    st.width = st.height = 5;  // odd: the centre pixel's ray is exactly the camera's forward axis
     st.threads = 1;
     st.maxDepth = maxDepth;
     const TraceOutput out = traceImage(sc, st);
@@ -125,7 +125,7 @@ MeshPart flatBox(glm::vec3 lo, glm::vec3 hi, const Material& m) {
     MeshGeometry p;
     for (int axis = 0; axis < 3; ++axis)
         for (const bool high : {false, true}) {
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;   // e_u × e_v = e_axis
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;  // e_u × e_v = e_axis
             const uint32_t base = uint32_t(p.positions.size());
             for (int k = 0; k < 4; ++k) {
                 glm::vec3 c, n(0.0f);
@@ -136,8 +136,10 @@ MeshPart flatBox(glm::vec3 lo, glm::vec3 hi, const Material& m) {
                 p.positions.push_back(c);
                 p.normals.push_back(n);
             }
-            if (high) p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-            else p.indices.insert(p.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
+            if (high)
+                p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+            else
+                p.indices.insert(p.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
         }
     return MeshPart{shareGeometry(std::move(p)), m};
 }
@@ -146,7 +148,7 @@ Scene slabScene(const Slab& s, SlabKind kind) {
     Scene sc;
     sc.camera.position = {0, 3, 4};
     sc.ambient = glm::vec3(0.0f);
-    sc.terms.shadows = false;   // glass casts black shadows (trace_scene.h); this test is about refraction
+    sc.terms.shadows = false;  // glass casts black shadows (trace_scene.h); this test is about refraction
     Light sun;
     sun.type = LightType::Directional;
     sun.direction = {0, -1, 0};
@@ -200,7 +202,8 @@ TEST(TracerPhysics, GlassSlabShiftsTheCheckerAsSnellPredicts) {
         for (int i = 0; i < 400; ++i) {
             const float th = theta(rng), ph = phi(rng);
             const glm::vec3 o(u(rng), slab.height, u(rng));
-            const Ray ray{o, glm::normalize(glm::vec3(std::sin(th) * std::cos(ph), -std::cos(th), std::sin(th) * std::sin(ph)))};
+            const Ray ray{
+                o, glm::normalize(glm::vec3(std::sin(th) * std::cos(ph), -std::cos(th), std::sin(th) * std::sin(ph)))};
             const int parity = parityOf(slabbed.radiance(ray, 0)), parityFree = parityOf(noSlab.radiance(ray, 0));
             ASSERT_GE(parity, 0) << "through kt = 1 the floor colour must arrive unchanged, ray " << i;
             const int expected = safeParity(predictedLanding(slab, o, th, ph, slab.ior, true), slab.tile);
@@ -217,7 +220,8 @@ TEST(TracerPhysics, GlassSlabShiftsTheCheckerAsSnellPredicts) {
         }
         const char* name = kind == SlabKind::Planes ? "two planes" : "box mesh";
         EXPECT_GT(checked, 60) << name;
-        EXPECT_EQ(wrong, 0) << name << ": of " << checked << " rays, the checker seen through the slab is not where Snell puts it";
+        EXPECT_EQ(wrong, 0) << name << ": of " << checked
+                            << " rays, the checker seen through the slab is not where Snell puts it";
         EXPECT_GT(controlChecked, 60);
         EXPECT_EQ(controlWrong, 0) << "without the slab the straight-line prediction must hold";
         // Negative controls: ignoring the slab, or assuming water's ior, mispredicts many rays.

@@ -227,7 +227,8 @@ std::vector<Ray> edgeVertexRays(const MeshPart& part, glm::vec3 centre, float in
     std::vector<glm::vec3> targets(p.positions);
     for (const auto& e : edges)
         for (int k = 1; k < 8; ++k)
-            targets.push_back(p.positions[e.first] + (float(k) / 8.0f) * (p.positions[e.second] - p.positions[e.first]));
+            targets.push_back(p.positions[e.first] +
+                              (float(k) / 8.0f) * (p.positions[e.second] - p.positions[e.first]));
     const glm::vec3 origins[] = {centre, centre + inner * glm::vec3(0.3f, -0.2f, 0.1f),
                                  centre + inner * glm::vec3(-0.25f, 0.35f, 0.3f)};
     std::vector<Ray> rays;
@@ -259,7 +260,9 @@ TEST(Watertight, ClosedCubeAndIcosphereNeverFallThroughEdgesOrVertices) {
     for (const MeshPart* p : {&cube, &ico}) {
         const std::vector<Tri> tris = trianglesOf(*p);
         for (const Tri& t : tris)  // the builders' winding is outward, as mesh normals assume
-            ASSERT_GT(glm::dot(glm::cross(t.b - t.a, t.c - t.a), t.a - (p == &cube ? kO : glm::vec3(0.1f, -0.2f, 0.3f))), 0.0f);
+            ASSERT_GT(
+                glm::dot(glm::cross(t.b - t.a, t.c - t.a), t.a - (p == &cube ? kO : glm::vec3(0.1f, -0.2f, 0.3f))),
+                0.0f);
     }
 
     // The cube's faces, probed on a 1/16 grid (it holds the exact face diagonals) along each face normal and
@@ -327,17 +330,18 @@ TEST(Watertight, FansAroundAVertexNeverFallThrough) {
             rays.push_back(test::rayTowards(t + glm::vec3(0.7f, -0.3f, 4.0f), t));
             rays.push_back(test::rayTowards(t + glm::vec3(-0.21f, 0.45f, -3.0f), t));
         }
-        EXPECT_EQ(countFallThrough(rays, tris, watertightAny), 0u) << "apex z " << apexZ << ", " << rays.size() << " rays";
+        EXPECT_EQ(countFallThrough(rays, tris, watertightAny), 0u)
+            << "apex z " << apexZ << ", " << rays.size() << " rays";
         if (apexZ == 0.0f) {
             EXPECT_GT(countFallThrough(rays, tris, strictMollerTrumboreAny), 0u) << "negative control: strict test";
         }
     }
 }
 
-// ---- MeshBvh robustness: triangles in their boxes' faces, zero-area triangles (known bugs) ------------ ---------------------------------------------
-// mesh_bvh.h promises hits at 0 < t < tMax, exact ties to the lower source triangle, and the answer brute
-// force gives. A cube's triangles lie in their leaf boxes' faces, where the box test's rounding meets the
-// triangle test's; rays go to random face points and to the cube's edges.
+// ---- MeshBvh robustness: triangles in their boxes' faces, zero-area triangles (known bugs) ------------
+// --------------------------------------------- mesh_bvh.h promises hits at 0 < t < tMax, exact ties to the lower
+// source triangle, and the answer brute force gives. A cube's triangles lie in their leaf boxes' faces, where the box
+// test's rounding meets the triangle test's; rays go to random face points and to the cube's edges.
 TEST(MeshBvhRobustness, HitsInBoxFacesAreNeverCulled) {
     const MeshPart cube = test::cubePart(glm::vec3(-0.5f), glm::vec3(0.5f));
     const std::vector<Tri> tris = trianglesOf(cube);
@@ -382,7 +386,8 @@ TEST(MeshBvhRobustness, HitsInBoxFacesAreNeverCulled) {
     EXPECT_GT(hits, 15000u);
     EXPECT_EQ(lostAny, 0u) << "of " << hits << " rays, anyHit(t of the hit + 1 ulp) was false" << bug;
     EXPECT_EQ(lostOccluded, 0u) << "of " << hits << " rays, occluded(t of the hit + 1 ulp) was false" << bug;
-    EXPECT_EQ(wrongClosest, 0u) << "of " << hits << " rays, closestHit differs from brute force; first: " << first << bug;
+    EXPECT_EQ(wrongClosest, 0u) << "of " << hits << " rays, closestHit differs from brute force; first: " << first
+                                << bug;
 }
 
 TEST(MeshBvhRobustness, ExactlyCollinearTrianglesAreNeverHit) {
@@ -406,7 +411,7 @@ TEST(MeshBvhRobustness, ExactlyCollinearTrianglesAreNeverHit) {
     sc.meshes[0].parts = {MeshPart{shareGeometry(p), Material{}}};
     const MeshBvh bvh(sc);
     size_t hits = 0;
-    float worst = 0.0f;     // distance of a reported hit point from the triangle's segment
+    float worst = 0.0f;  // distance of a reported hit point from the triangle's segment
     for (size_t k = 0; k < p.positions.size(); k += 3)
         for (int n = 0; n < 4; ++n) {
             const glm::vec3 a = p.positions[k], c = p.positions[k + 2];

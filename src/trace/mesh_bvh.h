@@ -16,9 +16,9 @@
 namespace shadelab::trace {
 
 struct MeshHit {
-    float t;                // ray parameter, > 0
-    uint32_t slot;          // the triangle's position in BVH order (MeshBvh accessors take it)
-    float b0, b1, b2;       // barycentric weights of the triangle's vertices 0, 1, 2
+    float t;           // ray parameter, > 0
+    uint32_t slot;     // the triangle's position in BVH order (MeshBvh accessors take it)
+    float b0, b1, b2;  // barycentric weights of the triangle's vertices 0, 1, 2
 };
 
 // True for a triangle with exactly zero area (collinear or repeated corners, cross product computed in
@@ -59,11 +59,11 @@ public:
 
 private:
     Bvh bvh_;
-    std::vector<float> positions_;      // 9 per slot
-    std::vector<float> normals_;        // 9 per slot
-    std::vector<uint32_t> part_;        // per slot
-    std::vector<uint32_t> source_;      // per slot
-    std::vector<uint32_t> partMesh_;    // per flattened part
+    std::vector<float> positions_;                               // 9 per slot
+    std::vector<float> normals_;                                 // 9 per slot
+    std::vector<uint32_t> part_;                                 // per slot
+    std::vector<uint32_t> source_;                               // per slot
+    std::vector<uint32_t> partMesh_;                             // per flattened part
     std::vector<std::shared_ptr<const MeshGeometry>> geometry_;  // per flattened part, for matches()
     Bounds bounds_;
 };

@@ -27,13 +27,13 @@ struct ProgressiveTrace::Job {
     WhittedIntegrator integrator;
     std::vector<Tile> tiles;
 
-    std::atomic<int> next{0};           // next tile to hand to a worker
-    std::atomic<int> rendered{0};       // tiles finished
-    std::atomic<int> delivered{0};      // tiles handed out by poll/wait
+    std::atomic<int> next{0};       // next tile to hand to a worker
+    std::atomic<int> rendered{0};   // tiles finished
+    std::atomic<int> delivered{0};  // tiles handed out by poll/wait
     std::atomic<bool> cancelled{false};
     std::mutex mutex;
     std::condition_variable ready;
-    std::deque<TileResult> queue;       // finished, not yet delivered
+    std::deque<TileResult> queue;  // finished, not yet delivered
 };
 
 void ProgressiveTrace::start(std::shared_ptr<const TraceScene> scene, const TraceSettings& settings) {

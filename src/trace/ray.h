@@ -7,8 +7,8 @@
 namespace shadelab::trace {
 
 struct Ray {
-    glm::vec3 origin{0.0f};             // world units
-    glm::vec3 dir{0.0f, 0.0f, -1.0f};   // unit length: shading::intersectSphere relies on it
+    glm::vec3 origin{0.0f};            // world units
+    glm::vec3 dir{0.0f, 0.0f, -1.0f};  // unit length: shading::intersectSphere relies on it
 };
 
 }  // namespace shadelab::trace

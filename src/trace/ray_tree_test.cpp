@@ -27,7 +27,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-constexpr RayTreeLimits kUnbounded{0.0f, -1};   // the plain Whitted tree, cut by maxDepth only
+constexpr RayTreeLimits kUnbounded{0.0f, -1};  // the plain Whitted tree, cut by maxDepth only
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -64,7 +64,8 @@ Scene glassTree() {
     glass.ior = 1.5f;
     for (int x = -2; x <= 2; ++x)
         for (int y = -1; y <= 1; ++y)
-            for (int z = -1; z <= 1; ++z) sc.spheres.push_back(Sphere{"", {float(x), float(y), float(z)}, 0.45f, glass});
+            for (int z = -1; z <= 1; ++z)
+                sc.spheres.push_back(Sphere{"", {float(x), float(y), float(z)}, 0.45f, glass});
     return sc;
 }
 
@@ -102,8 +103,7 @@ Scene glassAndMirrors(int depth) {
 // into kr, the sum stays). So B_0 = max(bg, Lloc) and B_r = max(bg, Lloc + g⊙B_{r−1}), g = max(kr + kt).
 glm::vec3 radianceBound(const Scene& sc, int remaining) {
     glm::vec3 lights(0.0f);
-    for (const Light& l : sc.lights)
-        lights += l.color * (l.type == LightType::Point ? 1.0f / l.attenuation.x : 1.0f);
+    for (const Light& l : sc.lights) lights += l.color * (l.type == LightType::Point ? 1.0f / l.attenuation.x : 1.0f);
     glm::vec3 local(0.0f), g(0.0f);
     auto material = [&](const Material& m, glm::vec3 md) {
         local = glm::max(local, sc.ambient * m.ma + lights * (md + m.ms));
@@ -168,7 +168,8 @@ TEST(RayTree, WeightThresholdPrunesExactlyTheLightChildAndCostsItsWeightTimesIts
     EXPECT_EQ(full.pruned, 0);
     EXPECT_EQ(unpruned, glm::vec3(2.0f));
     EXPECT_EQ(unpruned - pruned, glm::vec3(st.prunedWeight * 2.0f));
-    EXPECT_EQ(unpruned.x - pruned.x, st.prunedWeight * radianceBound(mirrorPair(0.5f), 63).x);  // the bound is tight here
+    EXPECT_EQ(unpruned.x - pruned.x,
+              st.prunedWeight * radianceBound(mirrorPair(0.5f), 63).x);  // the bound is tight here
 
     // The threshold is strict and per child: at 1/256 the 2^-8 child is traced and 2^-9 is pruned.
     TreeStats at;
@@ -177,7 +178,8 @@ TEST(RayTree, WeightThresholdPrunesExactlyTheLightChildAndCostsItsWeightTimesIts
     EXPECT_EQ(at.prunedWeight, 1.0f / 512.0f);
     // Negative control: minWeight 0 with the default budget is the unpruned tree.
     TreeStats off;
-    EXPECT_EQ(WhittedIntegrator(ts, 64, RayTreeLimits{0.0f, 1024}).primary(kDownTheAxis, nullptr, &off).color, unpruned);
+    EXPECT_EQ(WhittedIntegrator(ts, 64, RayTreeLimits{0.0f, 1024}).primary(kDownTheAxis, nullptr, &off).color,
+              unpruned);
     EXPECT_EQ(off.pruned, 0);
 }
 
@@ -186,7 +188,8 @@ TEST(RayTree, BudgetBoundsATreeWhoseWeightsNeverFall) {
     const TraceScene ts(mirrorPair(1.0f));
     for (const int budget : {0, 1, 10, 63}) {
         TreeStats st;
-        const glm::vec3 c = WhittedIntegrator(ts, 64, RayTreeLimits{1.0f / 255.0f, budget}).primary(kDownTheAxis, nullptr, &st).color;
+        const glm::vec3 c =
+            WhittedIntegrator(ts, 64, RayTreeLimits{1.0f / 255.0f, budget}).primary(kDownTheAxis, nullptr, &st).color;
         EXPECT_EQ(st.secondaryRays, budget);
         EXPECT_EQ(st.cut, 1) << "budget " << budget;
         EXPECT_EQ(st.pruned, 0);
@@ -240,10 +243,11 @@ TEST(RayTree, ShippedAndGlassScenesChangeByAtMostPrunedWeightTimesTheRadianceBou
                     ASSERT_LE(d, (st.prunedWeight + 1e-5f) * B[c]) << "pixel (" << i << ", " << j << ") channel " << c;
                 }
             }
-        std::printf("%-24s depth %2d: %4d of %d samples pruned, max W %.5f (%.2f x minWeight), max |diff| %.6f, "
-                    "minWeight x B = %.6f (B = %.3f), largest unpruned tree %d rays, 8-bit max diff %d\n",
-                    name.c_str(), sc.maxDepth, prunedSamples, w * h, maxW, maxW / tau, maxDiff, tau * maxOf(B),
-                    maxOf(B), maxRays, maxByteDifference(full.color, pruned.color));
+        std::printf(
+            "%-24s depth %2d: %4d of %d samples pruned, max W %.5f (%.2f x minWeight), max |diff| %.6f, "
+            "minWeight x B = %.6f (B = %.3f), largest unpruned tree %d rays, 8-bit max diff %d\n",
+            name.c_str(), sc.maxDepth, prunedSamples, w * h, maxW, maxW / tau, maxDiff, tau * maxOf(B), maxOf(B),
+            maxRays, maxByteDifference(full.color, pruned.color));
         EXPECT_EQ(cut, 0) << "the budget must not cut a normal scene";
         EXPECT_LE(maxDiff, tau * maxOf(B));
         if (prunedSamples == 0) {
@@ -304,8 +308,8 @@ TEST(RayTree, CancelStopsInsideATree) {
     const TraceScene ts(glassTree());
     const std::atomic<bool> cancelled{true};
     TreeStats st;
-    WhittedIntegrator(ts, 64, kUnbounded).primary(Ray{{0.3f, 0.4f, 2.6f}, glm::normalize(glm::vec3(-0.3f, -0.4f, -2.6f))},
-                                                  &cancelled, &st);
+    WhittedIntegrator(ts, 64, kUnbounded)
+        .primary(Ray{{0.3f, 0.4f, 2.6f}, glm::normalize(glm::vec3(-0.3f, -0.4f, -2.6f))}, &cancelled, &st);
     EXPECT_TRUE(st.cancelled);
     EXPECT_EQ(st.secondaryRays, 0);
 }

@@ -17,7 +17,7 @@ namespace shadelab::trace {
 struct BoxRay {
     float org[3];
     float invDir[3];
-    int nearIdx[3];     // per axis, the index in a bounds[6] array (lo xyz, hi xyz) of the slab entered first
+    int nearIdx[3];  // per axis, the index in a bounds[6] array (lo xyz, hi xyz) of the slab entered first
     int farIdx[3];
 };
 

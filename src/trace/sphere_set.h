@@ -14,8 +14,8 @@
 namespace shadelab::trace {
 
 struct SphereHit {
-    float t;            // ray parameter
-    uint32_t index;     // into Scene::spheres
+    float t;         // ray parameter
+    uint32_t index;  // into Scene::spheres
 };
 
 class SphereSet {
@@ -33,8 +33,8 @@ public:
 
 private:
     Bvh bvh_;
-    std::vector<glm::vec4> spheres_;    // centre and radius, in BVH order
-    std::vector<uint32_t> index_;       // scene index, in BVH order
+    std::vector<glm::vec4> spheres_;  // centre and radius, in BVH order
+    std::vector<uint32_t> index_;     // scene index, in BVH order
     Bounds bounds_;
 };
 

@@ -17,10 +17,10 @@ struct Tile {
 };
 
 struct TileResult {
-    int index = 0;                      // position in makeTiles()' list
+    int index = 0;  // position in makeTiles()' list
     Tile tile;
-    std::vector<float> rgba;            // tile.width × tile.height × 4, linear, alpha 1, row 0 at the top
-    std::vector<uint32_t> coverage;     // tile.width × tile.height ids; empty unless coverage was asked for
+    std::vector<float> rgba;         // tile.width × tile.height × 4, linear, alpha 1, row 0 at the top
+    std::vector<uint32_t> coverage;  // tile.width × tile.height ids; empty unless coverage was asked for
 };
 
 // Row-major tiles of at most tileSize × tileSize covering width × height.

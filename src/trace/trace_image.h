@@ -14,8 +14,8 @@
 namespace shadelab::trace {
 
 struct TraceOutput {
-    ImageF color;                       // linear RGB, alpha 1, row 0 at the top
-    std::vector<uint32_t> coverage;     // width × height ids (scene/coverage.h); empty unless settings.coverage
+    ImageF color;                    // linear RGB, alpha 1, row 0 at the top
+    std::vector<uint32_t> coverage;  // width × height ids (scene/coverage.h); empty unless settings.coverage
 };
 
 // Renders with resolveThreads(settings) workers. `progress`, when set, is called on the calling thread

@@ -1,12 +1,12 @@
 // Whole-image tracing: determinism across thread counts and tilings (floats, 8-bit pixels and PNG bytes),
 // the k×k supersampling grid, the progressive API (every tile once, cancel, restart, progress), and the
 // validation of TraceSettings. Failing image comparisons leave both images in the test output folder.
+#include "trace/trace_image.h"
 #include "image/encode.h"
 #include "image/png.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
 #include "trace/progressive_trace.h"
-#include "trace/trace_image.h"
 #include "trace/trace_test_util.h"
 
 #include <gtest/gtest.h>
@@ -43,8 +43,13 @@ Scene busyScene() {
     glass.kt = glm::vec3(0.9f);
     Material mirror = test::plainMaterial(glm::vec3(0.0f));
     mirror.kr = glm::vec3(0.9f);
-    sc.spheres = {Sphere{"glass", {1.3f, 0.6f, 1.0f}, 0.6f, glass}, Sphere{"mirror", {-1.5f, 0.8f, -0.5f}, 0.8f, mirror}};
-    Plane floor{"floor", {0, 1, 0}, 0.0f, test::plainMaterial(glm::vec3(0.1f), glm::vec3(0.8f)), Checker{{0.1f, 0.1f, 0.3f}, 0.5f}};
+    sc.spheres = {Sphere{"glass", {1.3f, 0.6f, 1.0f}, 0.6f, glass},
+                  Sphere{"mirror", {-1.5f, 0.8f, -0.5f}, 0.8f, mirror}};
+    Plane floor{"floor",
+                {0, 1, 0},
+                0.0f,
+                test::plainMaterial(glm::vec3(0.1f), glm::vec3(0.8f)),
+                Checker{{0.1f, 0.1f, 0.3f}, 0.5f}};
     floor.material.kr = glm::vec3(0.2f);
     sc.planes = {floor};
     sc.meshes = {Mesh{}, Mesh{}};
@@ -128,15 +133,17 @@ TEST(TraceDeterminism, SupersamplingAveragesTheFixedGrid) {
             uint32_t centreId = 0;
             for (int b = 0; b < k; ++b)
                 for (int a = 0; a < k; ++a) {
-                    const PrimarySample ps = wi.primary(
-                        Ray{v.eye, shading::cameraRayDirection(v.forward, v.right, v.up, v.tanHalfFovY, float(k * W),
-                                                               float(k * H), float(k * i + a) + 0.5f, float(k * j + b) + 0.5f)});
+                    const PrimarySample ps =
+                        wi.primary(Ray{v.eye, shading::cameraRayDirection(
+                                                  v.forward, v.right, v.up, v.tanHalfFovY, float(k * W), float(k * H),
+                                                  float(k * i + a) + 0.5f, float(k * j + b) + 0.5f)});
                     sum += ps.color;
                     if (a == k / 2 && b == k / 2) centreId = ps.coverage;
                 }
             const glm::vec3 mean = sum / float(k * k);
             const float* p = out.color.pixel(i, j);
-            EXPECT_TRUE(p[0] == mean.x && p[1] == mean.y && p[2] == mean.z && p[3] == 1.0f) << "pixel " << i << "," << j;
+            EXPECT_TRUE(p[0] == mean.x && p[1] == mean.y && p[2] == mean.z && p[3] == 1.0f)
+                << "pixel " << i << "," << j;
             EXPECT_EQ(out.coverage[size_t(j * W + i)], centreId) << "coverage comes from sample (k/2, k/2)";
         }
     EXPECT_GT(checked, 50);
@@ -179,7 +186,8 @@ TraceOutput collect(ProgressiveTrace& pt, const TraceSettings& s) {
     }
     EXPECT_TRUE(pt.done()) << "not done after 60 s";
     EXPECT_EQ(pt.progress(), 1.0f);
-    for (size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], 1) << "tile " << i << " delivered " << seen[i] << " times";
+    for (size_t i = 0; i < seen.size(); ++i)
+        EXPECT_EQ(seen[i], 1) << "tile " << i << " delivered " << seen[i] << " times";
     std::vector<TileResult> more;
     EXPECT_EQ(pt.poll(more), 0u) << "tiles delivered after done()";
     return out;
@@ -206,7 +214,7 @@ TEST(ProgressiveTraceApi, EveryTileOnceAndTheSameImageAsTraceImage) {
 
 TEST(ProgressiveTraceApi, CancelReturnsPromptlyAndRestartWorks) {
     const auto ts = std::make_shared<const TraceScene>(busyScene());
-    TraceSettings heavy = settings(640, 360, 2, 16);   // seconds of work: cancel must cut it short
+    TraceSettings heavy = settings(640, 360, 2, 16);  // seconds of work: cancel must cut it short
     ProgressiveTrace pt;
     pt.start(ts, heavy);
     std::vector<TileResult> first;
@@ -249,7 +257,8 @@ TEST(TraceDeterminism, ReusedMeshBvhGivesTheSameImage) {
     edited.meshes[0].parts[0].material.md = {0.2f, 0.7f, 0.3f};
     edited.lights[0].color = {1.0f, 0.8f, 0.6f};
     const TraceSettings s = settings(64, 36, 2);
-    EXPECT_TRUE(identical(traceImage(TraceScene(edited, first.meshBvh()), s), traceImage(TraceScene(edited), s), "reuse"));
+    EXPECT_TRUE(
+        identical(traceImage(TraceScene(edited, first.meshBvh()), s), traceImage(TraceScene(edited), s), "reuse"));
     EXPECT_FALSE(identical(traceImage(first, s), traceImage(TraceScene(edited), s), "reuse_control", false));
 }
 

@@ -20,9 +20,9 @@ enum class HitKind : uint8_t { Sphere, Plane, Triangle };
 
 // A ray's nearest hit. For triangles `index` is a MeshBvh slot and b0..b2 its barycentrics.
 struct Hit {
-    float t = 0.0f;             // ray parameter
+    float t = 0.0f;  // ray parameter
     HitKind kind = HitKind::Sphere;
-    uint32_t index = 0;         // sphere index, plane index, or MeshBvh slot
+    uint32_t index = 0;  // sphere index, plane index, or MeshBvh slot
     float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
 };
 

@@ -23,10 +23,12 @@ void validate(const TraceSettings& s) {
         throw std::invalid_argument("--spp must be in [1, 4096], got " + std::to_string(s.spp));
     const int k = samplesPerAxis(s);
     if (k * k != s.spp)
-        throw std::invalid_argument("--spp must be a perfect square (1, 4, 9, 16, ...) for the fixed k x k "
-                                    "sample grid both renderers share, got " + std::to_string(s.spp) +
-                                    "; nearest: " + std::to_string(k * k) + " or " + std::to_string((k + 1) * (k + 1)));
-    if (s.threads < 0) throw std::invalid_argument("--threads must be >= 0 (0 = all cores), got " + std::to_string(s.threads));
+        throw std::invalid_argument(
+            "--spp must be a perfect square (1, 4, 9, 16, ...) for the fixed k x k "
+            "sample grid both renderers share, got " +
+            std::to_string(s.spp) + "; nearest: " + std::to_string(k * k) + " or " + std::to_string((k + 1) * (k + 1)));
+    if (s.threads < 0)
+        throw std::invalid_argument("--threads must be >= 0 (0 = all cores), got " + std::to_string(s.threads));
     if (s.maxDepth < -1 || s.maxDepth > 64)
         throw std::invalid_argument("--depth must be in [0, 64], got " + std::to_string(s.maxDepth));
     if (!(s.rayTree.minWeight >= 0.0f && s.rayTree.minWeight <= 1.0f))

@@ -19,14 +19,14 @@ struct RayTreeLimits {
 };
 
 struct TraceSettings {
-    int width = 1280;           // pixels, >= 1
-    int height = 720;           // pixels, >= 1
-    int spp = 1;                // samples per pixel: a perfect square k², a fixed k×k grid in each pixel
-    int threads = 0;            // worker threads; 0 = std::thread::hardware_concurrency()
-    int maxDepth = -1;          // secondary-ray depth, >= 0; -1 = the scene's maxDepth
-    int tileSize = 32;          // tile edge, pixels, >= 1
-    bool coverage = true;       // also fill the coverage buffer
-    RayTreeLimits rayTree;      // pruning of secondary rays (weight threshold, per-sample ray budget)
+    int width = 1280;       // pixels, >= 1
+    int height = 720;       // pixels, >= 1
+    int spp = 1;            // samples per pixel: a perfect square k², a fixed k×k grid in each pixel
+    int threads = 0;        // worker threads; 0 = std::thread::hardware_concurrency()
+    int maxDepth = -1;      // secondary-ray depth, >= 0; -1 = the scene's maxDepth
+    int tileSize = 32;      // tile edge, pixels, >= 1
+    bool coverage = true;   // also fill the coverage buffer
+    RayTreeLimits rayTree;  // pruning of secondary rays (weight threshold, per-sample ray budget)
 };
 
 // Throws std::invalid_argument with a message fit for the command line (e.g. "--spp must be a perfect

@@ -54,20 +54,20 @@ inline MeshPart makePart(std::vector<glm::vec3> positions, std::vector<uint32_t>
 inline MeshPart cubePart(glm::vec3 lo, glm::vec3 hi, const Material& m = Material{}) {
     std::vector<glm::vec3> v;
     for (int i = 0; i < 8; ++i) v.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-    std::vector<uint32_t> idx = {0, 2, 3, 0, 3, 1,   4, 5, 7, 4, 7, 6,   0, 1, 5, 0, 5, 4,
-                                 2, 6, 7, 2, 7, 3,   0, 4, 6, 0, 6, 2,   1, 3, 7, 1, 7, 5};
+    std::vector<uint32_t> idx = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                                 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
     return makePart(std::move(v), std::move(idx), 0.5f * (lo + hi), m);
 }
 
 // An icosahedron subdivided `levels` times, vertices pushed onto the sphere; counter-clockwise outward.
 inline MeshPart icospherePart(glm::vec3 c, float r, int levels, const Material& m = Material{}) {
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    std::vector<glm::vec3> unit = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                   {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<glm::vec3> unit = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                   {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
     for (glm::vec3& u : unit) u = glm::normalize(u);
-    std::vector<uint32_t> idx = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2,
-                                 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5,
-                                 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+    std::vector<uint32_t> idx = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                                 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                                 6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
     for (int l = 0; l < levels; ++l) {
         std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
         auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -104,9 +104,7 @@ inline MeshPart fanPart(glm::vec3 apex, float r, float ringZ, int n) {
 }
 
 // Where the Debian package assimp-testmodels puts its glTF 2.0 files.
-inline std::string modelPath(const std::string& relative) {
-    return "/usr/share/assimp/models/glTF2/" + relative;
-}
+inline std::string modelPath(const std::string& relative) { return "/usr/share/assimp/models/glTF2/" + relative; }
 
 // A failing case's evidence: build/test-output/trace_test/<name>.png, path printed.
 inline std::string writeEvidence(const std::string& name, const ImageF& img) {

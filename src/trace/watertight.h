@@ -16,7 +16,7 @@ struct WatertightRay {
     float org[3];
     int kx, ky, kz;
     float Sx, Sy, Sz;
-    float ox, oy, oz;   // org[kx], org[ky], org[kz]: the test reads only the permuted components it needs
+    float ox, oy, oz;  // org[kx], org[ky], org[kz]: the test reads only the permuted components it needs
 };
 
 inline WatertightRay makeWatertightRay(const Ray& ray) {
@@ -41,7 +41,7 @@ inline WatertightRay makeWatertightRay(const Ray& ray) {
 }
 
 struct TriangleHit {
-    float t;        // ray parameter, > 0
+    float t;           // ray parameter, > 0
     float b0, b1, b2;  // barycentric weights of v0, v1, v2 (sum 1 up to rounding)
 };
 
@@ -72,7 +72,7 @@ inline std::optional<TriangleHit> intersectTriangle(const WatertightRay& r, cons
     }
     if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return std::nullopt;
     const float det = U + V + W;
-    if (det == 0.0f) return std::nullopt;   // the ray lies in the triangle's plane
+    if (det == 0.0f) return std::nullopt;  // the ray lies in the triangle's plane
 
     // Scaled hit distance from the sheared z coordinates.
     const float Az = r.Sz * Akz, Bz = r.Sz * Bkz, Cz = r.Sz * Ckz;

@@ -8,20 +8,20 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
-#include <algorithm>
-#include <cerrno>
-#include <csignal>
-#include <cstring>
 #include <fcntl.h>
-#include <filesystem>
-#include <fstream>
-#include <string>
 #include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <sys/un.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -126,8 +126,9 @@ TEST_F(AtomicFileTest, ReadOnlyDirectoryThrowsAndKeepsContent) {
     writeFileAtomic(path("out.txt"), "original");
     // Read-only for everyone. Root ignores folder permissions, so as root the write is attempted in a
     // child process that has dropped to the unprivileged user `nobody`.
-    fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-                              fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec,
+    fs::permissions(dir_,
+                    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read | fs::perms::group_exec |
+                        fs::perms::others_read | fs::perms::others_exec,
                     fs::perm_options::replace);
     if (::geteuid() == 0) {
         pid_t pid = ::fork();
@@ -410,7 +411,8 @@ TEST_F(AtomicFileTest, SignalDuringWriteLeavesNoTemporary) {
             // The process ends by the signal itself, so its parent sees the usual status (130, 143, 129).
             EXPECT_TRUE(run.killedBySignal) << "exit code " << run.exitCode;
             EXPECT_EQ(run.signal, sig);
-            EXPECT_EQ(run.namesDuring, tmpFile ? 1 : 2) << "the named temporary is visible mid-write, an O_TMPFILE is not";
+            EXPECT_EQ(run.namesDuring, tmpFile ? 1 : 2)
+                << "the named temporary is visible mid-write, an O_TMPFILE is not";
             EXPECT_EQ(readFile(path("out.bin")), "original");
             EXPECT_EQ(listDir(), std::vector<std::string>{"out.bin"});
         }

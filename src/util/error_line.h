@@ -8,7 +8,7 @@
 
 namespace shadelab {
 
-inline constexpr size_t kMaxErrorLineChars = 300;   // characters (bytes) before the "…"
+inline constexpr size_t kMaxErrorLineChars = 300;  // characters (bytes) before the "…"
 
 // `text` with control characters (< 0x20, 0x7f) written as \n, \t, \r or \xNN, cut to at most `cap` bytes
 // (on a UTF-8 character boundary) and ended with "…" when cut.

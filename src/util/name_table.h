@@ -15,7 +15,7 @@ template <typename E>
 struct EnumName {
     E value;
     const char* name;
-    bool alias = false;    // accepted on input, never written, not listed among the choices
+    bool alias = false;  // accepted on input, never written, not listed among the choices
 };
 
 // The canonical name of `value`: its first entry that is not an alias.

@@ -5,11 +5,11 @@
 #include "util/atomic_file.h"
 #include "util/input_error.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace shadelab {
 

@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <fcntl.h>
+#include <unistd.h>
+#include <cstdio>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace shadelab;
@@ -49,7 +49,8 @@ TEST_F(OutputFileTest, OutputThatIsAnInputIsRefusedHoweverSpelt) {
     const std::string scene = path("scene.json");
     EXPECT_EQ(refusal(scene, {scene}), scene + ": refusing to overwrite an input with the output (-o)");
     const std::string dotted = (dir_ / "." / "scene.json").string();
-    EXPECT_EQ(refusal(dotted, {scene}), dotted + ": refusing to overwrite an input with the output (-o): it is " + scene);
+    EXPECT_EQ(refusal(dotted, {scene}),
+              dotted + ": refusing to overwrite an input with the output (-o): it is " + scene);
     fs::create_symlink("scene.json", dir_ / "link.json");
     EXPECT_NE(refusal(path("link.json"), {scene}), "");
     fs::create_hard_link(scene, dir_ / "hard.json");

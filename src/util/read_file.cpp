@@ -4,11 +4,11 @@
 #include "util/error_line.h"
 #include "util/input_error.h"
 
-#include <cerrno>
-#include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cerrno>
+#include <cstring>
 
 namespace shadelab {
 namespace {
@@ -21,7 +21,9 @@ const char* fileKind(mode_t mode) {
     return "not a regular file";
 }
 
-std::string notRegular(mode_t mode) { return std::string("cannot read: is ") + fileKind(mode) + ", not a regular file"; }
+std::string notRegular(mode_t mode) {
+    return std::string("cannot read: is ") + fileKind(mode) + ", not a regular file";
+}
 
 std::string overLimit(uint64_t size, uint64_t maxBytes) {
     return "file of " + std::to_string(size) + " bytes exceeds the limit of " + std::to_string(maxBytes) + " bytes";
@@ -70,7 +72,8 @@ std::string readFile(const std::string& path, uint64_t maxBytes) {
         }
         if (n == 0) break;
         if (uint64_t(out.size()) + uint64_t(n) > maxBytes)
-            throw InputError(path, "file grew past the limit of " + std::to_string(maxBytes) + " bytes while being read");
+            throw InputError(path,
+                             "file grew past the limit of " + std::to_string(maxBytes) + " bytes while being read");
         out.append(buf, size_t(n));
     }
     return out;

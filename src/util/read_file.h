@@ -10,11 +10,11 @@ namespace shadelab {
 
 // Size bounds per kind of file, bytes (docs/cli.md "Limits"). glTF files and their side files have theirs
 // in scene/gltf_limits.h.
-inline constexpr uint64_t kMaxSceneFileBytes = uint64_t(64) << 20;     // scene .json
-inline constexpr uint64_t kMaxScriptFileBytes = uint64_t(16) << 20;    // viewer --script .json
-inline constexpr uint64_t kMaxShaderFileBytes = uint64_t(4) << 20;     // one shader source (hot reload)
-inline constexpr uint64_t kMaxPngFileBytes = uint64_t(1) << 30;        // a PNG for compare
-inline constexpr uint64_t kDefaultMaxFileBytes = uint64_t(64) << 20;   // anything else (tests, tools)
+inline constexpr uint64_t kMaxSceneFileBytes = uint64_t(64) << 20;    // scene .json
+inline constexpr uint64_t kMaxScriptFileBytes = uint64_t(16) << 20;   // viewer --script .json
+inline constexpr uint64_t kMaxShaderFileBytes = uint64_t(4) << 20;    // one shader source (hot reload)
+inline constexpr uint64_t kMaxPngFileBytes = uint64_t(1) << 30;       // a PNG for compare
+inline constexpr uint64_t kDefaultMaxFileBytes = uint64_t(64) << 20;  // anything else (tests, tools)
 
 // Throws InputError(path, reason) naming the problem: a NUL in the path; no such file; anything but a
 // regular file (FIFO, device, directory, socket), refused before it is opened and again from the open

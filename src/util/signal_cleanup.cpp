@@ -3,13 +3,13 @@
 // lock-free atomics, unlinkat, sigaction and raise.
 #include "util/signal_cleanup.h"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <fcntl.h>
 #include <mutex>
-#include <unistd.h>
 
 namespace shadelab {
 namespace {

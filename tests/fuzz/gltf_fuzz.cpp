@@ -12,7 +12,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const bool binary = size >= 4 && bytes.compare(0, 4, "glTF") == 0;
     try {
         shadelab::importGltfBytes(bytes, binary, binary ? "fuzz.glb" : "fuzz.gltf");
-    } catch (const shadelab::InputError&) {
-    }
+    } catch (const shadelab::InputError&) {}
     return 0;
 }

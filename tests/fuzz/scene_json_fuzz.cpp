@@ -9,10 +9,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
-        shadelab::Scene s = shadelab::parseSceneJson(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
+        shadelab::Scene s =
+            shadelab::parseSceneJson(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
         // A scene that loads must also save and load again.
         shadelab::parseSceneJson(shadelab::sceneToJson(s), "fuzz-resaved.json");
-    } catch (const shadelab::InputError&) {
-    }
+    } catch (const shadelab::InputError&) {}
     return 0;
 }
