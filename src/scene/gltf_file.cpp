@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <new>
+#include <stdexcept>
 
 namespace shadelab::gltf {
 namespace {
@@ -116,9 +118,19 @@ tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::s
     tinygltf::Model model;
     std::string err, warn;
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    const bool ok =
-        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
-               : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
+    bool ok = false;
+    // tinygltf can throw from inside (a GLB whose buffer has byteLength 0 indexes an empty vector): name the
+    // file and say what went wrong in words, not in the standard library's.
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
+    } catch (const std::bad_alloc&) {
+        throw InputError(name, "out of memory while parsing the glTF");
+    } catch (const std::out_of_range&) {
+        throw InputError(name, "malformed glTF: the parser indexed past the end of an array (an empty buffer?)");
+    } catch (const std::exception& e) {
+        throw InputError(name, std::string("malformed glTF: the parser stopped (") + e.what() + ")");
+    }
     if (!ok) {
         std::vector<std::string> lines;
         appendLines(err, lines);
