@@ -2,6 +2,9 @@
 # Builds the libFuzzer targets with clang + ASan/UBSan in build-fuzz/ and runs each for SECONDS (default 600),
 # seeded with the repository's scenes and Debian's glTF test models. Crashes land in build-fuzz/artifacts/;
 # turn each into a regression test under tests/fuzz/regressions/.
+# The whole-process structural fuzzer is separate and needs no clang:
+#   /usr/bin/python3 tests/fuzz/gltf_mutate.py build/shadelab --cases 3000
+# (mutated glTF/GLB structure through `shadelab render`: exit 0 or 1, one capped line, 10 s, 1 GiB).
 # usage: tests/fuzz/run.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
