@@ -80,7 +80,8 @@ TEST_F(OutputFileTest, DashWritesToStdout) {
     ASSERT_GE(file, 0);
     ::dup2(file, STDOUT_FILENO);
     ::close(file);
-    const std::string bytes("\x89PNG\r\n\x1a\n binary \0 data", 24);
+    static const char kBytes[] = "\x89PNG\r\n\x1a\n binary \0 data";  // an embedded NUL: sized by the array
+    const std::string bytes(kBytes, sizeof kBytes - 1);
     writeOutput("-", bytes.data(), bytes.size());
     ::dup2(saved, STDOUT_FILENO);
     ::close(saved);
