@@ -173,7 +173,9 @@ void setModel(ViewerState& state, ShadingModel model) {
 }
 
 void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects) {
-    if (state.scene.model != model) {
+    // Only Phong ↔ Blinn-Phong have equivalent exponents; pbr reads roughness, not s.
+    const bool lecture = model != ShadingModel::Pbr && state.scene.model != ShadingModel::Pbr;
+    if (lecture && state.scene.model != model) {
         const bool all = allObjects || state.selected == 0;
         for (uint32_t id = 1; id <= objectCount(state.scene); ++id) {
             if (!all && id != state.selected) continue;

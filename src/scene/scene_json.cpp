@@ -34,7 +34,7 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 // ---- 1. Loading materials, camera, lights --------------------------------------------------------------
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior"});
+    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness"});
     return parseMaterialOverride(n);
 }
 
@@ -195,6 +195,9 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("kr")) m.kr = f->rgb();
     if (auto f = n.find("kt")) m.kt = f->rgb();
     if (auto f = n.find("ior")) m.ior = f->positive();
+    if (auto f = n.find("baseColor")) m.baseColor = f->unitRgb();
+    if (auto f = n.find("metallic")) m.metallic = f->inRange(0.0f, 1.0f, false, false);
+    if (auto f = n.find("roughness")) m.roughness = f->inRange(0.0f, 1.0f, false, false);
     return m;
 }
 
@@ -275,8 +278,16 @@ double exact(float f) {
 OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
 
 OJson materialJson(const Material& m) {
-    return {{"ma", vec(m.ma)}, {"md", vec(m.md)}, {"ms", vec(m.ms)},    {"s", exact(m.s)},
-            {"kr", vec(m.kr)}, {"kt", vec(m.kt)}, {"ior", exact(m.ior)}};
+    return {{"ma", vec(m.ma)},
+            {"md", vec(m.md)},
+            {"ms", vec(m.ms)},
+            {"s", exact(m.s)},
+            {"kr", vec(m.kr)},
+            {"kt", vec(m.kt)},
+            {"ior", exact(m.ior)},
+            {"baseColor", vec(m.baseColor)},
+            {"metallic", exact(m.metallic)},
+            {"roughness", exact(m.roughness)}};
 }
 
 OJson overrideJson(const MaterialOverride& m) {
@@ -288,6 +299,9 @@ OJson overrideJson(const MaterialOverride& m) {
     if (m.kr) j["kr"] = vec(*m.kr);
     if (m.kt) j["kt"] = vec(*m.kt);
     if (m.ior) j["ior"] = exact(*m.ior);
+    if (m.baseColor) j["baseColor"] = vec(*m.baseColor);
+    if (m.metallic) j["metallic"] = exact(*m.metallic);
+    if (m.roughness) j["roughness"] = exact(*m.roughness);
     return j;
 }
 
