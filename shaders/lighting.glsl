@@ -28,6 +28,17 @@ SL_FN float specularPhong(vec3 N, vec3 L, vec3 V, float s) {
     return shininessPow(max(dot(R, V), 0.0f), s);
 }
 
+// Energy-conserving Phong lobe (Lewis 1994, "Making Shaders More Physically Plausible"): (s + 2)/2 relative
+// to the π-scaled light of design.md §7; `normalized: true` scales ms by it (shading::surfaceParams).
+SL_FN float phongNormalization(float s) {
+    return (s + 2.0f) / 2.0f;
+}
+
+// Energy-conserving Blinn-Phong lobe (Akenine-Möller et al., Real-Time Rendering, 3rd ed., §7.6): (s + 8)/8.
+SL_FN float blinnPhongNormalization(float s) {
+    return (s + 8.0f) / 8.0f;
+}
+
 // Blinn 1977, half-way vector: max(N·H, 0)^s with H = normalize(L + V), zero on the unlit side.
 SL_FN float specularBlinnPhong(vec3 N, vec3 L, vec3 V, float s) {
     if (dot(N, L) <= 0.0f) return 0.0f;

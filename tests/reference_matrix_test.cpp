@@ -266,3 +266,28 @@ TEST_F(ModelEquality, LambertianSceneIsIdenticalUnderEveryModel) {
         }
     }
 }
+
+// design.md §7's normalised lobes: the factor reaches both renderers (it scales ms in surfaceParams).
+class ReferenceNormalized : public test::GlTest {};
+
+TEST_F(ReferenceNormalized, NormalizedLobesMatchTheReference) {
+    for (ShadingModel model : {ShadingModel::Phong, ShadingModel::BlinnPhong})
+        for (float s : {32.0f, 500.0f}) {
+            Case c{Geometry::Spheres, TermSet::Specular, ShadingModel::Phong, LightRig::OneWhite, 32.0f};
+            c.model = model;
+            c.s = s;
+            Scene scene = makeScene(c);
+            scene.normalized = true;
+            for (Sphere& sp : scene.spheres) sp.material.ms = glm::vec3(0.05f);  // keep the peak near 1
+            scene.planes[0].material.ms = glm::vec3(0.05f);
+            CompareResult r = compareRenders(scene, scene, "normalized_" + caseName(c));
+            EXPECT_TRUE(r.pass) << caseName(c) << "\n" << compareSummary(r);
+        }
+}
+
+TEST_F(ReferenceNegativeControls, NormalizedInOneRendererOnlyFails) {
+    Scene a = makeScene(base_), b = makeScene(base_);
+    b.normalized = true;
+    CompareResult r = compareRenders(a, b, "negative_normalized");
+    EXPECT_FALSE(r.pass) << "a normalised lobe in one renderer passed the gates:\n" << compareSummary(r);
+}

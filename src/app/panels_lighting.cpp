@@ -14,6 +14,10 @@ void drawLightingSection(PanelContext& ctx) {
     if (ImGui::RadioButton("Blinn-Phong  (N·H)^s", &model, 1)) setModel(s, ShadingModel::BlinnPhong);
     ImGui::SameLine();
     if (ImGui::RadioButton("PBR  GGX", &model, 2)) setModel(s, ShadingModel::Pbr);
+    if (s.scene.model != ShadingModel::Pbr) {
+        bool normalized = s.scene.normalized;
+        if (ImGui::Checkbox("normalized lobe  (s+2)/2, (s+8)/8", &normalized)) setNormalized(s, normalized);
+    }
 
     ImGui::TextDisabled("Terms");
     for (size_t i = 0; i < std::size(kTermNames); ++i) {

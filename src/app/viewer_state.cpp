@@ -172,6 +172,11 @@ void setModel(ViewerState& state, ShadingModel model) {
     markChanged(state);
 }
 
+void setNormalized(ViewerState& state, bool normalized) {
+    state.scene.normalized = normalized;
+    markChanged(state);
+}
+
 void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects) {
     // Only Phong ↔ Blinn-Phong have equivalent exponents; pbr reads roughness, not s.
     const bool lecture = model != ShadingModel::Pbr && state.scene.model != ShadingModel::Pbr;

@@ -11,10 +11,11 @@
 
 namespace shadelab::raster {
 
-void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32_t objectId, int model) const {
+void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32_t objectId, int model,
+                                 bool normalized) const {
     // The coefficients shadeLight reads under this model, derived on the CPU exactly as the tracer does.
     const shading::SurfaceParams c =
-        shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness);
+        shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, normalized);
     glUniform3fv(p.uniform("u_ma"), 1, glm::value_ptr(c.ma));
     glUniform3fv(p.uniform("u_md"), 1, glm::value_ptr(c.md));
     glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(c.ms));
@@ -86,7 +87,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         if (int(k) == options.skipRange || outsideClip(frame.viewProj, r.lo, r.hi)) continue;
         const Material& m = scene.meshes[r.mesh].parts[r.part].material;
         const gl::Program& p = objectProgram(programs.mesh, programs.meshEnvironment, -1, int(k), options);
-        setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x);
+        setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
     }
@@ -99,7 +100,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         if (int(i) == options.skipSphere) continue;
         const Sphere& s = scene.spheres[i];
         const gl::Program& p = objectProgram(programs.sphere, programs.sphereEnvironment, int(i), -1, options);
-        setMaterial(p, s.material, sphereCoverageId(scene, i), frame.flags.x);
+        setMaterial(p, s.material, sphereCoverageId(scene, i), frame.flags.x, scene.normalized);
         glUniform3fv(p.uniform("u_center"), 1, glm::value_ptr(s.center));
         glUniform1f(p.uniform("u_radius"), s.radius);
         glDrawArrays(GL_TRIANGLES, 0, 36);
@@ -120,7 +121,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());
             glActiveTexture(GL_TEXTURE0);
         }
-        setMaterial(planeProgram, p.material, planeCoverageId(scene, i), frame.flags.x);
+        setMaterial(planeProgram, p.material, planeCoverageId(scene, i), frame.flags.x, scene.normalized);
         const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
         const glm::vec3 centre = eye - eyeHeight * p.normal;
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);

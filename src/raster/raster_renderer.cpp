@@ -102,6 +102,7 @@ std::vector<float> environmentKey(const Scene& scene, const FrameBlock& frame) {
     key.insert(key.end(), {float(frame.flags.x), float(frame.flags.y), float(frame.flags.z), float(frame.flags.w)});
     push(scene.ambient);
     push(scene.background);
+    key.push_back(scene.normalized ? 1.0f : 0.0f);
     for (int i = 0; i < frame.flags.z; ++i)
         for (const glm::vec4& v : {frame.lightPos[i], frame.lightColor[i], frame.lightAtten[i]})
             key.insert(key.end(), {v.x, v.y, v.z, v.w});

@@ -213,8 +213,9 @@ LightOverride parseLightOverride(const JsonNode& n) {
 Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line)) {
     nlohmann::json doc = parseJsonText(text, file);
     JsonNode root(doc, "", file, warn);
-    root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "terms", "ambient",
-                                          "background", "maxDepth", "raster", "lights", "objects", "materials"});
+    root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "normalized", "terms",
+                                          "ambient", "background", "maxDepth", "raster", "lights", "objects",
+                                          "materials"});
     Scene scene;
     if (auto f = root.find("shadelab")) {
         int version = f->integerIn(1, INT_MAX);
@@ -226,6 +227,7 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
     if (auto f = root.find("notes")) scene.notes = f->string();
     if (auto f = root.find("camera")) scene.camera = parseCamera(*f);
     if (auto f = root.find("model")) scene.model = f->oneOf(kShadingModelNames, "shading model");
+    if (auto f = root.find("normalized")) scene.normalized = f->boolean();
     if (auto f = root.find("terms")) {
         f->requireObject().warnUnknownKeys(canonicalNames(kTermNames));
         for (const EnumName<Term>& term : kTermNames)
@@ -355,6 +357,7 @@ std::string sceneToJson(const Scene& scene) {
     doc["camera"] = {
         {"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)}, {"fovY", exact(c.fovY)}};
     doc["model"] = toString(scene.model);
+    doc["normalized"] = scene.normalized;
     const Terms& t = scene.terms;
     doc["terms"] = OJson::object();
     for (const EnumName<Term>& term : kTermNames) doc["terms"][term.name] = termEnabled(t, term.value);

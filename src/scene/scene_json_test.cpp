@@ -72,6 +72,7 @@ std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
     d.v("camera.target", a.camera.target, b.camera.target);
     d.v("camera.up", a.camera.up, b.camera.up), d.f("camera.fovY", a.camera.fovY, b.camera.fovY);
     d.eq("model", a.model, b.model);
+    d.eq("normalized", a.normalized, b.normalized);
     d.eq("terms.ambient", a.terms.ambient, b.terms.ambient), d.eq("terms.diffuse", a.terms.diffuse, b.terms.diffuse);
     d.eq("terms.specular", a.terms.specular, b.terms.specular);
     d.eq("terms.shadows", a.terms.shadows, b.terms.shadows);
@@ -218,7 +219,8 @@ struct RandomSceneMaker {
         s.camera.target = s.camera.position + unit() * in(0.1f, 10.0f);
         s.camera.up = unit();
         s.camera.fovY = coin() ? in(1e-3f, 179.9f) : 0.1f;
-        s.model = coin() ? ShadingModel::Phong : ShadingModel::BlinnPhong;
+        s.model = coin() ? ShadingModel::Phong : coin() ? ShadingModel::BlinnPhong : ShadingModel::Pbr;
+        s.normalized = coin();
         s.terms = {coin(), coin(), coin(), coin(), coin()};
         s.ambient = rgb(), s.background = rgb(), s.maxDepth = upTo(64);
         if (coin()) {  // else the defaults
@@ -419,6 +421,8 @@ TEST(SceneJson, PbrModelAndMaterialsReadEachOthersFields) {
          "material": {"md": 0.2, "baseColor": 0.9, "metallic": 0.5}},
         {"type": "sphere", "center": [0, 1, 0], "radius": 1}]})");
     EXPECT_EQ(s.model, ShadingModel::Pbr);
+    EXPECT_FALSE(s.normalized);
+    EXPECT_TRUE(parse(R"({"normalized": true})").normalized);
     EXPECT_STREQ(toString(*parseShadingModel("pbr")), "pbr");
     ASSERT_EQ(s.spheres.size(), 4u);
     const Material& phongOnly = s.spheres[0].material;

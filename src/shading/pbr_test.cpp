@@ -1,5 +1,6 @@
 // The pbr BRDF of shaders/lighting.glsl against closed forms (issue 12): Schlick's end points, GGX's
-// normalisation, white Lambert's albedo of 1, GGX's albedo loss, and the light units of design.md §7.
+// normalisation, white Lambert's albedo of 1, GGX's albedo loss, and the light units of design.md §7;
+// and the normalised Phong / Blinn-Phong lobes of §7.
 #include "shading/local_illumination.h"
 
 #include <gtest/gtest.h>
@@ -115,4 +116,32 @@ TEST(Pbr, SpecularPeaksAtTheMirrorDirectionAndVanishesBelowTheHorizon) {
     EXPECT_EQ(
         shadeLight(kUp, vec3(0.3f, 0.0f, -1.0f), V, vec3(1.0f), vec3(0.5f), vec3(1.0f), 0.3f, SL_MODEL_PBR, true, true),
         vec3(0.0f));
+}
+
+TEST(NormalizedLobes, ScaleTheLecturesSpecularCoefficientOnly) {
+    const vec3 ms(0.5f, 0.25f, 1.0f);
+    const SurfaceParams phong =
+        surfaceParams(SL_MODEL_PHONG, vec3(0.1f), vec3(0.7f), ms, 32.0f, vec3(0.7f), 0.0f, 0.5f, true);
+    EXPECT_EQ(phong.ms, ms * 17.0f);  // (32 + 2) / 2
+    EXPECT_EQ(phong.md, vec3(0.7f));
+    const SurfaceParams blinn =
+        surfaceParams(SL_MODEL_BLINN_PHONG, vec3(0.1f), vec3(0.7f), ms, 32.0f, vec3(0.7f), 0.0f, 0.5f, true);
+    EXPECT_EQ(blinn.ms, ms * 5.0f);  // (32 + 8) / 8
+    const SurfaceParams off =
+        surfaceParams(SL_MODEL_PHONG, vec3(0.1f), vec3(0.7f), ms, 32.0f, vec3(0.7f), 0.0f, 0.5f, false);
+    EXPECT_EQ(off.ms, ms);  // the lecture's formula stays the default
+    const SurfaceParams pbr =
+        surfaceParams(SL_MODEL_PBR, vec3(0.1f), vec3(0.7f), ms, 32.0f, vec3(0.7f), 0.0f, 0.5f, true);
+    EXPECT_EQ(pbr.ms, vec3(0.04f));
+}
+
+TEST(NormalizedLobes, PhongAlbedoAtNormalIncidenceIsAboutOne) {
+    // V = N: R·V = N·L, so (1/π) ∫ (s+2)/2 (N·L)^s dω = (s + 2)/(s + 1), which tends to 1 as s grows; the
+    // unnormalised lobe's 2/(s + 1) tends to 0.
+    for (float s : {10.0f, 100.0f}) {
+        const float normalized = albedo(1.0f, SL_MODEL_PHONG, vec3(0.0f), vec3(phongNormalization(s)), s, false, true);
+        EXPECT_NEAR(normalized, (s + 2.0f) / (s + 1.0f), 1e-2f) << "s " << s;
+        const float lecture = albedo(1.0f, SL_MODEL_PHONG, vec3(0.0f), vec3(1.0f), s, false, true);
+        EXPECT_NEAR(lecture, 2.0f / (s + 1.0f), 1e-2f) << "s " << s;
+    }
 }

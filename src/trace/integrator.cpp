@@ -142,7 +142,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s) const {
     const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
     shading::SurfaceParams params =
-        shading::surfaceParams(model_, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness);
+        shading::surfaceParams(model_, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
     if (model_ == shading::SL_MODEL_PBR) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     const bool lit = sc.terms.diffuse || sc.terms.specular;
     // Lights go to shadeLocal in batches of kMaxLights (one batch for every scene the rasterizer takes).
