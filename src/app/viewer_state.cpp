@@ -28,6 +28,9 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
     if (m.kr != before.kr) o.kr = m.kr;
     if (m.kt != before.kt) o.kt = m.kt;
     if (m.ior != before.ior) o.ior = m.ior;
+    if (m.baseColor != before.baseColor) o.baseColor = m.baseColor;
+    if (m.metallic != before.metallic) o.metallic = m.metallic;
+    if (m.roughness != before.roughness) o.roughness = m.roughness;
     for (MeshPart& p : mesh.parts) o.applyTo(p.material);
 }
 
