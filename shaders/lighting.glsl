@@ -4,6 +4,10 @@
 
 const int SL_MODEL_PHONG = 0;
 const int SL_MODEL_BLINN_PHONG = 1;
+const int SL_MODEL_PBR = 2;  // glTF 2.0 metallic-roughness (design.md §7): md = diffuse colour, ms = F0, s = roughness
+
+const float SL_PI = 3.14159265358979f;
+const float SL_MIN_ALPHA = 0.002025f;  // Filament's MIN_ROUGHNESS: α = 0.045², keeps D_GGX finite in fp32
 
 // x^s with x^0 = 1 for every x (design.md §1): GLSL leaves pow(0, 0) undefined, so s = 0 never reaches pow.
 SL_FN float shininessPow(float x, float s) {
@@ -24,6 +28,17 @@ SL_FN float specularPhong(vec3 N, vec3 L, vec3 V, float s) {
     return shininessPow(max(dot(R, V), 0.0f), s);
 }
 
+// Energy-conserving Phong lobe (Lewis 1994, "Making Shaders More Physically Plausible"): (s + 2)/2 relative
+// to the π-scaled light of design.md §7; `normalized: true` scales ms by it (shading::surfaceParams).
+SL_FN float phongNormalization(float s) {
+    return (s + 2.0f) / 2.0f;
+}
+
+// Energy-conserving Blinn-Phong lobe (Akenine-Möller et al., Real-Time Rendering, 3rd ed., §7.6): (s + 8)/8.
+SL_FN float blinnPhongNormalization(float s) {
+    return (s + 8.0f) / 8.0f;
+}
+
 // Blinn 1977, half-way vector: max(N·H, 0)^s with H = normalize(L + V), zero on the unlit side.
 SL_FN float specularBlinnPhong(vec3 N, vec3 L, vec3 V, float s) {
     if (dot(N, L) <= 0.0f) return 0.0f;
@@ -31,8 +46,69 @@ SL_FN float specularBlinnPhong(vec3 N, vec3 L, vec3 V, float s) {
     return shininessPow(max(dot(N, H), 0.0f), s);
 }
 
+// Trowbridge & Reitz 1975, Walter et al. 2007 (GGX): normal distribution D(h) with α = roughness²,
+// D = α² / (π ((1 − N·H²) + (N·H α)²)²). The caller passes 1 − N·H² as |N × H|² (Filament brdf.fs): near the
+// peak of a sharp lobe 1 − N·H² would cancel to a few ulps, and GLSL and C++ would round it apart.
+SL_FN float D_GGX(float NoH, float oneMinusNoHSquared, float a) {
+    float aNoH = NoH * a;
+    float k = a / (oneMinusNoHSquared + aNoH * aNoH);
+    return k * k * (1.0f / SL_PI);
+}
+
+// Heitz 2014, "Understanding the Masking-Shadowing Function", height-correlated Smith G2 folded with the
+// microfacet denominator: V = G2 / (4 N·L N·V) (Filament brdf.fs, glTF 2.0 Appendix B).
+SL_FN float V_SmithGGXCorrelated(float NoV, float NoL, float a) {
+    float a2 = a * a;
+    float GGXV = NoL * sqrt(NoV * NoV * (1.0f - a2) + a2);
+    float GGXL = NoV * sqrt(NoL * NoL * (1.0f - a2) + a2);
+    return 0.5f / (GGXV + GGXL);
+}
+
+// Schlick 1994: F = F0 + (1 − F0)(1 − V·H)^5, the fifth power multiplied out (no pow: GLSL ≡ C++ exactly).
+SL_FN vec3 F_Schlick(vec3 f0, float VoH) {
+    float x = 1.0f - VoH;
+    float x2 = x * x;
+    float x5 = x2 * x2 * x;
+    return f0 + (vec3(1.0f) - f0) * x5;
+}
+
+// Lambert 1760: the diffuse BRDF 1/π. Under the π-scaled light of design.md §7 it contributes exactly md·N·L.
+SL_FN float Fd_Lambert() {
+    return 1.0f / SL_PI;
+}
+
+// glTF 2.0 Appendix B, metallic-roughness: the diffuse colour baseColor·(1 − metallic); metals have none.
+SL_FN vec3 pbrDiffuseColor(vec3 baseColor, float metallic) {
+    return baseColor * (1.0f - metallic);
+}
+
+// glTF 2.0 Appendix B: F0 = mix(0.04, baseColor, metallic); dielectrics reflect 4 % at normal incidence.
+SL_FN vec3 pbrF0(vec3 baseColor, float metallic) {
+    return mix(vec3(0.04f), baseColor, metallic);
+}
+
+// glTF 2.0 Appendix B: α = roughness², clamped so that a mirror-smooth material keeps a finite D.
+SL_FN float pbrAlpha(float roughness) {
+    return max(roughness * roughness, SL_MIN_ALPHA);
+}
+
+// Cook & Torrance 1982 with GGX (glTF 2.0 Appendix B): the specular BRDF D·V·F, unit vectors, N·L > 0.
+SL_FN vec3 specularGGX(vec3 N, vec3 L, vec3 V, vec3 f0, float roughness) {
+    vec3 H = normalize(L + V);
+    float a = pbrAlpha(roughness);
+    float NoL = max(dot(N, L), 0.0f);
+    float NoV = max(dot(N, V), 1e-4f);
+    float NoH = max(dot(N, H), 0.0f);
+    float VoH = max(dot(V, H), 0.0f);
+    vec3 NxH = cross(N, H);
+    return D_GGX(NoH, dot(NxH, NxH), a) * V_SmithGGXCorrelated(NoV, NoL, a) * F_Schlick(f0, VoH);
+}
+
 // One light's contribution Il ⊙ (md·max(N·L,0) + ms·spec), before visibility. N, L, V need not be unit:
 // both renderers hand in raw vectors and this normalises them, so the order of operations is shared.
+// SL_MODEL_PBR reads md as the diffuse colour, ms as F0 and s as roughness (pbrDiffuseColor, pbrF0) and
+// returns π·f(L,V)·Il·N·L (design.md §7): π·Fd_Lambert() = 1, so its diffuse term is the lecture's md·N·L,
+// taken by (1 − F) under the specular layer (glTF 2.0 Appendix B, fresnel_mix) when that layer is on.
 SL_FN vec3 shadeLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s, int model,
                       bool diffuseOn, bool specularOn) {
     N = normalize(N);
@@ -42,8 +118,15 @@ SL_FN vec3 shadeLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s
     vec3 I = vec3(0.0f);
     if (diffuseOn) I = I + md * max(NoL, 0.0f);
     if (specularOn) {
-        float spec = model == SL_MODEL_PHONG ? specularPhong(N, L, V, s) : specularBlinnPhong(N, L, V, s);
-        I = I + ms * spec;
+        if (model == SL_MODEL_PBR) {
+            if (NoL > 0.0f) {
+                vec3 F = F_Schlick(ms, max(dot(V, normalize(L + V)), 0.0f));
+                I = I * (vec3(1.0f) - F) + SL_PI * NoL * specularGGX(N, L, V, ms, s);
+            }
+        } else {
+            float spec = model == SL_MODEL_PHONG ? specularPhong(N, L, V, s) : specularBlinnPhong(N, L, V, s);
+            I = I + ms * spec;
+        }
     }
     return Il * I;
 }

@@ -5,7 +5,7 @@
 uniform sampler2D t_N;        // xyz: N
 uniform sampler2D t_L;        // xyz: L
 uniform sampler2D t_V;        // xyz: V
-uniform sampler2D t_params;   // x: s, y: model (0 Phong, 1 Blinn-Phong)
+uniform sampler2D t_params;   // x: s (pbr: roughness), y: model (0 Phong, 1 Blinn-Phong, 2 pbr), z: metallic
 uniform vec3 u_Il;
 uniform vec3 u_md;
 uniform vec3 u_ms;
@@ -19,6 +19,15 @@ void main() {
     vec3 V = texelFetch(t_V, p, 0).xyz;
     vec4 params = texelFetch(t_params, p, 0);
     int model = int(params.y + 0.5f);
+    if (model == SL_MODEL_PBR) {
+        // u_md is the base colour: the derived diffuse colour and F0 are part of what is proved equal.
+        vec3 md = pbrDiffuseColor(u_md, params.z);
+        vec3 f0 = pbrF0(u_md, params.z);
+        vec3 I = shadeLight(N, L, V, u_Il, md, f0, params.x, model, true, true);
+        vec3 spec = specularGGX(normalize(N), normalize(L), normalize(V), f0, params.x);
+        o_result = vec4(I, spec.y);
+        return;
+    }
     vec3 I = shadeLight(N, L, V, u_Il, u_md, u_ms, params.x, model, true, true);
     float spec = model == SL_MODEL_PHONG ? specularPhong(normalize(N), normalize(L), normalize(V), params.x)
                                          : specularBlinnPhong(normalize(N), normalize(L), normalize(V), params.x);

@@ -129,6 +129,31 @@ TEST(AppState, ModelSwitchAndEquivalentExponentConversion) {
     EXPECT_NEAR(s.scene.spheres[red - 1].material.s, 32.0f, 1e-2f);
     switchModelKeepingHighlights(s, ShadingModel::Phong, true);  // already Phong: exponents untouched
     EXPECT_NEAR(s.scene.spheres[red - 1].material.s, 32.0f, 1e-2f);
+    // pbr reads roughness, not s: switching to it and back converts no exponent.
+    const float before = s.scene.spheres[red - 1].material.s;
+    switchModelKeepingHighlights(s, ShadingModel::Pbr, true);
+    EXPECT_EQ(s.scene.model, ShadingModel::Pbr);
+    switchModelKeepingHighlights(s, ShadingModel::BlinnPhong, true);
+    EXPECT_EQ(s.scene.spheres[red - 1].material.s, before);
+    setNormalized(s, true);
+    EXPECT_TRUE(s.scene.normalized);
+}
+
+TEST(AppState, MeshPbrEditsGoToTheOverride) {
+    const std::string path = test::sourcePath("assets/scenes/torus.json");
+    ViewerState s = makeViewerState(loadScene(path), path);
+    const uint32_t torus = idOf(s, "torus");
+    Material m = objectMaterial(s.scene, torus);
+    m.roughness = 0.125f;
+    m.metallic = 1.0f;
+    ASSERT_TRUE(setObjectMaterial(s, torus, m));
+    const Mesh& mesh = s.scene.meshes[0];
+    EXPECT_EQ(mesh.material.roughness, 0.125f);
+    EXPECT_EQ(mesh.material.metallic, 1.0f);
+    EXPECT_FALSE(mesh.material.baseColor.has_value());
+    for (const MeshPart& p : mesh.parts) EXPECT_EQ(p.material.roughness, 0.125f);
+    const Scene back = parseSceneJson(sceneToJson(s.scene), path);
+    EXPECT_EQ(back.meshes[0].material.roughness, 0.125f);
 }
 
 TEST(AppState, PresetsComeFromTheClassicTable) {

@@ -186,7 +186,7 @@ TEST(Cli, EnumFlagsListTheirWordsAndAcceptTheSameAliasesAsSceneFiles) {
     const std::string scene = test::sourcePath("assets/scenes/default.json");
     const std::pair<const char*, const char*> cases[] = {
         {"--encoding gamma", "shadelab: usage error: --encoding: expected srgb or linear, got 'gamma'"},
-        {"--model gouraud", "shadelab: usage error: --model: expected phong or blinn-phong, got 'gouraud'"},
+        {"--model gouraud", "shadelab: usage error: --model: expected phong, blinn-phong or pbr, got 'gouraud'"},
         {"--renderer gpu", "shadelab: usage error: --renderer: expected raster, trace or both, got 'gpu'"},
         {"--terms ambient,glow",
          "shadelab: usage error: --terms: unknown term 'glow'; expected ambient, diffuse, "

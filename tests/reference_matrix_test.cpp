@@ -2,7 +2,8 @@
 // {ambient, +diffuse, +specular} × {Phong, Blinn-Phong} × {1 white light, 3 coloured lights} ×
 // {s = 1, 32, 500} is rendered headless through EGL and by the CPU tracer, and gated as in design.md §4.
 // Negative controls below must fail the same gates. Failures leave both images, the heatmap and the
-// JSON report in build/test-output/reference_matrix_test/.
+// JSON report in build/test-output/reference_matrix_test/. Issue 12 adds the pbr model: {spheres, mesh} ×
+// roughness {0.2, 0.5, 1} × metallic {0, 1} × {1, 3 lights}, its controls, and the model-equality check.
 #include "gl_fixture.h"
 #include "image/compare.h"
 #include "image/compare_report.h"
@@ -12,6 +13,8 @@
 #include "scene/scene_load.h"
 #include "trace/trace_image.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -154,4 +157,137 @@ TEST_F(ReferenceNegativeControls, PhongAgainstBlinnPhongFails) {
     b.model = ShadingModel::BlinnPhong;
     CompareResult r = compareRenders(a, b, "negative_phong_vs_blinn");
     EXPECT_FALSE(r.pass) << "Phong against Blinn-Phong passed the gates:\n" << compareSummary(r);
+}
+
+// ---- The pbr model (issue 12) --------------------------------------------------------------------------
+namespace {
+
+struct PbrCase {
+    Geometry geometry;
+    LightRig lights;
+    float roughness;
+    float metallic;
+};
+
+std::string pbrCaseName(const PbrCase& c) {
+    return std::string(c.geometry == Geometry::Spheres ? "spheres" : "mesh") +
+           (c.lights == LightRig::OneWhite ? "_1white" : "_3coloured") + "_r" +
+           std::to_string(int(c.roughness * 100.0f + 0.5f)) + "_m" + std::to_string(int(c.metallic));
+}
+
+// Every material's base colour is its diffuse colour (the checker's second tiles too: md2).
+void setPbr(Material& m, float roughness, float metallic) {
+    m.baseColor = m.md;
+    m.roughness = roughness;
+    m.metallic = metallic;
+}
+
+Scene makePbrScene(const PbrCase& c) {
+    Scene scene = makeScene({c.geometry, TermSet::Specular, ShadingModel::Pbr, c.lights, 32.0f});
+    for (Sphere& s : scene.spheres) setPbr(s.material, c.roughness, c.metallic);
+    for (Plane& p : scene.planes) setPbr(p.material, c.roughness, c.metallic);
+    for (Mesh& m : scene.meshes)
+        for (MeshPart& part : m.parts) setPbr(part.material, c.roughness, c.metallic);
+    return scene;
+}
+
+std::vector<PbrCase> allPbrCases() {
+    std::vector<PbrCase> cases;
+    for (Geometry g : {Geometry::Spheres, Geometry::Mesh})
+        for (LightRig l : {LightRig::OneWhite, LightRig::ThreeColoured})
+            for (float r : {0.2f, 0.5f, 1.0f})
+                for (float m : {0.0f, 1.0f}) cases.push_back({g, l, r, m});
+    return cases;
+}
+
+}  // namespace
+
+class ReferencePbr : public test::GlTest, public ::testing::WithParamInterface<PbrCase> {};
+
+TEST_P(ReferencePbr, RasterMatchesReference) {
+    const PbrCase& c = GetParam();
+    Scene scene = makePbrScene(c);
+    CompareResult r = compareRenders(scene, scene, "pbr_" + pbrCaseName(c));
+    EXPECT_TRUE(r.pass) << compareSummary(r);
+    RecordProperty("interior_max", r.interior.max);
+    RecordProperty("interior_fraction_over", std::to_string(r.interior.fractionOver()));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllCombinations, ReferencePbr, ::testing::ValuesIn(allPbrCases()),
+                         [](const ::testing::TestParamInfo<PbrCase>& p) { return pbrCaseName(p.param); });
+
+TEST_F(ReferenceNegativeControls, PbrRoughnessTenPercentOffFails) {
+    const PbrCase c{Geometry::Spheres, LightRig::OneWhite, 0.5f, 0.0f};
+    Scene a = makePbrScene(c), b = makePbrScene(c);
+    for (Sphere& s : b.spheres) s.material.roughness *= 1.1f;
+    b.planes[0].material.roughness *= 1.1f;
+    CompareResult r = compareRenders(a, b, "negative_pbr_roughness");
+    EXPECT_FALSE(r.pass) << "a 10% roughness change passed the gates:\n" << compareSummary(r);
+}
+
+TEST_F(ReferenceNegativeControls, PbrMetallicFlippedFails) {
+    const PbrCase c{Geometry::Spheres, LightRig::OneWhite, 0.5f, 0.0f};
+    Scene a = makePbrScene(c), b = makePbrScene(c);
+    for (Sphere& s : b.spheres) s.material.metallic = 1.0f - s.material.metallic;
+    b.planes[0].material.metallic = 1.0f - b.planes[0].material.metallic;
+    CompareResult r = compareRenders(a, b, "negative_pbr_metallic");
+    EXPECT_FALSE(r.pass) << "flipping metallic passed the gates:\n" << compareSummary(r);
+}
+
+// design.md §7, model equality: with π-scaled lights a Lambertian scene (no specular term) renders the same
+// under phong, blinn-phong and pbr, in each renderer, pixel for pixel. White and coloured lights, the
+// checker floor, spheres and the mesh, with ambient and shadows on.
+class ModelEquality : public test::GlTest {};
+
+TEST_F(ModelEquality, LambertianSceneIsIdenticalUnderEveryModel) {
+    for (Geometry g : {Geometry::Spheres, Geometry::Mesh}) {
+        Scene scene = makeScene({g, TermSet::Diffuse, ShadingModel::Phong, LightRig::ThreeColoured, 32.0f});
+        scene.terms.shadows = true;
+        for (Sphere& s : scene.spheres) setPbr(s.material, 0.5f, 0.0f);
+        for (Plane& p : scene.planes) setPbr(p.material, 0.5f, 0.0f);
+        for (Mesh& m : scene.meshes)
+            for (MeshPart& part : m.parts) setPbr(part.material, 0.5f, 0.0f);
+        std::vector<Rendered> raster, traced;
+        for (ShadingModel model : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr}) {
+            scene.model = model;
+            raster.push_back(test::rasterizeWithCoverage(scene, kWidth, kHeight));
+            traced.push_back(test::traceWithCoverage(scene, kWidth, kHeight));
+        }
+        for (size_t k = 1; k < raster.size(); ++k) {
+            int worstRaster = 0, worstTraced = 0;
+            for (size_t i = 0; i < raster[0].pixels.data.size(); ++i) {
+                worstRaster =
+                    std::max(worstRaster, std::abs(int(raster[k].pixels.data[i]) - int(raster[0].pixels.data[i])));
+                worstTraced =
+                    std::max(worstTraced, std::abs(int(traced[k].pixels.data[i]) - int(traced[0].pixels.data[i])));
+            }
+            EXPECT_EQ(worstRaster, 0) << "raster, model " << k << " against phong";
+            EXPECT_EQ(worstTraced, 0) << "tracer, model " << k << " against phong";
+        }
+    }
+}
+
+// design.md §7's normalised lobes: the factor reaches both renderers (it scales ms in surfaceParams).
+class ReferenceNormalized : public test::GlTest {};
+
+TEST_F(ReferenceNormalized, NormalizedLobesMatchTheReference) {
+    for (ShadingModel model : {ShadingModel::Phong, ShadingModel::BlinnPhong})
+        for (float s : {32.0f, 500.0f}) {
+            Case c{Geometry::Spheres, TermSet::Specular, ShadingModel::Phong, LightRig::OneWhite, 32.0f};
+            c.model = model;
+            c.s = s;
+            Scene scene = makeScene(c);
+            scene.normalized = true;
+            for (Sphere& sp : scene.spheres) sp.material.ms = glm::vec3(0.05f);  // keep the peak near 1
+            scene.planes[0].material.ms = glm::vec3(0.05f);
+            CompareResult r = compareRenders(scene, scene, "normalized_" + caseName(c));
+            EXPECT_TRUE(r.pass) << caseName(c) << "\n" << compareSummary(r);
+        }
+}
+
+TEST_F(ReferenceNegativeControls, NormalizedInOneRendererOnlyFails) {
+    Scene a = makeScene(base_), b = makeScene(base_);
+    b.normalized = true;
+    CompareResult r = compareRenders(a, b, "negative_normalized");
+    EXPECT_FALSE(r.pass) << "a normalised lobe in one renderer passed the gates:\n" << compareSummary(r);
 }

@@ -1,11 +1,13 @@
 // Shader-unit test (issue 2): the GLSL lighting functions, run on the GPU over a sweep of N, L, V and s,
 // must equal the same functions compiled as C++ within 1e-4. This proves the two are one implementation.
+// Issue 12 adds the pbr BRDF's sweep over N, L, V, roughness and metallic, with its own negative control.
 #include "gl/program.h"
 #include "gl_fixture.h"
 #include "raster/render_target.h"
 #include "shading/lighting.h"
 #include "test_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -38,8 +40,9 @@ glm::vec3 randomDirection(std::mt19937& rng) {
 
 struct Case {
     glm::vec3 N, L, V;
-    float s;
+    float s;  // pbr: roughness
     int model;
+    float metallic = 0.0f;
 };
 
 std::vector<Case> makeCases() {
@@ -66,22 +69,15 @@ std::vector<Case> makeCases() {
     return cases;
 }
 
-}  // namespace
-
-class ShaderUnitTest : public test::GlTest {};
-
-TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
-    const std::vector<Case> cases = makeCases();
-    ASSERT_GE(cases.size(), 1000u);
+// Runs lighting_probe.frag once per case (one texel each) and reads the results back.
+ImageF runProbe(const std::vector<Case>& cases, const glm::vec3& Il, const glm::vec3& md, const glm::vec3& ms) {
     std::vector<glm::vec4> n, l, v, params;
     for (const Case& c : cases) {
         n.emplace_back(c.N, 0.0f);
         l.emplace_back(c.L, 0.0f);
         v.emplace_back(c.V, 0.0f);
-        params.emplace_back(c.s, float(c.model), 0.0f, 0.0f);
+        params.emplace_back(c.s, float(c.model), c.metallic, 0.0f);
     }
-    const glm::vec3 Il(1.0f, 0.7f, 0.3f), md(0.6f, 0.5f, 0.4f), ms(0.9f, 0.8f, 1.0f);
-
     gl::Program program = gl::Program::build(gl::ShaderLibrary(), "fullscreen.vert", "lighting_probe.frag");
     gl::Texture tn = floatTexture(n), tl = floatTexture(l), tv = floatTexture(v), tp = floatTexture(params);
     raster::RenderTarget target;
@@ -106,6 +102,18 @@ TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
     glActiveTexture(GL_TEXTURE0);
     ImageF result;
     target.readColor(result);
+    return result;
+}
+
+}  // namespace
+
+class ShaderUnitTest : public test::GlTest {};
+
+TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
+    const std::vector<Case> cases = makeCases();
+    ASSERT_GE(cases.size(), 1000u);
+    const glm::vec3 Il(1.0f, 0.7f, 0.3f), md(0.6f, 0.5f, 0.4f), ms(0.9f, 0.8f, 1.0f);
+    const ImageF result = runProbe(cases, Il, md, ms);
 
     const float tol = 1e-4f;
     float worst = 0.0f;
@@ -143,4 +151,89 @@ TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
         if (std::abs(gpu[0] - cpu.x) > tol) ++noticed;
     }
     EXPECT_GT(noticed, int(cases.size()) / 10) << "a 10% shininess change went unnoticed: the test cannot fail";
+}
+
+namespace {
+
+// The pbr sweep: roughness uniform in [0, 1] (0 exercises the α clamp), metallic 0, 1 or in between; half the
+// cases look along the mirror direction, where GGX peaks.
+std::vector<Case> makePbrCases() {
+    std::mt19937 rng(20261128);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<Case> cases;
+    for (int i = 0; i < kW * kH; ++i) {
+        Case c;
+        c.N = randomDirection(rng);
+        c.L = randomDirection(rng);
+        c.V = (i % 2) ? randomDirection(rng)
+                      : glm::normalize(shading::reflectLight(glm::normalize(c.N), glm::normalize(c.L))) +
+                            0.2f * glm::normalize(randomDirection(rng));
+        c.s = unit(rng);
+        c.model = shading::SL_MODEL_PBR;
+        const int kind = (i / 2) % 3;
+        c.metallic = kind == 0 ? 0.0f : kind == 1 ? 1.0f : unit(rng);
+        cases.push_back(c);
+    }
+    cases[0] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, 0.0f, shading::SL_MODEL_PBR, 0.0f};  // the clamped mirror peak
+    cases[1] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, 1.0f, shading::SL_MODEL_PBR, 1.0f};
+    cases[2] = {{0, 0, 1}, {1, 0, 1e-4f}, {-1, 0, 1e-4f}, 0.5f, shading::SL_MODEL_PBR, 0.0f};  // grazing
+    cases[3] = {{0, 1, 0}, {0, -1, 0}, {0, 1, 0}, 0.5f, shading::SL_MODEL_PBR, 1.0f};          // unlit side
+    return cases;
+}
+
+// |GLSL − C++| relative to max(1, |C++|): GGX's peak reaches 1/(π α²) ≈ 10^5, where 1e-4 absolute is below
+// float's resolution; below 1 this is the absolute difference.
+float relativeError(float gpu, float cpu) { return std::abs(gpu - cpu) / std::max(1.0f, std::abs(cpu)); }
+
+glm::vec3 cpuPbr(const Case& c, const glm::vec3& Il, const glm::vec3& baseColor, float roughness) {
+    return shading::shadeLight(c.N, c.L, c.V, Il, shading::pbrDiffuseColor(baseColor, c.metallic),
+                               shading::pbrF0(baseColor, c.metallic), roughness, c.model, true, true);
+}
+
+}  // namespace
+
+TEST_F(ShaderUnitTest, GlslPbrEqualsCppOverSweep) {
+    const std::vector<Case> cases = makePbrCases();
+    ASSERT_GE(cases.size(), 2048u);
+    const glm::vec3 Il(1.0f, 0.7f, 0.3f), baseColor(0.9f, 0.6f, 0.2f);
+    const ImageF result = runProbe(cases, Il, baseColor, glm::vec3(0.0f));
+
+    const float tol = 1e-4f;
+    float worst = 0.0f;
+    int worstIndex = -1, failures = 0;
+    std::ofstream report(test::outputPath("shader_unit_pbr_sweep.csv"));
+    report << "index,roughness,metallic,gpu_r,cpu_r,gpu_spec_g,cpu_spec_g\n";
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
+        const glm::vec3 cpu = cpuPbr(c, Il, baseColor, c.s);
+        const glm::vec3 spec = shading::specularGGX(glm::normalize(c.N), glm::normalize(c.L), glm::normalize(c.V),
+                                                    shading::pbrF0(baseColor, c.metallic), c.s);
+        const float err = std::max({relativeError(gpu[0], cpu.x), relativeError(gpu[1], cpu.y),
+                                    relativeError(gpu[2], cpu.z), relativeError(gpu[3], spec.y)});
+        report << i << ',' << c.s << ',' << c.metallic << ',' << gpu[0] << ',' << cpu.x << ',' << gpu[3] << ','
+               << spec.y << '\n';
+        if (err > worst) {
+            worst = err;
+            worstIndex = int(i);
+        }
+        if (err > tol) ++failures;
+    }
+    RecordProperty("max_rel_error", std::to_string(worst));
+    std::printf("shader-unit pbr sweep: %zu cases, max |GLSL - C++| / max(1, |C++|) = %.3g (case %d)\n", cases.size(),
+                worst, worstIndex);
+    EXPECT_EQ(failures, 0) << "max error " << worst << " at case " << worstIndex << "; all values in "
+                           << test::outputPath("shader_unit_pbr_sweep.csv");
+    // Negative controls: a 10 % change of roughness, and metallic flipped, must both be noticed.
+    int roughnessNoticed = 0, metallicNoticed = 0;
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
+        if (relativeError(gpu[1], cpuPbr(c, Il, baseColor, c.s * 1.1f).y) > tol) ++roughnessNoticed;
+        Case flipped = c;
+        flipped.metallic = 1.0f - c.metallic;
+        if (relativeError(gpu[1], cpuPbr(flipped, Il, baseColor, c.s).y) > tol) ++metallicNoticed;
+    }
+    EXPECT_GT(roughnessNoticed, int(cases.size()) / 10) << "a 10% roughness change went unnoticed";
+    EXPECT_GT(metallicNoticed, int(cases.size()) / 10) << "flipping metallic went unnoticed";
 }

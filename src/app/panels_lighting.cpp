@@ -1,4 +1,4 @@
-// Lighting panel: Phong or Blinn-Phong, the five term switches, and the lecture's progression as steps.
+// Lighting panel: Phong, Blinn-Phong or pbr, the five term switches, and the lecture's progression as steps.
 #include "app/panels.h"
 
 #include <imgui.h>
@@ -8,10 +8,16 @@ namespace shadelab::app {
 
 void drawLightingSection(PanelContext& ctx) {
     ViewerState& s = ctx.state;
-    int model = s.scene.model == ShadingModel::Phong ? 0 : 1;
+    int model = modelIndex(s.scene.model);
     if (ImGui::RadioButton("Phong  (R·V)^s", &model, 0)) setModel(s, ShadingModel::Phong);
     ImGui::SameLine();
     if (ImGui::RadioButton("Blinn-Phong  (N·H)^s", &model, 1)) setModel(s, ShadingModel::BlinnPhong);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("PBR  GGX", &model, 2)) setModel(s, ShadingModel::Pbr);
+    if (s.scene.model != ShadingModel::Pbr) {
+        bool normalized = s.scene.normalized;
+        if (ImGui::Checkbox("normalized lobe  (s+2)/2, (s+8)/8", &normalized)) setNormalized(s, normalized);
+    }
 
     ImGui::TextDisabled("Terms");
     for (size_t i = 0; i < std::size(kTermNames); ++i) {

@@ -41,6 +41,13 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
     const Material& m = r.material;
     r.ambient = shading::shadeAmbient(scene.ambient, m.ma, true);
 
+    // Each model's specular coefficient, with its energy normalisation when the scene asks for it.
+    const auto paramsFor = [&](int model) {
+        return shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness,
+                                      scene.normalized);
+    };
+    const glm::vec3 msPhong = paramsFor(shading::SL_MODEL_PHONG).ms;
+    const glm::vec3 msBlinn = paramsFor(shading::SL_MODEL_BLINN_PHONG).ms;
     // Each light: the same raw vectors the fragment shaders pass (surface.glsl), then shadeLight.
     std::vector<shading::LightSample> samples;
     for (const Light& light : scene.lights) {
@@ -64,15 +71,15 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
         pl.specBlinn = shading::specularBlinnPhong(r.N, pl.L, r.V, m.s);
         const int phong = shading::SL_MODEL_PHONG, blinn = shading::SL_MODEL_BLINN_PHONG;
         pl.diffuse = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, m.ms, m.s, phong, true, false);
-        pl.specularPhong = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, m.ms, m.s, phong, false, true);
-        pl.specularBlinn = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, m.ms, m.s, blinn, false, true);
+        pl.specularPhong = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, msPhong, m.s, phong, false, true);
+        pl.specularBlinn = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, msBlinn, m.s, blinn, false, true);
         r.lights.push_back(pl);
     }
-    const shading::SurfaceParams params{m.ma, m.md, m.ms, m.s};
+    const shading::SurfaceParams paramsPhong{m.ma, m.md, msPhong, m.s}, paramsBlinn{m.ma, m.md, msBlinn, m.s};
     const shading::TermFlags flags{scene.terms.ambient, scene.terms.diffuse, scene.terms.specular};
-    r.totalPhong = shading::shadeLocal(s.N, V, samples.data(), samples.size(), params, scene.ambient,
+    r.totalPhong = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsPhong, scene.ambient,
                                        shading::SL_MODEL_PHONG, flags);
-    r.totalBlinn = shading::shadeLocal(s.N, V, samples.data(), samples.size(), params, scene.ambient,
+    r.totalBlinn = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsBlinn, scene.ambient,
                                        shading::SL_MODEL_BLINN_PHONG, flags);
     return r;
 }

@@ -28,6 +28,9 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
     if (m.kr != before.kr) o.kr = m.kr;
     if (m.kt != before.kt) o.kt = m.kt;
     if (m.ior != before.ior) o.ior = m.ior;
+    if (m.baseColor != before.baseColor) o.baseColor = m.baseColor;
+    if (m.metallic != before.metallic) o.metallic = m.metallic;
+    if (m.roughness != before.roughness) o.roughness = m.roughness;
     for (MeshPart& p : mesh.parts) o.applyTo(p.material);
 }
 
@@ -172,8 +175,15 @@ void setModel(ViewerState& state, ShadingModel model) {
     markChanged(state);
 }
 
+void setNormalized(ViewerState& state, bool normalized) {
+    state.scene.normalized = normalized;
+    markChanged(state);
+}
+
 void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects) {
-    if (state.scene.model != model) {
+    // Only Phong ↔ Blinn-Phong have equivalent exponents; pbr reads roughness, not s.
+    const bool lecture = model != ShadingModel::Pbr && state.scene.model != ShadingModel::Pbr;
+    if (lecture && state.scene.model != model) {
         const bool all = allObjects || state.selected == 0;
         for (uint32_t id = 1; id <= objectCount(state.scene); ++id) {
             if (!all && id != state.selected) continue;

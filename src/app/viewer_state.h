@@ -75,6 +75,8 @@ Terms progressionTerms(int step);  // step clamped to [1, 5]
 void applyProgression(ViewerState& state, int step);
 int progressionStep(const Terms& terms);  // 1..5 when the terms are exactly a step, else 0
 void setModel(ViewerState& state, ShadingModel model);
+// Energy-normalised Phong / Blinn-Phong lobes (design.md §7).
+void setNormalized(ViewerState& state, bool normalized);
 // Switches the model and converts shininess so highlights keep their size (specular_lobe.h rule):
 // to Blinn-Phong s -> equivalentBlinnExponent(s), to Phong the inverse. Only the selected object, or every
 // object when `allObjects` or nothing is selected. No-op on s when the model already is `model`.

@@ -24,7 +24,7 @@ const char* const kHelpHead =
     "                             it is the scene or a model it loads, or exists and is not a regular file\n"
     "  --size WxH                 image size in pixels, each side 1..16384 (default 1280x720)\n"
     "  --renderer NAME            raster (default) | trace | both (raster | traced | heatmap in one PNG)\n"
-    "  --model NAME               phong | blinn-phong, also written blinn (default: the scene's)\n"
+    "  --model NAME               phong | blinn-phong | pbr, blinn-phong also written blinn (default: the scene's)\n"
     "  --terms LIST               comma-separated terms to switch on, the rest off:\n"
     "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
     "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"

@@ -4,18 +4,22 @@
 
 #include "raster/frame_block.h"
 #include "scene/coverage.h"
-#include "shading/lighting.h"
+#include "shading/local_illumination.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace shadelab::raster {
 
-void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const {
-    glUniform3fv(p.uniform("u_ma"), 1, glm::value_ptr(m.ma));
-    glUniform3fv(p.uniform("u_md"), 1, glm::value_ptr(m.md));
-    glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(m.ms));
-    glUniform1f(p.uniform("u_s"), m.s);
+void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32_t objectId, int model,
+                                 bool normalized) const {
+    // The coefficients shadeLight reads under this model, derived on the CPU exactly as the tracer does.
+    const shading::SurfaceParams c =
+        shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, normalized);
+    glUniform3fv(p.uniform("u_ma"), 1, glm::value_ptr(c.ma));
+    glUniform3fv(p.uniform("u_md"), 1, glm::value_ptr(c.md));
+    glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(c.ms));
+    glUniform1f(p.uniform("u_s"), c.s);
     glUniform1ui(p.uniform("u_objectId"), objectId);
     glUniform3fv(p.uniform("u_kr"), 1, glm::value_ptr(m.kr));  // planes' mirrors and objects' cubes
 }
@@ -83,7 +87,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         if (int(k) == options.skipRange || outsideClip(frame.viewProj, r.lo, r.hi)) continue;
         const Material& m = scene.meshes[r.mesh].parts[r.part].material;
         const gl::Program& p = objectProgram(programs.mesh, programs.meshEnvironment, -1, int(k), options);
-        setMaterial(p, m, meshCoverageId(scene, r.mesh));
+        setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
     }
@@ -96,7 +100,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         if (int(i) == options.skipSphere) continue;
         const Sphere& s = scene.spheres[i];
         const gl::Program& p = objectProgram(programs.sphere, programs.sphereEnvironment, int(i), -1, options);
-        setMaterial(p, s.material, sphereCoverageId(scene, i));
+        setMaterial(p, s.material, sphereCoverageId(scene, i), frame.flags.x, scene.normalized);
         glUniform3fv(p.uniform("u_center"), 1, glm::value_ptr(s.center));
         glUniform1f(p.uniform("u_radius"), s.radius);
         glDrawArrays(GL_TRIANGLES, 0, 36);
@@ -117,7 +121,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());
             glActiveTexture(GL_TEXTURE0);
         }
-        setMaterial(planeProgram, p.material, planeCoverageId(scene, i));
+        setMaterial(planeProgram, p.material, planeCoverageId(scene, i), frame.flags.x, scene.normalized);
         const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
         const glm::vec3 centre = eye - eyeHeight * p.normal;
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
@@ -128,7 +132,10 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         glUniform1f(planeProgram.uniform("u_planeOffset"), p.offset);
         glUniform1i(planeProgram.uniform("u_checker"), p.checker ? 1 : 0);
         const Checker c = p.checker.value_or(Checker{});
-        glUniform3fv(planeProgram.uniform("u_md2"), 1, glm::value_ptr(c.md2));
+        // pbr: the second tiles' md2 is their base colour (F0 stays the plane's), as in the tracer.
+        const glm::vec3 md2 =
+            frame.flags.x == shading::SL_MODEL_PBR ? shading::pbrDiffuseColor(c.md2, p.material.metallic) : c.md2;
+        glUniform3fv(planeProgram.uniform("u_md2"), 1, glm::value_ptr(md2));
         glUniform1f(planeProgram.uniform("u_checkerSize"), c.size);
         glDrawArrays(GL_TRIANGLES, 0, 12);
     }

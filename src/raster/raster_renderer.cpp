@@ -69,7 +69,7 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
     f.ambient = glm::vec4(scene.ambient, 0.0f);
     int terms = (scene.terms.ambient ? kTermAmbient : 0) | (scene.terms.diffuse ? kTermDiffuse : 0) |
                 (scene.terms.specular ? kTermSpecular : 0);
-    int model = scene.model == ShadingModel::Phong ? shading::SL_MODEL_PHONG : shading::SL_MODEL_BLINN_PHONG;
+    int model = modelIndex(scene.model);
     int count = int(std::min(scene.lights.size(), size_t(kMaxLights)));
     const bool lit = scene.terms.diffuse || scene.terms.specular;
     const int passes =
@@ -96,10 +96,13 @@ std::vector<float> environmentKey(const Scene& scene, const FrameBlock& frame) {
         push(m.ms);
         push(m.kr);
         key.push_back(m.s);
+        push(m.baseColor);
+        key.insert(key.end(), {m.metallic, m.roughness});
     };
     key.insert(key.end(), {float(frame.flags.x), float(frame.flags.y), float(frame.flags.z), float(frame.flags.w)});
     push(scene.ambient);
     push(scene.background);
+    key.push_back(scene.normalized ? 1.0f : 0.0f);
     for (int i = 0; i < frame.flags.z; ++i)
         for (const glm::vec4& v : {frame.lightPos[i], frame.lightColor[i], frame.lightAtten[i]})
             key.insert(key.end(), {v.x, v.y, v.z, v.w});

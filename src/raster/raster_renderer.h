@@ -59,7 +59,8 @@ private:
         bool mirrored = false;
         bool reflections = true;  // planar mirrors and environment cubes looked up (the primary pass only)
     };
-    void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId) const;
+    // model: shading::SL_MODEL_*; normalized: Scene::normalized.
+    void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId, int model, bool normalized) const;
     const gl::Program& objectProgram(const gl::Program& plain, const gl::Program& environment, int sphere, int range,
                                      const PassOptions& options) const;
     void uploadFrame(const FrameBlock& frame) const;

@@ -90,6 +90,10 @@ TEST(GltfImport, MaterialsFollowTheMapping) {
     expectNear(m.md, {0.8f, 0, 0});
     expectNear(m.ms, glm::vec3(0.04f));
     EXPECT_FLOAT_EQ(m.s, 1.0f);
+    // The pbr model reads the glTF values themselves (issue 12).
+    expectNear(m.baseColor, {0.8f, 0, 0});
+    EXPECT_EQ(m.metallic, 0.0f);
+    EXPECT_EQ(m.roughness, 1.0f);
 }
 
 // ---- Broken files: an InputError naming the file, or a clean import; never a crash -------------------------
@@ -218,6 +222,15 @@ TEST(PhongFromMetallicRoughness, HandComputedValues) {
 
     // Mirror-smooth: the exponent clamps to the contract's maximum instead of dividing by zero.
     EXPECT_FLOAT_EQ(phongFromMetallicRoughness(glm::vec3(1.0f), 0.0f, 0.0f).s, kMaxShininess);
+
+    // The material keeps the glTF values for the pbr model, clamped as above.
+    m = phongFromMetallicRoughness({1.0f, 0.8f, 0.2f}, 1.0f, 0.25f);
+    expectNear(m.baseColor, {1.0f, 0.8f, 0.2f});
+    EXPECT_EQ(m.metallic, 1.0f);
+    EXPECT_EQ(m.roughness, 0.25f);
+    EXPECT_EQ(phongFromMetallicRoughness(glm::vec3(0.5f), 2.0f, -1.0f).metallic, 1.0f);
+    // roughnessFromShininess inverts the Walter mapping where it is not clamped.
+    EXPECT_NEAR(roughnessFromShininess(m.s), 0.25f, 1e-5f);
 }
 
 TEST(GltfImport, DefaultMaterialAndIorExtension) {
@@ -240,6 +253,8 @@ TEST(GltfImport, DefaultMaterialAndIorExtension) {
     ASSERT_EQ(g.parts.size(), 1u);
     expectNear(g.parts[0].material.md, {0.2f, 0.4f, 0.6f});
     EXPECT_NEAR(g.parts[0].material.s, 30.0f, 1e-3f);
+    expectNear(g.parts[0].material.baseColor, {0.2f, 0.4f, 0.6f});
+    EXPECT_EQ(g.parts[0].material.roughness, 0.5f);
     EXPECT_FLOAT_EQ(g.parts[0].material.ior, 1.33f);
 }
 

@@ -35,6 +35,10 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
         m.md = m.ma = colorFrom(numbersOf(sg->second, "diffuseFactor"), glm::vec3(1.0f));
         m.ms = colorFrom(numbersOf(sg->second, "specularFactor"), glm::vec3(1.0f));
         m.s = shape.s;
+        // pbr reads the diffuse colour as a dielectric's base colour and 1 − glossiness as its roughness.
+        m.baseColor = m.md;
+        m.metallic = 0.0f;
+        m.roughness = roughness;
     }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
@@ -55,15 +59,15 @@ Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, 
     // glTF 2.0 Appendix B: dielectrics have F0 = 0.04 and a diffuse lobe; metals tint F0 and have none.
     m.md = baseColor * (1.0f - metallic);
     m.ms = glm::mix(glm::vec3(0.04f), baseColor, metallic);
-    // Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces", eq. 33: a Blinn-Phong
-    // exponent s = 2/alpha^2 - 2 matches a Beckmann lobe of width alpha; glTF's alpha = roughness^2.
-    const float alpha = roughness * roughness;
-    const float alpha2 = std::max(alpha * alpha, 1e-12f);
-    m.s = std::clamp(2.0f / alpha2 - 2.0f, 1.0f, kMaxShininess);
-    m.ma = m.md;  // ambient light shows the surface's own colour
+    m.s = shininessFromRoughness(roughness);  // Walter et al. 2007, eq. 33
+    m.ma = m.md;                              // ambient light shows the surface's own colour
     m.kr = glm::vec3(0.0f);
     m.kt = glm::vec3(0.0f);
     m.ior = 1.5f;
+    // The pbr model reads the metallic-roughness values themselves, not the Phong conversion above.
+    m.baseColor = baseColor;
+    m.metallic = metallic;
+    m.roughness = roughness;
     return m;
 }
 

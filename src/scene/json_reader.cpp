@@ -248,4 +248,12 @@ glm::vec3 JsonNode::rgb() const {
     return {(*this)[0].nonNegative(), (*this)[1].nonNegative(), (*this)[2].nonNegative()};
 }
 
+glm::vec3 JsonNode::unitRgb() const {
+    if (j_->is_number()) return glm::vec3(inRange(0.0f, 1.0f, false, false));
+    if (!j_->is_array()) fail(std::string("expected 3 numbers or one number, got ") + jsonTypeName(*j_));
+    if (j_->size() != 3) fail("expected 3 numbers, got " + std::to_string(j_->size()));
+    return {(*this)[0].inRange(0.0f, 1.0f, false, false), (*this)[1].inRange(0.0f, 1.0f, false, false),
+            (*this)[2].inRange(0.0f, 1.0f, false, false)};
+}
+
 }  // namespace shadelab

@@ -71,6 +71,7 @@ public:
     glm::vec3 unitVec3() const;     // non-zero, normalised (kept as written when already unit)
     // An RGB colour or coefficient: three numbers >= 0, or one number meaning grey.
     glm::vec3 rgb() const;
+    glm::vec3 unitRgb() const;  // the same, each in [0, 1] (a reflectance such as a base colour)
 
 private:
     std::string childPath(const std::string& key) const;

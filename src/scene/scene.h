@@ -19,6 +19,7 @@ struct Scene {
     std::string notes;  // free text for a lesson
     Camera camera;
     ShadingModel model = ShadingModel::Phong;
+    bool normalized = false;  // Phong / Blinn-Phong lobes times (s+2)/2, (s+8)/8 (design.md §7); pbr: no effect
     Terms terms;
     glm::vec3 ambient{0.2f};     // Ia, linear RGB intensity
     glm::vec3 background{0.0f};  // colour of rays that leave the scene, linear RGB

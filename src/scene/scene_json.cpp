@@ -34,7 +34,7 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 // ---- 1. Loading materials, camera, lights --------------------------------------------------------------
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior"});
+    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness"});
     return parseMaterialOverride(n);
 }
 
@@ -195,6 +195,9 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("kr")) m.kr = f->rgb();
     if (auto f = n.find("kt")) m.kt = f->rgb();
     if (auto f = n.find("ior")) m.ior = f->positive();
+    if (auto f = n.find("baseColor")) m.baseColor = f->unitRgb();
+    if (auto f = n.find("metallic")) m.metallic = f->inRange(0.0f, 1.0f, false, false);
+    if (auto f = n.find("roughness")) m.roughness = f->inRange(0.0f, 1.0f, false, false);
     return m;
 }
 
@@ -210,8 +213,9 @@ LightOverride parseLightOverride(const JsonNode& n) {
 Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line)) {
     nlohmann::json doc = parseJsonText(text, file);
     JsonNode root(doc, "", file, warn);
-    root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "terms", "ambient",
-                                          "background", "maxDepth", "raster", "lights", "objects", "materials"});
+    root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "normalized", "terms",
+                                          "ambient", "background", "maxDepth", "raster", "lights", "objects",
+                                          "materials"});
     Scene scene;
     if (auto f = root.find("shadelab")) {
         int version = f->integerIn(1, INT_MAX);
@@ -223,6 +227,7 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
     if (auto f = root.find("notes")) scene.notes = f->string();
     if (auto f = root.find("camera")) scene.camera = parseCamera(*f);
     if (auto f = root.find("model")) scene.model = f->oneOf(kShadingModelNames, "shading model");
+    if (auto f = root.find("normalized")) scene.normalized = f->boolean();
     if (auto f = root.find("terms")) {
         f->requireObject().warnUnknownKeys(canonicalNames(kTermNames));
         for (const EnumName<Term>& term : kTermNames)
@@ -275,8 +280,16 @@ double exact(float f) {
 OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
 
 OJson materialJson(const Material& m) {
-    return {{"ma", vec(m.ma)}, {"md", vec(m.md)}, {"ms", vec(m.ms)},    {"s", exact(m.s)},
-            {"kr", vec(m.kr)}, {"kt", vec(m.kt)}, {"ior", exact(m.ior)}};
+    return {{"ma", vec(m.ma)},
+            {"md", vec(m.md)},
+            {"ms", vec(m.ms)},
+            {"s", exact(m.s)},
+            {"kr", vec(m.kr)},
+            {"kt", vec(m.kt)},
+            {"ior", exact(m.ior)},
+            {"baseColor", vec(m.baseColor)},
+            {"metallic", exact(m.metallic)},
+            {"roughness", exact(m.roughness)}};
 }
 
 OJson overrideJson(const MaterialOverride& m) {
@@ -288,6 +301,9 @@ OJson overrideJson(const MaterialOverride& m) {
     if (m.kr) j["kr"] = vec(*m.kr);
     if (m.kt) j["kt"] = vec(*m.kt);
     if (m.ior) j["ior"] = exact(*m.ior);
+    if (m.baseColor) j["baseColor"] = vec(*m.baseColor);
+    if (m.metallic) j["metallic"] = exact(*m.metallic);
+    if (m.roughness) j["roughness"] = exact(*m.roughness);
     return j;
 }
 
@@ -341,6 +357,7 @@ std::string sceneToJson(const Scene& scene) {
     doc["camera"] = {
         {"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)}, {"fovY", exact(c.fovY)}};
     doc["model"] = toString(scene.model);
+    doc["normalized"] = scene.normalized;
     const Terms& t = scene.terms;
     doc["terms"] = OJson::object();
     for (const EnumName<Term>& term : kTermNames) doc["terms"][term.name] = termEnabled(t, term.value);

@@ -18,7 +18,7 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
 // The scene file's readers of a material's and a light's fields, shared with the viewer's scripts so that
 // both accept the same values and word errors alike (the "raster" reader is raster_override.h's). Each reads
 // whichever of its fields object `n` holds; other keys are the caller's to warn about or refuse.
-MaterialOverride parseMaterialOverride(const JsonNode& n);  // "ma", "md", "ms", "s", "kr", "kt", "ior"
+MaterialOverride parseMaterialOverride(const JsonNode& n);  // ma md ms s kr kt ior baseColor metallic roughness
 LightOverride parseLightOverride(const JsonNode& n);        // "position", "direction", "color"
 
 // Serialises every described field (not imported geometry). parse(save(s)) == s, field by field.

@@ -52,13 +52,16 @@ struct Diff {
     void material(const std::string& p, const Material& a, const Material& b) {
         v(p + ".ma", a.ma, b.ma), v(p + ".md", a.md, b.md), v(p + ".ms", a.ms, b.ms), f(p + ".s", a.s, b.s);
         v(p + ".kr", a.kr, b.kr), v(p + ".kt", a.kt, b.kt), f(p + ".ior", a.ior, b.ior);
+        v(p + ".baseColor", a.baseColor, b.baseColor), f(p + ".metallic", a.metallic, b.metallic);
+        f(p + ".roughness", a.roughness, b.roughness);
     }
     void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
         auto vv = [this](const std::string& n, const glm::vec3& x, const glm::vec3& y) { v(n, x, y); };
         auto ff = [this](const std::string& n, float x, float y) { f(n, x, y); };
         opt(p + ".ma", a.ma, b.ma, vv), opt(p + ".md", a.md, b.md, vv), opt(p + ".ms", a.ms, b.ms, vv);
         opt(p + ".s", a.s, b.s, ff), opt(p + ".kr", a.kr, b.kr, vv), opt(p + ".kt", a.kt, b.kt, vv);
-        opt(p + ".ior", a.ior, b.ior, ff);
+        opt(p + ".ior", a.ior, b.ior, ff), opt(p + ".baseColor", a.baseColor, b.baseColor, vv);
+        opt(p + ".metallic", a.metallic, b.metallic, ff), opt(p + ".roughness", a.roughness, b.roughness, ff);
     }
 };
 
@@ -69,6 +72,7 @@ std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
     d.v("camera.target", a.camera.target, b.camera.target);
     d.v("camera.up", a.camera.up, b.camera.up), d.f("camera.fovY", a.camera.fovY, b.camera.fovY);
     d.eq("model", a.model, b.model);
+    d.eq("normalized", a.normalized, b.normalized);
     d.eq("terms.ambient", a.terms.ambient, b.terms.ambient), d.eq("terms.diffuse", a.terms.diffuse, b.terms.diffuse);
     d.eq("terms.specular", a.terms.specular, b.terms.specular);
     d.eq("terms.shadows", a.terms.shadows, b.terms.shadows);
@@ -202,6 +206,9 @@ struct RandomSceneMaker {
         m.ma = rgb(), m.md = rgb(), m.ms = rgb(), m.kr = rgb(), m.kt = rgb();
         m.s = coin() ? in(0.0f, kMaxShininess) : (coin() ? 0.0f : kMaxShininess);
         m.ior = positive();
+        m.baseColor = {in(0.0f, 1.0f), in(0.0f, 1.0f), in(0.0f, 1.0f)};
+        m.metallic = coin() ? in(0.0f, 1.0f) : 1.0f;
+        m.roughness = coin() ? in(0.0f, 1.0f) : 0.0f;
         return m;
     }
 
@@ -212,7 +219,8 @@ struct RandomSceneMaker {
         s.camera.target = s.camera.position + unit() * in(0.1f, 10.0f);
         s.camera.up = unit();
         s.camera.fovY = coin() ? in(1e-3f, 179.9f) : 0.1f;
-        s.model = coin() ? ShadingModel::Phong : ShadingModel::BlinnPhong;
+        s.model = coin() ? ShadingModel::Phong : coin() ? ShadingModel::BlinnPhong : ShadingModel::Pbr;
+        s.normalized = coin();
         s.terms = {coin(), coin(), coin(), coin(), coin()};
         s.ambient = rgb(), s.background = rgb(), s.maxDepth = upTo(64);
         if (coin()) {  // else the defaults
@@ -251,6 +259,9 @@ struct RandomSceneMaker {
             if (coin()) m.material.kr = rgb();
             if (coin()) m.material.kt = rgb();
             if (coin()) m.material.ior = positive();
+            if (coin()) m.material.baseColor = glm::vec3(in(0.0f, 1.0f), in(0.0f, 1.0f), in(0.0f, 1.0f));
+            if (coin()) m.material.metallic = in(0.0f, 1.0f);
+            if (coin()) m.material.roughness = in(0.0f, 1.0f);
             s.meshes.push_back(m);
         }
         return s;
@@ -345,10 +356,11 @@ TEST(SceneJson, NamedMaterialsResolveForEveryObjectType) {
     ASSERT_EQ(s.spheres.size(), 2u);
     Material gold;
     gold.md = {0.8f, 0.6f, 0.2f}, gold.s = 64.0f;
+    gold.baseColor = gold.md, gold.roughness = roughnessFromShininess(64.0f);  // Phong fields only: pbr follows
     Diff d;
     d.material("gold sphere", s.spheres[0].material, gold);
     Material grey;
-    grey.md = glm::vec3(0.5f);
+    grey.md = grey.baseColor = glm::vec3(0.5f);
     d.material("grey plane", s.planes[0].material, grey);
     Material partial;
     partial.ms = glm::vec3(0.0f), partial.kr = glm::vec3(0.25f);
@@ -397,6 +409,41 @@ TEST(SceneJson, GreyNumbersCommentsVersionAndModel) {
     EXPECT_STREQ(toString(*parseShadingModel("phong")), "phong");
     EXPECT_STREQ(toString(*parseShadingModel("blinn-phong")), "blinn-phong");
     EXPECT_FALSE(parseShadingModel("gouraud").has_value());
+}
+
+// docs/scene-format.md, "Materials under each model": one model's fields alone give the other model's.
+TEST(SceneJson, PbrModelAndMaterialsReadEachOthersFields) {
+    Scene s = parse(R"({"model": "pbr", "objects": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"md": [0.5, 0.25, 0.125], "s": 62}},
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1,
+         "material": {"baseColor": [1, 0.5, 0], "metallic": 1, "roughness": 0.5}},
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1,
+         "material": {"md": 0.2, "baseColor": 0.9, "metallic": 0.5}},
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1}]})");
+    EXPECT_EQ(s.model, ShadingModel::Pbr);
+    EXPECT_FALSE(s.normalized);
+    EXPECT_TRUE(parse(R"({"normalized": true})").normalized);
+    EXPECT_STREQ(toString(*parseShadingModel("pbr")), "pbr");
+    ASSERT_EQ(s.spheres.size(), 4u);
+    const Material& phongOnly = s.spheres[0].material;
+    EXPECT_EQ(phongOnly.baseColor, glm::vec3(0.5f, 0.25f, 0.125f));
+    EXPECT_EQ(phongOnly.metallic, 0.0f);
+    EXPECT_FLOAT_EQ(phongOnly.roughness, std::pow(2.0f / 64.0f, 0.25f));
+    EXPECT_FLOAT_EQ(shininessFromRoughness(phongOnly.roughness), 62.0f);
+    const Material& pbrOnly = s.spheres[1].material;
+    EXPECT_EQ(pbrOnly.md, glm::vec3(0.0f));  // a metal has no diffuse lobe
+    EXPECT_EQ(pbrOnly.ma, glm::vec3(0.0f));
+    EXPECT_EQ(pbrOnly.ms, glm::vec3(1.0f, 0.5f, 0.0f));
+    EXPECT_FLOAT_EQ(pbrOnly.s, 2.0f / 0.0625f - 2.0f);
+    const Material& both = s.spheres[2].material;  // each as given, nothing derived
+    EXPECT_EQ(both.md, glm::vec3(0.2f));
+    EXPECT_EQ(both.baseColor, glm::vec3(0.9f));
+    EXPECT_EQ(both.ms, Material{}.ms);
+    EXPECT_EQ(both.roughness, Material{}.roughness);
+    const Material& neither = s.spheres[3].material;
+    EXPECT_EQ(neither.baseColor, neither.md);
+    EXPECT_NEAR(neither.roughness, roughnessFromShininess(neither.s), 1e-4f);
+    expectRoundTrip(s);
 }
 
 TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {

@@ -6,13 +6,17 @@
 
 namespace shadelab {
 
-enum class ShadingModel { Phong, BlinnPhong };
+// The values are shading::SL_MODEL_* (shaders/lighting.glsl); modelIndex() hands them to the renderers.
+enum class ShadingModel { Phong = 0, BlinnPhong = 1, Pbr = 2 };
 
 inline constexpr EnumName<ShadingModel> kShadingModelNames[] = {
     {ShadingModel::Phong, "phong"},
     {ShadingModel::BlinnPhong, "blinn-phong"},
     {ShadingModel::BlinnPhong, "blinn", true},
+    {ShadingModel::Pbr, "pbr"},
 };
+
+inline int modelIndex(ShadingModel m) { return int(m); }
 
 inline const char* toString(ShadingModel m) { return nameOf(kShadingModelNames, m); }
 inline std::optional<ShadingModel> parseShadingModel(std::string_view name) {

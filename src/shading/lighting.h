@@ -10,11 +10,13 @@
 namespace shadelab::shading {
 
 using glm::abs;
+using glm::cross;
 using glm::dot;
 using glm::floor;
 using glm::length;
 using glm::max;
 using glm::min;
+using glm::mix;
 using glm::normalize;
 using glm::pow;
 using glm::sqrt;

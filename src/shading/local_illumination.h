@@ -20,6 +20,16 @@ struct SurfaceParams {
     float s;
 };
 
+// The coefficients shadeLight reads under `model`: the lecture's (ma, md, ms, s), or for SL_MODEL_PBR the
+// ambient ma, the diffuse colour, F0 and the roughness derived from the metallic-roughness fields.
+// `normalized` (design.md §7) scales a Phong or Blinn-Phong lobe by its energy-conserving factor.
+inline SurfaceParams surfaceParams(int model, vec3 ma, vec3 md, vec3 ms, float s, vec3 baseColor, float metallic,
+                                   float roughness, bool normalized = false) {
+    if (model == SL_MODEL_PHONG) return {ma, md, normalized ? ms * phongNormalization(s) : ms, s};
+    if (model == SL_MODEL_BLINN_PHONG) return {ma, md, normalized ? ms * blinnPhongNormalization(s) : ms, s};
+    return {ma, pbrDiffuseColor(baseColor, metallic), pbrF0(baseColor, metallic), roughness};
+}
+
 struct TermFlags {
     bool ambient = true, diffuse = true, specular = true;
 };

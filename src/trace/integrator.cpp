@@ -10,6 +10,12 @@
 #include <limits>
 
 namespace shadelab::trace {
+
+// modelIndex() hands the scene's model to shadeLocal as one of lighting.glsl's constants.
+static_assert(int(ShadingModel::Phong) == shading::SL_MODEL_PHONG);
+static_assert(int(ShadingModel::BlinnPhong) == shading::SL_MODEL_BLINN_PHONG);
+static_assert(int(ShadingModel::Pbr) == shading::SL_MODEL_PBR);
+
 namespace {
 
 bool positive(const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; }
@@ -25,10 +31,7 @@ struct WhittedIntegrator::Tree {
 };
 
 WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, const RayTreeLimits& limits)
-    : scene_(scene),
-      maxDepth_(std::max(maxDepth, 0)),
-      model_(scene.scene().model == ShadingModel::Phong ? shading::SL_MODEL_PHONG : shading::SL_MODEL_BLINN_PHONG),
-      limits_(limits) {}
+    : scene_(scene), maxDepth_(std::max(maxDepth, 0)), model_(modelIndex(scene.scene().model)), limits_(limits) {}
 
 PrimarySample WhittedIntegrator::primary(const Ray& ray, const std::atomic<bool>* cancel, TreeStats* stats) const {
     Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, cancel, {}};
@@ -77,6 +80,7 @@ Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit) const {
     Surface s;
     s.material = &scene_.material(hit);
     s.md = s.material->md;
+    s.baseColor = s.material->baseColor;
     s.P = ray.origin + hit.t * ray.dir;
     const glm::vec3 V = -ray.dir;
     switch (hit.kind) {
@@ -95,7 +99,10 @@ Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit) const {
             s.N = shading::faceForward(pl.normal, V);
             s.entering = !(glm::dot(pl.normal, V) < 0.0f);
             s.Nf = glm::normalize(s.N);
-            if (pl.checker && shading::checkerParity(s.P, pl.normal, pl.checker->size) == 1) s.md = pl.checker->md2;
+            if (pl.checker && shading::checkerParity(s.P, pl.normal, pl.checker->size) == 1) {
+                s.md = pl.checker->md2;
+                s.baseColor = pl.checker->md2;  // pbr: the second tiles' base colour (F0 stays the plane's)
+            }
             break;
         }
         case HitKind::Triangle: {
@@ -134,7 +141,9 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s) const {
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
-    const shading::SurfaceParams params{m.ma, s.md, m.ms, m.s};
+    shading::SurfaceParams params =
+        shading::surfaceParams(model_, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
+    if (model_ == shading::SL_MODEL_PBR) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     const bool lit = sc.terms.diffuse || sc.terms.specular;
     // Lights go to shadeLocal in batches of kMaxLights (one batch for every scene the rasterizer takes).
     shading::LightSample samples[kMaxLights];

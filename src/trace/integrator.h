@@ -15,12 +15,13 @@ namespace shadelab::trace {
 
 // What a hit looks like to shading.
 struct Surface {
-    glm::vec3 P{0.0f};     // hit point, origin + t·dir as the rasterizer computes it
-    glm::vec3 N{0.0f};     // shading normal on the viewer's side, as handed to shadeLight (meshes: not unit)
-    glm::vec3 Nf{0.0f};    // unit geometric normal on the viewer's side: secondary rays are offset along it
-    bool entering = true;  // the ray arrives from the outward side (sphere outside, plane normal side,
-                           // mesh counter-clockwise front), so refraction goes from 1 into ior
-    glm::vec3 md{0.0f};    // diffuse coefficient, after the plane's checker
+    glm::vec3 P{0.0f};          // hit point, origin + t·dir as the rasterizer computes it
+    glm::vec3 N{0.0f};          // shading normal on the viewer's side, as handed to shadeLight (meshes: not unit)
+    glm::vec3 Nf{0.0f};         // unit geometric normal on the viewer's side: secondary rays are offset along it
+    bool entering = true;       // the ray arrives from the outward side (sphere outside, plane normal side,
+                                // mesh counter-clockwise front), so refraction goes from 1 into ior
+    glm::vec3 md{0.0f};         // diffuse coefficient, after the plane's checker
+    glm::vec3 baseColor{0.0f};  // pbr base colour, after the plane's checker
     const Material* material = nullptr;
 };
 
