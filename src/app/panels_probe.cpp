@@ -70,10 +70,11 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
         specBlinn += l.specularBlinn;
     }
     if (!ImGui::BeginTable("totals", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
-    const bool phong = current == ShadingModel::Phong;
+    // Under pbr neither column is what the image shows (the probe has no pbr column yet).
+    const bool phong = current == ShadingModel::Phong, blinn = current == ShadingModel::BlinnPhong;
     ImGui::TableSetupColumn("");
     ImGui::TableSetupColumn(phong ? "Phong (shown)" : "Phong");
-    ImGui::TableSetupColumn(phong ? "Blinn-Phong" : "Blinn-Phong (shown)");
+    ImGui::TableSetupColumn(blinn ? "Blinn-Phong (shown)" : "Blinn-Phong");
     ImGui::TableHeadersRow();
     rowLabel("Ia ma");
     ImGui::TableSetColumnIndex(1);
