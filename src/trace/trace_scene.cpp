@@ -1,5 +1,5 @@
-// TraceScene: building the accelerators, the scene-scaled epsilon, and the
-// nearest-hit and occlusion queries over spheres, planes and triangles.
+// TraceScene: building the accelerators, the scene-scaled epsilon, and the nearest-hit and occlusion
+// queries over spheres, planes and triangles.
 #include "trace/trace_scene.h"
 
 #include "scene/coverage.h"
@@ -11,21 +11,22 @@
 #include <cmath>
 
 namespace shadelab::trace {
+
 TraceScene::TraceScene(const Scene& scene) : TraceScene(scene, std::make_shared<const MeshBvh>(scene)) {}
 
 TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const MeshBvh> meshes)
     : scene_(scene), meshes_(std::move(meshes)) {
     SHADELAB_CHECK(meshes_ != nullptr);
-    SHADELAB_CHECK(meshes_->matches(scene));
-    prepare(scene);
+    SHADELAB_CHECK(meshes_->matches(scene_));
+    prepare();
 }
 
-void TraceScene::prepare(const Scene& scene) {
+void TraceScene::prepare() {
     spheres_.emplace(scene_.spheres);
     for (size_t m = 0; m < scene_.meshes.size(); ++m)
         for (size_t p = 0; p < scene_.meshes[m].parts.size(); ++p) partRef_.emplace_back(uint32_t(m), uint32_t(p));
 
-    epsilon_ = secondaryRayEpsilon(scene, scene.camera.position);
+    epsilon_ = secondaryRayEpsilon(scene_, scene_.camera.position);
 }
 
 std::optional<Hit> TraceScene::intersect(const Ray& ray) const {

@@ -53,7 +53,7 @@ public:
     const Material& material(const Hit& hit) const;
 
 private:
-    void prepare(const Scene& scene);
+    void prepare();
 
     Scene scene_;
     std::shared_ptr<const MeshBvh> meshes_;
