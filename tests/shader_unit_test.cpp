@@ -45,18 +45,24 @@ struct Case {
     float metallic = 0.0f;
 };
 
+// Random N and L; odd cases a random V, even ones V near the mirror direction, where the highlight is and
+// errors would show.
+Case randomGeometry(std::mt19937& rng, int i) {
+    Case c{};
+    c.N = randomDirection(rng);
+    c.L = randomDirection(rng);
+    c.V = (i % 2) ? randomDirection(rng)
+                  : glm::normalize(shading::reflectLight(glm::normalize(c.N), glm::normalize(c.L))) +
+                        0.2f * glm::normalize(randomDirection(rng));
+    return c;
+}
+
 std::vector<Case> makeCases() {
     std::mt19937 rng(20261122);
     std::uniform_real_distribution<float> logS(0.0f, 3.0f);
     std::vector<Case> cases;
     for (int i = 0; i < kW * kH; ++i) {
-        Case c;
-        c.N = randomDirection(rng);
-        c.L = randomDirection(rng);
-        // Half the cases put V near the mirror direction, where the highlight is and errors would show.
-        c.V = (i % 2) ? randomDirection(rng)
-                      : glm::normalize(shading::reflectLight(glm::normalize(c.N), glm::normalize(c.L))) +
-                            0.2f * glm::normalize(randomDirection(rng));
+        Case c = randomGeometry(rng, i);
         c.s = std::pow(10.0f, logS(rng));  // [1, 1000], log-uniform
         c.model = (i / 2) % 2;
         cases.push_back(c);
@@ -162,12 +168,7 @@ std::vector<Case> makePbrCases() {
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     std::vector<Case> cases;
     for (int i = 0; i < kW * kH; ++i) {
-        Case c;
-        c.N = randomDirection(rng);
-        c.L = randomDirection(rng);
-        c.V = (i % 2) ? randomDirection(rng)
-                      : glm::normalize(shading::reflectLight(glm::normalize(c.N), glm::normalize(c.L))) +
-                            0.2f * glm::normalize(randomDirection(rng));
+        Case c = randomGeometry(rng, i);
         c.s = unit(rng);
         c.model = shading::SL_MODEL_PBR;
         const int kind = (i / 2) % 3;
