@@ -489,8 +489,10 @@ struct SplitResult {
 };
 
 // Runs shadelab with stdout and stderr captured apart.
+// The capture files are named after the running test: ctest runs tests in parallel processes.
 SplitResult runSplit(const std::string& args) {
-    const std::string out = test::outputPath("split_stdout.bin"), err = test::outputPath("split_stderr.txt");
+    const std::string stem = std::string("split_") + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::string out = test::outputPath(stem + "_stdout.bin"), err = test::outputPath(stem + "_stderr.txt");
     const int status = std::system((std::string(SHADELAB_BINARY) + " " + args + " > " + out + " 2> " + err).c_str());
     SplitResult r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
