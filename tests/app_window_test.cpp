@@ -319,3 +319,39 @@ TEST(AppWindow, TracedGlassTreeExitsPromptlyAfterItsFrames) {
                 seconds);
     ASSERT_EQ(v.code, 0) << v.out;
 }
+
+TEST(AppWindow, UndoRestoresARemovedLightExactly) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string before = test::outputPath("undo_before.png"), removed = test::outputPath("undo_removed.png");
+    const std::string undone = test::outputPath("undo_undone.png"), redone = test::outputPath("undo_redone.png");
+    const std::string script = writeText("undo_script.json", R"({"actions": [
+        {"frame": 4, "action": "screenshot", "path": ")" + before + R"("},
+        {"frame": 5, "action": "removeLight", "index": 0},
+        {"frame": 7, "action": "screenshot", "path": ")" + removed + R"("},
+        {"frame": 8, "action": "orbit", "yaw": 0},
+        {"frame": 9, "action": "undo"},
+        {"frame": 11, "action": "screenshot", "path": ")" + undone + R"("},
+        {"frame": 12, "action": "redo"},
+        {"frame": 14, "action": "screenshot", "path": ")" + redone + R"("}
+    ]})");
+    Result v = view(scenePath + " --size " + kSize + " --frames 16 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    EXPECT_TRUE(sameBytes(before, undone)) << "undo did not restore the removed light exactly";
+    EXPECT_TRUE(sameBytes(removed, redone)) << "redo did not remove it again";
+    EXPECT_FALSE(sameBytes(before, removed)) << "negative control: removing the light changed nothing";
+}
+
+TEST(AppWindow, SaveNeverWritesOverAModel) {
+    REQUIRE_XVFB();
+    const std::string model = test::outputPath("save_target.gltf");
+    fs::copy_file(test::sourcePath("assets/models/torus.gltf"), model, fs::copy_options::overwrite_existing);
+    const std::string original = readFile(model);
+    const std::string script =
+        writeText("save_model_script.json", R"([{"action": "saveScene", "path": ")" + model + R"("}])");
+    Result v = view(test::sourcePath("assets/scenes/default.json") + " --size " + kSize + " --frames 3 --script " +
+                    script);
+    EXPECT_EQ(v.code, 1) << v.out;
+    EXPECT_NE(v.out.find("refusing to save scene JSON over a glTF model"), std::string::npos) << v.out;
+    EXPECT_EQ(readFile(model), original) << "the model was changed";
+}

@@ -12,12 +12,27 @@ void drawSidePanel(PanelContext& ctx, float width, float height) {
                                    ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::Begin("shadelab", nullptr, flags);
     ImGui::TextDisabled("shadelab view  %dx%d  %.1f ms/frame", ctx.renderWidth, ctx.renderHeight, ctx.frameMs);
+    ImGui::BeginDisabled(ctx.undoSteps == 0);
+    if (ImGui::Button("Undo")) ctx.services.undo();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(ctx.redoSteps == 0);
+    if (ImGui::Button("Redo")) ctx.services.redo();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("Ctrl+Z, Ctrl+Shift+Z");
+    // The status line has a fixed height of two text lines, shown or not, so a message appearing or
+    // expiring never moves the controls under the pointer (issue 15: a click meant for Open saved).
+    const float statusHeight = 2.0f * ImGui::GetTextLineHeightWithSpacing();
+    ImGui::BeginChild("##status", ImVec2(0.0f, statusHeight), false, ImGuiWindowFlags_NoScrollbar);
     if (!ctx.status.empty()) {
         const ImVec4 color = ctx.statusError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.55f, 0.9f, 0.55f, 1.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, color);
         ImGui::TextWrapped("%s", ctx.status.c_str());
         ImGui::PopStyleColor();
+        if (ImGui::IsWindowHovered()) ImGui::SetTooltip("%s", ctx.status.c_str());
     }
+    ImGui::EndChild();
     ImGui::Separator();
     if (ImGui::CollapsingHeader("Lighting model", ImGuiTreeNodeFlags_DefaultOpen)) drawLightingSection(ctx);
     if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) drawMaterialSection(ctx);
@@ -40,6 +55,8 @@ void drawHelpSection() {
         {"V", "next view mode"},
         {"F / R", "frame all / reset camera"},
         {"F5", "reload shaders from shaders/"},
+        {"Ctrl+Z", "undo the last edit (camera moves are not edits)"},
+        {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
         {"Tab", "hide / show this panel"},
         {"Esc", "clear probe and selection"},
         {"drop a file", "open .json, .gltf or .glb"},

@@ -20,12 +20,15 @@ public:
     virtual void screenshot(const std::string& path) = 0;
     // From `dir`, or shaderSourceDir() when empty.
     virtual void reloadShaders(const std::string& dir) = 0;
+    virtual void undo() = 0;
+    virtual void redo() = 0;
 };
 
 // Text fields and UI-only choices that are not part of the scene.
 struct UiFields {
     std::string openPath;
     std::string savePath;
+    std::string confirmReplace;  // an existing file Save waits to replace until the user confirms
     std::string screenshotPath = "shadelab-view.png";
     bool convertAllObjects = false;  // the equivalent-exponent buttons act on every object
     bool lessonFolded = false;       // the lesson window was folded for the probe
@@ -58,6 +61,7 @@ struct PanelContext {
     double frameMs = 0.0;  // median of the last frames
     int renderWidth = 0, renderHeight = 0;
     float uiScale = 1.0f;
+    size_t undoSteps = 0, redoSteps = 0;
 };
 
 // The left side panel, filling (0, 0, width, height) of the window.

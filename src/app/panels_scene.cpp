@@ -1,6 +1,7 @@
 // Scene panel (open, save, screenshot, shader reload with its error) and the lesson window that shows
 // the scene file's title and notes over the image.
 #include "app/panels.h"
+#include "app/save_policy.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -23,7 +24,27 @@ void drawSceneSection(PanelContext& ctx) {
     ImGui::TextDisabled(".json, .gltf or .glb; or drop a file on the window");
     ImGui::InputText("##save", &ctx.fields.savePath);
     ImGui::SameLine();
-    if (ImGui::Button("Save JSON")) ctx.services.saveScene(ctx.fields.savePath);
+    if (ImGui::Button("Save JSON")) {
+        // Never silently replace a file: an existing one waits for the question below (save_policy.h).
+        std::error_code ec;
+        if (saveRefusal(ctx.fields.savePath).empty() && std::filesystem::exists(ctx.fields.savePath, ec)) {
+            ctx.fields.confirmReplace = ctx.fields.savePath;
+            ImGui::OpenPopup("Replace file?");
+        } else {
+            ctx.services.saveScene(ctx.fields.savePath);
+        }
+    }
+    if (ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("%s already exists.", ctx.fields.confirmReplace.c_str());
+        ImGui::TextDisabled("Saving replaces it with the scene as it is now.");
+        if (ImGui::Button("Replace")) {
+            ctx.services.saveScene(ctx.fields.confirmReplace);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGuiKey_Escape)) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
     ImGui::InputText("##shot", &ctx.fields.screenshotPath);
     ImGui::SameLine();
     if (ImGui::Button("Screenshot")) ctx.services.screenshot(ctx.fields.screenshotPath);

@@ -135,6 +135,8 @@ const ActionInfo kActions[] = {
      [](const JsonNode& a) -> Action {
          return WaitReference{a.has("timeout") ? a.child("timeout").positive() : 60.0f};
      }},
+    {"undo", {}, [](const JsonNode&) -> Action { return Undo{}; }},
+    {"redo", {}, [](const JsonNode&) -> Action { return Redo{}; }},
     {"resizeWindow",
      {"width", "height"},
      [](const JsonNode& a) -> Action {

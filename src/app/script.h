@@ -118,6 +118,8 @@ struct WaitReference {
 struct ResizeWindow {
     int width = 0, height = 0;
 };  // window units
+struct Undo {};  // the viewer holds the history (undo_history.h)
+struct Redo {};
 
 }  // namespace actions
 
@@ -128,7 +130,7 @@ using Action =
                  actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
                  actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::Screenshot,
                  actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
-                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow>;
+                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Undo, actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

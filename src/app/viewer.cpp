@@ -83,6 +83,8 @@ bool Viewer::frame() {
     ctx.renderWidth = renderW_;
     ctx.renderHeight = renderH_;
     ctx.uiScale = uiScale_;
+    ctx.undoSteps = history_.undoSteps();
+    ctx.redoSteps = history_.redoSteps();
     if (showPanel_) drawSidePanel(ctx, panelWidth_, float(winH_));
     const float margin = 10.0f * uiScale_;
     drawLessonWindow(ctx, imageX_ + margin, imageY_ + imageH_ - margin,
@@ -97,6 +99,9 @@ bool Viewer::frame() {
                                      : std::min(imageX_ + imageW_ - margin - width, px + clearance);
         drawProbeWindow(ctx, anchor, imageY_ + margin, onRight);
     }
+
+    // Edits become undo steps between gestures, so a slider drag or a mouse drag is one step.
+    if (!ImGui::IsAnyItemActive() && !leftDown_ && !panning_) history_.commit(state_);
 
     // --stats forces a raster redraw on every other frame, so it measures both the frame a change costs
     // (the honest figure) and the frame that only redraws the window.

@@ -13,6 +13,7 @@
 #include "app/panels.h"
 #include "app/reference_renderer.h"
 #include "app/script.h"
+#include "app/undo_history.h"
 #include "app/viewer_state.h"
 #include "image/compare.h"
 #include "raster/raster_renderer.h"
@@ -40,6 +41,8 @@ public:
     void saveScene(const std::string& path) override;
     void screenshot(const std::string& path) override;
     void reloadShaders(const std::string& dir) override;
+    void undo() override;
+    void redo() override;
     void queueDrop(const std::string& path);  // from GLFW's drop callback
 
 private:
@@ -73,6 +76,7 @@ private:
 
     ViewerOptions options_;
     ViewerState state_;
+    UndoHistory history_;
     std::optional<Script> script_;
     std::optional<ScriptCursor> cursor_;
     const ScriptAction* waiting_ = nullptr;  // a waitReference action holding the script

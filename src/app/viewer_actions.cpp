@@ -4,6 +4,7 @@
 #include "app/viewer.h"
 
 #include "app/app.h"
+#include "app/save_policy.h"
 #include "image/png.h"
 #include "scene/scene_json.h"
 #include "scene/scene_load.h"
@@ -61,7 +62,13 @@ void Viewer::performAction(const ScriptAction& a) {
             } else if constexpr (std::is_same_v<T, ProbeReport>) {
                 writeProbeReport(x.path);
             } else if constexpr (std::is_same_v<T, SaveScene>) {
+                if (const std::string why = saveRefusal(x.path); !why.empty())
+                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "].path", x.path + ": " + why);
                 saveSceneJson(state_.scene, x.path);
+            } else if constexpr (std::is_same_v<T, Undo>) {
+                undo();
+            } else if constexpr (std::is_same_v<T, Redo>) {
+                redo();
             } else if constexpr (std::is_same_v<T, Open>) {
                 Scene scene = loadScene(x.path, printWarning);  // a script stops on a bad file
                 app::openScene(state_, std::move(scene), x.path);
@@ -158,11 +165,29 @@ void Viewer::openScene(const std::string& path) {
 }
 
 void Viewer::saveScene(const std::string& path) {
+    if (const std::string why = saveRefusal(path); !why.empty()) {
+        setStatus(path + ": " + why, true);
+        return;
+    }
     try {
         saveSceneJson(state_.scene, path);
         setStatus("saved " + path, false);
     } catch (const std::exception& e) {
         setStatus(e.what(), true);
+    }
+}
+
+void Viewer::undo() {
+    if (history_.undo(state_)) {
+        metrics_.reset();
+        setStatus("undone (" + std::to_string(history_.undoSteps()) + " more to undo)", false);
+    }
+}
+
+void Viewer::redo() {
+    if (history_.redo(state_)) {
+        metrics_.reset();
+        setStatus("redone (" + std::to_string(history_.redoSteps()) + " more to redo)", false);
     }
 }
 

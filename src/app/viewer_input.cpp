@@ -121,6 +121,13 @@ void Viewer::handleKeys() {
     auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
     for (int step = 1; step <= kProgressionSteps; ++step)
         if (pressed(GLFW_KEY_0 + step) || pressed(GLFW_KEY_KP_0 + step)) applyProgression(state_, step);
+    if (io.KeyCtrl && (pressed(GLFW_KEY_Z) || pressed(GLFW_KEY_Y))) {
+        if (pressed(GLFW_KEY_Y) || io.KeyShift)
+            redo();
+        else
+            undo();
+        return;
+    }
     if (pressed(GLFW_KEY_F)) frameAll(state_);
     if (pressed(GLFW_KEY_R)) resetCamera(state_);
     if (pressed(GLFW_KEY_F5)) reloadShaders("");

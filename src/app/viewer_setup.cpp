@@ -56,6 +56,7 @@ std::string shaderSourceDir() {
 Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script)
     : options_(options), state_(std::move(state)), script_(std::move(script)) {
     if (script_) cursor_.emplace(*script_);
+    history_.reset(state_);
     fields_.openPath = state_.scenePath;
     fields_.savePath = defaultSavePath(state_.scenePath);
     try {

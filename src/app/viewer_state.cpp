@@ -56,9 +56,18 @@ void openScene(ViewerState& state, Scene scene, std::string path) {
 void markChanged(ViewerState& state) {
     ++state.revision;
     ++state.referenceRevision;
+    ++state.editRevision;
 }
 
-void markRasterChanged(ViewerState& state) { ++state.revision; }
+void markRasterChanged(ViewerState& state) {
+    ++state.revision;
+    ++state.editRevision;
+}
+
+void markCameraChanged(ViewerState& state) {
+    ++state.revision;
+    ++state.referenceRevision;
+}
 
 ObjectRef objectRef(const Scene& scene, uint32_t id) {
     if (id == kBackgroundId) return {};
@@ -255,7 +264,7 @@ ColorIntensity splitIntensity(const glm::vec3& Il) {
 void applyOrbit(ViewerState& state, const OrbitCamera& orbit) {
     state.orbit = orbit;
     state.scene.camera = cameraFromOrbit(orbit);
-    markChanged(state);
+    markCameraChanged(state);
 }
 
 void frameAll(ViewerState& state) {
@@ -264,13 +273,13 @@ void frameAll(ViewerState& state) {
     Camera c = frameBounds(b, state.scene.camera.fovY);
     state.scene.camera = c;
     state.orbit = orbitFromCamera(c);
-    markChanged(state);
+    markCameraChanged(state);
 }
 
 void resetCamera(ViewerState& state) {
     state.scene.camera = state.fileCamera;
     state.orbit = orbitFromCamera(state.fileCamera);
-    markChanged(state);
+    markCameraChanged(state);
 }
 
 void setMode(ViewerState& state, ViewMode mode) { state.mode = mode; }

@@ -37,6 +37,7 @@ struct ViewerState {
     uint64_t revision = 1;           // bumped by every change a renderer can see
     uint64_t referenceRevision = 1;  // bumped by every change the tracer can see (not scene.raster)
     uint64_t geometryRevision = 1;   // bumped when the meshes change (a new scene)
+    uint64_t editRevision = 1;       // bumped by every change but the camera's: what undo steps over
 };
 
 ViewerState makeViewerState(Scene scene, std::string path);
@@ -45,6 +46,9 @@ void openScene(ViewerState& state, Scene scene, std::string path);
 void markChanged(ViewerState& state);
 // A change only the rasterizer sees (scene.raster): the reference keeps running.
 void markRasterChanged(ViewerState& state);
+// A camera move (orbit, pan, zoom, F, R): both renderers redraw, but it is navigation, not an edit, so
+// undo does not step over it (undo_history.h).
+void markCameraChanged(ViewerState& state);
 
 // --- objects, by coverage id (1-based: spheres, planes, meshes in scene order) ---
 struct ObjectRef {

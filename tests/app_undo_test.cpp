@@ -1,0 +1,127 @@
+// Undo, redo and save safety in the viewer (issue 15), without a window: every edit is one step, camera
+// moves are not steps and stay where they are, undoing an Open brings the other file back, and Save never
+// writes scene JSON over a glTF model or another kind of file.
+#include "app/save_policy.h"
+#include "app/undo_history.h"
+#include "app/viewer_state.h"
+#include "scene/scene_json.h"
+#include "scene/scene_load.h"
+#include "test_output.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace shadelab;
+using namespace shadelab::app;
+
+namespace {
+
+ViewerState stateOf(const std::string& relative) {
+    const std::string path = test::sourcePath(relative);
+    return makeViewerState(loadScene(path), path);
+}
+
+// The scene as Save writes it: equal text is an equal scene, camera included.
+std::string saved(const Scene& scene, const std::string& name) {
+    const std::string path = test::outputPath(name);
+    saveSceneJson(scene, path);
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+TEST(AppUndo, RemovedLightComesBackExactlyAndRedoRemovesItAgain) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    UndoHistory history;
+    history.reset(s);
+    const std::string before = saved(s.scene, "undo_light_before.json");
+    const size_t lights = s.scene.lights.size();
+    ASSERT_GE(lights, 2u);
+    ASSERT_TRUE(removeLight(s, 0));
+    EXPECT_TRUE(history.commit(s));
+    const std::string removed = saved(s.scene, "undo_light_removed.json");
+    EXPECT_NE(removed, before) << "negative control: the removal changed the scene";
+
+    const uint64_t revision = s.revision;
+    ASSERT_TRUE(history.undo(s));
+    EXPECT_EQ(s.scene.lights.size(), lights);
+    EXPECT_EQ(saved(s.scene, "undo_light_undone.json"), before);
+    EXPECT_GT(s.revision, revision) << "the renderers must redraw after an undo";
+    EXPECT_FALSE(history.undo(s)) << "nothing older than the baseline";
+
+    ASSERT_TRUE(history.redo(s));
+    EXPECT_EQ(saved(s.scene, "undo_light_redone.json"), removed);
+    EXPECT_FALSE(history.redo(s));
+}
+
+TEST(AppUndo, ADragIsOneStepAndCameraMovesAreNotSteps) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    UndoHistory history;
+    history.reset(s);
+    const uint32_t id = *findObject(s.scene, "#1");
+    const float s0 = objectMaterial(s.scene, id).s;
+    // A slider drag: many changes, one commit when the widget is released.
+    for (float v = 10.0f; v <= 200.0f; v += 10.0f) setShininess(s, id, v);
+    EXPECT_TRUE(history.commit(s));
+    EXPECT_EQ(history.undoSteps(), 1u);
+    // An orbit is navigation: no step, and undo leaves the camera where it is.
+    OrbitCamera o = s.orbit;
+    orbitRotate(o, 0.5f, 0.1f);
+    applyOrbit(s, o);
+    EXPECT_FALSE(history.commit(s));
+    const Camera moved = s.scene.camera;
+    ASSERT_TRUE(history.undo(s));
+    EXPECT_EQ(objectMaterial(s.scene, id).s, s0);
+    EXPECT_EQ(s.scene.camera.position, moved.position);
+    EXPECT_EQ(s.scene.camera.target, moved.target);
+}
+
+TEST(AppUndo, NewEditDropsRedoAndHistoryIsBounded) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    UndoHistory history(4);
+    history.reset(s);
+    for (int i = 0; i < 6; ++i) {
+        setAmbient(s, glm::vec3(0.01f * float(i + 1)));
+        history.commit(s);
+    }
+    EXPECT_EQ(history.undoSteps(), 4u);
+    ASSERT_TRUE(history.undo(s));
+    EXPECT_EQ(s.scene.ambient, glm::vec3(0.01f * 5.0f));
+    EXPECT_EQ(history.redoSteps(), 1u);
+    setAmbient(s, glm::vec3(0.5f));
+    history.commit(s);
+    EXPECT_EQ(history.redoSteps(), 0u) << "a new edit ends the redo list";
+}
+
+TEST(AppUndo, UndoingAnOpenBringsTheOtherFileBack) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    UndoHistory history;
+    history.reset(s);
+    const std::string before = saved(s.scene, "undo_open_before.json");
+    const uint64_t geometry = s.geometryRevision;
+    const std::string torus = test::sourcePath("assets/scenes/torus.json");
+    openScene(s, loadScene(torus), torus);
+    history.commit(s);
+    ASSERT_FALSE(s.scene.meshes.empty());
+    ASSERT_TRUE(history.undo(s));
+    EXPECT_EQ(s.scenePath, test::sourcePath("assets/scenes/default.json"));
+    EXPECT_EQ(saved(s.scene, "undo_open_after.json"), before) << "the file's own camera comes back with it";
+    EXPECT_GT(s.geometryRevision, geometry + 1) << "a fresh geometry revision, never an old one";
+    ASSERT_TRUE(history.redo(s));
+    EXPECT_EQ(s.scenePath, torus);
+    EXPECT_FALSE(s.scene.meshes.empty());
+}
+
+TEST(AppSave, NeverOverAModelOrAnotherKindOfFile) {
+    EXPECT_EQ(saveRefusal("lesson-saved.json"), "");
+    EXPECT_EQ(saveRefusal("dir/Scene.JSON"), "");
+    for (const char* bad : {"ClearCoatTest.gltf", "engine.GLB", "shot.png", "notes", ""})
+        EXPECT_NE(saveRefusal(bad), "") << bad;
+    EXPECT_NE(saveRefusal("model.gltf").find("glTF"), std::string::npos);
+    const std::string dir = test::outputPath("save_policy_dir.json");
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(saveRefusal(dir), "is a folder");
+}
