@@ -46,9 +46,31 @@ bool Viewer::finished() const {
     return !cursor_ || (cursor_->done() && !waiting_);
 }
 
+// An idle viewer uses no CPU (issue 15): when nothing is animating it sleeps in glfwWaitEvents until input,
+// a drop or a resize arrives, or until the next thing it must show (a status message expiring, a reference
+// tile). A few frames after any input let ImGui settle its hover and focus state before sleeping again.
+void Viewer::waitForWork() {
+    const bool scripted = options_.frames >= 0 || options_.stats || (cursor_ && (!cursor_->done() || waiting_));
+    const bool changed = state_.revision != idleRevision_;
+    idleRevision_ = state_.revision;
+    if (scripted || changed || settleFrames_ > 0) {
+        if (settleFrames_ > 0) --settleFrames_;
+        if (changed) settleFrames_ = kSettleFrames;
+        glfwPollEvents();
+        return;
+    }
+    double timeout = 1e9;  // glfwWaitEventsTimeout needs a finite number
+    if (reference_->active() && !reference_->complete()) timeout = 1.0 / 30.0;  // show tiles as they finish
+    const double statusLeft = statusTime_ + kStatusSeconds - glfwGetTime();
+    if (statusLeft > 0.0) timeout = std::min(timeout, statusLeft + 0.01);
+    const double before = glfwGetTime();
+    glfwWaitEventsTimeout(timeout);
+    if (glfwGetTime() - before < timeout) settleFrames_ = kSettleFrames;  // woken by an event
+}
+
 bool Viewer::frame() {
+    waitForWork();
     const double t0 = glfwGetTime();
-    glfwPollEvents();
     if (glfwWindowShouldClose(window_)) return false;
     handleDrops();
     glfwGetFramebufferSize(window_, &fbW_, &fbH_);
@@ -75,7 +97,7 @@ bool Viewer::frame() {
                      reference_->seconds(), reference_->threads(),  reference_->error()};
     ctx.metrics = metrics_ && metricsRevision_ == state_.revision ? &*metrics_ : nullptr;
     ctx.shaderError = shaderError_;
-    if (glfwGetTime() - statusTime_ < 8.0) {
+    if (glfwGetTime() - statusTime_ < kStatusSeconds) {
         ctx.status = status_;
         ctx.statusError = statusError_;
     }

@@ -52,6 +52,7 @@ private:
     void shutdown();
     // viewer.cpp
     bool frame();
+    void waitForWork();
     void computeLayout();
     bool ensureRasterCurrent(bool force);  // true when it drew
     void updateReference();
@@ -124,6 +125,10 @@ private:
     std::string pendingWindowShot_;
 
     int frame_ = 0;
+    static constexpr int kSettleFrames = 3;
+    static constexpr double kStatusSeconds = 8.0;
+    int settleFrames_ = kSettleFrames;
+    uint64_t idleRevision_ = 0;
     FrameStats frameStats_, idleStats_, rasterStats_;  // frames with / without a raster redraw
     std::array<double, 64> recentMs_{};
     double recentFrameMs() const;
