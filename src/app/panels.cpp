@@ -58,6 +58,7 @@ void drawHelpSection() {
         {"Ctrl+Z", "undo the last edit (camera moves are not edits)"},
         {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
         {"Tab", "hide / show this panel"},
+        {"C", "captions on the image on / off"},
         {"Esc", "clear probe and selection"},
         {"drop a file", "open .json, .gltf or .glb"},
     };

@@ -48,6 +48,7 @@ void drawViewSection(PanelContext& ctx) {
         if (i) ImGui::SameLine();
         if (ImGui::RadioButton(names[i], &mode, i)) setMode(s, ViewMode(i));
     }
+    ImGui::Checkbox("captions on the image (C)", &ctx.fields.captions);
     int encoding = s.encoding == Encoding::Srgb ? 0 : 1;
     ImGui::TextDisabled("encoding");
     ImGui::SameLine();

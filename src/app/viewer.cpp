@@ -2,6 +2,7 @@
 // and the image area, and --stats. Setup and teardown are in viewer_setup.cpp.
 #include "app/viewer.h"
 
+#include "app/captions.h"
 #include "compare/comparison.h"
 #include "image/png.h"
 
@@ -265,6 +266,7 @@ void Viewer::compose() {
     in.coverage = raster_->target().coverageTexture();
     in.selected = state_.selected;
     imageView_->draw(fbRect_, in);
+    if (fields_.captions) drawCaptions();
     if (probe_ && probe_->hit) {
         const std::vector<ArrowLabel> labels =
             arrows_->draw(state_.scene, *probe_, renderW_, renderH_, fbRect_, fbH_, fbScale_ * uiScale_);
@@ -279,6 +281,32 @@ void Viewer::compose() {
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     gl::checkError("viewer frame");
+}
+
+// Captions over the image, under every ImGui window (the background draw list): the model, the terms and
+// the mode at the top left, and in Split the two renderers' names either side of the wipe.
+void Viewer::drawCaptions() {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    ImFont* font = captionFont_ ? captionFont_ : ImGui::GetFont();
+    const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
+    const float pad = 4.0f * uiScale_, margin = 10.0f * uiScale_;
+    auto label = [&](ImVec2 at, const char* text, bool alignRight) {
+        const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
+        if (alignRight) at.x -= extent.x + 2.0f * pad;
+        at.x = std::clamp(at.x, imageX_, std::max(imageX_, imageX_ + imageW_ - extent.x - 2.0f * pad));
+        dl->AddRectFilled(at, ImVec2(at.x + extent.x + 2.0f * pad, at.y + extent.y + 2.0f * pad),
+                          IM_COL32(0, 0, 0, 150), 3.0f * uiScale_);
+        dl->AddText(font, size, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text);
+        return extent.y + 2.0f * pad;
+    };
+    const std::string caption = imageCaption(state_);
+    const float height = label(ImVec2(imageX_ + margin, imageY_ + margin), caption.c_str(), false);
+    if (state_.mode == ViewMode::Split) {
+        const float wipe = imageX_ + state_.splitPosition * imageW_;
+        const float y = imageY_ + margin + height + 6.0f * uiScale_;
+        label(ImVec2(wipe - 6.0f * uiScale_, y), splitLeftCaption(), true);
+        label(ImVec2(wipe + 6.0f * uiScale_, y), splitRightCaption(), false);
+    }
 }
 
 }  // namespace shadelab::app

@@ -25,6 +25,7 @@
 #include <vector>
 
 struct GLFWwindow;
+struct ImFont;
 
 namespace shadelab::app {
 
@@ -58,6 +59,7 @@ private:
     void updateReference();
     void updateProbe();
     void compose();
+    void drawCaptions();
     bool finished() const;
     // viewer_input.cpp
     void handleMouse();
@@ -85,6 +87,7 @@ private:
 
     GLFWwindow* window_ = nullptr;
     bool imguiReady_ = false;
+    ImFont* captionFont_ = nullptr;  // larger than the panel's, for a projector
     std::unique_ptr<raster::RasterRenderer> raster_;
     std::unique_ptr<ImageView> imageView_;
     std::unique_ptr<ArrowOverlay> arrows_;

@@ -135,6 +135,7 @@ void Viewer::handleKeys() {
         setModel(state_, state_.scene.model == ShadingModel::Phong ? ShadingModel::BlinnPhong : ShadingModel::Phong);
     if (pressed(GLFW_KEY_V)) setMode(state_, ViewMode((int(state_.mode) + 1) % 4));
     if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
+    if (pressed(GLFW_KEY_C)) fields_.captions = !fields_.captions;
     if (pressed(GLFW_KEY_ESCAPE)) {
         clearProbe(state_);
         select(state_, 0);

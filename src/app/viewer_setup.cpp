@@ -168,6 +168,8 @@ void Viewer::initImGui() {
     }
     // The probe's tables: monospaced and a little smaller, so the window covers less of the image.
     if (std::filesystem::exists(mono)) io.Fonts->AddFontFromFileTTF(mono, std::round(0.88f * pixels));
+    // The captions on the image: half as large again, to read from the back of a classroom.
+    if (std::filesystem::exists(sans)) captionFont_ = io.Fonts->AddFontFromFileTTF(sans, std::round(1.5f * pixels));
     io.FontGlobalScale = 1.0f / fbScale;
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");

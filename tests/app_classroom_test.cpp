@@ -1,6 +1,7 @@
-// Undo, redo and save safety in the viewer (issue 15), without a window: every edit is one step, camera
-// moves are not steps and stay where they are, undoing an Open brings the other file back, and Save never
-// writes scene JSON over a glTF model or another kind of file.
+// The viewer in front of a class (issue 15), without a window: undo and redo (every edit is one step,
+// camera moves are not steps and stay where they are, undoing an Open brings the other file back), Save
+// never writes scene JSON over a glTF model or another kind of file, and the captions on the image.
+#include "app/captions.h"
 #include "app/save_policy.h"
 #include "app/undo_history.h"
 #include "app/viewer_state.h"
@@ -124,4 +125,21 @@ TEST(AppSave, NeverOverAModelOrAnotherKindOfFile) {
     const std::string dir = test::outputPath("save_policy_dir.json");
     std::filesystem::create_directories(dir);
     EXPECT_EQ(saveRefusal(dir), "is a folder");
+}
+
+TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    applyProgression(s, 3);
+    setModel(s, ShadingModel::BlinnPhong);
+    EXPECT_EQ(imageCaption(s), "Blinn-Phong  \xc2\xb7  ambient + diffuse + specular  \xc2\xb7  raster");
+    setNormalized(s, true);
+    setMode(s, ViewMode::Split);
+    EXPECT_EQ(imageCaption(s),
+              "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular  \xc2\xb7  raster | reference");
+    applyProgression(s, 5);
+    EXPECT_EQ(termsCaption(s.scene.terms), "ambient + diffuse + specular + shadows + reflections");
+    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections}) setTerm(s, t, false);
+    EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
+    setModel(s, ShadingModel::Pbr);
+    EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
 }

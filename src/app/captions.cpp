@@ -1,0 +1,35 @@
+#include "app/captions.h"
+
+namespace shadelab::app {
+
+std::string modelCaption(const Scene& scene) {
+    switch (scene.model) {
+        case ShadingModel::Phong: return scene.normalized ? "normalised Phong" : "Phong";
+        case ShadingModel::BlinnPhong: return scene.normalized ? "normalised Blinn-Phong" : "Blinn-Phong";
+        case ShadingModel::Pbr: return "PBR (GGX)";
+    }
+    return toString(scene.model);
+}
+
+std::string termsCaption(const Terms& terms) {
+    std::string text;
+    for (const auto& entry : kTermNames) {
+        if (!termEnabled(terms, entry.value)) continue;
+        if (!text.empty()) text += " + ";
+        text += entry.name;
+    }
+    return text.empty() ? "nothing" : text;
+}
+
+std::string imageCaption(const ViewerState& state) {
+    const char* mode = "";
+    switch (state.mode) {
+        case ViewMode::Raster: mode = "raster"; break;
+        case ViewMode::Traced: mode = "reference (Whitted ray tracer)"; break;
+        case ViewMode::Split: mode = "raster | reference"; break;
+        case ViewMode::Difference: mode = "|raster - reference|, amplified"; break;
+    }
+    return modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(state.scene.terms) + "  \xc2\xb7  " + mode;
+}
+
+}  // namespace shadelab::app
