@@ -56,6 +56,7 @@ struct PanelContext {
     const ProbeResult* probe = nullptr;  // null when no probe is set
     ReferenceInfo reference;
     const CompareResult* metrics = nullptr;  // raster vs complete reference, when available
+    std::string metricsWords;                // the same, in plain words
     std::string shaderError;
     std::string status;
     bool statusError = false;

@@ -8,7 +8,10 @@ namespace shadelab::app {
 namespace {
 
 void metricsTable(const CompareResult& r) {
-    ImGui::Text("%s under the design.md gates", r.pass ? "PASS" : "FAIL");
+    // The numbers behind the words, with the verdict under the strict gates CI uses, folded away: in front
+    // of a class a bare "FAIL" on the lesson scene reads as a fault, which it is not.
+    if (!ImGui::TreeNode("metrics", "metrics per region (%s under the design.md section 4 gates)", r.pass ? "within" : "outside"))
+        return;
     if (ImGui::BeginTable("metrics", 4, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerH)) {
         ImGui::TableSetupColumn("region");
         ImGui::TableSetupColumn("mean");
@@ -36,6 +39,7 @@ void metricsTable(const CompareResult& r) {
     ImGui::TextDisabled("coverage mismatches %lld (%lld outside the band)", (long long)r.coverageMismatches,
                         (long long)r.mismatchesOutsideBand);
     for (const std::string& reason : r.reasons) ImGui::TextWrapped("- %s", reason.c_str());
+    ImGui::TreePop();
 }
 
 }  // namespace
@@ -77,8 +81,10 @@ void drawViewSection(PanelContext& ctx) {
     ImGui::ProgressBar(ref.progress, ImVec2(-1.0f, 0.0f), overlay);
     ImGui::TextDisabled("CPU reference, %d thread(s) at low priority; restarts on every change", ref.threads);
     if (s.mode == ViewMode::Difference) {
-        if (ctx.metrics)
+        if (ctx.metrics) {
+            ImGui::TextWrapped("%s", ctx.metricsWords.c_str());
             metricsTable(*ctx.metrics);
+        }
         else
             ImGui::TextDisabled("metrics when the reference is complete");
     }

@@ -97,6 +97,7 @@ bool Viewer::frame() {
     ctx.reference = {reference_->active(),  reference_->complete(), reference_->progress(),
                      reference_->seconds(), reference_->threads(),  reference_->error()};
     ctx.metrics = metrics_ && metricsRevision_ == state_.revision ? &*metrics_ : nullptr;
+    if (ctx.metrics) ctx.metricsWords = metricsWords_;
     ctx.shaderError = shaderError_;
     if (glfwGetTime() - statusTime_ < kStatusSeconds) {
         ctx.status = status_;

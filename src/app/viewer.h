@@ -113,6 +113,7 @@ private:
 
     // Difference metrics for a complete reference.
     std::optional<CompareResult> metrics_;
+    std::string metricsWords_;  // where they differ, in plain words (compare/difference_sites.h)
     uint64_t metricsRevision_ = 0;
 
     // Input.

@@ -5,6 +5,7 @@
 
 #include "app/app.h"
 #include "app/save_policy.h"
+#include "compare/difference_sites.h"
 #include "image/png.h"
 #include "scene/scene_json.h"
 #include "scene/scene_load.h"
@@ -148,6 +149,8 @@ void Viewer::updateMetrics() {
     const Image8 traced = toImage8(reference_->image(), state_.encoding);
     if (traced.width != raster.width || traced.height != raster.height) return;
     metrics_ = compareImages(raster, traced, rasterCoverage, reference_->coverage());
+    metricsWords_ = describeDifference(state_.scene, differenceSites(raster, traced, rasterCoverage, *metrics_),
+                                       metrics_->gates.threshold);
     metricsRevision_ = state_.revision;
 }
 

@@ -8,6 +8,7 @@
 #include "cli/render_options.h"
 #include "cli/stage_timer.h"
 #include "compare/comparison.h"
+#include "compare/difference_sites.h"
 #include "gl/headless_context.h"
 #include "image/compare.h"
 #include "image/compare_report.h"
@@ -139,6 +140,9 @@ int render(const RenderOptions& o, std::string& doing) {
         timer.stage("compare + heatmap");
         std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
                      referenceDepth(scene, o), compareSummary(cmp).c_str());
+        // The verdict is under the strict gates of design.md §4; say in words where the images differ and why.
+        const DifferenceSites sites = differenceSites(a.pixels, b.pixels, a.coverage, cmp);
+        std::fprintf(stderr, "%s\n", describeDifference(scene, sites, cmp.gates.threshold).c_str());
     }
     doing = "encoding the PNG";
     std::vector<uint8_t> png = encodePng(output);
