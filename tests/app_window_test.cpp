@@ -355,3 +355,26 @@ TEST(AppWindow, SaveNeverWritesOverAModel) {
     EXPECT_NE(v.out.find("refusing to save scene JSON over a glTF model"), std::string::npos) << v.out;
     EXPECT_EQ(readFile(model), original) << "the model was changed";
 }
+
+TEST(AppWindow, ProjectorScaleKeepsTheWindowsShape) {
+    // Issue 15: at --ui-scale 2 the panel took half the window and the image became a cropped portrait.
+    // Now a panel wider than a third of the window lies over the image, which keeps the window's shape.
+    REQUIRE_XVFB();
+    auto shapes = [&](const std::string& name, const std::string& flags) {
+        const std::string shot = test::outputPath(name + "_image.png"), window = test::outputPath(name + "_window.png");
+        Result v = view(test::sourcePath("assets/scenes/default.json") + " --frames 3 " + flags + " --screenshot " +
+                        shot + " --window-screenshot " + window);
+        EXPECT_EQ(v.code, 0) << v.out;
+        const Image8 image = readPng(shot), win = readPng(window);
+        return std::pair<double, double>(double(image.width) / image.height, double(win.width) / win.height);
+    };
+    const auto [image2, window2] = shapes("projector_scale2", "--ui-scale 2");
+    EXPECT_NEAR(image2, window2, 0.01) << "at UI scale 2 the image must have the window's aspect ratio";
+    EXPECT_GT(image2, 1.0) << "a landscape window gives a landscape image";
+    const auto [imageP, windowP] = shapes("projector_flag", "--projector");
+    EXPECT_NEAR(imageP, windowP, 0.01);
+    EXPECT_NEAR(windowP, 16.0 / 9.0, 0.02) << "--projector opens a 16:9 window";
+    // Negative control: at UI scale 1 the panel sits beside the image, which is then narrower than the window.
+    const auto [image1, window1] = shapes("projector_scale1", "--ui-scale 1");
+    EXPECT_LT(image1, window1 - 0.1);
+}

@@ -20,6 +20,7 @@ struct ViewerOptions {
     bool stats = false;            // --stats: redraw every other frame, print median and p95 frame times
     bool verbose = false;          // --verbose: GL_RENDERER, GL_VERSION, scene and shader sources
     float uiScale = 0.0f;          // --ui-scale: 0 = the monitor's content scale
+    bool projector = false;        // --projector: UI scale 2 unless given, the panel over the image
 };
 
 // Opens the window and runs until it closes or the frames and script are done. Returns the exit code.

@@ -5,9 +5,10 @@
 
 namespace shadelab::app {
 
-void drawSidePanel(PanelContext& ctx, float width, float height) {
+void drawSidePanel(PanelContext& ctx, float width, float height, bool overlay) {
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(width, height));
+    if (overlay) ImGui::SetNextWindowBgAlpha(0.8f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::Begin("shadelab", nullptr, flags);
@@ -59,6 +60,7 @@ void drawHelpSection() {
         {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
         {"Tab", "hide / show this panel"},
         {"C", "captions on the image on / off"},
+        {"P", "projector mode: the panel over a full-window image"},
         {"Esc", "clear probe and selection"},
         {"drop a file", "open .json, .gltf or .glb"},
     };

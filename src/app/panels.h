@@ -67,7 +67,8 @@ struct PanelContext {
 };
 
 // The left side panel, filling (0, 0, width, height) of the window.
-void drawSidePanel(PanelContext& ctx, float width, float height);
+// `overlay`: it lies over the image (projector mode), so its background is translucent.
+void drawSidePanel(PanelContext& ctx, float width, float height, bool overlay);
 // Sections of the side panel.
 void drawSceneSection(PanelContext& ctx);
 void drawLightingSection(PanelContext& ctx);

@@ -109,17 +109,18 @@ bool Viewer::frame() {
     ctx.uiScale = uiScale_;
     ctx.undoSteps = history_.undoSteps();
     ctx.redoSteps = history_.redoSteps();
-    if (showPanel_) drawSidePanel(ctx, panelWidth_, float(winH_));
+    if (showPanel_) drawSidePanel(ctx, panelWidth_, float(winH_), panelOverlays_);
     const float margin = 10.0f * uiScale_;
-    drawLessonWindow(ctx, imageX_ + margin, imageY_ + imageH_ - margin,
-                     std::min(imageW_ - 2.0f * margin, 760.0f * uiScale_), ctx.probe != nullptr);
+    const float left = visibleLeft(), visibleW = imageX_ + imageW_ - left;
+    drawLessonWindow(ctx, left + margin, imageY_ + imageH_ - margin,
+                     std::min(visibleW - 2.0f * margin, 760.0f * uiScale_), ctx.probe != nullptr);
     if (ctx.probe) {
         // Beside the probed point, on the side with more room, clear of its arrows.
         const float px = imageX_ + (float(state_.probe.x) + 0.5f) / float(renderW_) * imageW_;
         const float clearance = 0.22f * imageH_ + 20.0f * uiScale_;
         const bool onRight = 2 * state_.probe.x > renderW_;
         const float width = fields_.probeWindowWidth;  // as drawn last frame
-        const float anchor = onRight ? std::max(imageX_ + margin + width, px - clearance)
+        const float anchor = onRight ? std::max(left + margin + width, px - clearance)
                                      : std::min(imageX_ + imageW_ - margin - width, px + clearance);
         drawProbeWindow(ctx, anchor, imageY_ + margin, onRight);
     }
@@ -159,7 +160,11 @@ double Viewer::recentFrameMs() const {
 void Viewer::computeLayout() {
     fbScale_ = float(fbW_) / float(winW_);
     panelWidth_ = showPanel_ ? std::min(kViewerPanelWidth * uiScale_, 0.5f * float(winW_)) : 0.0f;
-    const int areaX = int(std::lround(panelWidth_ * fbScale_));
+    // A panel beside the image would squeeze it into a portrait at a large UI scale: then it lies over the
+    // image instead, and the image keeps the window's shape (projector mode).
+    const bool overlay = overlayPanel_ || panelWidth_ > 0.34f * float(winW_);
+    panelOverlays_ = overlay && showPanel_;
+    const int areaX = overlay ? 0 : int(std::lround(panelWidth_ * fbScale_));
     const int areaW = std::max(1, fbW_ - areaX), areaH = std::max(1, fbH_);
     if (options_.width > 0) {
         renderW_ = options_.width;
@@ -284,6 +289,9 @@ void Viewer::compose() {
     gl::checkError("viewer frame");
 }
 
+// The left edge of the part of the image the panel does not cover, window units.
+float Viewer::visibleLeft() const { return panelOverlays_ ? std::max(imageX_, panelWidth_) : imageX_; }
+
 // Captions over the image, under every ImGui window (the background draw list): the model, the terms and
 // the mode at the top left, and in Split the two renderers' names either side of the wipe.
 void Viewer::drawCaptions() {
@@ -291,17 +299,26 @@ void Viewer::drawCaptions() {
     ImFont* font = captionFont_ ? captionFont_ : ImGui::GetFont();
     const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
     const float pad = 4.0f * uiScale_, margin = 10.0f * uiScale_;
+    const float room = imageX_ + imageW_ - visibleLeft() - 2.0f * margin;
     auto label = [&](ImVec2 at, const char* text, bool alignRight) {
-        const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
+        // Shrunk to fit what the panel leaves of the image, down to the panel's own font size.
+        float textSize = size;
+        ImVec2 extent = font->CalcTextSizeA(textSize, 1e9f, 0.0f, text);
+        const float wrap = std::max(room - 2.0f * pad, 1.0f);  // and wrapped when it still does not fit
+        if (extent.x > wrap) {
+            textSize = std::max(size / 1.5f, size * wrap / extent.x);
+            extent = font->CalcTextSizeA(textSize, 1e9f, wrap, text);
+        }
         if (alignRight) at.x -= extent.x + 2.0f * pad;
-        at.x = std::clamp(at.x, imageX_, std::max(imageX_, imageX_ + imageW_ - extent.x - 2.0f * pad));
+        at.x = std::clamp(at.x, visibleLeft(), std::max(visibleLeft(), imageX_ + imageW_ - extent.x - 2.0f * pad));
         dl->AddRectFilled(at, ImVec2(at.x + extent.x + 2.0f * pad, at.y + extent.y + 2.0f * pad),
                           IM_COL32(0, 0, 0, 150), 3.0f * uiScale_);
-        dl->AddText(font, size, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text);
+        dl->AddText(font, textSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr,
+                    wrap);
         return extent.y + 2.0f * pad;
     };
     const std::string caption = imageCaption(state_);
-    const float height = label(ImVec2(imageX_ + margin, imageY_ + margin), caption.c_str(), false);
+    const float height = label(ImVec2(visibleLeft() + margin, imageY_ + margin), caption.c_str(), false);
     if (state_.mode == ViewMode::Split) {
         const float wipe = imageX_ + state_.splitPosition * imageW_;
         const float y = imageY_ + margin + height + 6.0f * uiScale_;

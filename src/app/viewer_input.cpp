@@ -136,6 +136,7 @@ void Viewer::handleKeys() {
     if (pressed(GLFW_KEY_V)) setMode(state_, ViewMode((int(state_.mode) + 1) % 4));
     if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
     if (pressed(GLFW_KEY_C)) fields_.captions = !fields_.captions;
+    if (pressed(GLFW_KEY_P)) overlayPanel_ = !overlayPanel_;
     if (pressed(GLFW_KEY_ESCAPE)) {
         clearProbe(state_);
         select(state_, 0);

@@ -113,11 +113,15 @@ void Viewer::initWindow() {
         glfwGetMonitorContentScale(monitor, &contentScale, &unused);
         if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) screenW = mode->width, screenH = mode->height;
     }
-    uiScale_ = options_.uiScale > 0.0f ? options_.uiScale : std::clamp(contentScale, 1.0f, 3.0f);
-    const int panel = int(kViewerPanelWidth * uiScale_);
+    uiScale_ = options_.uiScale > 0.0f ? options_.uiScale
+               : options_.projector    ? 2.0f
+                                       : std::clamp(contentScale, 1.0f, 3.0f);
+    overlayPanel_ = options_.projector;
+    const int panel = overlayPanel_ ? 0 : int(kViewerPanelWidth * uiScale_);
     // Default: a 16:9 image area of up to 1280x720 next to the panel, as `shadelab render` frames it.
-    const int imageW = std::min(1280, int(0.95f * float(screenW)) - panel);
-    int w = panel + imageW, h = std::max(imageW * 9 / 16, int(720 * uiScale_));
+    // In projector mode: a 16:9 window as wide as the screen allows, the panel over it.
+    const int imageW = overlayPanel_ ? int(0.95f * float(screenW)) : std::min(1280, int(0.95f * float(screenW)) - panel);
+    int w = panel + imageW, h = overlayPanel_ ? imageW * 9 / 16 : std::max(imageW * 9 / 16, int(720 * uiScale_));
     if (options_.width > 0) {
         w = options_.width + panel;
         h = std::max(options_.height, int(600 * uiScale_));

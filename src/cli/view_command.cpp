@@ -36,7 +36,9 @@ const char* const kViewHelpHead =
     "  --encoding NAME            srgb (default) | linear, for the display and the screenshots\n"
     "  --stats                    redraw the image every other frame; print median and 95th-percentile\n"
     "                             frame times with and without a redraw\n"
-    "  --ui-scale F               UI scale, 0.5..4 (default: the monitor's content scale)\n";
+    "  --ui-scale F               UI scale, 0.5..4 (default: the monitor's content scale)\n"
+    "  --projector                for a classroom projector: UI scale 2 (unless --ui-scale is given) and\n"
+    "                             the panel laid over the image, which keeps the window's shape (key P)\n";
 
 // Then the raster flags (cli/raster_flags.h), which apply to the scene named on the command line.
 const char* const kViewHelpTail =
@@ -59,7 +61,7 @@ std::string defaultScenePath() {
 int viewCommand(int argc, char** argv) {
     std::vector<std::string> valued = {"--size",   "--frames",       "--screenshot", "--window-screenshot",
                                        "--script", "--probe-report", "--encoding",   "--ui-scale"};
-    std::vector<std::string> flags = {"-h", "--help", "--stats", "--verbose"};
+    std::vector<std::string> flags = {"-h", "--help", "--stats", "--verbose", "--projector"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
     const Args args(argc, argv, 2, valued, flags);
@@ -76,6 +78,7 @@ int viewCommand(int argc, char** argv) {
     if (auto v = args.value("--window-screenshot")) options.windowScreenshot = *v;
     if (auto v = args.value("--probe-report")) options.probeReport = *v;
     if (auto v = args.value("--ui-scale")) options.uiScale = parseNumber("--ui-scale", *v, 0.5f, 4.0f);
+    options.projector = args.flag("--projector");
     options.stats = args.flag("--stats");
     options.verbose = args.flag("--verbose");
     Encoding encoding = Encoding::Srgb;
