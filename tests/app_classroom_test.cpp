@@ -2,11 +2,13 @@
 // camera moves are not steps and stay where they are, undoing an Open brings the other file back), Save
 // never writes scene JSON over a glTF model or another kind of file, and the captions on the image.
 #include "app/captions.h"
+#include "app/light_markers.h"
 #include "app/save_policy.h"
 #include "app/undo_history.h"
 #include "app/viewer_state.h"
 #include "scene/scene_json.h"
 #include "scene/scene_load.h"
+#include "scene/view.h"
 #include "test_output.h"
 
 #include <gtest/gtest.h>
@@ -142,4 +144,48 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
+}
+
+TEST(AppLightMarkers, DraggedLightLandsUnderThePointer) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    const int w = 320, h = 180;
+    s.scene.lights[0].position = glm::vec3(-2.0f, 2.5f, 2.0f);
+    std::vector<LightMarker> markers = lightMarkers(s.scene, w, h);
+    ASSERT_EQ(markers.size(), s.scene.lights.size());
+    const LightMarker m = markers[0];
+    EXPECT_TRUE(m.visible);
+    EXPECT_FALSE(m.clamped);
+    EXPECT_EQ(markerAt(markers, m.shown + glm::vec2(3.0f, -2.0f), 12.0f), 0);
+    EXPECT_EQ(markerAt(markers, m.shown + glm::vec2(40.0f, 0.0f), 12.0f), -1) << "negative control: too far";
+    // The default scene's fill light is above the frame: its marker waits at the image's edge.
+    EXPECT_TRUE(markers[1].clamped);
+    EXPECT_GE(markers[1].shown.y, kMarkerInset);
+
+    const glm::vec2 target = m.pixel + glm::vec2(60.0f, 25.0f);
+    const Light moved = draggedLight(s.scene, w, h, 0, target);
+    ASSERT_TRUE(setLight(s, 0, moved));
+    const LightMarker after = lightMarkers(s.scene, w, h)[0];
+    EXPECT_NEAR(after.pixel.x, target.x, 1e-2f);
+    EXPECT_NEAR(after.pixel.y, target.y, 1e-2f);
+    const ViewSetup v = makeViewSetup(s.scene, w, h);
+    EXPECT_NEAR(glm::dot(moved.position - v.eye, v.forward), glm::dot(glm::vec3(-2.0f, 2.5f, 2.0f) - v.eye, v.forward),
+                1e-4f)
+        << "it moves in the plane facing the camera";
+}
+
+TEST(AppLightMarkers, DirectionalLightPointsFromItsMarkerToTheSceneCentre) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.2f, -0.1f, -1.0f));  // from in front: its marker is in the frame
+    s.scene.lights = {sun};
+    const int w = 320, h = 180;
+    const LightMarker m = lightMarkers(s.scene, w, h)[0];
+    ASSERT_FALSE(m.clamped) << m.pixel.x << ", " << m.pixel.y;
+    const Light turned = draggedLight(s.scene, w, h, 0, m.pixel + glm::vec2(-50.0f, 0.0f));
+    EXPECT_NEAR(glm::length(turned.direction), 1.0f, 1e-5f);
+    EXPECT_GT(glm::length(turned.direction - sun.direction), 0.05f);
+    s.scene.lights = {turned};
+    const LightMarker after = lightMarkers(s.scene, w, h)[0];
+    EXPECT_NEAR(after.pixel.x, m.pixel.x - 50.0f, 0.5f) << "the marker follows the pointer";
 }

@@ -378,3 +378,41 @@ TEST(AppWindow, ProjectorScaleKeepsTheWindowsShape) {
     const auto [image1, window1] = shapes("projector_scale1", "--ui-scale 1");
     EXPECT_LT(image1, window1 - 0.1);
 }
+
+TEST(AppWindow, DraggingALightMarkerMovesTheLightAndItsShadow) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    Scene scene = loadScene(scenePath);
+    // Bring the key light into the frame first (it sits above it), where its marker can be grabbed.
+    scene.lights[0].position = glm::vec3(-2.0f, 3.0f, 2.0f);
+    const glm::ivec2 from = pixelOf(scene, scene.lights[0].position);
+    const glm::ivec2 to(from.x + 90, from.y + 10);
+    ASSERT_TRUE(from.x > 0 && from.y > 0 && to.x < kW && to.y < kH) << from.x << "," << from.y;
+    const std::string before = test::outputPath("light_drag_before.png"), after = test::outputPath("light_drag_after.png");
+    const std::string saved = test::outputPath("light_drag_saved.json");
+    const std::string script = writeText("light_drag_script.json", R"([
+        {"frame": 1, "action": "setLight", "index": 0, "position": [-2, 3, 2]},
+        {"frame": 3, "action": "screenshot", "path": ")" + before + R"("},
+        {"action": "drag", "x0": )" + std::to_string(from.x) + R"(, "y0": )" + std::to_string(from.y) +
+                                                                R"(, "x1": )" + std::to_string(to.x) + R"(, "y1": )" +
+                                                                std::to_string(to.y) + R"(},
+        {"action": "screenshot", "path": ")" + after + R"("},
+        {"action": "saveScene", "path": ")" + saved + R"("}])");
+    Result v = view(scenePath + " --size " + kSize + " --frames 4 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    const Scene moved = parseSceneJson(readFile(saved), saved);
+    const glm::vec3 p = moved.lights[0].position;
+    EXPECT_GT(glm::length(p - scene.lights[0].position), 0.3f) << "the drag did not move the light";
+    // It went where the pointer went: it projects onto the drag's end, at the same depth from the camera.
+    const glm::ivec2 landed = pixelOf(moved, p);
+    EXPECT_LE(std::abs(landed.x - to.x), 1) << landed.x;
+    EXPECT_LE(std::abs(landed.y - to.y), 1) << landed.y;
+    const ViewSetup view = makeViewSetup(scene, kW, kH);
+    EXPECT_NEAR(glm::dot(p - view.eye, view.forward), glm::dot(scene.lights[0].position - view.eye, view.forward),
+                1e-3f);
+    // The screenshot is the moved scene's render, and differs from before (its highlights and shadows moved).
+    const std::string expected = test::outputPath("light_drag_expected.png");
+    ASSERT_EQ(render(saved, expected).code, 0);
+    expectSameImage("light_drag_after", after, expected);
+    EXPECT_FALSE(sameBytes(before, after)) << "negative control: the drag changed nothing on screen";
+}

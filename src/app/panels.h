@@ -9,6 +9,7 @@
 #include "image/compare.h"
 
 #include <string>
+#include <vector>
 
 namespace shadelab::app {
 
@@ -30,7 +31,9 @@ struct UiFields {
     std::string savePath;
     std::string confirmReplace;  // an existing file Save waits to replace until the user confirms
     std::string screenshotPath = "shadelab-view.png";
-    bool captions = true;            // the model, terms and mode written on the image (key C)
+    std::vector<ColorIntensity> lightSplits;  // per light: the colour and intensity as last edited
+    bool captions = true;
+    bool lightMarkers = true;        // a marker per light in the image, draggable            // the model, terms and mode written on the image (key C)
     bool convertAllObjects = false;  // the equivalent-exponent buttons act on every object
     bool lessonFolded = false;       // the lesson window was folded for the probe
     float probeWindowWidth = 0.0f;   // window units, as last drawn (for placing it inside the image)

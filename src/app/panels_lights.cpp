@@ -39,11 +39,18 @@ void drawLightsSection(PanelContext& ctx) {
                 if (glm::length(l.direction) > 1e-4f) l.direction = glm::normalize(l.direction);
                 changed = true;
             }
+            // Colour and intensity are edited apart: the split last edited here is kept while it still gives
+            // this light's Il, so a darker colour stays a darker colour instead of being renormalised into a
+            // lower intensity (issue 15: picking a colour set the intensity to 0.935).
+            std::vector<ColorIntensity>& splits = ctx.fields.lightSplits;
             ColorIntensity ci = splitIntensity(l.color);
+            if (i < splits.size() && joinIntensity(splits[i]) == l.color) ci = splits[i];
             const bool colorChanged = ImGui::ColorEdit3("colour", glm::value_ptr(ci.color), ImGuiColorEditFlags_Float);
             const bool intensityChanged = ImGui::DragFloat("intensity", &ci.intensity, 0.01f, 0.0f, 100.0f, "%.3f");
             if (colorChanged || intensityChanged) {
                 l.color = joinIntensity(ci);
+                if (splits.size() <= i) splits.resize(i + 1);
+                splits[i] = ci;
                 changed = true;
             }
             if (ImGui::SmallButton("remove")) remove = int(i);

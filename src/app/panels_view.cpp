@@ -53,6 +53,8 @@ void drawViewSection(PanelContext& ctx) {
         if (ImGui::RadioButton(names[i], &mode, i)) setMode(s, ViewMode(i));
     }
     ImGui::Checkbox("captions on the image (C)", &ctx.fields.captions);
+    ImGui::SameLine();
+    ImGui::Checkbox("light markers", &ctx.fields.lightMarkers);
     int encoding = s.encoding == Encoding::Srgb ? 0 : 1;
     ImGui::TextDisabled("encoding");
     ImGui::SameLine();

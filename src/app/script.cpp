@@ -135,6 +135,13 @@ const ActionInfo kActions[] = {
      [](const JsonNode& a) -> Action {
          return WaitReference{a.has("timeout") ? a.child("timeout").positive() : 60.0f};
      }},
+    {"drag",
+     {"x0", "y0", "x1", "y1", "steps"},
+     [](const JsonNode& a) -> Action {
+         return Drag{float(a.child("x0").integerIn(0, 16383)), float(a.child("y0").integerIn(0, 16383)),
+                     float(a.child("x1").integerIn(0, 16383)), float(a.child("y1").integerIn(0, 16383)),
+                     a.has("steps") ? a.child("steps").integerIn(1, 1000) : 8};
+     }},
     {"undo", {}, [](const JsonNode&) -> Action { return Undo{}; }},
     {"redo", {}, [](const JsonNode&) -> Action { return Redo{}; }},
     {"resizeWindow",

@@ -118,6 +118,12 @@ struct WaitReference {
 struct ResizeWindow {
     int width = 0, height = 0;
 };  // window units
+// A left-button drag from (x0, y0) to (x1, y1), image pixels (row 0 at the top), fed to the window's input as
+// the mouse would: press, `steps` moves, release, one per frame; the script waits until it is done.
+struct Drag {
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int steps = 8;
+};
 struct Undo {};  // the viewer holds the history (undo_history.h)
 struct Redo {};
 
@@ -130,7 +136,7 @@ using Action =
                  actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
                  actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::Screenshot,
                  actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
-                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Undo, actions::Redo>;
+                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::Undo, actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

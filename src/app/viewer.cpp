@@ -3,6 +3,7 @@
 #include "app/viewer.h"
 
 #include "app/captions.h"
+#include "app/light_markers.h"
 #include "compare/comparison.h"
 #include "image/png.h"
 
@@ -44,14 +45,15 @@ int Viewer::run() {
 
 bool Viewer::finished() const {
     if (options_.frames < 0 || frame_ < options_.frames) return false;
-    return !cursor_ || (cursor_->done() && !waiting_);
+    return !cursor_ || (cursor_->done() && !waiting_ && !drag_);
 }
 
 // An idle viewer uses no CPU (issue 15): when nothing is animating it sleeps in glfwWaitEvents until input,
 // a drop or a resize arrives, or until the next thing it must show (a status message expiring, a reference
 // tile). A few frames after any input let ImGui settle its hover and focus state before sleeping again.
 void Viewer::waitForWork() {
-    const bool scripted = options_.frames >= 0 || options_.stats || (cursor_ && (!cursor_->done() || waiting_));
+    const bool scripted =
+        options_.frames >= 0 || options_.stats || drag_ || (cursor_ && (!cursor_->done() || waiting_));
     const bool changed = state_.revision != idleRevision_;
     idleRevision_ = state_.revision;
     if (scripted || changed || settleFrames_ > 0) {
@@ -85,6 +87,7 @@ bool Viewer::frame() {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    feedSyntheticMouse();
     ImGui::NewFrame();
     handleKeys();
     handleMouse();
@@ -126,7 +129,7 @@ bool Viewer::frame() {
     }
 
     // Edits become undo steps between gestures, so a slider drag or a mouse drag is one step.
-    if (!ImGui::IsAnyItemActive() && !leftDown_ && !panning_) history_.commit(state_);
+    if (!ImGui::IsAnyItemActive() && !leftDown_ && !panning_ && draggingLight_ < 0) history_.commit(state_);
 
     // --stats forces a raster redraw on every other frame, so it measures both the frame a change costs
     // (the honest figure) and the frame that only redraws the window.
@@ -160,9 +163,9 @@ double Viewer::recentFrameMs() const {
 void Viewer::computeLayout() {
     fbScale_ = float(fbW_) / float(winW_);
     panelWidth_ = showPanel_ ? std::min(kViewerPanelWidth * uiScale_, 0.5f * float(winW_)) : 0.0f;
-    // A panel beside the image would squeeze it into a portrait at a large UI scale: then it lies over the
+    // At a large UI scale a panel beside the image would squeeze it into a portrait: then it lies over the
     // image instead, and the image keeps the window's shape (projector mode).
-    const bool overlay = overlayPanel_ || panelWidth_ > 0.34f * float(winW_);
+    const bool overlay = overlayPanel_ || (uiScale_ >= 1.5f && panelWidth_ > 0.34f * float(winW_));
     panelOverlays_ = overlay && showPanel_;
     const int areaX = overlay ? 0 : int(std::lround(panelWidth_ * fbScale_));
     const int areaW = std::max(1, fbW_ - areaX), areaH = std::max(1, fbH_);
@@ -273,6 +276,7 @@ void Viewer::compose() {
     in.selected = state_.selected;
     imageView_->draw(fbRect_, in);
     if (fields_.captions) drawCaptions();
+    if (fields_.lightMarkers) drawLightMarkers();  // over the captions: a light off the frame sits at its edge
     if (probe_ && probe_->hit) {
         const std::vector<ArrowLabel> labels =
             arrows_->draw(state_.scene, *probe_, renderW_, renderH_, fbRect_, fbH_, fbScale_ * uiScale_);
@@ -287,6 +291,55 @@ void Viewer::compose() {
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     gl::checkError("viewer frame");
+}
+
+// A marker per light (light_markers.h): a disc in the light's colour, an arrow for a directional light, and
+// its name; the one under the pointer or being dragged is ringed.
+void Viewer::drawLightMarkers() {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const std::vector<LightMarker> markers = lightMarkers(state_.scene, renderW_, renderH_);
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const int hover = draggingLight_ >= 0 ? draggingLight_ : markerAt(markers, imagePixelF(mouse.x, mouse.y), markerPickRadius());
+    const float r = 7.0f * uiScale_;
+    for (const LightMarker& m : markers) {
+        if (!m.visible) continue;
+        const ImVec2 at = windowPoint(m.shown);
+        const Light& light = state_.scene.lights[size_t(m.light)];
+        const glm::vec3 c = splitIntensity(light.color).color;
+        const ImU32 fill = ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
+        if (m.clamped) {  // outside the image: a pointer from the edge toward where the light is
+            const glm::vec2 d = glm::normalize(m.pixel - m.shown);
+            const ImVec2 p0(at.x + d.x * (r + 9.0f * uiScale_), at.y + d.y * (r + 9.0f * uiScale_));
+            const ImVec2 side(-d.y * 5.0f * uiScale_, d.x * 5.0f * uiScale_);
+            const ImVec2 base(at.x + d.x * (r + 2.0f * uiScale_), at.y + d.y * (r + 2.0f * uiScale_));
+            dl->AddTriangleFilled(p0, ImVec2(base.x + side.x, base.y + side.y), ImVec2(base.x - side.x, base.y - side.y),
+                                  IM_COL32(255, 255, 255, 220));
+        } else if (light.type == LightType::Directional) {
+            const ImVec2 tip = windowPoint(m.arrowTip);
+            dl->AddLine(at, tip, IM_COL32(0, 0, 0, 200), 4.0f * uiScale_);
+            dl->AddLine(at, tip, fill, 2.0f * uiScale_);
+            dl->AddCircleFilled(tip, 3.0f * uiScale_, fill);
+        }
+        dl->AddCircleFilled(at, r + 1.5f * uiScale_, IM_COL32(0, 0, 0, 200));
+        dl->AddCircleFilled(at, r, fill);
+        if (m.light == hover) dl->AddCircle(at, r + 4.0f * uiScale_, IM_COL32(255, 220, 60, 255), 0, 2.0f * uiScale_);
+        const std::string name = "L" + std::to_string(m.light + 1);
+        const bool leftSide = at.x > imageX_ + imageW_ - 40.0f * uiScale_;  // keep the name inside the image
+        const ImVec2 text(leftSide ? at.x - r - 22.0f * uiScale_ : at.x + r + 3.0f * uiScale_, at.y - r);
+        dl->AddText(ImVec2(text.x + 1.0f, text.y + 1.0f), IM_COL32(0, 0, 0, 255), name.c_str());
+        dl->AddText(text, IM_COL32(255, 255, 255, 255), name.c_str());
+    }
+}
+
+// kMarkerPickRadius window units, in image pixels.
+float Viewer::markerPickRadius() const { return kMarkerPickRadius * uiScale_ * float(renderW_) / std::max(imageW_, 1.0f); }
+
+ImVec2 Viewer::windowPoint(glm::vec2 pixel) const {
+    return ImVec2(imageX_ + pixel.x / float(renderW_) * imageW_, imageY_ + pixel.y / float(renderH_) * imageH_);
+}
+
+glm::vec2 Viewer::imagePixelF(float windowX, float windowY) const {
+    return {(windowX - imageX_) / imageW_ * float(renderW_), (windowY - imageY_) / imageH_ * float(renderH_)};
 }
 
 // The left edge of the part of the image the panel does not cover, window units.
@@ -318,7 +371,9 @@ void Viewer::drawCaptions() {
         return extent.y + 2.0f * pad;
     };
     const std::string caption = imageCaption(state_);
-    const float height = label(ImVec2(visibleLeft() + margin, imageY_ + margin), caption.c_str(), false);
+    // Right of the column where lights outside the frame put their markers (light_markers.h).
+    const float left = visibleLeft() + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * uiScale_ : 0.0f);
+    const float height = label(ImVec2(left, imageY_ + margin), caption.c_str(), false);
     if (state_.mode == ViewMode::Split) {
         const float wipe = imageX_ + state_.splitPosition * imageW_;
         const float y = imageY_ + margin + height + 6.0f * uiScale_;

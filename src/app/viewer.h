@@ -26,6 +26,7 @@
 
 struct GLFWwindow;
 struct ImFont;
+struct ImVec2;
 
 namespace shadelab::app {
 
@@ -45,6 +46,7 @@ public:
     void undo() override;
     void redo() override;
     void queueDrop(const std::string& path);  // from GLFW's drop callback
+    void queueKey(int key, int mods);         // from GLFW's key callback: presses only
 
 private:
     // viewer_setup.cpp
@@ -60,6 +62,10 @@ private:
     void updateProbe();
     void compose();
     void drawCaptions();
+    void drawLightMarkers();
+    ImVec2 windowPoint(glm::vec2 imagePixel) const;
+    glm::vec2 imagePixelF(float windowX, float windowY) const;
+    float markerPickRadius() const;
     float visibleLeft() const;
     bool finished() const;
     // viewer_input.cpp
@@ -70,6 +76,7 @@ private:
     void clickAt(float windowX, float windowY);
     // viewer_actions.cpp
     void runScript();
+    void feedSyntheticMouse();
     void performAction(const ScriptAction& action);
     Image8 captureRaster();
     uint32_t coverageAt(int x, int y);
@@ -84,6 +91,11 @@ private:
     std::optional<Script> script_;
     std::optional<ScriptCursor> cursor_;
     const ScriptAction* waiting_ = nullptr;  // a waitReference action holding the script
+    struct SyntheticDrag {
+        actions::Drag drag;
+        int frame = 0;
+    };
+    std::optional<SyntheticDrag> drag_;  // a scripted drag in progress
     double waitStarted_ = 0.0;
 
     GLFWwindow* window_ = nullptr;
@@ -120,9 +132,15 @@ private:
     uint64_t metricsRevision_ = 0;
 
     // Input.
+    static constexpr float kMarkerPickRadius = 12.0f;  // window units at UI scale 1
+    int draggingLight_ = -1;                           // a light marker being dragged
     bool leftDown_ = false, dragged_ = false, panning_ = false, splitting_ = false;
     float pressX_ = 0, pressY_ = 0;
     std::vector<std::string> drops_;
+    struct KeyPress {
+        int key = 0, mods = 0;
+    };
+    std::vector<KeyPress> keys_;  // presses since the last frame
 
     UiFields fields_;
     std::string shaderError_;

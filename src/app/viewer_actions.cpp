@@ -16,7 +16,9 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <type_traits>
@@ -25,7 +27,7 @@
 namespace shadelab::app {
 
 void Viewer::runScript() {
-    if (!cursor_) return;
+    if (!cursor_ || drag_) return;  // a drag holds the script until it has been released
     if (waiting_) {
         const float timeout = std::get<actions::WaitReference>(waiting_->action).timeout;
         if (reference_->complete() && reference_->revision() == state_.referenceRevision) {
@@ -42,7 +44,7 @@ void Viewer::runScript() {
             applyScriptAction(state_, *a, script_->file);
         else
             performAction(*a);
-        if (waiting_) break;
+        if (waiting_ || drag_) break;
     }
 }
 
@@ -66,6 +68,8 @@ void Viewer::performAction(const ScriptAction& a) {
                 if (const std::string why = saveRefusal(x.path); !why.empty())
                     throw InputError(script_->file, "actions[" + std::to_string(a.index) + "].path", x.path + ": " + why);
                 saveSceneJson(state_.scene, x.path);
+            } else if constexpr (std::is_same_v<T, Drag>) {
+                drag_ = SyntheticDrag{x, 0};
             } else if constexpr (std::is_same_v<T, Undo>) {
                 undo();
             } else if constexpr (std::is_same_v<T, Redo>) {
@@ -85,6 +89,21 @@ void Viewer::performAction(const ScriptAction& a) {
             }
         },
         a.action);
+}
+
+// Feeds a scripted drag to Dear ImGui's mouse state, after the GLFW backend has read the real pointer and
+// before ImGui::NewFrame turns it into clicks and deltas: frame 0 moves to the start, 1 presses, then
+// `steps` moves, then the release. handleMouse cannot tell it from a hand on the mouse.
+void Viewer::feedSyntheticMouse() {
+    if (!drag_) return;
+    ImGuiIO& io = ImGui::GetIO();
+    const actions::Drag& d = drag_->drag;
+    const int frame = drag_->frame++;
+    const float t = std::clamp(float(frame - 1) / float(d.steps), 0.0f, 1.0f);
+    const ImVec2 p = windowPoint(glm::vec2(d.x0 + 0.5f + t * (d.x1 - d.x0), d.y0 + 0.5f + t * (d.y1 - d.y0)));
+    io.MousePos = p;
+    io.MouseDown[0] = frame >= 1 && frame <= d.steps + 1;
+    if (frame > d.steps + 2) drag_.reset();
 }
 
 Image8 Viewer::captureRaster() {

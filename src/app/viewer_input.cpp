@@ -2,6 +2,8 @@
 // drag and drop of scene files. Everything goes through the viewer_state.h actions.
 #include "app/viewer.h"
 
+#include "app/light_markers.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -29,9 +31,22 @@ void onDrop(GLFWwindow* window, int count, const char** paths) {
         for (int i = 0; i < count; ++i) viewer->queueDrop(paths[i]);
 }
 
+// Installed before Dear ImGui's own, which calls it in turn: every press is kept until the next frame, so a
+// press and release that arrive together (a presenter's clicker, xdotool, a frame slept through while
+// idle) still count. ImGui 1.86 sees only the key state at the frame, which would miss them.
+void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
+    auto* viewer = static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+    if (viewer && action == GLFW_PRESS) viewer->queueKey(key, mods);
+}
+
 }  // namespace
 
-void installDropCallback(GLFWwindow* window) { glfwSetDropCallback(window, onDrop); }
+void installInputCallbacks(GLFWwindow* window) {
+    glfwSetDropCallback(window, onDrop);
+    glfwSetKeyCallback(window, onKey);
+}
+
+void Viewer::queueKey(int key, int mods) { keys_.push_back({key, mods}); }
 
 void Viewer::queueDrop(const std::string& path) { drops_.push_back(path); }
 
@@ -58,7 +73,13 @@ void Viewer::handleMouse() {
     const ImVec2 m = io.MousePos;
     const bool overImage = m.x >= imageX_ && m.x < imageX_ + imageW_ && m.y >= imageY_ && m.y < imageY_ + imageH_;
     if (!io.WantCaptureMouse && overImage) {
-        if (ImGui::IsMouseClicked(0)) {
+        const int marker = fields_.lightMarkers && ImGui::IsMouseClicked(0)
+                               ? markerAt(lightMarkers(state_.scene, renderW_, renderH_), imagePixelF(m.x, m.y),
+                                          markerPickRadius())
+                               : -1;
+        if (marker >= 0) {
+            draggingLight_ = marker;  // a drag on a light's marker moves the light, not the camera
+        } else if (ImGui::IsMouseClicked(0)) {
             leftDown_ = true;
             dragged_ = false;
             pressX_ = m.x;
@@ -71,6 +92,14 @@ void Viewer::handleMouse() {
             OrbitCamera o = state_.orbit;
             orbitZoom(o, io.MouseWheel);
             applyOrbit(state_, o);
+        }
+    }
+    if (draggingLight_ >= 0) {
+        if (!ImGui::IsMouseDown(0) || size_t(draggingLight_) >= state_.scene.lights.size()) {
+            draggingLight_ = -1;
+        } else if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
+            setLight(state_, draggingLight_,
+                     draggedLight(state_.scene, renderW_, renderH_, draggingLight_, imagePixelF(m.x, m.y)));
         }
     }
     if (leftDown_) {
@@ -116,30 +145,37 @@ void Viewer::clickAt(float windowX, float windowY) {
 }
 
 void Viewer::handleKeys() {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureKeyboard) return;
-    auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-    for (int step = 1; step <= kProgressionSteps; ++step)
-        if (pressed(GLFW_KEY_0 + step) || pressed(GLFW_KEY_KP_0 + step)) applyProgression(state_, step);
-    if (io.KeyCtrl && (pressed(GLFW_KEY_Z) || pressed(GLFW_KEY_Y))) {
-        if (pressed(GLFW_KEY_Y) || io.KeyShift)
-            redo();
-        else
-            undo();
-        return;
-    }
-    if (pressed(GLFW_KEY_F)) frameAll(state_);
-    if (pressed(GLFW_KEY_R)) resetCamera(state_);
-    if (pressed(GLFW_KEY_F5)) reloadShaders("");
-    if (pressed(GLFW_KEY_B))
-        setModel(state_, state_.scene.model == ShadingModel::Phong ? ShadingModel::BlinnPhong : ShadingModel::Phong);
-    if (pressed(GLFW_KEY_V)) setMode(state_, ViewMode((int(state_.mode) + 1) % 4));
-    if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
-    if (pressed(GLFW_KEY_C)) fields_.captions = !fields_.captions;
-    if (pressed(GLFW_KEY_P)) overlayPanel_ = !overlayPanel_;
-    if (pressed(GLFW_KEY_ESCAPE)) {
-        clearProbe(state_);
-        select(state_, 0);
+    std::vector<KeyPress> keys;
+    keys.swap(keys_);
+    if (ImGui::GetIO().WantCaptureKeyboard) return;  // a text field has the keyboard
+    for (const KeyPress& k : keys) {
+        const bool ctrl = (k.mods & GLFW_MOD_CONTROL) != 0, shift = (k.mods & GLFW_MOD_SHIFT) != 0;
+        if (ctrl) {
+            if (k.key == GLFW_KEY_Z) shift ? redo() : undo();
+            if (k.key == GLFW_KEY_Y) redo();
+            continue;
+        }
+        if (k.key >= GLFW_KEY_1 && k.key < GLFW_KEY_1 + kProgressionSteps) applyProgression(state_, k.key - GLFW_KEY_0);
+        if (k.key >= GLFW_KEY_KP_1 && k.key < GLFW_KEY_KP_1 + kProgressionSteps)
+            applyProgression(state_, k.key - GLFW_KEY_KP_0);
+        switch (k.key) {
+            case GLFW_KEY_F: frameAll(state_); break;
+            case GLFW_KEY_R: resetCamera(state_); break;
+            case GLFW_KEY_F5: reloadShaders(""); break;
+            case GLFW_KEY_B:
+                setModel(state_,
+                         state_.scene.model == ShadingModel::Phong ? ShadingModel::BlinnPhong : ShadingModel::Phong);
+                break;
+            case GLFW_KEY_V: setMode(state_, ViewMode((int(state_.mode) + 1) % 4)); break;
+            case GLFW_KEY_TAB: showPanel_ = !showPanel_; break;
+            case GLFW_KEY_C: fields_.captions = !fields_.captions; break;
+            case GLFW_KEY_P: overlayPanel_ = !overlayPanel_; break;
+            case GLFW_KEY_ESCAPE:
+                clearProbe(state_);
+                select(state_, 0);
+                break;
+            default: break;
+        }
     }
 }
 

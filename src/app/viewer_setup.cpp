@@ -37,7 +37,7 @@ std::string windowTitle(const ViewerState& s) {
 
 }  // namespace
 
-void installDropCallback(GLFWwindow* window);  // viewer_input.cpp
+void installInputCallbacks(GLFWwindow* window);  // viewer_input.cpp: drops and key presses
 
 int runViewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script) {
     Viewer viewer(options, std::move(state), std::move(script));
@@ -136,7 +136,7 @@ void Viewer::initWindow() {
     if (const char* missing = gl::loadFunctions(getProc))
         throw std::runtime_error(std::string("the window's OpenGL lacks ") + missing);
     glfwSetWindowUserPointer(window_, this);
-    installDropCallback(window_);
+    installInputCallbacks(window_);
     if (options_.verbose)
         std::fprintf(stderr, "shadelab: GL_RENDERER %s\nshadelab: GL_VERSION %s\n",
                      reinterpret_cast<const char*>(glGetString(GL_RENDERER)),

@@ -1,0 +1,121 @@
+#include "app/light_markers.h"
+
+#include "scene/scene_load.h"
+#include "scene/view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+namespace shadelab::app {
+namespace {
+
+struct SceneSphere {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+};
+
+// The scene's centre and radius; the camera's target and distance when nothing is bounded (planes only).
+SceneSphere sceneSphere(const Scene& scene) {
+    const Bounds b = sceneBounds(scene);
+    if (b.empty()) {
+        const float d = glm::length(scene.camera.position - scene.camera.target);
+        return {scene.camera.target, std::max(d * 0.5f, 1e-3f)};
+    }
+    return {0.5f * (b.lo + b.hi), std::max(0.5f * glm::length(b.hi - b.lo), 1e-3f)};
+}
+
+glm::vec3 anchorOf(const Light& light, const SceneSphere& sphere) {
+    if (light.type == LightType::Point) return light.position;
+    return sphere.center - glm::normalize(light.direction) * (1.2f * sphere.radius);
+}
+
+// World point → image pixel; false when behind the eye.
+bool project(const ViewSetup& v, const glm::vec3& p, glm::vec2& pixel) {
+    const glm::vec4 clip = v.viewProj * glm::vec4(p, 1.0f);
+    if (clip.w <= 1e-6f) return false;
+    pixel = {(clip.x / clip.w * 0.5f + 0.5f) * float(v.width), (1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(v.height)};
+    return std::isfinite(pixel.x) && std::isfinite(pixel.y);
+}
+
+}  // namespace
+
+std::vector<LightMarker> lightMarkers(const Scene& scene, int width, int height) {
+    std::vector<LightMarker> markers;
+    if (width <= 0 || height <= 0) return markers;
+    const ViewSetup v = makeViewSetup(scene, width, height);
+    const SceneSphere sphere = sceneSphere(scene);
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& light = scene.lights[i];
+        LightMarker m;
+        m.light = int(i);
+        m.anchor = anchorOf(light, sphere);
+        m.visible = project(v, m.anchor, m.pixel);
+        m.arrowTip = m.pixel;
+        if (light.type == LightType::Directional) {
+            glm::vec2 tip;
+            const glm::vec3 toward = m.anchor + glm::normalize(light.direction) * (0.35f * sphere.radius);
+            if (project(v, toward, tip)) m.arrowTip = tip;
+        }
+        const glm::vec2 lo(kMarkerInset), hi(float(width) - kMarkerInset, float(height) - kMarkerInset);
+        m.shown = glm::clamp(m.pixel, lo, glm::max(lo, hi));
+        m.clamped = m.shown != m.pixel;
+        markers.push_back(m);
+    }
+    return markers;
+}
+
+int markerAt(const std::vector<LightMarker>& markers, glm::vec2 pixel, float radius) {
+    int best = -1;
+    float bestDistance = radius;
+    for (const LightMarker& m : markers) {
+        if (!m.visible) continue;
+        const float d = glm::length(m.shown - pixel);
+        if (d <= bestDistance) best = m.light, bestDistance = d;
+    }
+    return best;
+}
+
+Light draggedLight(const Scene& scene, int width, int height, int index, glm::vec2 pixel) {
+    Light light = scene.lights.at(size_t(index));
+    const ViewSetup v = makeViewSetup(scene, width, height);
+    const SceneSphere sphere = sceneSphere(scene);
+    const glm::vec3 anchor = anchorOf(light, sphere);
+    // The camera ray through the pixel (the renderers' own formula), met with the plane through the anchor
+    // that faces the camera.
+    const float aspect = float(width) / float(height);
+    const float x = (2.0f * pixel.x / float(width) - 1.0f) * v.tanHalfFovY * aspect;
+    const float y = (1.0f - 2.0f * pixel.y / float(height)) * v.tanHalfFovY;
+    const glm::vec3 dir = glm::normalize(v.forward + x * v.right + y * v.up);
+    const float along = glm::dot(dir, v.forward);
+    if (along <= 1e-4f) return light;  // parallel to the plane: leave it
+    const float t = glm::dot(anchor - v.eye, v.forward) / along;
+    if (!(t > 0.0f)) return light;
+    const glm::vec3 moved = v.eye + t * dir;
+    if (light.type == LightType::Point) {
+        light.position = moved;
+        return light;
+    }
+    // A directional light's marker lives on the sphere of radius 1.2 R about the scene's centre: the point
+    // of that sphere under the pointer (the nearer one), else the plane point pushed onto the sphere.
+    const float R = 1.2f * sphere.radius;
+    const glm::vec3 oc = v.eye - sphere.center;
+    const float b = glm::dot(oc, dir), c = glm::dot(oc, oc) - R * R, disc = b * b - c;
+    glm::vec3 source = sphere.center + glm::normalize(moved - sphere.center) * R;
+    if (disc >= 0.0f) {
+        // Of the two points under the pointer, the one nearer where the source was: a source on the far
+        // side of the sphere stays there instead of jumping to the front.
+        float best = 1e30f;
+        for (const float tHit : {-b - std::sqrt(disc), -b + std::sqrt(disc)}) {
+            const glm::vec3 p = v.eye + tHit * dir;
+            if (tHit > 0.0f && glm::length(p - anchor) < best) source = p, best = glm::length(p - anchor);
+        }
+    }
+    const glm::vec3 d = sphere.center - source;
+    if (glm::length(d) > 1e-6f) light.direction = glm::normalize(d);
+    return light;
+}
+
+}  // namespace shadelab::app
