@@ -1,6 +1,7 @@
 // Banded rendering (raster_renderer.h Band): drawing an image in horizontal bands must give the same
 // pixels and coverage as drawing it whole, because every band samples the full image's pixel centres.
 #include "gl_fixture.h"
+#include "image/compare.h"
 #include "image/encode.h"
 #include "image/png.h"
 #include "raster/offscreen.h"
@@ -132,4 +133,45 @@ TEST(RasterOffscreen, SppMustBeAPerfectSquare) {
     EXPECT_THROW(raster::samplesPerSide(3), UsageError);
     EXPECT_THROW(raster::samplesPerSide(0), UsageError);
     EXPECT_THROW(raster::samplesPerSide(81), UsageError);
+}
+
+// Jittered samples (raster_renderer.h draw's `jitter`, the viewer's accumulation): the k² grid samples drawn
+// one at a time at the image's own size and averaged equal supersampling at k times the size, sample for
+// sample; the viewer's smooth still frame is therefore `shadelab render --spp k²`.
+TEST_F(RasterBandsTest, AveragedJitteredSamplesEqualSupersampling) {
+    Scene scene = loadScene(test::sourcePath("assets/scenes/default.json"));
+    raster::RasterRenderer r;
+    r.uploadMeshes(scene);
+    const int w = 160, h = 90, k = 4;
+    raster::OffscreenOptions o;
+    o.width = w;
+    o.height = h;
+    o.spp = k * k;
+    const Image8 supersampled = raster::renderOffscreen(r, scene, o).pixels;
+    ImageF sum(w, h);
+    for (int i = 0; i < k * k; ++i) {
+        r.draw(scene, w, h, false, {}, raster::gridSampleOffset(k, i));
+        ImageF one;
+        r.target().readColor(one);
+        for (size_t p = 0; p < sum.rgba.size(); ++p) sum.rgba[p] += one.rgba[p];
+    }
+    for (float& v : sum.rgba) v /= float(k * k);
+    const Image8 averaged = toImage8(sum, Encoding::Srgb);
+    const CompareResult c = compareImages(averaged, supersampled);
+    size_t differing = countDifferentPixels(averaged, supersampled);
+    std::printf("jittered average vs --spp %d: %zu of %d pixels differ, max %d/255\n", k * k, differing, w * h,
+                c.all.max);
+    if (c.all.max > 1) {
+        writePng(test::outputPath("jitter_averaged.png"), averaged);
+        writePng(test::outputPath("jitter_supersampled.png"), supersampled);
+    }
+    EXPECT_LE(c.all.max, 1) << "only float summation order may differ";
+    // Negative control: the centre sample alone, repeated, is the aliased 1-spp image.
+    r.draw(scene, w, h, false, {}, raster::gridSampleOffset(1, 0));
+    ImageF centre;
+    r.target().readColor(centre);
+    EXPECT_GT(countDifferentPixels(toImage8(centre, Encoding::Srgb), supersampled), size_t(w * h) / 50);
+    EXPECT_EQ(raster::gridSampleOffset(1, 0), glm::vec2(0.0f));
+    EXPECT_EQ(raster::gridSampleOffset(4, 0), glm::vec2(-0.375f, -0.375f));
+    EXPECT_EQ(raster::gridSampleOffset(4, 15), glm::vec2(0.375f, 0.375f));
 }

@@ -34,6 +34,11 @@ void boxDownsample(const ImageF& hi, int k, ImageF& lo) {
 
 }  // namespace
 
+glm::vec2 gridSampleOffset(int k, int index) {
+    const int a = index % k, b = index / k;
+    return {(float(a) + 0.5f) / float(k) - 0.5f, (float(b) + 0.5f) / float(k) - 0.5f};
+}
+
 int samplesPerSide(int spp) {
     int k = int(std::lround(std::sqrt(double(std::max(spp, 0)))));
     if (spp < 1 || spp > 64 || k * k != spp)

@@ -9,6 +9,7 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <vector>
 
 namespace shadelab::raster {
@@ -31,6 +32,10 @@ struct OffscreenResult {
 
 // k for spp = k²; throws UsageError naming --spp when spp is not a perfect square in [1, 64].
 int samplesPerSide(int spp);
+
+// Sample `index` (0 .. k²-1, row by row) of the k×k grid, as an offset from the pixel centre in pixels (x right,
+// y down): the sample renderOffscreen's supersampled image holds at pixel (x·k + a, y·k + b).
+glm::vec2 gridSampleOffset(int k, int index);
 
 // Throws UsageError when the supersampled width exceeds the GL maximum texture size.
 OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, const OffscreenOptions& options);

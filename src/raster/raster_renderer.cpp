@@ -57,11 +57,24 @@ glm::mat4 bandMatrix(int height, Band band) {
     return m;
 }
 
-FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
+// Moves every sample by `jitter` pixels (x right, y down) off the pixel centre: the clip-space shift for
+// rasterized meshes, and for the ray-cast impostors a forward vector moved by as much, since the camera ray
+// normalize(forward + x·right + y·up) is linear in the pixel position before it is normalised.
+glm::mat4 jitterMatrix(const ViewSetup& v, glm::vec2 jitter) {
+    glm::mat4 m(1.0f);
+    m[3][0] = -2.0f * jitter.x / float(v.width);
+    m[3][1] = 2.0f * jitter.y / float(v.height);
+    return m;
+}
+
+FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band, glm::vec2 jitter = glm::vec2(0.0f)) {
     FrameBlock f{};
-    f.viewProj = bandMatrix(v.height, band) * v.viewProj;
+    f.viewProj = bandMatrix(v.height, band) * jitterMatrix(v, jitter) * v.viewProj;
     f.eye = glm::vec4(v.eye, 1.0f);
-    f.forward = glm::vec4(v.forward, 0.0f);
+    const float aspect = float(v.width) / float(v.height);
+    const glm::vec3 forward = v.forward + (2.0f * jitter.x / float(v.width)) * v.tanHalfFovY * aspect * v.right -
+                              (2.0f * jitter.y / float(v.height)) * v.tanHalfFovY * v.up;
+    f.forward = glm::vec4(forward, 0.0f);
     f.right = glm::vec4(v.right, 0.0f);
     f.up = glm::vec4(v.up, 0.0f);
     const float bandBottom = band.rows > 0 ? float(v.height - band.top - band.rows) : 0.0f;
@@ -294,10 +307,10 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
     environmentKey_ = std::move(key);
 }
 
-void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage, Band band) {
+void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage, Band band, glm::vec2 jitter) {
     if (band.rows <= 0) band = Band{0, height};
     const ViewSetup view = makeViewSetup(scene, width, height);
-    const FrameBlock frame = makeFrameBlock(scene, view, band);
+    const FrameBlock frame = makeFrameBlock(scene, view, band, jitter);
     if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
     const ColorPrograms& programs = programsFor(makeShaderVariant(frame, &shadows_.block()));

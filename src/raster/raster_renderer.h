@@ -14,6 +14,7 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <map>
 #include <string>
@@ -43,7 +44,10 @@ public:
     // target is width x band rows. uploadMeshes must have seen the scene's current geometry. With
     // scene.terms.shadows, shadow maps are re-rendered only when lights, casters or scene.raster change; with
     // scene.terms.reflections, each mirror plane (kr > 0) gets a mirrored pass of the same band.
-    void draw(const Scene& scene, int width, int height, bool withCoverage = false, Band band = {});
+    // `jitter` moves every sample off its pixel centre by that many pixels (x right, y down), for the viewer's
+    // accumulated supersampling (sample a of a k-grid sits at (a + 0.5)/k - 0.5); {0, 0} is the centre.
+    void draw(const Scene& scene, int width, int height, bool withCoverage = false, Band band = {},
+              glm::vec2 jitter = glm::vec2(0.0f));
 
     const RenderTarget& target() const { return target_; }
 
