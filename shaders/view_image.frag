@@ -43,10 +43,12 @@ vec3 encode(vec3 c) {
 #endif
 }
 
-// Pending reference tiles (not yet traced for the current state) show the previous result at half brightness.
-float tileWeight(ivec2 texel) {
+// Whether this texel's reference tile is traced for the current state. A pending tile shows the raster
+// image in its place, so the reference refines tile by tile from the raster's picture instead of flashing
+// a dimmed stale result on every change (issue 15).
+bool tileDone(ivec2 texel) {
     ivec2 tile = ivec2(vec2(texel.x, textureSize(t_traced, 0).y - 1 - texel.y) / u_tileSize);
-    return texelFetch(t_tiles, tile, 0).r > 0.5f ? 1.0f : 0.5f;
+    return texelFetch(t_tiles, tile, 0).r > 0.5f;
 }
 
 void main() {
@@ -55,12 +57,13 @@ void main() {
 #if VIEW_MODE == 0
     vec3 c = encode(texelFetch(t_raster, texel, 0).rgb);
 #elif VIEW_MODE == 1
-    vec3 c = tileWeight(texel) * encode(texelFetch(t_traced, texel, 0).rgb);
+    vec3 linear = tileDone(texel) ? texelFetch(t_traced, texel, 0).rgb : texelFetch(t_raster, texel, 0).rgb;
+    vec3 c = encode(linear);
 #elif VIEW_MODE == 2
     // One fetch and one encode per pixel: pick the source first (llvmpipe evaluates both sides of a ?:).
-    bool left = local.x < u_split;
-    vec3 linear = left ? texelFetch(t_raster, texel, 0).rgb : texelFetch(t_traced, texel, 0).rgb;
-    vec3 c = (left ? 1.0f : tileWeight(texel)) * encode(linear);
+    bool traced = local.x >= u_split && tileDone(texel);
+    vec3 linear = traced ? texelFetch(t_traced, texel, 0).rgb : texelFetch(t_raster, texel, 0).rgb;
+    vec3 c = encode(linear);
     if (abs(local.x - u_split) < 1.5f) c = vec3(1.0f, 0.85f, 0.2f);
 #else
     vec3 a = floor(encodeExact(texelFetch(t_raster, texel, 0).rgb) * 255.0f + 0.5f);

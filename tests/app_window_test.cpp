@@ -416,3 +416,32 @@ TEST(AppWindow, DraggingALightMarkerMovesTheLightAndItsShadow) {
     expectSameImage("light_drag_after", after, expected);
     EXPECT_FALSE(sameBytes(before, after)) << "negative control: the drag changed nothing on screen";
 }
+
+TEST(AppWindow, StillFrameAccumulatesToTheSupersampledRender) {
+    // Issue 15: while the view is still, the viewer accumulates the 16 grid samples of --spp 16, so edges,
+    // shadow boundaries and the checker are smooth; screenshots and --screenshot stay the 1-spp render.
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string smooth = test::outputPath("smooth_view.png"), plain = test::outputPath("smooth_plain_view.png");
+    const std::string script = writeText("smooth_script.json", R"([
+        {"frame": 1, "action": "smoothScreenshot", "path": ")" + smooth + R"("},
+        {"action": "screenshot", "path": ")" + plain + R"("}])");
+    Result v = view(scenePath + " --size " + kSize + " --frames 2 --verbose --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    EXPECT_NE(v.out.find("smooth frame, 16 samples"), std::string::npos) << v.out;
+    const std::string ss16 = test::outputPath("smooth_render_spp16.png"), ss1 = test::outputPath("smooth_render_spp1.png");
+    ASSERT_EQ(render(scenePath, ss16, "--spp 16").code, 0);
+    ASSERT_EQ(render(scenePath, ss1).code, 0);
+    // The same samples averaged in another order: within 1/255 (a running average in float against a box
+    // filter of the k-times image), and within the design.md §4 gates.
+    const CompareResult same = compareImages(readPng(smooth), readPng(ss16));
+    if (!same.pass || same.all.max > 1)
+        ADD_FAILURE() << compareSummary(same) << "evidence: "
+                      << writeCompareEvidence(test::outputPath("smooth_vs_spp16"), readPng(smooth), readPng(ss16),
+                                              same)[0];
+    EXPECT_TRUE(sameBytes(plain, ss1)) << "a screenshot is still the 1-spp image 'shadelab render' gives";
+    // Negative control: the smooth frame is not the aliased one.
+    EXPECT_FALSE(sameBytes(smooth, ss1));
+    const CompareResult aliased = compareImages(readPng(smooth), readPng(ss1));
+    EXPECT_FALSE(aliased.pass) << "the 1-spp render should fail the gates against the smooth frame";
+}

@@ -33,7 +33,8 @@ struct UiFields {
     std::string screenshotPath = "shadelab-view.png";
     std::vector<ColorIntensity> lightSplits;  // per light: the colour and intensity as last edited
     bool captions = true;
-    bool lightMarkers = true;        // a marker per light in the image, draggable            // the model, terms and mode written on the image (key C)
+    bool lightMarkers = true;
+    bool smooth = true;              // accumulate a supersampled still frame in Raster mode (accumulation.h)        // a marker per light in the image, draggable            // the model, terms and mode written on the image (key C)
     bool convertAllObjects = false;  // the equivalent-exponent buttons act on every object
     bool lessonFolded = false;       // the lesson window was folded for the probe
     float probeWindowWidth = 0.0f;   // window units, as last drawn (for placing it inside the image)

@@ -55,6 +55,7 @@ void drawViewSection(PanelContext& ctx) {
     ImGui::Checkbox("captions on the image (C)", &ctx.fields.captions);
     ImGui::SameLine();
     ImGui::Checkbox("light markers", &ctx.fields.lightMarkers);
+    ImGui::Checkbox("smooth edges when still (16 samples)", &ctx.fields.smooth);
     int encoding = s.encoding == Encoding::Srgb ? 0 : 1;
     ImGui::TextDisabled("encoding");
     ImGui::SameLine();

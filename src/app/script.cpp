@@ -142,6 +142,11 @@ const ActionInfo kActions[] = {
                      float(a.child("x1").integerIn(0, 16383)), float(a.child("y1").integerIn(0, 16383)),
                      a.has("steps") ? a.child("steps").integerIn(1, 1000) : 8};
      }},
+    {"smoothScreenshot",
+     {"path", "timeout"},
+     [](const JsonNode& a) -> Action {
+         return SmoothScreenshot{a.child("path").string(), a.has("timeout") ? a.child("timeout").positive() : 60.0f};
+     }},
     {"undo", {}, [](const JsonNode&) -> Action { return Undo{}; }},
     {"redo", {}, [](const JsonNode&) -> Action { return Redo{}; }},
     {"resizeWindow",

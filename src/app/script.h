@@ -124,6 +124,12 @@ struct Drag {
     float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     int steps = 8;
 };
+// Waits (the script holds, frames go on) until the smooth still frame has all its samples (accumulation.h),
+// then writes it; fails after `timeout` seconds.
+struct SmoothScreenshot {
+    std::string path;
+    float timeout = 60.0f;
+};
 struct Undo {};  // the viewer holds the history (undo_history.h)
 struct Redo {};
 
@@ -136,7 +142,8 @@ using Action =
                  actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
                  actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::Screenshot,
                  actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
-                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::Undo, actions::Redo>;
+                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot, actions::Undo,
+                 actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

@@ -45,7 +45,7 @@ int Viewer::run() {
 
 bool Viewer::finished() const {
     if (options_.frames < 0 || frame_ < options_.frames) return false;
-    return !cursor_ || (cursor_->done() && !waiting_ && !drag_);
+    return !cursor_ || (cursor_->done() && !waiting_ && !drag_ && !smoothShot_);
 }
 
 // An idle viewer uses no CPU (issue 15): when nothing is animating it sleeps in glfwWaitEvents until input,
@@ -53,8 +53,9 @@ bool Viewer::finished() const {
 // tile). A few frames after any input let ImGui settle its hover and focus state before sleeping again.
 void Viewer::waitForWork() {
     const bool scripted =
-        options_.frames >= 0 || options_.stats || drag_ || (cursor_ && (!cursor_->done() || waiting_));
-    const bool changed = state_.revision != idleRevision_;
+        options_.frames >= 0 || options_.stats || drag_ || smoothShot_ || (cursor_ && (!cursor_->done() || waiting_));
+    const bool changed = state_.revision != idleRevision_ ||
+                         (fields_.smooth && state_.mode == ViewMode::Raster && !accumulation_->converged());
     idleRevision_ = state_.revision;
     if (scripted || changed || settleFrames_ > 0) {
         if (settleFrames_ > 0) --settleFrames_;
@@ -135,6 +136,7 @@ bool Viewer::frame() {
     // (the honest figure) and the frame that only redraws the window.
     const bool forced = options_.stats && frame_ % 2 == 0;
     const bool redrawn = ensureRasterCurrent(forced);
+    if (!redrawn) accumulate();
     compose();
     ++frame_;
     const bool last = finished();
@@ -195,7 +197,10 @@ bool Viewer::ensureRasterCurrent(bool force) {
         meshGeometry_ = state_.geometryRevision;
         rasterRevision_ = 0;
     }
-    if (!force && rasterRevision_ == state_.revision && rasterW_ == renderW_ && rasterH_ == renderH_) return false;
+    if (!force && !rasterJittered_ && rasterRevision_ == state_.revision && rasterW_ == renderW_ &&
+        rasterH_ == renderH_)
+        return false;
+    if (rasterRevision_ != state_.revision || rasterW_ != renderW_ || rasterH_ != renderH_) lastChange_ = glfwGetTime();
     const double t0 = glfwGetTime();
     try {
         raster_->draw(state_.scene, renderW_, renderH_, true);
@@ -212,7 +217,27 @@ bool Viewer::ensureRasterCurrent(bool force) {
     rasterRevision_ = state_.revision;
     rasterW_ = renderW_;
     rasterH_ = renderH_;
+    rasterJittered_ = false;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return true;
+}
+
+// The smooth still frame (accumulation.h): in Raster mode, once nothing changes and no gesture is under
+// way, two jittered samples per frame until the k×k grid is complete. Split and Difference keep the centre
+// sample, so raster and reference are compared sample for sample.
+bool Viewer::accumulate() {
+    if (!fields_.smooth || state_.mode != ViewMode::Raster || options_.stats) return false;
+    if (leftDown_ || panning_ || draggingLight_ >= 0 || ImGui::IsAnyItemActive()) return false;
+    accumulation_->restart(state_.revision, renderW_, renderH_);
+    if (accumulation_->converged()) return false;
+    for (int i = 0; i < 2; ++i) {
+        raster_->draw(state_.scene, renderW_, renderH_, true, {}, accumulation_->nextJitter());
+        rasterJittered_ = true;
+        accumulation_->add(raster_->target().colorTexture());
+    }
+    if (accumulation_->converged() && options_.verbose)
+        std::fprintf(stderr, "shadelab: smooth frame, %d samples, %.0f ms after the last change\n",
+                     accumulation_->samples(), (glfwGetTime() - lastChange_) * 1000.0);
     return true;
 }
 
@@ -260,7 +285,10 @@ void Viewer::compose() {
         glDisable(GL_SCISSOR_TEST);
     }
     ImageViewInputs in;
-    in.raster = raster_->target().colorTexture();
+    // The smooth frame once it has a centred average for this very image, else the centre sample.
+    const bool smooth = state_.mode == ViewMode::Raster && fields_.smooth && accumulation_->samples() >= 2 &&
+                        !accumulation_->restart(state_.revision, renderW_, renderH_);
+    in.raster = smooth ? accumulation_->texture() : raster_->target().colorTexture();
     in.imageWidth = raster_->target().width();
     in.imageHeight = raster_->target().height();
     if (reference_->active()) {

@@ -6,6 +6,7 @@
 //   viewer_actions.cpp  script actions, captures (screenshots, probe report), open/save, shader reload
 #pragma once
 
+#include "app/accumulation.h"
 #include "app/app.h"
 #include "app/arrow_overlay.h"
 #include "app/frame_stats.h"
@@ -57,7 +58,8 @@ private:
     bool frame();
     void waitForWork();
     void computeLayout();
-    bool ensureRasterCurrent(bool force);  // true when it drew
+    bool ensureRasterCurrent(bool force);  // true when it drew; the target then holds the centre sample
+    bool accumulate();                     // two more jittered samples while still; true when it drew
     void updateReference();
     void updateProbe();
     void compose();
@@ -96,6 +98,7 @@ private:
         int frame = 0;
     };
     std::optional<SyntheticDrag> drag_;  // a scripted drag in progress
+    const ScriptAction* smoothShot_ = nullptr;  // a smoothScreenshot waiting for the smooth frame
     double waitStarted_ = 0.0;
 
     GLFWwindow* window_ = nullptr;
@@ -105,6 +108,7 @@ private:
     std::unique_ptr<ImageView> imageView_;
     std::unique_ptr<ArrowOverlay> arrows_;
     std::unique_ptr<ReferenceRenderer> reference_;
+    std::unique_ptr<Accumulation> accumulation_;
 
     // Layout, in window (logical) units unless named fb*.
     int winW_ = 0, winH_ = 0, fbW_ = 0, fbH_ = 0;
@@ -120,6 +124,8 @@ private:
     // What the raster target holds.
     uint64_t rasterRevision_ = 0, rasterGeometry_ = 0, meshGeometry_ = 0;
     int rasterW_ = 0, rasterH_ = 0;
+    bool rasterJittered_ = false;  // the target holds an accumulation sample, not the centre one
+    double lastChange_ = 0.0;      // glfwGetTime() of the last change of the image (for --verbose)
 
     // Probe, recomputed when the state or pixel changes.
     std::optional<ProbeResult> probe_;

@@ -28,6 +28,26 @@ namespace shadelab::app {
 
 void Viewer::runScript() {
     if (!cursor_ || drag_) return;  // a drag holds the script until it has been released
+    if (smoothShot_) {
+        const auto& shot = std::get<actions::SmoothScreenshot>(smoothShot_->action);
+        if (accumulation_->converged() && !accumulation_->restart(state_.revision, renderW_, renderH_)) {
+            Image8 img;
+            img.width = renderW_;
+            img.height = renderH_;
+            img.channels = 3;
+            img.data.resize(size_t(img.width) * size_t(img.height) * 3);
+            accumulation_->target().readColor8(img, 0, state_.encoding);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            writePng(shot.path, img);
+            smoothShot_ = nullptr;
+        } else if (glfwGetTime() - waitStarted_ > double(shot.timeout)) {
+            throw InputError(script_->file, "actions[" + std::to_string(smoothShot_->index) + "]",
+                             "the smooth frame did not complete within " + std::to_string(int(shot.timeout)) +
+                                 " s (it accumulates in Raster mode only, with 'smooth edges' on)");
+        } else {
+            return;
+        }
+    }
     if (waiting_) {
         const float timeout = std::get<actions::WaitReference>(waiting_->action).timeout;
         if (reference_->complete() && reference_->revision() == state_.referenceRevision) {
@@ -44,7 +64,7 @@ void Viewer::runScript() {
             applyScriptAction(state_, *a, script_->file);
         else
             performAction(*a);
-        if (waiting_ || drag_) break;
+        if (waiting_ || drag_ || smoothShot_) break;
     }
 }
 
@@ -68,6 +88,9 @@ void Viewer::performAction(const ScriptAction& a) {
                 if (const std::string why = saveRefusal(x.path); !why.empty())
                     throw InputError(script_->file, "actions[" + std::to_string(a.index) + "].path", x.path + ": " + why);
                 saveSceneJson(state_.scene, x.path);
+            } else if constexpr (std::is_same_v<T, SmoothScreenshot>) {
+                smoothShot_ = &a;
+                waitStarted_ = glfwGetTime();
             } else if constexpr (std::is_same_v<T, Drag>) {
                 drag_ = SyntheticDrag{x, 0};
             } else if constexpr (std::is_same_v<T, Undo>) {

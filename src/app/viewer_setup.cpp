@@ -68,6 +68,7 @@ Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Sc
         imageView_ = std::make_unique<ImageView>(shaders);
         arrows_ = std::make_unique<ArrowOverlay>(shaders);
         reference_ = std::make_unique<ReferenceRenderer>();
+        accumulation_ = std::make_unique<Accumulation>(shaders);
         if (options_.verbose) std::fprintf(stderr, "shadelab: shaders from %s\n", shaders.origin().c_str());
     } catch (...) {
         shutdown();

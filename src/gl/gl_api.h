@@ -39,6 +39,7 @@ void checkError(const char* what);
 #define glFrontFace shadelab_glFrontFace
 #define glColorMask shadelab_glColorMask
 #define glBlendFunc shadelab_glBlendFunc
+#define glBlendColor shadelab_glBlendColor
 #define glPixelStorei shadelab_glPixelStorei
 #define glReadPixels shadelab_glReadPixels
 #define glReadBuffer shadelab_glReadBuffer
