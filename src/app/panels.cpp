@@ -60,7 +60,7 @@ void drawHelpSection() {
         {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
         {"Tab", "hide / show this panel"},
         {"C", "captions on the image on / off"},
-        {"P", "projector mode: the panel over a full-window image"},
+        {"F11", "projector mode: the panel over a full-window image"},
         {"Esc", "clear probe and selection"},
         {"drop a file", "open .json, .gltf or .glb"},
     };

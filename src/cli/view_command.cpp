@@ -38,7 +38,7 @@ const char* const kViewHelpHead =
     "                             frame times with and without a redraw\n"
     "  --ui-scale F               UI scale, 0.5..4 (default: the monitor's content scale)\n"
     "  --projector                for a classroom projector: UI scale 2 (unless --ui-scale is given) and\n"
-    "                             the panel laid over the image, which keeps the window's shape (key P)\n";
+    "                             the panel laid over the image, which keeps the window's shape (key F11)\n";
 
 // Then the raster flags (cli/raster_flags.h), which apply to the scene named on the command line.
 const char* const kViewHelpTail =
