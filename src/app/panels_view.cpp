@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <string>
+
 namespace shadelab::app {
 namespace {
 
@@ -51,6 +53,16 @@ void drawViewSection(PanelContext& ctx) {
     for (int i = 0; i < 4; ++i) {
         if (i) ImGui::SameLine();
         if (ImGui::RadioButton(names[i], &mode, i)) setMode(s, ViewMode(i));
+    }
+    ImGui::TextDisabled("camera");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("fit (F)")) frameAll(s);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("file (R)")) resetCamera(s);
+    for (size_t i = 0; i < s.scene.modelCameras.size() && i < 8; ++i) {
+        ImGui::SameLine();
+        const std::string label = "glTF " + std::to_string(i);
+        if (ImGui::SmallButton(label.c_str())) useCamera(s, s.scene.modelCameras[i]);
     }
     ImGui::Checkbox("captions on the image (C)", &ctx.fields.captions);
     ImGui::SameLine();

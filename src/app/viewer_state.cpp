@@ -45,7 +45,8 @@ ViewerState makeViewerState(Scene scene, std::string path) {
 void openScene(ViewerState& state, Scene scene, std::string path) {
     state.scene = std::move(scene);
     state.scenePath = std::move(path);
-    state.fileCamera = state.scene.camera;
+    // R returns to the file's camera: a scene file's own, or a bare model's first glTF camera.
+    state.fileCamera = state.scene.modelCameras.empty() ? state.scene.camera : state.scene.modelCameras.front();
     state.orbit = orbitFromCamera(state.scene.camera);
     state.selected = 0;
     state.probe = ProbeState{};
@@ -264,6 +265,12 @@ ColorIntensity splitIntensity(const glm::vec3& Il) {
 void applyOrbit(ViewerState& state, const OrbitCamera& orbit) {
     state.orbit = orbit;
     state.scene.camera = cameraFromOrbit(orbit);
+    markCameraChanged(state);
+}
+
+void useCamera(ViewerState& state, const Camera& camera) {
+    state.scene.camera = camera;
+    state.orbit = orbitFromCamera(camera);
     markCameraChanged(state);
 }
 

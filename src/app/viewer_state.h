@@ -110,6 +110,7 @@ inline glm::vec3 joinIntensity(const ColorIntensity& c) { return c.color * c.int
 void applyOrbit(ViewerState& state, const OrbitCamera& orbit);  // writes scene.camera
 void frameAll(ViewerState& state);                              // key F
 void resetCamera(ViewerState& state);                           // key R: the scene file's camera
+void useCamera(ViewerState& state, const Camera& camera);         // e.g. one of a model's glTF cameras
 
 // --- view ---
 void setMode(ViewerState& state, ViewMode mode);

@@ -119,6 +119,7 @@ int render(const RenderOptions& o, std::string& doing) {
     doing = "rendering";
     timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
     refuseInputAsOutput(o.output, "-o", sceneInputs(o.input, scene));
+    if (o.camera) scene.camera = chooseCamera(scene, *o.camera, o.input);
     if (o.model) scene.model = *o.model;
     if (o.terms) scene.terms = *o.terms;
     o.raster.applyTo(scene.raster);

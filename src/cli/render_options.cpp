@@ -28,6 +28,9 @@ const char* const kHelpHead =
     "  --terms LIST               comma-separated terms to switch on, the rest off:\n"
     "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
     "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
+    "  --camera fit|file|N        fit: frame the scene's bounds (default for a .gltf/.glb); file: the scene\n"
+    "                             file's camera (default for a .json) or a model's first glTF camera; N: the\n"
+    "                             model's glTF camera N, from 0\n"
     "  --threads N                tracer threads, 0 = every core (default 0)\n"
     "  --depth N                  tracer secondary-ray depth, 0..64 (default: the scene's maxDepth; with\n"
     "                             --renderer both at most 1, the rasterizer's one bounce)\n";
@@ -63,10 +66,16 @@ Terms parseTerms(const std::string& list) {
     return t;
 }
 
+CameraChoice parseCameraFlag(const std::string& value) {
+    if (auto c = parseCameraChoice(value)) return *c;
+    throw UsageError("--camera: expected fit, file or a camera number 0..999, got '" + value + "'");
+}
+
 RenderOptions parseRenderOptions(int argc, char** argv) {
     std::vector<std::string> valued = {"-o",         "--output",   "--size",       "--model",
                                        "--terms",    "--encoding", "--gl-backend", "--spp",
-                                       "--renderer", "--threads",  "--depth",      "--max-memory"};
+                                       "--renderer", "--threads",  "--depth",      "--max-memory",
+                                       "--camera"};
     std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
@@ -90,6 +99,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
     if (auto v = args.value("--encoding")) o.encoding = parseChoice("--encoding", *v, kEncodingNames);
     if (auto v = args.value("--spp")) o.spp = parseInt("--spp", *v, 1, 64);
+    if (auto v = args.value("--camera")) o.camera = parseCameraFlag(*v);
     raster::samplesPerSide(o.spp);  // a perfect square
     if (auto v = args.value("--renderer")) o.renderer = parseChoice("--renderer", *v, kRendererNames);
     if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);

@@ -3,6 +3,7 @@
 
 #include "gl/headless_context.h"
 #include "image/encode.h"
+#include "scene/camera_choice.h"
 #include "scene/raster_override.h"
 #include "scene/scene.h"
 #include "util/name_table.h"
@@ -32,6 +33,7 @@ struct RenderOptions {
     std::optional<Terms> terms;         // unset: the scene's
     Encoding encoding = Encoding::Srgb;
     int spp = 1;  // perfect square, both renderers
+    std::optional<CameraChoice> camera;  // --camera; unset: the scene's own (a bare model: fit)
     RendererChoice renderer = RendererChoice::Raster;
     int threads = 0;           // tracer worker threads; 0 = every core
     std::optional<int> depth;  // tracer secondary-ray depth; unset: the scene's maxDepth
@@ -43,6 +45,9 @@ struct RenderOptions {
     bool timings = false;
     bool help = false;  // --help was given: print renderHelp() and do nothing else
 };
+
+// --camera's value (scene/camera_choice.h); throws UsageError naming --camera.
+CameraChoice parseCameraFlag(const std::string& value);
 
 // The --help text.
 std::string renderHelp();

@@ -5,6 +5,7 @@
 #include "app/app.h"
 #include "cli/args.h"
 #include "cli/raster_flags.h"
+#include "cli/render_options.h"
 #include "scene/scene_load.h"
 #include "util/input_error.h"
 #include "util/messages.h"
@@ -36,6 +37,8 @@ const char* const kViewHelpHead =
     "  --encoding NAME            srgb (default) | linear, for the display and the screenshots\n"
     "  --stats                    redraw the image every other frame; print median and 95th-percentile\n"
     "                             frame times with and without a redraw\n"
+    "  --camera fit|file|N        the camera to open with, as for 'shadelab render' (default: a scene file's\n"
+    "                             own, a model framed to fit); F and R switch between fit and file\n"
     "  --ui-scale F               UI scale, 0.5..4 (default: the monitor's content scale)\n"
     "  --projector                for a classroom projector: UI scale 2 (unless --ui-scale is given) and\n"
     "                             the panel laid over the image, which keeps the window's shape (key F11)\n";
@@ -60,7 +63,8 @@ std::string defaultScenePath() {
 
 int viewCommand(int argc, char** argv) {
     std::vector<std::string> valued = {"--size",   "--frames",       "--screenshot", "--window-screenshot",
-                                       "--script", "--probe-report", "--encoding",   "--ui-scale"};
+                                       "--script", "--probe-report", "--encoding",   "--ui-scale",
+                                       "--camera"};
     std::vector<std::string> flags = {"-h", "--help", "--stats", "--verbose", "--projector"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
@@ -84,6 +88,8 @@ int viewCommand(int argc, char** argv) {
     Encoding encoding = Encoding::Srgb;
     if (auto v = args.value("--encoding")) encoding = parseChoice("--encoding", *v, kEncodingNames);
     const RasterOverride raster = parseRasterFlags(args);
+    std::optional<CameraChoice> camera;
+    if (auto v = args.value("--camera")) camera = parseCameraFlag(*v);
 
     std::optional<app::Script> script;
     if (auto v = args.value("--script"); v && !v->empty()) script = app::loadScript(*v);
@@ -99,6 +105,7 @@ int viewCommand(int argc, char** argv) {
     Scene scene;
     if (!path.empty()) scene = loadScene(path, printWarning);
     raster.applyTo(scene.raster);
+    if (camera) scene.camera = chooseCamera(scene, *camera, path);
     app::ViewerState state = app::makeViewerState(std::move(scene), path);
     app::setEncoding(state, encoding);
     return app::runViewer(options, std::move(state), std::move(script));

@@ -1,5 +1,5 @@
 // glTF 2.0 import through tinygltf: node hierarchy → world-space MeshParts, KHR_lights_punctual lights,
-// the first perspective camera, and metallic-roughness → Phong (docs/gltf-import.md). Reading the file is
+// the perspective cameras, and metallic-roughness → Phong (docs/gltf-import.md). Reading the file is
 // gltf_file.cpp; accessor bytes are read, bounds-checked, by gltf_accessors.cpp.
 //
 // Sections: 1. node transforms   2. primitives (triangulation, normals)   3. (materials: gltf_materials.cpp)
@@ -378,7 +378,6 @@ private:
             warnOnce(cameraPlace + ": " + gc.type + " camera skipped (only perspective cameras are imported)");
             return;
         }
-        if (out_.camera) return;  // the first perspective camera in the walk wins
         // glTF cameras look down their node's -Z with +Y up (glTF 2.0 spec, "Cameras").
         Camera c;
         c.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
@@ -392,7 +391,7 @@ private:
             c.fovY = 45.0f;
             warnOnce(cameraPlace + ": yfov " + std::to_string(yfov) + " out of (0, pi); using 45 degrees");
         }
-        out_.camera = c;
+        out_.cameras.push_back(c);
     }
 
     void addLight(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {

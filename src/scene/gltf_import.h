@@ -18,7 +18,7 @@ namespace shadelab {
 struct GltfImport {
     std::vector<MeshPart> parts;        // one per triangle primitive, world space
     std::vector<Light> lights;          // KHR_lights_punctual, world space
-    std::optional<Camera> camera;       // the first camera in the node hierarchy, if any
+    std::vector<Camera> cameras;        // every perspective camera, in node-walk order
     std::vector<std::string> warnings;  // things skipped (points, lines, unsupported extensions)
 };
 

@@ -288,11 +288,11 @@ TEST(GltfImport, PunctualLightsAndCamera) {
     expectNear(g.lights[1].direction, {0, -1, 0});
     expectNear(g.lights[1].color, glm::vec3(0.5f));  // half the brightest intensity
 
-    ASSERT_TRUE(g.camera.has_value());
-    expectNear(g.camera->position, {0, 1, 5});
-    expectNear(g.camera->target, {0, 1, 4});
-    expectNear(g.camera->up, {0, 1, 0});
-    EXPECT_NEAR(g.camera->fovY, glm::degrees(0.8f), 1e-4f);
+    ASSERT_EQ(g.cameras.size(), 1u);
+    expectNear(g.cameras[0].position, {0, 1, 5});
+    expectNear(g.cameras[0].target, {0, 1, 4});
+    expectNear(g.cameras[0].up, {0, 1, 0});
+    EXPECT_NEAR(g.cameras[0].fovY, glm::degrees(0.8f), 1e-4f);
 }
 
 // ---- Scene loading ---------------------------------------------------------------------------------------------

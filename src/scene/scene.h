@@ -29,6 +29,9 @@ struct Scene {
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
     std::vector<Mesh> meshes;
+    // A bare glTF model's own perspective cameras (node-walk order), for --camera file|N and the viewer's
+    // camera menu. Never serialised: a saved scene keeps the camera in use.
+    std::vector<Camera> modelCameras;
 };
 
 // Largest number of lights either renderer accepts (the rasterizer's uniform block size).

@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 using WarnFn = void (*)(const std::string& line);
 
 constexpr float kFrameAspect = 16.0f / 9.0f;  // widest image the framing must fit
-constexpr float kFrameMargin = 1.1f;          // 10% room around the bounding sphere
+constexpr float kFrameMargin = 1.1f;          // 10% room around the box's outline
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -82,18 +82,30 @@ Bounds sceneBounds(const Scene& scene) {
 
 Camera frameBounds(const Bounds& b, float fovY) {
     if (b.empty()) return Camera{};
-    glm::vec3 center;
-    float radius;
-    boundingSphere(b, center, radius);
-    // A sphere of radius r seen from distance d fills a half-angle asin(r/d); fit it in the narrower of the
-    // vertical half-FOV and the 16:9 horizontal one (which is never narrower for aspect >= 1).
-    const float halfY = 0.5f * glm::radians(fovY);
-    const float halfX = std::atan(std::tan(halfY) * kFrameAspect);
-    const float distance = kFrameMargin * radius / std::sin(std::min(halfX, halfY));
+    const glm::vec3 center = 0.5f * (b.lo + b.hi);
+    // The camera looks at the box's centre from the front, right and above. Its distance is the least at
+    // which every corner of the box lies inside the frustum with kFrameMargin of room, in the narrower of
+    // the vertical half-FOV and the 16:9 horizontal one: for a corner at offset o, depth d − o·w must hold
+    // margin·|o·r| / tan(halfX) and margin·|o·u| / tan(halfY). A tight fit of the box, not of its bounding
+    // sphere, which left long models small in the frame (issue 15).
+    const glm::vec3 w = glm::normalize(glm::vec3(0.3f, 0.35f, 1.0f));  // from the centre toward the eye
+    const glm::vec3 r = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), w));
+    const glm::vec3 u = glm::cross(w, r);
+    const float tanY = std::tan(0.5f * glm::radians(fovY)), tanX = tanY * kFrameAspect;
+    float distance = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z);
+        const glm::vec3 o = corner - center;
+        const float depth = glm::dot(o, w);
+        distance = std::max({distance, depth + kFrameMargin * std::fabs(glm::dot(o, r)) / tanX,
+                             depth + kFrameMargin * std::fabs(glm::dot(o, u)) / tanY});
+    }
+    // Never inside the box: at least its bounding radius away, so the near plane clips nothing.
+    distance = std::max(distance, 0.5f * glm::length(b.hi - b.lo) * 1.05f);
     Camera c;
     c.fovY = fovY;
     c.target = center;
-    c.position = center + distance * glm::normalize(glm::vec3(0.3f, 0.35f, 1.0f));  // front, right, above
+    c.position = center + distance * w;
     c.up = glm::vec3(0.0f, 1.0f, 0.0f);
     return c;
 }
@@ -155,7 +167,10 @@ Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& g
                  std::to_string(kMaxLights));
         scene.lights.resize(size_t(kMaxLights));
     }
-    scene.camera = imported.camera ? *imported.camera : frameBounds(bounds);
+    // Framed to fit, as F3D and the glTF Sample Viewer open a model: a file's camera often frames one part or
+    // an aspect other than ours (issue 15). Its cameras stay at hand (camera_choice.h).
+    scene.modelCameras = std::move(imported.cameras);
+    scene.camera = frameBounds(bounds);
     return scene;
 }
 

@@ -1,5 +1,6 @@
 // loadScene: glTF/GLB files as scenes (framing, default rig, their own camera and lights), errors, and
 // importSceneMeshes with transforms and material overrides.
+#include "scene/camera_choice.h"
 #include "scene/gltf_test_util.h"
 
 #include <filesystem>
@@ -55,7 +56,21 @@ TEST(SceneLoad, GlbKeepsItsOwnCameraAndLights) {
     // 2CylinderEngine.glb has a perspective camera (yfov 0.3143463730812073) and no lights.
     Scene s = loadScene(model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"));
     EXPECT_EQ(s.meshes[0].triangleCount(), 121496u);
-    EXPECT_NEAR(s.camera.fovY, glm::degrees(0.3143463730812073f), 1e-4f);
+    // Opened framed to fit (45°); the file's camera is kept for --camera file|0 (camera_choice.h).
+    ASSERT_EQ(s.modelCameras.size(), 1u);
+    EXPECT_NEAR(s.modelCameras[0].fovY, glm::degrees(0.3143463730812073f), 1e-4f);
+    EXPECT_FLOAT_EQ(s.camera.fovY, 45.0f);
+    expectFramed(s.camera, sceneBounds(s), 16.0f / 9.0f);
+    const std::string file = "2CylinderEngine.glb";
+    EXPECT_FLOAT_EQ(chooseCamera(s, *parseCameraChoice("file"), file).fovY, s.modelCameras[0].fovY);
+    EXPECT_FLOAT_EQ(chooseCamera(s, *parseCameraChoice("0"), file).fovY, s.modelCameras[0].fovY);
+    expectNear(chooseCamera(s, *parseCameraChoice("fit"), file).position, s.camera.position);
+    try {
+        chooseCamera(s, *parseCameraChoice("1"), file);
+        FAIL() << "camera 1 does not exist";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "2CylinderEngine.glb: --camera 1: the model has 1 camera (0)");
+    }
     EXPECT_EQ(s.lights.size(), 2u);
 
     const std::string nodes =
@@ -66,6 +81,19 @@ TEST(SceneLoad, GlbKeepsItsOwnCameraAndLights) {
     ASSERT_EQ(s.lights.size(), 1u);
     expectNear(s.lights[0].position, {0, 3, 0});
     expectNear(s.lights[0].color, glm::vec3(1.0f));
+}
+
+TEST(SceneLoad, CameraChoiceWords) {
+    EXPECT_EQ(parseCameraChoice("fit")->kind, CameraChoice::Kind::Fit);
+    EXPECT_EQ(parseCameraChoice("file")->kind, CameraChoice::Kind::File);
+    EXPECT_EQ(parseCameraChoice("12")->index, 12);
+    for (const char* bad : {"", "-1", "1000", "3x", "Fit", " 1"}) EXPECT_FALSE(parseCameraChoice(bad)) << bad;
+    Scene s;  // a scene file: its own camera is "file"; it has no glTF cameras
+    s.camera.position = glm::vec3(1, 2, 3);
+    expectNear(chooseCamera(s, *parseCameraChoice("file"), "s.json").position, {1, 2, 3});
+    EXPECT_THROW(chooseCamera(s, *parseCameraChoice("0"), "s.json"), InputError);
+    // Nothing bounded to fit (no spheres or meshes): the camera stays.
+    expectNear(chooseCamera(s, *parseCameraChoice("fit"), "s.json").position, {1, 2, 3});
 }
 
 TEST(SceneLoad, ErrorsNameTheFile) {
