@@ -44,16 +44,16 @@ AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& in) {
     const vec3 zero(0.0f), one(1.0f);
     char label[96];
     addAlbedoCurve(plot, "Lambert, white", modelShade(SL_MODEL_PHONG, one, zero, 1.0f, true, false));
-    std::snprintf(label, sizeof label, "Phong s = %.0f, ms = 1", double(s));
+    std::snprintf(label, sizeof label, "Phong  s = %.0f", double(s));
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_PHONG, zero, one, s, false, true));
-    std::snprintf(label, sizeof label, "Phong normalised, x(s+2)/2");
+    std::snprintf(label, sizeof label, "Phong  normalised");
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_PHONG, zero, vec3(phongNormalization(s)), s, false, true), true);
-    std::snprintf(label, sizeof label, "Blinn-Phong s' = %.0f, ms = 1", double(sb));
+    std::snprintf(label, sizeof label, "Blinn-Phong  s' = %.0f", double(sb));
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_BLINN_PHONG, zero, one, sb, false, true));
-    std::snprintf(label, sizeof label, "Blinn-Phong normalised, x(s'+8)/8");
+    std::snprintf(label, sizeof label, "Blinn-Phong  normalised");
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_BLINN_PHONG, zero, vec3(blinnPhongNormalization(sb)), sb, false, true),
                    true);
-    std::snprintf(label, sizeof label, "GGX roughness %.2f, white metal", double(r));
+    std::snprintf(label, sizeof label, "GGX  roughness %.2f", double(r));
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_PBR, zero, one, r, false, true));
     // Issue 12's compensated GGX curve goes here once lighting.glsl has energy compensation:
     // addAlbedoCurve(plot, "GGX, compensated", <a shade calling the compensated BRDF>, true);

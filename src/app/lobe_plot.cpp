@@ -74,12 +74,11 @@ LobePlot makeLobePlot(const LobePlotSettings& in) {
                 break;
             case LobeModel::BlinnEquivalent:
                 c.parameter = sb;
-                std::snprintf(label, sizeof label, "(N·H)^%.0f  Blinn-Phong, equivalent s'", double(sb));
+                std::snprintf(label, sizeof label, "(N·H)^%.0f  Blinn, equivalent s'", double(sb));
                 break;
             case LobeModel::Pbr:
                 c.parameter = s.roughness;
-                std::snprintf(label, sizeof label, "GGX  pbr, roughness %.2f, metallic %.2f", double(s.roughness),
-                              double(s.metallic));
+                std::snprintf(label, sizeof label, "GGX  pbr, roughness %.2f", double(s.roughness));
                 break;
         }
         c.label = label;

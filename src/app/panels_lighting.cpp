@@ -63,13 +63,19 @@ void drawLightingSection(PanelContext& ctx) {
     if (ImGui::Button(furnace ? "White furnace: on (press to restore the scene)" : "White furnace"))
         setWhiteFurnace(s, !furnace);
     if (furnace) ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered() || furnace)
+    if (ImGui::IsItemHovered() || furnace) {
         ImGui::TextWrapped(
             "Every material white (md + ms = 1, baseColor 1), lights off, background and Ia = 1. An object that "
-            "reflects exactly the light it receives vanishes; energy lost or gained shows as dark or bright rings. "
-            "The ambient term is a constant, so under Phong and Blinn-Phong every object vanishes: the lecture's "
-            "ambient term knows nothing of the lobe. The Material panel's albedo plot shows what each lobe "
-            "reflects.");
+            "reflects exactly the light it receives vanishes; energy lost or gained shows as dark or bright rings.");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped(
+            s.scene.model == ShadingModel::Pbr
+                ? "pbr: lit by the ambient term only until image-based lighting lights it from the background; "
+                  "then GGX's missing multiple scattering shows as dark rims at high roughness."
+                : "Phong and Blinn-Phong are lit by the ambient term only, a constant that knows nothing of the "
+                  "lobe, so every object vanishes. The albedo plot (Material) shows what each lobe reflects.");
+        ImGui::PopStyleColor();
+    }
 }
 
 }  // namespace shadelab::app

@@ -89,7 +89,7 @@ void drawPolar(const LobePlot& plot, const PlaneOfIncidence* probe, float width,
     dl->AddRectFilled(p0, p1, kBackground);
     const float base = 18.0f * scale;
     const ImVec2 c(p0.x + 0.5f * width, p1.y - base);
-    const float radius = std::min(0.5f * width - 12.0f * scale, height - base - 20.0f * scale);
+    const float radius = std::min(0.5f * width - 14.0f * scale, (height - base - 22.0f * scale) / 1.08f);
     auto at = [&](glm::vec2 d, float r) { return ImVec2(c.x + d.x * r * radius, c.y - d.y * r * radius); };
     dl->AddRectFilled(ImVec2(p0.x, c.y), p1, IM_COL32(45, 42, 38, 255));  // the material below the surface
     dl->AddLine(ImVec2(p0.x, c.y), ImVec2(p1.x, c.y), IM_COL32(160, 150, 130, 255), 1.5f * scale);
@@ -141,14 +141,27 @@ void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) 
             dl->AddPolyline(pts.data(), int(pts.size()), color, 0, 2.0f * scale);
     }
     ImGui::Dummy(ImVec2(width, height));
-    ImGui::TextDisabled("view angle 0° to 90° (grid 30°); y 0 to %.2f", double(top));
+    ImGui::TextDisabled("view angle 0° to 90° (grid 30°), albedo 0 to %.2f", double(top));
+    if (!ImGui::BeginTable("albedo", 3, ImGuiTableFlags_SizingFixedFit)) return;
+    ImGui::TableSetupColumn("white lobe", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("at 0°");
+    char last[32];
+    std::snprintf(last, sizeof last, "at %.0f°", double(plot.viewAngles.back()));
+    ImGui::TableSetupColumn(last);
+    ImGui::TableHeadersRow();
     for (size_t k = 0; k < plot.curves.size(); ++k) {
         const AlbedoCurve& c = plot.curves[k];
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(colors[std::min(k, std::size(colors) - 1)]));
-        ImGui::Text("%s%s: %.2f at 0°, %.2f at %.0f°", c.dashed ? "- - " : "", c.label.c_str(), double(c.albedo.front()),
-                    double(c.albedo.back()), double(plot.viewAngles.back()));
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::Text("%s%s", c.dashed ? "- - " : "", c.label.c_str());
+        ImGui::TableSetColumnIndex(1);
+        ImGui::Text("%.3f", double(c.albedo.front()));
+        ImGui::TableSetColumnIndex(2);
+        ImGui::Text("%.3f", double(c.albedo.back()));
         ImGui::PopStyleColor();
     }
+    ImGui::EndTable();
 }
 
 }  // namespace
@@ -156,7 +169,6 @@ void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) 
 void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     UiFields& f = ctx.fields;
     const float scale = ctx.uiScale;
-    const float width = ImGui::GetContentRegionAvail().x;
 
     // The angle of incidence: the probe's first lit light when the probe is on this object, else the slider.
     std::optional<PlaneOfIncidence> probePlane;
@@ -169,6 +181,7 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
             }
 
     if (!ImGui::TreeNodeEx("Specular lobe", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const float width = ImGui::GetContentRegionAvail().x;  // inside the tree node's indent
     LobePlotSettings settings;
     settings.phongExponent = phongExponent;
     settings.roughness = m.roughness;
@@ -177,22 +190,29 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     settings.axis = f.lobeAxis;
     if (probePlane) {
         settings.incidence = probePlane->incidence;
-        ImGui::Text("θi = %.1f°: the probe's first lit light", double(settings.incidence));
+        ImGui::Text("incidence %.1f°: the probe's first lit light", double(settings.incidence));
     } else {
-        ImGui::SliderFloat("θi  incidence", &f.lobeIncidence, 0.0f, 89.0f, "%.0f°");
+        ImGui::SliderFloat("incidence  N to L", &f.lobeIncidence, 0.0f, 89.0f, "%.0f°");
         settings.incidence = f.lobeIncidence;
     }
     ImGui::SliderFloat("axis  zoom", &f.lobeAxis, 5.0f, 90.0f, "0 to %.0f°", ImGuiSliderFlags_Logarithmic);
     const LobePlot plot = makeLobePlot(settings);
     drawCartesian(plot, width, 120.0f * scale, scale);
-    ImGui::TextDisabled("angle between R and V; each lobe / its peak; line at ½");
+    ImGui::TextDisabled("angle R to V; lobe / its peak; half-width at ½:");
+    const float column = ImGui::GetCursorPosX() + width - ImGui::CalcTextSize("HWHM 00.0°").x;
     for (LobeModel model : {LobeModel::Phong, LobeModel::BlinnSame, LobeModel::BlinnEquivalent, LobeModel::Pbr}) {
         const LobeCurve& c = plot.curves[size_t(model)];
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(kLobeColors[size_t(model)]));
-        ImGui::Text("%s   HWHM %.1f°", c.label.c_str(), double(halfWidthAtHalfMaximum(c.value, plot.settings.axis)));
+        ImGui::TextUnformatted(c.label.c_str());
+        ImGui::SameLine(column);
+        const float hwhm = halfWidthAtHalfMaximum(c.value, plot.settings.axis);
+        if (hwhm >= plot.settings.axis)
+            ImGui::Text("> %.0f°", double(plot.settings.axis));
+        else
+            ImGui::Text("HWHM %.1f°", double(hwhm));
         ImGui::PopStyleColor();
     }
-    drawPolar(plot, probePlane ? &*probePlane : nullptr, width, 150.0f * scale, scale);
+    drawPolar(plot, probePlane ? &*probePlane : nullptr, width, 170.0f * scale, scale);
     if (probePlane)
         ImGui::TextDisabled("plane of incidence of the probe; V is %.0f° out of it", double(probePlane->vOutOfPlane));
     else

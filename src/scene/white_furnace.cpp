@@ -22,9 +22,10 @@ Scene whiteFurnaceScene(const Scene& scene, const WhiteFurnaceSettings& settings
     Scene f = scene;
     const glm::vec3 radiance(std::max(settings.radiance, 0.0f));
     f.background = radiance;
-    f.ambient = radiance;
+    f.ambient = settings.ambient ? radiance : glm::vec3(0.0f);
     f.lights.clear();
-    f.terms.ambient = f.terms.diffuse = f.terms.specular = true;
+    f.terms.ambient = settings.ambient;
+    f.terms.diffuse = f.terms.specular = true;
     f.terms.shadows = f.terms.reflections = false;
     for (Sphere& s : f.spheres) whiten(s.material);
     for (Plane& p : f.planes) {

@@ -9,15 +9,18 @@
 namespace shadelab {
 
 struct WhiteFurnaceSettings {
-    float radiance = 1.0f;  // the uniform environment: background and Ia, linear
+    float radiance = 1.0f;  // the uniform environment: background (and Ia), linear
+    bool ambient = true;    // Ia = radiance with the ambient term on: the lecture's stand-in for the environment.
+                            // Off where the environment itself lights the surfaces (image-based lighting, a
+                            // path tracer), so the ambient term does not count that light twice.
 };
 
 // The furnace version of `scene`. It sets scene fields only, nothing a renderer must know about:
-// - background = Ia = radiance (grey), no lights;
+// - background = radiance (grey), Ia = radiance with the ambient term on (or Ia = 0 and off), no lights;
 // - every material white: ma = baseColor = 1; the lecture's md + ms = 1 (ms = the mean of ms, clamped to
 //   [0, 1], md = 1 − ms), so a lobe that conserves energy reflects all of it; s, metallic and roughness kept;
 //   kr = kt = 0 (no mirror or glass paths: the surface's own BRDF is on trial); a checker's md2 = md;
-// - terms: ambient, diffuse and specular on; shadows and reflections off (no lights, no kr).
+// - terms: diffuse and specular on, ambient as settings.ambient; shadows and reflections off (no lights, no kr).
 // Camera, model, `normalized`, raster settings, geometry and names are unchanged.
 Scene whiteFurnaceScene(const Scene& scene, const WhiteFurnaceSettings& settings = {});
 

@@ -78,6 +78,16 @@ TEST(WhiteFurnace, EveryMaterialWhiteUniformEnvironmentNoLights) {
     expectWhite(reloaded.meshes[0].parts[0].material, "reloaded mesh");
 }
 
+TEST(WhiteFurnace, WithoutTheAmbientTermOnlyTheEnvironmentLights) {
+    WhiteFurnaceSettings settings;
+    settings.ambient = false;
+    settings.radiance = 0.5f;
+    const Scene f = whiteFurnaceScene(loadScene(sourcePath("assets/scenes/default.json")), settings);
+    EXPECT_FALSE(f.terms.ambient);
+    EXPECT_EQ(f.ambient, glm::vec3(0.0f));
+    EXPECT_EQ(f.background, glm::vec3(0.5f));
+}
+
 TEST(WhiteFurnace, LeavingRestoresTheSceneExactly) {
     for (const char* name : {"default", "shininess-row", "three-lights", "torus"}) {
         SCOPED_TRACE(name);
