@@ -126,6 +126,8 @@ void Viewer::handleKeys() {
     if (pressed(GLFW_KEY_F5)) reloadShaders("");
     if (pressed(GLFW_KEY_B))
         setModel(state_, state_.scene.model == ShadingModel::Phong ? ShadingModel::BlinnPhong : ShadingModel::Phong);
+    if (pressed(GLFW_KEY_P))  // pbr and back to Phong: the pbr-vs-phong lesson flips between them
+        setModel(state_, state_.scene.model == ShadingModel::Pbr ? ShadingModel::Phong : ShadingModel::Pbr);
     if (pressed(GLFW_KEY_V)) setMode(state_, ViewMode((int(state_.mode) + 1) % 4));
     if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
     if (pressed(GLFW_KEY_ESCAPE)) {
