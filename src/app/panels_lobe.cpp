@@ -128,7 +128,6 @@ void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) 
     for (float v : {0.5f, 1.0f, 1.5f, 2.0f, 2.5f})
         if (v < top) dl->AddLine(ImVec2(p0.x, y(v)), ImVec2(p1.x, y(v)), v == 1.0f ? IM_COL32(120, 120, 130, 255) : kGrid);
     for (float a : {30.0f, 60.0f}) dl->AddLine(ImVec2(p0.x + width * a / 90.0f, p0.y), ImVec2(p0.x + width * a / 90.0f, p1.y), kGrid);
-    dl->AddText(ImVec2(p0.x + 3.0f, y(1.0f) - ImGui::GetTextLineHeight()), IM_COL32(150, 150, 160, 255), "1: all the light");
     for (size_t k = 0; k < plot.curves.size(); ++k) {
         const AlbedoCurve& c = plot.curves[k];
         std::vector<ImVec2> pts;
@@ -141,7 +140,8 @@ void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) 
             dl->AddPolyline(pts.data(), int(pts.size()), color, 0, 2.0f * scale);
     }
     ImGui::Dummy(ImVec2(width, height));
-    ImGui::TextDisabled("view angle 0° to 90° (grid 30°), albedo 0 to %.2f", double(top));
+    ImGui::TextDisabled("view angle 0° to 90° (grid 30°), albedo 0 to %.2f;", double(top));
+    ImGui::TextDisabled("light line at 1: all the light reflected");
     if (!ImGui::BeginTable("albedo", 3, ImGuiTableFlags_SizingFixedFit)) return;
     ImGui::TableSetupColumn("white lobe", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableSetupColumn("at 0°");
@@ -224,8 +224,11 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     wanted.phongExponent = phongExponent;
     wanted.roughness = m.roughness;
     if (!f.albedo || !(f.albedo->settings == wanted)) f.albedo = makeAlbedoPlot(wanted);
-    drawAlbedo(*f.albedo, width, 110.0f * scale, scale);
-    ImGui::TextDisabled("white lobes (ms = 1, F0 = 1): the fraction of light reflected toward V");
+    drawAlbedo(*f.albedo, width, 140.0f * scale, scale);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("White lobes (ms = 1, F0 = 1): the fraction of the light from all directions reflected "
+                       "toward V. Dashed: normalised lobes.");
+    ImGui::PopStyleColor();
     ImGui::TreePop();
 }
 
