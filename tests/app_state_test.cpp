@@ -534,13 +534,14 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
     settings.roughness = 1.0f;
     const AlbedoPlot plot = makeAlbedoPlot(settings);
     ASSERT_EQ(plot.curves.size(), 6u);
-    for (float v : plot.curves[0].albedo) EXPECT_NEAR(v, 1.0f, 3e-3f);                      // Lambert
-    EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);                          // Phong: 2/(s+1)
-    EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);                         // normalised
-    for (float v : plot.curves[5].albedo) EXPECT_LT(v, 0.999f);                               // GGX loses
+    for (float v : plot.curves[0].albedo) EXPECT_NEAR(v, 1.0f, 3e-3f);  // Lambert
+    EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);    // Phong: 2/(s+1)
+    EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);   // normalised
+    for (float v : plot.curves[5].albedo) EXPECT_LT(v, 0.999f);         // GGX loses
     // The hook: a curve from any shade function.
     AlbedoPlot copy = plot;
-    addAlbedoCurve(copy, "half Lambert", [](const shading::vec3& L, const shading::vec3&) { return 0.5f * std::max(L.z, 0.0f); });
+    addAlbedoCurve(copy, "half Lambert",
+                   [](const shading::vec3& L, const shading::vec3&) { return 0.5f * std::max(L.z, 0.0f); });
     EXPECT_NEAR(copy.curves.back().albedo[3], 0.5f, 2e-3f);
 }
 
@@ -583,14 +584,15 @@ TEST(AppState, ProbePbrColumnEqualsSharedShading) {
     const ProbeResult p = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
     ASSERT_TRUE(p.hit);
     const Material& m = sphere.material;
-    const shading::SurfaceParams sp = shading::surfaceParams(shading::SL_MODEL_PBR, m.ma, m.md, m.ms, m.s, m.baseColor,
-                                                             m.metallic, m.roughness);
+    const shading::SurfaceParams sp =
+        shading::surfaceParams(shading::SL_MODEL_PBR, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness);
     EXPECT_EQ(p.pbrDiffuseColor, sp.md);
     EXPECT_EQ(p.pbrF0, sp.ms);
     glm::vec3 sum = p.ambient;
     for (size_t i = 0; i < p.lights.size(); ++i) {
         const ProbeLight& l = p.lights[i];
-        const glm::vec3 one = shading::shadeLight(p.N, l.L, p.V, l.Il, sp.md, sp.ms, sp.s, shading::SL_MODEL_PBR, true, true);
+        const glm::vec3 one =
+            shading::shadeLight(p.N, l.L, p.V, l.Il, sp.md, sp.ms, sp.s, shading::SL_MODEL_PBR, true, true);
         EXPECT_NEAR(glm::length(l.diffusePbr + l.specularPbr - l.visibility * one), 0.0f, 1e-5f) << i;
         // D·Vis·F is the specular BRDF: π · f · N·L · Il is the specular part.
         const glm::vec3 spec = shading::SL_PI * l.D * l.Vis * l.F * std::max(l.NoL, 0.0f) * l.Il * l.visibility;

@@ -12,9 +12,8 @@ namespace {
 
 AlbedoShade modelShade(int model, shading::vec3 md, shading::vec3 ms, float s, bool diffuse, bool specular) {
     return [=](const shading::vec3& L, const shading::vec3& V) {
-        const shading::vec3 I =
-            shading::shadeLight(shading::vec3(0.0f, 0.0f, 1.0f), L, V, shading::vec3(1.0f), md, ms, s, model, diffuse,
-                                specular);
+        const shading::vec3 I = shading::shadeLight(shading::vec3(0.0f, 0.0f, 1.0f), L, V, shading::vec3(1.0f), md, ms,
+                                                    s, model, diffuse, specular);
         return (I.x + I.y + I.z) / 3.0f;
     };
 }
@@ -26,8 +25,8 @@ void addAlbedoCurve(AlbedoPlot& plot, const std::string& label, const AlbedoShad
     c.label = label;
     c.dashed = dashed;
     for (float degrees : plot.viewAngles)
-        c.albedo.push_back(shading::directionalAlbedo(shade, float(std::cos(double(degrees) * 3.14159265358979 / 180.0)),
-                                                      plot.settings.quadrature));
+        c.albedo.push_back(shading::directionalAlbedo(
+            shade, float(std::cos(double(degrees) * 3.14159265358979 / 180.0)), plot.settings.quadrature));
     plot.curves.push_back(std::move(c));
 }
 
@@ -51,8 +50,8 @@ AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& in) {
     std::snprintf(label, sizeof label, "Blinn-Phong  s' = %.0f", double(sb));
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_BLINN_PHONG, zero, one, sb, false, true));
     std::snprintf(label, sizeof label, "Blinn-Phong  normalised");
-    addAlbedoCurve(plot, label, modelShade(SL_MODEL_BLINN_PHONG, zero, vec3(blinnPhongNormalization(sb)), sb, false, true),
-                   true);
+    addAlbedoCurve(plot, label,
+                   modelShade(SL_MODEL_BLINN_PHONG, zero, vec3(blinnPhongNormalization(sb)), sb, false, true), true);
     std::snprintf(label, sizeof label, "GGX  roughness %.2f", double(r));
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_PBR, zero, one, r, false, true));
     // Issue 12's compensated GGX curve goes here once lighting.glsl has energy compensation:

@@ -83,7 +83,8 @@ LobePlot makeLobePlot(const LobePlotSettings& in) {
         }
         c.label = label;
         c.polar.resize(size_t(s.polarSamples));
-        for (int i = 0; i < s.polarSamples; ++i) c.polar[size_t(i)] = lobeValue(c.model, c.parameter, s, plot.polarAngleAt(i));
+        for (int i = 0; i < s.polarSamples; ++i)
+            c.polar[size_t(i)] = lobeValue(c.model, c.parameter, s, plot.polarAngleAt(i));
         c.value.resize(size_t(s.samples));
         for (int i = 0; i < s.samples; ++i)
             c.value[size_t(i)] = lobeValue(c.model, c.parameter, s, double(s.incidence) - double(plot.angleAt(i)));
@@ -124,7 +125,8 @@ PlaneOfIncidence planeOfIncidence(const glm::vec3& Nin, const glm::vec3& Lin, co
     // The tangent toward R's side is −(L's tangential part); with L along N, V's tangential part picks it.
     glm::vec3 t = -(L - glm::dot(N, L) * N);
     if (glm::dot(t, t) < 1e-10f) t = V - glm::dot(N, V) * N;
-    if (glm::dot(t, t) < 1e-10f) t = std::fabs(N.x) < 0.9f ? glm::cross(N, glm::vec3(1, 0, 0)) : glm::cross(N, glm::vec3(0, 1, 0));
+    if (glm::dot(t, t) < 1e-10f)
+        t = std::fabs(N.x) < 0.9f ? glm::cross(N, glm::vec3(1, 0, 0)) : glm::cross(N, glm::vec3(0, 1, 0));
     t = glm::normalize(t);
     const glm::vec3 b = glm::cross(N, t);  // normal of the plane of incidence
     auto project = [&](const glm::vec3& v) {

@@ -27,11 +27,11 @@ inline constexpr int kLobeModels = 4;
 
 struct LobeCurve {
     LobeModel model = LobeModel::Phong;
-    std::string label;           // e.g. "(R·V)^32  Phong"
-    float parameter = 0.0f;      // the exponent, or the roughness for pbr
-    float peak = 0.0f;           // the largest value over the plane of incidence (the curve is scaled by 1/peak)
-    std::vector<float> value;    // Cartesian: lobe / peak at the angle between R and V, `samples` points
-    std::vector<float> polar;    // polar: lobe / peak at outgoing angle θo, `polarSamples` points
+    std::string label;         // e.g. "(R·V)^32  Phong"
+    float parameter = 0.0f;    // the exponent, or the roughness for pbr
+    float peak = 0.0f;         // the largest value over the plane of incidence (the curve is scaled by 1/peak)
+    std::vector<float> value;  // Cartesian: lobe / peak at the angle between R and V, `samples` points
+    std::vector<float> polar;  // polar: lobe / peak at outgoing angle θo, `polarSamples` points
 };
 
 // Both views of the four lobes. In the plane of incidence L lies at −θi from N and R at +θi. The Cartesian
@@ -42,8 +42,8 @@ struct LobeCurve {
 // the mean of its RGB), divided by its peak so the shapes compare; `peak` keeps the scale.
 struct LobePlot {
     LobePlotSettings settings;
-    std::vector<LobeCurve> curves;  // kLobeModels curves, in LobeModel order
-    float angleAt(int i) const;     // the Cartesian sample's angle a between R and V, degrees
+    std::vector<LobeCurve> curves;    // kLobeModels curves, in LobeModel order
+    float angleAt(int i) const;       // the Cartesian sample's angle a between R and V, degrees
     float polarAngleAt(int i) const;  // the polar sample's outgoing angle θo, degrees (−90 at i = 0)
 };
 
@@ -61,8 +61,8 @@ glm::vec2 polarDirection(float degrees);
 // along N, and the angle (degrees) by which the vector leaves that plane. For L = N any tangent will do.
 struct PlaneOfIncidence {
     glm::vec2 L{0.0f}, V{0.0f}, R{0.0f};  // unit 2D directions (the projections, renormalised)
-    float incidence = 0.0f;                // θi = angle between N and L, degrees
-    float vOutOfPlane = 0.0f;              // angle between V and the plane, degrees
+    float incidence = 0.0f;               // θi = angle between N and L, degrees
+    float vOutOfPlane = 0.0f;             // angle between V and the plane, degrees
 };
 PlaneOfIncidence planeOfIncidence(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V);
 

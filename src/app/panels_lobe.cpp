@@ -115,8 +115,8 @@ void drawPolar(const LobePlot& plot, const PlaneOfIncidence* probe, float width,
 }
 
 void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) {
-    static const ImU32 colors[] = {IM_COL32(170, 170, 170, 255), kLobeColors[0], kLobeColors[0],
-                                   kLobeColors[2],               kLobeColors[2], kLobeColors[3]};
+    static const ImU32 colors[] = {
+        IM_COL32(170, 170, 170, 255), kLobeColors[0], kLobeColors[0], kLobeColors[2], kLobeColors[2], kLobeColors[3]};
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     const ImVec2 p1(p0.x + width, p0.y + height);
@@ -126,8 +126,10 @@ void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) 
         for (float v : c.albedo) top = std::max(top, std::min(v * 1.05f, 3.0f));
     auto y = [&](float v) { return p1.y - height * std::min(v, top) / top; };
     for (float v : {0.5f, 1.0f, 1.5f, 2.0f, 2.5f})
-        if (v < top) dl->AddLine(ImVec2(p0.x, y(v)), ImVec2(p1.x, y(v)), v == 1.0f ? IM_COL32(120, 120, 130, 255) : kGrid);
-    for (float a : {30.0f, 60.0f}) dl->AddLine(ImVec2(p0.x + width * a / 90.0f, p0.y), ImVec2(p0.x + width * a / 90.0f, p1.y), kGrid);
+        if (v < top)
+            dl->AddLine(ImVec2(p0.x, y(v)), ImVec2(p1.x, y(v)), v == 1.0f ? IM_COL32(120, 120, 130, 255) : kGrid);
+    for (float a : {30.0f, 60.0f})
+        dl->AddLine(ImVec2(p0.x + width * a / 90.0f, p0.y), ImVec2(p0.x + width * a / 90.0f, p1.y), kGrid);
     for (size_t k = 0; k < plot.curves.size(); ++k) {
         const AlbedoCurve& c = plot.curves[k];
         std::vector<ImVec2> pts;
@@ -151,7 +153,8 @@ void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) 
     ImGui::TableHeadersRow();
     for (size_t k = 0; k < plot.curves.size(); ++k) {
         const AlbedoCurve& c = plot.curves[k];
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(colors[std::min(k, std::size(colors) - 1)]));
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              ImGui::ColorConvertU32ToFloat4(colors[std::min(k, std::size(colors) - 1)]));
         ImGui::TableNextRow();
         ImGui::TableSetColumnIndex(0);
         ImGui::Text("%s%s", c.dashed ? "- - " : "", c.label.c_str());
@@ -226,8 +229,9 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     if (!f.albedo || !(f.albedo->settings == wanted)) f.albedo = makeAlbedoPlot(wanted);
     drawAlbedo(*f.albedo, width, 140.0f * scale, scale);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("White lobes (ms = 1, F0 = 1): the fraction of the light from all directions reflected "
-                       "toward V. Dashed: normalised lobes.");
+    ImGui::TextWrapped(
+        "White lobes (ms = 1, F0 = 1): the fraction of the light from all directions reflected "
+        "toward V. Dashed: normalised lobes.");
     ImGui::PopStyleColor();
     ImGui::TreePop();
 }

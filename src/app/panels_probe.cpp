@@ -96,7 +96,8 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
         ShadingModel model;
         glm::vec3 diffuse{0.0f}, specular{0.0f}, total{0.0f};
     };
-    Column cols[] = {{"Phong", ShadingModel::Phong}, {"Blinn-Phong", ShadingModel::BlinnPhong}, {"pbr", ShadingModel::Pbr}};
+    Column cols[] = {
+        {"Phong", ShadingModel::Phong}, {"Blinn-Phong", ShadingModel::BlinnPhong}, {"pbr", ShadingModel::Pbr}};
     for (const ProbeLight& l : p.lights) {
         cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse, cols[2].diffuse += l.diffusePbr;
         cols[0].specular += l.specularPhong, cols[1].specular += l.specularBlinn, cols[2].specular += l.specularPbr;
@@ -158,9 +159,9 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
         ImGui::Text("V %+.3f %+.3f %+.3f", p.V.x, p.V.y, p.V.z);
         const bool pbr = ctx.state.scene.model == ShadingModel::Pbr;
         if (pbr)
-            ImGui::Text("roughness %.3f  metallic %.2f   c_diff %.2f %.2f %.2f   F0 %.2f %.2f %.2f", p.material.roughness,
-                        p.material.metallic, p.pbrDiffuseColor.r, p.pbrDiffuseColor.g, p.pbrDiffuseColor.b, p.pbrF0.r,
-                        p.pbrF0.g, p.pbrF0.b);
+            ImGui::Text("roughness %.3f  metallic %.2f   c_diff %.2f %.2f %.2f   F0 %.2f %.2f %.2f",
+                        p.material.roughness, p.material.metallic, p.pbrDiffuseColor.r, p.pbrDiffuseColor.g,
+                        p.pbrDiffuseColor.b, p.pbrF0.r, p.pbrF0.g, p.pbrF0.b);
         else
             ImGui::Text("s %.1f   ms %.2f %.2f %.2f", p.material.s, p.material.ms.r, p.material.ms.g, p.material.ms.b);
         const bool shadows = ctx.state.scene.terms.shadows;

@@ -84,8 +84,10 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
         pl.D = shading::D_GGX(std::max(pl.NoH, 0.0f), glm::dot(NxH, NxH), a);
         pl.Vis = shading::V_SmithGGXCorrelated(std::max(glm::dot(r.N, r.V), 1e-4f), std::max(pl.NoL, 0.0f), a);
         pl.F = shading::F_Schlick(paramsPbr.ms, std::max(glm::dot(r.V, pl.H), 0.0f));
-        const glm::vec3 both = shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, true, true);
-        pl.specularPbr = vis * shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, false, true);
+        const glm::vec3 both =
+            shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, true, true);
+        pl.specularPbr =
+            vis * shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, false, true);
         pl.diffusePbr = vis * both - pl.specularPbr;
         r.lights.push_back(pl);
     }

@@ -26,11 +26,11 @@ struct ProbeLight {
     glm::vec3 specularPhong{0.0f};  // vis_l · Il ⊙ ms · specPhong
     glm::vec3 specularBlinn{0.0f};  // vis_l · Il ⊙ ms · specBlinn
     // pbr (glTF metallic-roughness, lighting.glsl): the BRDF's factors and this light's two parts.
-    float D = 0.0f;                 // D_GGX(N·H, α)
-    float Vis = 0.0f;               // V_SmithGGXCorrelated(N·V, N·L, α) = G2 / (4 N·L N·V)
-    glm::vec3 F{0.0f};              // F_Schlick(F0, V·H)
-    glm::vec3 diffusePbr{0.0f};     // vis_l · Il ⊙ (1 − F) ⊙ c_diff · N·L (plain c_diff · N·L with specular off)
-    glm::vec3 specularPbr{0.0f};    // vis_l · Il ⊙ π · D · Vis · F · N·L
+    float D = 0.0f;              // D_GGX(N·H, α)
+    float Vis = 0.0f;            // V_SmithGGXCorrelated(N·V, N·L, α) = G2 / (4 N·L N·V)
+    glm::vec3 F{0.0f};           // F_Schlick(F0, V·H)
+    glm::vec3 diffusePbr{0.0f};  // vis_l · Il ⊙ (1 − F) ⊙ c_diff · N·L (plain c_diff · N·L with specular off)
+    glm::vec3 specularPbr{0.0f};  // vis_l · Il ⊙ π · D · Vis · F · N·L
 };
 
 struct ProbeResult {

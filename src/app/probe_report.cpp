@@ -34,9 +34,14 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
     j["N"] = vec(p.N);
     j["V"] = vec(p.V);
     const Material& m = p.material;
-    j["material"] = {{"ma", vec(m.ma)},           {"md", vec(m.md)},       {"ms", vec(m.ms)},
-                     {"s", m.s},                  {"baseColor", vec(m.baseColor)}, {"metallic", m.metallic},
-                     {"roughness", m.roughness}, {"pbr_diffuse_color", vec(p.pbrDiffuseColor)},
+    j["material"] = {{"ma", vec(m.ma)},
+                     {"md", vec(m.md)},
+                     {"ms", vec(m.ms)},
+                     {"s", m.s},
+                     {"baseColor", vec(m.baseColor)},
+                     {"metallic", m.metallic},
+                     {"roughness", m.roughness},
+                     {"pbr_diffuse_color", vec(p.pbrDiffuseColor)},
                      {"pbr_f0", vec(p.pbrF0)}};
     j["ambient"] = vec(p.ambient);
     nlohmann::json lights = nlohmann::json::array();

@@ -63,7 +63,8 @@ TEST(DirectionalAlbedo, AgreesWithTheBruteForceGridWhereThatResolvesTheLobe) {
             for (int j = 0; j < n; ++j) {
                 const float phi = 2.0f * SL_PI * (float(j) + 0.5f) / float(n);
                 const vec3 L(r * std::cos(phi), r * std::sin(phi), u);
-                sum += double(shadeLight(N, L, V, vec3(1.0f), vec3(0.0f), vec3(1.0f), s, SL_MODEL_BLINN_PHONG, false, true).x);
+                sum += double(
+                    shadeLight(N, L, V, vec3(1.0f), vec3(0.0f), vec3(1.0f), s, SL_MODEL_BLINN_PHONG, false, true).x);
             }
         }
         return float(sum / n * (2.0 / n));  // (1/π) · (1/n) · (2π/n)
@@ -72,6 +73,7 @@ TEST(DirectionalAlbedo, AgreesWithTheBruteForceGridWhereThatResolvesTheLobe) {
         const float b = brute(NoV, 8.0f);
         EXPECT_NEAR(modelAlbedo(SL_MODEL_BLINN_PHONG, NoV, vec3(0.0f), vec3(1.0f), 8.0f, false, true), b, 2e-3f);
         // Control: another exponent is told apart.
-        EXPECT_GT(std::fabs(modelAlbedo(SL_MODEL_BLINN_PHONG, NoV, vec3(0.0f), vec3(1.0f), 10.0f, false, true) - b), 1e-2f);
+        EXPECT_GT(std::fabs(modelAlbedo(SL_MODEL_BLINN_PHONG, NoV, vec3(0.0f), vec3(1.0f), 10.0f, false, true) - b),
+                  1e-2f);
     }
 }
