@@ -17,6 +17,8 @@
 #include "shading/lighting.h"
 #include "shading/local_illumination.h"
 #include "test_output.h"
+#include "trace/integrator.h"
+#include "trace/tile_renderer.h"
 #include "util/input_error.h"
 
 #include <gtest/gtest.h>
@@ -605,6 +607,61 @@ TEST(AppState, ProbePbrColumnEqualsSharedShading) {
     EXPECT_NEAR(j["total"]["pbr"][0].get<float>(), p.totalPbr.x, 1e-6f);
     EXPECT_NEAR(j["lights"][0]["D"].get<float>(), p.lights[0].D, 1e-6f);
     EXPECT_EQ(j["model"], "pbr");
+
+    // On the checker floor the tile's colour is pbr's base colour, as in the integrator (F0 stays the plane's).
+    const Plane& floor = s.scene.planes[0];
+    ASSERT_TRUE(floor.checker.has_value());
+    int seen[2] = {0, 0};
+    for (int x = 0; x < w && (!seen[0] || !seen[1]); x += 7) {
+        const ProbeResult f = probePixel(trace::TraceScene(s.scene), w, h, x, h - 5);
+        if (!f.hit || f.kind != ObjectKind::Plane) continue;
+        const int parity = shading::checkerParity(f.P, floor.normal, floor.checker->size);
+        const glm::vec3 base = parity == 1 ? floor.checker->md2 : floor.material.baseColor;
+        EXPECT_EQ(f.pbrDiffuseColor, shading::pbrDiffuseColor(base, floor.material.metallic)) << x;
+        EXPECT_EQ(f.pbrF0, shading::pbrF0(floor.material.baseColor, floor.material.metallic)) << x;
+        ++seen[parity];
+    }
+    EXPECT_TRUE(seen[0] && seen[1]) << "both kinds of tile";
+    EXPECT_NE(floor.checker->md2, floor.material.baseColor) << "control: the tiles differ";
+}
+
+TEST(AppState, ProbeTotalsEqualTheIntegratorsLocalTermsUnderEveryModel) {
+    // The probe explains the reference's pixel: its total for the scene's model is the integrator's own local
+    // term (reflections are not in the probe's numbers), on spheres and on both kinds of checker tile.
+    ViewerState s = defaultState();
+    s.scene.spheres[0].material.metallic = 0.6f;
+    s.scene.spheres[0].material.roughness = 0.3f;
+    const int w = 96, h = 54;
+    for (const ShadingModel model : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr}) {
+        for (const bool normalized : {false, true}) {
+            SCOPED_TRACE(std::string(toString(model)) + (normalized ? " normalized" : ""));
+            Scene scene = s.scene;
+            scene.model = model;
+            scene.normalized = normalized;
+            const trace::TraceScene ts(scene);
+            const trace::WhittedIntegrator integrator(ts, 0);
+            const ViewSetup view = makeViewSetup(scene, w, h);
+            int checked = 0, otherDiffers = 0;
+            for (int y = 1; y < h; y += 4)
+                for (int x = 1; x < w; x += 4) {
+                    const trace::Ray ray = trace::sampleRay(view, 1, x, y, 0, 0);
+                    const std::optional<trace::Hit> hit = ts.intersect(ray);
+                    if (!hit) continue;
+                    const glm::vec3 expected = integrator.local(ray, integrator.surfaceAt(ray, *hit));
+                    const ProbeResult p = probePixel(ts, w, h, x, y);
+                    const glm::vec3 total = model == ShadingModel::Phong        ? p.totalPhong
+                                            : model == ShadingModel::BlinnPhong ? p.totalBlinn
+                                                                                : p.totalPbr;
+                    const glm::vec3 other = model == ShadingModel::Pbr ? p.totalPhong : p.totalPbr;
+                    EXPECT_NEAR(glm::length(total - expected), 0.0f, 1e-5f * std::max(1.0f, glm::length(expected)))
+                        << x << "," << y;
+                    otherDiffers += glm::length(other - expected) > 1e-3f;
+                    ++checked;
+                }
+            EXPECT_GT(checked, 150);
+            EXPECT_GT(otherDiffers, checked / 4) << "control: another model's column is not the image";
+        }
+    }
 }
 
 // ---- Scripts -------------------------------------------------------------------------------------------

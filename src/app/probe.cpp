@@ -49,7 +49,9 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
     };
     const glm::vec3 msPhong = paramsFor(shading::SL_MODEL_PHONG).ms;
     const glm::vec3 msBlinn = paramsFor(shading::SL_MODEL_BLINN_PHONG).ms;
-    const shading::SurfaceParams paramsPbr = paramsFor(shading::SL_MODEL_PBR);
+    // As WhittedIntegrator: the checker's second tiles change pbr's base colour (F0 stays the plane's).
+    shading::SurfaceParams paramsPbr = paramsFor(shading::SL_MODEL_PBR);
+    paramsPbr.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     r.pbrDiffuseColor = paramsPbr.md;
     r.pbrF0 = paramsPbr.ms;
     const int pbr = shading::SL_MODEL_PBR;

@@ -48,7 +48,7 @@ struct ProbeResult {
     glm::vec3 totalPhong{0.0f};  // shadeLocal with the scene's term switches, Phong
     glm::vec3 totalBlinn{0.0f};  // the same, Blinn-Phong
     glm::vec3 totalPbr{0.0f};    // the same, pbr
-    glm::vec3 pbrDiffuseColor{0.0f}, pbrF0{0.0f};  // c_diff and F0 of the material (shading::surfaceParams)
+    glm::vec3 pbrDiffuseColor{0.0f}, pbrF0{0.0f};  // c_diff (of the checker tile at P) and F0 (shading::surfaceParams)
 };
 
 // Asks the tracer about pixel (x, y) of a width x height image: its primary ray through the pixel centre
