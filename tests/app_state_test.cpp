@@ -1,6 +1,8 @@
 // Viewer state tests (issue 4 §3), no window: every control action changes the scene as expected and
 // nothing else, an edited scene survives a JSON round trip exactly, the probe equals the shared C++
 // shading, the equivalent-Blinn rule, the orbit camera, and script parsing with file-and-index errors.
+#include "app/albedo_plot.h"
+#include "app/lobe_plot.h"
 #include "app/material_presets.h"
 #include "app/orbit_camera.h"
 #include "app/probe.h"
@@ -11,13 +13,18 @@
 #include "scene/scene_json.h"
 #include "scene/scene_load.h"
 #include "scene/view.h"
+#include "scene/white_furnace.h"
 #include "shading/lighting.h"
+#include "shading/local_illumination.h"
 #include "test_output.h"
+#include "trace/integrator.h"
+#include "trace/tile_renderer.h"
 #include "util/input_error.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -417,6 +424,244 @@ TEST(AppState, EquivalentBlinnExponentMatchesHalfMaximum) {
     const std::vector<float> lobe = phongLobe(8.0f, 91);
     EXPECT_EQ(lobe.front(), 1.0f);
     EXPECT_NEAR(lobe.back(), 0.0f, 1e-6f);
+}
+
+// ---- Lobe plots (issues 12 and 15) ----------------------------------------------------------------------
+
+namespace {
+
+// The axis the lobe plot used before issue 15: four times Phong's half-maximum angle, within [5, 90] degrees.
+// Its curve looked the same for every s >= 32 (the negative control below).
+float oldRescaledAxis(float s) {
+    const double halfMax = std::acos(std::exp2(-1.0 / double(s))) * 180.0 / M_PI;
+    return float(std::clamp(4.0 * halfMax, 5.0, 90.0));
+}
+
+// True when every width is smaller than the one before.
+bool strictlyShrinking(const std::vector<float>& widths) {
+    for (size_t i = 1; i < widths.size(); ++i)
+        if (!(widths[i] < widths[i - 1])) return false;
+    return true;
+}
+
+const float kExponents[] = {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048};
+
+}  // namespace
+
+TEST(LobePlot, HalfWidthReadFromTheDataShrinksAsShininessGrows) {
+    // What the panel draws on its fixed 0..90° axis: the half-width, as a fraction of the plot's width, must
+    // shrink at every step from s = 1 to 2048, for each lecture lobe.
+    for (LobeModel m : {LobeModel::Phong, LobeModel::BlinnSame, LobeModel::BlinnEquivalent}) {
+        std::vector<float> screen;
+        for (float s : kExponents) {
+            LobePlotSettings settings;
+            settings.phongExponent = s;
+            const LobePlot plot = makeLobePlot(settings);
+            ASSERT_EQ(plot.curves[size_t(m)].value.size(), size_t(settings.samples));
+            const float hwhm = halfWidthAtHalfMaximum(plot.curves[size_t(m)].value, plot.settings.axis);
+            screen.push_back(hwhm / plot.settings.axis);
+            if (m == LobeModel::Phong) {  // the closed form: cos(a)^s = 1/2
+                EXPECT_NEAR(hwhm, std::acos(std::exp2(-1.0 / s)) * 180.0 / M_PI, 0.05) << s;
+            }
+        }
+        // Blinn-Phong at the same s = 1 and 2 stays above half beyond 90° (cos(a/2)^s = 1/2 at a = 120°, 90°):
+        // it is checked from s = 4 on.
+        if (m == LobeModel::BlinnSame) screen.erase(screen.begin(), screen.begin() + 2);
+        EXPECT_TRUE(strictlyShrinking(screen)) << "model " << int(m) << ": " << testing::PrintToString(screen);
+        EXPECT_LT(screen.back(), m == LobeModel::BlinnSame ? 0.04f : 0.02f) << "s = 2048 must look narrow on screen";
+    }
+    // Equivalent exponents give Phong's half-width (the rule of specular_lobe.h), same exponents a wider one.
+    LobePlotSettings settings;
+    settings.phongExponent = 64.0f;
+    const LobePlot plot = makeLobePlot(settings);
+    const auto hw = [&](LobeModel m) { return halfWidthAtHalfMaximum(plot.curves[size_t(m)].value, 90.0f); };
+    EXPECT_NEAR(hw(LobeModel::BlinnEquivalent), hw(LobeModel::Phong), 0.05f);
+    EXPECT_GT(hw(LobeModel::BlinnSame), 1.8f * hw(LobeModel::Phong));
+}
+
+TEST(LobePlot, TheOldRescaledAxisAndAConstantLobeFailTheCheck) {
+    // Negative controls for the check above: on the old axis the on-screen width stopped shrinking at s = 32,
+    // and a lobe that never changes cannot shrink.
+    std::vector<float> rescaled, constant;
+    for (float s : kExponents) {
+        LobePlotSettings settings;
+        settings.phongExponent = s;
+        settings.axis = oldRescaledAxis(s);
+        const LobePlot plot = makeLobePlot(settings);
+        rescaled.push_back(halfWidthAtHalfMaximum(plot.curves[0].value, plot.settings.axis) / plot.settings.axis);
+        LobePlotSettings fixed;
+        fixed.phongExponent = 32.0f;
+        const LobePlot same = makeLobePlot(fixed);
+        constant.push_back(halfWidthAtHalfMaximum(same.curves[0].value, 90.0f) / 90.0f);
+    }
+    EXPECT_FALSE(strictlyShrinking(rescaled));
+    EXPECT_FALSE(strictlyShrinking(constant));
+    EXPECT_NEAR(rescaled[6], rescaled.back(), 0.01f);  // s = 64 and 2048 looked alike
+}
+
+TEST(LobePlot, PolarLobesPeakAtTheMirrorDirectionAndNarrowWithRoughness) {
+    LobePlotSettings settings;
+    settings.incidence = 40.0f;
+    settings.phongExponent = 50.0f;
+    settings.roughness = 0.3f;
+    const LobePlot plot = makeLobePlot(settings);
+    for (const LobeCurve& c : plot.curves) {
+        size_t best = 0;
+        for (size_t i = 0; i < c.polar.size(); ++i)
+            if (c.polar[i] > c.polar[best]) best = i;
+        EXPECT_NEAR(plot.polarAngleAt(int(best)), 40.0f, 3.0f) << c.label;
+        EXPECT_NEAR(c.polar[best], 1.0f, 1e-6f) << c.label;
+        EXPECT_GT(c.peak, 0.0f) << c.label;
+    }
+    // The pbr lobe narrows as roughness falls (its half-width read from the Cartesian data).
+    std::vector<float> widths;
+    for (float r : {1.0f, 0.7f, 0.5f, 0.3f, 0.2f, 0.1f}) {
+        settings.roughness = r;
+        const LobePlot p = makeLobePlot(settings);
+        widths.push_back(halfWidthAtHalfMaximum(p.curves[size_t(LobeModel::Pbr)].value, 90.0f));
+    }
+    EXPECT_TRUE(strictlyShrinking(widths));
+    // The probe's vectors in the plane of incidence: L on the left, R its mirror, V out of the plane.
+    const glm::vec3 N(0, 1, 0), L = glm::normalize(glm::vec3(-1, 1, 0)), V = glm::normalize(glm::vec3(0.5f, 1, 0.5f));
+    const PlaneOfIncidence pi = planeOfIncidence(N, L, V);
+    EXPECT_NEAR(pi.incidence, 45.0f, 1e-3f);
+    EXPECT_NEAR(pi.L.x, -pi.R.x, 1e-6f);
+    EXPECT_LT(pi.L.x, 0.0f);
+    EXPECT_NEAR(pi.vOutOfPlane, std::asin(0.5f / glm::length(glm::vec3(0.5f, 1, 0.5f))) * 180.0f / M_PI, 1e-3f);
+}
+
+TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
+    AlbedoPlotSettings settings;
+    settings.phongExponent = 64.0f;
+    settings.roughness = 1.0f;
+    const AlbedoPlot plot = makeAlbedoPlot(settings);
+    ASSERT_EQ(plot.curves.size(), 6u);
+    for (float v : plot.curves[0].albedo) EXPECT_NEAR(v, 1.0f, 3e-3f);  // Lambert
+    EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);    // Phong: 2/(s+1)
+    EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);   // normalised
+    for (float v : plot.curves[5].albedo) EXPECT_LT(v, 0.999f);         // GGX loses
+    // The hook: a curve from any shade function.
+    AlbedoPlot copy = plot;
+    addAlbedoCurve(copy, "half Lambert",
+                   [](const shading::vec3& L, const shading::vec3&) { return 0.5f * std::max(L.z, 0.0f); });
+    EXPECT_NEAR(copy.curves.back().albedo[3], 0.5f, 2e-3f);
+}
+
+// ---- White furnace --------------------------------------------------------------------------------------
+
+TEST(AppState, WhiteFurnaceOnAndOffRestoresTheScene) {
+    ViewerState s = defaultState();
+    const std::string before = sceneToJson(s.scene);
+    const uint64_t revision = s.revision;
+    setWhiteFurnace(s, true);
+    EXPECT_TRUE(whiteFurnaceOn(s));
+    EXPECT_GT(s.revision, revision);
+    EXPECT_EQ(sceneToJson(s.scene), sceneToJson(whiteFurnaceScene(*s.beforeFurnace)));
+    EXPECT_NE(sceneToJson(s.scene), before);
+    setWhiteFurnace(s, true);  // no-op
+    setWhiteFurnace(s, false);
+    EXPECT_FALSE(whiteFurnaceOn(s));
+    EXPECT_EQ(sceneToJson(s.scene), before);
+    // Through a script, and opening a scene leaves the furnace.
+    const Script sc = parse(R"([{"action": "whiteFurnace"}, {"action": "whiteFurnace", "on": false}])");
+    applyScriptAction(s, sc.actions[0], "actions.json");
+    EXPECT_TRUE(whiteFurnaceOn(s));
+    EXPECT_TRUE(s.scene.lights.empty());
+    applyScriptAction(s, sc.actions[1], "actions.json");
+    EXPECT_EQ(sceneToJson(s.scene), before);
+    setWhiteFurnace(s, true);
+    openScene(s, loadScene(test::sourcePath("assets/scenes/torus.json")), "torus.json");
+    EXPECT_FALSE(whiteFurnaceOn(s));
+}
+
+TEST(AppState, ProbePbrColumnEqualsSharedShading) {
+    ViewerState s = defaultState();
+    setModel(s, ShadingModel::Pbr);
+    const int w = 640, h = 360;
+    const uint32_t green = idOf(s, "matte green");
+    Sphere& sphere = s.scene.spheres[green - 1];
+    sphere.material.metallic = 0.3f;
+    sphere.material.roughness = 0.35f;
+    const glm::ivec2 px = pixelOf(s.scene, w, h, sphere.center + glm::vec3(0.3f, 0.3f, 0.0f));
+    const ProbeResult p = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    ASSERT_TRUE(p.hit);
+    const Material& m = sphere.material;
+    const shading::SurfaceParams sp =
+        shading::surfaceParams(shading::SL_MODEL_PBR, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness);
+    EXPECT_EQ(p.pbrDiffuseColor, sp.md);
+    EXPECT_EQ(p.pbrF0, sp.ms);
+    glm::vec3 sum = p.ambient;
+    for (size_t i = 0; i < p.lights.size(); ++i) {
+        const ProbeLight& l = p.lights[i];
+        const glm::vec3 one =
+            shading::shadeLight(p.N, l.L, p.V, l.Il, sp.md, sp.ms, sp.s, shading::SL_MODEL_PBR, true, true);
+        EXPECT_NEAR(glm::length(l.diffusePbr + l.specularPbr - l.visibility * one), 0.0f, 1e-5f) << i;
+        // D·Vis·F is the specular BRDF: π · f · N·L · Il is the specular part.
+        const glm::vec3 spec = shading::SL_PI * l.D * l.Vis * l.F * std::max(l.NoL, 0.0f) * l.Il * l.visibility;
+        EXPECT_NEAR(glm::length(spec - l.specularPbr), 0.0f, 1e-4f * std::max(1.0f, glm::length(spec))) << i;
+        sum += l.diffusePbr + l.specularPbr;
+    }
+    EXPECT_NEAR(glm::length(p.totalPbr - sum), 0.0f, 1e-5f);
+    EXPECT_GT(glm::length(p.totalPbr - p.totalPhong), 1e-3f) << "control: pbr is not Phong here";
+    const nlohmann::json j = nlohmann::json::parse(probeReportJson(p, s.scene, green));
+    EXPECT_NEAR(j["total"]["pbr"][0].get<float>(), p.totalPbr.x, 1e-6f);
+    EXPECT_NEAR(j["lights"][0]["D"].get<float>(), p.lights[0].D, 1e-6f);
+    EXPECT_EQ(j["model"], "pbr");
+
+    // On the checker floor the tile's colour is pbr's base colour, as in the integrator (F0 stays the plane's).
+    const Plane& floor = s.scene.planes[0];
+    ASSERT_TRUE(floor.checker.has_value());
+    int seen[2] = {0, 0};
+    for (int x = 0; x < w && (!seen[0] || !seen[1]); x += 7) {
+        const ProbeResult f = probePixel(trace::TraceScene(s.scene), w, h, x, h - 5);
+        if (!f.hit || f.kind != ObjectKind::Plane) continue;
+        const int parity = shading::checkerParity(f.P, floor.normal, floor.checker->size);
+        const glm::vec3 base = parity == 1 ? floor.checker->md2 : floor.material.baseColor;
+        EXPECT_EQ(f.pbrDiffuseColor, shading::pbrDiffuseColor(base, floor.material.metallic)) << x;
+        EXPECT_EQ(f.pbrF0, shading::pbrF0(floor.material.baseColor, floor.material.metallic)) << x;
+        ++seen[parity];
+    }
+    EXPECT_TRUE(seen[0] && seen[1]) << "both kinds of tile";
+    EXPECT_NE(floor.checker->md2, floor.material.baseColor) << "control: the tiles differ";
+}
+
+TEST(AppState, ProbeTotalsEqualTheIntegratorsLocalTermsUnderEveryModel) {
+    // The probe explains the reference's pixel: its total for the scene's model is the integrator's own local
+    // term (reflections are not in the probe's numbers), on spheres and on both kinds of checker tile.
+    ViewerState s = defaultState();
+    s.scene.spheres[0].material.metallic = 0.6f;
+    s.scene.spheres[0].material.roughness = 0.3f;
+    const int w = 96, h = 54;
+    for (const ShadingModel model : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr}) {
+        for (const bool normalized : {false, true}) {
+            SCOPED_TRACE(std::string(toString(model)) + (normalized ? " normalized" : ""));
+            Scene scene = s.scene;
+            scene.model = model;
+            scene.normalized = normalized;
+            const trace::TraceScene ts(scene);
+            const trace::WhittedIntegrator integrator(ts, 0);
+            const ViewSetup view = makeViewSetup(scene, w, h);
+            int checked = 0, otherDiffers = 0;
+            for (int y = 1; y < h; y += 4)
+                for (int x = 1; x < w; x += 4) {
+                    const trace::Ray ray = trace::sampleRay(view, 1, x, y, 0, 0);
+                    const std::optional<trace::Hit> hit = ts.intersect(ray);
+                    if (!hit) continue;
+                    const glm::vec3 expected = integrator.local(ray, integrator.surfaceAt(ray, *hit));
+                    const ProbeResult p = probePixel(ts, w, h, x, y);
+                    const glm::vec3 total = model == ShadingModel::Phong        ? p.totalPhong
+                                            : model == ShadingModel::BlinnPhong ? p.totalBlinn
+                                                                                : p.totalPbr;
+                    const glm::vec3 other = model == ShadingModel::Pbr ? p.totalPhong : p.totalPbr;
+                    EXPECT_NEAR(glm::length(total - expected), 0.0f, 1e-5f * std::max(1.0f, glm::length(expected)))
+                        << x << "," << y;
+                    otherDiffers += glm::length(other - expected) > 1e-3f;
+                    ++checked;
+                }
+            EXPECT_GT(checked, 150);
+            EXPECT_GT(otherDiffers, checked / 4) << "control: another model's column is not the image";
+        }
+    }
 }
 
 // ---- Scripts -------------------------------------------------------------------------------------------

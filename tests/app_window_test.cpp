@@ -444,4 +444,35 @@ TEST(AppWindow, StillFrameAccumulatesToTheSupersampledRender) {
     EXPECT_FALSE(sameBytes(smooth, ss1));
     const CompareResult aliased = compareImages(readPng(smooth), readPng(ss1));
     EXPECT_FALSE(aliased.pass) << "the 1-spp render should fail the gates against the smooth frame";
+
+TEST(AppWindow, WhiteFurnaceRoundTripRestoresTheScreenshotByteForByte) {
+    // Issue 12: the furnace button's action (whiteFurnace) and back. The furnace frame is the headless render of
+    // the saved furnace scene; leaving it gives the first screenshot again, byte for byte.
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string before = test::outputPath("furnace_before.png");
+    const std::string furnace = test::outputPath("furnace_on.png");
+    const std::string after = test::outputPath("furnace_after.png");
+    const std::string saved = test::outputPath("furnace_saved.json");
+    for (const std::string& f : {before, furnace, after}) fs::remove(f);
+    const std::string script = writeText("furnace_script.json", R"({"actions": [
+        {"frame": 3, "action": "screenshot", "path": ")" + before + R"("},
+        {"frame": 4, "action": "whiteFurnace", "on": true},
+        {"frame": 5, "action": "screenshot", "path": ")" + furnace + R"("},
+        {"action": "saveScene", "path": ")" + saved + R"("},
+        {"frame": 6, "action": "whiteFurnace", "on": false},
+        {"frame": 8, "action": "screenshot", "path": ")" + after + R"("}
+    ]})");
+    Result v = view(scenePath + " --size " + kSize + " --frames 10 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    EXPECT_TRUE(sameBytes(before, after)) << "leaving the furnace did not restore the image";
+    const std::string expected = test::outputPath("furnace_render.png");
+    ASSERT_EQ(render(saved, expected).code, 0);
+    expectSameImage("furnace_on", furnace, expected);
+    // Under Phong the furnace is lit by the ambient term alone, Ia·ma = 1 = the background: every pixel white.
+    const Image8 white = readPng(furnace);
+    EXPECT_EQ(std::count(white.data.begin(), white.data.end(), uint8_t(255)), std::ptrdiff_t(white.data.size()));
+    // Negative controls: the furnace changes the image, and the restored one is not the furnace.
+    EXPECT_FALSE(sameBytes(before, furnace));
+    EXPECT_FALSE(sameBytes(after, furnace));
 }

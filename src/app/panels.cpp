@@ -53,6 +53,7 @@ void drawHelpSection() {
         {"click", "select the object, probe that pixel"},
         {"1 .. 5", "ambient, +diffuse, +specular, +shadows, +reflections"},
         {"B", "Phong / Blinn-Phong"},
+        {"P", "pbr / Phong"},
         {"V", "next view mode"},
         {"F / R", "frame all / reset camera"},
         {"F5", "reload shaders from shaders/"},

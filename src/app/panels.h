@@ -4,10 +4,12 @@
 // panels_view, panels_raster, panels_probe; panels.cpp lays out the side panel.
 #pragma once
 
+#include "app/albedo_plot.h"
 #include "app/probe.h"
 #include "app/viewer_state.h"
 #include "image/compare.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,9 @@ struct UiFields {
     bool convertAllObjects = false;  // the equivalent-exponent buttons act on every object
     bool lessonFolded = false;       // the lesson window was folded for the probe
     float probeWindowWidth = 0.0f;   // window units, as last drawn (for placing it inside the image)
+    float lobeIncidence = 30.0f;     // degrees: the lobe plots' angle of incidence when no probe is set
+    float lobeAxis = 90.0f;          // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
+    std::optional<AlbedoPlot> albedo;  // the albedo plot, recomputed when its settings change
 };
 
 // Where Save writes by default: "<stem>-saved.json" beside the opened file, so neither a lesson file (whose
@@ -86,7 +91,9 @@ void drawHelpSection();
 void drawLessonWindow(PanelContext& ctx, float x, float bottom, float width, bool folded);
 // With its right edge at `x` when the probed point is on the right half of the image, else its left edge.
 void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight);
-// The specular lobes of the selected material against the angle between R and V.
-void drawSpecularLobe(float s, ShadingModel model, float width, float height);
+// The lobe plots of a material (panels_lobe.cpp): its specular lobe under each model against the angle
+// between R and V and as a polar plot in the plane of incidence (with the probe's L, V, R), and the
+// directional albedo of each model. `phongExponent` is the material's s as a Phong exponent.
+void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent);
 
 }  // namespace shadelab::app

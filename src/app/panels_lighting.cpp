@@ -1,19 +1,36 @@
-// Lighting panel: Phong, Blinn-Phong or pbr, the five term switches, and the lecture's progression as steps.
+// Lighting panel: Phong, Blinn-Phong or pbr, the five term switches, the lecture's progression as steps, and
+// the white furnace (scene/white_furnace.h).
 #include "app/panels.h"
 
 #include <imgui.h>
 #include <iterator>
 
 namespace shadelab::app {
+namespace {
+
+// Keeps the next widget of width `w` on this line when it fits, else starts a new line (labels never cut).
+void sameLineIfFits(float w) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <= right) ImGui::SameLine();
+}
+
+float radioWidth(const char* label) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+}
+
+}  // namespace
 
 void drawLightingSection(PanelContext& ctx) {
     ViewerState& s = ctx.state;
     int model = modelIndex(s.scene.model);
-    if (ImGui::RadioButton("Phong  (R·V)^s", &model, 0)) setModel(s, ShadingModel::Phong);
-    ImGui::SameLine();
-    if (ImGui::RadioButton("Blinn-Phong  (N·H)^s", &model, 1)) setModel(s, ShadingModel::BlinnPhong);
-    ImGui::SameLine();
-    if (ImGui::RadioButton("PBR  GGX", &model, 2)) setModel(s, ShadingModel::Pbr);
+    const char* names[] = {"Phong  (R·V)^s", "Blinn-Phong  (N·H)^s", "pbr  GGX metallic-roughness"};
+    const ShadingModel models[] = {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr};
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) sameLineIfFits(radioWidth(names[i]));
+        if (ImGui::RadioButton(names[i], &model, i)) setModel(s, models[i]);
+    }
     if (s.scene.model != ShadingModel::Pbr) {
         bool normalized = s.scene.normalized;
         if (ImGui::Checkbox("normalized lobe  (s+2)/2, (s+8)/8", &normalized)) setNormalized(s, normalized);
@@ -39,6 +56,25 @@ void drawLightingSection(PanelContext& ctx) {
         if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         if (ImGui::Button(labels[step - 1])) applyProgression(s, step);
         if (active) ImGui::PopStyleColor();
+    }
+
+    const bool furnace = whiteFurnaceOn(s);
+    if (furnace) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button(furnace ? "White furnace: on (press to restore the scene)" : "White furnace"))
+        setWhiteFurnace(s, !furnace);
+    if (furnace) ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered() || furnace) {
+        ImGui::TextWrapped(
+            "Every material white (md + ms = 1, baseColor 1), lights off, background and Ia = 1. An object that "
+            "reflects exactly the light it receives vanishes; energy lost or gained shows as dark or bright rings.");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped(
+            s.scene.model == ShadingModel::Pbr
+                ? "pbr: lit by the ambient term only until image-based lighting lights it from the background; "
+                  "then GGX's missing multiple scattering shows as dark rims at high roughness."
+                : "Phong and Blinn-Phong are lit by the ambient term only, a constant that knows nothing of the "
+                  "lobe, so every object vanishes. The albedo plot (Material) shows what each lobe reflects.");
+        ImGui::PopStyleColor();
     }
 }
 

@@ -1,5 +1,6 @@
 // Probe window (teaching): at the clicked point, N, V, P and for each light L, R, H, the dot products and
-// every term, then the totals for Phong and Blinn-Phong side by side. The arrows are arrow_overlay.cpp.
+// every term of the current model (under pbr: D, V, F and the diffuse and specular parts), then the totals
+// for Phong, Blinn-Phong and pbr side by side, the shown one marked. The arrows are arrow_overlay.cpp.
 #include "app/panels.h"
 
 #include "image/encode.h"
@@ -19,7 +20,7 @@ void rowLabel(const char* label) {
     ImGui::TextUnformatted(label);
 }
 
-void lightTable(const ProbeResult& p, bool shadows) {
+void lightTable(const ProbeResult& p, bool shadows, bool pbr) {
     const int columns = 1 + int(p.lights.size());
     if (!ImGui::BeginTable("lights", columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
     ImGui::TableSetupColumn("");
@@ -28,11 +29,15 @@ void lightTable(const ProbeResult& p, bool shadows) {
         ImGui::TableSetupColumn(name.c_str());
     }
     ImGui::TableHeadersRow();
-    auto scalarRow = [&](const char* label, float ProbeLight::*field) {
+    // `litOnly`: the BRDF's factors mean nothing where the light is behind the surface (N·L <= 0).
+    auto scalarRow = [&](const char* label, float ProbeLight::*field, bool litOnly = false) {
         rowLabel(label);
         for (size_t i = 0; i < p.lights.size(); ++i) {
             ImGui::TableSetColumnIndex(int(i) + 1);
-            ImGui::Text("%+.4f", p.lights[i].*field);
+            if (litOnly && p.lights[i].NoL <= 0.0f)
+                ImGui::TextDisabled("-");
+            else
+                ImGui::Text("%+.4f", p.lights[i].*field);
         }
     };
     auto rgbRow = [&](const char* label, glm::vec3 ProbeLight::*field) {
@@ -42,11 +47,29 @@ void lightTable(const ProbeResult& p, bool shadows) {
             rgbCell(p.lights[i].*field);
         }
     };
+    auto vectorRow = [&](const char* label, glm::vec3 ProbeLight::*field) {
+        rowLabel(label);
+        for (size_t i = 0; i < p.lights.size(); ++i) {
+            ImGui::TableSetColumnIndex(int(i) + 1);
+            const glm::vec3& v = p.lights[i].*field;
+            ImGui::Text("%+.3f %+.3f %+.3f", v.x, v.y, v.z);
+        }
+    };
+    vectorRow("L", &ProbeLight::L);
+    vectorRow("R", &ProbeLight::R);
+    vectorRow("H", &ProbeLight::H);
     scalarRow("N·L", &ProbeLight::NoL);
-    scalarRow("R·V", &ProbeLight::RoV);
+    if (!pbr) scalarRow("R·V", &ProbeLight::RoV);
     scalarRow("N·H", &ProbeLight::NoH);
-    scalarRow("(R·V)^s", &ProbeLight::specPhong);
-    scalarRow("(N·H)^s", &ProbeLight::specBlinn);
+    if (pbr) {
+        // glTF 2.0 Appendix B: f_spec = D · V · F, with V = G2 / (4 N·L N·V) (lighting.glsl).
+        scalarRow("D  GGX", &ProbeLight::D, true);
+        scalarRow("V  Smith", &ProbeLight::Vis, true);
+        rgbRow("F  Schlick", &ProbeLight::F);
+    } else {
+        scalarRow("(R·V)^s", &ProbeLight::specPhong);
+        scalarRow("(N·H)^s", &ProbeLight::specBlinn);
+    }
     rgbRow("Il", &ProbeLight::Il);
     if (shadows) {
         rowLabel("visible");
@@ -56,50 +79,59 @@ void lightTable(const ProbeResult& p, bool shadows) {
             ImGui::TextUnformatted(l.NoL <= 0.0f ? "faces away" : l.visibility > 0.0f ? "yes" : "no: in shadow");
         }
     }
-    rgbRow("diffuse", &ProbeLight::diffuse);
-    rgbRow("spec Phong", &ProbeLight::specularPhong);
-    rgbRow("spec Blinn", &ProbeLight::specularBlinn);
+    if (pbr) {
+        rgbRow("diffuse (1-F)", &ProbeLight::diffusePbr);
+        rgbRow("spec pi·DVF·N·L", &ProbeLight::specularPbr);
+    } else {
+        rgbRow("diffuse", &ProbeLight::diffuse);
+        rgbRow("spec Phong", &ProbeLight::specularPhong);
+        rgbRow("spec Blinn", &ProbeLight::specularBlinn);
+    }
     ImGui::EndTable();
 }
 
 void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) {
-    glm::vec3 diffuse(0.0f), specPhong(0.0f), specBlinn(0.0f);
+    struct Column {
+        const char* name;
+        ShadingModel model;
+        glm::vec3 diffuse{0.0f}, specular{0.0f}, total{0.0f};
+    };
+    Column cols[] = {
+        {"Phong", ShadingModel::Phong}, {"Blinn-Phong", ShadingModel::BlinnPhong}, {"pbr", ShadingModel::Pbr}};
     for (const ProbeLight& l : p.lights) {
-        diffuse += l.diffuse;
-        specPhong += l.specularPhong;
-        specBlinn += l.specularBlinn;
+        cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse, cols[2].diffuse += l.diffusePbr;
+        cols[0].specular += l.specularPhong, cols[1].specular += l.specularBlinn, cols[2].specular += l.specularPbr;
     }
-    if (!ImGui::BeginTable("totals", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
-    // Under pbr neither column is what the image shows (the probe has no pbr column yet).
-    const bool phong = current == ShadingModel::Phong, blinn = current == ShadingModel::BlinnPhong;
+    cols[0].total = p.totalPhong, cols[1].total = p.totalBlinn, cols[2].total = p.totalPbr;
+    if (!ImGui::BeginTable("totals", 4, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
     ImGui::TableSetupColumn("");
-    ImGui::TableSetupColumn(phong ? "Phong (shown)" : "Phong");
-    ImGui::TableSetupColumn(blinn ? "Blinn-Phong (shown)" : "Blinn-Phong");
+    for (const Column& c : cols) {
+        const std::string name = std::string(c.name) + (c.model == current ? " (shown)" : "");
+        ImGui::TableSetupColumn(name.c_str());
+    }
     ImGui::TableHeadersRow();
+    auto row = [&](const char* label, glm::vec3 Column::*field) {
+        rowLabel(label);
+        for (int c = 0; c < 3; ++c) {
+            ImGui::TableSetColumnIndex(c + 1);
+            if (cols[c].model == current) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(60, 80, 120, 160));
+            rgbCell(cols[c].*field);
+        }
+    };
     rowLabel("Ia ma");
-    ImGui::TableSetColumnIndex(1);
-    rgbCell(p.ambient);
-    ImGui::TableSetColumnIndex(2);
-    rgbCell(p.ambient);
-    rowLabel("sum diffuse");
-    ImGui::TableSetColumnIndex(1);
-    rgbCell(diffuse);
-    ImGui::TableSetColumnIndex(2);
-    rgbCell(diffuse);
-    rowLabel("sum specular");
-    ImGui::TableSetColumnIndex(1);
-    rgbCell(specPhong);
-    ImGui::TableSetColumnIndex(2);
-    rgbCell(specBlinn);
-    rowLabel("I (switches)");
-    ImGui::TableSetColumnIndex(1);
-    rgbCell(p.totalPhong);
-    ImGui::TableSetColumnIndex(2);
-    rgbCell(p.totalBlinn);
-    rowLabel("8-bit");
-    for (int c = 0; c < 2; ++c) {
-        const glm::vec3 v = c == 0 ? p.totalPhong : p.totalBlinn;
+    for (int c = 0; c < 3; ++c) {
         ImGui::TableSetColumnIndex(c + 1);
+        if (cols[c].model == current) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(60, 80, 120, 160));
+        rgbCell(p.ambient);
+    }
+    row("sum diffuse", &Column::diffuse);
+    row("sum specular", &Column::specular);
+    row("I (switches)", &Column::total);
+    rowLabel("8-bit");
+    for (int c = 0; c < 3; ++c) {
+        const glm::vec3 v = cols[c].total;
+        ImGui::TableSetColumnIndex(c + 1);
+        if (cols[c].model == current) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(60, 80, 120, 160));
         ImGui::Text("%3d %3d %3d", encodeChannel(v.r, encoding), encodeChannel(v.g, encoding),
                     encodeChannel(v.b, encoding));
     }
@@ -125,9 +157,15 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
         ImGui::Text("P %+.3f %+.3f %+.3f", p.P.x, p.P.y, p.P.z);
         ImGui::Text("N %+.3f %+.3f %+.3f", p.N.x, p.N.y, p.N.z);
         ImGui::Text("V %+.3f %+.3f %+.3f", p.V.x, p.V.y, p.V.z);
-        ImGui::Text("s %.1f   ms %.2f %.2f %.2f", p.material.s, p.material.ms.r, p.material.ms.g, p.material.ms.b);
+        const bool pbr = ctx.state.scene.model == ShadingModel::Pbr;
+        if (pbr)
+            ImGui::Text("roughness %.3f  metallic %.2f   c_diff %.2f %.2f %.2f   F0 %.2f %.2f %.2f",
+                        p.material.roughness, p.material.metallic, p.pbrDiffuseColor.r, p.pbrDiffuseColor.g,
+                        p.pbrDiffuseColor.b, p.pbrF0.r, p.pbrF0.g, p.pbrF0.b);
+        else
+            ImGui::Text("s %.1f   ms %.2f %.2f %.2f", p.material.s, p.material.ms.r, p.material.ms.g, p.material.ms.b);
         const bool shadows = ctx.state.scene.terms.shadows;
-        if (!p.lights.empty()) lightTable(p, shadows);
+        if (!p.lights.empty()) lightTable(p, shadows, pbr);
         totalsTable(p, ctx.state.scene.model, ctx.state.encoding);
         ImGui::TextDisabled(shadows ? "visible: the reference's shadow ray; no reflections"
                                     : "local terms, as both renderers compute them");

@@ -7,6 +7,7 @@
 #include "trace/integrator.h"
 #include "trace/tile_renderer.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 #include <optional>
 
@@ -48,6 +49,12 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
     };
     const glm::vec3 msPhong = paramsFor(shading::SL_MODEL_PHONG).ms;
     const glm::vec3 msBlinn = paramsFor(shading::SL_MODEL_BLINN_PHONG).ms;
+    // As WhittedIntegrator: the checker's second tiles change pbr's base colour (F0 stays the plane's).
+    shading::SurfaceParams paramsPbr = paramsFor(shading::SL_MODEL_PBR);
+    paramsPbr.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
+    r.pbrDiffuseColor = paramsPbr.md;
+    r.pbrF0 = paramsPbr.ms;
+    const int pbr = shading::SL_MODEL_PBR;
     // Each light: the same raw vectors the fragment shaders pass (surface.glsl), then shadeLight.
     std::vector<shading::LightSample> samples;
     for (const Light& light : scene.lights) {
@@ -73,6 +80,17 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
         pl.diffuse = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, m.ms, m.s, phong, true, false);
         pl.specularPhong = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, msPhong, m.s, phong, false, true);
         pl.specularBlinn = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, msBlinn, m.s, blinn, false, true);
+        // pbr: the factors as specularGGX computes them, and the two parts as shadeLight adds them.
+        const float a = shading::pbrAlpha(paramsPbr.s);
+        const glm::vec3 NxH = glm::cross(r.N, pl.H);
+        pl.D = shading::D_GGX(std::max(pl.NoH, 0.0f), glm::dot(NxH, NxH), a);
+        pl.Vis = shading::V_SmithGGXCorrelated(std::max(glm::dot(r.N, r.V), 1e-4f), std::max(pl.NoL, 0.0f), a);
+        pl.F = shading::F_Schlick(paramsPbr.ms, std::max(glm::dot(r.V, pl.H), 0.0f));
+        const glm::vec3 both =
+            shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, true, true);
+        pl.specularPbr =
+            vis * shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, false, true);
+        pl.diffusePbr = vis * both - pl.specularPbr;
         r.lights.push_back(pl);
     }
     const shading::SurfaceParams paramsPhong{m.ma, m.md, msPhong, m.s}, paramsBlinn{m.ma, m.md, msBlinn, m.s};
@@ -81,6 +99,7 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
                                        shading::SL_MODEL_PHONG, flags);
     r.totalBlinn = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsBlinn, scene.ambient,
                                        shading::SL_MODEL_BLINN_PHONG, flags);
+    r.totalPbr = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsPbr, scene.ambient, pbr, flags);
     return r;
 }
 

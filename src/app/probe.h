@@ -1,6 +1,6 @@
 // The lighting probe (teaching): for one pixel, what the primary ray hits and every quantity of the
-// lighting model there (N, V, and per light L, R, H, the dot products and each term), for Phong and
-// Blinn-Phong side by side. Pure C++ over the tracer's scene and the shared shading code; no GL.
+// lighting model there (N, V, and per light L, R, H, the dot products and each term), for Phong,
+// Blinn-Phong and pbr side by side. Pure C++ over the tracer's scene and the shared shading code; no GL.
 #pragma once
 
 #include "app/viewer_state.h"
@@ -25,6 +25,12 @@ struct ProbeLight {
     glm::vec3 diffuse{0.0f};        // vis_l · Il ⊙ md · max(N·L, 0)
     glm::vec3 specularPhong{0.0f};  // vis_l · Il ⊙ ms · specPhong
     glm::vec3 specularBlinn{0.0f};  // vis_l · Il ⊙ ms · specBlinn
+    // pbr (glTF metallic-roughness, lighting.glsl): the BRDF's factors and this light's two parts.
+    float D = 0.0f;              // D_GGX(N·H, α)
+    float Vis = 0.0f;            // V_SmithGGXCorrelated(N·V, N·L, α) = G2 / (4 N·L N·V)
+    glm::vec3 F{0.0f};           // F_Schlick(F0, V·H)
+    glm::vec3 diffusePbr{0.0f};  // vis_l · Il ⊙ (1 − F) ⊙ c_diff · N·L (plain c_diff · N·L with specular off)
+    glm::vec3 specularPbr{0.0f};  // vis_l · Il ⊙ π · D · Vis · F · N·L
 };
 
 struct ProbeResult {
@@ -41,6 +47,8 @@ struct ProbeResult {
     std::vector<ProbeLight> lights;
     glm::vec3 totalPhong{0.0f};  // shadeLocal with the scene's term switches, Phong
     glm::vec3 totalBlinn{0.0f};  // the same, Blinn-Phong
+    glm::vec3 totalPbr{0.0f};    // the same, pbr
+    glm::vec3 pbrDiffuseColor{0.0f}, pbrF0{0.0f};  // c_diff (of the checker tile at P) and F0 (shading::surfaceParams)
 };
 
 // Asks the tracer about pixel (x, y) of a width x height image: its primary ray through the pixel centre
@@ -48,7 +56,7 @@ struct ProbeResult {
 // (WhittedIntegrator::surfaceAt: normal flipped to the viewer, checker applied) and, with the shadows
 // term on, each light's vis_l from its shadow ray (WhittedIntegrator::visibility, the same origin
 // offset): the exact answer the rasterizer's shadow maps approximate. Then evaluates every local term
-// with shading::shadeLight / shadeLocal, for Phong and Blinn-Phong side by side.
+// with shading::shadeLight / shadeLocal, for Phong, Blinn-Phong and pbr side by side.
 ProbeResult probePixel(const trace::TraceScene& scene, int width, int height, int x, int y);
 
 // The JSON written by the script's "probeReport" action and --probe-report (docs/viewer.md).

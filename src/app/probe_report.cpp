@@ -34,7 +34,15 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
     j["N"] = vec(p.N);
     j["V"] = vec(p.V);
     const Material& m = p.material;
-    j["material"] = {{"ma", vec(m.ma)}, {"md", vec(m.md)}, {"ms", vec(m.ms)}, {"s", m.s}};
+    j["material"] = {{"ma", vec(m.ma)},
+                     {"md", vec(m.md)},
+                     {"ms", vec(m.ms)},
+                     {"s", m.s},
+                     {"baseColor", vec(m.baseColor)},
+                     {"metallic", m.metallic},
+                     {"roughness", m.roughness},
+                     {"pbr_diffuse_color", vec(p.pbrDiffuseColor)},
+                     {"pbr_f0", vec(p.pbrF0)}};
     j["ambient"] = vec(p.ambient);
     nlohmann::json lights = nlohmann::json::array();
     for (const ProbeLight& l : p.lights)
@@ -51,9 +59,14 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                           {"spec_blinn", l.specBlinn},
                           {"diffuse", vec(l.diffuse)},
                           {"specular_phong", vec(l.specularPhong)},
-                          {"specular_blinn", vec(l.specularBlinn)}});
+                          {"specular_blinn", vec(l.specularBlinn)},
+                          {"D", l.D},
+                          {"Vis", l.Vis},
+                          {"F", vec(l.F)},
+                          {"diffuse_pbr", vec(l.diffusePbr)},
+                          {"specular_pbr", vec(l.specularPbr)}});
     j["lights"] = lights;
-    j["total"] = {{"phong", vec(p.totalPhong)}, {"blinn_phong", vec(p.totalBlinn)}};
+    j["total"] = {{"phong", vec(p.totalPhong)}, {"blinn_phong", vec(p.totalBlinn)}, {"pbr", vec(p.totalPbr)}};
     return j.dump(2) + "\n";
 }
 

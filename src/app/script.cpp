@@ -121,6 +121,9 @@ const ActionInfo kActions[] = {
          return Probe{a.child("x").integerIn(0, 16383), a.child("y").integerIn(0, 16383)};
      }},
     {"clearProbe", {}, [](const JsonNode&) -> Action { return ClearProbe{}; }},
+    {"whiteFurnace",
+     {"on"},
+     [](const JsonNode& a) -> Action { return WhiteFurnace{!a.has("on") || a.child("on").boolean()}; }},
     {"screenshot", {"path"}, pathAction<Screenshot>},
     {"referenceScreenshot", {"path"}, pathAction<ReferenceScreenshot>},
     {"windowScreenshot", {"path"}, pathAction<WindowScreenshot>},
@@ -236,6 +239,7 @@ struct StateApplier {
     void operator()(const ResetCamera&) const { resetCamera(state); }
     void operator()(const Probe& x) const { setProbe(state, x.x, x.y); }
     void operator()(const ClearProbe&) const { clearProbe(state); }
+    void operator()(const WhiteFurnace& x) const { setWhiteFurnace(state, x.on); }
 };
 
 template <typename T>

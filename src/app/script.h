@@ -89,6 +89,9 @@ struct Probe {
     int x = 0, y = 0;
 };  // pixels, row 0 at the top
 struct ClearProbe {};
+struct WhiteFurnace {
+    bool on = true;
+};  // setWhiteFurnace
 
 // Window actions: the viewer performs them.
 struct Screenshot {
@@ -140,7 +143,7 @@ using Action =
                  actions::ToggleTerm, actions::Progression, actions::SetModel, actions::SwitchModel, actions::SetMode,
                  actions::SetEncoding, actions::SetSplit, actions::SetAmbient, actions::SetRaster, actions::AddLight,
                  actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
-                 actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::Screenshot,
+                 actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::WhiteFurnace, actions::Screenshot,
                  actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
                  actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot, actions::Undo,
                  actions::Redo>;

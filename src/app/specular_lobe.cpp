@@ -46,12 +46,6 @@ std::vector<float> blinnLobe(float blinnExponent, int count, float maxDegrees) {
     return v;
 }
 
-float lobePlotRange(float s) {
-    if (!(s > 0.0f)) return 90.0f;
-    const double halfMax = std::acos(std::exp2(-1.0 / double(s))) * 90.0 / kHalfPi;  // degrees
-    return float(std::clamp(4.0 * halfMax, 5.0, 90.0));
-}
-
 float lobeRmsDifference(float s, float blinnExponent, int count) {
     const std::vector<float> a = phongLobe(s, count), b = blinnLobe(blinnExponent, count);
     double sum = 0.0;

@@ -1,6 +1,6 @@
 // The specular lobes of Phong (R·V)^s and Blinn-Phong (N·H)^s' as functions of the angle between R and V,
 // and the "equivalent Blinn exponent" rule that makes the two highlights match (docs/viewer.md).
-// Pure maths for the viewer's lobe plot and its helper button.
+// Pure maths for the viewer's lobe plot (lobe_plot.h) and its helper button.
 #pragma once
 
 #include <vector>
@@ -25,9 +25,6 @@ inline float fourTimesRule(float s) { return 4.0f * s; }
 // maxDegrees), with the coplanar N·H = cos(angle / 2). x^0 = 1 as in lighting.glsl.
 std::vector<float> phongLobe(float s, int count, float maxDegrees = 90.0f);
 std::vector<float> blinnLobe(float blinnExponent, int count, float maxDegrees = 90.0f);
-
-// An angle range that shows the lobe well: four times Phong's half-maximum angle, within [5, 90] degrees.
-float lobePlotRange(float s);
 
 // Root-mean-square difference of the two lobes over [0, 90] degrees, sampled at `count` angles.
 float lobeRmsDifference(float s, float blinnExponent, int count = 512);

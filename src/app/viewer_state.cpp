@@ -4,6 +4,7 @@
 #include "app/specular_lobe.h"
 #include "scene/coverage.h"
 #include "scene/scene_load.h"
+#include "scene/white_furnace.h"
 
 #include <algorithm>
 #include <glm/common.hpp>
@@ -50,6 +51,7 @@ void openScene(ViewerState& state, Scene scene, std::string path) {
     state.orbit = orbitFromCamera(state.scene.camera);
     state.selected = 0;
     state.probe = ProbeState{};
+    state.beforeFurnace.reset();
     ++state.geometryRevision;
     markChanged(state);
 }
@@ -203,6 +205,18 @@ void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool a
         }
     }
     setModel(state, model);
+}
+
+void setWhiteFurnace(ViewerState& state, bool on) {
+    if (on == whiteFurnaceOn(state)) return;
+    if (on) {
+        state.beforeFurnace = state.scene;
+        state.scene = whiteFurnaceScene(state.scene);
+    } else {
+        state.scene = leaveWhiteFurnace(*state.beforeFurnace, state.scene);
+        state.beforeFurnace.reset();
+    }
+    markChanged(state);
 }
 
 void setRasterSettings(ViewerState& state, const RasterSettings& raster) {

@@ -38,6 +38,7 @@ struct ViewerState {
     uint64_t referenceRevision = 1;  // bumped by every change the tracer can see (not scene.raster)
     uint64_t geometryRevision = 1;   // bumped when the meshes change (a new scene)
     uint64_t editRevision = 1;       // bumped by every change but the camera's: what undo steps over
+    std::optional<Scene> beforeFurnace;  // the scene before the white furnace, while it is on
 };
 
 ViewerState makeViewerState(Scene scene, std::string path);
@@ -85,6 +86,12 @@ void setNormalized(ViewerState& state, bool normalized);
 // to Blinn-Phong s -> equivalentBlinnExponent(s), to Phong the inverse. Only the selected object, or every
 // object when `allObjects` or nothing is selected. No-op on s when the model already is `model`.
 void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects);
+
+// The white furnace (scene/white_furnace.h): on saves the scene and replaces it with its furnace version; off
+// restores it (keeping the camera, model and `normalized` changed meanwhile). Edits made in the furnace are
+// dropped when it is turned off. Opening a scene leaves it.
+void setWhiteFurnace(ViewerState& state, bool on);
+inline bool whiteFurnaceOn(const ViewerState& state) { return state.beforeFurnace.has_value(); }
 
 // --- rasterizer settings (scene.raster; the tracer ignores them) ---
 // Sets all of them, each brought into the scene file's range (raster_settings.h): a shadow-map size <= 0 is

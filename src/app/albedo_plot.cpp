@@ -1,0 +1,62 @@
+// makeAlbedoPlot: directional albedo per model, from the shared shading functions.
+#include "app/albedo_plot.h"
+
+#include "app/specular_lobe.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace shadelab::app {
+namespace {
+
+AlbedoShade modelShade(int model, shading::vec3 md, shading::vec3 ms, float s, bool diffuse, bool specular) {
+    return [=](const shading::vec3& L, const shading::vec3& V) {
+        const shading::vec3 I = shading::shadeLight(shading::vec3(0.0f, 0.0f, 1.0f), L, V, shading::vec3(1.0f), md, ms,
+                                                    s, model, diffuse, specular);
+        return (I.x + I.y + I.z) / 3.0f;
+    };
+}
+
+}  // namespace
+
+void addAlbedoCurve(AlbedoPlot& plot, const std::string& label, const AlbedoShade& shade, bool dashed) {
+    AlbedoCurve c;
+    c.label = label;
+    c.dashed = dashed;
+    for (float degrees : plot.viewAngles)
+        c.albedo.push_back(shading::directionalAlbedo(
+            shade, float(std::cos(double(degrees) * 3.14159265358979 / 180.0)), plot.settings.quadrature));
+    plot.curves.push_back(std::move(c));
+}
+
+AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& in) {
+    using namespace shading;
+    AlbedoPlot plot;
+    plot.settings = in;
+    plot.settings.angles = std::max(in.angles, 2);
+    plot.settings.phongExponent = std::max(in.phongExponent, 0.0f);
+    plot.settings.roughness = std::clamp(in.roughness, 0.0f, 1.0f);
+    for (int i = 0; i < plot.settings.angles; ++i)
+        plot.viewAngles.push_back(88.0f * float(i) / float(plot.settings.angles - 1));
+    const float s = plot.settings.phongExponent, sb = equivalentBlinnExponent(s), r = plot.settings.roughness;
+    const vec3 zero(0.0f), one(1.0f);
+    char label[96];
+    addAlbedoCurve(plot, "Lambert, white", modelShade(SL_MODEL_PHONG, one, zero, 1.0f, true, false));
+    std::snprintf(label, sizeof label, "Phong  s = %.0f", double(s));
+    addAlbedoCurve(plot, label, modelShade(SL_MODEL_PHONG, zero, one, s, false, true));
+    std::snprintf(label, sizeof label, "Phong  normalised");
+    addAlbedoCurve(plot, label, modelShade(SL_MODEL_PHONG, zero, vec3(phongNormalization(s)), s, false, true), true);
+    std::snprintf(label, sizeof label, "Blinn-Phong  s' = %.0f", double(sb));
+    addAlbedoCurve(plot, label, modelShade(SL_MODEL_BLINN_PHONG, zero, one, sb, false, true));
+    std::snprintf(label, sizeof label, "Blinn-Phong  normalised");
+    addAlbedoCurve(plot, label,
+                   modelShade(SL_MODEL_BLINN_PHONG, zero, vec3(blinnPhongNormalization(sb)), sb, false, true), true);
+    std::snprintf(label, sizeof label, "GGX  roughness %.2f", double(r));
+    addAlbedoCurve(plot, label, modelShade(SL_MODEL_PBR, zero, one, r, false, true));
+    // Issue 12's compensated GGX curve goes here once lighting.glsl has energy compensation:
+    // addAlbedoCurve(plot, "GGX, compensated", <a shade calling the compensated BRDF>, true);
+    return plot;
+}
+
+}  // namespace shadelab::app
