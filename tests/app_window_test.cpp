@@ -444,6 +444,7 @@ TEST(AppWindow, StillFrameAccumulatesToTheSupersampledRender) {
     EXPECT_FALSE(sameBytes(smooth, ss1));
     const CompareResult aliased = compareImages(readPng(smooth), readPng(ss1));
     EXPECT_FALSE(aliased.pass) << "the 1-spp render should fail the gates against the smooth frame";
+}
 
 TEST(AppWindow, WhiteFurnaceRoundTripRestoresTheScreenshotByteForByte) {
     // Issue 12: the furnace button's action (whiteFurnace) and back. The furnace frame is the headless render of
