@@ -399,12 +399,12 @@ void Viewer::drawCaptions() {
         return extent.y + 2.0f * pad;
     };
     const std::string caption = imageCaption(state_);
-    // Right of the column where lights outside the frame put their markers (light_markers.h).
-    const float left = visibleLeft() + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * uiScale_ : 0.0f);
-    const float height = label(ImVec2(left, imageY_ + margin), caption.c_str(), false);
+    // Below the row where lights outside the frame put their markers (light_markers.h).
+    const float top = imageY_ + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * imageH_ / float(renderH_) : 0.0f);
+    const float height = label(ImVec2(visibleLeft() + margin, top), caption.c_str(), false);
     if (state_.mode == ViewMode::Split) {
         const float wipe = imageX_ + state_.splitPosition * imageW_;
-        const float y = imageY_ + margin + height + 6.0f * uiScale_;
+        const float y = top + height + 6.0f * uiScale_;
         label(ImVec2(wipe - 6.0f * uiScale_, y), splitLeftCaption(), true);
         label(ImVec2(wipe + 6.0f * uiScale_, y), splitRightCaption(), false);
     }
