@@ -3,6 +3,7 @@
 // never writes scene JSON over a glTF model or another kind of file, and the captions on the image.
 #include "app/captions.h"
 #include "app/light_markers.h"
+#include "app/probe_diagram.h"
 #include "app/save_policy.h"
 #include "app/undo_history.h"
 #include "app/viewer_state.h"
@@ -188,4 +189,36 @@ TEST(AppLightMarkers, DirectionalLightPointsFromItsMarkerToTheSceneCentre) {
     s.scene.lights = {turned};
     const LightMarker after = lightMarkers(s.scene, w, h)[0];
     EXPECT_NEAR(after.pixel.x, m.pixel.x - 50.0f, 0.5f) << "the marker follows the pointer";
+}
+
+TEST(AppProbeDiagram, EveryVectorIsDrawnFullLengthAtItsAngleFromN) {
+    ProbeResult p;
+    p.hit = true;
+    p.N = glm::vec3(0, 1, 0);
+    p.V = glm::vec3(0, 1, 0);  // looking straight down the normal: V is a dot in the 3D overlay
+    ProbeLight l;
+    l.L = glm::normalize(glm::vec3(-1, 1, 0));
+    l.R = glm::normalize(glm::vec3(1, 1, 0));
+    l.H = glm::normalize(l.L + p.V);
+    l.NoL = glm::dot(p.N, l.L);
+    p.lights = {l};
+    const ProbeDiagram d = probeDiagram(p, 0);
+    ASSERT_EQ(d.arrows.size(), 5u);
+    const float px = 62.0f;  // the probe window's radius at UI scale 1
+    for (const DiagramArrow& a : d.arrows) {
+        EXPECT_NEAR(glm::length(a.dir), 1.0f, 1e-5f) << a.name;
+        EXPECT_GE(glm::length(a.dir) * px, 20.0f) << a.name << " must not collapse to a dot";
+    }
+    EXPECT_EQ(d.arrows[0].name, "N");
+    EXPECT_NEAR(d.arrows[1].angleDeg, 45.0f, 1e-3f);  // L
+    EXPECT_LT(d.arrows[1].dir.x, 0.0f) << "L on the left";
+    EXPECT_GT(d.arrows[2].dir.x, 0.0f) << "R on the right";
+    EXPECT_NEAR(d.arrows[4].angleDeg, 0.0f, 1e-3f);  // V along N
+    EXPECT_TRUE(d.lit);
+    // V out of the plane of incidence is reported, not lost.
+    p.V = glm::normalize(glm::vec3(0, 1, 1));
+    EXPECT_NEAR(probeDiagram(p, 0).vOutOfPlaneDeg, 45.0f, 1e-3f);
+    // Negative control: no hit, no figure.
+    p.hit = false;
+    EXPECT_TRUE(probeDiagram(p, 0).arrows.empty());
 }

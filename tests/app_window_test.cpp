@@ -477,3 +477,39 @@ TEST(AppWindow, WhiteFurnaceRoundTripRestoresTheScreenshotByteForByte) {
     EXPECT_FALSE(sameBytes(before, furnace));
     EXPECT_FALSE(sameBytes(after, furnace));
 }
+
+TEST(AppWindow, ProbeStaysOnTheClickedPointWhileTheCameraOrbits) {
+    // Issue 15: orbiting moved the probe to whatever the pixel showed next. Now a click anchors it to the
+    // surface point it hit; the report after an orbit names the same object and point, at a new pixel.
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const Scene scene = loadScene(scenePath);
+    const Sphere& red = scene.spheres[0];
+    const glm::ivec2 px = pixelOf(scene, red.center + glm::vec3(0.2f, 0.3f, red.radius * 0.8f));
+    const std::string before = test::outputPath("anchor_before.json"), after = test::outputPath("anchor_after.json");
+    const std::string fresh = test::outputPath("anchor_fresh.json");
+    const std::string at = R"("x": )" + std::to_string(px.x) + R"(, "y": )" + std::to_string(px.y);
+    const std::string script = writeText("anchor_script.json", R"([
+        {"frame": 2, "action": "probe", )" + at + R"(},
+        {"action": "probeReport", "path": ")" + before + R"("},
+        {"frame": 3, "action": "orbit", "yaw": 20, "pitch": 8},
+        {"frame": 4, "action": "probeReport", "path": ")" + after + R"("},
+        {"action": "probe", )" + at + R"(},
+        {"action": "probeReport", "path": ")" + fresh + R"("}])");
+    Result v = view(scenePath + " --size " + kSize + " --frames 6 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    const nlohmann::json a = nlohmann::json::parse(readFile(before)), b = nlohmann::json::parse(readFile(after));
+    const nlohmann::json c = nlohmann::json::parse(readFile(fresh));
+    ASSERT_TRUE(a["hit"].get<bool>() && b["hit"].get<bool>()) << a.dump() << "\n" << b.dump();
+    EXPECT_EQ(a["object"]["id"], b["object"]["id"]);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(a["P"][i].get<double>(), b["P"][i].get<double>(), 1e-3) << i;
+        EXPECT_NEAR(a["N"][i].get<double>(), b["N"][i].get<double>(), 1e-3) << "the same point, the same normal";
+    }
+    EXPECT_NE(a["V"], b["V"]) << "the eye moved, so V did";
+    EXPECT_NE(a["pixel"], b["pixel"]) << "the point now projects elsewhere";
+    // Negative control: a new click on the old pixel after the orbit probes another point.
+    double moved = 0.0;
+    for (int i = 0; i < 3; ++i) moved += std::fabs(c["P"][i].get<double>() - a["P"][i].get<double>());
+    EXPECT_GT(moved, 0.05) << c.dump();
+}

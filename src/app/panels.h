@@ -39,6 +39,7 @@ struct UiFields {
     bool smooth = true;              // accumulate a supersampled still frame in Raster mode (accumulation.h)        // a marker per light in the image, draggable            // the model, terms and mode written on the image (key C)
     bool convertAllObjects = false;  // the equivalent-exponent buttons act on every object
     bool lessonFolded = false;       // the lesson window was folded for the probe
+    bool probeWindowMoved = false;   // the user dragged the probe window: it stays put until the probe goes
     float probeWindowWidth = 0.0f;   // window units, as last drawn (for placing it inside the image)
     float lobeIncidence = 30.0f;     // degrees: the lobe plots' angle of incidence when no probe is set
     float lobeAxis = 90.0f;          // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)

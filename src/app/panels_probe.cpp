@@ -3,10 +3,14 @@
 // for Phong, Blinn-Phong and pbr side by side, the shown one marked. The arrows are arrow_overlay.cpp.
 #include "app/panels.h"
 
+#include "app/arrow_overlay.h"
+#include "app/probe_diagram.h"
 #include "image/encode.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // MovingWindow: whether the user is dragging the probe window
 
+#include <cstdio>
 #include <string>
 
 namespace shadelab::app {
@@ -138,18 +142,61 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
     ImGui::EndTable();
 }
 
+// The display colour the 3D overlay gives a vector (arrow_overlay.h), by its letter.
+glm::vec3 arrowColor(const ProbeResult& p, const std::string& name) {
+    for (const Arrow& a : probeArrows(p))
+        if (!a.label.empty() && a.label[0] == name[0]) return a.color;
+    return glm::vec3(1.0f);
+}
+
+// The plane-of-incidence figure (probe_diagram.h): N up, L left, R right, V and H where they fall, each at
+// its true angle from N and full length, with the angles written at the tips.
+void diagram(const ProbeResult& p, float uiScale) {
+    const ProbeDiagram d = probeDiagram(p, 0);
+    if (d.arrows.empty()) return;
+    const float radius = 62.0f * uiScale, pad = 18.0f * uiScale;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ImVec2 base(origin.x + radius + pad + 30.0f * uiScale, origin.y + radius + pad);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddLine(ImVec2(base.x - radius - pad, base.y), ImVec2(base.x + radius + pad, base.y), IM_COL32(150, 150, 150, 255),
+                2.0f * uiScale);  // the surface
+    dl->AddCircle(base, radius, IM_COL32(90, 90, 90, 160), 48, 1.0f);
+    for (const DiagramArrow& a : d.arrows) {
+        const glm::vec3 c = arrowColor(p, a.name);
+        const ImU32 col = ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
+        const ImVec2 tip(base.x + a.dir.x * radius, base.y - a.dir.y * radius);
+        dl->AddLine(base, tip, col, 2.5f * uiScale);
+        dl->AddCircleFilled(tip, 3.5f * uiScale, col);
+        char text[32];
+        if (a.name == "N")
+            std::snprintf(text, sizeof text, "N");
+        else
+            std::snprintf(text, sizeof text, "%s %.0f\xc2\xb0", a.name.c_str(), a.angleDeg);
+        const ImVec2 at(tip.x + a.dir.x * 8.0f * uiScale - (a.dir.x < 0.0f ? 40.0f * uiScale : 0.0f),
+                        tip.y - a.dir.y * 8.0f * uiScale - 7.0f * uiScale);
+        dl->AddText(at, col, text);
+    }
+    ImGui::Dummy(ImVec2(2.0f * (radius + pad) + 60.0f * uiScale, radius + pad + 6.0f * uiScale));
+    ImGui::TextDisabled("angles from N; V is %.0f\xc2\xb0 out of the plane of N and L%s", d.vOutOfPlaneDeg,
+                        d.lit ? "" : "; L is below the surface (unlit)");
+}
+
 }  // namespace
 
 void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
     const ProbeResult& p = *ctx.probe;
-    ImGui::SetNextWindowPos(ImVec2(x, top), ImGuiCond_Always, ImVec2(probeOnRight ? 1.0f : 0.0f, 0.0f));
+    // Beside the point, following it as the camera moves, until the user drags the window by its title bar
+    // (then it stays where it was put, until the probe is cleared); the title bar's arrow folds it.
+    if (!ctx.fields.probeWindowMoved)
+        ImGui::SetNextWindowPos(ImVec2(x, top), ImGuiCond_Always, ImVec2(probeOnRight ? 1.0f : 0.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.8f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
+    const ImGuiWindowFlags flags =
+        ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
     if (!ImGui::Begin("Probe###probe", nullptr, flags)) {
         ImGui::End();
         return;
     }
+    if (ImGui::GetCurrentContext()->MovingWindow == ImGui::GetCurrentWindow()) ctx.fields.probeWindowMoved = true;
     ImGuiIO& io = ImGui::GetIO();
     if (io.Fonts->Fonts.Size > 1) ImGui::PushFont(io.Fonts->Fonts[1]);
     ImGui::Text("pixel (%d, %d): %s", p.x, p.y, p.hit ? p.label.c_str() : "background");
@@ -164,6 +211,10 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
                         p.pbrDiffuseColor.b, p.pbrF0.r, p.pbrF0.g, p.pbrF0.b);
         else
             ImGui::Text("s %.1f   ms %.2f %.2f %.2f", p.material.s, p.material.ms.r, p.material.ms.g, p.material.ms.b);
+        if (ImGui::TreeNodeEx("plane of incidence", ImGuiTreeNodeFlags_DefaultOpen, "plane of incidence (light 1)")) {
+            diagram(p, ctx.uiScale);
+            ImGui::TreePop();
+        }
         const bool shadows = ctx.state.scene.terms.shadows;
         if (!p.lights.empty()) lightTable(p, shadows, pbr);
         totalsTable(p, ctx.state.scene.model, ctx.state.encoding);

@@ -1,28 +1,25 @@
-// probePixel: the tracer's primary ray, nearest hit and surface, then every lighting term at that point.
+// probePixel and probeAnchor: the tracer's ray, nearest hit and surface, then every lighting term there.
 #include "app/probe.h"
 
 #include "scene/coverage.h"
+#include "scene/ray_epsilon.h"
 #include "scene/view.h"
 #include "shading/local_illumination.h"
 #include "trace/integrator.h"
 #include "trace/tile_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <optional>
 
 namespace shadelab::app {
 
-ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, int x, int y) {
+namespace {
+
+// Every quantity at the nearest hit of `ray`, which comes from the eye (V = −ray.dir).
+ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, ProbeResult r) {
     const Scene& scene = traced.scene();
-    ProbeResult r;
-    r.x = x;
-    r.y = y;
-    r.width = width;
-    r.height = height;
-    if (width <= 0 || height <= 0) return r;
-    // The tracer's own primary ray, nearest hit and surface: the probe explains the reference's pixel.
-    const trace::Ray ray = trace::sampleRay(makeViewSetup(scene, width, height), 1, x, y, 0, 0);
     const std::optional<trace::Hit> hit = traced.intersect(ray);
     if (!hit) return r;
     const trace::WhittedIntegrator integrator(traced, scene.maxDepth);
@@ -101,6 +98,50 @@ ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, i
                                        shading::SL_MODEL_BLINN_PHONG, flags);
     r.totalPbr = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsPbr, scene.ambient, pbr, flags);
     return r;
+}
+
+}  // namespace
+
+ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, int x, int y) {
+    ProbeResult r;
+    r.x = x;
+    r.y = y;
+    r.width = width;
+    r.height = height;
+    if (width <= 0 || height <= 0) return r;
+    // The tracer's own primary ray, nearest hit and surface: the probe explains the reference's pixel.
+    return probeRay(traced, trace::sampleRay(makeViewSetup(traced.scene(), width, height), 1, x, y, 0, 0), r);
+}
+
+ProbeResult probeAnchor(const trace::TraceScene& traced, int width, int height, const ProbeAnchor& anchor) {
+    const Scene& scene = traced.scene();
+    ProbeResult r;
+    r.width = width;
+    r.height = height;
+    if (width <= 0 || height <= 0 || anchor.objectId == 0 || anchor.objectId > objectCount(scene)) return r;
+    const ViewSetup view = makeViewSetup(scene, width, height);
+    const glm::vec3 toPoint = anchor.point - view.eye;
+    const float distance = glm::length(toPoint);
+    if (!(distance > 0.0f)) return r;
+    // The pixel the point falls in now, for the window and the overlay (it may be outside the image).
+    const glm::vec4 clip = view.viewProj * glm::vec4(anchor.point, 1.0f);
+    if (clip.w > 0.0f) {
+        r.x = int(std::floor((clip.x / clip.w * 0.5f + 0.5f) * float(width)));
+        r.y = int(std::floor((1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(height)));
+    }
+    // A ray from the eye's direction that starts just short of the point: it reaches the anchored surface
+    // whatever now stands in front of it. V is still the direction to the eye.
+    const float eps = secondaryRayEpsilon(scene, view.eye);
+    trace::Ray ray;
+    ray.dir = toPoint / distance;
+    ray.origin = anchor.point - ray.dir * std::min(64.0f * eps, 0.5f * distance);
+    ProbeResult hit = probeRay(traced, ray, r);
+    if (!hit.hit || hit.objectId != anchor.objectId || glm::length(hit.P - anchor.point) > 256.0f * eps) {
+        r.hit = false;  // the object has changed under the anchor (an undo, another file): no probe
+        return r;
+    }
+    hit.t = distance;  // from the eye, as a pixel probe reports it
+    return hit;
 }
 
 }  // namespace shadelab::app

@@ -59,6 +59,11 @@ struct ProbeResult {
 // with shading::shadeLight / shadeLocal, for Phong, Blinn-Phong and pbr side by side.
 ProbeResult probePixel(const trace::TraceScene& scene, int width, int height, int x, int y);
 
+// The probe at an anchored point seen from the scene's current camera: a ray from the eye's direction
+// that starts just short of the point, so the point is probed even when something now hides it. `x`, `y`
+// are the pixel it projects to. No hit when the object there is not the anchored one any more.
+ProbeResult probeAnchor(const trace::TraceScene& scene, int width, int height, const ProbeAnchor& anchor);
+
 // The JSON written by the script's "probeReport" action and --probe-report (docs/viewer.md).
 std::string probeReportJson(const ProbeResult& probe, const Scene& scene, uint32_t coverageId);
 

@@ -118,6 +118,7 @@ bool Viewer::frame() {
     const float left = visibleLeft(), visibleW = imageX_ + imageW_ - left;
     drawLessonWindow(ctx, left + margin, imageY_ + imageH_ - margin,
                      std::min(visibleW - 2.0f * margin, 760.0f * uiScale_), ctx.probe != nullptr);
+    if (!ctx.probe) fields_.probeWindowMoved = false;
     if (ctx.probe) {
         // Beside the probed point, on the side with more room, clear of its arrows.
         const float px = imageX_ + (float(state_.probe.x) + 0.5f) / float(renderW_) * imageW_;
@@ -254,17 +255,32 @@ void Viewer::updateReference() {
     reference_->update();
 }
 
+// A click probes its pixel and anchors the probe to the surface point it found; from then on the probe
+// follows that point as the camera moves or the scene is edited (probe.h probeAnchor), and its pixel is
+// where the point projects.
 void Viewer::updateProbe() {
     if (!state_.probe.active) {
         probe_.reset();
         return;
     }
-    const ProbeState& p = state_.probe;
+    ProbeState& p = state_.probe;
     if (probe_ && probeRevision_ == state_.revision && probeX_ == p.x && probeY_ == p.y && probeW_ == renderW_ &&
         probeH_ == renderH_)
         return;
-    probe_ =
-        probePixel(trace::TraceScene(state_.scene, reference_->meshBvh(state_.scene)), renderW_, renderH_, p.x, p.y);
+    const trace::TraceScene traced(state_.scene, reference_->meshBvh(state_.scene));
+    if (p.anchor.objectId == 0) {
+        probe_ = probePixel(traced, renderW_, renderH_, p.x, p.y);
+        if (probe_->hit) p.anchor = ProbeAnchor{probe_->objectId, probe_->P};
+    } else {
+        probe_ = probeAnchor(traced, renderW_, renderH_, p.anchor);
+        if (!probe_->hit) {  // the anchored object is gone (undo, another file): let go of the probe
+            clearProbe(state_);
+            probe_.reset();
+            return;
+        }
+        p.x = probe_->x;
+        p.y = probe_->y;
+    }
     probeRevision_ = state_.revision;
     probeX_ = p.x, probeY_ = p.y, probeW_ = renderW_, probeH_ = renderH_;
 }

@@ -315,6 +315,7 @@ void setProbe(ViewerState& state, int x, int y) {
     state.probe.active = true;
     state.probe.x = x;
     state.probe.y = y;
+    state.probe.anchor = ProbeAnchor{};  // anchored again by the first probe at this pixel
 }
 
 void clearProbe(ViewerState& state) { state.probe.active = false; }

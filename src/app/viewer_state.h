@@ -11,6 +11,7 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 
@@ -18,9 +19,17 @@ namespace shadelab::app {
 
 enum class ObjectKind { None, Sphere, Plane, Mesh };
 
+// The surface point a click probed, so the probe stays on it while the camera moves (issue 15).
+struct ProbeAnchor {
+    uint32_t objectId = 0;  // coverage id of the object clicked; 0 = not anchored yet
+    glm::vec3 point{0.0f};  // the hit point, world units (objects do not move in the viewer)
+};
+
 struct ProbeState {
     bool active = false;
-    int x = 0, y = 0;  // pixel of the rendered image, row 0 at the top
+    int x = 0, y = 0;    // pixel of the rendered image, row 0 at the top: where it was set, then where the
+                         // anchored point projects
+    ProbeAnchor anchor;  // set from the first probe at the pixel; the probe then follows the point
 };
 
 struct ViewerState {
