@@ -2,6 +2,7 @@
 // camera moves are not steps and stay where they are, undoing an Open brings the other file back), Save
 // never writes scene JSON over a glTF model or another kind of file, and the captions on the image.
 #include "app/captions.h"
+#include "app/file_list.h"
 #include "app/light_markers.h"
 #include "app/probe_diagram.h"
 #include "app/save_policy.h"
@@ -221,4 +222,22 @@ TEST(AppProbeDiagram, EveryVectorIsDrawnFullLengthAtItsAngleFromN) {
     // Negative control: no hit, no figure.
     p.hit = false;
     EXPECT_TRUE(probeDiagram(p, 0).arrows.empty());
+}
+
+TEST(AppFileList, ListsFoldersThenScenesAndRemembersRecentFiles) {
+    const std::string dir = test::outputPath("file_list");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir + "/sub");
+    std::filesystem::create_directories(dir + "/.hidden");
+    for (const char* f : {"b.json", "a.GLB", "model.gltf", "notes.txt", "shot.png"}) std::ofstream(dir + "/" + f) << "x";
+    const FileList list = listSceneFolder(dir);
+    EXPECT_TRUE(list.error.empty()) << list.error;
+    std::vector<std::string> names;
+    for (const FileEntry& e : list.entries) names.push_back(e.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"../", "sub/", "a.GLB", "b.json", "model.gltf"}));
+    EXPECT_FALSE(listSceneFolder(dir + "/missing").error.empty()) << "negative control: an unreadable folder says why";
+
+    std::vector<std::string> recent;
+    for (const char* p : {"a", "b", "a", "c"}) rememberRecent(recent, p, 2);
+    EXPECT_EQ(recent, (std::vector<std::string>{"c", "a"}));
 }

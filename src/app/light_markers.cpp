@@ -53,6 +53,15 @@ std::vector<LightMarker> lightMarkers(const Scene& scene, int width, int height)
         m.light = int(i);
         m.anchor = anchorOf(light, sphere);
         m.visible = project(v, m.anchor, m.pixel);
+        if (!m.visible) {
+            // Behind the camera (a model's key light often is): point from the image's centre toward it, so
+            // its marker waits at the edge on that side.
+            const glm::vec3 d = m.anchor - v.eye;
+            glm::vec2 dir(glm::dot(d, v.right), -glm::dot(d, v.up));
+            if (glm::length(dir) < 1e-6f) dir = glm::vec2(0.0f, -1.0f);
+            m.pixel = glm::vec2(float(width), float(height)) * 0.5f + glm::normalize(dir) * float(width + height);
+            m.visible = true;
+        }
         m.arrowTip = m.pixel;
         if (light.type == LightType::Directional) {
             glm::vec2 tip;

@@ -19,7 +19,7 @@ namespace shadelab::app {
 
 struct LightMarker {
     int light = 0;            // index into scene.lights
-    bool visible = false;     // in front of the camera
+    bool visible = false;     // drawn: always, a light behind the camera at the edge toward it
     glm::vec3 anchor{0.0f};   // world point the marker stands for
     glm::vec2 pixel{0.0f};    // image pixels (x right, y down, pixel centres at .5)
     glm::vec2 arrowTip{0.0f}; // directional lights: where the arrow points (image pixels)

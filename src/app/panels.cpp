@@ -34,6 +34,20 @@ void drawSidePanel(PanelContext& ctx, float width, float height, bool overlay) {
         if (ImGui::IsWindowHovered()) ImGui::SetTooltip("%s", ctx.status.c_str());
     }
     ImGui::EndChild();
+    // What the file asked for that shadelab does not draw (textures, extensions): said where it is seen.
+    if (!ctx.state.loadWarnings.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.35f, 1.0f));
+        const bool open = ImGui::TreeNodeEx("##filenotes", ImGuiTreeNodeFlags_DefaultOpen,
+                                            "this file uses %zu thing(s) shadelab ignores",
+                                            ctx.state.loadWarnings.size());
+        if (open) {
+            const std::string prefix = ctx.state.scenePath + ": ";
+            for (const std::string& w : ctx.state.loadWarnings)
+                ImGui::TextWrapped("%s", w.rfind(prefix, 0) == 0 ? w.c_str() + prefix.size() : w.c_str());
+            ImGui::TreePop();
+        }
+        ImGui::PopStyleColor();
+    }
     ImGui::Separator();
     if (ImGui::CollapsingHeader("Lighting model", ImGuiTreeNodeFlags_DefaultOpen)) drawLightingSection(ctx);
     if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) drawMaterialSection(ctx);
@@ -69,9 +83,11 @@ void drawHelpSection() {
         for (const auto& r : rows) {
             ImGui::TableNextRow();
             ImGui::TableSetColumnIndex(0);
-            ImGui::TextUnformatted(r[0]);
+            ImGui::TextWrapped("%s", r[0]);
             ImGui::TableSetColumnIndex(1);
-            ImGui::TextDisabled("%s", r[1]);
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+            ImGui::TextWrapped("%s", r[1]);
+            ImGui::PopStyleColor();
         }
         ImGui::EndTable();
     }

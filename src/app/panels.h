@@ -5,6 +5,7 @@
 #pragma once
 
 #include "app/albedo_plot.h"
+#include "app/file_list.h"
 #include "app/probe.h"
 #include "app/viewer_state.h"
 #include "image/compare.h"
@@ -31,7 +32,9 @@ public:
 struct UiFields {
     std::string openPath;
     std::string savePath;
-    std::string confirmReplace;  // an existing file Save waits to replace until the user confirms
+    std::string confirmReplace;
+    FileList files;                   // the file list's folder, as last read
+    std::vector<std::string> recent;  // scenes opened in this session, newest first  // an existing file Save waits to replace until the user confirms
     std::string screenshotPath = "shadelab-view.png";
     std::vector<ColorIntensity> lightSplits;  // per light: the colour and intensity as last edited
     bool captions = true;

@@ -2,6 +2,7 @@
 // the scene file's title and notes over the image.
 #include "app/panels.h"
 #include "app/save_policy.h"
+#include "scene/stage.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -15,6 +16,43 @@ std::string defaultSavePath(const std::string& scenePath) {
     return (p.parent_path() / (p.stem().string() + "-saved.json")).string();
 }
 
+// Recent scenes and the scenes and folders of one folder (file_list.h), one click to open.
+void drawFileList(PanelContext& ctx) {
+    UiFields& f = ctx.fields;
+    if (!f.recent.empty() && ImGui::TreeNode("recent")) {
+        for (const std::string& path : f.recent)
+            if (ImGui::Selectable(path.c_str())) {
+                ctx.services.openScene(path);
+                break;
+            }
+        ImGui::TreePop();
+    }
+    if (!ImGui::TreeNode("files")) return;
+    if (f.files.folder.empty()) {
+        const std::filesystem::path scene(ctx.state.scenePath);
+        f.files = listSceneFolder(ctx.state.scenePath.empty() ? "." : scene.parent_path().string());
+    }
+    ImGui::TextDisabled("%s", f.files.folder.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("refresh")) f.files = listSceneFolder(f.files.folder);
+    if (!f.files.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", f.files.error.c_str());
+    ImGui::BeginChild("##files", ImVec2(0.0f, 8.0f * ImGui::GetTextLineHeightWithSpacing()), true);
+    std::string next;
+    for (const FileEntry& e : f.files.entries) {
+        if (e.folder) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 0.8f, 1.0f, 1.0f));
+        if (ImGui::Selectable(e.name.c_str(), e.path == ctx.state.scenePath)) next = e.path;
+        if (e.folder) ImGui::PopStyleColor();
+        if (!next.empty()) {
+            if (e.folder) f.files = listSceneFolder(next);
+            else ctx.services.openScene(next);
+            break;
+        }
+    }
+    if (f.files.truncated) ImGui::TextDisabled("(the first %zu entries)", kMaxFileListEntries);
+    ImGui::EndChild();
+    ImGui::TreePop();
+}
+
 void drawSceneSection(PanelContext& ctx) {
     ViewerState& s = ctx.state;
     ImGui::TextDisabled("%s", s.scenePath.empty() ? "(no file)" : s.scenePath.c_str());
@@ -22,6 +60,7 @@ void drawSceneSection(PanelContext& ctx) {
     ImGui::SameLine();
     if (ImGui::Button("Open")) ctx.services.openScene(ctx.fields.openPath);
     ImGui::TextDisabled(".json, .gltf or .glb; or drop a file on the window");
+    drawFileList(ctx);
     ImGui::InputText("##save", &ctx.fields.savePath);
     ImGui::SameLine();
     if (ImGui::Button("Save JSON")) {
@@ -45,6 +84,8 @@ void drawSceneSection(PanelContext& ctx) {
         if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGuiKey_Escape)) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
+    bool stage = hasStage(s.scene);
+    if (ImGui::Checkbox("stage: floor, soft background, shadows", &stage)) setStageOn(s, stage);
     ImGui::InputText("##shot", &ctx.fields.screenshotPath);
     ImGui::SameLine();
     if (ImGui::Button("Screenshot")) ctx.services.screenshot(ctx.fields.screenshotPath);

@@ -94,7 +94,9 @@ void drawViewSection(PanelContext& ctx) {
     std::snprintf(overlay, sizeof overlay, "%s %.0f%%  %.1f s", ref.complete ? "done" : "tracing", 100.0 * ref.progress,
                   ref.seconds);
     ImGui::ProgressBar(ref.progress, ImVec2(-1.0f, 0.0f), overlay);
-    ImGui::TextDisabled("CPU reference, %d thread(s) at low priority; restarts on every change", ref.threads);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("CPU reference, %d thread(s) at low priority; restarts on every change", ref.threads);
+    ImGui::PopStyleColor();
     if (s.mode == ViewMode::Difference) {
         if (ctx.metrics) {
             ImGui::TextWrapped("%s", ctx.metricsWords.c_str());

@@ -13,6 +13,7 @@
 #include "util/error_line.h"
 #include "util/input_error.h"
 #include "util/messages.h"
+#include "util/warning_capture.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -198,8 +199,11 @@ void Viewer::updateMetrics() {
 
 void Viewer::openScene(const std::string& path) {
     try {
-        Scene scene = loadScene(path, printWarning);
+        WarningCapture warnings;
+        Scene scene = loadScene(path, WarningCapture::warn);
         app::openScene(state_, std::move(scene), path);
+        state_.loadWarnings = warnings.lines();
+        rememberRecent(fields_.recent, path);
         fields_.openPath = path;
         fields_.savePath = defaultSavePath(path);
         metrics_.reset();

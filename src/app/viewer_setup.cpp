@@ -57,6 +57,7 @@ Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Sc
     : options_(options), state_(std::move(state)), script_(std::move(script)) {
     if (script_) cursor_.emplace(*script_);
     history_.reset(state_);
+    if (!state_.scenePath.empty()) rememberRecent(fields_.recent, state_.scenePath);
     fields_.openPath = state_.scenePath;
     fields_.savePath = defaultSavePath(state_.scenePath);
     try {

@@ -4,9 +4,12 @@
 #include "app/specular_lobe.h"
 #include "scene/coverage.h"
 #include "scene/scene_load.h"
+#include "scene/stage.h"
 #include "scene/white_furnace.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -44,6 +47,10 @@ ViewerState makeViewerState(Scene scene, std::string path) {
 }
 
 void openScene(ViewerState& state, Scene scene, std::string path) {
+    // A bare model opens on the stage (scene/stage.h): a floor, a soft background and shadows.
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".gltf" || ext == ".glb") setStage(scene, true);
     state.scene = std::move(scene);
     state.scenePath = std::move(path);
     // R returns to the file's camera: a scene file's own, or a bare model's first glTF camera.
@@ -280,6 +287,12 @@ void applyOrbit(ViewerState& state, const OrbitCamera& orbit) {
     state.orbit = orbit;
     state.scene.camera = cameraFromOrbit(orbit);
     markCameraChanged(state);
+}
+
+void setStageOn(ViewerState& state, bool on) {
+    if (on == hasStage(state.scene)) return;
+    setStage(state.scene, on);
+    markChanged(state);
 }
 
 void useCamera(ViewerState& state, const Camera& camera) {

@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab::app {
 
@@ -35,6 +36,7 @@ struct ProbeState {
 struct ViewerState {
     Scene scene;            // what both renderers draw and what Save writes
     std::string scenePath;  // the file it was opened from; empty for none
+    std::vector<std::string> loadWarnings;  // what loading it warned about (ignored features), for the panel
     Camera fileCamera;      // the scene file's camera, restored by resetCamera (key R)
     OrbitCamera orbit;      // scene.camera as orbit parameters; written back on every move
     ViewMode mode = ViewMode::Raster;
@@ -126,7 +128,9 @@ inline glm::vec3 joinIntensity(const ColorIntensity& c) { return c.color * c.int
 void applyOrbit(ViewerState& state, const OrbitCamera& orbit);  // writes scene.camera
 void frameAll(ViewerState& state);                              // key F
 void resetCamera(ViewerState& state);                           // key R: the scene file's camera
-void useCamera(ViewerState& state, const Camera& camera);         // e.g. one of a model's glTF cameras
+void useCamera(ViewerState& state, const Camera& camera);
+// The stage under a model (scene/stage.h); a bare .gltf/.glb opens with it on.
+void setStageOn(ViewerState& state, bool on);         // e.g. one of a model's glTF cameras
 
 // --- view ---
 void setMode(ViewerState& state, ViewMode mode);

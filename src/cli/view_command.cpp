@@ -9,6 +9,7 @@
 #include "scene/scene_load.h"
 #include "util/input_error.h"
 #include "util/messages.h"
+#include "util/warning_capture.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -103,10 +104,12 @@ int viewCommand(int argc, char** argv) {
 
     const std::string path = args.positionals().empty() ? defaultScenePath() : args.positionals()[0];
     Scene scene;
-    if (!path.empty()) scene = loadScene(path, printWarning);
+    WarningCapture warnings;  // shown in the viewer's panel too
+    if (!path.empty()) scene = loadScene(path, WarningCapture::warn);
     raster.applyTo(scene.raster);
     if (camera) scene.camera = chooseCamera(scene, *camera, path);
     app::ViewerState state = app::makeViewerState(std::move(scene), path);
+    state.loadWarnings = warnings.lines();
     app::setEncoding(state, encoding);
     return app::runViewer(options, std::move(state), std::move(script));
 }
