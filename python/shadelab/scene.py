@@ -26,9 +26,9 @@ class ShadelabWarning(UserWarning):
     """A scene reader's warning (an unknown field in a dict, something skipped in a glTF file)."""
 
 
-def _warn(lines):
+def _warn(lines, stacklevel):
     for line in lines:
-        warnings.warn(line, ShadelabWarning, stacklevel=3)
+        warnings.warn(line, ShadelabWarning, stacklevel=stacklevel + 1)
 
 
 def _plain(value):
@@ -189,7 +189,7 @@ class Scene:
         scene = object.__new__(cls)
         object.__setattr__(scene, "_handle", handle)
         object.__setattr__(scene, "_doc", None)
-        _warn(lines)
+        _warn(lines, stacklevel=3)  # the caller of load() or from_dict()
         return scene
 
     @classmethod
@@ -261,7 +261,7 @@ class Scene:
             unknown = next(line for line in lines if "unknown field '" in line)
             raise AttributeError(unknown.replace(" (ignored)", ""))
         object.__setattr__(self, "_doc", None)
-        _warn(lines)
+        _warn(lines, stacklevel=4)  # the statement that made the edit
 
     def _edit(self, path, change):
         """Applies change(node) to a copy of the node at `path` of the document, then re-reads the scene."""
@@ -281,6 +281,7 @@ class Scene:
     def _scene(self):
         return self
 
+    _value = _Node._value
     __getattr__ = _Node.__getattr__
     __getitem__ = _Node.__getattr__
     __contains__ = _Node.__contains__

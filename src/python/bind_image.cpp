@@ -8,8 +8,10 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 namespace py = pybind11;
@@ -145,9 +147,9 @@ In Jupyter an image shows itself.)")
         .def("_repr_png_", [](const ImageData& i) { return pngBytes(i); })
         .def(
             "save",
-            [](const ImageData& i, const std::string& path) {
+            [](const ImageData& i, const std::filesystem::path& path) {
                 try {
-                    writePng(path, i.pixels);
+                    writePng(path.string(), i.pixels);
                 } catch (const InputError& e) {
                     PyErr_SetString(PyExc_OSError, e.what());  // the message names the file and the reason
                     throw py::error_already_set();
@@ -156,9 +158,9 @@ In Jupyter an image shows itself.)")
             py::arg("path"), "Writes the PNG atomically (the bytes `shadelab render -o` writes)")
         .def_static(
             "open",
-            [](const std::string& path, const std::string& encoding) {
+            [](const std::filesystem::path& path, const std::string& encoding) {
                 auto img = std::make_shared<ImageData>();
-                img->pixels = readPng(path);
+                img->pixels = readPng(path.string());
                 img->encoding = encodingNamed(encoding);
                 img->linear = decode(img->pixels, img->encoding);
                 img->source = "file";
