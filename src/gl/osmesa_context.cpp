@@ -54,7 +54,8 @@ public:
         finishContextInfo(info_, [](const char* name) { return gGetProcAddress(name); });
     }
     void makeCurrent() override {
-        if (!makeCurrent_(context_, pixel_, kGlUnsignedByte, 1, 1)) throw std::runtime_error("OSMesaMakeCurrent failed");
+        if (!makeCurrent_(context_, pixel_, kGlUnsignedByte, 1, 1))
+            throw std::runtime_error("OSMesaMakeCurrent failed");
     }
     // OSMesa's documented way to unbind: a null context.
     void release() override { makeCurrent_(nullptr, nullptr, 0, 0, 0); }

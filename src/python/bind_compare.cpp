@@ -33,8 +33,8 @@ void bindCompare(py::module_& m) {
             bool pass = false;
             {
                 py::gil_scoped_release released;
-                const bool coverage = !a.coverage.empty() && !b.coverage.empty() &&
-                                      a.pixels.width == b.pixels.width && a.pixels.height == b.pixels.height;
+                const bool coverage = !a.coverage.empty() && !b.coverage.empty() && a.pixels.width == b.pixels.width &&
+                                      a.pixels.height == b.pixels.height;
                 const CompareResult r = coverage ? compareImages(a.pixels, b.pixels, a.coverage, b.coverage, gates)
                                                  : compareImages(a.pixels, b.pixels, gates);
                 heat->pixels = coverage ? diffHeatmap(a.pixels, b.pixels, r.bandMask, gain)

@@ -109,21 +109,23 @@ encoded as image.encoding says (exactly the bytes `shadelab render` writes); ima
 In Jupyter an image shows itself.)")
         .def_buffer([](ImageData& img) {
             ImageF& f = img.linear;
-            return py::buffer_info(f.rgba.data(), sizeof(float), py::format_descriptor<float>::format(), 3,
-                                   {ssize_t(f.height), ssize_t(f.width), ssize_t(3)},
-                                   {ssize_t(sizeof(float)) * 4 * f.width, ssize_t(sizeof(float)) * 4,
-                                    ssize_t(sizeof(float))},
-                                   /*readonly=*/true);
+            return py::buffer_info(
+                f.rgba.data(), sizeof(float), py::format_descriptor<float>::format(), 3,
+                {ssize_t(f.height), ssize_t(f.width), ssize_t(3)},
+                {ssize_t(sizeof(float)) * 4 * f.width, ssize_t(sizeof(float)) * 4, ssize_t(sizeof(float))},
+                /*readonly=*/true);
         })
         .def_property_readonly("width", [](const ImageData& i) { return i.pixels.width; })
         .def_property_readonly("height", [](const ImageData& i) { return i.pixels.height; })
-        .def_property_readonly("size", [](const ImageData& i) { return py::make_tuple(i.pixels.width, i.pixels.height); },
-                               "(width, height), as render(size=...) takes it")
-        .def_property_readonly("shape", [](const ImageData& i) { return py::make_tuple(i.pixels.height, i.pixels.width, 3); },
-                               "(H, W, 3): the shape of np.asarray(image)")
+        .def_property_readonly(
+            "size", [](const ImageData& i) { return py::make_tuple(i.pixels.width, i.pixels.height); },
+            "(width, height), as render(size=...) takes it")
+        .def_property_readonly(
+            "shape", [](const ImageData& i) { return py::make_tuple(i.pixels.height, i.pixels.width, 3); },
+            "(H, W, 3): the shape of np.asarray(image)")
         .def_property_readonly("encoding", [](const ImageData& i) { return std::string(toString(i.encoding)); })
-        .def_property_readonly("source", [](const ImageData& i) { return i.source; },
-                               "'raster', 'trace', 'file' or 'array'")
+        .def_property_readonly(
+            "source", [](const ImageData& i) { return i.source; }, "'raster', 'trace', 'file' or 'array'")
         .def_property_readonly(
             "coverage",
             [](const ImageData& i) -> py::object {
@@ -143,7 +145,8 @@ In Jupyter an image shows itself.)")
             },
             "Milliseconds: raster draw (finished) and readback + conversion; trace: tracing and conversion")
         .def("to_uint8", &uint8Array, "The 8-bit pixels, shape (H, W, 3) (or 4 for an RGBA file), a new array")
-        .def("to_png", [](const ImageData& i) { return pngBytes(i); }, "The PNG file's bytes")
+        .def(
+            "to_png", [](const ImageData& i) { return pngBytes(i); }, "The PNG file's bytes")
         .def("_repr_png_", [](const ImageData& i) { return pngBytes(i); })
         .def(
             "save",
@@ -173,7 +176,8 @@ In Jupyter an image shows itself.)")
             [](py::array a, const std::string& encoding) {
                 const Encoding e = encodingNamed(encoding);
                 if (a.dtype().kind() == 'u' && a.dtype().itemsize() == 1) return fromUint8(a, e);
-                if (a.dtype().kind() == 'f' || a.dtype().kind() == 'i' || a.dtype().kind() == 'u') return fromFloat(a, e);
+                if (a.dtype().kind() == 'f' || a.dtype().kind() == 'i' || a.dtype().kind() == 'u')
+                    return fromFloat(a, e);
                 throw UsageError("from_array: expected a uint8 or float array, got dtype " +
                                  std::string(py::str(a.dtype())));
             },

@@ -90,7 +90,8 @@ void bindLighting(py::module_& m) {
                        const Floats& ms, const Floats& s, const std::string& model, bool diffuse, bool specular) {
         const std::optional<ShadingModel> named = parseShadingModel(model);
         if (!named)
-            throw UsageError("model: unknown shading model '" + model + "'; expected " + nameChoices(kShadingModelNames));
+            throw UsageError("model: unknown shading model '" + model + "'; expected " +
+                             nameChoices(kShadingModelNames));
         const size_t n = rows(N, 3, "N");
         const auto sn = py::ssize_t(n);
         rows(L, 3, "L", sn);

@@ -7,6 +7,8 @@
 
 #include <pybind11/stl.h>
 
+#include <optional>
+
 namespace py = pybind11;
 
 namespace shadelab::python {
@@ -17,16 +19,25 @@ void bindScene(py::module_& m) {
             "load",
             [](const std::string& path, bool allowExternalPaths) {
                 std::vector<std::string> warnings;
-                SceneHandle h = SceneHandle::load(path, allowExternalPaths, warnings);
-                return py::make_tuple(std::move(h), warnings);
+                std::optional<SceneHandle> h;
+                {
+                    py::gil_scoped_release released;  // a large glTF takes a while; the handle is no one else's
+                    h = SceneHandle::load(path, allowExternalPaths, warnings);
+                }
+                return py::make_tuple(std::move(*h), warnings);
             },
             py::arg("path"), py::arg("allow_external_paths") = false)
         .def_static(
             "from_document",
             [](py::handle doc, const std::string& baseDir, bool allowExternalPaths) {
                 std::vector<std::string> warnings;
-                SceneHandle h = SceneHandle::fromDocument(toJson(doc), baseDir, allowExternalPaths, warnings);
-                return py::make_tuple(std::move(h), warnings);
+                const nlohmann::json document = toJson(doc);
+                std::optional<SceneHandle> h;
+                {
+                    py::gil_scoped_release released;
+                    h = SceneHandle::fromDocument(document, baseDir, allowExternalPaths, warnings);
+                }
+                return py::make_tuple(std::move(*h), warnings);
             },
             py::arg("document"), py::arg("base_dir"), py::arg("allow_external_paths") = false)
         .def(

@@ -12,8 +12,8 @@
 namespace shadelab::python {
 
 struct ImageData {
-    ImageF linear;                   // RGBA, linear RGB; for an image read from a file, its pixels decoded
-    Image8 pixels;                   // RGB (RGBA when read from an RGBA file): exactly what the binary's PNG holds
+    ImageF linear;  // RGBA, linear RGB; for an image read from a file, its pixels decoded
+    Image8 pixels;  // RGB (RGBA when read from an RGBA file): exactly what the binary's PNG holds
     Encoding encoding = Encoding::Srgb;
     std::vector<uint32_t> coverage;  // width x height ids (scene/coverage.h) when asked for; else empty
     std::string source;              // "raster", "trace", "file" or "array"

@@ -4,8 +4,8 @@
 // tolist()). Anything else is an InputError naming its JSON path.
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace shadelab::python {

@@ -47,7 +47,8 @@ void validate(const RenderRequest& r) {
                          std::to_string(r.height));
     const int k = int(std::lround(std::sqrt(double(std::max(r.spp, 0)))));
     if (r.spp < 1 || r.spp > 64 || k * k != r.spp)
-        throw UsageError("spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " + std::to_string(r.spp));
+        throw UsageError("spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " +
+                         std::to_string(r.spp));
     if (r.depth && (*r.depth < 0 || *r.depth > 64))
         throw UsageError("depth: must be in [0, 64], got " + std::to_string(*r.depth));
     if (r.threads < 0 || r.threads > 1024)

@@ -93,8 +93,7 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
                 Image8 converted = toImage8(loStrip, o.encoding);
                 std::memcpy(&r.pixels.data[size_t(outTop + row) * size_t(o.width) * 3], converted.data.data(),
                             converted.data.size());
-                if (o.keepLinear)
-                    std::copy(loStrip.rgba.begin(), loStrip.rgba.end(), r.linear.pixel(0, outTop + row));
+                if (o.keepLinear) std::copy(loStrip.rgba.begin(), loStrip.rgba.end(), r.linear.pixel(0, outTop + row));
             }
         }
         if (o.coverage) {

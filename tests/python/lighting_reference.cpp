@@ -38,10 +38,17 @@ int main(int argc, char** argv) {
         const float metallic = row[22], roughness = row[23];
         const int model = int(row[24]);
         const bool diffuse = row[25] != 0.0f, specular = row[26] != 0.0f;
-        const vec3 ggx = sh::dot(N, L) > 0.0f ? sh::specularGGX(N, L, V, sh::pbrF0(base, metallic), roughness) : vec3(0.0f);
+        const vec3 ggx =
+            sh::dot(N, L) > 0.0f ? sh::specularGGX(N, L, V, sh::pbrF0(base, metallic), roughness) : vec3(0.0f);
         const vec3 shaded = sh::shadeLight(N, L, V, Il, md, ms, s, model, diffuse, specular);
-        const float result[8] = {sh::specularPhong(N, L, V, s), sh::specularBlinnPhong(N, L, V, s), ggx.x, ggx.y, ggx.z,
-                                 shaded.x, shaded.y, shaded.z};
+        const float result[8] = {sh::specularPhong(N, L, V, s),
+                                 sh::specularBlinnPhong(N, L, V, s),
+                                 ggx.x,
+                                 ggx.y,
+                                 ggx.z,
+                                 shaded.x,
+                                 shaded.y,
+                                 shaded.z};
         std::fwrite(result, sizeof(float), 8, out);
     }
     std::fclose(in);
