@@ -176,9 +176,8 @@ In Jupyter an image shows itself.)")
             [](py::array a, const std::string& encoding) {
                 const Encoding e = encodingNamed(encoding);
                 if (a.dtype().kind() == 'u' && a.dtype().itemsize() == 1) return fromUint8(a, e);
-                if (a.dtype().kind() == 'f' || a.dtype().kind() == 'i' || a.dtype().kind() == 'u')
-                    return fromFloat(a, e);
-                throw UsageError("from_array: expected a uint8 or float array, got dtype " +
+                if (a.dtype().kind() == 'f') return fromFloat(a, e);
+                throw UsageError("from_array: expected a uint8 (levels) or float (linear) array, got dtype " +
                                  std::string(py::str(a.dtype())));
             },
             py::arg("array"), py::arg("encoding") = "srgb",

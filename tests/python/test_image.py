@@ -61,6 +61,8 @@ def test_from_array():
     assert (shadelab.Image.from_array(floats, encoding="linear").to_uint8() == 128).all()
     with pytest.raises(ValueError, match="shape"):
         shadelab.Image.from_array(np.zeros((4, 4), dtype=np.uint8))
+    with pytest.raises(ValueError, match="got dtype int64"):
+        shadelab.Image.from_array(np.zeros((4, 4, 3), dtype=np.int64))
 
 
 def test_coverage_and_pickle(scene):
