@@ -1,7 +1,6 @@
 """shadelab.compare: two images under the gates of design.md §4, the report `shadelab compare --json` writes,
 and the heatmap of |a - b|."""
 
-import json
 import os
 
 from . import _shadelab
@@ -30,6 +29,8 @@ class CompareReport:
         """Writes <stem>_heat.png and <stem>_report.json; returns their paths."""
         heat, report = f"{stem}_heat.png", f"{stem}_report.json"
         self.heatmap.save(heat)
+        import json
+
         tmp = report + ".tmp"
         with open(tmp, "w") as f:
             json.dump(self.report, f, indent=2)
@@ -68,7 +69,7 @@ def compare(a, b, gates=None, *, gain=16):
     merged = {**default_gates, **gates}
     image_a, name_a = _image(a)
     image_b, name_b = _image(b)
-    text, summary, heat, _ = _shadelab._compare(image_a, image_b, merged["threshold"], merged["max_fraction_over"],
+    report, summary, heat, _ = _shadelab._compare(image_a, image_b, merged["threshold"], merged["max_fraction_over"],
                                                 merged["hard_max"], merged["max_silhouette_fraction"],
                                                 merged["max_mean"], gain, name_a, name_b)
-    return CompareReport(json.loads(text), summary, heat)
+    return CompareReport(report, summary, heat)

@@ -9,7 +9,6 @@ render in the child: use spawned processes (Dask and multiprocessing's "spawn" d
 """
 
 import atexit
-import json
 import os
 import threading
 
@@ -121,4 +120,4 @@ def probe(scene, pixel, size=(1280, 720)):
     scene = _scene(scene)
     width, height = _size(size)
     x, y = pixel
-    return json.loads(_shadelab._probe(scene._handle, int(x), int(y), width, height))
+    return _shadelab._probe(scene._handle, int(x), int(y), width, height)

@@ -11,7 +11,6 @@ order). ``scene.objects[0]`` and friends are views by position, not copies: they
 """
 
 import copy
-import json
 import os
 import warnings
 from collections.abc import MutableSequence
@@ -110,6 +109,8 @@ class _Node:
     __hash__ = None
 
     def __repr__(self):
+        import json
+
         return f"<shadelab {_path_text(self._path)}: {json.dumps(self._value())}>"
 
 
@@ -245,7 +246,7 @@ class Scene:
 
     def _document(self):
         if self._doc is None:
-            object.__setattr__(self, "_doc", json.loads(self._handle.to_json()))
+            object.__setattr__(self, "_doc", self._handle.to_document())
         return self._doc
 
     def _wrap(self, path, value):

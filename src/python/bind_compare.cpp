@@ -5,6 +5,7 @@
 #include "image/compare_report.h"
 #include "python/bindings.h"
 #include "python/image_data.h"
+#include "python/py_json.h"
 
 #include <pybind11/stl.h>
 
@@ -52,7 +53,7 @@ void bindCompare(py::module_& m) {
                 summary = compareSummary(r);
                 pass = r.pass;
             }
-            return py::make_tuple(json, summary, heat, pass);
+            return py::make_tuple(jsonTextToPython(json), summary, heat, pass);
         },
         py::arg("a"), py::arg("b"), py::arg("threshold") = CompareGates{}.threshold,
         py::arg("max_fraction_over") = CompareGates{}.maxFractionOver, py::arg("hard_max") = CompareGates{}.hardMax,

@@ -2,6 +2,7 @@
 // threads (a notebook's widgets, a Dask worker's heartbeat) keep going.
 #include "app/probe.h"
 #include "python/bindings.h"
+#include "python/py_json.h"
 #include "python/renderer.h"
 #include "python/scene_handle.h"
 #include "trace/trace_scene.h"
@@ -93,11 +94,15 @@ void bindRender(py::module_& m) {
                 throw UsageError("pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside a " +
                                  std::to_string(width) + "x" + std::to_string(height) + " image");
             const Scene copy = scene.scene();
-            py::gil_scoped_release released;
-            const trace::TraceScene prepared(copy);
-            const app::ProbeResult probe = app::probePixel(prepared, width, height, x, y);
-            // The tracer's own coverage id stands where the viewer puts the rasterizer's.
-            return app::probeReportJson(probe, copy, probe.objectId);
+            std::string report;
+            {
+                py::gil_scoped_release released;
+                const trace::TraceScene prepared(copy);
+                const app::ProbeResult probe = app::probePixel(prepared, width, height, x, y);
+                // The tracer's own coverage id stands where the viewer puts the rasterizer's.
+                report = app::probeReportJson(probe, copy, probe.objectId);
+            }
+            return jsonTextToPython(report);
         },
         py::arg("scene"), py::arg("x"), py::arg("y"), py::arg("width"), py::arg("height"));
 }

@@ -63,4 +63,33 @@ nlohmann::json convert(py::handle v, const std::string& path, int depth) {
 
 nlohmann::json toJson(py::handle value, const std::string& path) { return convert(value, path, 0); }
 
+namespace {
+
+py::object toPython(const nlohmann::ordered_json& j) {
+    switch (j.type()) {
+        case nlohmann::ordered_json::value_t::null: return py::none();
+        case nlohmann::ordered_json::value_t::boolean: return py::bool_(j.get<bool>());
+        case nlohmann::ordered_json::value_t::number_integer: return py::int_(j.get<int64_t>());
+        case nlohmann::ordered_json::value_t::number_unsigned: return py::int_(j.get<uint64_t>());
+        case nlohmann::ordered_json::value_t::number_float: return py::float_(j.get<double>());
+        case nlohmann::ordered_json::value_t::string: return py::str(j.get_ref<const std::string&>());
+        case nlohmann::ordered_json::value_t::array: {
+            py::list list;
+            for (const auto& e : j) list.append(toPython(e));
+            return std::move(list);
+        }
+        case nlohmann::ordered_json::value_t::object: {
+            py::dict dict;
+            for (auto it = j.begin(); it != j.end(); ++it) dict[py::str(it.key())] = toPython(it.value());
+            return std::move(dict);
+        }
+        default: break;
+    }
+    return py::none();
+}
+
+}  // namespace
+
+py::object jsonTextToPython(const std::string& text) { return toPython(nlohmann::ordered_json::parse(text)); }
+
 }  // namespace shadelab::python
