@@ -7,7 +7,8 @@
 #
 # Sanitizer builds (SHADELAB_ASAN_RUNTIME set by tests/python/CMakeLists.txt): the extension module is
 # ASan-instrumented but /usr/bin/python3 is not, and ASan must be the first library in the process, so its
-# runtime is preloaded (LD_PRELOAD; every subprocess, the binary, a Jupyter kernel, Dask workers, inherits it).
+# runtime is preloaded (LD_PRELOAD; every subprocess, the binary, a Jupyter kernel, Dask workers, inherits it),
+# with libstdc++ (SHADELAB_ASAN_RUNTIME holds both, colon-separated; see tests/python/CMakeLists.txt).
 # LeakSanitizer stays off there: CPython frees little at exit, and Mesa's driver is checked under valgrind
 # instead (tests/leaks/). The caller's ASAN_OPTIONS are kept; detect_leaks=0 comes last, so it wins.
 set -euo pipefail
