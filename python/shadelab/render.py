@@ -8,9 +8,9 @@ SHADELAB_GL_BACKEND or backend= forces one). A process that forks after its firs
 render in the child: use spawned processes (Dask and multiprocessing's "spawn" do).
 """
 
+import _thread
 import atexit
 import os
-import threading
 
 from . import _shadelab
 from .scene import Scene
@@ -89,7 +89,7 @@ class Renderer:
 
 
 _default = None
-_default_lock = threading.Lock()
+_default_lock = _thread.allocate_lock()  # _thread, not threading: import costs count (bench/README.md)
 
 
 def default_renderer():

@@ -10,7 +10,6 @@ Objects are listed as the scene file is saved: spheres, then planes, then meshes
 order). ``scene.objects[0]`` and friends are views by position, not copies: they read the current scene.
 """
 
-import copy
 import os
 import warnings
 from collections.abc import MutableSequence
@@ -49,6 +48,12 @@ def _path_text(path):
     for key in path:
         text += f"[{key}]" if isinstance(key, int) else (("." if text else "") + key)
     return text or "scene"
+
+
+def _deepcopy(value):
+    import copy  # on first edit: `import shadelab` stays quick for a fresh process's first render
+
+    return copy.deepcopy(value)
 
 
 def _walk(doc, path):
@@ -99,7 +104,7 @@ class _Node:
 
     def to_dict(self):
         """A copy of this part of the document."""
-        return copy.deepcopy(self._value())
+        return _deepcopy(self._value())
 
     def __eq__(self, other):
         if isinstance(other, (_Node, dict)):
@@ -158,7 +163,7 @@ class _List(MutableSequence):
         self._scene._edit(self._path, lambda items: items.insert(i, value))
 
     def to_list(self):
-        return copy.deepcopy(self._value())
+        return _deepcopy(self._value())
 
     def __eq__(self, other):
         if isinstance(other, (_List, list)):
@@ -209,7 +214,7 @@ class Scene:
 
     def to_dict(self):
         """The whole description, every field written (as `save` writes it): from_dict(to_dict()) is exact."""
-        return copy.deepcopy(self._document())
+        return _deepcopy(self._document())
 
     def save(self, path):
         """Writes the scene file atomically. Mesh sources are written as they are (relative to base_dir)."""
@@ -266,12 +271,12 @@ class Scene:
 
     def _edit(self, path, change):
         """Applies change(node) to a copy of the node at `path` of the document, then re-reads the scene."""
-        document = copy.deepcopy(self._document())
+        document = _deepcopy(self._document())
         change(_walk(document, path))
         self._commit(document, strict=False)
 
     def _set(self, path, value):
-        document = copy.deepcopy(self._document())
+        document = _deepcopy(self._document())
         _walk(document, path[:-1])[path[-1]] = _plain(value)
         self._commit(document, strict=True)
 
