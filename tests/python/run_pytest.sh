@@ -29,4 +29,11 @@ if [[ -n "${SHADELAB_ASAN_RUNTIME:-}" ]]; then
   export LD_PRELOAD="$SHADELAB_ASAN_RUNTIME${LD_PRELOAD:+:$LD_PRELOAD}"
   export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 fi
-exec "$python" -m pytest -p shadelab.pytest_plugin -p pytester -p no:cacheprovider -q -rs "$test_file" "$@"
+# ctest runs the files in parallel: each gets its own pytest temporary folder, inside its test-output folder.
+basetemp=()
+if [[ -n "${SHADELAB_TEST_OUTPUT:-}" ]]; then
+  mkdir -p "$SHADELAB_TEST_OUTPUT"
+  basetemp=(--basetemp "$SHADELAB_TEST_OUTPUT/pytest-tmp")
+fi
+exec "$python" -m pytest -p shadelab.pytest_plugin -p pytester -p no:cacheprovider -q -rs "${basetemp[@]}" \
+  "$test_file" "$@"
