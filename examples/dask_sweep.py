@@ -24,8 +24,8 @@ REPO = Path(__file__).resolve().parents[1]
 
 
 def material_grid(count, base_scene):
-    """`count` scene dicts: the base scene with its first object's shininess and diffuse colour swept over a grid
-    (shininess on a log scale from 1 to 1024, hue around the colour wheel)."""
+    """`count` scene dicts: the base scene with its first object's shininess and colour (md = ma) swept over a
+    grid (shininess on a log scale from 1 to 1024, hue around the colour wheel)."""
     import colorsys
 
     side = max(1, int(round(count ** 0.5)))
@@ -36,7 +36,7 @@ def material_grid(count, base_scene):
         scene = base_scene.copy()
         material = scene.objects[0].material
         material.s = s
-        material.md = colorsys.hsv_to_rgb(h, 0.8, 0.7)
+        material.md = material.ma = colorsys.hsv_to_rgb(h, 0.8, 0.7)
         scenes.append(scene.to_dict())
     return scenes
 
