@@ -2,7 +2,6 @@
 in this process."""
 
 import os
-import sys
 
 import numpy as np
 import pytest
