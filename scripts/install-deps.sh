@@ -14,6 +14,10 @@ packages=(
   zlib1g-dev                                            # PNG compression
   nlohmann-json3-dev                                    # JSON
   xvfb xauth assimp-testmodels valgrind                 # test tools and real glTF test data
+  pybind11-dev python3-dev python3-numpy python3-pytest # the Python package (build/python) and its tests
+  python3-setuptools python3-pip python3-venv           # `pip install .` offline, with Debian's build tools
+  jupyter-nbconvert python3-ipykernel python3-ipywidgets # the notebook, executed by the tests
+  python3-distributed                                   # Dask: the batch-sweep example and its test
 )
 for arg in "$@"; do
   case "$arg" in

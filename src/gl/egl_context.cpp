@@ -74,6 +74,15 @@ public:
         finishContextInfo(info_, [](const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); });
     }
 
+    void makeCurrent() override {
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            throw std::runtime_error("eglMakeCurrent failed: " + eglErrorName(eglGetError()));
+    }
+    void release() override {
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT))
+            throw std::runtime_error("eglMakeCurrent(EGL_NO_CONTEXT) failed: " + eglErrorName(eglGetError()));
+    }
+
     ~EglContext() override {
         if (context_ != EGL_NO_CONTEXT) {
             eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);

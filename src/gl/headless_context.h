@@ -46,6 +46,12 @@ public:
     virtual ~HeadlessContext() = default;
     const ContextInfo& info() const { return info_; }
 
+    // A new context is current on the thread that created it. Threads that take turns with one context (the
+    // Python package's Renderer, whose renders may come from any Python thread) release it after use and make
+    // it current before: a context is current on at most one thread at a time. Both throw std::runtime_error.
+    virtual void makeCurrent() = 0;
+    virtual void release() = 0;
+
 protected:
     ContextInfo info_;
 };

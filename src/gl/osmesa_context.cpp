@@ -30,10 +30,10 @@ public:
             if ((lib_ = dlopen(name, RTLD_NOW | RTLD_LOCAL))) break;
         if (!lib_) throw std::runtime_error("libOSMesa not found (Debian package libosmesa6)");
         auto create = reinterpret_cast<CreateContextAttribsFn>(dlsym(lib_, "OSMesaCreateContextAttribs"));
-        auto makeCurrent = reinterpret_cast<MakeCurrentFn>(dlsym(lib_, "OSMesaMakeCurrent"));
+        makeCurrent_ = reinterpret_cast<MakeCurrentFn>(dlsym(lib_, "OSMesaMakeCurrent"));
         destroy_ = reinterpret_cast<DestroyContextFn>(dlsym(lib_, "OSMesaDestroyContext"));
         gGetProcAddress = reinterpret_cast<GetProcAddressFn>(dlsym(lib_, "OSMesaGetProcAddress"));
-        if (!create || !makeCurrent || !destroy_ || !gGetProcAddress)
+        if (!create || !makeCurrent_ || !destroy_ || !gGetProcAddress)
             throw std::runtime_error("libOSMesa lacks OSMesaCreateContextAttribs");
         const int attribs[] = {kOsmesaFormat,
                                kOsmesaRgba,
@@ -48,11 +48,18 @@ public:
                                0};
         context_ = create(attribs, nullptr);
         if (!context_) throw std::runtime_error("OSMesaCreateContextAttribs (OpenGL 3.3 core) failed");
-        if (!makeCurrent(context_, pixel_, kGlUnsignedByte, 1, 1)) throw std::runtime_error("OSMesaMakeCurrent failed");
+        makeCurrent();
         info_.backend = GlBackend::OSMesa;
         info_.device = "OSMesa";
         finishContextInfo(info_, [](const char* name) { return gGetProcAddress(name); });
     }
+    void makeCurrent() override {
+        if (!makeCurrent_(context_, pixel_, kGlUnsignedByte, 1, 1))
+            throw std::runtime_error("OSMesaMakeCurrent failed");
+    }
+    // OSMesa's documented way to unbind: a null context.
+    void release() override { makeCurrent_(nullptr, nullptr, 0, 0, 0); }
+
     ~OSMesaHeadless() override {
         if (context_) destroy_(context_);
         // The library stays loaded: Mesa registers atexit handlers that must outlive this object.
@@ -61,6 +68,7 @@ public:
 private:
     void* lib_ = nullptr;
     OSMesaContextPtr context_ = nullptr;
+    MakeCurrentFn makeCurrent_ = nullptr;
     DestroyContextFn destroy_ = nullptr;
     unsigned char pixel_[4] = {};
 };

@@ -63,6 +63,7 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
     r.pixels.channels = 3;
     r.pixels.data.resize(size_t(o.width) * size_t(o.height) * 3);
     if (o.coverage) r.coverage.resize(size_t(o.width) * size_t(o.height));
+    if (o.keepLinear) r.linear = ImageF(o.width, o.height);
 
     // Bands hold whole output rows (multiples of k sub-rows) and stay near the target budget.
     const int outRowsPerBand =
@@ -79,19 +80,25 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
         t0 = Clock::now();
         ++r.bands;
         const RenderTarget& target = renderer.target();
-        if (k == 1) {
+        if (k == 1 && !o.keepLinear) {
             target.readColor8(r.pixels, outTop, o.encoding);
         } else {
-            // Strips of 16 output rows: read k·16 sub-rows, average, convert.
-            for (int row = 0; row < outRows; row += 16) {
-                const int rows = std::min(16, outRows - row);
-                if (hiStrip.height != rows * k) hiStrip = ImageF(hiW, rows * k);
+            // Strips of output rows (16 when supersampled): read k·16 sub-rows, average, convert.
+            const int strip = k == 1 ? 64 : 16;
+            for (int row = 0; row < outRows; row += strip) {
+                const int rows = std::min(strip, outRows - row);
                 if (loStrip.height != rows) loStrip = ImageF(o.width, rows);
-                target.readColorRows(row * k, rows * k, hiStrip);
-                boxDownsample(hiStrip, k, loStrip);
+                if (k == 1) {
+                    target.readColorRows(row, rows, loStrip);
+                } else {
+                    if (hiStrip.height != rows * k) hiStrip = ImageF(hiW, rows * k);
+                    target.readColorRows(row * k, rows * k, hiStrip);
+                    boxDownsample(hiStrip, k, loStrip);
+                }
                 Image8 converted = toImage8(loStrip, o.encoding);
                 std::memcpy(&r.pixels.data[size_t(outTop + row) * size_t(o.width) * 3], converted.data.data(),
                             converted.data.size());
+                if (o.keepLinear) std::copy(loStrip.rgba.begin(), loStrip.rgba.end(), r.linear.pixel(0, outTop + row));
             }
         }
         if (o.coverage) {

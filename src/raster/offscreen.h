@@ -19,12 +19,14 @@ struct OffscreenOptions {
     int spp = 1;                     // samples per pixel: a perfect square k², on the grid (i + (a+0.5)/k)
     Encoding encoding = Encoding::Srgb;
     bool coverage = false;                    // also return coverage ids (of sample a = b = k/2, as the tracer)
+    bool keepLinear = false;                  // also return the linear floats the conversion read (RGBA)
     size_t maxTargetBytes = size_t(8) << 20;  // float colour target budget per band
 };
 
 struct OffscreenResult {
     Image8 pixels;                   // RGB
     std::vector<uint32_t> coverage;  // width*height ids when asked, row 0 at the top
+    ImageF linear;                   // width x height, when keepLinear: pixels == toImage8(linear, encoding)
     int bands = 0;
     double drawMs = 0.0;  // GPU time, summed over bands (glFinish after each)
     double readMs = 0.0;  // readback + downsampling + conversion

@@ -212,7 +212,10 @@ LightOverride parseLightOverride(const JsonNode& n) {
 
 Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line)) {
     nlohmann::json doc = parseJsonText(text, file);
-    JsonNode root(doc, "", file, warn);
+    return parseSceneDocument(JsonNode(doc, "", file, warn));
+}
+
+Scene parseSceneDocument(const JsonNode& root) {
     root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "normalized", "terms",
                                           "ambient", "background", "maxDepth", "raster", "lights", "objects",
                                           "materials"});

@@ -14,6 +14,9 @@ class JsonNode;
 // file, the JSON path and the problem, e.g. "a.json: lights[2].color: expected 3 numbers, got 2".
 // Unknown fields are reported through `warn` (one line each), never as errors.
 Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line) = nullptr);
+// The same over an already parsed document (its root node): the Python package's Scene.from_dict builds the
+// document from a dict, so its errors and warnings read exactly as a file's.
+Scene parseSceneDocument(const JsonNode& root);
 
 // The scene file's readers of a material's and a light's fields, shared with the viewer's scripts so that
 // both accept the same values and word errors alike (the "raster" reader is raster_override.h's). Each reads

@@ -1,0 +1,50 @@
+"""shadelab for Python: scenes, both renderers, comparisons, the probe and the lighting maths.
+
+A thin package over the compiled module ``shadelab._shadelab``, which links the same libraries as the
+``shadelab`` binary: renders are byte-identical to the binary's PNGs and scene errors read as the scene
+file's. It holds no rendering code of its own (design.md §5). See docs/python.md.
+
+    import shadelab
+    scene = shadelab.Scene.load("assets/scenes/default.json")
+    scene.objects[0].material.s = 64
+    image = shadelab.render(scene, size=(640, 360))
+    image.save("out.png")
+
+Importing the package does not import numpy; np.asarray(image) and shadelab.lighting do.
+"""
+
+from . import _shadelab
+from ._shadelab import ContextError, Image, InputError
+from .compare import CompareReport, compare, default_gates
+from .render import Renderer, default_renderer, probe, render
+from .scene import Scene, ShadelabWarning
+
+__version__ = _shadelab.build_info["version"]
+build_info = dict(_shadelab.build_info)
+
+__all__ = [
+    "CompareReport",
+    "ContextError",
+    "Image",
+    "InputError",
+    "Renderer",
+    "Scene",
+    "ShadelabWarning",
+    "build_info",
+    "compare",
+    "default_gates",
+    "default_renderer",
+    "lighting",
+    "plots",
+    "probe",
+    "render",
+]
+
+
+def __getattr__(name):
+    # shadelab.lighting and shadelab.plots import numpy: loaded on first use, so `import shadelab` stays light.
+    if name in ("lighting", "plots"):
+        import importlib
+
+        return importlib.import_module("." + name, __name__)
+    raise AttributeError(f"module 'shadelab' has no attribute '{name}'")

@@ -1,0 +1,75 @@
+"""shadelab.compare: two images under the gates of design.md §4, the report `shadelab compare --json` writes,
+and the heatmap of |a - b|."""
+
+import os
+
+from . import _shadelab
+
+default_gates = dict(_shadelab.default_gates)  # threshold, max_fraction_over, hard_max, ...: the JSON's names
+
+
+class CompareReport:
+    """The outcome of compare(): `passed`, `reasons`, `report` (the dict `shadelab compare --json` writes),
+    `summary` (the lines the binary prints) and `heatmap` (an Image of |a - b|, amplified)."""
+
+    def __init__(self, report, summary, heatmap):
+        self.report = report
+        self.summary = summary
+        self.heatmap = heatmap
+
+    @property
+    def passed(self):
+        return self.report["pass"]
+
+    @property
+    def reasons(self):
+        return list(self.report["reasons"])
+
+    def save(self, stem):
+        """Writes <stem>_heat.png and <stem>_report.json; returns their paths."""
+        heat, report = f"{stem}_heat.png", f"{stem}_report.json"
+        self.heatmap.save(heat)
+        import json
+
+        tmp = report + ".tmp"
+        with open(tmp, "w") as f:
+            json.dump(self.report, f, indent=2)
+            f.write("\n")
+        os.replace(tmp, report)
+        return heat, report
+
+    def _repr_png_(self):
+        return self.heatmap._repr_png_()
+
+    def __repr__(self):
+        return f"<shadelab.CompareReport {self.report['verdict']}: {'; '.join(self.reasons) or 'within the gates'}>"
+
+
+def _image(x):
+    if isinstance(x, _shadelab.Image):
+        return x, ""
+    if isinstance(x, (str, os.PathLike)):
+        path = os.fspath(x)
+        return _shadelab.Image.open(path), path
+    if hasattr(x, "__array_interface__") or hasattr(x, "__array__"):
+        return _shadelab.Image.from_array(x), ""
+    raise TypeError(f"expected a shadelab.Image, a PNG path or a numpy array, got {type(x).__name__}")
+
+
+def compare(a, b, gates=None, *, gain=16):
+    """Compares a with b (Images, PNG paths or numpy arrays; uint8 arrays as they are, float ones as linear
+    RGB) under `gates` (a dict with any of default_gates' keys; the rest keep design.md §4's values). When
+    both images carry coverage (render(..., coverage=True)) the silhouette band is masked, as in the
+    raster-against-reference tests. gain: the heatmap's amplification. Paths given are recorded in the
+    report as image_a / image_b, as the binary does."""
+    gates = dict(gates or {})
+    unknown = sorted(set(gates) - set(default_gates))
+    if unknown:
+        raise ValueError(f"gates: unknown gate(s) {', '.join(unknown)}; expected {', '.join(default_gates)}")
+    merged = {**default_gates, **gates}
+    image_a, name_a = _image(a)
+    image_b, name_b = _image(b)
+    report, summary, heat, _ = _shadelab._compare(image_a, image_b, merged["threshold"], merged["max_fraction_over"],
+                                                merged["hard_max"], merged["max_silhouette_fraction"],
+                                                merged["max_mean"], gain, name_a, name_b)
+    return CompareReport(report, summary, heat)

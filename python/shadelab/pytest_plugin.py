@@ -1,0 +1,135 @@
+"""shadelab's pytest plugin: screenshot tests against baseline PNGs under the gates of design.md §4.
+
+    def test_default_scene(shadelab_regression):
+        image = shadelab.render("assets/scenes/default.json", size=(320, 180))
+        shadelab_regression.check(image, "default-320")
+
+The baseline is <test file's folder>/baselines/default-320.png (ini option shadelab_baseline_dir). A check
+that fails writes its evidence, the render, the baseline, the heatmap and the JSON report, beside the test
+in shadelab-evidence/ (--shadelab-evidence-dir or ini shadelab_evidence_dir to move it), then fails the test
+with the binary's summary. Baselines are written only with --shadelab-update-baselines, never by a failing
+test; a baseline's sidecar <name>.json records the GL_RENDERER and version it was made with.
+
+Loaded by the `pytest11` entry point once the package is pip-installed; from a build tree, pass
+-p shadelab.pytest_plugin (or list it in a conftest's pytest_plugins).
+"""
+
+import json
+import os
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+import shadelab
+
+_UPDATE = "--shadelab-update-baselines"
+
+
+def pytest_addoption(parser):
+    group = parser.getgroup("shadelab", "shadelab screenshot tests")
+    group.addoption(_UPDATE, action="store_true", default=False,
+                    help="write the renders of shadelab_regression checks as their baselines (on purpose only)")
+    group.addoption("--shadelab-evidence-dir", default=None,
+                    help="folder for failing checks' evidence (default: shadelab-evidence/ beside each test)")
+    parser.addini("shadelab_baseline_dir", "baseline folder, relative to each test file's folder", default="baselines")
+    parser.addini("shadelab_evidence_dir", "evidence folder for failing checks (default: beside each test)",
+                  default="")
+
+
+def _safe(text):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_")
+
+
+def _write_json(path, data):
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(data, indent=2) + "\n")
+    os.replace(tmp, path)
+
+
+class ImageRegression:
+    """The shadelab_regression fixture: check(image, name) against <baselines>/<name>.png."""
+
+    def __init__(self, request):
+        self._request = request
+        self._config = request.config
+        self._test_dir = Path(request.node.path).parent
+
+    @property
+    def updating(self):
+        return bool(self._config.getoption(_UPDATE))
+
+    def baseline_path(self, name):
+        return self._test_dir / self._config.getini("shadelab_baseline_dir") / f"{name}.png"
+
+    def evidence_dir(self):
+        chosen = self._config.getoption("--shadelab-evidence-dir") or self._config.getini("shadelab_evidence_dir")
+        root = Path(chosen) if chosen else self._test_dir / "shadelab-evidence"
+        return root / _safe(self._request.node.nodeid.split("::", 1)[-1])
+
+    def check(self, image, name=None, *, gates=None):
+        """Compares `image` (a shadelab.Image, or anything shadelab.compare takes) with the baseline `name`
+        (default: the test's name) under `gates` (design.md §4's by default; a dict overrides some) and
+        returns the CompareReport. Fails the test, leaving the evidence, when the gates are not met."""
+        name = name or _safe(self._request.node.name)
+        baseline = self.baseline_path(name)
+        if not isinstance(image, shadelab.Image):
+            image = _as_image(image)
+        if self.updating:
+            self._write_baseline(image, baseline)
+            return None
+        evidence = self.evidence_dir()
+        stem = evidence / name
+        if evidence.exists():
+            for old in evidence.glob(f"{name}-*"):
+                old.unlink()
+        if not baseline.exists():
+            evidence.mkdir(parents=True, exist_ok=True)
+            image.save(f"{stem}-render.png")
+            pytest.fail(f"no baseline {baseline}; the render is {stem}-render.png. Run pytest with {_UPDATE} to "
+                        f"make it the baseline.", pytrace=False)
+        report = shadelab.compare(image, str(baseline), gates)
+        if not report.passed:
+            evidence.mkdir(parents=True, exist_ok=True)
+            image.save(f"{stem}-render.png")
+            shutil.copyfile(baseline, f"{stem}-baseline.png")
+            report.heatmap.save(f"{stem}-heat.png")
+            _write_json(Path(f"{stem}-report.json"), report.report)
+            pytest.fail(f"{name}: the render differs from {baseline}:\n{report.summary}"
+                        f"evidence: {stem}-render.png, -baseline.png, -heat.png, -report.json\n"
+                        f"(if the change is intended, rewrite it with {_UPDATE})", pytrace=False)
+        return report
+
+    def _write_baseline(self, image, baseline):
+        baseline.parent.mkdir(parents=True, exist_ok=True)
+        image.save(str(baseline))
+        meta = {"shadelab": shadelab.__version__, "size": list(image.size), "encoding": image.encoding,
+                "source": image.source}
+        if image.source == "raster":
+            meta.update(shadelab.default_renderer().info)  # one GL context per process: the one that rendered
+        _write_json(baseline.with_suffix(".json"), meta)
+        self._config.stash.setdefault(_rewritten_key, []).append(str(baseline))
+
+
+def _as_image(x):
+    if isinstance(x, (str, os.PathLike)):
+        return shadelab.Image.open(os.fspath(x))
+    return shadelab.Image.from_array(x)
+
+
+_rewritten_key = pytest.StashKey[list]()
+
+
+@pytest.fixture
+def shadelab_regression(request):
+    """Compares renders with baseline PNGs: shadelab_regression.check(image, name)."""
+    return ImageRegression(request)
+
+
+def pytest_terminal_summary(terminalreporter, config):
+    rewritten = config.stash.get(_rewritten_key, [])
+    if rewritten:
+        terminalreporter.write_sep("=", f"shadelab: {len(rewritten)} baseline(s) rewritten ({_UPDATE})")
+        for path in rewritten:
+            terminalreporter.write_line(path)

@@ -1,0 +1,42 @@
+"""Builds shadelab's compiled module for `pip install .` with CMake: the project's own build, configured without
+tests and viewer, target shadelab_python only, for the Python that runs pip (a venv's too). Everything comes
+from Debian packages (scripts/install-deps.sh); nothing is downloaded. Metadata lives in pyproject.toml.
+
+Set CMAKE_CXX_COMPILER_LAUNCHER=ccache (and CMAKE_C_COMPILER_LAUNCHER) in the environment to reuse a cache, and
+SHADELAB_CMAKE_ARGS for more -D options."""
+
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+ROOT = Path(__file__).resolve().parent
+(ROOT / "build-pip").mkdir(exist_ok=True)  # egg_base below must exist before setuptools writes into it
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext):
+        build_dir = Path(self.build_temp).resolve() / "cmake"
+        configure = ["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
+                     "-DSHADELAB_BUILD_TESTS=OFF", "-DSHADELAB_BUILD_VIEWER=OFF", f"-DPython_EXECUTABLE={sys.executable}"]
+        configure += shlex.split(os.environ.get("SHADELAB_CMAKE_ARGS", ""))
+        subprocess.run(configure, check=True)
+        jobs = str(os.cpu_count() or 2)
+        subprocess.run(["cmake", "--build", str(build_dir), "--target", "shadelab_python", "-j", jobs], check=True)
+        built = next((build_dir / "python" / "shadelab").glob("_shadelab*.so"))
+        target = Path(self.get_ext_fullpath(ext.name))
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(built, target)
+
+
+setup(
+    ext_modules=[Extension("shadelab._shadelab", sources=[])],
+    cmdclass={"build_ext": CMakeBuild},
+    # Out of build/, which is the CMake build folder of a checkout.
+    options={"build": {"build_base": "build-pip"}, "egg_info": {"egg_base": "build-pip"}},
+)

@@ -1,0 +1,110 @@
+// _Renderer and _probe: rendering and the lighting probe, with the GIL released while they run so that other Python
+// threads (a notebook's widgets, a Dask worker's heartbeat) keep going.
+#include "app/probe.h"
+#include "python/bindings.h"
+#include "python/py_json.h"
+#include "python/renderer.h"
+#include "python/scene_handle.h"
+#include "trace/trace_scene.h"
+#include "util/input_error.h"
+
+#include <pybind11/stl.h>
+
+#include <memory>
+
+namespace py = pybind11;
+
+namespace shadelab::python {
+namespace {
+
+template <typename E, size_t N>
+E named(const EnumName<E> (&table)[N], const std::string& word, const char* argument) {
+    if (std::optional<E> v = lookupName(table, word)) return *v;
+    throw UsageError(std::string(argument) + ": unknown value '" + word + "'; expected " + nameChoices(table));
+}
+
+Engine engineNamed(const std::string& word) {
+    if (word == "path")
+        throw UsageError("renderer: the path tracer (design.md §8) is not in this build yet; expected " +
+                         nameChoices(kEngineNames));
+    return named(kEngineNames, word, "renderer");
+}
+
+}  // namespace
+
+void bindRender(py::module_& m) {
+    py::class_<Renderer>(m, "_Renderer")
+        .def(py::init([](const std::string& backend) {
+                 return std::make_unique<Renderer>(named(gl::kGlBackendNames, backend, "backend"));
+             }),
+             py::arg("backend") = "auto")
+        .def(
+            "render",
+            [](Renderer& r, const SceneHandle& scene, int width, int height, const std::string& engine, int spp,
+               const std::string& encoding, std::optional<int> depth, int threads, bool coverage) {
+                RenderRequest request;
+                request.width = width;
+                request.height = height;
+                request.engine = engineNamed(engine);
+                request.spp = spp;
+                request.encoding = named(kEncodingNames, encoding, "encoding");
+                request.depth = depth;
+                request.threads = threads;
+                request.coverage = coverage;
+                validate(request);
+                const Scene copy = scene.scene();  // O(objects); Python may edit the original meanwhile
+                auto image = std::make_shared<ImageData>();
+                {
+                    py::gil_scoped_release released;
+                    *image = r.render(copy, request);
+                }
+                return image;
+            },
+            py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("renderer") = "raster", py::arg("spp") = 1,
+            py::arg("encoding") = "srgb", py::arg("depth") = py::none(), py::arg("threads") = 0,
+            py::arg("coverage") = false)
+        .def("context_info",
+             [](Renderer& r) {
+                 gl::ContextInfo info;
+                 {
+                     py::gil_scoped_release released;
+                     info = r.contextInfo();
+                 }
+                 py::dict d;
+                 d["backend"] = gl::toString(info.backend);
+                 d["device"] = info.device;
+                 d["gl_renderer"] = info.renderer;
+                 d["gl_version"] = info.version;
+                 return d;
+             })
+        .def("close",
+             [](Renderer& r) {
+                 py::gil_scoped_release released;
+                 r.close();
+             })
+        .def_property_readonly("busy", &Renderer::busy);
+
+    m.def(
+        "_probe",
+        [](const SceneHandle& scene, int x, int y, int width, int height) {
+            if (width < 1 || height < 1 || width > 16384 || height > 16384)
+                throw UsageError("size: each side must be 1..16384 pixels, got " + std::to_string(width) + "x" +
+                                 std::to_string(height));
+            if (x < 0 || y < 0 || x >= width || y >= height)
+                throw UsageError("pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside a " +
+                                 std::to_string(width) + "x" + std::to_string(height) + " image");
+            const Scene copy = scene.scene();
+            std::string report;
+            {
+                py::gil_scoped_release released;
+                const trace::TraceScene prepared(copy);
+                const app::ProbeResult probe = app::probePixel(prepared, width, height, x, y);
+                // The tracer's own coverage id stands where the viewer puts the rasterizer's.
+                report = app::probeReportJson(probe, copy, probe.objectId);
+            }
+            return jsonTextToPython(report);
+        },
+        py::arg("scene"), py::arg("x"), py::arg("y"), py::arg("width"), py::arg("height"));
+}
+
+}  // namespace shadelab::python

@@ -1,0 +1,61 @@
+"""shadelab.render is byte-identical to `shadelab render`'s PNG for every shipped scene, with both renderers, and
+after a from_dict(to_dict()) round trip; one Renderer and two Renderers sharing the context keep it so."""
+
+import pytest
+
+import shadelab
+from conftest import SCENES, run_binary
+
+SIZE = (160, 96)
+
+
+def binary_png(binary, out_dir, scene, renderer, *flags):
+    path = out_dir / f"binary-{renderer}.png"
+    run_binary(binary, "render", scene, "-o", path, "--size", f"{SIZE[0]}x{SIZE[1]}", "--renderer", renderer, *flags)
+    return path.read_bytes()
+
+
+@pytest.mark.parametrize("renderer", ["raster", "trace"])
+@pytest.mark.parametrize("path", SCENES, ids=lambda p: p.stem)
+def test_render_equals_the_binary(path, renderer, binary, out_dir):
+    expected = binary_png(binary, out_dir, path, renderer)
+    image = shadelab.render(path, SIZE, renderer=renderer)
+    image.save(out_dir / f"python-{renderer}.png")
+    assert image.to_png() == expected, f"see {out_dir}"
+    scene = shadelab.Scene.load(path)
+    again = shadelab.Scene.from_dict(scene.to_dict(), base_dir=scene.base_dir)
+    assert shadelab.render(again, SIZE, renderer=renderer).to_png() == expected
+
+
+@pytest.mark.parametrize("renderer", ["raster", "trace"])
+def test_options_equal_the_binary_flags(renderer, binary, out_dir, source_dir):
+    scene = source_dir / "assets" / "scenes" / "default.json"
+    expected = binary_png(binary, out_dir, scene, renderer, "--spp", "4", "--encoding", "linear")
+    assert shadelab.render(scene, SIZE, renderer=renderer, spp=4, encoding="linear").to_png() == expected
+    if renderer == "trace":
+        expected = binary_png(binary, out_dir, scene, renderer, "--depth", "1", "--threads", "2")
+        assert shadelab.render(scene, SIZE, renderer=renderer, depth=1, threads=2).to_png() == expected
+
+
+def test_edits_equal_the_binary_on_the_edited_file(binary, out_dir, source_dir):
+    scene = shadelab.Scene.load(source_dir / "assets" / "scenes" / "default.json")
+    scene.model = "blinn-phong"
+    scene.objects[0].material.s = 200
+    scene.lights[0].color = [1.0, 0.2, 0.2]
+    path = out_dir / "edited.json"
+    scene.save(path)
+    assert shadelab.render(scene, SIZE).to_png() == binary_png(binary, out_dir, path, "raster")
+
+
+def test_renderers_share_the_context_without_crosstalk(binary, out_dir):
+    expected = {p: binary_png(binary, out_dir, p, "raster") for p in SCENES[:2]}
+    a, b = shadelab.Renderer(), shadelab.Renderer()
+    for _ in range(2):
+        for p in SCENES[:2]:
+            assert a.render(p, SIZE).to_png() == expected[p]
+            assert b.render(p, SIZE).to_png() == expected[p]
+    a.close()
+    assert b.render(SCENES[0], SIZE).to_png() == expected[SCENES[0]]
+    assert a.render(SCENES[1], SIZE).to_png() == expected[SCENES[1]]  # closed: starts again
+    b.close()
+    a.close()
