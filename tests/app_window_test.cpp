@@ -513,3 +513,38 @@ TEST(AppWindow, ProbeStaysOnTheClickedPointWhileTheCameraOrbits) {
     for (int i = 0; i < 3; ++i) moved += std::fabs(c["P"][i].get<double>() - a["P"][i].get<double>());
     EXPECT_GT(moved, 0.05) << c.dump();
 }
+
+TEST(AppWindow, StatusMessagesNeverMoveTheControls) {
+    // Issue 15: a status message pushed the panel's controls down while it showed, so when it expired a
+    // click meant for Open landed on Save. The status line now has a fixed height, message or not.
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string quiet = test::outputPath("status_quiet.png"), told = test::outputPath("status_told.png");
+    const std::string selected = test::outputPath("status_selected.png");
+    const std::string script = writeText("status_script.json", R"([
+        {"frame": 3, "action": "windowScreenshot", "path": ")" + quiet + R"("},
+        {"frame": 4, "action": "open", "path": ")" + scenePath + R"("},
+        {"frame": 6, "action": "windowScreenshot", "path": ")" + told + R"("},
+        {"frame": 7, "action": "select", "object": "gold"},
+        {"frame": 9, "action": "windowScreenshot", "path": ")" + selected + R"("}])");
+    Result v = view(scenePath + " --size " + kSize + " --ui-scale 1 --frames 10 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    const Image8 a = readPng(quiet), b = readPng(told), c = readPng(selected);
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    // The panel below its header and the two-line status area: 440 window units wide, from y = 110 down.
+    const int panelW = 440, top = 110;
+    auto panelRowsDiffer = [&](const Image8& x, const Image8& y) {
+        int rows = 0;
+        for (int row = top; row < x.height; ++row)
+            if (!std::equal(x.data.begin() + std::ptrdiff_t(size_t(row) * size_t(x.width) * 3),
+                            x.data.begin() + std::ptrdiff_t((size_t(row) * size_t(x.width) + size_t(panelW)) * 3),
+                            y.data.begin() + std::ptrdiff_t(size_t(row) * size_t(y.width) * 3)))
+                ++rows;
+        return rows;
+    };
+    EXPECT_FALSE(sameBytes(quiet, told)) << "the status message did not appear";
+    EXPECT_EQ(panelRowsDiffer(a, b), 0) << "the controls moved when the message came";
+    // Negative control: a real change in the panel (an object selected) is seen by the same comparison.
+    EXPECT_GT(panelRowsDiffer(a, c), 0);
+}

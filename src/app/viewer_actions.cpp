@@ -99,8 +99,12 @@ void Viewer::performAction(const ScriptAction& a) {
             } else if constexpr (std::is_same_v<T, Redo>) {
                 redo();
             } else if constexpr (std::is_same_v<T, Open>) {
-                Scene scene = loadScene(x.path, printWarning);  // a script stops on a bad file
+                WarningCapture warnings;
+                Scene scene = loadScene(x.path, WarningCapture::warn);  // a script stops on a bad file
                 app::openScene(state_, std::move(scene), x.path);
+                state_.loadWarnings = warnings.lines();
+                rememberRecent(fields_.recent, x.path);
+                setStatus("opened " + x.path, false);  // as the Open button says it
             } else if constexpr (std::is_same_v<T, ReloadShaders>) {
                 reloadShaders(x.dir);
             } else if constexpr (std::is_same_v<T, ResizeWindow>) {
