@@ -3,12 +3,14 @@
 #pragma once
 
 #include "scene/camera.h"
+#include "scene/environment.h"
 #include "scene/light.h"
 #include "scene/objects.h"
 #include "scene/raster_settings.h"
 #include "scene/shading_model.h"
 #include "scene/terms.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,8 @@ struct Scene {
     Terms terms;
     glm::vec3 ambient{0.2f};     // Ia, linear RGB intensity
     glm::vec3 background{0.0f};  // colour of rays that leave the scene, linear RGB
+    std::optional<Environment> environment;  // escaping rays' radiance and pbr image-based lighting; none: background
+    bool energyCompensation = false;         // pbr: multiple-scattering GGX compensation (Filament); lights and IBL
     int maxDepth = 5;            // secondary-ray depth for the tracer, >= 0
     RasterSettings raster;       // the rasterizer's shadow-map and reflection settings
     std::vector<Light> lights;
