@@ -71,3 +71,16 @@ SL_FN vec2 iblDFG(int size, float NoV, float roughness) {
     vec2 b = mix(dfgTexel(ix, iy + 1), dfgTexel(ix + 1, iy + 1), tx);
     return mix(a, b, ty);
 }
+
+// The direction a pbr surface's specular environment lookup reads: V mirrored about N, 2N(N·V) − V
+// (design.md §1's reflected direction), from raw N and V normalised here in one order for both renderers.
+SL_FN vec3 iblReflect(vec3 N, vec3 V) {
+    vec3 n = normalize(N);
+    vec3 v = normalize(V);
+    return normalize(2.0f * dot(n, v) * n - v);
+}
+
+// N·V for the DFG lookups (IBL and energy compensation), from raw N and V, kept above 0 as specularGGX does.
+SL_FN float iblNoV(vec3 N, vec3 V) {
+    return max(dot(normalize(N), normalize(V)), 1e-4f);
+}
