@@ -3,6 +3,9 @@
 #include "trace/environment_light.h"
 
 #include "shading/dfg_lut.h"
+#include "shading/prefilter.h"
+
+#include <algorithm>
 
 #include <cmath>
 #include <glm/trigonometric.hpp>
@@ -28,6 +31,19 @@ glm::vec3 EnvironmentLight::prefiltered(glm::vec3 R, float roughness) const {
     shading::IblLookup l = lookup_;
     return intensity_ * l.iblPrefiltered(lookup_.env->size, lookup_.env->levels, l.iblRotate(R, cosRot_, sinRot_),
                                          roughness);
+}
+
+float EnvironmentLight::mirrorWeight(float roughness) const {
+    const int levels = lookup_.env ? lookup_.env->levels : shading::prefilterLevels(256);
+    return std::max(0.0f, 1.0f - std::clamp(roughness, 0.0f, 1.0f) * float(levels - 1));
+}
+
+glm::vec3 EnvironmentLight::prefilteredWithMirror(glm::vec3 R, float roughness, glm::vec3 mirror) const {
+    const float w = mirrorWeight(roughness);
+    if (w <= 0.0f) return prefiltered(R, roughness);
+    // Level 1 alone: lod = 1 reads it with weight 1 (ibl.glsl's trilinear filter).
+    const int levels = lookup_.env ? lookup_.env->levels : shading::prefilterLevels(256);
+    return glm::mix(prefiltered(R, 1.0f / float(levels - 1)), mirror, w);
 }
 
 glm::vec3 EnvironmentLight::irradiance(glm::vec3 N) const {

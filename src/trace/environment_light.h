@@ -22,6 +22,12 @@ public:
     glm::vec3 escaping(glm::vec3 dir) const;
     // Prefiltered radiance around world direction R at `roughness` (the specular lookup).
     glm::vec3 prefiltered(glm::vec3 R, float roughness) const;
+    // The weight of level 0 (the unfiltered environment, what a mirror sees) in prefiltered(R, roughness):
+    // 1 − roughness·(levels − 1) while positive (a uniform environment counts as the default 6 levels).
+    float mirrorWeight(float roughness) const;
+    // prefiltered(R, roughness) with its level-0 sample replaced by `mirror`, the radiance the reflected ray
+    // brought back from an object (docs/lighting.md: what the tracer's reflected ray does).
+    glm::vec3 prefilteredWithMirror(glm::vec3 R, float roughness, glm::vec3 mirror) const;
     // E(N)/π: the radiance a white Lambertian surface of normal N reflects.
     glm::vec3 irradiance(glm::vec3 N) const;
     // The DFG table (A, B) at (N·V, roughness).

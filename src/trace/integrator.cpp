@@ -167,7 +167,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     glm::vec3 environment(0.0f);
     if (env_.lightsPbr() && sc.terms.ambient) {
         const glm::vec3 R = shading::IblLookup{}.iblReflect(s.N, V);
-        const glm::vec3 pre = reflected ? *reflected : env_.prefiltered(R, m.roughness);
+        const glm::vec3 pre =
+            reflected ? env_.prefilteredWithMirror(R, m.roughness, *reflected) : env_.prefiltered(R, m.roughness);
         environment = shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
                                                 sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
     }
@@ -223,9 +224,12 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
     // One reflected ray serves kr and a pbr surface's environment specular (issue 12: "one reflected ray per
     // pixel and the same prefiltered lookup"). Escaping, it reads the environment: kr the radiance along R,
     // the specular the prefiltered lookup at the surface's roughness, exactly as the rasterizer. Hitting an
-    // object, both take that object's shaded radiance (Whitted): the environment is occluded there.
+    // object, kr takes the object's radiance (Whitted), and so does the mirror level (level 0) of the
+    // specular's trilinear lookup, with its weight 1 − roughness·(levels − 1): smooth surfaces reflect
+    // objects sharply, and from roughness 1/(levels − 1) (0.2) on the lookup is the prefiltered one alone.
     const glm::vec3 specularWeight = environmentSpecularWeight(s, V);
-    const glm::vec3 rayWeight = reflectWeight + specularWeight;
+    const float mirror = positive(specularWeight) ? env_.mirrorWeight(m.roughness) : 0.0f;
+    const glm::vec3 rayWeight = reflectWeight + mirror * specularWeight;
     glm::vec3 I;
     if (positive(rayWeight) && admit(weight * rayWeight, tree)) {
         // Whitted 1980: mirror direction 2N(N·V) − V.
@@ -234,7 +238,7 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
         const std::optional<Hit> next = scene_.intersect(reflectedRay);
         if (next) {
             const glm::vec3 Lr = shade(reflectedRay, *next, depth + 1, weight * rayWeight, tree);
-            I = local(ray, s, positive(specularWeight) ? &Lr : nullptr);
+            I = local(ray, s, mirror > 0.0f ? &Lr : nullptr);
             I += reflectWeight * Lr;
         } else {
             I = local(ray, s);
