@@ -217,8 +217,12 @@ PrefilteredEnvironment prefilterEnvironment(const EquirectMap& map, const Prefil
     }
 
     std::vector<std::vector<LobeSample>> lobes(size_t(env.levels));
+    // The first rough level's lobe is narrow and its faces the largest: half the samples (each reads a
+    // correspondingly finer mip) keep it smooth at a third of the whole cost.
     for (int l = 1; l < env.levels; ++l)
-        lobes[size_t(l)] = lobeSamples(float(l) / float(env.levels - 1), settings.samples, size, int(source.size()));
+        lobes[size_t(l)] = lobeSamples(float(l) / float(env.levels - 1),
+                                       l == 1 ? std::max(settings.samples / 2, 1) : settings.samples, size,
+                                       int(source.size()));
 
     // One task per atlas row of every level.
     parallelFor(env.atlasHeight, threads, [&](int row) {
@@ -232,8 +236,11 @@ PrefilteredEnvironment prefilterEnvironment(const EquirectMap& map, const Prefil
                 const float x = 2.0f * (float(i) + 0.5f) / float(n) - 1.0f;
                 const glm::vec3 N = cubeDirection(face, x, y);
                 glm::vec3 c(0.0f);
-                if (level == 0) {
-                    c = sampleEquirect(map, N);
+                if (level == 0 && i >= 0 && i < n && j >= 0 && j < n) {
+                    const float* t = source[0].texel(face, i, j);  // the same direction, already sampled
+                    c = glm::vec3(t[0], t[1], t[2]);
+                } else if (level == 0) {
+                    c = sampleEquirect(map, N);  // border texels: the neighbouring face's radiance
                 } else {
                     glm::vec3 T, B;
                     basis(N, T, B);
