@@ -182,12 +182,6 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shad
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     emptyVao_ = gl::VertexArray::create();
     glBindVertexArray(0);
-
-    backdrop_ = gl::Program::build(shaders_, "fullscreen.vert", "environment_backdrop.frag", ShaderVariant().defines());
-    backdrop_.bindBlock("Frame", kFrameBinding);
-    glUseProgram(backdrop_.id());
-    glUniform1i(backdrop_.uniform("t_iblCube"), GLint(kIblCubeUnit));
-    glUseProgram(0);
     gl::checkError("RasterRenderer setup");
 }
 
@@ -347,6 +341,15 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     const float farDepth = 1.0f;
     ibl_.prepare(scene.environment ? scene.environment->map.get() : nullptr);
     ibl_.bind(kIblCubeUnit, kIblDfgUnit);
+    if (frame.iblInfo.x == kIblMap && !backdrop_) {
+        // Compiled on first use: scenes without an environment map never pay for it.
+        backdrop_ = gl::Program::build(shaders_, "fullscreen.vert", "environment_backdrop.frag",
+                                       ShaderVariant().defines());
+        backdrop_.bindBlock("Frame", kFrameBinding);
+        glUseProgram(backdrop_.id());
+        glUniform1i(backdrop_.uniform("t_iblCube"), GLint(kIblCubeUnit));
+        glUseProgram(0);
+    }
 
     prepareEnvironments(scene, frame, programs);
 
