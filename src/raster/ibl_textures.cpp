@@ -20,8 +20,8 @@ void upload(gl::Texture& t, GLenum internal, GLenum format, int w, int h, const 
 
 }  // namespace
 
-void IblTextures::prepare(const shading::PrefilteredEnvironment* map) {
-    if (!dfg_) {
+void IblTextures::prepare(const shading::PrefilteredEnvironment* map, bool needDfg) {
+    if (needDfg && !dfg_) {
         const shading::DfgLut& lut = shading::dfgLut();
         upload(dfg_, GL_RG32F, GL_RG, lut.size, lut.size, lut.ab.data());
     }
@@ -37,7 +37,7 @@ void IblTextures::bind(unsigned cubeUnit, unsigned dfgUnit) const {
     glActiveTexture(GL_TEXTURE0 + cubeUnit);
     glBindTexture(GL_TEXTURE_2D, atlas_ ? atlas_.id() : 0);
     glActiveTexture(GL_TEXTURE0 + dfgUnit);
-    glBindTexture(GL_TEXTURE_2D, dfg_.id());
+    glBindTexture(GL_TEXTURE_2D, dfg_ ? dfg_.id() : 0);
     glActiveTexture(GL_TEXTURE0);
 }
 

@@ -13,8 +13,9 @@ namespace shadelab::raster {
 
 class IblTextures {
 public:
-    // Makes `map` (may be null: nothing to upload) and the DFG table current; cheap when unchanged.
-    void prepare(const shading::PrefilteredEnvironment* map);
+    // Makes `map` (may be null: nothing to upload) current, and the DFG table when `needDfg` (it costs tens
+    // of milliseconds to compute the first time); cheap when unchanged.
+    void prepare(const shading::PrefilteredEnvironment* map, bool needDfg);
     // Binds the atlas to texture unit `cubeUnit` and the DFG table to `dfgUnit`.
     void bind(unsigned cubeUnit, unsigned dfgUnit) const;
     // Bumped by every upload of a new map (part of what the reflection cubes depend on).

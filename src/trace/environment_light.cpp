@@ -13,7 +13,9 @@
 namespace shadelab::trace {
 
 EnvironmentLight::EnvironmentLight(const Scene& scene) : uniform_(scene.background) {
-    lookup_.dfg = &shading::dfgLut();
+    // The DFG table costs tens of milliseconds the first time: only pbr scenes that read it compute it.
+    if (scene.model == ShadingModel::Pbr && (scene.environment || scene.energyCompensation))
+        lookup_.dfg = &shading::dfgLut();
     if (!scene.environment) return;
     const Environment& e = *scene.environment;
     lightsPbr_ = scene.model == ShadingModel::Pbr;

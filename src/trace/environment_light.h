@@ -30,7 +30,7 @@ public:
     glm::vec3 prefilteredWithMirror(glm::vec3 R, float roughness, glm::vec3 mirror) const;
     // E(N)/π: the radiance a white Lambertian surface of normal N reflects.
     glm::vec3 irradiance(glm::vec3 N) const;
-    // The DFG table (A, B) at (N·V, roughness).
+    // The DFG table (A, B) at (N·V, roughness); pbr scenes with an environment or energy compensation only.
     glm::vec2 dfg(float NoV, float roughness) const;
 
 private:
