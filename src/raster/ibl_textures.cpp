@@ -20,7 +20,7 @@ void upload(gl::Texture& t, GLenum internal, GLenum format, int w, int h, const 
 
 }  // namespace
 
-void IblTextures::prepare(const shading::PrefilteredEnvironment* map, bool needDfg) {
+void IblTextures::prepare(const std::shared_ptr<const shading::PrefilteredEnvironment>& map, bool needDfg) {
     if (needDfg && !dfg_) {
         const shading::DfgLut& lut = shading::dfgLut();
         upload(dfg_, GL_RG32F, GL_RG, lut.size, lut.size, lut.ab.data());

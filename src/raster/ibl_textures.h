@@ -8,6 +8,7 @@
 #include "shading/environment_map.h"
 
 #include <cstdint>
+#include <memory>
 
 namespace shadelab::raster {
 
@@ -15,7 +16,7 @@ class IblTextures {
 public:
     // Makes `map` (may be null: nothing to upload) current, and the DFG table when `needDfg` (it costs tens
     // of milliseconds to compute the first time); cheap when unchanged.
-    void prepare(const shading::PrefilteredEnvironment* map, bool needDfg);
+    void prepare(const std::shared_ptr<const shading::PrefilteredEnvironment>& map, bool needDfg);
     // Binds the atlas to texture unit `cubeUnit` and the DFG table to `dfgUnit`.
     void bind(unsigned cubeUnit, unsigned dfgUnit) const;
     // Bumped by every upload of a new map (part of what the reflection cubes depend on).
@@ -23,7 +24,8 @@ public:
 
 private:
     gl::Texture atlas_, dfg_;
-    const shading::PrefilteredEnvironment* uploaded_ = nullptr;
+    // Held, so that a new map can never reuse the address of the one uploaded and be mistaken for it.
+    std::shared_ptr<const shading::PrefilteredEnvironment> uploaded_;
     uint64_t generation_ = 0;
 };
 

@@ -340,7 +340,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     const GLuint noObject[4] = {kBackgroundId, 0, 0, 0};
     const float farDepth = 1.0f;
     const bool pbr = frame.flags.x == shading::SL_MODEL_PBR;
-    ibl_.prepare(scene.environment ? scene.environment->map.get() : nullptr,
+    ibl_.prepare(scene.environment ? scene.environment->map : nullptr,
                  pbr && (frame.iblInfo.x != kIblNone || frame.iblInfo.w != 0));
     ibl_.bind(kIblCubeUnit, kIblDfgUnit);
     if (frame.iblInfo.x == kIblMap && !backdrop_) {
