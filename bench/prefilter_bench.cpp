@@ -62,8 +62,8 @@ int main(int argc, char** argv) {
             const shading::DfgLut lut = shading::computeDfgLut();
             dfg.push_back(msSince(t0));
         }
-        std::printf("environment %s (%dx%d), cube %d² with %d levels, %d runs\n", path.c_str(), map.width,
-                    map.height, size, shading::prefilterLevels(size), runs);
+        std::printf("environment %s (%dx%d), cube %d² with %d levels, %d runs\n", path.c_str(), map.width, map.height,
+                    size, shading::prefilterLevels(size), runs);
         std::printf("  decode .hdr          median %7.2f ms\n", median(decode));
         // The fastest run is what the code costs when nothing else competes for the cores.
         std::printf("  prefilter, 2 threads median %7.2f ms, fastest %7.2f ms   (budget 150 ms)\n", median(two),

@@ -35,8 +35,8 @@ struct Case {
 };
 
 std::string caseName(const Case& c) {
-    const char* l = c.lighting == Lighting::Environment ? "env"
-                    : c.lighting == Lighting::PlusLight ? "env_light"
+    const char* l = c.lighting == Lighting::Environment   ? "env"
+                    : c.lighting == Lighting::PlusLight   ? "env_light"
                     : c.lighting == Lighting::Compensated ? "env_compensated"
                                                           : "uniform";
     return std::string(l) + "_r" + std::to_string(int(std::lround(c.roughness * 100))) + "_m" +
@@ -63,7 +63,8 @@ Scene makeScene(const Case& c) {
     m.metallic = c.metallic;
     m.roughness = c.roughness;
     scene.spheres.push_back({"", glm::vec3(0.0f), 1.0f, m});
-    if (c.lighting == Lighting::PlusLight) scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, glm::vec3(2.0f)));
+    if (c.lighting == Lighting::PlusLight)
+        scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, glm::vec3(2.0f)));
     return scene;
 }
 

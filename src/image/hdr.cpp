@@ -46,7 +46,8 @@ HdrImage parseHdr(const std::string& bytes, const std::string& name) {
         if (!nextLine(line)) throw fail("header: no blank line ends it within 64 KiB");
         if (line.empty()) break;
         if (line.compare(0, 7, "FORMAT=") == 0) {
-            if (line != "FORMAT=32-bit_rle_rgbe") throw fail("header: unsupported " + line.substr(0, 64) + "; expected FORMAT=32-bit_rle_rgbe");
+            if (line != "FORMAT=32-bit_rle_rgbe")
+                throw fail("header: unsupported " + line.substr(0, 64) + "; expected FORMAT=32-bit_rle_rgbe");
             formatSeen = true;
         }
     }
@@ -60,8 +61,7 @@ HdrImage parseHdr(const std::string& bytes, const std::string& name) {
         throw fail("resolution line '" + line.substr(0, 64) + "': only '-Y <height> +X <width>' is supported");
     if (w < 1 || h < 1 || w > kMaxHdrSide || h > kMaxHdrSide || uint64_t(w) * uint64_t(h) > kMaxHdrPixels)
         throw fail("image of " + std::to_string(w) + "x" + std::to_string(h) + " pixels; at most " +
-                   std::to_string(kMaxHdrSide) + " per side and " + std::to_string(kMaxHdrPixels >> 20) +
-                   " Mpixels");
+                   std::to_string(kMaxHdrSide) + " per side and " + std::to_string(kMaxHdrPixels >> 20) + " Mpixels");
     HdrImage img;
     img.width = int(w);
     img.height = int(h);

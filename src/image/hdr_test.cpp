@@ -61,7 +61,8 @@ std::string rleFile(int w, int h) {
                     x += run;
                 } else {
                     int lit = 1;
-                    while (x + lit < w && lit < 128 && !(x + lit + 1 < w && plane[size_t(x + lit)] == plane[size_t(x + lit + 1)]))
+                    while (x + lit < w && lit < 128 &&
+                           !(x + lit + 1 < w && plane[size_t(x + lit)] == plane[size_t(x + lit + 1)]))
                         ++lit;
                     s += char(lit);
                     for (int k = 0; k < lit; ++k) s += char(plane[size_t(x + k)]);

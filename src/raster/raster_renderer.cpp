@@ -11,12 +11,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
-#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -88,7 +88,8 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band) {
     f.iblInfo.w = model == shading::SL_MODEL_PBR && scene.energyCompensation ? 1 : 0;
     if (scene.environment) {
         const Environment& e = *scene.environment;
-        f.iblParams = glm::vec4(e.intensity, std::cos(glm::radians(e.rotation)), std::sin(glm::radians(e.rotation)), 0.0f);
+        f.iblParams =
+            glm::vec4(e.intensity, std::cos(glm::radians(e.rotation)), std::sin(glm::radians(e.rotation)), 0.0f);
         f.iblRadiance = glm::vec4(scene.background * e.intensity, 0.0f);
         if (e.map) {
             f.iblInfo = glm::ivec4(kIblMap, e.map->size, e.map->levels, f.iblInfo.w);
@@ -345,8 +346,8 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     ibl_.bind(kIblCubeUnit, kIblDfgUnit);
     if (frame.iblInfo.x == kIblMap && !backdrop_) {
         // Compiled on first use: scenes without an environment map never pay for it.
-        backdrop_ = gl::Program::build(shaders_, "fullscreen.vert", "environment_backdrop.frag",
-                                       ShaderVariant().defines());
+        backdrop_ =
+            gl::Program::build(shaders_, "fullscreen.vert", "environment_backdrop.frag", ShaderVariant().defines());
         backdrop_.bindBlock("Frame", kFrameBinding);
         glUseProgram(backdrop_.id());
         glUniform1i(backdrop_.uniform("t_iblCube"), GLint(kIblCubeUnit));

@@ -88,8 +88,8 @@ private:
     std::vector<float> environmentKey_;     // what the cubes were rendered from
     std::vector<RenderTarget> mirrorTargets_;
     std::vector<int> mirrorOfPlane_;  // per plane: index into mirrorTargets_ for this band, or -1
-    IblTextures ibl_;       // the environment's prefiltered atlas and the DFG table
-    gl::Program backdrop_;  // an environment map behind everything (environment_backdrop.frag)
+    IblTextures ibl_;                 // the environment's prefiltered atlas and the DFG table
+    gl::Program backdrop_;            // an environment map behind everything (environment_backdrop.frag)
     gl::Buffer frameUbo_;
     gl::VertexArray meshVao_, cubeVao_, emptyVao_;
     gl::Buffer meshVbo_, meshIbo_, cubeVbo_;

@@ -25,10 +25,14 @@ struct Scene {
     Terms terms;
     glm::vec3 ambient{0.2f};     // Ia, linear RGB intensity
     glm::vec3 background{0.0f};  // colour of rays that leave the scene, linear RGB
-    std::optional<Environment> environment;  // escaping rays' radiance and pbr image-based lighting; none: background
-    bool energyCompensation = false;         // pbr: multiple-scattering GGX compensation (Filament); lights and IBL
     int maxDepth = 5;            // secondary-ray depth for the tracer, >= 0
     RasterSettings raster;       // the rasterizer's shadow-map and reflection settings
+
+    // Issue 12: what escaping rays see and what lights pbr surfaces besides the lights (none: `background`),
+    // and pbr's multiple-scattering compensation (Filament), for lights and the environment.
+    std::optional<Environment> environment;
+    bool energyCompensation = false;
+
     std::vector<Light> lights;
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;

@@ -230,7 +230,8 @@ struct RandomSceneMaker {
         s.normalized = coin();
         s.terms = {coin(), coin(), coin(), coin(), coin()};
         s.ambient = rgb(), s.background = rgb(), s.maxDepth = upTo(64);
-        if (coin()) s.environment = Environment{coin() ? "" : name() + ".hdr", in(0.0f, 10.0f), in(-360.0f, 360.0f), {}};
+        if (coin())
+            s.environment = Environment{coin() ? "" : name() + ".hdr", in(0.0f, 10.0f), in(-360.0f, 360.0f), {}};
         s.energyCompensation = coin();
         if (coin()) {  // else the defaults
             s.raster.shadowMapSize = coin() ? 0 : (coin() ? kMaxShadowMapSize : kMinShadowMapSize + upTo(4000));

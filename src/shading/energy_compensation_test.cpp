@@ -29,16 +29,14 @@ float specularAlbedo(float NoV, float roughness, vec3 specScale) {
         const vec3 L = 2.0f * VoH * H - V;
         if (L.z <= 0.0f || VoH <= 0.0f) continue;
         const float pdf = D_GGX(H.z, H.x * H.x + H.y * H.y, a) * H.z / (4.0f * VoH);
-        const vec3 I = shadeLightScaled(kUp, L, V, vec3(1.0f), vec3(0.0f), vec3(1.0f), roughness, SL_MODEL_PBR,
-                                        false, true, specScale);
+        const vec3 I = shadeLightScaled(kUp, L, V, vec3(1.0f), vec3(0.0f), vec3(1.0f), roughness, SL_MODEL_PBR, false,
+                                        true, specScale);
         sum += double(I.x) / SL_PI / double(pdf);
     }
     return float(sum / n);
 }
 
-vec2 dfgAt(float NoV, float roughness) {
-    return IblLookup{nullptr, &dfgLut()}.dfgAt(NoV, roughness);
-}
+vec2 dfgAt(float NoV, float roughness) { return IblLookup{nullptr, &dfgLut()}.dfgAt(NoV, roughness); }
 
 }  // namespace
 

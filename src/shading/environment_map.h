@@ -16,12 +16,12 @@ namespace shadelab::shading {
 // +X −X +Y −Y +Z −Z with cube_face.glsl's coordinates. Level l is GGX-prefiltered at roughness
 // l / (levels − 1); level 0 is the environment itself.
 struct PrefilteredEnvironment {
-    int size = 0;                    // texels per face side at level 0, a power of two
-    int levels = 0;                  // prefiltered roughness levels, >= 2
-    int atlasWidth = 0;              // 6·(size + 2)
-    int atlasHeight = 0;             // iblLevelRow(size, levels)
-    std::vector<float> atlas;        // atlasWidth·atlasHeight RGB texels, row-major
-    std::array<glm::vec3, 9> sh{};   // irradiance SH9, convolved with the cosine and divided by π
+    int size = 0;                   // texels per face side at level 0, a power of two
+    int levels = 0;                 // prefiltered roughness levels, >= 2
+    int atlasWidth = 0;             // 6·(size + 2)
+    int atlasHeight = 0;            // iblLevelRow(size, levels)
+    std::vector<float> atlas;       // atlasWidth·atlasHeight RGB texels, row-major
+    std::array<glm::vec3, 9> sh{};  // irradiance SH9, convolved with the cosine and divided by π
 };
 
 // The split-sum DFG table: (A, B) with ∫ f·N·L dω = F0·A + B for the GGX lobe with Schlick Fresnel (F = 1:

@@ -40,10 +40,12 @@ glm::vec3 levelMean(const PrefilteredEnvironment& env, int level) {
     for (int face = 0; face < 6; ++face)
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
-                const float x = 2.0f * (float(i) + 0.5f) / float(n) - 1.0f, y = 2.0f * (float(j) + 0.5f) / float(n) - 1.0f;
+                const float x = 2.0f * (float(i) + 0.5f) / float(n) - 1.0f,
+                            y = 2.0f * (float(j) + 0.5f) / float(n) - 1.0f;
                 const float r2 = 1.0f + x * x + y * y;
                 const double dw = 1.0 / (double(r2) * std::sqrt(double(r2)));
-                sum += dw * glm::dvec3(lookup.iblTexel(face * (n + 2) + i + 1, lookup.iblLevelRow(env.size, level) + j + 1));
+                sum += dw *
+                       glm::dvec3(lookup.iblTexel(face * (n + 2) + i + 1, lookup.iblLevelRow(env.size, level) + j + 1));
                 total += dw;
             }
     return glm::vec3(sum / total);
@@ -120,7 +122,8 @@ TEST(Ibl, ShIrradianceOfALinearSkyIsItsClosedForm) {
     s.size = 64;
     const PrefilteredEnvironment env = prefilterEnvironment(makeMap(256, 128, gradientSky), s);
     IblLookup lookup{&env, nullptr};
-    for (glm::vec3 n : {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), glm::normalize(glm::vec3(1, 1, 1)), glm::vec3(1, 0, 0)}) {
+    for (glm::vec3 n :
+         {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), glm::normalize(glm::vec3(1, 1, 1)), glm::vec3(1, 0, 0)}) {
         const float expected = 1.0f + 2.0f / 3.0f * n.y;
         EXPECT_NEAR(lookup.irradiance(n).x, expected, 0.01f) << n.y;
         // Negative control: the unconvolved radiance differs by more than the tolerance (except at the horizon).

@@ -41,7 +41,8 @@ inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCo
     for (size_t i = 0; i < lightCount; ++i) {
         const LightSample& l = lights[i];
         if (l.visibility <= 0.0f) continue;
-        I += l.visibility * shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular, m.specScale);
+        I += l.visibility *
+             shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular, m.specScale);
     }
     return I;
 }

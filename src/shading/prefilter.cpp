@@ -98,8 +98,8 @@ std::vector<LobeSample> lobeSamples(float roughness, int samples, int sourceSize
         const float NoH = H.z;
         const float D = D_GGX(NoH, H.x * H.x + H.y * H.y, a);
         const float sampleSolidAngle = 1.0f / (float(samples) * D * 0.25f + 1e-6f);
-        const float mip = std::clamp(0.5f * std::log2(sampleSolidAngle / texelSolidAngle) + kMipBias, 0.0f,
-                                     float(sourceLevels - 1));
+        const float mip =
+            std::clamp(0.5f * std::log2(sampleSolidAngle / texelSolidAngle) + kMipBias, 0.0f, float(sourceLevels - 1));
         out.push_back({L, L.z, int(std::lround(mip))});
     }
     return out;
@@ -175,15 +175,15 @@ void equirectCoords(glm::vec3 d, float& u, float& v) {
 glm::vec3 cubeDirection(int face, float x, float y) {
     const int axis = face / 2;
     const float sgn = face % 2 == 0 ? 1.0f : -1.0f;
-    glm::vec3 d = axis == 0 ? glm::vec3(sgn, y, sgn * x) : axis == 1 ? glm::vec3(sgn * x, sgn, y)
-                                                                      : glm::vec3(-sgn * x, y, sgn);
+    glm::vec3 d = axis == 0   ? glm::vec3(sgn, y, sgn * x)
+                  : axis == 1 ? glm::vec3(sgn * x, sgn, y)
+                              : glm::vec3(-sgn * x, y, sgn);
     return glm::normalize(d);
 }
 
 PrefilteredEnvironment prefilterEnvironment(const EquirectMap& map, const PrefilterSettings& settings) {
     const int size = settings.size;
-    const int threads =
-        settings.threads > 0 ? settings.threads : std::max(1, int(std::thread::hardware_concurrency()));
+    const int threads = settings.threads > 0 ? settings.threads : std::max(1, int(std::thread::hardware_concurrency()));
     PrefilteredEnvironment env = emptyAtlas(size);
 
     // Source cube (size² per face) and its box-filtered mips down to 1².
@@ -193,9 +193,8 @@ PrefilteredEnvironment prefilterEnvironment(const EquirectMap& map, const Prefil
     parallelFor(6 * size, threads, [&](int task) {
         const int face = task / size, y = task % size;
         for (int x = 0; x < size; ++x) {
-            const glm::vec3 c = sampleEquirect(
-                map, cubeDirection(face, 2.0f * (float(x) + 0.5f) / float(size) - 1.0f,
-                                   2.0f * (float(y) + 0.5f) / float(size) - 1.0f));
+            const glm::vec3 c = sampleEquirect(map, cubeDirection(face, 2.0f * (float(x) + 0.5f) / float(size) - 1.0f,
+                                                                  2.0f * (float(y) + 0.5f) / float(size) - 1.0f));
             float* t = &source[0].rgb[((size_t(face) * size_t(size) + size_t(y)) * size_t(size) + size_t(x)) * 3];
             t[0] = c.x, t[1] = c.y, t[2] = c.z;
         }
@@ -220,9 +219,9 @@ PrefilteredEnvironment prefilterEnvironment(const EquirectMap& map, const Prefil
     // The first rough level's lobe is narrow and its faces the largest: half the samples (each reads a
     // correspondingly finer mip) keep it smooth at a third of the whole cost.
     for (int l = 1; l < env.levels; ++l)
-        lobes[size_t(l)] = lobeSamples(float(l) / float(env.levels - 1),
-                                       l == 1 ? std::max(settings.samples / 2, 1) : settings.samples, size,
-                                       int(source.size()));
+        lobes[size_t(l)] =
+            lobeSamples(float(l) / float(env.levels - 1), l == 1 ? std::max(settings.samples / 2, 1) : settings.samples,
+                        size, int(source.size()));
 
     // One task per atlas row of every level.
     parallelFor(env.atlasHeight, threads, [&](int row) {

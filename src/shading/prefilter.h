@@ -18,9 +18,9 @@ struct EquirectMap {
 };
 
 struct PrefilterSettings {
-    int size = 256;      // texels per face side at level 0: a power of two in [16, 1024]
-    int samples = 64;    // GGX samples per texel of each rough level
-    int threads = 0;     // 0: std::thread::hardware_concurrency()
+    int size = 256;    // texels per face side at level 0: a power of two in [16, 1024]
+    int samples = 64;  // GGX samples per texel of each rough level
+    int threads = 0;   // 0: std::thread::hardware_concurrency()
 };
 
 inline constexpr int kMinPrefilterFace = 8;  // the roughest level's face size

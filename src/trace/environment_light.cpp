@@ -31,8 +31,8 @@ glm::vec3 EnvironmentLight::escaping(glm::vec3 dir) const { return prefiltered(d
 glm::vec3 EnvironmentLight::prefiltered(glm::vec3 R, float roughness) const {
     if (!lookup_.env) return uniform_;
     shading::IblLookup l = lookup_;
-    return intensity_ * l.iblPrefiltered(lookup_.env->size, lookup_.env->levels, l.iblRotate(R, cosRot_, sinRot_),
-                                         roughness);
+    return intensity_ *
+           l.iblPrefiltered(lookup_.env->size, lookup_.env->levels, l.iblRotate(R, cosRot_, sinRot_), roughness);
 }
 
 float EnvironmentLight::mirrorWeight(float roughness) const {

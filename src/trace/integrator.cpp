@@ -161,7 +161,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     const bool pbr = model_ == shading::SL_MODEL_PBR;
     if (pbr) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     glm::vec2 dfg(0.0f);
-    if (pbr && (sc.energyCompensation || env_.lightsPbr())) dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
+    if (pbr && (sc.energyCompensation || env_.lightsPbr()))
+        dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
     if (pbr && sc.energyCompensation) params.specScale = shading::energyCompensation(params.ms, dfg);
     // The environment replaces the constant ambient of pbr surfaces (design.md §8: what global light replaces).
     glm::vec3 environment(0.0f);
