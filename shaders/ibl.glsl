@@ -5,16 +5,23 @@
 // src/shading/environment_map.h (ibl_lookup.h). Every filter is done here, by hand, so both renderers
 // interpolate the same texels with the same weights. Atlas layout: environment_map.h.
 
-// First atlas row of prefilter level `level` of a cube of `size` texels per side (level l: size >> l, plus a
-// one-texel border on each side): the sum of (size >> k) + 2 over k < level.
+// Texels per face side of prefilter level `level` of a cube of `size`: level 0 (the environment itself) at
+// full size, the rough levels, which hold a blurred signal, from a quarter of it down, never below 8.
+SL_FN int iblFaceSize(int size, int level) {
+    return level == 0 ? size : max(size >> (level + 1), 8);
+}
+
+// First atlas row of level `level`: the levels above it, each a face plus its one-texel border.
 SL_FN int iblLevelRow(int size, int level) {
-    return 2 * size - 2 * (size >> level) + 2 * level;
+    int row = 0;
+    for (int k = 0; k < level; ++k) row += iblFaceSize(size, k) + 2;
+    return row;
 }
 
 // Bilinear filter inside one face of one level at face coordinates (x, y) in [-1, 1] (cubeFaceCoords). The
 // border texels hold the neighbouring faces' radiance, so no lookup crosses a face and none has a seam.
 SL_FN vec3 iblSampleFace(int size, int level, int face, float x, float y) {
-    int n = size >> level;
+    int n = iblFaceSize(size, level);
     float fx = clamp((0.5f * x + 0.5f) * float(n) - 0.5f, -1.0f, float(n));
     float fy = clamp((0.5f * y + 0.5f) * float(n) - 0.5f, -1.0f, float(n));
     int ix = clamp(int(floor(fx)), -1, n - 1);

@@ -9,12 +9,12 @@
 
 namespace shadelab::shading {
 
-// The prefiltered specular cube, every level in one RGB float atlas. Level l has faces of n = size >> l
-// texels per side plus a one-texel border holding the neighbouring faces' radiance (filtered for the
-// border texel's own direction), so bilinear lookups never cross a face. Level l occupies atlas rows
-// [iblLevelRow(size, l), + n + 2) and face f the columns [f·(n + 2), (f + 1)·(n + 2)); faces are
-// +X −X +Y −Y +Z −Z with cube_face.glsl's coordinates. Level l is GGX-prefiltered at roughness
-// l / (levels − 1); level 0 is the environment itself.
+// The prefiltered specular cube, every level in one RGB float atlas. Level l has faces of
+// n = iblFaceSize(size, l) texels per side (size, then size/4, size/8, ..., at least 8) plus a one-texel
+// border holding the neighbouring faces' radiance (filtered for the border texel's own direction), so
+// bilinear lookups never cross a face. Level l occupies atlas rows [iblLevelRow(size, l), + n + 2) and face
+// f the columns [f·(n + 2), (f + 1)·(n + 2)); faces are +X −X +Y −Y +Z −Z with cube_face.glsl's coordinates
+// (shaders/ibl.glsl). Level l is GGX-prefiltered at roughness l / (levels − 1); level 0 is the environment.
 struct PrefilteredEnvironment {
     int size = 0;                   // texels per face side at level 0, a power of two
     int levels = 0;                 // prefiltered roughness levels, >= 2

@@ -34,7 +34,7 @@ glm::vec3 sunSky(glm::vec3 d) {
 // Mean of level `level` over the sphere, each texel weighted by its solid angle (border texels skipped).
 glm::vec3 levelMean(const PrefilteredEnvironment& env, int level) {
     IblLookup lookup{&env, nullptr};
-    const int n = env.size >> level;
+    const int n = lookup.iblFaceSize(env.size, level);
     glm::dvec3 sum(0.0);
     double total = 0.0;
     for (int face = 0; face < 6; ++face)
@@ -83,11 +83,11 @@ TEST(Ibl, UniformEnvironmentStaysUniformAtEveryLevel) {
     PrefilterSettings s;
     s.size = 32;
     const PrefilteredEnvironment env = prefilterEnvironment(makeMap(64, 32, uniformSky), s);
-    ASSERT_EQ(env.levels, 3);
+    ASSERT_EQ(env.levels, 6);
     IblLookup lookup{&env, nullptr};
     for (int l = 0; l < env.levels; ++l)
-        for (int row = 0; row < (env.size >> l) + 2; ++row)
-            for (int col = 0; col < 6 * ((env.size >> l) + 2); ++col) {
+        for (int row = 0; row < lookup.iblFaceSize(env.size, l) + 2; ++row)
+            for (int col = 0; col < 6 * (lookup.iblFaceSize(env.size, l) + 2); ++col) {
                 const glm::vec3 t = lookup.iblTexel(col, lookup.iblLevelRow(env.size, l) + row);
                 ASSERT_NEAR(t.x, 0.3f, 1e-5f) << l << " " << row << " " << col;
                 ASSERT_NEAR(t.z, 0.7f, 1e-5f) << l << " " << row << " " << col;

@@ -15,7 +15,8 @@ namespace shadelab::shading {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-constexpr float kMipBias = 0.0f;  // GPU Gems 3 ch. 20 adds 1 (smoother, blurrier); 0 keeps the sun's energy
+constexpr int kCoarsestMipSkipped = 4;  // mips of 8², 4², 2², 1² per face are never read (see lobeSamples)
+constexpr float kMipBias = 1.0f;  // GPU Gems 3 ch. 20: one mip coarser than the sample's footprint, against fireflies
 
 // One face-set of a source mip: 6 faces of n×n RGB texels, no border.
 struct SourceLevel {
@@ -44,12 +45,32 @@ glm::vec3 sampleEquirect(const EquirectMap& m, glm::vec3 d) {
     return glm::mix(a, b, ty);
 }
 
-// Bilinear inside one face of a source level, clamped at its edges.
+// Bilinear inside one face of a source level, clamped at its edges. The face and its coordinates are
+// cube_face.glsl's (cubeFace, cubeFaceCoords), written out with one reciprocal: this is the prefilter's
+// innermost loop (the lookups at render time use ibl.glsl's own).
 glm::vec3 sampleSource(const SourceLevel& s, glm::vec3 d) {
-    const int face = IblLookup{}.cubeFace(d);
-    const glm::vec3 fc = IblLookup{}.cubeFaceCoords(d, face);
-    const float fx = std::clamp((0.5f * fc.x + 0.5f) * float(s.n) - 0.5f, 0.0f, float(s.n - 1));
-    const float fy = std::clamp((0.5f * fc.y + 0.5f) * float(s.n) - 0.5f, 0.0f, float(s.n - 1));
+    const float ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+    int face;
+    float u, v, ma;
+    if (ax >= ay && ax >= az) {
+        face = d.x > 0.0f ? 0 : 1;
+        ma = ax;
+        u = d.x > 0.0f ? d.z : -d.z;
+        v = d.y;
+    } else if (ay >= az) {
+        face = d.y > 0.0f ? 2 : 3;
+        ma = ay;
+        u = d.y > 0.0f ? d.x : -d.x;
+        v = d.z;
+    } else {
+        face = d.z > 0.0f ? 4 : 5;
+        ma = az;
+        u = d.z > 0.0f ? -d.x : d.x;
+        v = d.y;
+    }
+    const float half = 0.5f * float(s.n) / ma;
+    const float fx = std::clamp(u * half + 0.5f * float(s.n) - 0.5f, 0.0f, float(s.n - 1));
+    const float fy = std::clamp(v * half + 0.5f * float(s.n) - 0.5f, 0.0f, float(s.n - 1));
     const int x0 = std::min(int(fx), std::max(s.n - 2, 0)), y0 = std::min(int(fy), std::max(s.n - 2, 0));
     const int x1 = std::min(x0 + 1, s.n - 1), y1 = std::min(y0 + 1, s.n - 1);
     const float tx = fx - float(x0), ty = fy - float(y0);
@@ -98,8 +119,10 @@ std::vector<LobeSample> lobeSamples(float roughness, int samples, int sourceSize
         const float NoH = H.z;
         const float D = D_GGX(NoH, H.x * H.x + H.y * H.y, a);
         const float sampleSolidAngle = 1.0f / (float(samples) * D * 0.25f + 1e-6f);
-        const float mip =
-            std::clamp(0.5f * std::log2(sampleSolidAngle / texelSolidAngle) + kMipBias, 0.0f, float(sourceLevels - 1));
+        // Never a mip with faces under 16² texels: bilinear reads clamped at the edges of a 4² or
+        // 2² face weight its texels unevenly, which shifts a small bright source's energy by up to 10 %.
+        const float coarsest = float(std::max(sourceLevels - 1 - kCoarsestMipSkipped, 0));
+        const float mip = std::clamp(0.5f * std::log2(sampleSolidAngle / texelSolidAngle) + kMipBias, 0.0f, coarsest);
         out.push_back({L, L.z, int(std::lround(mip))});
     }
     return out;
@@ -155,11 +178,7 @@ PrefilteredEnvironment emptyAtlas(int size) {
 
 }  // namespace
 
-int prefilterLevels(int size) {
-    int levels = 0;
-    for (int n = size; n >= kMinPrefilterFace; n >>= 1) ++levels;
-    return std::max(levels, 2);
-}
+int prefilterLevels(int) { return kPrefilterLevels; }
 
 glm::vec3 equirectDirection(float u, float v) {
     const float phi = (u - 0.5f) * 2.0f * kPi, theta = v * kPi;
@@ -216,18 +235,18 @@ PrefilteredEnvironment prefilterEnvironment(const EquirectMap& map, const Prefil
     }
 
     std::vector<std::vector<LobeSample>> lobes(size_t(env.levels));
-    // The first rough level's lobe is narrow and its faces the largest: half the samples (each reads a
-    // correspondingly finer mip) keep it smooth at a third of the whole cost.
+    // Wider lobes take more samples (doubling per level, on ever fewer texels): each sample then covers a
+    // solid angle small enough to read a mip of 16² or finer, and a small bright source (a sun) spreads
+    // smoothly instead of showing as one blob per sample.
     for (int l = 1; l < env.levels; ++l)
-        lobes[size_t(l)] =
-            lobeSamples(float(l) / float(env.levels - 1), l == 1 ? std::max(settings.samples / 2, 1) : settings.samples,
-                        size, int(source.size()));
+        lobes[size_t(l)] = lobeSamples(float(l) / float(env.levels - 1), settings.samples << (l - 1), size,
+                                       int(source.size()));
 
     // One task per atlas row of every level.
     parallelFor(env.atlasHeight, threads, [&](int row) {
         int level = 0;
         while (level + 1 < env.levels && IblLookup{}.iblLevelRow(size, level + 1) <= row) ++level;
-        const int n = size >> level;
+        const int n = IblLookup{}.iblFaceSize(size, level);
         const int j = row - IblLookup{}.iblLevelRow(size, level) - 1;  // -1 .. n: border rows included
         const float y = 2.0f * (float(j) + 0.5f) / float(n) - 1.0f;
         for (int face = 0; face < 6; ++face)

@@ -23,9 +23,10 @@ struct PrefilterSettings {
     int threads = 0;   // 0: std::thread::hardware_concurrency()
 };
 
-inline constexpr int kMinPrefilterFace = 8;  // the roughest level's face size
+// Roughness levels 0, 0.2, ..., 1 (faces of size, size/4, size/8, ..., at least 8 texels: iblFaceSize).
+inline constexpr int kPrefilterLevels = 6;
 
-// Levels for a cube of `size`: size, size/2, ..., 8 texels per side.
+// kPrefilterLevels for every size (kept as a function for callers that ask per cube).
 int prefilterLevels(int size);
 
 // The direction of equirect pixel coordinates (u, v) in [0, 1]² and back.
