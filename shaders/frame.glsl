@@ -13,4 +13,8 @@ layout(std140) uniform Frame {
     vec4 u_lightColor[SL_MAX_LIGHTS];   // xyz: Il
     vec4 u_lightAtten[SL_MAX_LIGHTS];   // xyz: kc, kl, kq
     vec4 u_clipPlane;                   // keep dot(xyz, P) + w >= 0; (0, 0, 0, 1) keeps all (mirror passes clip)
+    vec4 u_iblParams;                   // environment: intensity, cos(rotation), sin(rotation)
+    ivec4 u_iblInfo;                    // mode (0 none, 1 uniform, 2 map), cube size, levels, energy compensation
+    vec4 u_iblRadiance;                 // xyz: a uniform environment's radiance
+    vec4 u_iblSH[9];                    // xyz: a map's SH9 irradiance
 };

@@ -104,13 +104,27 @@ SL_FN vec3 specularGGX(vec3 N, vec3 L, vec3 V, vec3 f0, float roughness) {
     return D_GGX(NoH, dot(NxH, NxH), a) * V_SmithGGXCorrelated(NoV, NoL, a) * F_Schlick(f0, VoH);
 }
 
+// Karis 2013, "Real Shading in Unreal Engine 4", split sum: the specular environment BRDF integrated over
+// the hemisphere is F0·A + B, with dfg = (A, B) read from the DFG table (src/shading/dfg_lut.h).
+SL_FN vec3 specularDFG(vec3 f0, vec2 dfg) {
+    return f0 * dfg.x + vec3(dfg.y);
+}
+
+// Filament, "Energy loss in specular reflectance" (Lagarde & de Rousiers' form, Kulla & Conty 2017): single
+// scattering GGX reflects A + B of the light when F = 1; scaling the lobe by 1 + F0·(1/(A + B) − 1) restores
+// the energy the single-scattering model loses to multiple bounces between microfacets.
+SL_FN vec3 energyCompensation(vec3 f0, vec2 dfg) {
+    return vec3(1.0f) + f0 * (1.0f / max(dfg.x + dfg.y, 1e-4f) - 1.0f);
+}
+
 // One light's contribution Il ⊙ (md·max(N·L,0) + ms·spec), before visibility. N, L, V need not be unit:
 // both renderers hand in raw vectors and this normalises them, so the order of operations is shared.
 // SL_MODEL_PBR reads md as the diffuse colour, ms as F0 and s as roughness (pbrDiffuseColor, pbrF0) and
 // returns π·f(L,V)·Il·N·L (design.md §7): π·Fd_Lambert() = 1, so its diffuse term is the lecture's md·N·L,
 // taken by (1 − F) under the specular layer (glTF 2.0 Appendix B, fresnel_mix) when that layer is on.
-SL_FN vec3 shadeLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s, int model,
-                      bool diffuseOn, bool specularOn) {
+// specScale multiplies the pbr specular lobe: energyCompensation(), or vec3(1) (shadeLight) for none.
+SL_FN vec3 shadeLightScaled(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s, int model,
+                            bool diffuseOn, bool specularOn, vec3 specScale) {
     N = normalize(N);
     L = normalize(L);
     V = normalize(V);
@@ -121,7 +135,7 @@ SL_FN vec3 shadeLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s
         if (model == SL_MODEL_PBR) {
             if (NoL > 0.0f) {
                 vec3 F = F_Schlick(ms, max(dot(V, normalize(L + V)), 0.0f));
-                I = I * (vec3(1.0f) - F) + SL_PI * NoL * specularGGX(N, L, V, ms, s);
+                I = I * (vec3(1.0f) - F) + SL_PI * NoL * specularGGX(N, L, V, ms, s) * specScale;
             }
         } else {
             float spec = model == SL_MODEL_PHONG ? specularPhong(N, L, V, s) : specularBlinnPhong(N, L, V, s);
@@ -129,6 +143,28 @@ SL_FN vec3 shadeLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s
         }
     }
     return Il * I;
+}
+
+// shadeLightScaled without energy compensation (the default, and the lecture's models).
+SL_FN vec3 shadeLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s, int model,
+                      bool diffuseOn, bool specularOn) {
+    return shadeLightScaled(N, L, V, Il, md, ms, s, model, diffuseOn, specularOn, vec3(1.0f));
+}
+
+// Split-sum image-based lighting of a pbr surface (Karis 2013; Filament "Image based lights"): the diffuse
+// colour times the irradiance (as radiance: E/π, so a uniform environment L gives L), and the prefiltered
+// radiance times the specular DFG term E, optionally energy-compensated. As for lights, the diffuse layer
+// loses what the specular layer reflects, (1 − E) (Filament's evaluateIBL), so a white dielectric in a
+// uniform environment reflects exactly the environment.
+SL_FN vec3 shadeEnvironment(vec3 diffuseColor, vec3 f0, vec3 irradiance, vec3 prefiltered, vec2 dfg,
+                            bool compensate, bool diffuseOn, bool specularOn) {
+    vec3 I = diffuseOn ? diffuseColor * irradiance : vec3(0.0f);
+    if (specularOn) {
+        vec3 E = specularDFG(f0, dfg);
+        if (compensate) E = E * energyCompensation(f0, dfg);
+        I = I * (vec3(1.0f) - E) + prefiltered * E;
+    }
+    return I;
 }
 
 // Ambient term Ia ⊙ ma.

@@ -13,15 +13,44 @@ uniform uint u_objectId;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_coverage;
 
+#if SL_IBL || SL_ENERGY_COMPENSATION
+// Split-sum image-based lighting and energy compensation (issue 12): the tables of src/raster/ibl_textures.h,
+// read texel by texel so that ibl.glsl filters them exactly as the tracer does.
+uniform sampler2D t_iblCube;
+uniform sampler2D t_iblDfg;
+vec3 iblTexel(int x, int y) { return texelFetch(t_iblCube, ivec2(x, y), 0).rgb; }
+vec2 dfgTexel(int x, int y) { return texelFetch(t_iblDfg, ivec2(x, y), 0).rg; }
+#include "ibl.glsl"
+#endif
+
+#if SL_IBL
+// The environment's light on a pbr surface (src/trace/integrator.cpp, WhittedIntegrator::local, with the
+// prefiltered lookup): diffuse·irradiance + prefiltered(R, roughness)·E, u_md the diffuse colour, u_ms F0 and
+// u_s the roughness.
+vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
+#if SL_IBL == 2
+    vec3 R = iblReflect(N, V);
+    vec3 sh[9];
+    for (int i = 0; i < 9; ++i) sh[i] = u_iblSH[i].xyz;
+    vec3 irradiance = u_iblParams.x * iblIrradianceSH(sh, iblRotate(normalize(N), u_iblParams.y, u_iblParams.z));
+    vec3 prefiltered = u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(R, u_iblParams.y, u_iblParams.z), u_s);
+#else
+    vec3 irradiance = u_iblRadiance.xyz;
+    vec3 prefiltered = u_iblRadiance.xyz;
+#endif
+    return shadeEnvironment(md, u_ms, irradiance, prefiltered, dfg, SL_ENERGY_COMPENSATION != 0, SL_DIFFUSE, SL_SPECULAR);
+}
+#endif
+
 // One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint,
 // isAttenuated, kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
 // specialised lights, so their branches fold away.
 vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, int layer, vec3 P, vec3 N, vec3 V,
-               vec3 md) {
+               vec3 md, vec3 specScale) {
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
     // Attenuation (1, 0, 0) divides by exactly 1: skipped, bit for bit the same.
     vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L) : u_lightColor[i].xyz;
-    vec3 c = shadeLight(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR);
+    vec3 c = shadeLightScaled(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
     c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
@@ -30,10 +59,23 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
 }
 
 // Ia·ma plus the sum over lights, as src/shading/local_illumination.h (the variant fixes model and terms).
+// A pbr surface in an environment (SL_IBL) gets the environment's light in place of Ia·ma.
 vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
+#if SL_IBL || SL_ENERGY_COMPENSATION
+    vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(N, V), u_s);
+#endif
+#if SL_ENERGY_COMPENSATION
+    vec3 specScale = energyCompensation(u_ms, dfg);
+#else
+    vec3 specScale = vec3(1.0f);
+#endif
+#if SL_IBL
+    vec3 I = vec3(0.0f);
+#else
     vec3 I = shadeAmbient(u_ambient.xyz, u_ma, SL_AMBIENT);
+#endif
     // One call per specialised light with literal arguments (the variant's X-macro, unrolled).
-#define SL_LIGHT_TERM(i, isPoint, isAttenuated, kind, mask, layer) I += lightTerm(i, isPoint, isAttenuated, kind, mask, layer, P, N, V, md);
+#define SL_LIGHT_TERM(i, isPoint, isAttenuated, kind, mask, layer) I += lightTerm(i, isPoint, isAttenuated, kind, mask, layer, P, N, V, md, specScale);
     SL_FOR_EACH_LIGHT(SL_LIGHT_TERM)
 #undef SL_LIGHT_TERM
 #if SL_MORE_LIGHTS
@@ -42,8 +84,11 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
-        I += shadeLight(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR);
+        I += shadeLightScaled(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
     }
+#endif
+#if SL_IBL
+    I += environmentLight(N, V, md, dfg);
 #endif
     return I;
 }

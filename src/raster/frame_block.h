@@ -24,6 +24,11 @@ struct FrameBlock {
     glm::vec4 lightColor[kMaxLights];
     glm::vec4 lightAtten[kMaxLights];
     glm::vec4 clipPlane{0.0f, 0.0f, 0.0f, 1.0f};  // mirror passes: keep dot(xyz, P) + w >= 0
+    // The environment (issue 12, shaders/ibl.glsl): Scene::environment and energyCompensation.
+    glm::vec4 iblParams{1.0f, 1.0f, 0.0f, 0.0f};  // intensity, cos(rotation), sin(rotation), unused
+    glm::ivec4 iblInfo{0};                        // IblMode, cube size, levels, pbr energy compensation (0/1)
+    glm::vec4 iblRadiance{0.0f};                  // a uniform environment's radiance: background·intensity
+    glm::vec4 iblSH[9] = {};                      // a map's SH9 irradiance (xyz), shading::PrefilteredEnvironment
 };
 
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -33,7 +38,12 @@ static_assert(offsetof(FrameBlock, lightPos) == 176);
 static_assert(offsetof(FrameBlock, lightColor) == 176 + 16 * kMaxLights);
 static_assert(offsetof(FrameBlock, lightAtten) == 176 + 32 * kMaxLights);
 static_assert(offsetof(FrameBlock, clipPlane) == 176 + 48 * kMaxLights);
-static_assert(sizeof(FrameBlock) == 192 + 48 * kMaxLights);
+static_assert(offsetof(FrameBlock, iblParams) == 192 + 48 * kMaxLights);
+static_assert(offsetof(FrameBlock, iblSH) == 240 + 48 * kMaxLights);
+static_assert(sizeof(FrameBlock) == 384 + 48 * kMaxLights);
+
+// FrameBlock::iblInfo.x: what surrounds the scene.
+enum IblMode : int { kIblNone = 0, kIblUniform = 1, kIblMap = 2 };
 
 enum TermBits : int { kTermAmbient = 1, kTermDiffuse = 2, kTermSpecular = 4 };
 enum PassBits : int { kPassShadows = 1, kPassMirrors = 2 };
@@ -44,5 +54,7 @@ inline constexpr GLuint kShadowBinding = 1;
 inline constexpr GLuint kShadowUnit = 1;
 inline constexpr GLuint kReflectionUnit = 2;
 inline constexpr GLuint kEnvironmentUnit = 3;
+inline constexpr GLuint kIblCubeUnit = 4;  // the prefiltered atlas (IblTextures)
+inline constexpr GLuint kIblDfgUnit = 5;   // the DFG table
 
 }  // namespace shadelab::raster

@@ -42,6 +42,8 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
         p->bindBlock("Shadows", kShadowBinding);
         glUseProgram(p->id());
         glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
+        glUniform1i(p->uniform("t_iblCube"), GLint(kIblCubeUnit));
+        glUniform1i(p->uniform("t_iblDfg"), GLint(kIblDfgUnit));
     }
     glUseProgram(set.planeMirror.id());
     glUniform1i(set.planeMirror.uniform("t_reflection"), GLint(kReflectionUnit));

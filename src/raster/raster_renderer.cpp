@@ -11,10 +11,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/trigonometric.hpp>
 #include <limits>
 #include <optional>
 #include <string>
@@ -95,7 +97,28 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band, glm
         f.lightColor[i] = glm::vec4(l.color, 0.0f);
         f.lightAtten[i] = glm::vec4(l.attenuation, 0.0f);
     }
+    // The environment, as src/trace/environment_light.cpp reads it.
+    f.iblInfo.w = model == shading::SL_MODEL_PBR && scene.energyCompensation ? 1 : 0;
+    if (scene.environment) {
+        const Environment& e = *scene.environment;
+        f.iblParams =
+            glm::vec4(e.intensity, std::cos(glm::radians(e.rotation)), std::sin(glm::radians(e.rotation)), 0.0f);
+        f.iblRadiance = glm::vec4(scene.background * e.intensity, 0.0f);
+        if (e.map) {
+            f.iblInfo = glm::ivec4(kIblMap, e.map->size, e.map->levels, f.iblInfo.w);
+            for (int i = 0; i < 9; ++i) f.iblSH[i] = glm::vec4(e.map->sh[size_t(i)], 0.0f);
+        } else {
+            f.iblInfo.x = kIblUniform;
+        }
+    }
     return f;
+}
+
+// What rays that leave the scene see where nothing is drawn: the background, times the intensity of a
+// uniform environment. A map environment is drawn over it by the backdrop pass.
+std::array<float, 4> clearColour(const Scene& scene) {
+    const glm::vec3 c = scene.environment ? scene.background * scene.environment->intensity : scene.background;
+    return {c.r, c.g, c.b, 1.0f};
 }
 
 // Everything an environment cube's pixels depend on except the camera: the frame's shading flags, ambient
@@ -116,6 +139,9 @@ std::vector<float> environmentKey(const Scene& scene, const FrameBlock& frame) {
     push(scene.ambient);
     push(scene.background);
     key.push_back(scene.normalized ? 1.0f : 0.0f);
+    key.insert(key.end(), {frame.iblParams.x, frame.iblParams.y, frame.iblParams.z, float(frame.iblInfo.x),
+                           float(frame.iblInfo.y), float(frame.iblInfo.w), frame.iblRadiance.x, frame.iblRadiance.y,
+                           frame.iblRadiance.z, frame.iblSH[0].x});
     for (int i = 0; i < frame.flags.z; ++i)
         for (const glm::vec4& v : {frame.lightPos[i], frame.lightColor[i], frame.lightAtten[i]})
             key.insert(key.end(), {v.x, v.y, v.z, v.w});
@@ -282,11 +308,11 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
     const int size = std::clamp(scene.raster.reflectionCubeSize, kMinReflectionCubeSize, kMaxReflectionCubeSize);
     std::vector<float> key = environmentKey(scene, frame);
     key.insert(key.end(), shadowKey_.begin(), shadowKey_.end());
-    key.insert(key.end(), {float(size), float(meshGeneration_), float(probes_.size())});
+    key.insert(key.end(), {float(size), float(meshGeneration_), float(probes_.size()), float(ibl_.generation())});
     if (key == environmentKey_) return;
 
     environments_.resize(int(probes_.size()), size);
-    const float background[4] = {scene.background.r, scene.background.g, scene.background.b, 1.0f};
+    const std::array<float, 4> background = clearColour(scene);
     const float farDepth = 1.0f;
     for (size_t cube = 0; cube < probes_.size(); ++cube) {
         const EnvironmentProbe& probe = probes_[cube];
@@ -295,10 +321,11 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
         shadows_.setEpsilon(secondaryRayEpsilon(scene, probe.centre));
         for (int face = 0; face < 6; ++face) {
             environments_.bindFace(int(cube), face);
-            glClearBufferfv(GL_COLOR, 0, background);
+            glClearBufferfv(GL_COLOR, 0, background.data());
             glClearBufferfv(GL_DEPTH, 0, &farDepth);
             const FrameBlock faceFrame = cubeFaceFrame(frame, probe.centre, probe.zNear, face, size);
             uploadFrame(faceFrame);
+            drawBackdrop(faceFrame);
             drawPasses(scene, faceFrame, programs, PassOptions{-1, probe.sphere, probe.range, false, false});
         }
     }
@@ -322,9 +349,23 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     glDepthFunc(GL_LEQUAL);  // impostors far away may round to depth 1.0, the clear value
     glDepthMask(GL_TRUE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    const float background[4] = {scene.background.r, scene.background.g, scene.background.b, 1.0f};
+    const std::array<float, 4> backgroundColour = clearColour(scene);
+    const float* background = backgroundColour.data();
     const GLuint noObject[4] = {kBackgroundId, 0, 0, 0};
     const float farDepth = 1.0f;
+    const bool pbr = frame.flags.x == shading::SL_MODEL_PBR;
+    ibl_.prepare(scene.environment ? scene.environment->map : nullptr,
+                 pbr && (frame.iblInfo.x != kIblNone || frame.iblInfo.w != 0));
+    ibl_.bind(kIblCubeUnit, kIblDfgUnit);
+    if (frame.iblInfo.x == kIblMap && !backdrop_) {
+        // Compiled on first use: scenes without an environment map never pay for it.
+        backdrop_ =
+            gl::Program::build(shaders_, "fullscreen.vert", "environment_backdrop.frag", ShaderVariant().defines());
+        backdrop_.bindBlock("Frame", kFrameBinding);
+        glUseProgram(backdrop_.id());
+        glUniform1i(backdrop_.uniform("t_iblCube"), GLint(kIblCubeUnit));
+        glUseProgram(0);
+    }
 
     prepareEnvironments(scene, frame, programs);
 
@@ -345,6 +386,7 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
         glClearBufferfv(GL_COLOR, 0, background);
         glClearBufferfv(GL_DEPTH, 0, &farDepth);
         uploadFrame(*mirrored);
+        drawBackdrop(*mirrored);
         glEnable(GL_CLIP_DISTANCE0);
         drawPasses(scene, *mirrored, programs, PassOptions{int(i), -1, -1, true, false});
         glDisable(GL_CLIP_DISTANCE0);
@@ -357,8 +399,24 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     if (target_.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
     uploadFrame(frame);
+    drawBackdrop(frame);
     drawPasses(scene, frame, programs, PassOptions{});
     gl::checkError("RasterRenderer::draw");
+}
+
+// An environment map seen where no object is: each pixel's ray (of the uploaded frame: the image's, a
+// mirror's or a cube face's) reads the map's level 0, as the tracer's escaping rays do. Depth untouched.
+void RasterRenderer::drawBackdrop(const FrameBlock& frame) const {
+    if (frame.iblInfo.x != kIblMap) return;
+    glUseProgram(backdrop_.id());
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glUseProgram(0);
 }
 
 int bandCount(int width, int height, size_t maxTargetBytes) {

@@ -7,6 +7,7 @@
 #include "image/image.h"
 #include "raster/draw_range.h"
 #include "raster/environment_cubes.h"
+#include "raster/ibl_textures.h"
 #include "raster/raster_limits.h"
 #include "raster/render_target.h"
 #include "raster/shader_variant.h"
@@ -72,6 +73,7 @@ private:
                     const PassOptions& options) const;
     void prepareShadows(const Scene& scene, int width, int height);
     void prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs);
+    void drawBackdrop(const FrameBlock& frame) const;
 
     // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
     struct ColorPrograms {
@@ -90,6 +92,8 @@ private:
     std::vector<float> environmentKey_;     // what the cubes were rendered from
     std::vector<RenderTarget> mirrorTargets_;
     std::vector<int> mirrorOfPlane_;  // per plane: index into mirrorTargets_ for this band, or -1
+    IblTextures ibl_;                 // the environment's prefiltered atlas and the DFG table
+    gl::Program backdrop_;            // an environment map behind everything (environment_backdrop.frag)
     gl::Buffer frameUbo_;
     gl::VertexArray meshVao_, cubeVao_, emptyVao_;
     gl::Buffer meshVbo_, meshIbo_, cubeVbo_;

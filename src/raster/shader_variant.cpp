@@ -2,6 +2,7 @@
 
 #include "raster/frame_block.h"
 #include "raster/shadow_block.h"
+#include "shading/dfg_lut.h"
 
 #include <algorithm>
 
@@ -37,6 +38,9 @@ std::string ShaderVariant::defines() const {
     s += define("SL_FOR_EACH_LIGHT(F)", each);
     s += define("SL_SHADOW_PLANES", std::to_string(planes));
     s += define("SL_PCF", pcf ? "1" : "0");
+    s += define("SL_IBL", std::to_string(ibl));
+    s += define("SL_DFG_SIZE", std::to_string(shading::kDfgLutSize));
+    s += define("SL_ENERGY_COMPENSATION", energyCompensation ? "1" : "0");
     s += define("SL_ENVIRONMENT", "0");  // RasterRenderer redefines it to 1 for its environment programs
     return s;
 }
@@ -52,6 +56,9 @@ ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shad
         v.point[size_t(i)] = frame.lightPos[i].w != 0.0f;
         v.attenuated[size_t(i)] = v.point[size_t(i)] && glm::vec3(frame.lightAtten[i]) != glm::vec3(1.0f, 0.0f, 0.0f);
     }
+    const bool pbr = v.model == 2;  // shading::SL_MODEL_PBR
+    v.ibl = pbr && (v.terms & kTermAmbient) ? frame.iblInfo.x : 0;
+    v.energyCompensation = pbr && frame.iblInfo.w != 0;
     if (shadows && (frame.flags.w & kPassShadows)) {
         v.shadows = true;
         v.planes = std::clamp(shadows->info.x, 0, kMaxShadowPlanes);

@@ -31,6 +31,8 @@ struct ShaderVariant {
     std::array<int, kMaxShadowedLights> firstLayer{};   // its first shadow-map layer
     int planes = 0;                                     // planes uploaded to the Shadows block
     bool pcf = false;
+    int ibl = 0;                      // SL_IBL: IblMode lighting pbr surfaces (0 unless pbr with ambient on)
+    bool energyCompensation = false;  // SL_ENERGY_COMPENSATION: pbr lobes scaled by energyCompensation()
 
     // The #define prelude that selects this variant in shaders/surface.glsl and shadow.glsl; also the
     // variant's cache key.

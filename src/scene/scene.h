@@ -3,12 +3,14 @@
 #pragma once
 
 #include "scene/camera.h"
+#include "scene/environment.h"
 #include "scene/light.h"
 #include "scene/objects.h"
 #include "scene/raster_settings.h"
 #include "scene/shading_model.h"
 #include "scene/terms.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,12 @@ struct Scene {
     glm::vec3 background{0.0f};  // colour of rays that leave the scene, linear RGB
     int maxDepth = 5;            // secondary-ray depth for the tracer, >= 0
     RasterSettings raster;       // the rasterizer's shadow-map and reflection settings
+
+    // Issue 12: what escaping rays see and what lights pbr surfaces besides the lights (none: `background`),
+    // and pbr's multiple-scattering compensation (Filament), for lights and the environment.
+    std::optional<Environment> environment;
+    bool energyCompensation = false;
+
     std::vector<Light> lights;
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;

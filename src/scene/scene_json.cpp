@@ -210,6 +210,20 @@ LightOverride parseLightOverride(const JsonNode& n) {
     return l;
 }
 
+// "environment": {"hdr": path, "intensity": x, "rotation": degrees}; {} is the uniform `background`.
+static Environment parseEnvironment(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"hdr", "intensity", "rotation"});
+    Environment e;
+    if (auto f = n.find("hdr")) {
+        e.hdr = f->string();
+        if (e.hdr.empty()) f->fail("must name a .hdr file; omit \"hdr\" for a uniform environment");
+        if (e.hdr.find('\0') != std::string::npos) f->fail("contains a NUL character");
+    }
+    if (auto f = n.find("intensity")) e.intensity = f->nonNegative();
+    if (auto f = n.find("rotation")) e.rotation = f->inRange(-360.0f, 360.0f, false, false);
+    return e;
+}
+
 Scene parseSceneJson(const std::string& text, const std::string& file, void (*warn)(const std::string& line)) {
     nlohmann::json doc = parseJsonText(text, file);
     return parseSceneDocument(JsonNode(doc, "", file, warn));
@@ -217,8 +231,8 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
 
 Scene parseSceneDocument(const JsonNode& root) {
     root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "normalized", "terms",
-                                          "ambient", "background", "maxDepth", "raster", "lights", "objects",
-                                          "materials"});
+                                          "ambient", "background", "environment", "energyCompensation", "maxDepth",
+                                          "raster", "lights", "objects", "materials"});
     Scene scene;
     if (auto f = root.find("shadelab")) {
         int version = f->integerIn(1, INT_MAX);
@@ -238,6 +252,8 @@ Scene parseSceneDocument(const JsonNode& root) {
     }
     if (auto f = root.find("ambient")) scene.ambient = f->rgb();
     if (auto f = root.find("background")) scene.background = f->rgb();
+    if (auto f = root.find("environment"); f && !f->json().is_null()) scene.environment = parseEnvironment(*f);
+    if (auto f = root.find("energyCompensation")) scene.energyCompensation = f->boolean();
     if (auto f = root.find("maxDepth")) scene.maxDepth = f->integerIn(0, kMaxDepthLimit);
     if (auto f = root.find("raster")) {
         f->requireObject().warnUnknownKeys({"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"});
@@ -366,6 +382,14 @@ std::string sceneToJson(const Scene& scene) {
     for (const EnumName<Term>& term : kTermNames) doc["terms"][term.name] = termEnabled(t, term.value);
     doc["ambient"] = vec(scene.ambient);
     doc["background"] = vec(scene.background);
+    if (scene.environment) {
+        const Environment& e = *scene.environment;
+        doc["environment"] = OJson::object();
+        if (!e.hdr.empty()) doc["environment"]["hdr"] = e.hdr;
+        doc["environment"]["intensity"] = exact(e.intensity);
+        doc["environment"]["rotation"] = exact(e.rotation);
+    }
+    doc["energyCompensation"] = scene.energyCompensation;
     doc["maxDepth"] = scene.maxDepth;
     const RasterSettings& r = scene.raster;
     doc["raster"] = {{"shadowMapSize", r.shadowMapSize == 0 ? OJson("auto") : OJson(r.shadowMapSize)},

@@ -78,6 +78,13 @@ std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
     d.eq("terms.shadows", a.terms.shadows, b.terms.shadows);
     d.eq("terms.reflections", a.terms.reflections, b.terms.reflections);
     d.v("ambient", a.ambient, b.ambient), d.v("background", a.background, b.background);
+    d.eq("environment", a.environment.has_value(), b.environment.has_value());
+    if (a.environment && b.environment) {
+        d.eq("environment.hdr", a.environment->hdr, b.environment->hdr);
+        d.f("environment.intensity", a.environment->intensity, b.environment->intensity);
+        d.f("environment.rotation", a.environment->rotation, b.environment->rotation);
+    }
+    d.eq("energyCompensation", a.energyCompensation, b.energyCompensation);
     d.eq("maxDepth", a.maxDepth, b.maxDepth);
     d.eq("raster.shadowMapSize", a.raster.shadowMapSize, b.raster.shadowMapSize);
     d.f("raster.depthBias", a.raster.depthBias, b.raster.depthBias);
@@ -223,6 +230,9 @@ struct RandomSceneMaker {
         s.normalized = coin();
         s.terms = {coin(), coin(), coin(), coin(), coin()};
         s.ambient = rgb(), s.background = rgb(), s.maxDepth = upTo(64);
+        if (coin())
+            s.environment = Environment{coin() ? "" : name() + ".hdr", in(0.0f, 10.0f), in(-360.0f, 360.0f), {}};
+        s.energyCompensation = coin();
         if (coin()) {  // else the defaults
             s.raster.shadowMapSize = coin() ? 0 : (coin() ? kMaxShadowMapSize : kMinShadowMapSize + upTo(4000));
             s.raster.depthBias = coin() ? in(0.0f, kMaxShadowBias) : (coin() ? 0.0f : kMaxShadowBias);
@@ -423,6 +433,18 @@ TEST(SceneJson, PbrModelAndMaterialsReadEachOthersFields) {
     EXPECT_EQ(s.model, ShadingModel::Pbr);
     EXPECT_FALSE(s.normalized);
     EXPECT_TRUE(parse(R"({"normalized": true})").normalized);
+    EXPECT_FALSE(s.environment);
+    EXPECT_FALSE(s.energyCompensation);
+    EXPECT_TRUE(parse(R"({"energyCompensation": true})").energyCompensation);
+    const Scene uniform = parse(R"({"environment": {}})");
+    ASSERT_TRUE(uniform.environment);
+    EXPECT_EQ(uniform.environment->hdr, "");
+    EXPECT_EQ(uniform.environment->intensity, 1.0f);
+    const Scene sky = parse(R"({"environment": {"hdr": "../environments/sky.hdr", "intensity": 2, "rotation": 90}})");
+    EXPECT_EQ(sky.environment->hdr, "../environments/sky.hdr");
+    EXPECT_EQ(sky.environment->intensity, 2.0f);
+    EXPECT_EQ(sky.environment->rotation, 90.0f);
+    EXPECT_FALSE(parse(R"({"environment": null})").environment);
     EXPECT_STREQ(toString(*parseShadingModel("pbr")), "pbr");
     ASSERT_EQ(s.spheres.size(), 4u);
     const Material& phongOnly = s.spheres[0].material;

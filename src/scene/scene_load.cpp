@@ -2,6 +2,7 @@
 // the bounds, framing camera and default light rig it uses. Parsing and import live elsewhere.
 #include "scene/scene_load.h"
 
+#include "scene/environment_load.h"
 #include "scene/gltf_import.h"
 #include "scene/scene_json.h"
 #include "util/input_error.h"
@@ -140,6 +141,7 @@ Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& g
     if (ext == ".json") {
         Scene scene = parseSceneJson(readFile(path, kMaxSceneFileBytes), path, warn);
         importMeshes(scene, fs::path(path).parent_path().string(), warn, gltf);
+        loadEnvironment(scene, fs::path(path).parent_path().string());
         return scene;
     }
     if (ext != ".gltf" && ext != ".glb") throw InputError(path, "unknown scene type; expected .json, .gltf or .glb");

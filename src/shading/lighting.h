@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace shadelab::shading {
@@ -20,6 +21,7 @@ using glm::mix;
 using glm::normalize;
 using glm::pow;
 using glm::sqrt;
+using glm::vec2;
 using glm::vec3;
 
 #define SL_FN inline

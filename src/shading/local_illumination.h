@@ -18,6 +18,7 @@ struct LightSample {
 struct SurfaceParams {
     vec3 ma, md, ms;
     float s;
+    vec3 specScale{1.0f};  // pbr specular lobe scale: energyCompensation() when the scene asks for it
 };
 
 // The coefficients shadeLight reads under `model`: the lecture's (ma, md, ms, s), or for SL_MODEL_PBR the
@@ -40,7 +41,8 @@ inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCo
     for (size_t i = 0; i < lightCount; ++i) {
         const LightSample& l = lights[i];
         if (l.visibility <= 0.0f) continue;
-        I += l.visibility * shadeLight(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular);
+        I += l.visibility *
+             shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular, m.specScale);
     }
     return I;
 }

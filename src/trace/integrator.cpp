@@ -31,12 +31,16 @@ struct WhittedIntegrator::Tree {
 };
 
 WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, const RayTreeLimits& limits)
-    : scene_(scene), maxDepth_(std::max(maxDepth, 0)), model_(modelIndex(scene.scene().model)), limits_(limits) {}
+    : scene_(scene),
+      maxDepth_(std::max(maxDepth, 0)),
+      model_(modelIndex(scene.scene().model)),
+      limits_(limits),
+      env_(scene.scene()) {}
 
 PrimarySample WhittedIntegrator::primary(const Ray& ray, const std::atomic<bool>* cancel, TreeStats* stats) const {
     Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, cancel, {}};
     const std::optional<Hit> hit = scene_.intersect(ray);
-    PrimarySample s{scene_.scene().background, kBackgroundId};
+    PrimarySample s{env_.escaping(ray.dir), kBackgroundId};
     if (hit) s = {shade(ray, *hit, 0, glm::vec3(1.0f), tree), scene_.coverageId(*hit)};
     if (stats) *stats = tree.stats;
     return s;
@@ -49,7 +53,7 @@ glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth) const {
 
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const {
     const std::optional<Hit> hit = scene_.intersect(ray);
-    return hit ? shade(ray, *hit, depth, weight, tree) : scene_.scene().background;
+    return hit ? shade(ray, *hit, depth, weight, tree) : env_.escaping(ray.dir);
 }
 
 bool WhittedIntegrator::admit(const glm::vec3& weight, Tree& tree) const {
@@ -137,13 +141,39 @@ float WhittedIntegrator::visibility(const Surface& s, const Light& light) const 
     return scene_.occluded(shadow, tMax) ? 0.0f : 1.0f;
 }
 
-glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s) const {
+glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::vec3 V) const {
+    const Scene& sc = scene_.scene();
+    if (!env_.lightsPbr() || !sc.terms.ambient || !sc.terms.specular) return glm::vec3(0.0f);
+    const Material& m = *s.material;
+    const glm::vec3 f0 = shading::pbrF0(m.baseColor, m.metallic);
+    const glm::vec2 dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
+    glm::vec3 E = shading::specularDFG(f0, dfg);
+    if (sc.energyCompensation) E = E * shading::energyCompensation(f0, dfg);
+    return E;
+}
+
+glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected) const {
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
     shading::SurfaceParams params =
         shading::surfaceParams(model_, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
-    if (model_ == shading::SL_MODEL_PBR) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
+    const bool pbr = model_ == shading::SL_MODEL_PBR;
+    if (pbr) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
+    glm::vec2 dfg(0.0f);
+    if (pbr && (sc.energyCompensation || env_.lightsPbr()))
+        dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
+    if (pbr && sc.energyCompensation) params.specScale = shading::energyCompensation(params.ms, dfg);
+    // The environment replaces the constant ambient of pbr surfaces (design.md §8: what global light replaces).
+    glm::vec3 environment(0.0f);
+    if (env_.lightsPbr() && sc.terms.ambient) {
+        const glm::vec3 R = shading::IblLookup{}.iblReflect(s.N, V);
+        const glm::vec3 pre =
+            reflected ? env_.prefilteredWithMirror(R, m.roughness, *reflected) : env_.prefiltered(R, m.roughness);
+        environment = shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
+                                                sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
+    }
+    const bool ambientOn = sc.terms.ambient && !env_.lightsPbr();
     const bool lit = sc.terms.diffuse || sc.terms.specular;
     // Lights go to shadeLocal in batches of kMaxLights (one batch for every scene the rasterizer takes).
     shading::LightSample samples[kMaxLights];
@@ -160,19 +190,18 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s) const {
             // Only a light that could contribute (N·L > 0) needs a shadow ray: otherwise its term is 0.
             ls.visibility = sc.terms.shadows && lit && glm::dot(s.N, ls.L) > 0.0f ? visibility(s, l) : 1.0f;
         }
-        shading::TermFlags terms{sc.terms.ambient && first == 0, sc.terms.diffuse, sc.terms.specular};
+        shading::TermFlags terms{ambientOn && first == 0, sc.terms.diffuse, sc.terms.specular};
         const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, model_, terms);
         I = first == 0 ? batch : I + batch;
         first += count;
     } while (first < sc.lights.size());
-    return I;
+    return env_.lightsPbr() ? I + environment : I;
 }
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,
                                    Tree& tree) const {
     const Surface s = surfaceAt(ray, hit);
-    glm::vec3 I = local(ray, s);
-    if (!scene_.scene().terms.reflections || depth >= maxDepth_) return I;
+    if (!scene_.scene().terms.reflections || depth >= maxDepth_) return local(ray, s);
 
     const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
@@ -193,10 +222,31 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
             transmitted = m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1, weight * m.kt, tree);
         }
     }
-    if (positive(reflectWeight) && admit(weight * reflectWeight, tree)) {
+    // One reflected ray serves kr and a pbr surface's environment specular (issue 12: "one reflected ray per
+    // pixel and the same prefiltered lookup"). Escaping, it reads the environment: kr the radiance along R,
+    // the specular the prefiltered lookup at the surface's roughness, exactly as the rasterizer. Hitting an
+    // object, kr takes the object's radiance (Whitted), and so does the mirror level (level 0) of the
+    // specular's trilinear lookup, with its weight 1 − roughness·(levels − 1): smooth surfaces reflect
+    // objects sharply, and from roughness 1/(levels − 1) (0.2) on the lookup is the prefiltered one alone.
+    const glm::vec3 specularWeight = environmentSpecularWeight(s, V);
+    const float mirror = positive(specularWeight) ? env_.mirrorWeight(m.roughness) : 0.0f;
+    const glm::vec3 rayWeight = reflectWeight + mirror * specularWeight;
+    glm::vec3 I;
+    if (positive(rayWeight) && admit(weight * rayWeight, tree)) {
         // Whitted 1980: mirror direction 2N(N·V) − V.
         const glm::vec3 R = glm::normalize(2.0f * NoV * N - V);
-        I += reflectWeight * radiance(Ray{s.P + eps * s.Nf, R}, depth + 1, weight * reflectWeight, tree);
+        const Ray reflectedRay{s.P + eps * s.Nf, R};
+        const std::optional<Hit> next = scene_.intersect(reflectedRay);
+        if (next) {
+            const glm::vec3 Lr = shade(reflectedRay, *next, depth + 1, weight * rayWeight, tree);
+            I = local(ray, s, mirror > 0.0f ? &Lr : nullptr);
+            I += reflectWeight * Lr;
+        } else {
+            I = local(ray, s);
+            I += reflectWeight * env_.escaping(R);
+        }
+    } else {
+        I = local(ray, s);
     }
     return I + transmitted;
 }

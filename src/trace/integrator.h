@@ -3,6 +3,7 @@
 // renderer (progressive_trace.h) calls it per sample.
 #pragma once
 
+#include "trace/environment_light.h"
 #include "trace/ray.h"
 #include "trace/trace_scene.h"
 #include "trace/trace_settings.h"
@@ -55,8 +56,12 @@ public:
 
     Surface surfaceAt(const Ray& ray, const Hit& hit) const;
     // Local illumination (design.md §1) at a surface seen along `ray`: ambient plus every light, each
-    // weighted by its shadow-ray visibility when the shadows term is on.
-    glm::vec3 local(const Ray& ray, const Surface& s) const;
+    // weighted by its shadow-ray visibility when the shadows term is on. A pbr surface in an environment
+    // gets the split-sum environment light in place of Ia·ma; its specular part reads `reflected` (the
+    // radiance the reflected ray brought back from an object) when given, else the prefiltered lookup.
+    glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected = nullptr) const;
+
+    const EnvironmentLight& environment() const { return env_; }
 
     // vis_l: 1 when the shadow ray from s.P + ε·s.Nf toward the light reaches it, else 0.
     float visibility(const Surface& s, const Light& light) const;
@@ -72,6 +77,9 @@ private:
     int maxDepth_;
     int model_;
     RayTreeLimits limits_;
+    EnvironmentLight env_;
+    // The split-sum specular weight E = (F0·A + B)·compensation of a pbr surface (0 without IBL specular).
+    glm::vec3 environmentSpecularWeight(const Surface& s, glm::vec3 V) const;
 };
 
 }  // namespace shadelab::trace
