@@ -535,11 +535,17 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
     settings.phongExponent = 64.0f;
     settings.roughness = 1.0f;
     const AlbedoPlot plot = makeAlbedoPlot(settings);
-    ASSERT_EQ(plot.curves.size(), 6u);
+    ASSERT_EQ(plot.curves.size(), 7u);
     for (float v : plot.curves[0].albedo) EXPECT_NEAR(v, 1.0f, 3e-3f);  // Lambert
     EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);    // Phong: 2/(s+1)
     EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);   // normalised
     for (float v : plot.curves[5].albedo) EXPECT_LT(v, 0.999f);         // GGX loses
+    // With compensation a white metal keeps its energy (issue 12: within 1 %), away from grazing angles.
+    EXPECT_EQ(plot.curves[6].label, "GGX  compensated");
+    for (size_t i = 0; i < plot.viewAngles.size(); ++i)
+        if (plot.viewAngles[i] <= 75.0f) {
+            EXPECT_NEAR(plot.curves[6].albedo[i], 1.0f, 0.015f) << plot.viewAngles[i];
+        }
     // The hook: a curve from any shade function.
     AlbedoPlot copy = plot;
     addAlbedoCurve(copy, "half Lambert",

@@ -2,6 +2,8 @@
 #include "app/albedo_plot.h"
 
 #include "app/specular_lobe.h"
+#include "shading/dfg_lut.h"
+#include "shading/ibl_lookup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,8 +56,21 @@ AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& in) {
                    modelShade(SL_MODEL_BLINN_PHONG, zero, vec3(blinnPhongNormalization(sb)), sb, false, true), true);
     std::snprintf(label, sizeof label, "GGX  roughness %.2f", double(r));
     addAlbedoCurve(plot, label, modelShade(SL_MODEL_PBR, zero, one, r, false, true));
-    // Issue 12's compensated GGX curve goes here once lighting.glsl has energy compensation:
-    // addAlbedoCurve(plot, "GGX, compensated", <a shade calling the compensated BRDF>, true);
+    // The same lobe scaled by Filament's multiple-scattering compensation, 1 + F0·(1/(A+B) − 1) from the
+    // renderers' own DFG table at this N·V: a white metal then reflects within 1 % of all the light.
+    const DfgLut& table = dfgLut();
+    std::snprintf(label, sizeof label, "GGX  compensated");
+    addAlbedoCurve(
+        plot, label,
+        [r, &table](const vec3& L, const vec3& V) {
+            IblLookup lookup;
+            lookup.dfg = &table;
+            const vec3 comp = energyCompensation(vec3(1.0f), lookup.dfgAt(std::max(V.z, 0.0f), r));
+            const vec3 I = shadeLightScaled(vec3(0.0f, 0.0f, 1.0f), L, V, vec3(1.0f), vec3(0.0f), vec3(1.0f), r,
+                                            SL_MODEL_PBR, false, true, comp);
+            return (I.x + I.y + I.z) / 3.0f;
+        },
+        true);
     return plot;
 }
 

@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 #include <iterator>
+#include <string>
 
 namespace shadelab::app {
 namespace {
@@ -20,6 +21,29 @@ float radioWidth(const char* label) {
     return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
 }
 
+// pbr only: the environment that lights its surfaces (image-based lighting) and the energy compensation.
+// The environment's file is the scene's; choosing another means editing the scene file (loading and
+// prefiltering one takes a noticeable moment).
+void drawEnvironmentControls(ViewerState& s) {
+    bool compensate = s.scene.energyCompensation;
+    if (ImGui::Checkbox("energy compensation (multiple scattering)", &compensate)) setEnergyCompensation(s, compensate);
+    bool lit = s.scene.environment.has_value();
+    const std::string label = !lit                            ? std::string("environment light (IBL): off")
+                              : s.scene.environment->hdr.empty() ? std::string("environment light: uniform background")
+                                                                 : "environment light: " + s.scene.environment->hdr;
+    if (ImGui::Checkbox(label.c_str(), &lit)) {
+        Environment e;  // uniform: radiance = background
+        if (!lit) setEnvironment(s, std::nullopt);
+        else setEnvironment(s, e);
+    }
+    if (s.scene.environment) {
+        Environment e = *s.scene.environment;
+        bool changed = ImGui::SliderFloat("intensity##env", &e.intensity, 0.0f, 4.0f, "%.2f");
+        if (!e.hdr.empty()) changed |= ImGui::SliderFloat("rotation##env", &e.rotation, -180.0f, 180.0f, "%.0f deg");
+        if (changed) setEnvironment(s, e);
+    }
+}
+
 }  // namespace
 
 void drawLightingSection(PanelContext& ctx) {
@@ -34,6 +58,8 @@ void drawLightingSection(PanelContext& ctx) {
     if (s.scene.model != ShadingModel::Pbr) {
         bool normalized = s.scene.normalized;
         if (ImGui::Checkbox("normalized lobe  (s+2)/2, (s+8)/8", &normalized)) setNormalized(s, normalized);
+    } else {
+        drawEnvironmentControls(s);
     }
 
     ImGui::TextDisabled("Terms");
@@ -70,8 +96,9 @@ void drawLightingSection(PanelContext& ctx) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped(
             s.scene.model == ShadingModel::Pbr
-                ? "pbr: lit by the ambient term only until image-based lighting lights it from the background; "
-                  "then GGX's missing multiple scattering shows as dark rims at high roughness."
+                ? "pbr: lit by the uniform environment (image-based lighting). GGX without energy compensation "
+                  "misses its multiple scattering: a white metal shows dark rims that grow with roughness. Tick "
+                  "'energy compensation' below and they vanish."
                 : "Phong and Blinn-Phong are lit by the ambient term only, a constant that knows nothing of the "
                   "lobe, so every object vanishes. The albedo plot (Material) shows what each lobe reflects.");
         ImGui::PopStyleColor();

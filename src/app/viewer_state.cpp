@@ -289,6 +289,16 @@ void applyOrbit(ViewerState& state, const OrbitCamera& orbit) {
     markCameraChanged(state);
 }
 
+void setEnvironment(ViewerState& state, std::optional<Environment> environment) {
+    state.scene.environment = std::move(environment);
+    markChanged(state);
+}
+
+void setEnergyCompensation(ViewerState& state, bool on) {
+    state.scene.energyCompensation = on;
+    markChanged(state);
+}
+
 void setStageOn(ViewerState& state, bool on) {
     if (on == hasStage(state.scene)) return;
     setStage(state.scene, on);

@@ -102,6 +102,9 @@ void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool a
 // restores it (keeping the camera, model and `normalized` changed meanwhile). Edits made in the furnace are
 // dropped when it is turned off. Opening a scene leaves it.
 void setWhiteFurnace(ViewerState& state, bool on);
+// pbr's image-based lighting (scene/environment.h; nullopt: none) and multiple-scattering compensation.
+void setEnvironment(ViewerState& state, std::optional<Environment> environment);
+void setEnergyCompensation(ViewerState& state, bool on);
 inline bool whiteFurnaceOn(const ViewerState& state) { return state.beforeFurnace.has_value(); }
 
 // --- rasterizer settings (scene.raster; the tracer ignores them) ---

@@ -22,6 +22,10 @@ Scene whiteFurnaceScene(const Scene& scene, const WhiteFurnaceSettings& settings
     Scene f = scene;
     const glm::vec3 radiance(std::max(settings.radiance, 0.0f));
     f.background = radiance;
+    // A uniform environment of that radiance: under pbr it lights the surfaces through image-based lighting
+    // (it replaces Ia·ma there), so GGX's energy loss shows as rings and energyCompensation removes them.
+    // Phong and Blinn-Phong keep the lecture's Ia·ma as the stand-in for it.
+    f.environment = Environment{};
     f.ambient = settings.ambient ? radiance : glm::vec3(0.0f);
     f.lights.clear();
     f.terms.ambient = settings.ambient;

@@ -16,7 +16,8 @@ struct WhiteFurnaceSettings {
 };
 
 // The furnace version of `scene`. It sets scene fields only, nothing a renderer must know about:
-// - background = radiance (grey), Ia = radiance with the ambient term on (or Ia = 0 and off), no lights;
+// - background = radiance (grey) and a uniform environment of it (image-based lighting under pbr), Ia =
+//   radiance with the ambient term on (or Ia = 0 and off), no lights;
 // - every material white: ma = baseColor = 1; the lecture's md + ms = 1 (ms = the mean of ms, clamped to
 //   [0, 1], md = 1 − ms), so a lobe that conserves energy reflects all of it; s, metallic and roughness kept;
 //   kr = kt = 0 (no mirror or glass paths: the surface's own BRDF is on trial); a checker's md2 = md;
