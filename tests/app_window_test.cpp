@@ -532,8 +532,9 @@ TEST(AppWindow, StatusMessagesNeverMoveTheControls) {
     const Image8 a = readPng(quiet), b = readPng(told), c = readPng(selected);
     ASSERT_EQ(a.width, b.width);
     ASSERT_EQ(a.height, b.height);
-    // The panel below its header and the two-line status area: 440 window units wide, from y = 110 down.
-    const int panelW = 440, top = 110;
+    // The panel below its header and the two-line status area: 440 window units wide at most, and at most half
+    // the window (app/viewer.cpp computeLayout), from y = 110 down.
+    const int panelW = std::min(440, a.width / 2), top = 110;
     auto panelRowsDiffer = [&](const Image8& x, const Image8& y) {
         int rows = 0;
         for (int row = top; row < x.height; ++row)

@@ -1,6 +1,7 @@
 // SceneHandle: scene documents parsed as scene files are, with mesh imports reused across edits.
 #include "python/scene_handle.h"
 
+#include "scene/environment_load.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 #include "scene/scene_load.h"
@@ -111,6 +112,13 @@ Scene SceneHandle::build(const nlohmann::json& doc, std::vector<std::string>& wa
         used.push_back(std::move(imp));
     }
     imports_ = std::move(used);
+    // The environment's .hdr is read and prefiltered as loadScene does; an unchanged file keeps its map.
+    if (next.environment && !next.environment->hdr.empty()) {
+        if (scene_.environment && scene_.environment->hdr == next.environment->hdr && scene_.environment->map)
+            next.environment->map = scene_.environment->map;
+        else
+            loadEnvironment(next, baseDir_);
+    }
     return next;
 }
 
