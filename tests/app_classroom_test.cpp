@@ -142,7 +142,8 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
               "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular  \xc2\xb7  raster | reference");
     applyProgression(s, 5);
     EXPECT_EQ(termsCaption(s.scene.terms), "ambient + diffuse + specular + shadows + reflections");
-    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections}) setTerm(s, t, false);
+    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
+        setTerm(s, t, false);
     EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
@@ -229,7 +230,8 @@ TEST(AppFileList, ListsFoldersThenScenesAndRemembersRecentFiles) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir + "/sub");
     std::filesystem::create_directories(dir + "/.hidden");
-    for (const char* f : {"b.json", "a.GLB", "model.gltf", "notes.txt", "shot.png"}) std::ofstream(dir + "/" + f) << "x";
+    for (const char* f : {"b.json", "a.GLB", "model.gltf", "notes.txt", "shot.png"})
+        std::ofstream(dir + "/" + f) << "x";
     const FileList list = listSceneFolder(dir);
     EXPECT_TRUE(list.error.empty()) << list.error;
     std::vector<std::string> names;

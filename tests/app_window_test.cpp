@@ -326,14 +326,18 @@ TEST(AppWindow, UndoRestoresARemovedLightExactly) {
     const std::string before = test::outputPath("undo_before.png"), removed = test::outputPath("undo_removed.png");
     const std::string undone = test::outputPath("undo_undone.png"), redone = test::outputPath("undo_redone.png");
     const std::string script = writeText("undo_script.json", R"({"actions": [
-        {"frame": 4, "action": "screenshot", "path": ")" + before + R"("},
+        {"frame": 4, "action": "screenshot", "path": ")" + before +
+                                                                 R"("},
         {"frame": 5, "action": "removeLight", "index": 0},
-        {"frame": 7, "action": "screenshot", "path": ")" + removed + R"("},
+        {"frame": 7, "action": "screenshot", "path": ")" + removed +
+                                                                 R"("},
         {"frame": 8, "action": "orbit", "yaw": 0},
         {"frame": 9, "action": "undo"},
-        {"frame": 11, "action": "screenshot", "path": ")" + undone + R"("},
+        {"frame": 11, "action": "screenshot", "path": ")" + undone +
+                                                                 R"("},
         {"frame": 12, "action": "redo"},
-        {"frame": 14, "action": "screenshot", "path": ")" + redone + R"("}
+        {"frame": 14, "action": "screenshot", "path": ")" + redone +
+                                                                 R"("}
     ]})");
     Result v = view(scenePath + " --size " + kSize + " --frames 16 --script " + script);
     ASSERT_EQ(v.code, 0) << v.out;
@@ -349,8 +353,8 @@ TEST(AppWindow, SaveNeverWritesOverAModel) {
     const std::string original = readFile(model);
     const std::string script =
         writeText("save_model_script.json", R"([{"action": "saveScene", "path": ")" + model + R"("}])");
-    Result v = view(test::sourcePath("assets/scenes/default.json") + " --size " + kSize + " --frames 3 --script " +
-                    script);
+    Result v =
+        view(test::sourcePath("assets/scenes/default.json") + " --size " + kSize + " --frames 3 --script " + script);
     EXPECT_EQ(v.code, 1) << v.out;
     EXPECT_NE(v.out.find("refusing to save scene JSON over a glTF model"), std::string::npos) << v.out;
     EXPECT_EQ(readFile(model), original) << "the model was changed";
@@ -388,14 +392,16 @@ TEST(AppWindow, DraggingALightMarkerMovesTheLightAndItsShadow) {
     const glm::ivec2 from = pixelOf(scene, scene.lights[0].position);
     const glm::ivec2 to(from.x + 90, from.y + 10);
     ASSERT_TRUE(from.x > 0 && from.y > 0 && to.x < kW && to.y < kH) << from.x << "," << from.y;
-    const std::string before = test::outputPath("light_drag_before.png"), after = test::outputPath("light_drag_after.png");
+    const std::string before = test::outputPath("light_drag_before.png"),
+                      after = test::outputPath("light_drag_after.png");
     const std::string saved = test::outputPath("light_drag_saved.json");
     const std::string script = writeText("light_drag_script.json", R"([
         {"frame": 1, "action": "setLight", "index": 0, "position": [-2, 3, 2]},
         {"frame": 3, "action": "screenshot", "path": ")" + before + R"("},
-        {"action": "drag", "x0": )" + std::to_string(from.x) + R"(, "y0": )" + std::to_string(from.y) +
-                                                                R"(, "x1": )" + std::to_string(to.x) + R"(, "y1": )" +
-                                                                std::to_string(to.y) + R"(},
+        {"action": "drag", "x0": )" + std::to_string(from.x) + R"(, "y0": )" +
+                                                                       std::to_string(from.y) + R"(, "x1": )" +
+                                                                       std::to_string(to.x) + R"(, "y1": )" +
+                                                                       std::to_string(to.y) + R"(},
         {"action": "screenshot", "path": ")" + after + R"("},
         {"action": "saveScene", "path": ")" + saved + R"("}])");
     Result v = view(scenePath + " --size " + kSize + " --frames 4 --script " + script);
@@ -424,12 +430,14 @@ TEST(AppWindow, StillFrameAccumulatesToTheSupersampledRender) {
     const std::string scenePath = test::sourcePath("assets/scenes/default.json");
     const std::string smooth = test::outputPath("smooth_view.png"), plain = test::outputPath("smooth_plain_view.png");
     const std::string script = writeText("smooth_script.json", R"([
-        {"frame": 1, "action": "smoothScreenshot", "path": ")" + smooth + R"("},
+        {"frame": 1, "action": "smoothScreenshot", "path": ")" + smooth +
+                                                                   R"("},
         {"action": "screenshot", "path": ")" + plain + R"("}])");
     Result v = view(scenePath + " --size " + kSize + " --frames 2 --verbose --script " + script);
     ASSERT_EQ(v.code, 0) << v.out;
     EXPECT_NE(v.out.find("smooth frame, 16 samples"), std::string::npos) << v.out;
-    const std::string ss16 = test::outputPath("smooth_render_spp16.png"), ss1 = test::outputPath("smooth_render_spp1.png");
+    const std::string ss16 = test::outputPath("smooth_render_spp16.png"),
+                      ss1 = test::outputPath("smooth_render_spp1.png");
     ASSERT_EQ(render(scenePath, ss16, "--spp 16").code, 0);
     ASSERT_EQ(render(scenePath, ss1).code, 0);
     // The same samples averaged in another order: within 1/255 (a running average in float against a box
@@ -522,11 +530,14 @@ TEST(AppWindow, StatusMessagesNeverMoveTheControls) {
     const std::string quiet = test::outputPath("status_quiet.png"), told = test::outputPath("status_told.png");
     const std::string selected = test::outputPath("status_selected.png");
     const std::string script = writeText("status_script.json", R"([
-        {"frame": 3, "action": "windowScreenshot", "path": ")" + quiet + R"("},
+        {"frame": 3, "action": "windowScreenshot", "path": ")" + quiet +
+                                                                   R"("},
         {"frame": 4, "action": "open", "path": ")" + scenePath + R"("},
-        {"frame": 6, "action": "windowScreenshot", "path": ")" + told + R"("},
+        {"frame": 6, "action": "windowScreenshot", "path": ")" + told +
+                                                                   R"("},
         {"frame": 7, "action": "select", "object": "gold"},
-        {"frame": 9, "action": "windowScreenshot", "path": ")" + selected + R"("}])");
+        {"frame": 9, "action": "windowScreenshot", "path": ")" + selected +
+                                                                   R"("}])");
     Result v = view(scenePath + " --size " + kSize + " --ui-scale 1 --frames 10 --script " + script);
     ASSERT_EQ(v.code, 0) << v.out;
     const Image8 a = readPng(quiet), b = readPng(told), c = readPng(selected);

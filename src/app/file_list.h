@@ -14,10 +14,10 @@ struct FileEntry {
 };
 
 struct FileList {
-    std::string folder;             // absolute, normalised
-    std::vector<FileEntry> entries; // "../" first (unless at the root), then folders, then scene files, by name
-    std::string error;              // why the folder could not be read; empty when it was
-    bool truncated = false;         // more than kMaxEntries
+    std::string folder;              // absolute, normalised
+    std::vector<FileEntry> entries;  // "../" first (unless at the root), then folders, then scene files, by name
+    std::string error;               // why the folder could not be read; empty when it was
+    bool truncated = false;          // more than kMaxEntries
 };
 
 inline constexpr size_t kMaxFileListEntries = 500;

@@ -36,7 +36,8 @@ glm::vec3 anchorOf(const Light& light, const SceneSphere& sphere) {
 bool project(const ViewSetup& v, const glm::vec3& p, glm::vec2& pixel) {
     const glm::vec4 clip = v.viewProj * glm::vec4(p, 1.0f);
     if (clip.w <= 1e-6f) return false;
-    pixel = {(clip.x / clip.w * 0.5f + 0.5f) * float(v.width), (1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(v.height)};
+    pixel = {(clip.x / clip.w * 0.5f + 0.5f) * float(v.width),
+             (1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(v.height)};
     return std::isfinite(pixel.x) && std::isfinite(pixel.y);
 }
 

@@ -18,11 +18,11 @@
 namespace shadelab::app {
 
 struct LightMarker {
-    int light = 0;            // index into scene.lights
-    bool visible = false;     // drawn: always, a light behind the camera at the edge toward it
-    glm::vec3 anchor{0.0f};   // world point the marker stands for
-    glm::vec2 pixel{0.0f};    // image pixels (x right, y down, pixel centres at .5)
-    glm::vec2 arrowTip{0.0f}; // directional lights: where the arrow points (image pixels)
+    int light = 0;             // index into scene.lights
+    bool visible = false;      // drawn: always, a light behind the camera at the edge toward it
+    glm::vec3 anchor{0.0f};    // world point the marker stands for
+    glm::vec2 pixel{0.0f};     // image pixels (x right, y down, pixel centres at .5)
+    glm::vec2 arrowTip{0.0f};  // directional lights: where the arrow points (image pixels)
     // Where the marker is drawn and grabbed: `pixel`, or for a light outside the image (the default scene's
     // lights are above the frame), the nearest point kMarkerInset pixels inside the image's edge.
     glm::vec2 shown{0.0f};

@@ -37,9 +37,9 @@ void drawSidePanel(PanelContext& ctx, float width, float height, bool overlay) {
     // What the file asked for that shadelab does not draw (textures, extensions): said where it is seen.
     if (!ctx.state.loadWarnings.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.35f, 1.0f));
-        const bool open = ImGui::TreeNodeEx("##filenotes", ImGuiTreeNodeFlags_DefaultOpen,
-                                            "this file uses %zu thing(s) shadelab ignores",
-                                            ctx.state.loadWarnings.size());
+        const bool open =
+            ImGui::TreeNodeEx("##filenotes", ImGuiTreeNodeFlags_DefaultOpen,
+                              "this file uses %zu thing(s) shadelab ignores", ctx.state.loadWarnings.size());
         if (open) {
             const std::string prefix = ctx.state.scenePath + ": ";
             for (const std::string& w : ctx.state.loadWarnings)

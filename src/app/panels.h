@@ -34,18 +34,21 @@ struct UiFields {
     std::string savePath;
     std::string confirmReplace;
     FileList files;                   // the file list's folder, as last read
-    std::vector<std::string> recent;  // scenes opened in this session, newest first  // an existing file Save waits to replace until the user confirms
+    std::vector<std::string> recent;  // scenes opened in this session, newest first  // an existing file Save waits to
+                                      // replace until the user confirms
     std::string screenshotPath = "shadelab-view.png";
     std::vector<ColorIntensity> lightSplits;  // per light: the colour and intensity as last edited
     bool captions = true;
     bool lightMarkers = true;
-    bool smooth = true;              // accumulate a supersampled still frame in Raster mode (accumulation.h)        // a marker per light in the image, draggable            // the model, terms and mode written on the image (key C)
-    bool convertAllObjects = false;  // the equivalent-exponent buttons act on every object
-    bool lessonFolded = false;       // the lesson window was folded for the probe
-    bool probeWindowMoved = false;   // the user dragged the probe window: it stays put until the probe goes
-    float probeWindowWidth = 0.0f;   // window units, as last drawn (for placing it inside the image)
-    float lobeIncidence = 30.0f;     // degrees: the lobe plots' angle of incidence when no probe is set
-    float lobeAxis = 90.0f;          // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
+    bool smooth =
+        true;  // accumulate a supersampled still frame in Raster mode (accumulation.h)        // a marker per light in
+               // the image, draggable            // the model, terms and mode written on the image (key C)
+    bool convertAllObjects = false;    // the equivalent-exponent buttons act on every object
+    bool lessonFolded = false;         // the lesson window was folded for the probe
+    bool probeWindowMoved = false;     // the user dragged the probe window: it stays put until the probe goes
+    float probeWindowWidth = 0.0f;     // window units, as last drawn (for placing it inside the image)
+    float lobeIncidence = 30.0f;       // degrees: the lobe plots' angle of incidence when no probe is set
+    float lobeAxis = 90.0f;            // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
     std::optional<AlbedoPlot> albedo;  // the albedo plot, recomputed when its settings change
 };
 

@@ -28,13 +28,15 @@ void drawEnvironmentControls(ViewerState& s) {
     bool compensate = s.scene.energyCompensation;
     if (ImGui::Checkbox("energy compensation (multiple scattering)", &compensate)) setEnergyCompensation(s, compensate);
     bool lit = s.scene.environment.has_value();
-    const std::string label = !lit                            ? std::string("environment light (IBL): off")
+    const std::string label = !lit                               ? std::string("environment light (IBL): off")
                               : s.scene.environment->hdr.empty() ? std::string("environment light: uniform background")
                                                                  : "environment light: " + s.scene.environment->hdr;
     if (ImGui::Checkbox(label.c_str(), &lit)) {
         Environment e;  // uniform: radiance = background
-        if (!lit) setEnvironment(s, std::nullopt);
-        else setEnvironment(s, e);
+        if (!lit)
+            setEnvironment(s, std::nullopt);
+        else
+            setEnvironment(s, e);
     }
     if (s.scene.environment) {
         Environment e = *s.scene.environment;

@@ -158,7 +158,8 @@ void diagram(const ProbeResult& p, float uiScale) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 base(origin.x + radius + pad + 30.0f * uiScale, origin.y + radius + pad);
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddLine(ImVec2(base.x - radius - pad, base.y), ImVec2(base.x + radius + pad, base.y), IM_COL32(150, 150, 150, 255),
+    dl->AddLine(ImVec2(base.x - radius - pad, base.y), ImVec2(base.x + radius + pad, base.y),
+                IM_COL32(150, 150, 150, 255),
                 2.0f * uiScale);  // the surface
     dl->AddCircle(base, radius, IM_COL32(90, 90, 90, 160), 48, 1.0f);
     for (const DiagramArrow& a : d.arrows) {

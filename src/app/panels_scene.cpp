@@ -43,8 +43,10 @@ void drawFileList(PanelContext& ctx) {
         if (ImGui::Selectable(e.name.c_str(), e.path == ctx.state.scenePath)) next = e.path;
         if (e.folder) ImGui::PopStyleColor();
         if (!next.empty()) {
-            if (e.folder) f.files = listSceneFolder(next);
-            else ctx.services.openScene(next);
+            if (e.folder)
+                f.files = listSceneFolder(next);
+            else
+                ctx.services.openScene(next);
             break;
         }
     }

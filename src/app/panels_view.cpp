@@ -12,7 +12,8 @@ namespace {
 void metricsTable(const CompareResult& r) {
     // The numbers behind the words, with the verdict under the strict gates CI uses, folded away: in front
     // of a class a bare "FAIL" on the lesson scene reads as a fault, which it is not.
-    if (!ImGui::TreeNode("metrics", "metrics per region (%s under the design.md section 4 gates)", r.pass ? "within" : "outside"))
+    if (!ImGui::TreeNode("metrics", "metrics per region (%s under the design.md section 4 gates)",
+                         r.pass ? "within" : "outside"))
         return;
     if (ImGui::BeginTable("metrics", 4, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerH)) {
         ImGui::TableSetupColumn("region");
@@ -101,8 +102,7 @@ void drawViewSection(PanelContext& ctx) {
         if (ctx.metrics) {
             ImGui::TextWrapped("%s", ctx.metricsWords.c_str());
             metricsTable(*ctx.metrics);
-        }
-        else
+        } else
             ImGui::TextDisabled("metrics when the reference is complete");
     }
 }

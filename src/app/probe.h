@@ -45,9 +45,9 @@ struct ProbeResult {
     Material material;                    // the object's, with the checker tile's md at P
     glm::vec3 ambient{0.0f};              // Ia ⊙ ma
     std::vector<ProbeLight> lights;
-    glm::vec3 totalPhong{0.0f};  // shadeLocal with the scene's term switches, Phong
-    glm::vec3 totalBlinn{0.0f};  // the same, Blinn-Phong
-    glm::vec3 totalPbr{0.0f};    // the same, pbr
+    glm::vec3 totalPhong{0.0f};                    // shadeLocal with the scene's term switches, Phong
+    glm::vec3 totalBlinn{0.0f};                    // the same, Blinn-Phong
+    glm::vec3 totalPbr{0.0f};                      // the same, pbr
     glm::vec3 pbrDiffuseColor{0.0f}, pbrF0{0.0f};  // c_diff (of the checker tile at P) and F0 (shading::surfaceParams)
 };
 

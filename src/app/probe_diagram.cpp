@@ -38,7 +38,9 @@ ProbeDiagram probeDiagram(const ProbeResult& probe, size_t light) {
         d.arrows.push_back({"H", at(thetaH, hRight), thetaH});
         // V against the plane spanned by N and L (the plane of incidence).
         glm::vec3 normal = glm::cross(N, l.L);
-        if (glm::length(normal) > 1e-6f) d.vOutOfPlaneDeg = glm::degrees(std::asin(std::clamp(std::fabs(glm::dot(glm::normalize(normal), V)), 0.0f, 1.0f)));
+        if (glm::length(normal) > 1e-6f)
+            d.vOutOfPlaneDeg =
+                glm::degrees(std::asin(std::clamp(std::fabs(glm::dot(glm::normalize(normal), V)), 0.0f, 1.0f)));
     }
     const float thetaV = angleBetween(N, V);
     const bool vRight = glm::length(towardR) < 1e-6f || glm::dot(V - N * glm::dot(N, V), towardR) >= 0.0f;

@@ -15,9 +15,9 @@
 namespace shadelab::app {
 
 struct DiagramArrow {
-    std::string name;        // "N", "L", "R", "V", "H"
-    glm::vec2 dir{0.0f};     // unit, x right, y up; the surface is the line y = 0
-    float angleDeg = 0.0f;   // angle from N, degrees
+    std::string name;       // "N", "L", "R", "V", "H"
+    glm::vec2 dir{0.0f};    // unit, x right, y up; the surface is the line y = 0
+    float angleDeg = 0.0f;  // angle from N, degrees
 };
 
 struct ProbeDiagram {

@@ -145,8 +145,8 @@ using Action =
                  actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
                  actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::WhiteFurnace, actions::Screenshot,
                  actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
-                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot, actions::Undo,
-                 actions::Redo>;
+                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag,
+                 actions::SmoothScreenshot, actions::Undo, actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

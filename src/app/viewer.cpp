@@ -343,7 +343,8 @@ void Viewer::drawLightMarkers() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const std::vector<LightMarker> markers = lightMarkers(state_.scene, renderW_, renderH_);
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const int hover = draggingLight_ >= 0 ? draggingLight_ : markerAt(markers, imagePixelF(mouse.x, mouse.y), markerPickRadius());
+    const int hover =
+        draggingLight_ >= 0 ? draggingLight_ : markerAt(markers, imagePixelF(mouse.x, mouse.y), markerPickRadius());
     const float r = 7.0f * uiScale_;
     for (const LightMarker& m : markers) {
         if (!m.visible) continue;
@@ -356,8 +357,8 @@ void Viewer::drawLightMarkers() {
             const ImVec2 p0(at.x + d.x * (r + 9.0f * uiScale_), at.y + d.y * (r + 9.0f * uiScale_));
             const ImVec2 side(-d.y * 5.0f * uiScale_, d.x * 5.0f * uiScale_);
             const ImVec2 base(at.x + d.x * (r + 2.0f * uiScale_), at.y + d.y * (r + 2.0f * uiScale_));
-            dl->AddTriangleFilled(p0, ImVec2(base.x + side.x, base.y + side.y), ImVec2(base.x - side.x, base.y - side.y),
-                                  IM_COL32(255, 255, 255, 220));
+            dl->AddTriangleFilled(p0, ImVec2(base.x + side.x, base.y + side.y),
+                                  ImVec2(base.x - side.x, base.y - side.y), IM_COL32(255, 255, 255, 220));
         } else if (light.type == LightType::Directional) {
             const ImVec2 tip = windowPoint(m.arrowTip);
             dl->AddLine(at, tip, IM_COL32(0, 0, 0, 200), 4.0f * uiScale_);
@@ -376,7 +377,9 @@ void Viewer::drawLightMarkers() {
 }
 
 // kMarkerPickRadius window units, in image pixels.
-float Viewer::markerPickRadius() const { return kMarkerPickRadius * uiScale_ * float(renderW_) / std::max(imageW_, 1.0f); }
+float Viewer::markerPickRadius() const {
+    return kMarkerPickRadius * uiScale_ * float(renderW_) / std::max(imageW_, 1.0f);
+}
 
 ImVec2 Viewer::windowPoint(glm::vec2 pixel) const {
     return ImVec2(imageX_ + pixel.x / float(renderW_) * imageW_, imageY_ + pixel.y / float(renderH_) * imageH_);
@@ -410,13 +413,13 @@ void Viewer::drawCaptions() {
         at.x = std::clamp(at.x, visibleLeft(), std::max(visibleLeft(), imageX_ + imageW_ - extent.x - 2.0f * pad));
         dl->AddRectFilled(at, ImVec2(at.x + extent.x + 2.0f * pad, at.y + extent.y + 2.0f * pad),
                           IM_COL32(0, 0, 0, 150), 3.0f * uiScale_);
-        dl->AddText(font, textSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr,
-                    wrap);
+        dl->AddText(font, textSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr, wrap);
         return extent.y + 2.0f * pad;
     };
     const std::string caption = imageCaption(state_);
     // Below the row where lights outside the frame put their markers (light_markers.h).
-    const float top = imageY_ + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * imageH_ / float(renderH_) : 0.0f);
+    const float top =
+        imageY_ + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * imageH_ / float(renderH_) : 0.0f);
     const float height = label(ImVec2(visibleLeft() + margin, top), caption.c_str(), false);
     if (state_.mode == ViewMode::Split) {
         const float wipe = imageX_ + state_.splitPosition * imageW_;

@@ -97,7 +97,7 @@ private:
         actions::Drag drag;
         int frame = 0;
     };
-    std::optional<SyntheticDrag> drag_;  // a scripted drag in progress
+    std::optional<SyntheticDrag> drag_;         // a scripted drag in progress
     const ScriptAction* smoothShot_ = nullptr;  // a smoothScreenshot waiting for the smooth frame
     double waitStarted_ = 0.0;
 
@@ -115,7 +115,7 @@ private:
     float fbScale_ = 1.0f, uiScale_ = 1.0f;
     float panelWidth_ = 0.0f;
     bool showPanel_ = true;
-    bool overlayPanel_ = false;  // projector mode (key F11): the panel lies over a full-window image
+    bool overlayPanel_ = false;   // projector mode (key F11): the panel lies over a full-window image
     bool panelOverlays_ = false;  // as laid out this frame (also when the panel is too wide to sit beside)
     float imageX_ = 0, imageY_ = 0, imageW_ = 0, imageH_ = 0;  // where the image is shown
     ImageRect fbRect_;                                         // the same in framebuffer pixels (GL)

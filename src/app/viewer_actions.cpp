@@ -87,7 +87,8 @@ void Viewer::performAction(const ScriptAction& a) {
                 writeProbeReport(x.path);
             } else if constexpr (std::is_same_v<T, SaveScene>) {
                 if (const std::string why = saveRefusal(x.path); !why.empty())
-                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "].path", x.path + ": " + why);
+                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "].path",
+                                     x.path + ": " + why);
                 saveSceneJson(state_.scene, x.path);
             } else if constexpr (std::is_same_v<T, SmoothScreenshot>) {
                 smoothShot_ = &a;

@@ -73,10 +73,10 @@ void Viewer::handleMouse() {
     const ImVec2 m = io.MousePos;
     const bool overImage = m.x >= imageX_ && m.x < imageX_ + imageW_ && m.y >= imageY_ && m.y < imageY_ + imageH_;
     if (!io.WantCaptureMouse && overImage) {
-        const int marker = fields_.lightMarkers && ImGui::IsMouseClicked(0)
-                               ? markerAt(lightMarkers(state_.scene, renderW_, renderH_), imagePixelF(m.x, m.y),
-                                          markerPickRadius())
-                               : -1;
+        const int marker =
+            fields_.lightMarkers && ImGui::IsMouseClicked(0)
+                ? markerAt(lightMarkers(state_.scene, renderW_, renderH_), imagePixelF(m.x, m.y), markerPickRadius())
+                : -1;
         if (marker >= 0) {
             draggingLight_ = marker;  // a drag on a light's marker moves the light, not the camera
         } else if (ImGui::IsMouseClicked(0)) {

@@ -122,7 +122,8 @@ void Viewer::initWindow() {
     const int panel = overlayPanel_ ? 0 : int(kViewerPanelWidth * uiScale_);
     // Default: a 16:9 image area of up to 1280x720 next to the panel, as `shadelab render` frames it.
     // In projector mode: a 16:9 window as wide as the screen allows, the panel over it.
-    const int imageW = overlayPanel_ ? int(0.95f * float(screenW)) : std::min(1280, int(0.95f * float(screenW)) - panel);
+    const int imageW =
+        overlayPanel_ ? int(0.95f * float(screenW)) : std::min(1280, int(0.95f * float(screenW)) - panel);
     int w = panel + imageW, h = overlayPanel_ ? imageW * 9 / 16 : std::max(imageW * 9 / 16, int(720 * uiScale_));
     if (options_.width > 0) {
         w = options_.width + panel;

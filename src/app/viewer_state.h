@@ -34,21 +34,21 @@ struct ProbeState {
 };
 
 struct ViewerState {
-    Scene scene;            // what both renderers draw and what Save writes
-    std::string scenePath;  // the file it was opened from; empty for none
+    Scene scene;                            // what both renderers draw and what Save writes
+    std::string scenePath;                  // the file it was opened from; empty for none
     std::vector<std::string> loadWarnings;  // what loading it warned about (ignored features), for the panel
-    Camera fileCamera;      // the scene file's camera, restored by resetCamera (key R)
-    OrbitCamera orbit;      // scene.camera as orbit parameters; written back on every move
+    Camera fileCamera;                      // the scene file's camera, restored by resetCamera (key R)
+    OrbitCamera orbit;                      // scene.camera as orbit parameters; written back on every move
     ViewMode mode = ViewMode::Raster;
     Encoding encoding = Encoding::Srgb;
     uint32_t selected = 0;  // coverage id of the selected object (scene/coverage.h), 0 = none
     ProbeState probe;
-    float splitPosition = 0.5f;      // Split mode wipe, fraction of the image width from the left
-    int heatGain = 16;               // Difference mode amplification (compare_report.h)
-    uint64_t revision = 1;           // bumped by every change a renderer can see
-    uint64_t referenceRevision = 1;  // bumped by every change the tracer can see (not scene.raster)
-    uint64_t geometryRevision = 1;   // bumped when the meshes change (a new scene)
-    uint64_t editRevision = 1;       // bumped by every change but the camera's: what undo steps over
+    float splitPosition = 0.5f;          // Split mode wipe, fraction of the image width from the left
+    int heatGain = 16;                   // Difference mode amplification (compare_report.h)
+    uint64_t revision = 1;               // bumped by every change a renderer can see
+    uint64_t referenceRevision = 1;      // bumped by every change the tracer can see (not scene.raster)
+    uint64_t geometryRevision = 1;       // bumped when the meshes change (a new scene)
+    uint64_t editRevision = 1;           // bumped by every change but the camera's: what undo steps over
     std::optional<Scene> beforeFurnace;  // the scene before the white furnace, while it is on
 };
 
@@ -133,7 +133,7 @@ void frameAll(ViewerState& state);                              // key F
 void resetCamera(ViewerState& state);                           // key R: the scene file's camera
 void useCamera(ViewerState& state, const Camera& camera);
 // The stage under a model (scene/stage.h); a bare .gltf/.glb opens with it on.
-void setStageOn(ViewerState& state, bool on);         // e.g. one of a model's glTF cameras
+void setStageOn(ViewerState& state, bool on);  // e.g. one of a model's glTF cameras
 
 // --- view ---
 void setMode(ViewerState& state, ViewMode mode);

@@ -72,10 +72,9 @@ CameraChoice parseCameraFlag(const std::string& value) {
 }
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
-    std::vector<std::string> valued = {"-o",         "--output",   "--size",       "--model",
-                                       "--terms",    "--encoding", "--gl-backend", "--spp",
-                                       "--renderer", "--threads",  "--depth",      "--max-memory",
-                                       "--camera"};
+    std::vector<std::string> valued = {"-o",         "--output",     "--size",  "--model",    "--terms",
+                                       "--encoding", "--gl-backend", "--spp",   "--renderer", "--threads",
+                                       "--depth",    "--max-memory", "--camera"};
     std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());

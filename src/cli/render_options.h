@@ -32,7 +32,7 @@ struct RenderOptions {
     std::optional<ShadingModel> model;  // unset: the scene's
     std::optional<Terms> terms;         // unset: the scene's
     Encoding encoding = Encoding::Srgb;
-    int spp = 1;  // perfect square, both renderers
+    int spp = 1;                         // perfect square, both renderers
     std::optional<CameraChoice> camera;  // --camera; unset: the scene's own (a bare model: fit)
     RendererChoice renderer = RendererChoice::Raster;
     int threads = 0;           // tracer worker threads; 0 = every core

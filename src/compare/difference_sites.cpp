@@ -83,11 +83,12 @@ std::string describeDifference(const Scene& scene, const DifferenceSites& sites,
     if (sites.interior == 0) return "Nothing to compare.";
     const double percent = 100.0 * double(sites.over) / double(sites.interior);
     if (sites.over == 0) {
-        std::snprintf(buf, sizeof buf, "The raster and the reference agree within %d/255 everywhere inside the objects.",
-                      threshold);
+        std::snprintf(buf, sizeof buf,
+                      "The raster and the reference agree within %d/255 everywhere inside the objects.", threshold);
         return buf;
     }
-    std::snprintf(buf, sizeof buf, "The raster and the reference differ visibly (by more than %d/255) in %.2f %% of the image.",
+    std::snprintf(buf, sizeof buf,
+                  "The raster and the reference differ visibly (by more than %d/255) in %.2f %% of the image.",
                   threshold, percent);
     std::string text = buf;
     text += " Where:";

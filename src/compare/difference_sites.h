@@ -20,9 +20,9 @@ struct DifferenceSite {
 };
 
 struct DifferenceSites {
-    int64_t over = 0;                    // interior pixels over the threshold
-    int64_t interior = 0;                // interior pixels
-    std::vector<DifferenceSite> sites;   // most pixels first; objects with none are left out
+    int64_t over = 0;                   // interior pixels over the threshold
+    int64_t interior = 0;               // interior pixels
+    std::vector<DifferenceSite> sites;  // most pixels first; objects with none are left out
 };
 
 // Counts the interior pixels (outside the silhouette band of `result`) over `result.gates.threshold`,

@@ -37,8 +37,8 @@ TEST(DifferenceSites, CountsInteriorPixelsOverTheThresholdByObject) {
     // coverage: 1 1 1 1 1 1 3 3 3 0 (mirror, floor, background)
     std::vector<uint32_t> cov = {1, 1, 1, 1, 1, 1, 3, 3, 3, 0};
     for (int x : {0, 1, 2, 3}) b.data[size_t(x) * 3] = 110;  // four mirror pixels over
-    b.data[6 * 3 + 1] = 104;                                  // one floor pixel over (4 > 3)
-    b.data[7 * 3 + 2] = 103;                                  // at the threshold: not over
+    b.data[6 * 3 + 1] = 104;                                 // one floor pixel over (4 > 3)
+    b.data[7 * 3 + 2] = 103;                                 // at the threshold: not over
     CompareResult r;
     r.bandMask.assign(size_t(w), 0);
     r.bandMask[3] = 1;  // a band pixel is not counted

@@ -22,8 +22,7 @@ Camera chooseCamera(const Scene& scene, const CameraChoice& choice, const std::s
             const Bounds b = sceneBounds(scene);
             return b.empty() ? scene.camera : frameBounds(b, scene.camera.fovY);
         }
-        case CameraChoice::Kind::File:
-            return scene.modelCameras.empty() ? scene.camera : scene.modelCameras.front();
+        case CameraChoice::Kind::File: return scene.modelCameras.empty() ? scene.camera : scene.modelCameras.front();
         case CameraChoice::Kind::Index:
             if (size_t(choice.index) < scene.modelCameras.size()) return scene.modelCameras[size_t(choice.index)];
             break;

@@ -239,8 +239,8 @@ PrefilteredEnvironment prefilterEnvironment(const EquirectMap& map, const Prefil
     // solid angle small enough to read a mip of 16² or finer, and a small bright source (a sun) spreads
     // smoothly instead of showing as one blob per sample.
     for (int l = 1; l < env.levels; ++l)
-        lobes[size_t(l)] = lobeSamples(float(l) / float(env.levels - 1), settings.samples << (l - 1), size,
-                                       int(source.size()));
+        lobes[size_t(l)] =
+            lobeSamples(float(l) / float(env.levels - 1), settings.samples << (l - 1), size, int(source.size()));
 
     // One task per atlas row of every level.
     parallelFor(env.atlasHeight, threads, [&](int row) {
