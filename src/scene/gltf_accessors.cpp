@@ -287,7 +287,7 @@ std::string bufferViewBytes(const tinygltf::Model& model, int view, const std::s
                          "bufferView " + std::to_string(view) + " out of range (" +
                              std::to_string(model.bufferViews.size()) + " buffer views)");
     const size_t length = model.bufferViews[size_t(view)].byteLength;
-    const Span span = resolve(model, view, 0, 1, length, false, file, where);
+    const Span span = resolve(model, view, 0, length ? 1 : 0, length, false, file, where);  // 0: no stride
     return std::string(reinterpret_cast<const char*>(span.data), length);
 }
 

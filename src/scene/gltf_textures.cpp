@@ -6,6 +6,7 @@
 #include <stb_image.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -44,6 +45,18 @@ TextureSampler samplerFrom(const tinygltf::Sampler& s, const std::string& place,
     return out;
 }
 
+// Refuses an image by its header's size: a side over `maxSide`, or more texels than the budget left.
+void checkSize(uint64_t w, uint64_t h, uint64_t maxSide, uint64_t bytesLeft) {
+    if (w == 0 || h == 0) throw std::runtime_error("image has no pixels");
+    if (w > maxSide || h > maxSide)
+        throw std::runtime_error("image is " + std::to_string(w) + "x" + std::to_string(h) + ", over the limit of " +
+                                 std::to_string(maxSide) + " texels a side");
+    const uint64_t need = textureBytesFor(int(std::min<uint64_t>(w, INT32_MAX)), int(std::min<uint64_t>(h, INT32_MAX)));
+    if (need > bytesLeft)
+        throw std::runtime_error("image needs " + std::to_string(need) + " bytes of texels, over the " +
+                                 std::to_string(bytesLeft) + " left of the model's texture budget");
+}
+
 struct StbFree {
     void operator()(unsigned char* p) const { stbi_image_free(p); }
 };
@@ -58,16 +71,18 @@ std::shared_ptr<const Texture> decodeTexture(const std::string& bytes, const std
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int length = int(bytes.size());
     int w = 0, h = 0, comp = 0;
+    if (isPng(bytes)) {
+        // The size from IHDR ourselves: stb_image refuses a huge PNG with only "unknown image type".
+        if (bytes.size() < 24 || bytes.compare(12, 4, "IHDR") != 0) throw std::runtime_error("PNG without IHDR");
+        auto u32 = [&](size_t at) {
+            return uint32_t(uint8_t(bytes[at])) << 24 | uint32_t(uint8_t(bytes[at + 1])) << 16 |
+                   uint32_t(uint8_t(bytes[at + 2])) << 8 | uint32_t(uint8_t(bytes[at + 3]));
+        };
+        checkSize(u32(16), u32(20), maxSide, bytesLeft);
+    }
     if (!stbi_info_from_memory(data, length, &w, &h, &comp))
         throw std::runtime_error(std::string("cannot read the image header (") + stbi_failure_reason() + ")");
-    if (w <= 0 || h <= 0) throw std::runtime_error("image has no pixels");
-    if (uint64_t(w) > maxSide || uint64_t(h) > maxSide)
-        throw std::runtime_error("image is " + std::to_string(w) + "x" + std::to_string(h) + ", over the limit of " +
-                                 std::to_string(maxSide) + " texels a side");
-    const uint64_t need = textureBytesFor(w, h);
-    if (need > bytesLeft)
-        throw std::runtime_error("image needs " + std::to_string(need) + " bytes of texels, over the " +
-                                 std::to_string(bytesLeft) + " left of the model's texture budget");
+    checkSize(uint64_t(std::max(w, 0)), uint64_t(std::max(h, 0)), maxSide, bytesLeft);
     int w2 = 0, h2 = 0;
     std::unique_ptr<unsigned char, StbFree> pixels(stbi_load_from_memory(data, length, &w2, &h2, &comp, 4));
     if (!pixels) throw std::runtime_error(std::string("cannot decode the image (") + stbi_failure_reason() + ")");
