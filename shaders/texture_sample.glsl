@@ -7,8 +7,7 @@
 // Coordinates: glTF's (u, v), v = 0 at the image's top row, which is texel row 0 of level 0.
 // Wrap modes: 0 repeat, 1 mirrored repeat, 2 clamp to edge (TextureWrap in src/scene/texture.h, in order).
 // Level selection: lod = log2 of the larger footprint axis in level-0 texels (the OpenGL 4.6 spec's ρ,
-// §8.14.1, without anisotropy); lod <= 0 magnifies (level 0, the mag filter), lod > 0 minifies with the min
-// filter on the nearest level round(lod), clamped to the chain, or on level 0 when the sampler has no mipmaps.
+// §8.14.1, without anisotropy); then texSample's rules, which are OpenGL's.
 
 // The level-of-detail for footprint derivatives dx, dy of (u, v) per pixel step, at level-0 size w × h.
 SL_FN float texLod(int w, int h, vec2 dx, vec2 dy) {
@@ -61,11 +60,23 @@ SL_FN vec4 texSampleLevel(int map, int level, bool linear, int wrapS, int wrapT,
     return mix(a, b, ty);
 }
 
-// The filtered texel at `uv` for level-of-detail `lod` (texLod), under the sampler's modes.
+// The filtered texel at `uv` for level-of-detail `lod` (texLod), under the sampler's modes, as the OpenGL 4.6
+// spec §8.14 states them: minification from lod > c, c = 0.5 when the mag filter is bilinear and the min filter
+// nearest (else 0); between levels the nearest level (ceil(lod + 0.5) − 1) or a linear blend of levels
+// floor(lod) and floor(lod) + 1 (mipLinear), each clamped to the chain.
 SL_FN vec4 texSample(int map, int levels, int wrapS, int wrapT, bool magLinear, bool minLinear, bool mipmaps,
-                     vec2 uv, float lod) {
-    bool minify = lod > 0.0f;
-    int level = 0;
-    if (minify && mipmaps) level = clamp(int(floor(lod + 0.5f)), 0, levels - 1);
-    return texSampleLevel(map, level, minify ? minLinear : magLinear, wrapS, wrapT, uv);
+                     bool mipLinear, vec2 uv, float lod) {
+    float c = magLinear && !minLinear ? 0.5f : 0.0f;
+    if (!(lod > c) || !mipmaps) return texSampleLevel(map, 0, lod > c ? minLinear : magLinear, wrapS, wrapT, uv);
+    float top = float(levels - 1);
+    if (!mipLinear) {
+        int level = lod <= 0.5f ? 0 : int(min(ceil(lod + 0.5f) - 1.0f, top));
+        return texSampleLevel(map, level, minLinear, wrapS, wrapT, uv);
+    }
+    float l = min(lod, top);
+    int l0 = int(floor(l));
+    int l1 = min(l0 + 1, levels - 1);
+    vec4 a = texSampleLevel(map, l0, minLinear, wrapS, wrapT, uv);
+    vec4 b = texSampleLevel(map, l1, minLinear, wrapS, wrapT, uv);
+    return mix(a, b, l - float(l0));
 }

@@ -29,7 +29,7 @@ TextureWrap wrapFrom(int mode, const std::string& place, const TextureLoader::Wa
 }
 
 // glTF min filters: 9728 NEAREST, 9729 LINEAR, 9984..9987 the mipmapped ones (NEAREST/LINEAR within a
-// level × NEAREST/LINEAR between levels; shadelab selects the nearest level for both, texture_sample.h).
+// level × NEAREST/LINEAR between levels); unset is LINEAR_MIPMAP_LINEAR.
 TextureSampler samplerFrom(const tinygltf::Sampler& s, const std::string& place, const TextureLoader::Warn& warn) {
     TextureSampler out;
     out.wrapS = wrapFrom(s.wrapS, place + ".wrapS", warn);
@@ -38,9 +38,10 @@ TextureSampler samplerFrom(const tinygltf::Sampler& s, const std::string& place,
     switch (s.minFilter) {
         case 9728: out.minLinear = false, out.mipmaps = false; break;
         case 9729: out.minLinear = true, out.mipmaps = false; break;
-        case 9984:
+        case 9984: out.minLinear = false, out.mipLinear = false; break;
+        case 9985: out.mipLinear = false; break;
         case 9986: out.minLinear = false; break;
-        default: break;  // 9985, 9987 and unset: bilinear with mipmaps
+        default: break;  // 9987 and unset: trilinear
     }
     return out;
 }

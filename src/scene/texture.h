@@ -22,7 +22,8 @@ struct TextureSampler {
     TextureWrap wrapT = TextureWrap::Repeat;
     bool magLinear = true;  // magnification: bilinear (true) or nearest
     bool minLinear = true;  // minification within a level: bilinear (true) or nearest
-    bool mipmaps = true;    // minification selects a mip level (nearest level); false = level 0 only
+    bool mipmaps = true;    // minification reads the mip chain; false = level 0 only
+    bool mipLinear = true;  // between levels: blend the two nearest (true) or take the nearest one
 };
 
 struct TextureLevel {

@@ -40,6 +40,9 @@ struct TextureLookup {
     static int clamp(int x, int a, int b) { return glm::clamp(x, a, b); }
     static float max(float a, float b) { return glm::max(a, b); }
     static float floor(float a) { return glm::floor(a); }
+    static float ceil(float a) { return glm::ceil(a); }
+    static float min(float a, float b) { return glm::min(a, b); }
+    static int min(int a, int b) { return glm::min(a, b); }
     static float log2(float a) { return glm::log2(a); }
     static float dot(vec2 a, vec2 b) { return glm::dot(a, b); }
     static vec4 mix(vec4 a, vec4 b, float t) { return glm::mix(a, b, t); }

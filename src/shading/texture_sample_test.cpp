@@ -30,8 +30,9 @@ struct Chain {
         lookup.levelCount = 3;
     }
     glm::vec4 at(int x, int y) const { return l0[size_t(y * 4 + x)]; }
-    glm::vec4 sample(glm::vec2 uv, bool linear, int wrap = kTexRepeat, float lod = 0.0f, bool mipmaps = true) {
-        return lookup.texSample(0, 3, wrap, wrap, linear, linear, mipmaps, uv, lod);
+    glm::vec4 sample(glm::vec2 uv, bool linear, int wrap = kTexRepeat, float lod = 0.0f, bool mipmaps = true,
+                     bool mipLinear = false) {
+        return lookup.texSample(0, 3, wrap, wrap, linear, linear, mipmaps, mipLinear, uv, lod);
     }
 };
 
@@ -91,6 +92,15 @@ TEST(TextureSample, LevelSelection) {
     EXPECT_EQ(c.sample(uv, false, kTexRepeat, 9.0f), c.l2[0]);
     EXPECT_EQ(c.sample(uv, false, kTexRepeat, 2.0f, false), c.at(1, 1)) << "no mipmaps: level 0";
     EXPECT_EQ(c.sample(uv, false, kTexRepeat, -3.0f), c.at(1, 1)) << "magnified: level 0";
+    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 0.4f), c.at(1, 1)) << "nearest level: level 0 up to lod 0.5";
+    // Linear between levels: lod 1.25 blends levels 1 and 2 by 1/4.
+    const glm::vec4 blend = c.sample(uv, false, kTexRepeat, 1.25f, true, true);
+    const glm::vec4 want = 0.75f * c.l1[0] + 0.25f * c.l2[0];
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(blend[k], want[k], 1e-6f);
+    // Mag bilinear with min nearest: minification starts at lod 0.5 (OpenGL's c), so 0.3 is still bilinear.
+    const glm::vec4 mag = c.lookup.texSample(0, 3, kTexRepeat, kTexRepeat, true, false, true, true, {0.5f, 0.5f}, 0.3f);
+    const glm::vec4 corner = 0.25f * (c.at(1, 1) + c.at(2, 1) + c.at(1, 2) + c.at(2, 2));
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(mag[k], corner[k], 1e-6f);
 }
 
 }  // namespace

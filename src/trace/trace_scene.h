@@ -51,6 +51,11 @@ public:
     // Coverage id of the object hit (scene/coverage.h).
     uint32_t coverageId(const Hit& hit) const;
     const Material& material(const Hit& hit) const;
+    // The mesh part a triangle hit lies on.
+    const MeshPart& meshPart(const Hit& hit) const {
+        const std::pair<uint32_t, uint32_t> ref = partRef_[meshes_->part(hit.index)];
+        return scene_.meshes[ref.first].parts[ref.second];
+    }
 
 private:
     void prepare();
