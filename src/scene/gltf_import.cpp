@@ -146,18 +146,28 @@ public:
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
-        size_t textured = 0;
+        // Base-colour textures are decoded and rendered (gltf_textures.cpp); the other maps are not yet.
+        size_t otherMaps = 0, transformed = 0;
         for (size_t i = 0; i < model.materials.size(); ++i) {
-            materials_.push_back(materialFrom(model.materials[i], indexed("materials", i), out_.warnings));
-            const tinygltf::TextureInfo& base = model.materials[i].pbrMetallicRoughness.baseColorTexture;
+            const tinygltf::Material& gm = model.materials[i];
+            materials_.push_back(materialFrom(gm, indexed("materials", i), out_.warnings));
+            const tinygltf::TextureInfo& base = gm.pbrMetallicRoughness.baseColorTexture;
             if (base.index >= 0) {
-                ++textured;
+                if (base.extensions.count("KHR_texture_transform")) ++transformed;
                 materials_.back().baseColorTexture = textures_.binding(
                     base.index, base.texCoord, true, indexed("materials", i) + ".pbrMetallicRoughness.baseColorTexture");
             }
+            if (gm.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 || gm.normalTexture.index >= 0 ||
+                gm.occlusionTexture.index >= 0 || gm.emissiveTexture.index >= 0)
+                ++otherMaps;
         }
-        if (textured > 0)
-            warnOnce(std::to_string(textured) + " material(s) have a base colour texture; textures are ignored");
+        if (otherMaps > 0)
+            warnOnce(std::to_string(otherMaps) +
+                     " material(s) have metallic-roughness, normal, occlusion or emissive textures; those are ignored "
+                     "(base colour textures are rendered)");
+        if (transformed > 0)
+            warnOnce(std::to_string(transformed) +
+                     " base colour texture(s) use KHR_texture_transform, which is ignored (untransformed coordinates)");
         if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
         for (const std::string& ext : model.extensionsRequired) {
             if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
