@@ -13,6 +13,8 @@ in vec2 v2f_texcoord;
 // y, z the wrap modes of u and v, w the flags 1 mag bilinear, 2 min bilinear, 4 mipmaps, 8 linear between levels.
 uniform sampler2D t_baseColor;
 uniform ivec4 u_baseTex;
+uniform vec4 u_baseTexMatrix;  // KHR_texture_transform (texTransform)
+uniform vec2 u_baseTexOffset;
 vec4 texTexel(int map, int level, int x, int y) { return texelFetch(t_baseColor, ivec2(x, y), level); }
 int texWidth(int map, int level) { return textureSize(t_baseColor, level).x; }
 int texHeight(int map, int level) { return textureSize(t_baseColor, level).y; }
@@ -23,9 +25,10 @@ void main() {
     vec3 V = u_eye.xyz - v2f_position;
     if (u_baseTex.x > 0) {
         // The footprint from screen-space derivatives (uniform control flow: u_baseTex is a uniform).
-        float lod = texLod(texWidth(0, 0), texHeight(0, 0), dFdx(v2f_texcoord), dFdy(v2f_texcoord));
+        vec2 uv = texTransform(v2f_texcoord, u_baseTexMatrix, u_baseTexOffset);
+        float lod = texLod(texWidth(0, 0), texHeight(0, 0), dFdx(uv), dFdy(uv));
         s_tex = texSample(0, u_baseTex.x, u_baseTex.y, u_baseTex.z, (u_baseTex.w & 1) != 0, (u_baseTex.w & 2) != 0,
-                          (u_baseTex.w & 4) != 0, (u_baseTex.w & 8) != 0, v2f_texcoord, lod).rgb;
+                          (u_baseTex.w & 4) != 0, (u_baseTex.w & 8) != 0, uv, lod).rgb;
     }
     vec3 I = shadeSurface(v2f_position, N, V, u_md * s_tex);
 #if SL_ENVIRONMENT

@@ -17,6 +17,12 @@ SL_FN float texLod(int w, int h, vec2 dx, vec2 dy) {
     return 0.5f * log2(max(rho2, 1e-20f));
 }
 
+// KHR_texture_transform: uv' = R·S·uv + offset, m = (R·S) row by row (TextureBinding::uvMatrix). Affine, so
+// transforming the interpolated coordinate equals interpolating transformed ones, derivatives included.
+SL_FN vec2 texTransform(vec2 uv, vec4 m, vec2 offset) {
+    return vec2(m.x * uv.x + m.y * uv.y, m.z * uv.x + m.w * uv.y) + offset;
+}
+
 // Folds coordinate c (in units of the texture's extent) into the wrap mode's base period: [0, 1) for repeat,
 // [0, 2) for mirrored repeat, [0, 1] for clamp. Done in float so no integer % sees a negative operand.
 SL_FN float texFold(float c, int mode) {

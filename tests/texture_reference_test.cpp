@@ -53,6 +53,22 @@ TEST_F(TextureReference, BoxTexturedFrontFaceWithinTheGates) {
     }
 }
 
+// KHR_texture_transform (set here on the binding, as the importer does): rotated, scaled and offset, with
+// BoxTextured's repeat wrap. Negative control: the tracer's rotation 0.05 rad off must fail.
+TEST_F(TextureReference, TextureTransformWithinTheGatesAndRotationChangedFails) {
+    REQUIRE_BOX();
+    Scene scene = boxScene("BoxTextured-glTF-Binary/BoxTextured.glb");
+    TextureBinding& b = scene.meshes[0].parts[0].material.baseColorTexture;
+    b.rotation = 0.4f;
+    b.scale = glm::vec2(0.8f, 0.7f);
+    b.offset = glm::vec2(0.3f, -0.2f);
+    EXPECT_TRUE(compareWithReference(scene, scene, 320, 320, 0, CompareGates{}, "texture_transform").pass);
+    Scene rotated = scene;
+    rotated.meshes[0].parts[0].material.baseColorTexture.rotation = 0.45f;
+    EXPECT_FALSE(
+        compareWithReference(scene, rotated, 320, 320, 0, CompareGates{}, "texture_transform_rotated").pass);
+}
+
 TEST_F(TextureReference, SrgbDecodingSkippedFails) {
     REQUIRE_BOX();
     const Scene scene = boxScene("BoxTextured-glTF-Binary/BoxTextured.glb");

@@ -44,6 +44,9 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
         info = glm::ivec4(int(t.texture->levels.size()), wrapIndex(t.sampler.wrapS), wrapIndex(t.sampler.wrapT),
                           (t.sampler.magLinear ? 1 : 0) | (t.sampler.minLinear ? 2 : 0) | (t.sampler.mipmaps ? 4 : 0) |
                               (t.sampler.mipLinear ? 8 : 0));
+        const glm::vec4 uvMatrix = t.uvMatrix();
+        glUniform4fv(p.uniform("u_baseTexMatrix"), 1, glm::value_ptr(uvMatrix));
+        glUniform2f(p.uniform("u_baseTexOffset"), t.offset.x, t.offset.y);
         glActiveTexture(GL_TEXTURE0 + kBaseColorUnit);
         glBindTexture(GL_TEXTURE_2D, textures_.texture(t.texture));
         glActiveTexture(GL_TEXTURE0);

@@ -147,15 +147,16 @@ public:
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
         // Base-colour textures are decoded and rendered (gltf_textures.cpp); the other maps are not yet.
-        size_t otherMaps = 0, transformed = 0;
+        size_t otherMaps = 0;
         for (size_t i = 0; i < model.materials.size(); ++i) {
             const tinygltf::Material& gm = model.materials[i];
             materials_.push_back(materialFrom(gm, indexed("materials", i), out_.warnings));
             const tinygltf::TextureInfo& base = gm.pbrMetallicRoughness.baseColorTexture;
             if (base.index >= 0) {
-                if (base.extensions.count("KHR_texture_transform")) ++transformed;
+                const auto transform = base.extensions.find("KHR_texture_transform");
                 materials_.back().baseColorTexture = textures_.binding(
-                    base.index, base.texCoord, true, indexed("materials", i) + ".pbrMetallicRoughness.baseColorTexture");
+                    base.index, base.texCoord, true, indexed("materials", i) + ".pbrMetallicRoughness.baseColorTexture",
+                    transform == base.extensions.end() ? nullptr : &transform->second);
             }
             if (gm.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 || gm.normalTexture.index >= 0 ||
                 gm.occlusionTexture.index >= 0 || gm.emissiveTexture.index >= 0)
@@ -165,9 +166,6 @@ public:
             warnOnce(std::to_string(otherMaps) +
                      " material(s) have metallic-roughness, normal, occlusion or emissive textures; those are ignored "
                      "(base colour textures are rendered)");
-        if (transformed > 0)
-            warnOnce(std::to_string(transformed) +
-                     " base colour texture(s) use KHR_texture_transform, which is ignored (untransformed coordinates)");
         if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
         for (const std::string& ext : model.extensionsRequired) {
             if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")

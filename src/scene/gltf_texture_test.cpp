@@ -201,6 +201,27 @@ TEST(GltfTextures, TheBombIsRefusedBeforeDecodingEvenWithoutTheSideLimit) {
     }
 }
 
+TEST(GltfTextures, TextureTransformIsRead) {
+    std::string gltf = texturedQuad(dataUri(pngBytes(checker4())));
+    const std::string info = "\"baseColorTexture\":{\"index\":0}";
+    gltf.replace(gltf.find(info), info.size(),
+                 "\"baseColorTexture\":{\"index\":0,\"extensions\":{\"KHR_texture_transform\":"
+                 "{\"offset\":[0.25,-1],\"rotation\":0.5,\"scale\":[2,3]}}}");
+    const GltfImport g = importGltfBytes(gltf, false, "t.gltf");
+    const TextureBinding& b = g.parts[0].material.baseColorTexture;
+    ASSERT_TRUE(b);
+    EXPECT_EQ(b.offset, glm::vec2(0.25f, -1.0f));
+    EXPECT_EQ(b.rotation, 0.5f);
+    EXPECT_EQ(b.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_FALSE(anyWarningContains(g, "KHR_texture_transform"));
+    // The spec's matrix: rotation [[cos, sin], [-sin, cos]] times scale.
+    const glm::vec4 m = b.uvMatrix();
+    EXPECT_NEAR(m.x, 2.0f * std::cos(0.5f), 1e-6f);
+    EXPECT_NEAR(m.y, 3.0f * std::sin(0.5f), 1e-6f);
+    EXPECT_NEAR(m.z, -2.0f * std::sin(0.5f), 1e-6f);
+    EXPECT_NEAR(m.w, 3.0f * std::cos(0.5f), 1e-6f);
+}
+
 TEST(GltfTextures, TextureCountLimit) {
     GltfLimits limits;
     limits.maxTextures = 0;

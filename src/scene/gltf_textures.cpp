@@ -2,11 +2,13 @@
 #include "scene/gltf_textures.h"
 
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_values.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -91,9 +93,31 @@ std::shared_ptr<const Texture> decodeTexture(const std::string& bytes, const std
     return makeTexture(name, pixels.get(), w, h, srgb);
 }
 
-TextureBinding TextureLoader::binding(int index, int texCoord, bool srgb, const std::string& place) {
+TextureBinding TextureLoader::binding(int index, int texCoord, bool srgb, const std::string& place,
+                                     const tinygltf::Value* transform) {
     TextureBinding b;
     if (index < 0) return b;
+    if (transform) {
+        // KHR_texture_transform: offset [0, 0], rotation 0, scale [1, 1], texCoord overriding the info's.
+        const std::string where = place + ".extensions.KHR_texture_transform";
+        auto pair = [&](const char* key, glm::vec2 fallback) {
+            const std::vector<double> v = numbersOf(*transform, key);
+            if (v.empty()) return fallback;
+            if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1])) {
+                warn_(where + "." + key + " must be two finite numbers; ignored");
+                return fallback;
+            }
+            return glm::vec2(float(v[0]), float(v[1]));
+        };
+        b.offset = pair("offset", glm::vec2(0.0f));
+        b.scale = pair("scale", glm::vec2(1.0f));
+        const double rotation = numberOr(*transform, "rotation", 0.0);
+        if (std::isfinite(rotation))
+            b.rotation = float(rotation);
+        else
+            warn_(where + ".rotation is not finite; ignored");
+        texCoord = int(numberOr(*transform, "texCoord", double(texCoord)));
+    }
     if (size_t(index) >= model_.textures.size()) {
         warn_(place + ": texture " + std::to_string(index) + " out of range (" +
               std::to_string(model_.textures.size()) + " textures); using the factor alone");

@@ -14,6 +14,7 @@
 
 namespace tinygltf {
 class Model;
+class Value;
 }
 
 namespace shadelab::gltf {
@@ -24,9 +25,11 @@ public:
     TextureLoader(const tinygltf::Model& model, const GltfLimits& limits, Warn warn)
         : model_(model), limits_(limits), warn_(std::move(warn)) {}
 
-    // The binding for glTF texture `index` with `texCoord`, decoded from sRGB when `srgb`. `place` names
-    // the referrer in warnings, e.g. "materials[0].pbrMetallicRoughness.baseColorTexture".
-    TextureBinding binding(int index, int texCoord, bool srgb, const std::string& place);
+    // The binding for glTF texture `index` with `texCoord`, decoded from sRGB when `srgb`, with the
+    // KHR_texture_transform object `transform` when not null. `place` names the referrer in warnings, e.g.
+    // "materials[0].pbrMetallicRoughness.baseColorTexture".
+    TextureBinding binding(int index, int texCoord, bool srgb, const std::string& place,
+                           const tinygltf::Value* transform = nullptr);
 
     uint64_t texelBytes() const { return bytes_; }
 

@@ -5,8 +5,10 @@
 // (shaders/texture_sample.glsl ≡ src/shading/texture_sample.h).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <memory>
 #include <string>
@@ -46,8 +48,18 @@ struct TextureBinding {
     std::shared_ptr<const Texture> texture;
     TextureSampler sampler;
     int texCoord = 0;  // TEXCOORD_n; only 0 is imported so far
+    // KHR_texture_transform: uv' = T(offset) · R(rotation) · S(scale) · uv, rotation in radians.
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;
+    glm::vec2 scale{1.0f};
 
     explicit operator bool() const { return texture != nullptr; }
+    // The linear part R · S as texture_sample.glsl's texTransform takes it: (m.x, m.y) the first row,
+    // (m.z, m.w) the second. cos and sin are taken here, once, so both renderers use the same numbers.
+    glm::vec4 uvMatrix() const {
+        const float c = std::cos(rotation), s = std::sin(rotation);
+        return {c * scale.x, s * scale.y, -s * scale.x, c * scale.y};
+    }
 };
 
 // Builds a texture from 8-bit RGBA pixels (4 bytes per texel, row-major, top row first): decodes sRGB when

@@ -93,7 +93,10 @@ glm::vec3 WhittedIntegrator::baseColorTexel(const Ray& ray, const Hit& hit, int 
         uv1 = g.texcoords0[g.indices[3 * size_t(tri) + 1]];
         uv2 = g.texcoords0[g.indices[3 * size_t(tri) + 2]];
     }
-    const glm::vec2 uv = hit.b0 * uv0 + hit.b1 * uv1 + hit.b2 * uv2;
+    // KHR_texture_transform on the interpolated coordinate, as mesh.frag; its derivatives take the linear part.
+    shading::TextureLookup transform{};  // the GLSL-shaped members are not const
+    const glm::vec4 uvm = b.uvMatrix();
+    const glm::vec2 uv = transform.texTransform(hit.b0 * uv0 + hit.b1 * uv1 + hit.b2 * uv2, uvm, b.offset);
 
     // Ray differentials (Igehy 1999) for a camera ray: dP/dx on the triangle's plane, then the barycentric
     // and (u, v) derivatives through the triangle's edges; texLod turns them into a level of detail.
@@ -113,7 +116,7 @@ glm::vec3 WhittedIntegrator::baseColorTexel(const Ray& ray, const Hit& hit, int 
             };
             auto dUv = [&](const glm::vec3& dP) {
                 const float b1 = glm::dot(glm::cross(dP, e2), n) / nn, b2 = glm::dot(glm::cross(e1, dP), n) / nn;
-                return b1 * (uv1 - uv0) + b2 * (uv2 - uv0);
+                return transform.texTransform(b1 * (uv1 - uv0) + b2 * (uv2 - uv0), uvm, glm::vec2(0.0f));
             };
             lod = shading::TextureLookup{}.texLod(tex.width(), tex.height(), dUv(dPdPixel(footprint_.dDdx)),
                                                   dUv(dPdPixel(footprint_.dDdy)));
