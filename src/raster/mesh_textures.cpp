@@ -11,8 +11,7 @@ GLuint MeshTextures::texture(const std::shared_ptr<const Texture>& texture) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     for (size_t level = 0; level < texture->levels.size(); ++level) {
         const TextureLevel& l = texture->levels[level];
-        glTexImage2D(GL_TEXTURE_2D, GLint(level), GL_RGBA32F, l.width, l.height, 0, GL_RGBA, GL_FLOAT,
-                     l.texels.data());
+        glTexImage2D(GL_TEXTURE_2D, GLint(level), GL_RGBA32F, l.width, l.height, 0, GL_RGBA, GL_FLOAT, l.texels.data());
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(texture->levels.size()) - 1);

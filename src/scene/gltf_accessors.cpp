@@ -255,8 +255,8 @@ void readVec2(const tinygltf::Model& model, int index, const std::string& file, 
         throw InputError(file, accessorPlace(index), std::string("expected VEC2, got ") + typeName(acc.type));
     const int type = acc.componentType;
     const bool floats = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
-    const bool normalizedInts =
-        acc.normalized && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    const bool normalizedInts = acc.normalized && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                   type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
     if (!floats && !normalizedInts)
         throw InputError(file, accessorPlace(index),
                          std::string("texture coordinates must be FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT, "

@@ -68,7 +68,8 @@ float srgbDecode(uint8_t c) {
 
 TEST(GltfTextures, EmbeddedPngDecodesToLinearTexelsWithTexcoords) {
     const Image8 img = checker4();
-    for (const std::string& image : {dataUri(pngBytes(img)), std::string(R"({"bufferView":4,"mimeType":"image/png"})")}) {
+    for (const std::string& image :
+         {dataUri(pngBytes(img)), std::string(R"({"bufferView":4,"mimeType":"image/png"})")}) {
         const bool inBuffer = image.find("bufferView") != std::string::npos;
         const GltfImport g = importGltfBytes(texturedQuad(image, inBuffer ? pngBytes(img) : ""), false, "quad.gltf");
         ASSERT_EQ(g.parts.size(), 1u);

@@ -26,7 +26,9 @@ TextureWrap wrapFrom(int mode, const std::string& place, const TextureLoader::Wa
         case 33648: return TextureWrap::MirroredRepeat;
         case 10497:
         case -1: return TextureWrap::Repeat;
-        default: warn(place + ": unknown wrap mode " + std::to_string(mode) + "; using REPEAT"); return TextureWrap::Repeat;
+        default:
+            warn(place + ": unknown wrap mode " + std::to_string(mode) + "; using REPEAT");
+            return TextureWrap::Repeat;
     }
 }
 
@@ -94,7 +96,7 @@ std::shared_ptr<const Texture> decodeTexture(const std::string& bytes, const std
 }
 
 TextureBinding TextureLoader::binding(int index, int texCoord, bool srgb, const std::string& place,
-                                     const tinygltf::Value* transform) {
+                                      const tinygltf::Value* transform) {
     TextureBinding b;
     if (index < 0) return b;
     if (transform) {
@@ -137,8 +139,8 @@ TextureBinding TextureLoader::binding(int index, int texCoord, bool srgb, const 
     b.texture = image(t.source, srgb, place);
     if (!b.texture) return b;
     if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size())
-        b.sampler = samplerFrom(model_.samplers[size_t(t.sampler)], "samplers[" + std::to_string(t.sampler) + "]",
-                                warn_);
+        b.sampler =
+            samplerFrom(model_.samplers[size_t(t.sampler)], "samplers[" + std::to_string(t.sampler) + "]", warn_);
     else if (t.sampler >= 0)
         warn_(texPlace + ": sampler " + std::to_string(t.sampler) + " out of range; using the default sampler");
     b.texCoord = texCoord;
@@ -152,17 +154,21 @@ std::shared_ptr<const Texture> TextureLoader::image(int index, bool srgb, const 
     std::shared_ptr<const Texture>& slot = decoded_[key];
     const tinygltf::Image& img = model_.images[size_t(index)];
     const std::string imgPlace = "images[" + std::to_string(index) + "]";
-    const std::string name = !img.name.empty() ? img.name : !img.uri.empty() && img.uri.rfind("data:", 0) != 0 ? img.uri : imgPlace;
+    const std::string name = !img.name.empty()                                    ? img.name
+                             : !img.uri.empty() && img.uri.rfind("data:", 0) != 0 ? img.uri
+                                                                                  : imgPlace;
     try {
         if (count_ >= limits_.maxTextures)
-            throw std::runtime_error("over the limit of " + std::to_string(limits_.maxTextures) + " textures per model");
+            throw std::runtime_error("over the limit of " + std::to_string(limits_.maxTextures) +
+                                     " textures per model");
         std::string bytes;
         if (img.bufferView >= 0) {
             bytes = bufferViewBytes(model_, img.bufferView, "", "");
         } else if (!img.image.empty()) {
             bytes.assign(img.image.begin(), img.image.end());
         } else if (!img.uri.empty()) {
-            throw std::runtime_error("cannot read \"" + img.uri + "\" (missing, outside the model's folder, or too large)");
+            throw std::runtime_error("cannot read \"" + img.uri +
+                                     "\" (missing, outside the model's folder, or too large)");
         }
         slot = decodeTexture(bytes, name, srgb, limits_.maxTextureSide, limits_.maxTextureBytes - bytes_);
         bytes_ += slot->texelBytes();

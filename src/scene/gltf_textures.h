@@ -15,7 +15,7 @@
 namespace tinygltf {
 class Model;
 class Value;
-}
+}  // namespace tinygltf
 
 namespace shadelab::gltf {
 

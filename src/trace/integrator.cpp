@@ -86,7 +86,7 @@ glm::vec3 WhittedIntegrator::baseColorTexel(const Ray& ray, const Hit& hit, int 
     const Texture& tex = *b.texture;
     const MeshBvh& mb = *scene_.meshBvh();
     const MeshGeometry& g = *scene_.meshPart(hit).geometry;
-    const uint32_t tri = mb.sourceTriangle(hit.index);
+    const uint32_t tri = scene_.triangleInPart(hit);
     glm::vec2 uv0(0.0f), uv1(0.0f), uv2(0.0f);
     if (g.texcoords0.size() == g.positions.size()) {
         uv0 = g.texcoords0[g.indices[3 * size_t(tri)]];
@@ -104,7 +104,7 @@ glm::vec3 WhittedIntegrator::baseColorTexel(const Ray& ray, const Hit& hit, int 
     if (depth == 0 && footprint_.dDdx != glm::vec3(0.0f)) {
         const float* v = mb.vertices(hit.index);
         const glm::vec3 p0(v[0], v[1], v[2]), e1 = glm::vec3(v[3], v[4], v[5]) - p0,
-            e2 = glm::vec3(v[6], v[7], v[8]) - p0;
+                                              e2 = glm::vec3(v[6], v[7], v[8]) - p0;
         const glm::vec3 n = glm::cross(e1, e2);
         const float nn = glm::dot(n, n), nd = glm::dot(n, ray.dir), df = glm::dot(ray.dir, footprint_.forward);
         if (nn > 0.0f && nd != 0.0f && df > 0.0f) {
