@@ -3,13 +3,16 @@
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_texcoord;  // TEXCOORD_0, (0, 0) where the part has none
 
 out vec3 v2f_position;
 out vec3 v2f_normal;
+out vec2 v2f_texcoord;
 
 void main() {
     v2f_position = a_position;
     v2f_normal = a_normal;
+    v2f_texcoord = a_texcoord;
     gl_Position = u_viewProj * vec4(a_position, 1.0f);
     gl_ClipDistance[0] = dot(u_clipPlane.xyz, a_position) + u_clipPlane.w;   // enabled in mirror passes only
 }

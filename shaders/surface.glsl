@@ -7,6 +7,12 @@
 uniform vec3 u_ma;
 uniform vec3 u_md;
 uniform vec3 u_ms;
+uniform vec3 u_msTex;  // pbr: metallic·baseColor, so F0 = u_ms + u_msTex·(tex − 1) with a base-colour texture; else 0
+
+// The base-colour texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere). It multiplies md and
+// ma, and under pbr the base colour inside F0 (src/trace/integrator.cpp does the same on the CPU).
+vec3 s_tex = vec3(1.0f);
+vec3 surfaceMs() { return u_ms + u_msTex * (s_tex - 1.0f); }
 uniform float u_s;
 uniform uint u_objectId;
 
@@ -38,7 +44,7 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
     vec3 irradiance = u_iblRadiance.xyz;
     vec3 prefiltered = u_iblRadiance.xyz;
 #endif
-    return shadeEnvironment(md, u_ms, irradiance, prefiltered, dfg, SL_ENERGY_COMPENSATION != 0, SL_DIFFUSE, SL_SPECULAR);
+    return shadeEnvironment(md, surfaceMs(), irradiance, prefiltered, dfg, SL_ENERGY_COMPENSATION != 0, SL_DIFFUSE, SL_SPECULAR);
 }
 #endif
 
@@ -50,7 +56,7 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
     // Attenuation (1, 0, 0) divides by exactly 1: skipped, bit for bit the same.
     vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L) : u_lightColor[i].xyz;
-    vec3 c = shadeLightScaled(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
+    vec3 c = shadeLightScaled(N, L, V, Il, md, surfaceMs(), u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
     c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
@@ -65,14 +71,14 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
     vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(N, V), u_s);
 #endif
 #if SL_ENERGY_COMPENSATION
-    vec3 specScale = energyCompensation(u_ms, dfg);
+    vec3 specScale = energyCompensation(surfaceMs(), dfg);
 #else
     vec3 specScale = vec3(1.0f);
 #endif
 #if SL_IBL
     vec3 I = vec3(0.0f);
 #else
-    vec3 I = shadeAmbient(u_ambient.xyz, u_ma, SL_AMBIENT);
+    vec3 I = shadeAmbient(u_ambient.xyz, u_ma * s_tex, SL_AMBIENT);
 #endif
     // One call per specialised light with literal arguments (the variant's X-macro, unrolled).
 #define SL_LIGHT_TERM(i, isPoint, isAttenuated, kind, mask, layer) I += lightTerm(i, isPoint, isAttenuated, kind, mask, layer, P, N, V, md, specScale);
@@ -84,7 +90,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
-        I += shadeLightScaled(N, L, V, Il, md, u_ms, u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
+        I += shadeLightScaled(N, L, V, Il, md, surfaceMs(), u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
     }
 #endif
 #if SL_IBL

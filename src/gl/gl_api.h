@@ -101,6 +101,8 @@ void checkError(const char* what);
 #define glUniform2f shadelab_glUniform2f
 #define glUniform3f shadelab_glUniform3f
 #define glUniform3fv shadelab_glUniform3fv
+#define glUniform4iv shadelab_glUniform4iv
+#define glUniform4fv shadelab_glUniform4fv
 #define glUniformMatrix4fv shadelab_glUniformMatrix4fv
 #define glTexImage3D shadelab_glTexImage3D
 #define glFramebufferTextureLayer shadelab_glFramebufferTextureLayer

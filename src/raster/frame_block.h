@@ -54,7 +54,8 @@ inline constexpr GLuint kShadowBinding = 1;
 inline constexpr GLuint kShadowUnit = 1;
 inline constexpr GLuint kReflectionUnit = 2;
 inline constexpr GLuint kEnvironmentUnit = 3;
-inline constexpr GLuint kIblCubeUnit = 4;  // the prefiltered atlas (IblTextures)
-inline constexpr GLuint kIblDfgUnit = 5;   // the DFG table
+inline constexpr GLuint kIblCubeUnit = 4;    // the prefiltered atlas (IblTextures)
+inline constexpr GLuint kIblDfgUnit = 5;     // the DFG table
+inline constexpr GLuint kBaseColorUnit = 6;  // a mesh part's base-colour texture (MeshTextures)
 
 }  // namespace shadelab::raster

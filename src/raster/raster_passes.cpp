@@ -10,6 +10,19 @@
 #include <glm/gtc/type_ptr.hpp>
 
 namespace shadelab::raster {
+namespace {
+
+// texture_sample.glsl's wrap-mode numbers.
+int wrapIndex(TextureWrap w) {
+    switch (w) {
+        case TextureWrap::MirroredRepeat: return 1;
+        case TextureWrap::ClampToEdge: return 2;
+        case TextureWrap::Repeat: break;
+    }
+    return 0;
+}
+
+}  // namespace
 
 void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32_t objectId, int model,
                                  bool normalized) const {
@@ -22,6 +35,23 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform1f(p.uniform("u_s"), c.s);
     glUniform1ui(p.uniform("u_objectId"), objectId);
     glUniform3fv(p.uniform("u_kr"), 1, glm::value_ptr(m.kr));  // planes' mirrors and objects' cubes
+    // Base-colour texture (mesh.frag): F0 = u_ms + u_msTex·(tex − 1) under pbr, as the tracer's local().
+    const glm::vec3 msTex = model == shading::SL_MODEL_PBR ? m.metallic * m.baseColor : glm::vec3(0.0f);
+    glUniform3fv(p.uniform("u_msTex"), 1, glm::value_ptr(msTex));
+    const TextureBinding& t = m.baseColorTexture;
+    glm::ivec4 info(0);
+    if (t && !t.texture->levels.empty()) {
+        info = glm::ivec4(int(t.texture->levels.size()), wrapIndex(t.sampler.wrapS), wrapIndex(t.sampler.wrapT),
+                          (t.sampler.magLinear ? 1 : 0) | (t.sampler.minLinear ? 2 : 0) | (t.sampler.mipmaps ? 4 : 0) |
+                              (t.sampler.mipLinear ? 8 : 0));
+        const glm::vec4 uvMatrix = t.uvMatrix();
+        glUniform4fv(p.uniform("u_baseTexMatrix"), 1, glm::value_ptr(uvMatrix));
+        glUniform2f(p.uniform("u_baseTexOffset"), t.offset.x, t.offset.y);
+        glActiveTexture(GL_TEXTURE0 + kBaseColorUnit);
+        glBindTexture(GL_TEXTURE_2D, textures_.texture(t.texture));
+        glActiveTexture(GL_TEXTURE0);
+    }
+    glUniform4iv(p.uniform("u_baseTex"), 1, glm::value_ptr(info));
 }
 
 const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant) {
@@ -44,6 +74,7 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
         glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
         glUniform1i(p->uniform("t_iblCube"), GLint(kIblCubeUnit));
         glUniform1i(p->uniform("t_iblDfg"), GLint(kIblDfgUnit));
+        glUniform1i(p->uniform("t_baseColor"), GLint(kBaseColorUnit));
     }
     glUseProgram(set.planeMirror.id());
     glUniform1i(set.planeMirror.uniform("t_reflection"), GLint(kReflectionUnit));

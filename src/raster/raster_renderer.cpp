@@ -19,6 +19,7 @@
 #include <glm/trigonometric.hpp>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace shadelab::raster {
@@ -220,8 +221,12 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
         glBindVertexArray(0);
         return;
     }
-    // Positions then normals (two planar arrays), and one index buffer rebased per part.
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertexCount * 2 * sizeof(glm::vec3)), nullptr, GL_STATIC_DRAW);
+    // Positions, normals and TEXCOORD_0 (three planar arrays; (0, 0) for parts without texture coordinates),
+    // and one index buffer rebased per part.
+    const size_t uvOffset = vertexCount * 2 * sizeof(glm::vec3);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(uvOffset + vertexCount * sizeof(glm::vec2)), nullptr, GL_STATIC_DRAW);
+    std::vector<glm::vec2> zeros;
+    std::set<const Texture*> textures;
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indexCount * sizeof(uint32_t)), nullptr, GL_STATIC_DRAW);
     size_t vBase = 0, iBase = 0;
     std::vector<uint32_t> rebased;
@@ -234,6 +239,12 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
                             g.positions.data());
             glBufferSubData(GL_ARRAY_BUFFER, GLintptr((vertexCount + vBase) * sizeof(glm::vec3)), GLsizeiptr(bytes),
                             g.normals.data());
+            const bool hasUv = g.texcoords0.size() == g.positions.size();
+            if (!hasUv) zeros.assign(g.positions.size(), glm::vec2(0.0f));
+            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(uvOffset + vBase * sizeof(glm::vec2)),
+                            GLsizeiptr(g.positions.size() * sizeof(glm::vec2)),
+                            hasUv ? g.texcoords0.data() : zeros.data());
+            if (const auto& t = m.parts[pi].material.baseColorTexture.texture) textures.insert(t.get());
             rebased.resize(g.indices.size());
             for (size_t k = 0; k < g.indices.size(); ++k) rebased[k] = g.indices[k] + uint32_t(vBase);
             glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(iBase * sizeof(uint32_t)),
@@ -248,7 +259,10 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3),
                           reinterpret_cast<const void*>(vertexCount * sizeof(glm::vec3)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), reinterpret_cast<const void*>(uvOffset));
     glBindVertexArray(0);
+    textures_.prune(textures);
     gl::checkError("RasterRenderer::uploadMeshes");
 }
 

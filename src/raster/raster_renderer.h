@@ -8,6 +8,7 @@
 #include "raster/draw_range.h"
 #include "raster/environment_cubes.h"
 #include "raster/ibl_textures.h"
+#include "raster/mesh_textures.h"
 #include "raster/raster_limits.h"
 #include "raster/render_target.h"
 #include "raster/shader_variant.h"
@@ -92,6 +93,7 @@ private:
     std::vector<float> environmentKey_;     // what the cubes were rendered from
     std::vector<RenderTarget> mirrorTargets_;
     std::vector<int> mirrorOfPlane_;  // per plane: index into mirrorTargets_ for this band, or -1
+    mutable MeshTextures textures_;   // base-colour textures, uploaded on a part's first draw
     IblTextures ibl_;                 // the environment's prefiltered atlas and the DFG table
     gl::Program backdrop_;            // an environment map behind everything (environment_backdrop.frag)
     gl::Buffer frameUbo_;

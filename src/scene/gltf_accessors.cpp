@@ -249,6 +249,48 @@ void readVec3(const tinygltf::Model& model, int index, const std::string& file, 
                     [&](uint32_t target, const unsigned char* p) { load(p, out[target]); });
 }
 
+void readVec2(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec2>& out) {
+    const tinygltf::Accessor& acc = accessorAt(model, index, file);
+    if (acc.type != TINYGLTF_TYPE_VEC2)
+        throw InputError(file, accessorPlace(index), std::string("expected VEC2, got ") + typeName(acc.type));
+    const int type = acc.componentType;
+    const bool floats = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    const bool normalizedInts = acc.normalized && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                   type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    if (!floats && !normalizedInts)
+        throw InputError(file, accessorPlace(index),
+                         std::string("texture coordinates must be FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT, "
+                                     "got ") +
+                             componentName(type));
+    const size_t componentSize = floats ? 4 : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1 : 2;
+    const size_t elementSize = 2 * componentSize;
+    auto load = [&](const unsigned char* p, glm::vec2& v) {
+        v = glm::vec2(loadComponent(p, type, true), loadComponent(p + componentSize, type, true));
+    };
+    if (acc.bufferView >= 0) {
+        const Span span =
+            resolve(model, acc.bufferView, acc.byteOffset, acc.count, elementSize, true, file, accessorPlace(index));
+        out.resize(acc.count);
+        for (size_t i = 0; i < acc.count; ++i) load(span.at(i), out[i]);
+    } else {
+        checkZeroCount(acc, index, file);
+        out.assign(acc.count, glm::vec2(0.0f));
+    }
+    if (acc.sparse.isSparse)
+        applySparse(model, acc, index, elementSize, file,
+                    [&](uint32_t target, const unsigned char* p) { load(p, out[target]); });
+}
+
+std::string bufferViewBytes(const tinygltf::Model& model, int view, const std::string& file, const std::string& where) {
+    if (view < 0 || size_t(view) >= model.bufferViews.size())
+        throw InputError(file, where,
+                         "bufferView " + std::to_string(view) + " out of range (" +
+                             std::to_string(model.bufferViews.size()) + " buffer views)");
+    const size_t length = model.bufferViews[size_t(view)].byteLength;
+    const Span span = resolve(model, view, 0, length ? 1 : 0, length, false, file, where);  // 0: no stride
+    return std::string(reinterpret_cast<const char*>(span.data), length);
+}
+
 void readIndices(const tinygltf::Model& model, int index, const std::string& file, std::vector<uint32_t>& out) {
     const tinygltf::Accessor& acc = accessorAt(model, index, file);
     if (acc.type != TINYGLTF_TYPE_SCALAR)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
@@ -18,6 +19,13 @@ namespace shadelab::gltf {
 // Values are not checked for finiteness; the caller decides what a non-finite value means.
 // `file` names the glTF file in errors.
 void readVec3(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec3>& out);
+
+// Reads accessor `index` as VEC2 (TEXCOORD_n): FLOAT, or normalized UNSIGNED_BYTE / UNSIGNED_SHORT.
+void readVec2(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec2>& out);
+
+// The bytes of buffer view `view`, proven to lie inside its buffer (an image's encoded bytes). `where`
+// names the referrer in errors, e.g. "images[0]".
+std::string bufferViewBytes(const tinygltf::Model& model, int view, const std::string& file, const std::string& where);
 
 // Reads index accessor `index` (SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT) into `out`.
 void readIndices(const tinygltf::Model& model, int index, const std::string& file, std::vector<uint32_t>& out);

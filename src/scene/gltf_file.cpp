@@ -1,5 +1,5 @@
 // Reading a .gltf/.glb into a tinygltf::Model: file checks, the declared-size limits (gltf_limits.h),
-// buffer files kept inside the model's folder unless allowed, images never decoded. Walking the model is
+// buffer and image files kept inside the model's folder unless allowed, images kept encoded. Walking the model is
 // gltf_import.cpp.
 #include "scene/gltf_file.h"
 
@@ -33,8 +33,12 @@ void appendLines(const std::string& text, std::vector<std::string>& out) {
     }
 }
 
-// Textures are not sampled (docs/gltf-import.md), so images are read but never decoded.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are not decoded here: a URI image's encoded bytes (a data URI's, or the external file's, already
+// bounded by readInsideFolder) are kept in `image`, and a buffer view's are left in the buffer, since
+// tinygltf does not check that view against its buffer. gltf_textures.cpp decodes what materials use.
+bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                 int size, void*) {
+    if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
     return true;
 }
 
@@ -97,7 +101,7 @@ bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const s
 tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
                              std::vector<std::string>& warnings, const FolderGuard* guard) {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skipImage, nullptr);
+    loader.SetImageLoader(&keepEncoded, nullptr);
     if (guard) {
         tinygltf::FsCallbacks guarded{&existsResolved, &tinygltf::ExpandFilePath, &readInsideFolder,
                                       &tinygltf::WriteWholeFile, const_cast<FolderGuard*>(guard)};

@@ -10,6 +10,7 @@
 #include "scene/gltf_file.h"
 #include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_textures.h"
 #include "scene/gltf_values.h"
 #include "util/input_error.h"
 
@@ -140,17 +141,31 @@ public:
           trianglesBefore_(trianglesBefore),
           triangles_(trianglesBefore),
           onPath_(model.nodes.size(), 0),
-          seen_(model.nodes.size(), 0) {
+          seen_(model.nodes.size(), 0),
+          textures_(model, limits, [this](const std::string& line) { warnOnce(line); }) {
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
-        size_t textured = 0;
+        // Base-colour textures are decoded and rendered (gltf_textures.cpp); the other maps are not yet.
+        size_t otherMaps = 0;
         for (size_t i = 0; i < model.materials.size(); ++i) {
-            materials_.push_back(materialFrom(model.materials[i], indexed("materials", i), out_.warnings));
-            if (model.materials[i].pbrMetallicRoughness.baseColorTexture.index >= 0) ++textured;
+            const tinygltf::Material& gm = model.materials[i];
+            materials_.push_back(materialFrom(gm, indexed("materials", i), out_.warnings));
+            const tinygltf::TextureInfo& base = gm.pbrMetallicRoughness.baseColorTexture;
+            if (base.index >= 0) {
+                const auto transform = base.extensions.find("KHR_texture_transform");
+                materials_.back().baseColorTexture = textures_.binding(
+                    base.index, base.texCoord, true, indexed("materials", i) + ".pbrMetallicRoughness.baseColorTexture",
+                    transform == base.extensions.end() ? nullptr : &transform->second);
+            }
+            if (gm.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 || gm.normalTexture.index >= 0 ||
+                gm.occlusionTexture.index >= 0 || gm.emissiveTexture.index >= 0)
+                ++otherMaps;
         }
-        if (textured > 0)
-            warnOnce(std::to_string(textured) + " material(s) have a base colour texture; textures are ignored");
+        if (otherMaps > 0)
+            warnOnce(std::to_string(otherMaps) +
+                     " material(s) have metallic-roughness, normal, occlusion or emissive textures; those are ignored "
+                     "(base colour textures are rendered)");
         if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
         for (const std::string& ext : model.extensionsRequired) {
             if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
@@ -343,6 +358,22 @@ private:
             }
         }
 
+        // TEXCOORD_0: the count must match; a non-finite coordinate becomes 0 with a warning.
+        const auto uv = prim.attributes.find("TEXCOORD_0");
+        if (uv != prim.attributes.end()) {
+            const size_t count = gltf::accessorCount(model_, uv->second, file_, where + ".attributes.TEXCOORD_0");
+            if (count != vertexCount)
+                throw InputError(file_, indexed("accessors", size_t(uv->second)),
+                                 "TEXCOORD_0 count " + std::to_string(count) + " differs from POSITION count " +
+                                     std::to_string(vertexCount));
+            gltf::readVec2(model_, uv->second, file_, geo.texcoords0);
+            size_t nonFinite = 0;
+            for (glm::vec2& t : geo.texcoords0)
+                if (!std::isfinite(t.x) || !std::isfinite(t.y)) t = glm::vec2(0.0f), ++nonFinite;
+            if (nonFinite > 0)
+                warnOnce(where + ": " + std::to_string(nonFinite) + " non-finite texture coordinates set to 0");
+        }
+
         if (prim.material >= 0 && size_t(prim.material) >= materials_.size())
             throw InputError(file_, where + ".material",
                              "material " + std::to_string(prim.material) + " out of range (" +
@@ -357,7 +388,8 @@ private:
     // nodes counts once per use, as it is expanded once per use.
     void chargeBudget(const std::string& where, size_t vertexCount, size_t indexCount) {
         triangles_ += indexCount / 3 + (indexCount >= 3 ? 2 : 0);  // strips and fans make up to count - 2
-        bytes_ += uint64_t(vertexCount) * 2 * sizeof(glm::vec3) + uint64_t(indexCount) * 3 * sizeof(uint32_t);
+        bytes_ += uint64_t(vertexCount) * (2 * sizeof(glm::vec3) + sizeof(glm::vec2)) +
+                  uint64_t(indexCount) * 3 * sizeof(uint32_t);
         if (triangles_ > limits_.maxTriangles)
             throw InputError(file_, where,
                              "the model exceeds the limit of " + std::to_string(limits_.maxTriangles) + " triangles");
@@ -447,6 +479,7 @@ private:
     std::unordered_set<std::string> warned_;
     std::vector<uint32_t> indices_;     // scratch, reused across primitives
     std::vector<glm::vec3> generated_;  // scratch, reused across primitives
+    gltf::TextureLoader textures_;      // decodes each image once, on a material's first use
 };
 
 }  // namespace

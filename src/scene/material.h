@@ -4,6 +4,8 @@
 // model's are given (docs/scene-format.md, "Materials under each model").
 #pragma once
 
+#include "scene/texture.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
@@ -23,6 +25,9 @@ struct Material {
     glm::vec3 baseColor{0.7f};  // pbr: base colour, linear RGB in [0, 1] (= md by default)
     float metallic = 0.0f;      // pbr: [0, 1], 0 dielectric (F0 = 0.04), 1 metal (F0 = baseColor)
     float roughness = 0.4925f;  // pbr: perceptual roughness in [0, 1], α = roughness²; ≈ s = 32's equivalent
+    // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
+    // Phong (docs/gltf-import.md). Imported only; a scene file cannot set it.
+    TextureBinding baseColorTexture;
 };
 
 inline constexpr float kMaxShininess = 10000.0f;

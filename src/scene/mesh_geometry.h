@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <vector>
@@ -14,10 +15,12 @@
 namespace shadelab {
 
 struct MeshGeometry {
-    std::vector<glm::vec3> positions;  // world units
-    std::vector<glm::vec3> normals;    // one per position, unit length; empty = flat shading
-    std::vector<uint32_t> indices;     // three per triangle, each < positions.size()
-    Bounds bounds;                     // of every position; set by shareGeometry
+    std::vector<glm::vec3> positions;   // world units
+    std::vector<glm::vec3> normals;     // one per position, unit length; empty = flat shading
+    std::vector<glm::vec2> texcoords0;  // TEXCOORD_0, one per position (glTF's u, v: v = 0 is the image's top
+                                        // row); empty = the primitive has none
+    std::vector<uint32_t> indices;      // three per triangle, each < positions.size()
+    Bounds bounds;                      // of every position; set by shareGeometry
 
     size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -4,6 +4,7 @@
 
 #include "scene/coverage.h"
 #include "shading/local_illumination.h"
+#include "shading/texture_sample.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,7 +80,64 @@ bool WhittedIntegrator::admit(const glm::vec3& weight, Tree& tree) const {
     return true;
 }
 
-Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit) const {
+glm::vec3 WhittedIntegrator::baseColorTexel(const Ray& ray, const Hit& hit, int depth) const {
+    const Material& m = scene_.material(hit);
+    const TextureBinding& b = m.baseColorTexture;
+    const Texture& tex = *b.texture;
+    const MeshBvh& mb = *scene_.meshBvh();
+    const MeshGeometry& g = *scene_.meshPart(hit).geometry;
+    const uint32_t tri = scene_.triangleInPart(hit);
+    glm::vec2 uv0(0.0f), uv1(0.0f), uv2(0.0f);
+    if (g.texcoords0.size() == g.positions.size()) {
+        uv0 = g.texcoords0[g.indices[3 * size_t(tri)]];
+        uv1 = g.texcoords0[g.indices[3 * size_t(tri) + 1]];
+        uv2 = g.texcoords0[g.indices[3 * size_t(tri) + 2]];
+    }
+    // KHR_texture_transform on the interpolated coordinate, as mesh.frag; its derivatives take the linear part.
+    shading::TextureLookup transform{};  // the GLSL-shaped members are not const
+    const glm::vec4 uvm = b.uvMatrix();
+    const glm::vec2 uv = transform.texTransform(hit.b0 * uv0 + hit.b1 * uv1 + hit.b2 * uv2, uvm, b.offset);
+
+    // Ray differentials (Igehy 1999) for a camera ray: dP/dx on the triangle's plane, then the barycentric
+    // and (u, v) derivatives through the triangle's edges; texLod turns them into a level of detail.
+    float lod = -1.0f;
+    if (depth == 0 && footprint_.dDdx != glm::vec3(0.0f)) {
+        const float* v = mb.vertices(hit.index);
+        const glm::vec3 p0(v[0], v[1], v[2]), e1 = glm::vec3(v[3], v[4], v[5]) - p0,
+                                              e2 = glm::vec3(v[6], v[7], v[8]) - p0;
+        const glm::vec3 n = glm::cross(e1, e2);
+        const float nn = glm::dot(n, n), nd = glm::dot(n, ray.dir), df = glm::dot(ray.dir, footprint_.forward);
+        if (nn > 0.0f && nd != 0.0f && df > 0.0f) {
+            const glm::vec3 D = ray.dir / df;  // forward component 1, as cameraRayDirection's unnormalised D
+            const float DD = glm::dot(D, D), len = std::sqrt(DD);
+            auto dPdPixel = [&](const glm::vec3& dD) {
+                const glm::vec3 dDhat = (dD * DD - D * glm::dot(D, dD)) / (DD * len);
+                return hit.t * (dDhat - ray.dir * (glm::dot(n, dDhat) / nd));
+            };
+            auto dUv = [&](const glm::vec3& dP) {
+                const float b1 = glm::dot(glm::cross(dP, e2), n) / nn, b2 = glm::dot(glm::cross(e1, dP), n) / nn;
+                return transform.texTransform(b1 * (uv1 - uv0) + b2 * (uv2 - uv0), uvm, glm::vec2(0.0f));
+            };
+            lod = shading::TextureLookup{}.texLod(tex.width(), tex.height(), dUv(dPdPixel(footprint_.dDdx)),
+                                                  dUv(dPdPixel(footprint_.dDdy)));
+        }
+    }
+    shading::TexelLevelView views[32];
+    const int levels = int(std::min<size_t>(tex.levels.size(), 32));
+    for (int l = 0; l < levels; ++l)
+        views[l] = {tex.levels[size_t(l)].width, tex.levels[size_t(l)].height, tex.levels[size_t(l)].texels.data()};
+    shading::TextureLookup lookup{views, levels};
+    auto wrap = [](TextureWrap w) {
+        return w == TextureWrap::MirroredRepeat ? shading::kTexMirroredRepeat
+               : w == TextureWrap::ClampToEdge  ? shading::kTexClamp
+                                                : shading::kTexRepeat;
+    };
+    const glm::vec4 c = lookup.texSample(0, levels, wrap(b.sampler.wrapS), wrap(b.sampler.wrapT), b.sampler.magLinear,
+                                         b.sampler.minLinear, b.sampler.mipmaps, b.sampler.mipLinear, uv, lod);
+    return glm::vec3(c);
+}
+
+Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit, int depth) const {
     const Scene& sc = scene_.scene();
     Surface s;
     s.material = &scene_.material(hit);
@@ -120,6 +178,11 @@ Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit) const {
             s.entering = !back;
             const float len = glm::length(Ng);
             s.Nf = len > 0.0f ? (back ? -Ng : Ng) / len : glm::normalize(s.N);
+            if (s.material->baseColorTexture) {
+                s.tex = baseColorTexel(ray, hit, depth);
+                s.md *= s.tex;
+                s.baseColor *= s.tex;
+            }
             break;
         }
     }
@@ -145,7 +208,7 @@ glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::ve
     const Scene& sc = scene_.scene();
     if (!env_.lightsPbr() || !sc.terms.ambient || !sc.terms.specular) return glm::vec3(0.0f);
     const Material& m = *s.material;
-    const glm::vec3 f0 = shading::pbrF0(m.baseColor, m.metallic);
+    const glm::vec3 f0 = shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
     const glm::vec2 dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
     glm::vec3 E = shading::specularDFG(f0, dfg);
     if (sc.energyCompensation) E = E * shading::energyCompensation(f0, dfg);
@@ -160,6 +223,9 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         shading::surfaceParams(model_, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
     const bool pbr = model_ == shading::SL_MODEL_PBR;
     if (pbr) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
+    // A base-colour texture scales ma, and F0's base colour under pbr, the affine form mesh.frag uses.
+    params.ma = params.ma * s.tex;
+    if (pbr) params.ms = params.ms + m.metallic * m.baseColor * (s.tex - 1.0f);
     glm::vec2 dfg(0.0f);
     if (pbr && (sc.energyCompensation || env_.lightsPbr()))
         dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
@@ -200,7 +266,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,
                                    Tree& tree) const {
-    const Surface s = surfaceAt(ray, hit);
+    const Surface s = surfaceAt(ray, hit, depth);
     if (!scene_.scene().terms.reflections || depth >= maxDepth_) return local(ray, s);
 
     const Material& m = *s.material;

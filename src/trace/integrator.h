@@ -22,8 +22,18 @@ struct Surface {
     bool entering = true;       // the ray arrives from the outward side (sphere outside, plane normal side,
                                 // mesh counter-clockwise front), so refraction goes from 1 into ior
     glm::vec3 md{0.0f};         // diffuse coefficient, after the plane's checker
-    glm::vec3 baseColor{0.0f};  // pbr base colour, after the plane's checker
+    glm::vec3 baseColor{0.0f};  // pbr base colour, after the plane's checker and the base-colour texture
+    glm::vec3 tex{1.0f};        // the base-colour texture's linear RGB here (1 without one): scales md, ma, F0
     const Material* material = nullptr;
+};
+
+// How a primary ray's unnormalised direction D = forward + x·right + y·up changes per pixel step of the
+// sampled image (shading::cameraRayDirection): dDdx = (2·tan(fovY/2)/height)·right, dDdy = −(…)·up. With it
+// the tracer selects a texture's mip level from exact ray differentials (Igehy 1999), as the rasterizer does
+// from screen-space derivatives (shaders/texture_sample.glsl).
+struct PixelFootprint {
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};
+    glm::vec3 dDdx{0.0f}, dDdy{0.0f};  // zero: no footprint known (every texture sampled as magnified)
 };
 
 struct PrimarySample {
@@ -54,7 +64,10 @@ public:
     // its own (weight 1, a fresh ray budget). Background on a miss.
     glm::vec3 radiance(const Ray& ray, int depth) const;
 
-    Surface surfaceAt(const Ray& ray, const Hit& hit) const;
+    // `depth` 0 is a camera ray: its texture footprint comes from the pixel footprint. Deeper rays sample
+    // textures at level 0 with the magnification filter (docs/textures-status.md).
+    Surface surfaceAt(const Ray& ray, const Hit& hit, int depth = 0) const;
+    void setPixelFootprint(const PixelFootprint& f) { footprint_ = f; }
     // Local illumination (design.md §1) at a surface seen along `ray`: ambient plus every light, each
     // weighted by its shadow-ray visibility when the shadows term is on. A pbr surface in an environment
     // gets the split-sum environment light in place of Ia·ma; its specular part reads `reflected` (the
@@ -78,6 +91,9 @@ private:
     int model_;
     RayTreeLimits limits_;
     EnvironmentLight env_;
+    PixelFootprint footprint_;
+    // The base-colour texture's value at a triangle hit (surfaceAt).
+    glm::vec3 baseColorTexel(const Ray& ray, const Hit& hit, int depth) const;
     // The split-sum specular weight E = (F0·A + B)·compensation of a pbr surface (0 without IBL specular).
     glm::vec3 environmentSpecularWeight(const Surface& s, glm::vec3 V) const;
 };

@@ -10,6 +10,15 @@
 #include <mutex>
 
 namespace shadelab::trace {
+namespace {
+
+// shading::cameraRayDirection's D = forward + x·right + y·up per pixel step of `v`.
+PixelFootprint pixelFootprint(const ViewSetup& v) {
+    const float step = 2.0f * v.tanHalfFovY / float(v.height);
+    return {v.forward, step * v.right, -step * v.up};
+}
+
+}  // namespace
 
 struct ProgressiveTrace::Job {
     Job(std::shared_ptr<const TraceScene> s, const TraceSettings& st)
@@ -18,7 +27,9 @@ struct ProgressiveTrace::Job {
           k(samplesPerAxis(st)),
           sampleView(makeViewSetup(scene->scene(), k * st.width, k * st.height)),
           integrator(*scene, st.maxDepth >= 0 ? st.maxDepth : scene->scene().maxDepth, st.rayTree),
-          tiles(makeTiles(st.width, st.height, st.tileSize)) {}
+          tiles(makeTiles(st.width, st.height, st.tileSize)) {
+        integrator.setPixelFootprint(pixelFootprint(sampleView));
+    }
 
     std::shared_ptr<const TraceScene> scene;
     TraceSettings settings;

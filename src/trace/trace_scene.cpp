@@ -23,8 +23,13 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const MeshBvh> meshes
 
 void TraceScene::prepare() {
     spheres_.emplace(scene_.spheres);
+    uint32_t triangles = 0;  // MeshBvh::sourceTriangle counts every part's triangles in this order
     for (size_t m = 0; m < scene_.meshes.size(); ++m)
-        for (size_t p = 0; p < scene_.meshes[m].parts.size(); ++p) partRef_.emplace_back(uint32_t(m), uint32_t(p));
+        for (size_t p = 0; p < scene_.meshes[m].parts.size(); ++p) {
+            partRef_.emplace_back(uint32_t(m), uint32_t(p));
+            partFirstTriangle_.push_back(triangles);
+            triangles += uint32_t(scene_.meshes[m].parts[p].triangleCount());
+        }
 
     epsilon_ = secondaryRayEpsilon(scene_, scene_.camera.position);
 }

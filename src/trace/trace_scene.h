@@ -51,6 +51,15 @@ public:
     // Coverage id of the object hit (scene/coverage.h).
     uint32_t coverageId(const Hit& hit) const;
     const Material& material(const Hit& hit) const;
+    // The mesh part a triangle hit lies on.
+    const MeshPart& meshPart(const Hit& hit) const {
+        const std::pair<uint32_t, uint32_t> ref = partRef_[meshes_->part(hit.index)];
+        return scene_.meshes[ref.first].parts[ref.second];
+    }
+    // The triangle a hit lies on, as an index into its part's geometry (indices[3 t .. 3 t + 2]).
+    uint32_t triangleInPart(const Hit& hit) const {
+        return meshes_->sourceTriangle(hit.index) - partFirstTriangle_[meshes_->part(hit.index)];
+    }
 
 private:
     void prepare();
@@ -59,6 +68,7 @@ private:
     std::shared_ptr<const MeshBvh> meshes_;
     std::optional<SphereSet> spheres_;
     std::vector<std::pair<uint32_t, uint32_t>> partRef_;  // (mesh, part) of each flattened mesh part
+    std::vector<uint32_t> partFirstTriangle_;             // MeshBvh::sourceTriangle of each part's first
     float epsilon_ = 1e-4f;
 };
 

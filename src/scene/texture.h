@@ -1,0 +1,73 @@
+// Texture: one decoded glTF image as shared, immutable scene data (design.md §9), with its sampler and the
+// binding a material holds. Texels are linear float RGBA: colour images (base colour, emissive) are decoded
+// from sRGB before anything filters them, data images (metallic-roughness, normal, occlusion) are kept as
+// stored. The mip chain is built here once, so the rasterizer uploads exactly the levels the tracer samples
+// (shaders/texture_sample.glsl ≡ src/shading/texture_sample.h).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+// glTF sampler wrap modes (the GL enum values glTF stores).
+enum class TextureWrap : int { Repeat = 10497, MirroredRepeat = 33648, ClampToEdge = 33071 };
+
+struct TextureSampler {
+    TextureWrap wrapS = TextureWrap::Repeat;  // glTF's defaults
+    TextureWrap wrapT = TextureWrap::Repeat;
+    bool magLinear = true;  // magnification: bilinear (true) or nearest
+    bool minLinear = true;  // minification within a level: bilinear (true) or nearest
+    bool mipmaps = true;    // minification reads the mip chain; false = level 0 only
+    bool mipLinear = true;  // between levels: blend the two nearest (true) or take the nearest one
+};
+
+struct TextureLevel {
+    int width = 0, height = 0;
+    std::vector<glm::vec4> texels;  // row-major, row 0 = the image's top row (glTF's v = 0)
+};
+
+struct Texture {
+    std::string name;                  // the image's name or URI, for messages and the viewer
+    bool srgb = false;                 // the texels were decoded from sRGB
+    std::vector<TextureLevel> levels;  // levels[0] is the image; each next level halves (floor, min 1)
+
+    int width() const { return levels.empty() ? 0 : levels[0].width; }
+    int height() const { return levels.empty() ? 0 : levels[0].height; }
+    size_t texelBytes() const;  // every level, as stored
+};
+
+// What a material holds for one of its maps; an empty binding (no texture) means "the factor alone".
+struct TextureBinding {
+    std::shared_ptr<const Texture> texture;
+    TextureSampler sampler;
+    int texCoord = 0;  // TEXCOORD_n; only 0 is imported so far
+    // KHR_texture_transform: uv' = T(offset) · R(rotation) · S(scale) · uv, rotation in radians.
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;
+    glm::vec2 scale{1.0f};
+
+    explicit operator bool() const { return texture != nullptr; }
+    // The linear part R · S as texture_sample.glsl's texTransform takes it: (m.x, m.y) the first row,
+    // (m.z, m.w) the second. cos and sin are taken here, once, so both renderers use the same numbers.
+    glm::vec4 uvMatrix() const {
+        const float c = std::cos(rotation), s = std::sin(rotation);
+        return {c * scale.x, s * scale.y, -s * scale.x, c * scale.y};
+    }
+};
+
+// Builds a texture from 8-bit RGBA pixels (4 bytes per texel, row-major, top row first): decodes sRGB when
+// `srgb`, then makes the mip chain by 2×2 box filtering in linear space (an odd size's last row or column
+// is folded into its neighbour's average, so every level's mean equals the image's mean up to rounding).
+std::shared_ptr<const Texture> makeTexture(std::string name, const uint8_t* rgba, int width, int height, bool srgb);
+
+// The texel memory a width × height image takes once decoded, with its mip chain (the limits count this).
+uint64_t textureBytesFor(int width, int height);
+
+}  // namespace shadelab
