@@ -26,20 +26,28 @@
 #include <variant>
 
 namespace shadelab::app {
+namespace {
+
+// A whole float target as the 8-bit image a screenshot writes (the one shared conversion, toImage8).
+Image8 readTarget8(const raster::RenderTarget& target, Encoding encoding) {
+    Image8 img;
+    img.width = target.width();
+    img.height = target.height();
+    img.channels = 3;
+    img.data.resize(size_t(img.width) * size_t(img.height) * 3);
+    target.readColor8(img, 0, encoding);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return img;
+}
+
+}  // namespace
 
 void Viewer::runScript() {
     if (!cursor_ || drag_) return;  // a drag holds the script until it has been released
     if (smoothShot_) {
         const auto& shot = std::get<actions::SmoothScreenshot>(smoothShot_->action);
         if (accumulation_->converged() && !accumulation_->restart(state_.revision, renderW_, renderH_)) {
-            Image8 img;
-            img.width = renderW_;
-            img.height = renderH_;
-            img.channels = 3;
-            img.data.resize(size_t(img.width) * size_t(img.height) * 3);
-            accumulation_->target().readColor8(img, 0, state_.encoding);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            writePng(shot.path, img);
+            writePng(shot.path, readTarget8(accumulation_->target(), state_.encoding));
             smoothShot_ = nullptr;
         } else if (glfwGetTime() - waitStarted_ > double(shot.timeout)) {
             throw InputError(script_->file, "actions[" + std::to_string(smoothShot_->index) + "]",
@@ -137,14 +145,7 @@ void Viewer::feedSyntheticMouse() {
 
 Image8 Viewer::captureRaster() {
     ensureRasterCurrent(false);
-    Image8 img;
-    img.width = rasterW_;
-    img.height = rasterH_;
-    img.channels = 3;
-    img.data.resize(size_t(img.width) * size_t(img.height) * 3);
-    raster_->target().readColor8(img, 0, state_.encoding);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return img;
+    return readTarget8(raster_->target(), state_.encoding);
 }
 
 uint32_t Viewer::coverageAt(int x, int y) {

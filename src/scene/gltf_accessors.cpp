@@ -204,6 +204,25 @@ void checkZeroCount(const tinygltf::Accessor& acc, int index, const std::string&
                          "count " + std::to_string(acc.count) + " is too large for an accessor without a bufferView");
 }
 
+// Reads every element of a vector accessor with `load(bytes, element)`: from its bufferView, or zeros when
+// it has none, then its sparse substitutions. The one walk readVec3 and readVec2 share.
+template <class T, class Load>
+void readElements(const tinygltf::Model& model, const tinygltf::Accessor& acc, int index, size_t elementSize,
+                  const std::string& file, const Load& load, std::vector<T>& out) {
+    if (acc.bufferView >= 0) {
+        const Span span =
+            resolve(model, acc.bufferView, acc.byteOffset, acc.count, elementSize, true, file, accessorPlace(index));
+        out.resize(acc.count);
+        for (size_t i = 0; i < acc.count; ++i) load(span.at(i), out[i]);
+    } else {
+        checkZeroCount(acc, index, file);
+        out.assign(acc.count, T(0.0f));
+    }
+    if (acc.sparse.isSparse)
+        applySparse(model, acc, index, elementSize, file,
+                    [&](uint32_t target, const unsigned char* p) { load(p, out[target]); });
+}
+
 }  // namespace
 
 size_t accessorCount(const tinygltf::Model& model, int index, const std::string& file, const std::string& what) {
@@ -234,19 +253,7 @@ void readVec3(const tinygltf::Model& model, int index, const std::string& file, 
                           loadComponent(p + 2 * componentSize, type, normalized));
         }
     };
-
-    if (acc.bufferView >= 0) {
-        const Span span =
-            resolve(model, acc.bufferView, acc.byteOffset, acc.count, elementSize, true, file, accessorPlace(index));
-        out.resize(acc.count);
-        for (size_t i = 0; i < acc.count; ++i) load(span.at(i), out[i]);
-    } else {
-        checkZeroCount(acc, index, file);
-        out.assign(acc.count, glm::vec3(0.0f));
-    }
-    if (acc.sparse.isSparse)
-        applySparse(model, acc, index, elementSize, file,
-                    [&](uint32_t target, const unsigned char* p) { load(p, out[target]); });
+    readElements(model, acc, index, elementSize, file, load, out);
 }
 
 void readVec2(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec2>& out) {
@@ -267,18 +274,7 @@ void readVec2(const tinygltf::Model& model, int index, const std::string& file, 
     auto load = [&](const unsigned char* p, glm::vec2& v) {
         v = glm::vec2(loadComponent(p, type, true), loadComponent(p + componentSize, type, true));
     };
-    if (acc.bufferView >= 0) {
-        const Span span =
-            resolve(model, acc.bufferView, acc.byteOffset, acc.count, elementSize, true, file, accessorPlace(index));
-        out.resize(acc.count);
-        for (size_t i = 0; i < acc.count; ++i) load(span.at(i), out[i]);
-    } else {
-        checkZeroCount(acc, index, file);
-        out.assign(acc.count, glm::vec2(0.0f));
-    }
-    if (acc.sparse.isSparse)
-        applySparse(model, acc, index, elementSize, file,
-                    [&](uint32_t target, const unsigned char* p) { load(p, out[target]); });
+    readElements(model, acc, index, elementSize, file, load, out);
 }
 
 std::string bufferViewBytes(const tinygltf::Model& model, int view, const std::string& file, const std::string& where) {
