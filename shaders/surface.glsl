@@ -14,6 +14,7 @@ uniform vec3 u_msTex;  // pbr: metallic·baseColor, so F0 = u_ms + u_msTex·(tex
 vec3 s_tex = vec3(1.0f);
 vec3 surfaceMs() { return u_ms + u_msTex * (s_tex - 1.0f); }
 uniform float u_s;
+uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
 uniform uint u_objectId;
 
 layout(location = 0) out vec4 o_color;
@@ -96,7 +97,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
 #if SL_IBL
     I += environmentLight(N, V, md, dfg);
 #endif
-    return I;
+    return I + u_emission;
 }
 
 // The primary ray through this fragment's pixel centre, exactly as the tracer builds it. When the image is
