@@ -23,8 +23,9 @@ The scene translation (docs/scene-format.md), approximate by design:
   --spheres mesh a smooth UV sphere of 128 x 64 segments.
 - planes: a 20,000-unit square quad centred under the camera target (the horizon gap is under a pixel);
   its checker is laid out in shadelab's tangent basis (shaders/lighting.glsl, planeTangent) through a UV map.
-- materials: Diffuse BSDF (md) + Glossy GGX (ms, roughness (2/(s+2))^(1/4), design.md §7's Walter
-  mapping) + a sharp Glossy for kr + a Glass BSDF for kt (ior), added like the lecture's terms. pbr-only
+- materials: Diffuse BSDF (md) + Glossy GGX (roughness (2/(s+2))^(1/4), the Walter mapping of
+  docs/scene-format.md, colour ms * min(1, 8/(s+2)) so that its highlight peak under a point light equals
+  Phong's ms * Il) + a sharp Glossy for kr + a Glass BSDF for kt (ior), added like the lecture's terms. pbr-only
   materials are mapped to md/ms/s as the scene loader does. ma and the ambient term are ignored: light
   transport replaces them.
 - lights: shadelab's point light of colour Il gives irradiance pi*Il*N.L at any distance (no
@@ -211,7 +212,11 @@ def make_material(name, p, checker=None):
     if nonzero(p["ms"]):
         g = nt.nodes.new("ShaderNodeBsdfGlossy")
         g.distribution = "GGX"
-        g.inputs["Color"].default_value = (*p["ms"], 1)
+        # GGX's peak at normal incidence is c * Il * (s+2)/8 with alpha^2 = 2/(s+2); Phong's highlight
+        # peak is ms * Il. So c = ms * 8/(s+2) (at most ms) gives the same highlight, where c = ms would
+        # turn every shiny sphere into a near-mirror of the floor.
+        peak = min(1.0, 8.0 / (p["s"] + 2.0))
+        g.inputs["Color"].default_value = (*(c * peak for c in p["ms"]), 1)
         g.inputs["Roughness"].default_value = (2.0 / (p["s"] + 2.0)) ** 0.25
         closures.append(g)
     if nonzero(p["kr"]):
