@@ -38,7 +38,8 @@ PathRender::PathRender(std::shared_ptr<const TraceScene> scene, const PathSettin
     const size_t n = size_t(settings_.width) * size_t(settings_.height);
     sum_.assign(3 * n, 0.0);
     sumSq_.assign(3 * n, 0.0);
-    count_.assign(n, 0u);
+    count_.reset(new std::atomic<uint32_t>[n]);
+    for (size_t i = 0; i < n; ++i) count_[i].store(0u, std::memory_order_relaxed);
     if (settings_.coverage) {
         coverage_.assign(n, kBackgroundId);
         for (int y = 0; y < settings_.height; ++y)
@@ -54,14 +55,15 @@ void PathRender::renderPixel(const PathIntegrator& integrator, int x, int y, int
     rng.pixel = uint32_t(p);
     rng.seed = settings_.seed;
     for (int k = 0; k < count; ++k) {
-        rng.sample = count_[p];
+        const uint32_t done = count_[p].load(std::memory_order_relaxed);
+        rng.sample = done;
         const glm::vec4 j = rng.draw(0, kGroupCamera);
         const glm::vec3 c = integrator.trace(cameraRay(view_, float(x) + j.x, float(y) + j.y), rng).color;
         for (int ch = 0; ch < 3; ++ch) {
             sum_[3 * p + size_t(ch)] += double(c[ch]);
             sumSq_[3 * p + size_t(ch)] += double(c[ch]) * double(c[ch]);
         }
-        ++count_[p];
+        count_[p].store(done + 1, std::memory_order_release);
     }
 }
 
@@ -108,19 +110,23 @@ bool PathRender::addSamples(int count, const std::atomic<bool>* cancel, const st
 }
 
 int PathRender::samples() const {
-    return count_.empty() ? 0 : int(*std::min_element(count_.begin(), count_.end()));
+    uint32_t fewest = ~0u;
+    const size_t n = size_t(settings_.width) * size_t(settings_.height);
+    for (size_t i = 0; i < n; ++i) fewest = std::min(fewest, count_[i].load(std::memory_order_acquire));
+    return n == 0 ? 0 : int(fewest);
 }
 
 glm::vec3 PathRender::mean(int x, int y) const {
     const size_t p = size_t(y) * size_t(settings_.width) + size_t(x);
-    if (count_[p] == 0) return glm::vec3(0.0f);
-    const double n = double(count_[p]);
+    const uint32_t count = count_[p].load(std::memory_order_acquire);
+    if (count == 0) return glm::vec3(0.0f);
+    const double n = double(count);
     return {float(sum_[3 * p] / n), float(sum_[3 * p + 1] / n), float(sum_[3 * p + 2] / n)};
 }
 
 glm::vec3 PathRender::standardError(int x, int y) const {
     const size_t p = size_t(y) * size_t(settings_.width) + size_t(x);
-    const double n = double(count_[p]);
+    const double n = double(count_[p].load(std::memory_order_acquire));
     if (n < 2.0) return glm::vec3(0.0f);
     glm::vec3 se;
     for (int ch = 0; ch < 3; ++ch) {

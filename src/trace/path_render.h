@@ -38,7 +38,11 @@ public:
     const PathSettings& settings() const { return settings_; }
     // The fewest samples any pixel has.
     int samples() const;
-    uint32_t pixelSamples(int x, int y) const { return count_[size_t(y) * size_t(width()) + size_t(x)]; }
+    // Safe to call while a pass runs (the viewer shows the first pass's finished tiles): a count read as n
+    // (acquire) makes that pixel's first n samples' sums visible.
+    uint32_t pixelSamples(int x, int y) const {
+        return count_[size_t(y) * size_t(width()) + size_t(x)].load(std::memory_order_acquire);
+    }
 
     // The mean of each pixel's samples, linear RGB, alpha 1, row 0 at the top (black where none).
     ImageF image() const;
@@ -58,7 +62,7 @@ private:
     PathSettings settings_;
     ViewSetup view_;
     std::vector<double> sum_, sumSq_;  // 3 per pixel
-    std::vector<uint32_t> count_;
+    std::unique_ptr<std::atomic<uint32_t>[]> count_;  // per pixel; written (release) after its sums
     std::vector<uint32_t> coverage_;
 };
 
