@@ -57,6 +57,7 @@ public:
     GLuint tileTexture() const { return done_.id(); }  // R8, one texel per tile: 1 = has its first sample
     int tileSize() const { return kTileSize; }
     int samples() const { return samples_; }
+    uint64_t revision() const { return revision_; }  // the state revision being rendered
     float passProgress() const;   // of the pass under way, [0, 1]
     double noise8() const { return noise8_; }  // mean standard error, 8-bit sRGB units
     double seconds() const;
