@@ -71,7 +71,7 @@ std::optional<EmitterSample> Emitters::sample(const glm::vec3& P, const glm::vec
     float pick = u.x;
     const float objects = pick_.empty() ? 0.0f : objectShare();
     if (pick >= objects) {
-        if (!environment_->emits()) return std::nullopt;
+        if (!environment_->sampled()) return std::nullopt;
         const EnvironmentDirection d = environment_->sample(glm::vec3((pick - objects) / (1.0f - objects), u.y, u.z));
         EmitterSample out;
         out.wi = d.dir;
@@ -146,7 +146,7 @@ float Emitters::pdfHit(const Ray& ray, const Hit& hit) const {
 }
 
 float Emitters::pdfEnvironment(const glm::vec3& dir) const {
-    if (!environment_->emits()) return 0.0f;
+    if (!environment_->sampled()) return 0.0f;
     const float objects = pick_.empty() ? 0.0f : objectShare();
     return (1.0f - objects) * environment_->pdf(dir);
 }

@@ -1,6 +1,6 @@
 // Emitters: the light sources the path tracer samples by next-event estimation besides the point and
 // directional lights (design.md §8): emissive spheres and mesh triangles (material `emission`, both sides)
-// and the environment. One is picked per sample: the environment with probability 1/2 when there are also
+// and an .hdr environment (a uniform one is left to BSDF sampling: EnvironmentSampler::sampled). One is picked per sample: the environment with probability 1/2 when there are also
 // emissive objects (else 1), an object with probability ∝ its power (luminance(emission) × area), so a
 // triangle's pick does not need its index. A sphere seen from outside is sampled by the cone it subtends,
 // from inside by area; a triangle by area. Emissive planes are infinite: they are found by BSDF sampling
@@ -30,7 +30,7 @@ class Emitters {
 public:
     Emitters(const TraceScene& scene, const EnvironmentSampler& environment);
 
-    bool empty() const { return pick_.empty() && !environment_->emits(); }
+    bool empty() const { return pick_.empty() && !environment_->sampled(); }
     // A sample toward a light from point P; u.x picks the emitter, (u.y, u.z, u.w) the point on it.
     std::optional<EmitterSample> sample(const glm::vec3& P, const glm::vec4& u) const;
     // The density with which sample(P, ·) yields the direction of `ray` (origin P) that hit `hit`, an
@@ -47,7 +47,7 @@ private:
         glm::vec3 p0{0.0f}, e1{0.0f}, e2{0.0f};  // triangle corner 0 and the edges to 1 and 2, world units
         glm::vec3 Le{0.0f};
     };
-    float objectShare() const { return environment_->emits() ? 0.5f : 1.0f; }
+    float objectShare() const { return environment_->sampled() ? 0.5f : 1.0f; }
     // Solid-angle density of the sphere's sampling from P toward the point q on it, before the pick.
     static float sphereDensity(const Sphere& s, const glm::vec3& P, const glm::vec3& q);
 

@@ -26,6 +26,10 @@ public:
 
     // Whether any light arrives from outside the scene (an .hdr map, or a non-black background).
     bool emits() const { return emits_; }
+    // Whether light sampling should draw from it: an .hdr map. A uniform environment is left to BSDF
+    // sampling, which for it is the better strategy (the cosine lobe is a Lambertian surface's ideal
+    // importance sampler of constant radiance, and a glossy lobe's own sampling is too).
+    bool sampled() const { return emits_ && map_ != nullptr; }
     // u.x picks the texel, (u.y, u.z) the point in it (a uniform environment uses (u.y, u.z)).
     EnvironmentDirection sample(glm::vec3 u) const;
     float pdf(const glm::vec3& dir) const;

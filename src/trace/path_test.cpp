@@ -3,6 +3,7 @@
 // 1), the white furnace, agreement of BSDF-only, light-only and MIS estimators, direct lighting equal to the
 // Whitted tracer, and bit-identical images for any thread count, tile size or split into passes. Every
 // comparison is noise-aware (standard errors from the render itself) and has a negative control.
+#include "scene/environment_load.h"
 #include "scene/scene_load.h"
 #include "trace/path_render.h"
 #include "trace/trace_image.h"
@@ -237,6 +238,38 @@ TEST(PathEstimators, BsdfLightAndMisSamplingConvergeToTheSameImage) {
         test::writeEvidence("path_estimator_light", light.render->image());
         test::writeEvidence("path_estimator_bsdf", bsdf.render->image());
     }
+}
+
+// The same with an .hdr environment as the only light: its importance sampling (light) against the BSDF's.
+TEST(PathEstimators, EnvironmentMapSamplingAgreesWithBsdfSampling) {
+    Scene scene = areaLightScene();
+    scene.spheres.pop_back();  // the lamp
+    scene.meshes.clear();      // and the panel: the sky alone
+    scene.environment = Environment{};
+    scene.environment->hdr = SHADELAB_SOURCE_DIR "/assets/environments/sky.hdr";
+    scene.environment->rotation = 40.0f;
+    shading::PrefilterSettings p;
+    p.size = 32;
+    p.samples = 4;
+    loadEnvironment(scene, "", p);
+    PathSettings s = small(32, 24, 64, 2);
+    s.estimator = PathEstimator::Light;
+    const PathRun light = pathRun(scene, s);
+    s.estimator = PathEstimator::Bsdf;
+    const PathRun bsdf = pathRun(scene, s);
+    s.estimator = PathEstimator::Mis;
+    const PathRun mis = pathRun(scene, s);
+    for (int c = 0; c < 3; ++c) {
+        std::printf("channel %d: mis %.5f ± %.5f, light %.5f ± %.5f, bsdf %.5f ± %.5f\n", c, mis.mean[c], mis.se[c],
+                    light.mean[c], light.se[c], bsdf.mean[c], bsdf.se[c]);
+        EXPECT_LT(std::abs(zScore(light, bsdf, c)), 3.0) << "light vs bsdf, channel " << c;
+        EXPECT_LT(std::abs(zScore(mis, bsdf, c)), 3.0) << "mis vs bsdf, channel " << c;
+    }
+    // Negative control: the sky 10 % brighter is told apart (a sky turned about +y is not: the scene's
+    // mean light comes mostly from overhead).
+    scene.environment->intensity = 1.1f;
+    const PathRun brighter = pathRun(scene, s);
+    EXPECT_GT(std::abs(zScore(brighter, bsdf, 1)), 3.0);
 }
 
 TEST(PathEstimators, NegativeControlALampTwentyPercentBrighterIsSeen) {
