@@ -7,6 +7,7 @@
 #include "app/specular_lobe.h"
 
 #include <imgui.h>
+#include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <string>
@@ -53,6 +54,14 @@ void drawMaterialSection(PanelContext& ctx) {
     changed |= ImGui::ColorEdit3("kr  reflect", glm::value_ptr(m.kr), colorFlags);
     changed |= ImGui::ColorEdit3("kt  transmit", glm::value_ptr(m.kt), colorFlags);
     changed |= ImGui::SliderFloat("ior", &m.ior, 1.0f, 3.0f, "%.3f");
+    // Radiance, not a reflectance: values above 1 are the point (an area light for the path tracer).
+    if (ImGui::DragFloat3("emission", glm::value_ptr(m.emission), 0.05f, 0.0f, 1000.0f, "%.2f")) {
+        m.emission = glm::max(m.emission, glm::vec3(0.0f));
+        changed = true;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("emitted radiance: an area light under the path tracer (Global mode); the rasterizer and "
+                          "the Whitted reference add it to the object's colour");
     ImGui::TextDisabled("pbr: glTF metallic-roughness");
     changed |= ImGui::ColorEdit3("baseColor", glm::value_ptr(m.baseColor), ImGuiColorEditFlags_Float);
     changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f, "%.2f");
