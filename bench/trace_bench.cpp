@@ -32,6 +32,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -251,6 +252,21 @@ RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, cons
 
 double mraysPerSecond(const RayCounts& c, double s) { return double(c.primary + c.hits) / s * 1e-6; }
 
+// Node count, mean children per node, leaves and mean primitives per leaf of a built tree.
+void printTreeStats(const char* what, const trace::Bvh& bvh) {
+    size_t children = 0, leaves = 0, prims = 0;
+    for (const trace::BvhNode& n : bvh.nodes)
+        for (int k = 0; k < 4; ++k) {
+            if (!n.used(k)) continue;
+            ++children;
+            if (trace::isLeafRef(n.child[k])) ++leaves, prims += trace::leafCount(n.child[k]);
+        }
+    std::printf("%s: %zu nodes (%.2f children each, %zu MiB), %zu leaves (%.2f primitives each), depth %d\n", what,
+                bvh.nodes.size(), double(children) / double(std::max<size_t>(bvh.nodes.size(), 1)),
+                bvh.nodes.size() * sizeof(trace::BvhNode) >> 20, leaves, double(prims) / double(std::max<size_t>(leaves, 1)),
+                bvh.depth);
+}
+
 void benchEngine(const Options& o) {
     if (!std::filesystem::exists(o.engine)) {
         std::printf("engine: %s missing (apt-get install assimp-testmodels); skipped\n", o.engine.c_str());
@@ -259,8 +275,9 @@ void benchEngine(const Options& o) {
     const Scene scene = loadScene(o.engine);
     auto t0 = Clock::now();
     const trace::TraceScene ts(scene);
-    std::printf("engine: %zu triangles, BVH %zu nodes, depth %d, built in %.1f ms\n", ts.meshBvh()->triangleCount(),
-                ts.meshBvh()->bvh().nodes.size(), ts.meshBvh()->bvh().depth, 1e3 * seconds(t0, Clock::now()));
+    std::printf("engine: %zu triangles, built in %.1f ms\n", ts.meshBvh()->triangleCount(),
+                1e3 * seconds(t0, Clock::now()));
+    printTreeStats("engine BVH", ts.meshBvh()->bvh());
     const ViewSetup view = makeViewSetup(ts.scene(), o.width, o.height);
     std::vector<double> ours;
     RayCounts c;
@@ -404,36 +421,37 @@ void benchIncoherent(const Options& o) {
     const trace::TraceScene ts(scene);
     const ViewSetup view = makeViewSetup(ts.scene(), o.width, o.height);
     const std::vector<trace::Ray> rays = secondaryRays(ts, view, o.threads);
-    std::vector<double> ours;
-    uint64_t hits = 0;
+#ifdef SHADELAB_HAVE_EMBREE
+    std::optional<EmbreeScene> es;
+    if (o.embree) es.emplace(scene);
+#endif
+    // Runs alternate between the two (ours, Embree, ours, ...), so load from other processes hits both alike.
+    std::vector<double> ours, theirs;
+    uint64_t hits = 0, eh = 0;
     for (int r = 0; r < o.runs; ++r) {
-        const auto t0 = Clock::now();
+        auto t0 = Clock::now();
         hits = nearestHitsOurs(ts, rays, o.threads);
-        const double s = seconds(t0, Clock::now());
+        double s = seconds(t0, Clock::now());
         ours.push_back(double(rays.size()) / s * 1e-6);
         std::printf("  shadelab run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, ours.back());
+#ifdef SHADELAB_HAVE_EMBREE
+        if (!es) continue;
+        t0 = Clock::now();
+        eh = nearestHitsEmbree(*es, rays, o.threads);
+        s = seconds(t0, Clock::now());
+        theirs.push_back(double(rays.size()) / s * 1e-6);
+        std::printf("  embree run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, theirs.back());
+#endif
     }
     const double oursMedian = median(ours);
     std::printf("incoherent %dx%d, %d threads: %zu cosine-distributed secondary rays, %llu hit\n", o.width,
                 o.height, o.threads, rays.size(), (unsigned long long)hits);
     std::printf("shadelab incoherent: median of %d: %.2f Mrays/s\n", o.runs, oursMedian);
-#ifdef SHADELAB_HAVE_EMBREE
-    if (!o.embree) return;
-    const EmbreeScene es(scene);
-    std::vector<double> theirs;
-    uint64_t eh = 0;
-    for (int r = 0; r < o.runs; ++r) {
-        const auto t0 = Clock::now();
-        eh = nearestHitsEmbree(es, rays, o.threads);
-        const double s = seconds(t0, Clock::now());
-        theirs.push_back(double(rays.size()) / s * 1e-6);
-        std::printf("  embree run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, theirs.back());
-    }
+    if (theirs.empty()) return;
     const double embreeMedian = median(theirs);
     std::printf("embree incoherent: %llu hit; median of %d: %.2f Mrays/s\n", (unsigned long long)eh, o.runs,
                 embreeMedian);
     std::printf("ratio shadelab / embree, incoherent: %.2f (target >= 1.0)\n", oursMedian / embreeMedian);
-#endif
 }
 
 // ---- (d) scale: a generated grid of UV spheres ---------------------------------------------------------
@@ -510,8 +528,8 @@ void benchScale(const Options& o) {
     t0 = Clock::now();
     const trace::TraceScene ts(scene);
     const double build = seconds(t0, Clock::now());
-    std::printf("shadelab build: %.3f s (%zu BVH nodes, depth %d), peak RSS so far %.1f MiB\n", build,
-                ts.meshBvh()->bvh().nodes.size(), ts.meshBvh()->bvh().depth, peakRssKiB() / 1024.0);
+    std::printf("shadelab build: %.3f s, peak RSS so far %.1f MiB\n", build, peakRssKiB() / 1024.0);
+    printTreeStats("scale BVH", ts.meshBvh()->bvh());
     const ViewSetup view = makeViewSetup(ts.scene(), o.width, o.height);
     t0 = Clock::now();
     const RayCounts c = traceOurs(ts, view, o.threads);

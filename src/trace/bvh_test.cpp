@@ -184,55 +184,92 @@ std::vector<Bounds> boxesOf(const std::vector<SceneTri>& tris) {
 
 // ---- Structural invariants ------------------------------------------------------------------------
 
-bool contains(const float* outer, const Bounds& b) {
+Bounds box(glm::vec3 lo, glm::vec3 hi) { return Bounds{lo, hi}; }
+
+Bounds childBox(const BvhNode& n, int k) {
+    return box({n.bounds[0][k], n.bounds[1][k], n.bounds[2][k]}, {n.bounds[3][k], n.bounds[4][k], n.bounds[5][k]});
+}
+
+bool contains(const Bounds& outer, const Bounds& b) {
     for (int a = 0; a < 3; ++a)
-        if (b.lo[a] < outer[a] || b.hi[a] > outer[3 + a]) return false;
+        if (b.lo[a] < outer.lo[a] || b.hi[a] > outer.hi[a]) return false;
     return true;
 }
 
-Bounds box(glm::vec3 lo, glm::vec3 hi) { return Bounds{lo, hi}; }
-
-// Every primitive in exactly one leaf, leaves of 1..maxLeaf primitives whose boxes hold them, children
-// inside their parent, sibling pairs at even indices, and the reported depth right and below the limit.
-::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Bounds>& boxes, int maxLeaf) {
+// Every primitive in exactly one leaf, leaves of 1..maxLeaf primitives inside their boxes, interior children's
+// boxes inside their parent's box for them, unused children inverted and empty, every node reached once, and
+// at most depth + 1 levels. `order[k]` is the primitive (index into boxes) at leaf slot k.
+::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Bounds>& boxes, int maxLeaf,
+                                      const std::vector<uint32_t>& order) {
     if (boxes.empty())
         return bvh.empty() ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << "not empty";
-    if (bvh.order.size() != boxes.size()) return ::testing::AssertionFailure() << "order has " << bvh.order.size();
+    if (order.size() != boxes.size() || bvh.primitives != boxes.size())
+        return ::testing::AssertionFailure() << "order has " << order.size();
     std::vector<int> seen(boxes.size(), 0);
-    int maxDepth = 0;
-    size_t visited = 0;
-    std::vector<std::pair<uint32_t, int>> stack{{0u, 0}};
+    std::vector<int> reached(bvh.nodes.size(), 0);
+    int levels = 0;
+    struct Item {
+        uint32_t node;
+        Bounds box;
+        int level;
+    };
+    std::vector<Item> stack{{0u, bvh.bounds, 1}};
     while (!stack.empty()) {
-        const auto [ni, depth] = stack.back();
+        const Item it = stack.back();
         stack.pop_back();
-        ++visited;
-        maxDepth = std::max(maxDepth, depth);
-        const BvhNode& n = bvh.nodes[ni];
-        if (n.isLeaf()) {
-            if (n.count > uint32_t(maxLeaf))
-                return ::testing::AssertionFailure() << "leaf " << ni << " holds " << n.count;
-            if (size_t(n.first) + n.count > bvh.order.size()) return ::testing::AssertionFailure() << "leaf range";
-            for (uint32_t k = n.first; k < n.first + n.count; ++k) {
-                const uint32_t p = bvh.order[k];
+        if (it.node >= bvh.nodes.size() || reached[it.node]++)
+            return ::testing::AssertionFailure() << "node " << it.node << " out of range or reached twice";
+        levels = std::max(levels, it.level);
+        const BvhNode& n = bvh.nodes[it.node];
+        int used = 0;
+        for (int k = 0; k < 4; ++k) {
+            const uint32_t ref = n.child[k];
+            if (!n.used(k)) {
+                if (ref != kLeafBit) return ::testing::AssertionFailure() << "unused child " << k << " has a reference";
+                continue;
+            }
+            ++used;
+            const Bounds b = childBox(n, k);
+            if (!contains(it.box, b))
+                return ::testing::AssertionFailure() << "node " << it.node << " child " << k << " outside its parent";
+            if (!isLeafRef(ref)) {
+                stack.push_back({ref, b, it.level + 1});
+                continue;
+            }
+            const uint32_t first = leafFirst(ref), count = leafCount(ref);
+            if (count == 0 || count > uint32_t(maxLeaf))
+                return ::testing::AssertionFailure() << "leaf in node " << it.node << " holds " << count;
+            if (size_t(first) + count > order.size()) return ::testing::AssertionFailure() << "leaf range";
+            for (uint32_t s = first; s < first + count; ++s) {
+                const uint32_t p = order[s];
                 if (p >= boxes.size() || seen[p]++)
                     return ::testing::AssertionFailure() << "primitive " << p << " twice";
-                if (!contains(n.bounds, boxes[p]))
-                    return ::testing::AssertionFailure() << "leaf " << ni << " misses box " << p;
+                if (!contains(b, boxes[p]))
+                    return ::testing::AssertionFailure() << "leaf in node " << it.node << " misses box " << p;
             }
-            continue;
         }
-        if (n.first % 2 != 0 || n.first < 2 || size_t(n.first) + 1 >= bvh.nodes.size())
-            return ::testing::AssertionFailure() << "node " << ni << " has children at " << n.first;
-        for (uint32_t c = n.first; c <= n.first + 1; ++c) {
-            if (!contains(n.bounds, box(glm::make_vec3(bvh.nodes[c].lo()), glm::make_vec3(bvh.nodes[c].hi()))))
-                return ::testing::AssertionFailure() << "child " << c << " outside";
-            stack.emplace_back(c, depth + 1);
-        }
+        if (used == 0) return ::testing::AssertionFailure() << "node " << it.node << " has no children";
     }
-    if (visited + 1 != bvh.nodes.size()) return ::testing::AssertionFailure() << "unreachable nodes";
-    if (maxDepth != bvh.depth || bvh.depth >= kMaxBvhDepth)
-        return ::testing::AssertionFailure() << "depth " << maxDepth << " vs reported " << bvh.depth;
+    for (size_t i = 0; i < reached.size(); ++i)
+        if (!reached[i]) return ::testing::AssertionFailure() << "node " << i << " unreachable";
+    if (levels > bvh.depth + 1 || bvh.depth >= kMaxBvhDepth)
+        return ::testing::AssertionFailure() << levels << " levels vs reported depth " << bvh.depth;
     return ::testing::AssertionSuccess();
+}
+
+::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Bounds>& boxes, int maxLeaf) {
+    return bvhIsValid(bvh, boxes, maxLeaf, bvh.order);
+}
+
+// A MeshBvh's leaf order as indices into sceneTriangles() (which lists the kept triangles by source).
+::testing::AssertionResult meshBvhIsValid(const MeshBvh& bvh, const std::vector<SceneTri>& tris, int maxLeaf) {
+    std::vector<uint32_t> order(bvh.triangleCount());
+    for (uint32_t s = 0; s < order.size(); ++s) {
+        const auto it = std::lower_bound(tris.begin(), tris.end(), bvh.sourceTriangle(s),
+                                         [](const SceneTri& t, uint32_t src) { return t.source < src; });
+        order[s] = it != tris.end() && it->source == bvh.sourceTriangle(s) ? uint32_t(it - tris.begin()) : UINT32_MAX;
+    }
+    return bvhIsValid(bvh.bvh(), boxesOf(tris), maxLeaf, order);
 }
 
 // ---- Real models ---------------------------------------------------------------------------------
@@ -252,7 +289,7 @@ TEST_P(BvhModel, MatchesBruteForce) {
     ASSERT_FALSE(tris.empty());
     const MeshBvh bvh(scene);
     ASSERT_EQ(bvh.triangleCount(), tris.size());
-    EXPECT_TRUE(bvhIsValid(bvh.bvh(), boxesOf(tris), BvhBuildOptions{}.maxLeafSize));
+    EXPECT_TRUE(meshBvhIsValid(bvh, tris, BvhBuildOptions{}.maxLeafSize));
 
     const std::vector<Ray> rays = randomRays(tris, bvh.bounds(), GetParam().rays, 20240611u);
     ASSERT_GE(rays.size(), size_t(GetParam().rays) - 50);
@@ -296,8 +333,9 @@ TEST(BvhBuild, EmptyAndSinglePrimitive) {
     const std::vector<Bounds> one = {box({1, 2, 3}, {4, 5, 6})};
     const Bvh b = buildBvh(one);
     EXPECT_TRUE(bvhIsValid(b, one, 4));
-    EXPECT_TRUE(b.nodes[0].isLeaf());
-    EXPECT_EQ(b.nodes[0].count, 1u);
+    ASSERT_EQ(b.nodes.size(), 1u);
+    EXPECT_EQ(b.nodes[0].child[0], makeLeafRef(0, 1));
+    EXPECT_FALSE(b.nodes[0].used(1));
     EXPECT_EQ(b.depth, 0);
 }
 
@@ -341,9 +379,9 @@ TEST(BvhBuild, OptionsAndSahCostOnRandomBoxes) {
         }
     // Negative control: the validator notices a shrunken leaf and a lost primitive.
     Bvh broken = buildBvh(boxes);
-    size_t leafIndex = 0;
-    while (!broken.nodes[leafIndex].isLeaf() || leafIndex == 1) ++leafIndex;
-    broken.nodes[leafIndex].bounds[3] = broken.nodes[leafIndex].bounds[0];
+    size_t leafNode = 0;
+    while (!isLeafRef(broken.nodes[leafNode].child[0])) ++leafNode;
+    broken.nodes[leafNode].bounds[3][0] = broken.nodes[leafNode].bounds[0][0];
     EXPECT_FALSE(bvhIsValid(broken, boxes, 4));
     broken = buildBvh(boxes);
     broken.order[0] = broken.order[1];
@@ -386,7 +424,7 @@ TEST(BvhBuild, ZeroAreaAndDuplicateTrianglesMatchBruteForce) {
     const Scene sc = degenerateScene();
     const std::vector<SceneTri> tris = sceneTriangles(sc);
     const MeshBvh bvh(sc);
-    EXPECT_TRUE(bvhIsValid(bvh.bvh(), boxesOf(tris), 4));
+    EXPECT_TRUE(meshBvhIsValid(bvh, tris, 4));
     std::vector<Ray> rays = randomRays(tris, bvh.bounds(), 10000, 99u);
     rays.push_back(Ray{{0.1f, 0.1f, 5.0f}, {0, 0, -1}});
     const std::vector<Nearest> brute = bruteForceAll(tris, rays);
