@@ -1,11 +1,15 @@
 // The SAH BVH (bvh.h) and its traversals (mesh_bvh.h, sphere_set.h) against brute force: same nearest hit (t
 // bit-equal, same triangle) and any-hit answers for random rays over real assimp-testmodels meshes.
-// Sections: brute force | structural invariants | real models | degenerate inputs | spheres.
+// Sections: brute force | structural invariants | real models | degenerate inputs | random triangle soups
+// (issue 14's 4-wide tree: sizes around the parallel-build threshold, ties, empty scenes, thread counts,
+// the 4-wide slab test) | spheres.
 #include "trace/bvh.h"
 #include "scene/scene_load.h"
 #include "shading/lighting.h"
 #include "trace/mesh_bvh.h"
+#include "trace/slab_test.h"
 #include "trace/sphere_set.h"
+#include "trace/trace_scene.h"
 #include "trace/trace_test_util.h"
 #include "trace/watertight.h"
 
@@ -18,6 +22,7 @@
 #include <iomanip>
 #include <optional>
 #include <random>
+#include <cstring>
 #include <sstream>
 #include <thread>
 
@@ -446,6 +451,221 @@ TEST(BvhBuild, ZeroAreaAndDuplicateTrianglesMatchBruteForce) {
     uint32_t firstCopy = 0;
     while (tris[firstCopy].v[0] != -3.0f) ++firstCopy;
     EXPECT_EQ(bvh.sourceTriangle(copy->slot), tris[firstCopy].source) << "a tie must go to the first copy";
+}
+
+// ---- Random triangle soups (the 4-wide tree) --------------------------------------------------------
+
+// `n` random triangles in [-1, 1]^3, sizes from 1e-4 to 1 (log-uniform), a new part every 97 triangles, and
+// every 11th triangle an exact copy of an earlier one (exact ties in t).
+Scene soupScene(int n, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), e(-4.0f, 0.0f);
+    std::normal_distribution<float> g;
+    Scene sc;
+    sc.meshes.push_back(Mesh{});
+    MeshGeometry p;
+    std::vector<glm::vec3> all;
+    auto flush = [&] {
+        if (!p.indices.empty()) sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(p)), Material{}});
+        p = MeshGeometry{};
+    };
+    for (int i = 0; i < n; ++i) {
+        glm::vec3 v[3];
+        if (i % 11 == 10 && !all.empty()) {
+            const size_t k = 3 * size_t(std::uniform_int_distribution<size_t>(0, all.size() / 3 - 1)(rng));
+            v[0] = all[k], v[1] = all[k + 1], v[2] = all[k + 2];
+        } else {
+            const glm::vec3 c(u(rng), u(rng), u(rng));
+            const float size = std::pow(10.0f, e(rng));
+            for (glm::vec3& q : v) q = c + size * glm::vec3(g(rng), g(rng), g(rng));
+        }
+        for (const glm::vec3& q : v) {
+            p.indices.push_back(uint32_t(p.positions.size()));
+            p.positions.push_back(q);
+            all.push_back(q);
+        }
+        if (i % 97 == 96) flush();
+    }
+    flush();
+    return sc;
+}
+
+TEST(BvhSoup, RandomSoupsMatchBruteForce) {
+    // Sizes below and above the parallel build's queue threshold (4,096) and the parallel binning one.
+    for (const int n : {1, 2, 5, 37, 1000, 6000, 70000}) {
+        const Scene sc = soupScene(n, 1000u + uint32_t(n));
+        const std::vector<SceneTri> tris = sceneTriangles(sc);
+        BvhBuildOptions o;
+        o.threads = 2;
+        const MeshBvh bvh(sc, o);
+        ASSERT_EQ(bvh.triangleCount(), tris.size());
+        EXPECT_TRUE(meshBvhIsValid(bvh, tris, o.maxLeafSize)) << n << " triangles";
+        const std::vector<Ray> rays = randomRays(tris, bvh.bounds(), n < 10000 ? 4000 : 1500, 7u + uint32_t(n));
+        const std::vector<Nearest> brute = bruteForceAll(tris, rays);
+        const Disagreement d = compare(bvh, rays, brute);
+        EXPECT_GT(d.hits, d.rays / 10) << n << " triangles: too few hits to test anything";
+        EXPECT_EQ(d.closest, 0u) << n << " triangles: " << d.first;
+        EXPECT_EQ(d.any, 0u) << n << " triangles: " << d.firstAny;
+        if (n == 6000) {
+            // Negative control: brute force that lost every 7th triangle must disagree with the BVH.
+            std::vector<SceneTri> fewer;
+            for (size_t i = 0; i < tris.size(); ++i)
+                if (i % 7 != 3) fewer.push_back(tris[i]);
+            EXPECT_GT(compare(bvh, rays, bruteForceAll(fewer, rays)).closest, 0u) << "cannot see a lost triangle";
+        }
+    }
+}
+
+TEST(BvhSoup, ExactTiesGoToTheLowerSourceTriangle) {
+    // A strip of quads in z = 0 (two triangles each, sharing the diagonal and the edges between quads), the
+    // whole strip repeated three times (exact copies in later parts), and rays straight down through the
+    // shared edges and vertices: every hit is a tie, which must go to the lowest source triangle.
+    Scene sc;
+    sc.meshes.push_back(Mesh{});
+    const int quads = 3000;  // 6,000 triangles per copy: the queued parallel build
+    for (int copy = 0; copy < 3; ++copy) {
+        MeshGeometry p;
+        for (int q = 0; q <= quads; ++q) {
+            p.positions.push_back({float(q), 0.0f, 0.0f});
+            p.positions.push_back({float(q), 1.0f, 0.0f});
+        }
+        for (uint32_t q = 0; q < uint32_t(quads); ++q) {
+            const uint32_t a = 2 * q, b = 2 * q + 2, c = 2 * q + 3, d = 2 * q + 1;
+            p.indices.insert(p.indices.end(), {a, b, c, a, c, d});
+        }
+        sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(p)), Material{}});
+    }
+    const std::vector<SceneTri> tris = sceneTriangles(sc);
+    const MeshBvh bvh(sc);
+    std::mt19937 rng(31);
+    std::uniform_int_distribution<int> pick(1, quads - 1);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 3000; ++i) {
+        const float x = float(pick(rng));
+        const float y = i % 3 == 0 ? 0.5f : (i % 3 == 1 ? 0.0f : 1.0f);  // a shared edge, or a shared vertex
+        const float xo = i % 2 ? x : x + 0.5f;                           // a diagonal's midpoint every other ray
+        rays.push_back(Ray{{xo, i % 2 ? y : 0.5f, 2.0f}, {0.0f, 0.0f, -1.0f}});
+    }
+    const std::vector<Nearest> brute = bruteForceAll(tris, rays);
+    const Disagreement d = compare(bvh, rays, brute);
+    EXPECT_EQ(d.hits, rays.size());
+    EXPECT_EQ(d.closest, 0u) << d.first;
+    EXPECT_EQ(d.any, 0u) << d.firstAny;
+    // Negative control: every ray really is a tie: brute force keeping the highest source instead disagrees.
+    size_t ties = 0;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const WatertightRay wr = makeWatertightRay(rays[i]);
+        uint32_t last = UINT32_MAX;
+        for (const SceneTri& t : tris) {
+            const std::optional<TriangleHit> h = intersectTriangle(wr, t.v, t.v + 3, t.v + 6, INFINITY);
+            if (h && h->t == brute[i].t) last = t.source;
+        }
+        ties += last != brute[i].source;
+    }
+    EXPECT_EQ(ties, rays.size()) << "some rays were not ties, so they test nothing about tie-breaking";
+}
+
+TEST(BvhSoup, EmptySceneAndOnlyDegenerateTrianglesAreNeverHit) {
+    const Ray down{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, -1.0f}};
+    auto check = [&](const Scene& sc, size_t triangles, bool hit) {
+        const MeshBvh bvh(sc);
+        EXPECT_EQ(bvh.triangleCount(), triangles);
+        EXPECT_EQ(bvh.bvh().empty(), triangles == 0);
+        EXPECT_EQ(bvh.closestHit(down, INFINITY).has_value(), hit);
+        EXPECT_EQ(bvh.anyHit(down, INFINITY), hit);
+        const TraceScene ts(sc);
+        EXPECT_EQ(ts.intersect(down).has_value(), hit);
+        EXPECT_EQ(ts.occluded(down, 10.0f), hit);
+    };
+    check(Scene{}, 0, false);
+    // Points, a repeated vertex and collinear corners, all in the ray's way.
+    MeshGeometry p;
+    p.positions = {{0.25f, 0.25f, 0.0f}, {0.25f, 0.25f, 0.0f}, {0.25f, 0.25f, 0.0f},
+                   {0.0f, 0.0f, 0.0f},   {0.5f, 0.5f, 0.0f},   {1.0f, 1.0f, 0.0f}};
+    p.indices = {0, 1, 2, 3, 4, 5, 0, 0, 5, 3, 5, 3};
+    Scene degenerate;
+    degenerate.meshes.push_back(Mesh{});
+    degenerate.meshes[0].parts.push_back(MeshPart{shareGeometry(p), Material{}});
+    check(degenerate, 0, false);
+    // Negative control: one real triangle under the ray is found.
+    p.positions.push_back({1.0f, 0.0f, 0.0f});
+    p.indices.insert(p.indices.end(), {3, 6, 5});
+    Scene real;
+    real.meshes.push_back(Mesh{});
+    real.meshes[0].parts.push_back(MeshPart{shareGeometry(p), Material{}});
+    check(real, 1, true);
+}
+
+TEST(BvhBuild, SameTreeForAnyThreadCount) {
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<float> u(-10.0f, 10.0f), s(0.0f, 0.5f);
+    std::vector<Bounds> boxes;
+    for (int i = 0; i < 150000; ++i) {  // above the parallel binning threshold (65,536)
+        const glm::vec3 p(u(rng), u(rng) * 0.1f, u(rng));
+        boxes.push_back(box(p, p + glm::vec3(s(rng), s(rng), s(rng))));
+    }
+    auto same = [](const Bvh& a, const Bvh& b) {
+        return a.nodes.size() == b.nodes.size() && a.order == b.order && a.depth == b.depth &&
+               std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)) == 0;
+    };
+    BvhBuildOptions o;
+    o.threads = 1;
+    const Bvh one = buildBvh(boxes, o);
+    EXPECT_TRUE(bvhIsValid(one, boxes, o.maxLeafSize));
+    for (const int t : {2, 3, 8}) {
+        o.threads = t;
+        const Bvh many = buildBvh(boxes, o);
+        EXPECT_TRUE(same(one, many)) << t << " threads built a different tree";
+    }
+    // Negative control: a different bin count builds a different tree, and the comparison sees it.
+    o.bins = 8;
+    EXPECT_FALSE(same(one, buildBvh(boxes, o)));
+}
+
+TEST(SlabTest, FourBoxesAgreeWithTheScalarFormula) {
+    // slabHits4 against the per-lane formula it documents, computed here in plain floats: random boxes
+    // (some inverted: unused children), origins inside and outside, axis-parallel directions, tMax spread.
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-2.0f, 2.0f), s(0.0f, 1.5f);
+    std::normal_distribution<float> g;
+    size_t hits = 0, bad = 0, badControl = 0;
+    for (int i = 0; i < 20000; ++i) {
+        alignas(16) float b[6][4];
+        for (int k = 0; k < 4; ++k) {
+            const bool inverted = (i + k) % 13 == 0;
+            for (int a = 0; a < 3; ++a) {
+                const float lo = u(rng), ext = 2.0f * s(rng);
+                b[a][k] = inverted ? INFINITY : lo;
+                b[3 + a][k] = inverted ? -INFINITY : lo + ext;
+            }
+        }
+        glm::vec3 d(g(rng), g(rng), g(rng));
+        if (i % 5 == 0) d[i % 3] = 0.0f;
+        if (i % 7 == 0) d = glm::vec3(0.0f), d[i % 3] = i % 2 ? 1.0f : -1.0f;
+        const Ray ray{{0.5f * u(rng), 0.5f * u(rng), 0.5f * u(rng)}, glm::normalize(d)};
+        const float tMax = i % 4 == 0 ? INFINITY : s(rng) * 3.0f;
+        const BoxRay br = makeBoxRay(ray);
+        float tNear[4];
+        const int mask = slabHits4(makeBoxRay4(br), b, tMax, tNear);
+        for (int k = 0; k < 4; ++k) {
+            float tn = 0.0f, tf = INFINITY;
+            for (int a = 0; a < 3; ++a) {
+                const float t0 = (b[br.nearIdx[a]][k] - br.org[a]) * br.invDir[a];
+                const float t1 = (b[br.farIdx[a]][k] - br.org[a]) * br.invDir[a] * kSlabFarScale;
+                tn = std::max(tn, t0);
+                tf = std::min(tf, t1);
+            }
+            const bool hit = tn <= std::min(tf, tMax);
+            hits += hit;
+            bad += hit != bool(mask & (1 << k)) || (hit && tn != tNear[k]);
+            const bool control = tn <= std::min(tf, 0.5f * tMax);  // a wrong bound must be noticed
+            badControl += control != bool(mask & (1 << k));
+        }
+    }
+    std::printf("%zu of 80000 box tests hit\n", hits);
+    EXPECT_GT(hits, 3000u);
+    EXPECT_EQ(bad, 0u);
+    EXPECT_GT(badControl, 100u);
 }
 
 TEST(SphereSetBvh, MatchesBruteForce) {
