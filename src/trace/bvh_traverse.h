@@ -22,6 +22,14 @@ struct Entry {
     float tEntry;
 };
 
+// Starts loading a node that will be visited later (both of its cache lines); leaves are left alone.
+inline void prefetchNode(const BvhNode* nodes, uint32_t ref) {
+    if (isLeafRef(ref)) return;
+    const char* p = reinterpret_cast<const char*>(nodes + ref);
+    prefetchLine(p);
+    prefetchLine(p + 64);
+}
+
 // Index of the lowest set bit of a non-zero 4-bit mask.
 inline int lowestBit(int m) {
 #if defined(__GNUC__)
@@ -94,7 +102,10 @@ void traverseClosest(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf
     uint32_t ref = 0;  // the root node
     for (;;) {
         if (!isLeafRef(ref)) {
-            ref = bvh_detail::stepNode(nodes[ref], r, tMax, [&](uint32_t c, float t) { stack[sp++] = Entry{c, t}; });
+            ref = bvh_detail::stepNode(nodes[ref], r, tMax, [&](uint32_t c, float t) {
+                bvh_detail::prefetchNode(nodes, c);
+                stack[sp++] = Entry{c, t};
+            });
             if (ref != bvh_detail::kNoChild) continue;
         } else {
             tMax = leaf(leafFirst(ref), leafCount(ref));
@@ -122,7 +133,10 @@ bool traverseAny(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
     uint32_t ref = 0;
     for (;;) {
         if (!isLeafRef(ref)) {
-            ref = bvh_detail::stepNode(nodes[ref], r, tMax, [&](uint32_t c, float) { stack[sp++] = c; });
+            ref = bvh_detail::stepNode(nodes[ref], r, tMax, [&](uint32_t c, float) {
+                bvh_detail::prefetchNode(nodes, c);
+                stack[sp++] = c;
+            });
             if (ref != bvh_detail::kNoChild) continue;
         } else if (leaf(leafFirst(ref), leafCount(ref))) {
             return true;

@@ -10,6 +10,15 @@
 
 namespace shadelab::trace {
 
+// Asks for the cache line at p ahead of use (a hint; nothing on compilers without the builtin).
+inline void prefetchLine(const void* p) {
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    (void)p;
+#endif
+}
+
 #ifdef SHADELAB_SIMD4_SSE2
 
 struct F4 {
