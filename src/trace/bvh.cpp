@@ -404,11 +404,7 @@ Bvh buildBvh(std::vector<BvhPrim>& prims, const BvhBuildOptions& options) {
     int threads = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());
     threads = std::max(1, std::min(threads, 64));
     if (prims.size() < kMinQueuedBuild) threads = 1;
-    BvhBuildOptions o2 = options;  // EXPERIMENT-HACK
-    if (getenv("XCT")) o2.traversalCost = float(atof(getenv("XCT")));
-    if (getenv("XLEAF")) o2.maxLeafSize = atoi(getenv("XLEAF"));
-    if (getenv("XBINS")) o2.bins = atoi(getenv("XBINS"));
-    return Builder(prims, o2, threads).build(uint32_t(prims.size()));
+    return Builder(prims, options, threads).build(uint32_t(prims.size()));
 }
 
 Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options) {
