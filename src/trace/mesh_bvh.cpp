@@ -76,22 +76,26 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     bvh_ = buildBvh(prims, options);
 
     // Store what the traversal and shading read in leaf order, so a leaf's triangles are contiguous in memory;
-    // normals stay in the scene's geometry (interpolatedNormal reads them through the part).
+    // normals stay in the scene's geometry (interpolatedNormal reads them through the part). The ids first,
+    // then the primitive references are freed before the positions are gathered: the peak holds only one.
     const size_t n = prims.size();
-    positions_.resize(9 * n);
     part_.resize(n);
     source_.resize(n);
     for (size_t slot = 0; slot < n; ++slot) {
-        const BvhPrim& b = prims[slot];
-        const MeshGeometry& g = *geometry_[b.id2];
+        part_[slot] = prims[slot].id2;
+        source_[slot] = partFirst_[prims[slot].id2] + prims[slot].id;
+    }
+    std::vector<BvhPrim>().swap(prims);
+    positions_.resize(9 * n);
+    for (size_t slot = 0; slot < n; ++slot) {
+        const MeshGeometry& g = *geometry_[part_[slot]];
+        const size_t tri = source_[slot] - partFirst_[part_[slot]];
         for (int k = 0; k < 3; ++k) {
-            const glm::vec3& v = g.positions[g.indices[3 * size_t(b.id) + size_t(k)]];
+            const glm::vec3& v = g.positions[g.indices[3 * tri + size_t(k)]];
             positions_[9 * slot + size_t(3 * k)] = v.x;
             positions_[9 * slot + size_t(3 * k + 1)] = v.y;
             positions_[9 * slot + size_t(3 * k + 2)] = v.z;
         }
-        part_[slot] = b.id2;
-        source_[slot] = partFirst_[b.id2] + b.id;
     }
 }
 
