@@ -85,14 +85,30 @@ struct Grid {
     }
 };
 
+// Per axis and bin: the primitives' box and count. Only the first `bins` are set, so a range of a few
+// primitives does not pay for initialising all kMaxBins.
 struct Bins {
-    Box4 box[3][kMaxBins];
-    uint32_t count[3][kMaxBins] = {};
+    F4 lo[3][kMaxBins], hi[3][kMaxBins];
+    uint32_t count[3][kMaxBins];
 
+    explicit Bins(int bins) {
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < bins; ++b) {
+                lo[a][b] = splat4(INFINITY);
+                hi[a][b] = splat4(-INFINITY);
+                count[a][b] = 0;
+            }
+    }
+    void extend(int a, int b, F4 l, F4 h) {
+        lo[a][b] = min4(lo[a][b], l);
+        hi[a][b] = max4(hi[a][b], h);
+        ++count[a][b];
+    }
     void add(const Bins& o, int bins) {
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < bins; ++b) {
-                box[a][b].extend(o.box[a][b]);
+                lo[a][b] = min4(lo[a][b], o.lo[a][b]);
+                hi[a][b] = max4(hi[a][b], o.hi[a][b]);
                 count[a][b] += o.count[a][b];
             }
     }
@@ -104,10 +120,7 @@ void binPrims(const BvhPrim* prims, uint32_t n, const Grid& g, Bins& out) {
         const BvhPrim& p = prims[i];
         g.binsOf(p, b);
         const F4 lo = primLo(p), hi = primHi(p);
-        for (int a = 0; a < 3; ++a) {
-            out.box[a][b[a]].extend(lo, hi);
-            ++out.count[a][b[a]];
-        }
+        for (int a = 0; a < 3; ++a) out.extend(a, b[a], lo, hi);
     }
 }
 
@@ -183,14 +196,16 @@ private:
         }
     }
 
+    // Fewer bins for small ranges (at least 4, at most the option): the same candidates matter less there, and
+    // sweeping 32 bins for 5 primitives would dominate the build.
     Grid grid(const Range& r) const {
         Grid g;
-        g.bins = bins_;
+        g.bins = std::min(bins_, std::max(4, int(std::min<uint32_t>(r.count(), 64u))));
         float lo[4] = {0, 0, 0, 0}, scale[4] = {0, 0, 0, 0};
         for (int a = 0; a < 3; ++a) {
             lo[a] = r.centres.lane(false, a);
             const float extent = r.centres.lane(true, a) - lo[a];
-            const float s = float(bins_) / extent;
+            const float s = float(g.bins) / extent;
             g.axisOk[a] = extent > 0.0f && std::isfinite(s);
             scale[a] = g.axisOk[a] ? s : 0.0f;
         }
@@ -203,10 +218,10 @@ private:
         const Grid g = grid(r);
         Split best;
         if (!g.axisOk[0] && !g.axisOk[1] && !g.axisOk[2]) return best;
-        Bins bins;
+        Bins bins(g.bins);
         const uint32_t n = r.count();
         if (parallel && threads_ > 1) {
-            std::vector<Bins> part(size_t(threads_ - 1));
+            std::vector<Bins> part(size_t(threads_ - 1), Bins(g.bins));
             std::vector<std::thread> pool;
             const uint32_t chunk = (n + uint32_t(threads_) - 1) / uint32_t(threads_);
             for (int t = 1; t < threads_; ++t) {
@@ -215,7 +230,7 @@ private:
             }
             binPrims(prims_ + r.begin, std::min(n, chunk), g, bins);
             for (std::thread& th : pool) th.join();
-            for (const Bins& p : part) bins.add(p, bins_);  // min, max and integer sums: order-independent
+            for (const Bins& p : part) bins.add(p, g.bins);  // min, max and integer sums: order-independent
         } else {
             binPrims(prims_ + r.begin, n, g, bins);
         }
@@ -227,16 +242,16 @@ private:
             uint32_t rightCount[kMaxBins];
             Box4 acc;
             uint32_t cnt = 0;
-            for (int b = bins_ - 1; b > 0; --b) {
-                acc.extend(bins.box[axis][b]);
+            for (int b = g.bins - 1; b > 0; --b) {
+                acc.extend(bins.lo[axis][b], bins.hi[axis][b]);
                 cnt += bins.count[axis][b];
                 rightArea[b] = acc.area();
                 rightCount[b] = cnt;
             }
             acc = Box4();
             cnt = 0;
-            for (int b = 0; b < bins_ - 1; ++b) {
-                acc.extend(bins.box[axis][b]);
+            for (int b = 0; b < g.bins - 1; ++b) {
+                acc.extend(bins.lo[axis][b], bins.hi[axis][b]);
                 cnt += bins.count[axis][b];
                 if (cnt == 0 || rightCount[b + 1] == 0) continue;
                 // C = Ct + (A_l·N_l + A_r·N_r) / A, in units of one primitive test.
