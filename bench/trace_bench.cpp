@@ -262,7 +262,7 @@ void printTreeStats(const char* what, const trace::Bvh& bvh) {
             ++children;
             if (trace::isLeafRef(n.child[k])) ++leaves, prims += trace::leafCount(n.child[k]);
         }
-    std::printf("%s: %zu nodes (%.2f children each, %zu MiB), %zu leaves (%.2f primitives each), depth %d\n", what,
+    std::printf("%s: SAH cost %.2f, %zu nodes (%.2f children each, %zu MiB), %zu leaves (%.2f primitives each), depth %d\n", what, trace::sahCost(bvh),
                 bvh.nodes.size(), double(children) / double(std::max<size_t>(bvh.nodes.size(), 1)),
                 bvh.nodes.size() * sizeof(trace::BvhNode) >> 20, leaves, double(prims) / double(std::max<size_t>(leaves, 1)),
                 bvh.depth);
