@@ -600,7 +600,7 @@ TEST(BvhBuild, SameTreeForAnyThreadCount) {
     std::mt19937 rng(41);
     std::uniform_real_distribution<float> u(-10.0f, 10.0f), s(0.0f, 0.5f);
     std::vector<Bounds> boxes;
-    for (int i = 0; i < 150000; ++i) {  // above the parallel binning threshold (65,536)
+    for (int i = 0; i < 80000; ++i) {  // above the parallel binning threshold (65,536)
         const glm::vec3 p(u(rng), u(rng) * 0.1f, u(rng));
         boxes.push_back(box(p, p + glm::vec3(s(rng), s(rng), s(rng))));
     }
@@ -612,7 +612,7 @@ TEST(BvhBuild, SameTreeForAnyThreadCount) {
     o.threads = 1;
     const Bvh one = buildBvh(boxes, o);
     EXPECT_TRUE(bvhIsValid(one, boxes, o.maxLeafSize));
-    for (const int t : {2, 3, 8}) {
+    for (const int t : {2, 3}) {
         o.threads = t;
         const Bvh many = buildBvh(boxes, o);
         EXPECT_TRUE(same(one, many)) << t << " threads built a different tree";
