@@ -221,7 +221,9 @@ private:
         Bins bins(g.bins);
         const uint32_t n = r.count();
         if (parallel && threads_ > 1) {
-            std::vector<Bins> part(size_t(threads_ - 1), Bins(g.bins));
+            std::vector<Bins> part;
+            part.reserve(size_t(threads_ - 1));
+            for (int t = 1; t < threads_; ++t) part.emplace_back(g.bins);
             std::vector<std::thread> pool;
             const uint32_t chunk = (n + uint32_t(threads_) - 1) / uint32_t(threads_);
             for (int t = 1; t < threads_; ++t) {

@@ -19,7 +19,7 @@
 //   their own node arrays, then appended in queue order. The result does not depend on the thread count or
 //   on scheduling: the same input gives the same nodes and the same leaf order.
 // - Memory. The builder's only scratch is the BvhPrim array the caller hands in (it becomes the leaf order);
-//   nodes are about n / 3 x 128 bytes for leaves of 2-4 primitives.
+//   nodes are about n / 4 x 128 bytes (leaves average about 2 triangles, nodes about 3 children).
 #pragma once
 
 #include "scene/bounds.h"
