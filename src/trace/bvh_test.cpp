@@ -645,8 +645,10 @@ TEST(SlabTest, FourBoxesAgreeWithTheScalarFormula) {
         const Ray ray{{0.5f * u(rng), 0.5f * u(rng), 0.5f * u(rng)}, glm::normalize(d)};
         const float tMax = i % 4 == 0 ? INFINITY : s(rng) * 3.0f;
         const BoxRay br = makeBoxRay(ray);
+        F4 entry;
+        const int mask = slabHits4(makeBoxRay4(br), b, tMax, entry);
         float tNear[4];
-        const int mask = slabHits4(makeBoxRay4(br), b, tMax, tNear);
+        store4(tNear, entry);
         for (int k = 0; k < 4; ++k) {
             float tn = 0.0f, tf = INFINITY;
             for (int a = 0; a < 3; ++a) {

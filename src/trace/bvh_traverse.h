@@ -48,12 +48,14 @@ inline constexpr uint32_t kNoChild = kLeafBit;  // the reference of an unused ch
 
 template <typename Push>
 inline uint32_t stepNode(const BvhNode& node, const BoxRay4& r, float tMax, Push&& push) {
-    float tNear[4];
-    int m = slabHits4(r, node.bounds, tMax, tNear);
+    F4 tn;
+    int m = slabHits4(r, node.bounds, tMax, tn);
     if (m == 0) return kNoChild;
     const int i0 = lowestBit(m);
     m &= m - 1;
     if (m == 0) return node.child[i0];  // the common case: one child hit
+    float tNear[4];
+    store4(tNear, tn);
     const int i1 = lowestBit(m);
     m &= m - 1;
     if (m == 0) {

@@ -42,7 +42,7 @@ inline constexpr float kSlabFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f -
 
 // The slab test of one ray against the four child boxes of a BVH node, `bounds[side][child]` (side 0-2 lo
 // x, y, z; 3-5 hi x, y, z; 16-byte aligned rows). Returns a mask with bit k set when the ray meets box k at
-// some 0 <= t <= tMax, and writes where it enters (clamped to 0 when the origin is inside) to tNear[0..3]. An
+// some 0 <= t <= tMax, and sets tNear to where it enters each (clamped to 0 when the origin is inside). An
 // inverted box (lo > hi) is always missed. Per lane:
 //   max(tx0, ty0, tz0, 0) <= min(tx1 · s, ty1 · s, tz1 · s, tMax), with s = kSlabFarScale
 // (for tMax >= 0 the same as tNear <= tFar, tFar >= 0, tNear <= tMax; a negative tMax, for which no hit with
@@ -63,7 +63,7 @@ inline BoxRay4 makeBoxRay4(const BoxRay& r) {
     return b;
 }
 
-inline int slabHits4(const BoxRay4& r, const float (*bounds)[4], float tMax, float* tNear) {
+inline int slabHits4(const BoxRay4& r, const float (*bounds)[4], float tMax, F4& tNear) {
     const F4 tx0 = (load4(bounds[r.nearIdx[0]]) - r.org[0]) * r.invDir[0];
     const F4 tx1 = (load4(bounds[r.farIdx[0]]) - r.org[0]) * r.invDir[0];
     const F4 ty0 = (load4(bounds[r.nearIdx[1]]) - r.org[1]) * r.invDir[1];
@@ -72,7 +72,7 @@ inline int slabHits4(const BoxRay4& r, const float (*bounds)[4], float tMax, flo
     const F4 tz1 = (load4(bounds[r.farIdx[2]]) - r.org[2]) * r.invDir[2];
     const F4 tn = max4(max4(tx0, ty0), max4(tz0, splat4(0.0f)));
     const F4 tf = min4(min4(tx1, ty1), tz1) * splat4(kSlabFarScale);
-    store4(tNear, tn);
+    tNear = tn;
     return lessEqualMask(tn, min4(tf, splat4(tMax)));
 }
 
