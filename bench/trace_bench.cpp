@@ -262,10 +262,11 @@ void printTreeStats(const char* what, const trace::Bvh& bvh) {
             ++children;
             if (trace::isLeafRef(n.child[k])) ++leaves, prims += trace::leafCount(n.child[k]);
         }
-    std::printf("%s: SAH cost %.2f, %zu nodes (%.2f children each, %zu MiB), %zu leaves (%.2f primitives each), depth %d\n", what, trace::sahCost(bvh),
-                bvh.nodes.size(), double(children) / double(std::max<size_t>(bvh.nodes.size(), 1)),
-                bvh.nodes.size() * sizeof(trace::BvhNode) >> 20, leaves, double(prims) / double(std::max<size_t>(leaves, 1)),
-                bvh.depth);
+    std::printf(
+        "%s: SAH cost %.2f, %zu nodes (%.2f children each, %zu MiB), %zu leaves (%.2f primitives each), depth %d\n",
+        what, trace::sahCost(bvh), bvh.nodes.size(), double(children) / double(std::max<size_t>(bvh.nodes.size(), 1)),
+        bvh.nodes.size() * sizeof(trace::BvhNode) >> 20, leaves, double(prims) / double(std::max<size_t>(leaves, 1)),
+        bvh.depth);
 }
 
 void benchEngine(const Options& o) {
@@ -445,8 +446,8 @@ void benchIncoherent(const Options& o) {
 #endif
     }
     const double oursMedian = median(ours);
-    std::printf("incoherent %dx%d, %d threads: %zu cosine-distributed secondary rays, %llu hit\n", o.width,
-                o.height, o.threads, rays.size(), (unsigned long long)hits);
+    std::printf("incoherent %dx%d, %d threads: %zu cosine-distributed secondary rays, %llu hit\n", o.width, o.height,
+                o.threads, rays.size(), (unsigned long long)hits);
     std::printf("shadelab incoherent: median of %d: %.2f Mrays/s\n", o.runs, oursMedian);
     if (theirs.empty()) return;
     const double embreeMedian = median(theirs);
@@ -539,7 +540,8 @@ void benchScale(const Options& o) {
         t0 = Clock::now();
         mb = std::make_shared<const trace::MeshBvh>(scene, bo);
         ours.push_back(seconds(t0, Clock::now()));
-        std::printf("  shadelab build %d: %.3f s, peak RSS so far %.1f MiB\n", r + 1, ours.back(), peakRssKiB() / 1024.0);
+        std::printf("  shadelab build %d: %.3f s, peak RSS so far %.1f MiB\n", r + 1, ours.back(),
+                    peakRssKiB() / 1024.0);
 #ifdef SHADELAB_HAVE_EMBREE
         if (!o.embree) continue;
         es.reset();

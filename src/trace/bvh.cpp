@@ -56,8 +56,8 @@ struct Box4 {
 };
 
 struct Split {
-    int axis = -1;   // -1: none found
-    int bin = 0;     // SAH: primitives in bins [0, bin] go left
+    int axis = -1;  // -1: none found
+    int bin = 0;    // SAH: primitives in bins [0, bin] go left
     bool median = false;
     float cost = INFINITY;
 };
@@ -127,8 +127,11 @@ void binPrims(const BvhPrim* prims, uint32_t n, const Grid& g, Bins& out) {
 class Builder {
 public:
     Builder(std::vector<BvhPrim>& prims, const BvhBuildOptions& o, int threads)
-        : prims_(prims.data()), threads_(threads), bins_(std::min(std::max(o.bins, 2), kMaxBins)),
-          maxLeaf_(uint32_t(std::min(std::max(o.maxLeafSize, 1), int(kMaxLeafCount)))), traversalCost_(o.traversalCost) {}
+        : prims_(prims.data()),
+          threads_(threads),
+          bins_(std::min(std::max(o.bins, 2), kMaxBins)),
+          maxLeaf_(uint32_t(std::min(std::max(o.maxLeafSize, 1), int(kMaxLeafCount)))),
+          traversalCost_(o.traversalCost) {}
 
     Bvh build(uint32_t n) {
         Bvh bvh;
@@ -257,8 +260,8 @@ private:
                 cnt += bins.count[axis][b];
                 if (cnt == 0 || rightCount[b + 1] == 0) continue;
                 // C = Ct + (A_l·N_l + A_r·N_r) / A, in units of one primitive test.
-                const float cost =
-                    traversalCost_ + (acc.area() * float(cnt) + rightArea[b + 1] * float(rightCount[b + 1])) / parentArea;
+                const float cost = traversalCost_ +
+                                   (acc.area() * float(cnt) + rightArea[b + 1] * float(rightCount[b + 1])) / parentArea;
                 if (cost < best.cost) best = Split{axis, b, false, cost};
             }
         }

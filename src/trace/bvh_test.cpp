@@ -18,11 +18,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <optional>
 #include <random>
-#include <cstring>
 #include <sstream>
 #include <thread>
 

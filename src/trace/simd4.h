@@ -51,14 +51,14 @@ inline F4 splat4(float x) { return {{x, x, x, x}}; }
 inline void store4(float* p, F4 a) {
     for (int k = 0; k < 4; ++k) p[k] = a.v[k];
 }
-#define SHADELAB_F4_OP(op, expr)            \
-    inline F4 op(F4 a, F4 b) {              \
-        F4 r;                               \
-        for (int k = 0; k < 4; ++k) {       \
+#define SHADELAB_F4_OP(op, expr)                \
+    inline F4 op(F4 a, F4 b) {                  \
+        F4 r;                                   \
+        for (int k = 0; k < 4; ++k) {           \
             const float x = a.v[k], y = b.v[k]; \
-            r.v[k] = expr;                  \
-        }                                   \
-        return r;                           \
+            r.v[k] = expr;                      \
+        }                                       \
+        return r;                               \
     }
 SHADELAB_F4_OP(operator+, x + y)
 SHADELAB_F4_OP(operator-, x - y)
