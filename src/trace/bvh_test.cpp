@@ -551,9 +551,10 @@ TEST(BvhSoup, ExactTiesGoToTheLowerSourceTriangle) {
     EXPECT_EQ(d.hits, rays.size());
     EXPECT_EQ(d.closest, 0u) << d.first;
     EXPECT_EQ(d.any, 0u) << d.firstAny;
-    // Negative control: every ray really is a tie: brute force keeping the highest source instead disagrees.
-    size_t ties = 0;
-    for (size_t i = 0; i < rays.size(); ++i) {
+    // Negative control: the rays really are ties: brute force keeping the highest source instead disagrees
+    // (checked on every 10th ray, which keeps the test quick under the sanitizers).
+    size_t ties = 0, checked = 0;
+    for (size_t i = 0; i < rays.size(); i += 10, ++checked) {
         const WatertightRay wr = makeWatertightRay(rays[i]);
         uint32_t last = UINT32_MAX;
         for (const SceneTri& t : tris) {
@@ -562,7 +563,7 @@ TEST(BvhSoup, ExactTiesGoToTheLowerSourceTriangle) {
         }
         ties += last != brute[i].source;
     }
-    EXPECT_EQ(ties, rays.size()) << "some rays were not ties, so they test nothing about tie-breaking";
+    EXPECT_EQ(ties, checked) << "some rays were not ties, so they test nothing about tie-breaking";
 }
 
 TEST(BvhSoup, EmptySceneAndOnlyDegenerateTrianglesAreNeverHit) {
