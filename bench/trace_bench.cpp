@@ -4,6 +4,12 @@
 //  (b) 2CylinderEngine.glb at 1920x1080, 2 threads: a primary ray per pixel and one shadow ray per hit,
 //      in Mrays/s (median of 5); with Embree 3 (optional, SHADELAB_HAVE_EMBREE) the same rays through
 //      rtcIntersect1 / rtcOccluded1 and the ratio ours / Embree's. Whole-process timing is bench/trace_spheres.sh.
+//  (c) incoherent rays (issue 14): on the same model, one cosine-distributed secondary ray per primary hit
+//      (about the geometric normal, on the viewer's side, from a per-pixel hash), nearest hit through
+//      TraceScene::intersect and through rtcIntersect1, the same precomputed rays to both.
+//  (d) scale (issue 14): a grid of N x N UV spheres of 4,096 triangles each built in memory (32 x 32 =
+//      4.19 M triangles), BVH build time (ours and Embree's) and primary + shadow rays at 1920x1080. Peak
+//      memory comes from running it alone under /usr/bin/time -v (--only scale --no-embree).
 #include "image/encode.h"
 #include "image/png.h"
 #include "scene/scene_load.h"
@@ -26,6 +32,8 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -39,8 +47,10 @@ struct Options {
     std::string spheres = SHADELAB_SOURCE_DIR "/bench/spheres40.json";
     std::string engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
     int runs = 5, threads = 2, width = 1920, height = 1080;
-    bool skipSpheres = false, skipEngine = false;
-    std::string png;  // write the spheres image here when set
+    bool skipSpheres = false, skipEngine = false, skipIncoherent = false, skipScale = false;
+    bool embree = true;  // --no-embree: leave the baseline out (for a clean peak-RSS figure)
+    int grid = 32;       // scale: grid x grid spheres of 4,096 triangles
+    std::string png;     // write the spheres image here when set
 };
 
 double median(std::vector<double> v) {
@@ -142,6 +152,7 @@ struct EmbreeScene {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::vector<glm::vec3> normals;  // geometric, per triangle, for the shadow-ray offset
+    double commitSeconds = 0.0;      // rtcCommitScene alone: Embree's BVH build
 
     explicit EmbreeScene(const Scene& s) {
         device = rtcNewDevice(nullptr);
@@ -177,7 +188,9 @@ struct EmbreeScene {
         rtcCommitGeometry(geom);
         rtcAttachGeometry(scene, geom);
         rtcReleaseGeometry(geom);
+        const auto t0 = Clock::now();
         rtcCommitScene(scene);
+        commitSeconds = seconds(t0, Clock::now());
     }
     ~EmbreeScene() {
         rtcReleaseScene(scene);
@@ -240,6 +253,22 @@ RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, cons
 
 double mraysPerSecond(const RayCounts& c, double s) { return double(c.primary + c.hits) / s * 1e-6; }
 
+// Node count, mean children per node, leaves and mean primitives per leaf of a built tree.
+void printTreeStats(const char* what, const trace::Bvh& bvh) {
+    size_t children = 0, leaves = 0, prims = 0;
+    for (const trace::BvhNode& n : bvh.nodes)
+        for (int k = 0; k < 4; ++k) {
+            if (!n.used(k)) continue;
+            ++children;
+            if (trace::isLeafRef(n.child[k])) ++leaves, prims += trace::leafCount(n.child[k]);
+        }
+    std::printf(
+        "%s: SAH cost %.2f, %zu nodes (%.2f children each, %zu MiB), %zu leaves (%.2f primitives each), depth %d\n",
+        what, trace::sahCost(bvh), bvh.nodes.size(), double(children) / double(std::max<size_t>(bvh.nodes.size(), 1)),
+        bvh.nodes.size() * sizeof(trace::BvhNode) >> 20, leaves, double(prims) / double(std::max<size_t>(leaves, 1)),
+        bvh.depth);
+}
+
 void benchEngine(const Options& o) {
     if (!std::filesystem::exists(o.engine)) {
         std::printf("engine: %s missing (apt-get install assimp-testmodels); skipped\n", o.engine.c_str());
@@ -248,8 +277,9 @@ void benchEngine(const Options& o) {
     const Scene scene = loadScene(o.engine);
     auto t0 = Clock::now();
     const trace::TraceScene ts(scene);
-    std::printf("engine: %zu triangles, BVH %zu nodes, depth %d, built in %.1f ms\n", ts.meshBvh()->triangleCount(),
-                ts.meshBvh()->bvh().nodes.size(), ts.meshBvh()->bvh().depth, 1e3 * seconds(t0, Clock::now()));
+    std::printf("engine: %zu triangles, built in %.1f ms\n", ts.meshBvh()->triangleCount(),
+                1e3 * seconds(t0, Clock::now()));
+    printTreeStats("engine BVH", ts.meshBvh()->bvh());
     const ViewSetup view = makeViewSetup(ts.scene(), o.width, o.height);
     std::vector<double> ours;
     RayCounts c;
@@ -287,6 +317,267 @@ void benchEngine(const Options& o) {
 #endif
 }
 
+// ---- (c) incoherent secondary rays ----------------------------------------------------------------------
+
+// PCG-style integer hash (O'Neill 2014's output permutation): a reproducible stream per pixel.
+uint32_t hash32(uint32_t v) {
+    const uint32_t state = v * 747796405u + 2891336453u;
+    const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+float unitFloat(uint32_t v) { return float(v >> 8) * 0x1p-24f; }
+
+// One cosine-distributed ray about the geometric normal (turned to the viewer) per primary hit, in pixel
+// order. The same rays for any thread count: rows are generated independently and joined in order.
+std::vector<trace::Ray> secondaryRays(const trace::TraceScene& ts, const ViewSetup& view, int threads) {
+    const trace::MeshBvh& mb = *ts.meshBvh();
+    std::vector<std::vector<trace::Ray>> rows(size_t(view.height));
+    parallelRows(view.height, threads, [&](int y) {
+        std::vector<trace::Ray>& out = rows[size_t(y)];
+        for (int x = 0; x < view.width; ++x) {
+            const trace::Ray ray = trace::sampleRay(view, 1, x, y, 0, 0);
+            const std::optional<trace::Hit> hit = ts.intersect(ray);
+            if (!hit || hit->kind != trace::HitKind::Triangle) continue;
+            glm::vec3 n = mb.geometricNormal(hit->index);
+            const float len = glm::length(n);
+            if (!(len > 0.0f)) continue;
+            n /= len;
+            if (glm::dot(n, ray.dir) > 0.0f) n = -n;
+            const uint32_t seed = hash32(uint32_t(y) * uint32_t(view.width) + uint32_t(x));
+            const float u1 = unitFloat(hash32(seed ^ 0x9e3779b9u)), u2 = unitFloat(hash32(seed + 0x7f4a7c15u));
+            // Malley's method: a uniform disc point lifted to the hemisphere is cosine-distributed.
+            const float r = std::sqrt(u1), phi = 6.28318530718f * u2;
+            const float lx = r * std::cos(phi), ly = r * std::sin(phi), lz = std::sqrt(std::max(0.0f, 1.0f - u1));
+            // Orthonormal basis about n (Duff et al. 2017).
+            const float sign = std::copysign(1.0f, n.z), a = -1.0f / (sign + n.z), b = n.x * n.y * a;
+            const glm::vec3 t1(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x), t2(b, sign + n.y * n.y * a, -n.y);
+            trace::Ray s;
+            s.origin = ray.origin + hit->t * ray.dir + ts.epsilon() * n;
+            s.dir = glm::normalize(lx * t1 + ly * t2 + lz * n);
+            out.push_back(s);
+        }
+    });
+    std::vector<trace::Ray> all;
+    for (const std::vector<trace::Ray>& r : rows) all.insert(all.end(), r.begin(), r.end());
+    return all;
+}
+
+// Runs `perBlock(begin, end)` over [0, n) in blocks of 4,096 on `threads` threads.
+void parallelBlocks(size_t n, int threads, const std::function<void(size_t, size_t)>& perBlock) {
+    constexpr size_t kBlock = 4096;
+    std::atomic<size_t> next{0};
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back([&] {
+            for (size_t b; (b = next.fetch_add(kBlock)) < n;) perBlock(b, std::min(n, b + kBlock));
+        });
+    for (std::thread& th : pool) th.join();
+}
+
+uint64_t nearestHitsOurs(const trace::TraceScene& ts, const std::vector<trace::Ray>& rays, int threads) {
+    std::atomic<uint64_t> hits{0};
+    parallelBlocks(rays.size(), threads, [&](size_t b, size_t e) {
+        uint64_t h = 0;
+        for (size_t i = b; i < e; ++i) h += ts.intersect(rays[i]) ? 1 : 0;
+        hits += h;
+    });
+    return hits;
+}
+
+#ifdef SHADELAB_HAVE_EMBREE
+uint64_t nearestHitsEmbree(const EmbreeScene& es, const std::vector<trace::Ray>& rays, int threads) {
+    std::atomic<uint64_t> hits{0};
+    parallelBlocks(rays.size(), threads, [&](size_t b, size_t e) {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        uint64_t h = 0;
+        for (size_t i = b; i < e; ++i) {
+            const trace::Ray& ray = rays[i];
+            RTCRayHit rh{};
+            rh.ray.org_x = ray.origin.x;
+            rh.ray.org_y = ray.origin.y;
+            rh.ray.org_z = ray.origin.z;
+            rh.ray.dir_x = ray.dir.x;
+            rh.ray.dir_y = ray.dir.y;
+            rh.ray.dir_z = ray.dir.z;
+            rh.ray.tnear = 0.0f;
+            rh.ray.tfar = INFINITY;
+            rh.ray.mask = ~0u;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(es.scene, &ctx, &rh);
+            h += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? 1 : 0;
+        }
+        hits += h;
+    });
+    return hits;
+}
+#endif
+
+void benchIncoherent(const Options& o) {
+    if (!std::filesystem::exists(o.engine)) {
+        std::printf("incoherent: %s missing (apt-get install assimp-testmodels); skipped\n", o.engine.c_str());
+        return;
+    }
+    const Scene scene = loadScene(o.engine);
+    const trace::TraceScene ts(scene);
+    const ViewSetup view = makeViewSetup(ts.scene(), o.width, o.height);
+    const std::vector<trace::Ray> rays = secondaryRays(ts, view, o.threads);
+#ifdef SHADELAB_HAVE_EMBREE
+    std::optional<EmbreeScene> es;
+    if (o.embree) es.emplace(scene);
+#endif
+    // Runs alternate between the two (ours, Embree, ours, ...), so load from other processes hits both alike.
+    std::vector<double> ours, theirs;
+    uint64_t hits = 0, eh = 0;
+    for (int r = 0; r < o.runs; ++r) {
+        auto t0 = Clock::now();
+        hits = nearestHitsOurs(ts, rays, o.threads);
+        double s = seconds(t0, Clock::now());
+        ours.push_back(double(rays.size()) / s * 1e-6);
+        std::printf("  shadelab run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, ours.back());
+#ifdef SHADELAB_HAVE_EMBREE
+        if (!es) continue;
+        t0 = Clock::now();
+        eh = nearestHitsEmbree(*es, rays, o.threads);
+        s = seconds(t0, Clock::now());
+        theirs.push_back(double(rays.size()) / s * 1e-6);
+        std::printf("  embree run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, theirs.back());
+#endif
+    }
+    const double oursMedian = median(ours);
+    std::printf("incoherent %dx%d, %d threads: %zu cosine-distributed secondary rays, %llu hit\n", o.width, o.height,
+                o.threads, rays.size(), (unsigned long long)hits);
+    std::printf("shadelab incoherent: median of %d: %.2f Mrays/s\n", o.runs, oursMedian);
+    if (theirs.empty()) return;
+    const double embreeMedian = median(theirs);
+    std::printf("embree incoherent: %llu hit; median of %d: %.2f Mrays/s\n", (unsigned long long)eh, o.runs,
+                embreeMedian);
+    std::printf("ratio shadelab / embree, incoherent: %.2f (target >= 1.0)\n", oursMedian / embreeMedian);
+}
+
+// ---- (d) scale: a generated grid of UV spheres ---------------------------------------------------------
+
+// A UV sphere of 64 slices and 33 stacks: 2 x 64 cap triangles + 31 x 64 x 2 band triangles = 4,096.
+MeshGeometry uvSphere(glm::vec3 c, float radius) {
+    constexpr int kSlices = 64, kStacks = 33;
+    MeshGeometry g;
+    g.positions.push_back(c + glm::vec3(0, radius, 0));
+    g.normals.emplace_back(0, 1, 0);
+    for (int i = 1; i < kStacks; ++i) {
+        const float theta = 3.14159265358979f * float(i) / float(kStacks);
+        for (int j = 0; j < kSlices; ++j) {
+            const float phi = 6.28318530718f * float(j) / float(kSlices);
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            g.positions.push_back(c + radius * n);
+            g.normals.push_back(n);
+        }
+    }
+    g.positions.push_back(c - glm::vec3(0, radius, 0));
+    g.normals.emplace_back(0, -1, 0);
+    const uint32_t south = uint32_t(g.positions.size() - 1);
+    auto ring = [](int i, int j) { return uint32_t(1 + (i - 1) * kSlices + (j % kSlices)); };
+    for (int j = 0; j < kSlices; ++j) g.indices.insert(g.indices.end(), {0u, ring(1, j + 1), ring(1, j)});
+    for (int i = 1; i < kStacks - 1; ++i)
+        for (int j = 0; j < kSlices; ++j) {
+            const uint32_t a = ring(i, j), b = ring(i, j + 1), cc = ring(i + 1, j), d = ring(i + 1, j + 1);
+            g.indices.insert(g.indices.end(), {a, b, d, a, d, cc});
+        }
+    for (int j = 0; j < kSlices; ++j)
+        g.indices.insert(g.indices.end(), {south, ring(kStacks - 1, j), ring(kStacks - 1, j + 1)});
+    return g;
+}
+
+// n x n spheres of radius 0.45 on a unit grid in the z = 0 plane, each its own mesh (as a glTF file with one
+// mesh per sphere imports), seen from the front with one point light beside the camera.
+Scene sphereGrid(int n) {
+    Scene s;
+    const float mid = 0.5f * float(n - 1);
+    s.camera.position = glm::vec3(mid, mid, 1.3f * float(n));
+    s.camera.target = glm::vec3(mid, mid, 0.0f);
+    s.camera.fovY = 45.0f;
+    Light l;
+    l.position = s.camera.position + glm::vec3(0.3f * float(n), 0.4f * float(n), 0.0f);
+    s.lights.push_back(l);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            Mesh m;
+            m.name = "sphere";
+            m.parts.push_back(MeshPart{shareGeometry(uvSphere(glm::vec3(float(j), float(i), 0.0f), 0.45f)), {}});
+            s.meshes.push_back(std::move(m));
+        }
+    return s;
+}
+
+long peakRssKiB() {
+    FILE* f = std::fopen("/proc/self/status", "r");
+    if (!f) return -1;
+    char line[256];
+    long kib = -1;
+    while (std::fgets(line, sizeof line, f))
+        if (std::strncmp(line, "VmHWM:", 6) == 0) kib = std::atol(line + 6);
+    std::fclose(f);
+    return kib;
+}
+
+void benchScale(const Options& o) {
+    auto t0 = Clock::now();
+    const Scene scene = sphereGrid(o.grid);
+    size_t tris = 0;
+    for (const Mesh& m : scene.meshes) tris += m.triangleCount();
+    std::printf("scale: %dx%d spheres, %zu triangles, generated in %.3f s, peak RSS so far %.1f MiB\n", o.grid, o.grid,
+                tris, seconds(t0, Clock::now()), peakRssKiB() / 1024.0);
+    // Builds alternate between the two (ours, Embree, ours, ...), each freed before the next; medians.
+    trace::BvhBuildOptions bo;
+    bo.threads = o.threads;
+    std::shared_ptr<const trace::MeshBvh> mb;
+    std::vector<double> ours, theirs, theirsScene;
+#ifdef SHADELAB_HAVE_EMBREE
+    std::optional<EmbreeScene> es;
+#endif
+    for (int r = 0; r < o.runs; ++r) {
+        mb.reset();
+        t0 = Clock::now();
+        mb = std::make_shared<const trace::MeshBvh>(scene, bo);
+        ours.push_back(seconds(t0, Clock::now()));
+        std::printf("  shadelab build %d: %.3f s, peak RSS so far %.1f MiB\n", r + 1, ours.back(),
+                    peakRssKiB() / 1024.0);
+#ifdef SHADELAB_HAVE_EMBREE
+        if (!o.embree) continue;
+        es.reset();
+        t0 = Clock::now();
+        es.emplace(scene);
+        theirsScene.push_back(seconds(t0, Clock::now()));
+        theirs.push_back(es->commitSeconds);
+        std::printf("  embree %s build %d: scene %.3f s, of which rtcCommitScene (the BVH build) %.3f s\n",
+                    RTC_VERSION_STRING, r + 1, theirsScene.back(), theirs.back());
+#endif
+    }
+    std::printf("shadelab build (MeshBvh, %d threads): median of %d: %.3f s\n", o.threads, o.runs, median(ours));
+    printTreeStats("scale BVH", mb->bvh());
+    const trace::TraceScene ts(scene, mb);
+    const ViewSetup view = makeViewSetup(ts.scene(), o.width, o.height);
+    t0 = Clock::now();
+    const RayCounts c = traceOurs(ts, view, o.threads);
+    const double s = seconds(t0, Clock::now());
+    std::printf("shadelab trace %dx%d: %.3f s, %llu primary + %llu shadow rays (%llu occluded), %.2f Mrays/s\n",
+                o.width, o.height, s, (unsigned long long)c.primary, (unsigned long long)c.hits,
+                (unsigned long long)c.occluded, mraysPerSecond(c, s));
+    std::printf("peak RSS: %.1f MiB\n", peakRssKiB() / 1024.0);
+#ifdef SHADELAB_HAVE_EMBREE
+    if (!es) return;
+    t0 = Clock::now();
+    const RayCounts e = traceEmbree(*es, scene, ts.epsilon(), view, o.threads);
+    const double es2 = seconds(t0, Clock::now());
+    std::printf("embree trace: %.3f s, %llu primary + %llu shadow rays (%llu occluded), %.2f Mrays/s\n", es2,
+                (unsigned long long)e.primary, (unsigned long long)e.hits, (unsigned long long)e.occluded,
+                mraysPerSecond(e, es2));
+    std::printf("embree build: median of %d: rtcCommitScene %.3f s, whole scene %.3f s\n", o.runs, median(theirs),
+                median(theirsScene));
+    std::printf("ratio build shadelab / embree rtcCommitScene: %.2f (target <= 1.5)\n", median(ours) / median(theirs));
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -315,17 +606,26 @@ int main(int argc, char** argv) {
             const std::string w = next();
             o.skipSpheres = w != "spheres";
             o.skipEngine = w != "engine";
-        } else if (a == "--png")
+            o.skipIncoherent = w != "incoherent";
+            o.skipScale = w != "scale";
+        } else if (a == "--grid")
+            o.grid = std::max(1, std::atoi(next().c_str()));
+        else if (a == "--no-embree")
+            o.embree = false;
+        else if (a == "--png")
             o.png = next();
         else {
             std::fprintf(stderr,
-                         "usage: trace_bench [--only spheres|engine] [--runs N] [--threads N] [--size WxH]\n"
-                         "                   [--spheres scene.json] [--engine model.glb] [--png spheres.png]\n");
+                         "usage: trace_bench [--only spheres|engine|incoherent|scale] [--runs N] [--threads N]\n"
+                         "                   [--size WxH] [--spheres scene.json] [--engine model.glb]\n"
+                         "                   [--png spheres.png] [--grid N] [--no-embree]\n");
             return 2;
         }
     }
     std::printf("machine: %u hardware threads\n", std::thread::hardware_concurrency());
     if (!o.skipSpheres) benchSpheres(o);
     if (!o.skipEngine) benchEngine(o);
+    if (!o.skipIncoherent) benchIncoherent(o);
+    if (!o.skipScale) benchScale(o);
     return 0;
 }

@@ -1,9 +1,28 @@
-// Bvh: a binary bounding-volume hierarchy over boxes, built with binned SAH (MacDonald & Booth 1990 cost,
-// Wald 2007 binning) and flattened into 32-byte nodes. It only sees boxes: the traversals live with the
-// primitives (mesh_bvh.cpp for triangles, sphere_set.cpp for spheres).
+// Bvh: a 4-wide bounding-volume hierarchy over boxes. It only sees boxes: the traversals live in
+// bvh_traverse.h and call back into the primitives (mesh_bvh.cpp for triangles, sphere_set.cpp for spheres).
+//
+// Design (issue 14: fast traversal of incoherent rays, fast builds of millions of triangles):
+// - Layout. A node holds the boxes of its (up to) four children as structure-of-arrays floats, one row of 4
+//   per box side (lo x, lo y, lo z, hi x, hi y, hi z), so one SSE register holds one side of all four boxes
+//   and a ray tests all four with 6 subtractions, 6 multiplications and a few min/max (bvh_traverse.h).
+//   A node is 128 bytes, two cache lines, aligned. Unused children have an inverted box (+inf, -inf) that
+//   every ray misses, so traversal needs no child count.
+// - Child references are 32 bits: an interior child is a node index; a leaf is kLeafBit | first << 4 | count,
+//   a range of at most 15 primitives in leaf order. So a tree holds fewer than 2^27 primitives.
+// - Build. Binned SAH (MacDonald & Booth 1990 cost; Wald 2007 binning, 16 bins) on primitive references that
+//   carry their own box (BvhPrim, 32 bytes), so binning and partitioning read memory sequentially. A node is
+//   made by splitting its range in two by SAH, then splitting the child of largest area again, until it has
+//   four children or every child is a leaf (the usual binary-to-wide collapse, done while building).
+//   Below kMedianDepth binary splits the object median takes over, which bounds the depth for any input.
+// - Parallel build. The top of the tree is built on the calling thread, with the binning of large ranges
+//   split across threads; subtrees below a size threshold are queued and built by `threads` workers into
+//   their own node arrays, then appended in queue order. The result does not depend on the thread count or
+//   on scheduling: the same input gives the same nodes and the same leaf order.
+// - Memory. The builder's only scratch is the BvhPrim array the caller hands in (it becomes the leaf order);
+//   nodes are about n / 4 x 128 bytes (leaves average about 2 triangles, nodes about 3 children).
 #pragma once
 
-#include "trace/slab_test.h"
+#include "scene/bounds.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -12,18 +31,26 @@
 
 namespace shadelab::trace {
 
-// One node. Siblings are stored next to each other (left at `first`, right at `first + 1`) and pairs start
-// at even indices, so with the 64-byte aligned array one cache line holds both children of a node.
-struct alignas(32) BvhNode {
-    float bounds[6];  // box: lo x, y, z then hi x, y, z, world units (indexable by slab side, see aabb.h)
-    uint32_t first;   // interior: index of the left child; leaf: first primitive in Bvh::order
-    uint32_t count;   // leaf: number of primitives (> 0); interior: 0
+// A child reference: an interior node index, or a leaf (kLeafBit set) with its first primitive and count.
+inline constexpr uint32_t kLeafBit = 0x80000000u;
+inline constexpr uint32_t kMaxLeafCount = 15;
+inline constexpr uint32_t kMaxBvhPrimitives = 1u << 27;
+inline bool isLeafRef(uint32_t ref) { return (ref & kLeafBit) != 0; }
+inline uint32_t leafFirst(uint32_t ref) { return (ref & ~kLeafBit) >> 4; }
+inline uint32_t leafCount(uint32_t ref) { return ref & 15u; }
+inline uint32_t makeLeafRef(uint32_t first, uint32_t count) { return kLeafBit | first << 4 | count; }
 
-    bool isLeaf() const { return count != 0; }
-    const float* lo() const { return bounds; }
-    const float* hi() const { return bounds + 3; }
+// One node: four child boxes, side-major (bounds[side][child], side 0-2 lo x y z, 3-5 hi x y z, world units,
+// indexable by slab side as slab_test.h's nearIdx/farIdx), and four child references. An unused child has
+// lo = +inf, hi = -inf and reference kLeafBit (an empty leaf).
+struct alignas(64) BvhNode {
+    float bounds[6][4];
+    uint32_t child[4];
+    uint32_t pad[4];  // to 128 bytes: two whole cache lines
+
+    bool used(int k) const { return !(bounds[0][k] > bounds[3][k]); }
 };
-static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes: two siblings per cache line");
+static_assert(sizeof(BvhNode) == 128, "BvhNode must stay two cache lines");
 
 // Minimal 64-byte aligned allocator for the node array.
 template <class T>
@@ -45,26 +72,43 @@ struct CacheLineAllocator {
 };
 
 struct BvhBuildOptions {
-    int bins = 16;               // SAH candidate planes per axis are bins - 1
-    int maxLeafSize = 4;         // leaves never hold more primitives than this
+    int bins = 16;               // SAH candidate planes per axis are bins - 1 (at most 32 bins)
+    int maxLeafSize = 4;         // leaves never hold more primitives than this (at most kMaxLeafCount)
     float traversalCost = 1.0f;  // SAH cost of visiting a node, relative to one primitive test
+    int threads = 0;             // build threads; 0: std::thread::hardware_concurrency(). Small inputs use one.
 };
 
-// Deepest tree the builder makes; traversal stacks are sized from it.
+// Deepest tree the builder makes, in binary splits (a 4-wide level is one to three of them); traversal
+// stacks are sized from it.
 inline constexpr int kMaxBvhDepth = 64;
 
-struct Bvh {
-    std::vector<BvhNode, CacheLineAllocator<BvhNode>> nodes;  // [0] root, [1] padding, then sibling pairs
-    std::vector<uint32_t> order;                              // order[k]: the input primitive at leaf slot k
-    int depth = 0;                                            // levels below the root, < kMaxBvhDepth
+// A primitive as the builder sees it: its box and two words the builder carries along untouched (for
+// example the primitive's index). 32 bytes, so the builder moves whole cache-line halves.
+struct BvhPrim {
+    float lo[3];
+    uint32_t id;
+    float hi[3];
+    uint32_t id2;
+};
+static_assert(sizeof(BvhPrim) == 32, "BvhPrim must stay 32 bytes");
 
-    bool empty() const { return order.empty(); }
+struct Bvh {
+    std::vector<BvhNode, CacheLineAllocator<BvhNode>> nodes;  // [0] is the root; empty when no primitives
+    std::vector<uint32_t> order;  // buildBvh(boxes) only: order[k] is the input primitive at leaf slot k
+    Bounds bounds;                // of every primitive
+    uint32_t primitives = 0;
+    int depth = 0;  // binary splits below the root on the deepest path, < kMaxBvhDepth
+
+    bool empty() const { return primitives == 0; }
 };
 
-// Builds over `boxes` (one per primitive, none empty). An empty input gives an empty Bvh.
+// Builds over `prims` (boxes not empty, fewer than kMaxBvhPrimitives) and reorders them into leaf order:
+// afterwards prims[k] is the primitive at leaf slot k. An empty input gives an empty Bvh.
+Bvh buildBvh(std::vector<BvhPrim>& prims, const BvhBuildOptions& options = {});
+// The same over plain boxes (one per primitive); fills Bvh::order.
 Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options = {});
 
-// SAH cost of a built tree (for tests and tuning): Σ area(node)/area(root) weighted by visit/test cost.
+// SAH cost of a built tree (for tests and tuning): Σ area(child box)/area(root) weighted by visit/test cost.
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options = {});
 
 }  // namespace shadelab::trace

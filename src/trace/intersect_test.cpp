@@ -379,7 +379,7 @@ TEST(MeshBvhRobustness, HitsInBoxFacesAreNeverCulled) {
         lostOccluded += !ts.occluded(r, std::nextafter(bt, INFINITY));
     }
     const char* bug =
-        "\nRegression: slabEntry (aabb.h) and the traversal's pop test (bvh_traverse.h) cull a box whose rounded "
+        "\nRegression: slabHits4 (slab_test.h) and the traversal's pop test (bvh_traverse.h) cull a box whose rounded "
         "entry exceeds tMax. A triangle lying in its box's face can round to a t just below that entry, so "
         "MeshBvh pads every box (mesh_bvh.cpp); without the padding anyHit/occluded miss hits just below tMax "
         "and closestHit returns a farther triangle or breaks the lower-source tie rule.";

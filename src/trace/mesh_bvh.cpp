@@ -26,79 +26,92 @@ bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec
 }
 
 MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
-    // Gather the finite triangles in scene order; `source` numbers every triangle, kept or not.
-    std::vector<Bounds> boxes;
-    std::vector<uint32_t> tmpPart, tmpSource;
-    std::vector<float> tmpPos, tmpNrm;
-    uint32_t source = 0, partIndex = 0;
+    // One BvhPrim per finite, non-degenerate triangle: its box, its index in its part and the part's index.
+    // `source` numbers every triangle, kept or not, in scene order.
+    std::vector<BvhPrim> prims;
+    size_t total = 0;
+    for (const Mesh& m : scene.meshes) total += m.triangleCount();
+    prims.reserve(total);
+    uint32_t source = 0;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         for (const MeshPart& part : scene.meshes[m].parts) {
             SHADELAB_CHECK(part.geometry != nullptr);
             const MeshGeometry& p = *part.geometry;
+            const uint32_t partIndex = uint32_t(partMesh_.size());
             partMesh_.push_back(uint32_t(m));
             geometry_.push_back(part.geometry);
-            const bool hasNormals = p.normals.size() == p.positions.size();
-            for (size_t t = 0; t < p.triangleCount(); ++t, ++source) {
-                uint32_t idx[3];
+            partFirst_.push_back(source);
+            for (size_t t = 0; t < p.triangleCount(); ++t) {
                 glm::vec3 v[3];
                 for (int k = 0; k < 3; ++k) {
-                    idx[k] = p.indices[3 * t + size_t(k)];
-                    SHADELAB_CHECK_LT(size_t(idx[k]), p.positions.size());
-                    v[k] = p.positions[idx[k]];
+                    const uint32_t idx = p.indices[3 * t + size_t(k)];
+                    SHADELAB_CHECK_LT(size_t(idx), p.positions.size());
+                    v[k] = p.positions[idx];
                 }
                 if (!finite(v[0]) || !finite(v[1]) || !finite(v[2])) continue;
                 if (isDegenerateTriangle(v[0], v[1], v[2])) continue;
-                Bounds box;
-                for (const glm::vec3& q : v) box.extend(q);
-                boxes.push_back(box);
-                bounds_.extend(box);
-                tmpPart.push_back(partIndex);
-                tmpSource.push_back(source);
-                // Without vertex normals, the geometric normal stands in (flat shading).
-                const glm::vec3 flat = glm::cross(v[1] - v[0], v[2] - v[0]);
-                for (int k = 0; k < 3; ++k) {
-                    tmpPos.insert(tmpPos.end(), {v[k].x, v[k].y, v[k].z});
-                    const glm::vec3 n = hasNormals ? p.normals[idx[k]] : flat;
-                    tmpNrm.insert(tmpNrm.end(), {n.x, n.y, n.z});
-                }
+                const glm::vec3 lo = glm::min(glm::min(v[0], v[1]), v[2]), hi = glm::max(glm::max(v[0], v[1]), v[2]);
+                prims.push_back(BvhPrim{{lo.x, lo.y, lo.z}, uint32_t(t), {hi.x, hi.y, hi.z}, partIndex});
+                bounds_.lo = glm::min(bounds_.lo, lo);
+                bounds_.hi = glm::max(bounds_.hi, hi);
             }
-            ++partIndex;
+            SHADELAB_CHECK_LT(size_t(source) + p.triangleCount(), size_t(UINT32_MAX));
+            source += uint32_t(p.triangleCount());
         }
     }
     // Pad every box by far more than a triangle hit's rounding, which scales with the coordinates' magnitude:
     // otherwise a triangle lying in its box's face can round to a hit just before the box's rounded entry and
     // be culled (SphereSet pads spheres the same way).
-    if (!boxes.empty()) {
+    if (!prims.empty()) {
         const glm::vec3 m = glm::max(glm::abs(bounds_.lo), glm::abs(bounds_.hi));
-        const glm::vec3 pad(1e-6f * std::max({m.x, m.y, m.z, 1e-30f}));
-        for (Bounds& b : boxes) {
-            b.lo -= pad;
-            b.hi += pad;
-        }
-        bounds_.lo -= pad;
-        bounds_.hi += pad;
+        const float pad = 1e-6f * std::max({m.x, m.y, m.z, 1e-30f});
+        for (BvhPrim& b : prims)
+            for (int a = 0; a < 3; ++a) {
+                b.lo[a] -= pad;
+                b.hi[a] += pad;
+            }
+        bounds_.lo -= glm::vec3(pad);
+        bounds_.hi += glm::vec3(pad);
     }
-    bvh_ = buildBvh(boxes, options);
+    bvh_ = buildBvh(prims, options);
 
-    // Store the per-triangle data in BVH order, so a leaf's triangles are contiguous in memory.
-    const size_t n = boxes.size();
-    positions_.resize(9 * n);
-    normals_.resize(9 * n);
+    // Store what the traversal and shading read in leaf order, so a leaf's triangles are contiguous in memory;
+    // normals stay in the scene's geometry (interpolatedNormal reads them through the part). The ids first,
+    // then the primitive references are freed before the positions are gathered: the peak holds only one.
+    const size_t n = prims.size();
     part_.resize(n);
     source_.resize(n);
     for (size_t slot = 0; slot < n; ++slot) {
-        const uint32_t src = bvh_.order[slot];
-        std::copy_n(&tmpPos[9 * size_t(src)], 9, &positions_[9 * slot]);
-        std::copy_n(&tmpNrm[9 * size_t(src)], 9, &normals_[9 * slot]);
-        part_[slot] = tmpPart[src];
-        source_[slot] = tmpSource[src];
+        part_[slot] = prims[slot].id2;
+        source_[slot] = partFirst_[prims[slot].id2] + prims[slot].id;
+    }
+    std::vector<BvhPrim>().swap(prims);
+    positions_.resize(9 * n);
+    for (size_t slot = 0; slot < n; ++slot) {
+        const MeshGeometry& g = *geometry_[part_[slot]];
+        const size_t tri = source_[slot] - partFirst_[part_[slot]];
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3& v = g.positions[g.indices[3 * tri + size_t(k)]];
+            positions_[9 * slot + size_t(3 * k)] = v.x;
+            positions_[9 * slot + size_t(3 * k + 1)] = v.y;
+            positions_[9 * slot + size_t(3 * k + 2)] = v.z;
+        }
     }
 }
 
 glm::vec3 MeshBvh::interpolatedNormal(const MeshHit& hit) const {
-    const float* n = &normals_[size_t(hit.slot) * 9];
-    return hit.b0 * glm::vec3(n[0], n[1], n[2]) + hit.b1 * glm::vec3(n[3], n[4], n[5]) +
-           hit.b2 * glm::vec3(n[6], n[7], n[8]);
+    const uint32_t part = part_[hit.slot];
+    const MeshGeometry& g = *geometry_[part];
+    // Without vertex normals, the geometric normal stands in at every corner (flat shading).
+    if (g.normals.size() != g.positions.size()) {
+        const glm::vec3 f = geometricNormal(hit.slot);
+        return hit.b0 * f + hit.b1 * f + hit.b2 * f;
+    }
+    const size_t tri = source_[hit.slot] - partFirst_[part];
+    const glm::vec3& n0 = g.normals[g.indices[3 * tri]];
+    const glm::vec3& n1 = g.normals[g.indices[3 * tri + 1]];
+    const glm::vec3& n2 = g.normals[g.indices[3 * tri + 2]];
+    return hit.b0 * n0 + hit.b1 * n1 + hit.b2 * n2;
 }
 
 glm::vec3 MeshBvh::geometricNormal(uint32_t slot) const {

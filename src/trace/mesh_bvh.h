@@ -1,5 +1,6 @@
-// MeshBvh: every triangle of a scene's meshes in one SAH BVH, stored in BVH order next to what shading
-// needs (vertex normals, which part and mesh). Geometry only and immutable once built, so TraceScene
+// MeshBvh: every triangle of a scene's meshes in one 4-wide SAH BVH (bvh.h), the vertex positions stored in
+// leaf order next to which part and triangle each is (44 bytes per triangle; vertex normals are read from the
+// scene's shared geometry, which it keeps alive). Geometry only and immutable once built, so TraceScene
 // versions that differ only in materials, lights or camera share one (see trace_scene.h).
 #pragma once
 
@@ -60,10 +61,10 @@ public:
 private:
     Bvh bvh_;
     std::vector<float> positions_;                               // 9 per slot
-    std::vector<float> normals_;                                 // 9 per slot
     std::vector<uint32_t> part_;                                 // per slot
     std::vector<uint32_t> source_;                               // per slot
     std::vector<uint32_t> partMesh_;                             // per flattened part
+    std::vector<uint32_t> partFirst_;                            // per flattened part: its first source index
     std::vector<std::shared_ptr<const MeshGeometry>> geometry_;  // per flattened part, for matches()
     Bounds bounds_;
 };

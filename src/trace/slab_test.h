@@ -1,9 +1,10 @@
-// The robust ray–box slab test the BVH traversals share, over scene/bounds.h boxes (Kay & Kajiya 1986
-// slabs; Ize 2013 "Robust BVH Ray Traversal" for the conservative far distance). No primitives here.
+// The robust ray–box slab test the BVH traversals share, four boxes at a time (Kay & Kajiya 1986 slabs;
+// Ize 2013 "Robust BVH Ray Traversal" for the conservative far distance). No primitives here.
 #pragma once
 
 #include "scene/bounds.h"
 #include "trace/ray.h"
+#include "trace/simd4.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,18 +40,40 @@ inline BoxRay makeBoxRay(const Ray& ray) {
 // the float slab test conservative, so a box is never culled while a primitive inside it is hit.
 inline constexpr float kSlabFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// Entry distance of the ray into the box `bounds` (lo x, y, z, hi x, y, z), or +infinity when it misses
-// the box or enters it beyond tMax. Entry may be negative when the origin is inside.
-inline float slabEntry(const BoxRay& r, const float* bounds, float tMax) {
-    const float tx0 = (bounds[r.nearIdx[0]] - r.org[0]) * r.invDir[0];
-    const float tx1 = (bounds[r.farIdx[0]] - r.org[0]) * r.invDir[0];
-    const float ty0 = (bounds[r.nearIdx[1]] - r.org[1]) * r.invDir[1];
-    const float ty1 = (bounds[r.farIdx[1]] - r.org[1]) * r.invDir[1];
-    const float tz0 = (bounds[r.nearIdx[2]] - r.org[2]) * r.invDir[2];
-    const float tz1 = (bounds[r.farIdx[2]] - r.org[2]) * r.invDir[2];
-    const float tNear = std::max(std::max(tx0, ty0), tz0);
-    const float tFar = std::min(std::min(tx1, ty1), tz1) * kSlabFarScale;
-    return (tNear <= tFar && tFar >= 0.0f && tNear <= tMax) ? tNear : INFINITY;
+// The slab test of one ray against the four child boxes of a BVH node, `bounds[side][child]` (side 0-2 lo
+// x, y, z; 3-5 hi x, y, z; 16-byte aligned rows). Returns a mask with bit k set when the ray meets box k at
+// some 0 <= t <= tMax, and sets tNear to where it enters each (clamped to 0 when the origin is inside). An
+// inverted box (lo > hi) is always missed. Per lane:
+//   max(tx0, ty0, tz0, 0) <= min(tx1 · s, ty1 · s, tz1 · s, tMax), with s = kSlabFarScale
+// (for tMax >= 0 the same as tNear <= tFar, tFar >= 0, tNear <= tMax; a negative tMax, for which no hit with
+// t > 0 exists, misses everything).
+struct BoxRay4 {
+    F4 org[3], invDir[3];
+    int nearIdx[3], farIdx[3];
+};
+
+inline BoxRay4 makeBoxRay4(const BoxRay& r) {
+    BoxRay4 b;
+    for (int a = 0; a < 3; ++a) {
+        b.org[a] = splat4(r.org[a]);
+        b.invDir[a] = splat4(r.invDir[a]);
+        b.nearIdx[a] = r.nearIdx[a];
+        b.farIdx[a] = r.farIdx[a];
+    }
+    return b;
+}
+
+inline int slabHits4(const BoxRay4& r, const float (*bounds)[4], float tMax, F4& tNear) {
+    const F4 tx0 = (load4(bounds[r.nearIdx[0]]) - r.org[0]) * r.invDir[0];
+    const F4 tx1 = (load4(bounds[r.farIdx[0]]) - r.org[0]) * r.invDir[0];
+    const F4 ty0 = (load4(bounds[r.nearIdx[1]]) - r.org[1]) * r.invDir[1];
+    const F4 ty1 = (load4(bounds[r.farIdx[1]]) - r.org[1]) * r.invDir[1];
+    const F4 tz0 = (load4(bounds[r.nearIdx[2]]) - r.org[2]) * r.invDir[2];
+    const F4 tz1 = (load4(bounds[r.farIdx[2]]) - r.org[2]) * r.invDir[2];
+    const F4 tn = max4(max4(tx0, ty0), max4(tz0, splat4(0.0f)));
+    const F4 tf = min4(min4(tx1, ty1), tz1) * splat4(kSlabFarScale);
+    tNear = tn;
+    return lessEqualMask(tn, min4(tf, splat4(tMax)));
 }
 
 }  // namespace shadelab::trace

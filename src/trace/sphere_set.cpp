@@ -34,8 +34,7 @@ SphereSet::SphereSet(const std::vector<Sphere>& spheres) {
     }
 }
 
-std::optional<SphereHit> SphereSet::closestHit(const Ray& ray, float tMin, float tMax) const {
-    if (bvh_.empty()) return std::nullopt;  // skip the per-ray set-up (three divisions) for mesh-only scenes
+std::optional<SphereHit> SphereSet::closestHitInTree(const Ray& ray, float tMin, float tMax) const {
     SphereHit best{tMax, UINT32_MAX};
     traverseClosest(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
         for (uint32_t s = first, end = first + count; s < end; ++s) {
@@ -50,8 +49,7 @@ std::optional<SphereHit> SphereSet::closestHit(const Ray& ray, float tMin, float
     return best.index == UINT32_MAX ? std::nullopt : std::optional<SphereHit>(best);
 }
 
-bool SphereSet::anyHit(const Ray& ray, float tMin, float tMax) const {
-    if (bvh_.empty()) return false;
+bool SphereSet::anyHitInTree(const Ray& ray, float tMin, float tMax) const {
     return traverseAny(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
         for (uint32_t s = first, end = first + count; s < end; ++s) {
             const glm::vec4& c = spheres_[s];
