@@ -32,8 +32,9 @@ int Viewer::run() {
                     frameStats_.median(), frameStats_.percentile(95.0), frameStats_.count());
         std::printf("shadelab:   raster draw alone      median %6.2f ms   p95 %6.2f ms   (draw + glFinish)\n",
                     rasterStats_.median(), rasterStats_.percentile(95.0));
-        std::printf("shadelab:   partial redraws        %zu of %zu (a material edit: only its objects)\n",
-                    partialDraws_, rasterStats_.count());
+        std::printf("shadelab:   partial redraws        %zu of %zu (a material edit: only its objects); shadow maps "
+                    "re-rendered in %zu, environment cubes in %zu\n",
+                    partialDraws_, rasterStats_.count(), shadowRenders_, environmentRenders_);
         if (idleStats_.count())
             std::printf("shadelab:   frame, nothing changed median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
                         idleStats_.median(), idleStats_.percentile(95.0), idleStats_.count());
@@ -218,7 +219,10 @@ bool Viewer::ensureRasterCurrent(bool force) {
     }
     if (options_.stats) glFinish();  // so the figure is the draw, not just its submission
     if (options_.stats) rasterStats_.add((glfwGetTime() - t0) * 1000.0);
-    if (raster_->lastDraw().partial) ++partialDraws_;
+    const raster::RasterRenderer::DrawReport& report = raster_->lastDraw();
+    partialDraws_ += report.partial ? 1 : 0;
+    shadowRenders_ += report.shadowMaps ? 1 : 0;
+    environmentRenders_ += report.environments ? 1 : 0;
     rasterRevision_ = state_.revision;
     rasterW_ = renderW_;
     rasterH_ = renderH_;

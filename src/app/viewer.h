@@ -161,6 +161,7 @@ private:
     uint64_t idleRevision_ = 0;
     FrameStats frameStats_, idleStats_, rasterStats_;  // frames with / without a raster redraw
     size_t partialDraws_ = 0;                          // raster draws that redrew only some objects
+    size_t shadowRenders_ = 0, environmentRenders_ = 0;  // raster draws that re-rendered those (--stats)
     std::array<double, 64> recentMs_{};
     double recentFrameMs() const;
     std::vector<std::string> glInfo_;
