@@ -32,9 +32,10 @@ int Viewer::run() {
                     frameStats_.median(), frameStats_.percentile(95.0), frameStats_.count());
         std::printf("shadelab:   raster draw alone      median %6.2f ms   p95 %6.2f ms   (draw + glFinish)\n",
                     rasterStats_.median(), rasterStats_.percentile(95.0));
-        std::printf("shadelab:   partial redraws        %zu of %zu (a material edit: only its objects); shadow maps "
-                    "re-rendered in %zu, environment cubes in %zu\n",
-                    partialDraws_, rasterStats_.count(), shadowRenders_, environmentRenders_);
+        std::printf(
+            "shadelab:   partial redraws        %zu of %zu (a material edit: only its objects); shadow maps "
+            "re-rendered in %zu, environment cubes in %zu\n",
+            partialDraws_, rasterStats_.count(), shadowRenders_, environmentRenders_);
         if (idleStats_.count())
             std::printf("shadelab:   frame, nothing changed median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
                         idleStats_.median(), idleStats_.percentile(95.0), idleStats_.count());
@@ -240,8 +241,8 @@ bool Viewer::accumulate() {
     if (accumulation_->converged()) return false;
     for (int i = 0; i < 2; ++i) {
         // Into the renderer's sample target: its centre image and coverage stay as they are.
-        const raster::RenderTarget& sample = raster_->drawSample(state_.scene, renderW_, renderH_,
-                                                                 accumulation_->nextJitter());
+        const raster::RenderTarget& sample =
+            raster_->drawSample(state_.scene, renderW_, renderH_, accumulation_->nextJitter());
         accumulation_->add(sample.colorTexture());
     }
     if (accumulation_->converged() && options_.verbose)

@@ -128,7 +128,8 @@ KeyBytes environmentSharedKey(const Scene& scene, const FrameBlock& frame) {
     KeyBytes key;
     key.add(frame.flags).add(scene.ambient).add(scene.background).add(scene.normalized);
     key.add(frame.iblParams).add(frame.iblInfo).add(frame.iblRadiance).add(frame.iblSH);
-    for (int i = 0; i < frame.flags.z; ++i) key.add(frame.lightPos[i]).add(frame.lightColor[i]).add(frame.lightAtten[i]);
+    for (int i = 0; i < frame.flags.z; ++i)
+        key.add(frame.lightPos[i]).add(frame.lightColor[i]).add(frame.lightAtten[i]);
     for (const Sphere& sp : scene.spheres) key.add(sp.center).add(sp.radius);
     for (const Plane& p : scene.planes) key.add(p.normal).add(p.offset);
     return key;

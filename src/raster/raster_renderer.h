@@ -68,10 +68,10 @@ public:
 
     // What the last draw did, for benches and tests.
     struct DrawReport {
-        bool partial = false;         // only some objects were redrawn (partialIds of them, 0: nothing changed)
+        bool partial = false;  // only some objects were redrawn (partialIds of them, 0: nothing changed)
         int partialIds = 0;
-        bool shadowMaps = false;      // the shadow maps were re-rendered
-        bool environments = false;    // the environment cubes were re-rendered
+        bool shadowMaps = false;    // the shadow maps were re-rendered
+        bool environments = false;  // the environment cubes were re-rendered
     };
     const DrawReport& lastDraw() const { return report_; }
 
@@ -116,7 +116,7 @@ private:
     std::vector<float> shadowKey_;  // what the current shadow maps were rendered from
     uint64_t meshGeneration_ = 0;   // bumped by uploadMeshes
     EnvironmentCubes environments_;
-    std::vector<EnvironmentProbe> probes_;  // this draw's reflective spheres and mesh parts, cube i for probe i
+    std::vector<EnvironmentProbe> probes_;   // this draw's reflective spheres and mesh parts, cube i for probe i
     std::optional<DrawKey> environmentKey_;  // what the cubes were rendered from
     std::vector<RenderTarget> mirrorTargets_;
     std::vector<int> mirrorOfPlane_;  // per plane: index into mirrorTargets_ for this band, or -1
@@ -128,12 +128,12 @@ private:
     gl::Buffer meshVbo_, meshIbo_, cubeVbo_;
     std::vector<DrawRange> ranges_;
     RenderTarget target_;
-    RenderTarget sampleTarget_;        // drawSample's
+    RenderTarget sampleTarget_;  // drawSample's
     bool partialRedraw_ = false;
-    std::optional<DrawKey> lastKey_;   // what target_ holds, when a partial redraw may start from it
-    RenderTarget partialTarget_;       // the redrawn objects, over a copy of target_'s depth
-    gl::Program partialMerge_;         // copies their pixels into target_ (partial_merge.frag)
-    gl::Framebuffer mergeFbo_;         // target_'s colour alone
+    std::optional<DrawKey> lastKey_;  // what target_ holds, when a partial redraw may start from it
+    RenderTarget partialTarget_;      // the redrawn objects, over a copy of target_'s depth
+    gl::Program partialMerge_;        // copies their pixels into target_ (partial_merge.frag)
+    gl::Framebuffer mergeFbo_;        // target_'s colour alone
     bool environmentsRendered_ = false;
     DrawReport report_;
 };

@@ -5,9 +5,9 @@
 #include "scene/coverage.h"
 #include "scene/mesh_geometry.h"
 
+#include <gtest/gtest.h>
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
-#include <gtest/gtest.h>
 
 #include <memory>
 
