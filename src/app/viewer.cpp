@@ -32,6 +32,10 @@ int Viewer::run() {
                     frameStats_.median(), frameStats_.percentile(95.0), frameStats_.count());
         std::printf("shadelab:   raster draw alone      median %6.2f ms   p95 %6.2f ms   (draw + glFinish)\n",
                     rasterStats_.median(), rasterStats_.percentile(95.0));
+        std::printf(
+            "shadelab:   partial redraws        %zu of %zu (a material edit: only its objects); shadow maps "
+            "re-rendered in %zu, environment cubes in %zu\n",
+            partialDraws_, rasterStats_.count(), shadowRenders_, environmentRenders_);
         if (idleStats_.count())
             std::printf("shadelab:   frame, nothing changed median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
                         idleStats_.median(), idleStats_.percentile(95.0), idleStats_.count());
@@ -202,10 +206,11 @@ bool Viewer::ensureRasterCurrent(bool force) {
         meshGeometry_ = state_.geometryRevision;
         rasterRevision_ = 0;
     }
-    if (!force && !rasterJittered_ && rasterRevision_ == state_.revision && rasterW_ == renderW_ &&
-        rasterH_ == renderH_)
-        return false;
-    if (rasterRevision_ != state_.revision || rasterW_ != renderW_ || rasterH_ != renderH_) lastChange_ = glfwGetTime();
+    const bool changed = rasterRevision_ != state_.revision || rasterW_ != renderW_ || rasterH_ != renderH_;
+    if (!force && !changed) return false;
+    if (changed) lastChange_ = glfwGetTime();
+    // A forced redraw of an unchanged image (--stats) is a full one: what any change but a material edit costs.
+    if (!changed) raster_->invalidate();
     const double t0 = glfwGetTime();
     try {
         raster_->draw(state_.scene, renderW_, renderH_, true);
@@ -219,10 +224,13 @@ bool Viewer::ensureRasterCurrent(bool force) {
     }
     if (options_.stats) glFinish();  // so the figure is the draw, not just its submission
     if (options_.stats) rasterStats_.add((glfwGetTime() - t0) * 1000.0);
+    const raster::RasterRenderer::DrawReport& report = raster_->lastDraw();
+    partialDraws_ += report.partial ? 1 : 0;
+    shadowRenders_ += report.shadowMaps ? 1 : 0;
+    environmentRenders_ += report.environments ? 1 : 0;
     rasterRevision_ = state_.revision;
     rasterW_ = renderW_;
     rasterH_ = renderH_;
-    rasterJittered_ = false;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return true;
 }
@@ -236,9 +244,10 @@ bool Viewer::accumulate() {
     accumulation_->restart(state_.revision, renderW_, renderH_);
     if (accumulation_->converged()) return false;
     for (int i = 0; i < 2; ++i) {
-        raster_->draw(state_.scene, renderW_, renderH_, true, {}, accumulation_->nextJitter());
-        rasterJittered_ = true;
-        accumulation_->add(raster_->target().colorTexture());
+        // Into the renderer's sample target: its centre image and coverage stay as they are.
+        const raster::RenderTarget& sample =
+            raster_->drawSample(state_.scene, renderW_, renderH_, accumulation_->nextJitter());
+        accumulation_->add(sample.colorTexture());
     }
     if (accumulation_->converged() && options_.verbose)
         std::fprintf(stderr, "shadelab: smooth frame, %d samples, %.0f ms after the last change\n",

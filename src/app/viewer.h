@@ -126,8 +126,7 @@ private:
     // What the raster target holds.
     uint64_t rasterRevision_ = 0, rasterGeometry_ = 0, meshGeometry_ = 0;
     int rasterW_ = 0, rasterH_ = 0;
-    bool rasterJittered_ = false;  // the target holds an accumulation sample, not the centre one
-    double lastChange_ = 0.0;      // glfwGetTime() of the last change of the image (for --verbose)
+    double lastChange_ = 0.0;  // glfwGetTime() of the last change of the image (for --verbose)
 
     // Probe, recomputed when the state or pixel changes.
     std::optional<ProbeResult> probe_;
@@ -162,7 +161,9 @@ private:
     static constexpr double kStatusSeconds = 8.0;
     int settleFrames_ = kSettleFrames;
     uint64_t idleRevision_ = 0;
-    FrameStats frameStats_, idleStats_, rasterStats_;  // frames with / without a raster redraw
+    FrameStats frameStats_, idleStats_, rasterStats_;    // frames with / without a raster redraw
+    size_t partialDraws_ = 0;                            // raster draws that redrew only some objects
+    size_t shadowRenders_ = 0, environmentRenders_ = 0;  // raster draws that re-rendered those (--stats)
     std::array<double, 64> recentMs_{};
     double recentFrameMs() const;
     std::vector<std::string> glInfo_;

@@ -276,6 +276,7 @@ void Viewer::reloadShaders(const std::string& from) {
     try {
         const gl::ShaderLibrary shaders(dir);
         auto raster = std::make_unique<raster::RasterRenderer>(shaders);
+        raster->setPartialRedraw(true);
         auto view = std::make_unique<ImageView>(shaders);
         auto arrows = std::make_unique<ArrowOverlay>(shaders);
         raster_ = std::move(raster);

@@ -66,6 +66,7 @@ Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Sc
         // The embedded shaders (or $SHADELAB_SHADER_DIR), exactly as `shadelab render` uses them.
         const gl::ShaderLibrary shaders;
         raster_ = std::make_unique<raster::RasterRenderer>(shaders);
+        raster_->setPartialRedraw(true);  // a material edit redraws only the objects it changes
         imageView_ = std::make_unique<ImageView>(shaders);
         arrows_ = std::make_unique<ArrowOverlay>(shaders);
         reference_ = std::make_unique<ReferenceRenderer>();

@@ -5,6 +5,7 @@
 #include "scene/raster_settings.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace shadelab::raster {
 
@@ -22,6 +23,7 @@ inline constexpr int kMaxShadowedLights = 8;  // lights 0..7 cast shadows; later
 inline constexpr int kMaxShadowLayers = 6 * kMaxShadowedLights;
 inline constexpr int kMaxShadowPlanes = 8;     // planes occlude analytically; later planes do not
 inline constexpr int kMaxMirrorPlanes = 4;     // planes with kr > 0 that get a planar reflection pass
+inline constexpr size_t kMaxPartialIds = 8;    // objects a partial redraw may redo (partial_merge.frag u_ids)
 inline constexpr int kMaxShadowMapMiB = 2048;  // all layers together; a larger request is an error
 
 }  // namespace shadelab::raster

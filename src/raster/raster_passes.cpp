@@ -9,6 +9,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace shadelab::raster {
 namespace {
 
@@ -109,6 +111,9 @@ const gl::Program& RasterRenderer::objectProgram(const gl::Program& plain, const
 
 void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
                                 const PassOptions& options) const {
+    const auto skipped = [&options](uint32_t id) {
+        return options.only && std::find(options.only->begin(), options.only->end(), id) == options.only->end();
+    };
     // A mirror reverses winding: front faces (for culling and gl_FrontFacing) become clockwise.
     glFrontFace(options.mirrored ? GL_CW : GL_CCW);
 
@@ -118,7 +123,9 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     for (size_t k = 0; k < ranges_.size(); ++k) {
         const DrawRange& r = ranges_[k];
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
-        if (int(k) == options.skipRange || outsideClip(frame.viewProj, r.lo, r.hi)) continue;
+        if (int(k) == options.skipRange || skipped(meshCoverageId(scene, r.mesh)) ||
+            outsideClip(frame.viewProj, r.lo, r.hi))
+            continue;
         const Material& m = scene.meshes[r.mesh].parts[r.part].material;
         const gl::Program& p = objectProgram(programs.mesh, programs.meshEnvironment, -1, int(k), options);
         setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
@@ -131,7 +138,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     glCullFace(GL_FRONT);
     glBindVertexArray(cubeVao_.id());
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
-        if (int(i) == options.skipSphere) continue;
+        if (int(i) == options.skipSphere || skipped(sphereCoverageId(scene, i))) continue;
         const Sphere& s = scene.spheres[i];
         const gl::Program& p = objectProgram(programs.sphere, programs.sphereEnvironment, int(i), -1, options);
         setMaterial(p, s.material, sphereCoverageId(scene, i), frame.flags.x, scene.normalized);
@@ -145,7 +152,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     glBindVertexArray(emptyVao_.id());
     const glm::vec3 eye(frame.eye);
     for (size_t i = 0; i < scene.planes.size(); ++i) {
-        if (int(i) == options.skipPlane) continue;  // a mirror does not see itself
+        if (int(i) == options.skipPlane || skipped(planeCoverageId(scene, i))) continue;  // a mirror: not itself
         const Plane& p = scene.planes[i];
         const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
         const gl::Program& planeProgram = mirror >= 0 ? programs.planeMirror : programs.plane;

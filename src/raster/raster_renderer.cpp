@@ -122,45 +122,16 @@ std::array<float, 4> clearColour(const Scene& scene) {
     return {c.r, c.g, c.b, 1.0f};
 }
 
-// Everything an environment cube's pixels depend on except the camera: the frame's shading flags, ambient
-// and lights, the background, and every object's geometry and material.
-std::vector<float> environmentKey(const Scene& scene, const FrameBlock& frame) {
-    std::vector<float> key;
-    auto push = [&key](const glm::vec3& v) { key.insert(key.end(), {v.x, v.y, v.z}); };
-    auto material = [&](const Material& m) {
-        push(m.ma);
-        push(m.md);
-        push(m.ms);
-        push(m.kr);
-        key.push_back(m.s);
-        push(m.baseColor);
-        key.insert(key.end(), {m.metallic, m.roughness});
-    };
-    key.insert(key.end(), {float(frame.flags.x), float(frame.flags.y), float(frame.flags.z), float(frame.flags.w)});
-    push(scene.ambient);
-    push(scene.background);
-    key.push_back(scene.normalized ? 1.0f : 0.0f);
-    key.insert(key.end(), {frame.iblParams.x, frame.iblParams.y, frame.iblParams.z, float(frame.iblInfo.x),
-                           float(frame.iblInfo.y), float(frame.iblInfo.w), frame.iblRadiance.x, frame.iblRadiance.y,
-                           frame.iblRadiance.z, frame.iblSH[0].x});
+// Everything an environment cube's pixels depend on except the camera and the materials (which the caller
+// keys per object): the frame's shading flags, ambient and lights, the background, and the objects' geometry.
+KeyBytes environmentSharedKey(const Scene& scene, const FrameBlock& frame) {
+    KeyBytes key;
+    key.add(frame.flags).add(scene.ambient).add(scene.background).add(scene.normalized);
+    key.add(frame.iblParams).add(frame.iblInfo).add(frame.iblRadiance).add(frame.iblSH);
     for (int i = 0; i < frame.flags.z; ++i)
-        for (const glm::vec4& v : {frame.lightPos[i], frame.lightColor[i], frame.lightAtten[i]})
-            key.insert(key.end(), {v.x, v.y, v.z, v.w});
-    for (const Sphere& sp : scene.spheres) {
-        push(sp.center);
-        key.push_back(sp.radius);
-        material(sp.material);
-    }
-    for (const Plane& p : scene.planes) {
-        push(p.normal);
-        key.push_back(p.offset);
-        material(p.material);
-        const Checker c = p.checker.value_or(Checker{glm::vec3(-1.0f), -1.0f});
-        push(c.md2);
-        key.push_back(c.size);
-    }
-    for (const Mesh& m : scene.meshes)
-        for (const MeshPart& part : m.parts) material(part.material);
+        key.add(frame.lightPos[i]).add(frame.lightColor[i]).add(frame.lightAtten[i]);
+    for (const Sphere& sp : scene.spheres) key.add(sp.center).add(sp.radius);
+    for (const Plane& p : scene.planes) key.add(p.normal).add(p.offset);
     return key;
 }
 
@@ -296,6 +267,7 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
     if (key != shadowKey_) {
         shadows_.render(scene, settings, ranges_, meshVao_ ? meshVao_.id() : emptyVao_.id(), cubeVao_.id());
         shadowKey_ = std::move(key);
+        report_.shadowMaps = true;
     }
     // Scaled by the box of casters and eye, so it follows the camera (a uniform, not a new map).
     shadows_.setEpsilon(secondaryRayEpsilon(scene, scene.camera.position));
@@ -320,10 +292,18 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
     if (probes_.empty()) return;
 
     const int size = std::clamp(scene.raster.reflectionCubeSize, kMinReflectionCubeSize, kMaxReflectionCubeSize);
-    std::vector<float> key = environmentKey(scene, frame);
-    key.insert(key.end(), shadowKey_.begin(), shadowKey_.end());
-    key.insert(key.end(), {float(size), float(meshGeneration_), float(probes_.size()), float(ibl_.generation())});
-    if (key == environmentKey_) return;
+    DrawKey key = drawKey(scene);  // for its objects' ids and materials
+    key.shared = environmentSharedKey(scene, frame);
+    for (float v : shadowKey_) key.shared.add(v);
+    key.shared.add(size).add(meshGeneration_).add(ibl_.generation()).add(probes_.size());
+    for (const EnvironmentProbe& probe : probes_) key.shared.add(probe.sphere).add(probe.range);
+    // When only materials changed, a face is re-rendered only inside the rectangle where a changed object
+    // can appear (every object drawn there again): no other pixel of it can change (one bounce, no mirrors).
+    const RedrawPlan plan = planRedraw(environmentKey_ ? &*environmentKey_ : nullptr, key, kMaxPartialIds);
+    if (!plan.full && plan.ids.empty()) return;
+    const auto listed = [&plan](uint32_t id) {
+        return plan.full || std::find(plan.ids.begin(), plan.ids.end(), id) != plan.ids.end();
+    };
 
     environments_.resize(int(probes_.size()), size);
     const std::array<float, 4> background = clearColour(scene);
@@ -334,13 +314,34 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
         // independent of the camera they were first rendered for.
         shadows_.setEpsilon(secondaryRayEpsilon(scene, probe.centre));
         for (int face = 0; face < 6; ++face) {
+            const FrameBlock faceFrame = cubeFaceFrame(frame, probe.centre, probe.zNear, face, size);
+            PixelRect rect{0, 0, size, size};
+            if (!plan.full) {
+                rect = PixelRect{};
+                for (size_t k = 0; k < ranges_.size(); ++k)
+                    if (int(k) != probe.range && ranges_[k].mesh < scene.meshes.size() &&
+                        listed(meshCoverageId(scene, ranges_[k].mesh)))
+                        rect = unite(rect, boxPixelRect(faceFrame.viewProj, ranges_[k].lo, ranges_[k].hi, size, size));
+                for (size_t i = 0; i < scene.spheres.size(); ++i)
+                    if (int(i) != probe.sphere && listed(sphereCoverageId(scene, i))) {
+                        const Sphere& sp = scene.spheres[i];
+                        rect = unite(rect, boxPixelRect(faceFrame.viewProj, sp.center - glm::vec3(sp.radius),
+                                                        sp.center + glm::vec3(sp.radius), size, size));
+                    }
+                for (size_t i = 0; i < scene.planes.size(); ++i)
+                    if (listed(planeCoverageId(scene, i))) rect = PixelRect{0, 0, size, size};
+                if (rect.empty()) continue;
+            }
             environments_.bindFace(int(cube), face);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(rect.x0, rect.y0, rect.x1 - rect.x0, rect.y1 - rect.y0);
             glClearBufferfv(GL_COLOR, 0, background.data());
             glClearBufferfv(GL_DEPTH, 0, &farDepth);
-            const FrameBlock faceFrame = cubeFaceFrame(frame, probe.centre, probe.zNear, face, size);
             uploadFrame(faceFrame);
             drawBackdrop(faceFrame);
             drawPasses(scene, faceFrame, programs, PassOptions{-1, probe.sphere, probe.range, false, false});
+            glDisable(GL_SCISSOR_TEST);
+            report_.environments = true;
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -348,13 +349,33 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
     environmentKey_ = std::move(key);
 }
 
+void RasterRenderer::setPartialRedraw(bool on) {
+    partialRedraw_ = on;
+    if (!on) lastKey_.reset();
+}
+
 void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage, Band band, glm::vec2 jitter) {
+    const bool whole = band.rows <= 0 || (band.top == 0 && band.rows == height);
+    render(target_, scene, width, height, withCoverage, band, jitter,
+           partialRedraw_ && whole && withCoverage && jitter == glm::vec2(0.0f));
+}
+
+const RenderTarget& RasterRenderer::drawSample(const Scene& scene, int width, int height, glm::vec2 jitter) {
+    render(sampleTarget_, scene, width, height, false, Band{}, jitter, false);
+    return sampleTarget_;
+}
+
+// `reusable`: the image may be the start of a partial redraw, or be one (target_ only).
+void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, int height, bool withCoverage, Band band,
+                            glm::vec2 jitter, bool reusable) {
+    report_ = DrawReport{};
     if (band.rows <= 0) band = Band{0, height};
     const ViewSetup view = makeViewSetup(scene, width, height);
     const FrameBlock frame = makeFrameBlock(scene, view, band, jitter);
     if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
-    const ColorPrograms& programs = programsFor(makeShaderVariant(frame, &shadows_.block()));
+    const ShaderVariant variant = makeShaderVariant(frame, &shadows_.block());
+    const ColorPrograms& programs = programsFor(variant);
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);
@@ -407,15 +428,113 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
         mirrorOfPlane_[i] = int(mirrors++);
     }
 
-    target_.resize(width, band.rows, withCoverage);
-    target_.bind();
+    std::optional<DrawKey> key;
+    if (&out == &target_) {
+        if (reusable && mirrors == 0) {
+            // Everything the colour pass reads besides the materials (redraw_plan.h): the scene's part, and
+            // what this renderer derives from it or holds.
+            key = drawKey(scene);
+            key->shared.add(frame).addString(variant.defines()).add(meshGeneration_).add(ibl_.generation());
+            key->shared.add(width).add(height).add(shadowKey_.size());
+            for (float v : shadowKey_) key->shared.add(v);
+            RedrawPlan plan = planRedraw(lastKey_ ? &*lastKey_ : nullptr, *key, kMaxPartialIds);
+            // A re-rendered environment cube changes the pixels of the object that looks it up.
+            for (size_t cube = 0; cube < probes_.size() && !plan.full && report_.environments; ++cube) {
+                const EnvironmentProbe& probe = probes_[cube];
+                addToPlan(plan,
+                          probe.sphere >= 0 ? sphereCoverageId(scene, size_t(probe.sphere))
+                                            : meshCoverageId(scene, ranges_[size_t(probe.range)].mesh),
+                          kMaxPartialIds);
+            }
+            if (!plan.full && target_.width() == width && target_.height() == height && target_.hasCoverage()) {
+                if (!plan.ids.empty()) redrawPart(scene, frame, programs, plan.ids);
+                report_.partial = true;
+                report_.partialIds = int(plan.ids.size());
+                lastKey_ = std::move(key);
+                gl::checkError("RasterRenderer::draw (partial)");
+                return;
+            }
+        }
+        lastKey_.reset();
+    }
+
+    out.resize(width, band.rows, withCoverage);
+    out.bind();
     glClearBufferfv(GL_COLOR, 0, background);
-    if (target_.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);
+    if (out.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
     uploadFrame(frame);
     drawBackdrop(frame);
     drawPasses(scene, frame, programs, PassOptions{});
+    if (key) lastKey_ = std::move(key);
     gl::checkError("RasterRenderer::draw");
+}
+
+// The partial redraw: the listed objects are drawn again, in the full draw's order, over a copy of the image's
+// depth, so at every pixel one of them owns (coverage) the fragment that wins is the one that won in the full
+// draw (LEQUAL keeps the last of equal depths, and no later object came nearer). Those pixels are then
+// copied into the image; all others keep their values.
+void RasterRenderer::redrawPart(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
+                                const std::vector<uint32_t>& ids) {
+    const int w = target_.width(), h = target_.height();
+    // Only the pixels the objects' bounds can cover: the depth copy, the draw and the merge are scissored.
+    const auto listed = [&ids](uint32_t id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); };
+    PixelRect rect;
+    for (const DrawRange& r : ranges_)
+        if (r.mesh < scene.meshes.size() && listed(meshCoverageId(scene, r.mesh)))
+            rect = unite(rect, boxPixelRect(frame.viewProj, r.lo, r.hi, w, h));
+    for (size_t i = 0; i < scene.spheres.size(); ++i)
+        if (listed(sphereCoverageId(scene, i))) {
+            const Sphere& sp = scene.spheres[i];
+            rect = unite(rect, boxPixelRect(frame.viewProj, sp.center - glm::vec3(sp.radius),
+                                            sp.center + glm::vec3(sp.radius), w, h));
+        }
+    for (size_t i = 0; i < scene.planes.size(); ++i)
+        if (listed(planeCoverageId(scene, i))) rect = PixelRect{0, 0, w, h};
+    if (rect.empty()) return;
+    partialTarget_.resize(w, h, false);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, partialTarget_.framebuffer());
+    glBlitFramebuffer(rect.x0, rect.y0, rect.x1, rect.y1, rect.x0, rect.y0, rect.x1, rect.y1, GL_DEPTH_BUFFER_BIT,
+                      GL_NEAREST);
+    partialTarget_.bind();
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.x0, rect.y0, rect.x1 - rect.x0, rect.y1 - rect.y0);
+    uploadFrame(frame);
+    PassOptions options;
+    options.only = &ids;
+    drawPasses(scene, frame, programs, options);
+
+    if (!partialMerge_) {
+        partialMerge_ = gl::Program::build(shaders_, "fullscreen.vert", "partial_merge.frag");
+        mergeFbo_ = gl::Framebuffer::create();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, mergeFbo_.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_.colorTexture(), 0);
+    glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glUseProgram(partialMerge_.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, partialTarget_.colorTexture());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, target_.coverageTexture());
+    glUniform1i(partialMerge_.uniform("t_partial"), 0);
+    glUniform1i(partialMerge_.uniform("t_coverage"), 1);
+    for (size_t i = 0; i < ids.size(); ++i)
+        glUniform1ui(partialMerge_.uniform(("u_ids[" + std::to_string(i) + "]").c_str()), ids[i]);
+    glUniform1i(partialMerge_.uniform("u_idCount"), int(ids.size()));
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glUseProgram(0);
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    target_.bind();
 }
 
 // An environment map seen where no object is: each pixel's ray (of the uploaded frame: the image's, a

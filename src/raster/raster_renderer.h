@@ -10,6 +10,7 @@
 #include "raster/ibl_textures.h"
 #include "raster/mesh_textures.h"
 #include "raster/raster_limits.h"
+#include "raster/redraw_plan.h"
 #include "raster/render_target.h"
 #include "raster/shader_variant.h"
 #include "raster/shadow_maps.h"
@@ -19,6 +20,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,26 @@ public:
 
     const RenderTarget& target() const { return target_; }
 
+    // The viewer's partial redraw (issue 15), off by default. When on, a draw of the whole image at the pixel
+    // centres with coverage, after one whose inputs differed only in some objects' materials, redraws only
+    // the pixels of those objects (and of objects whose environment cube changed with them); the image is
+    // bit for bit what a full draw gives (redraw_plan.h). A draw with nothing changed then draws nothing.
+    void setPartialRedraw(bool on);
+    // The next draw is a full one (a benchmark's forced redraw).
+    void invalidate() { lastKey_.reset(); }
+    // One jittered sample of the whole image (see draw), into a colour-only target of its own, which it
+    // returns: target() keeps the centre sample and its coverage.
+    const RenderTarget& drawSample(const Scene& scene, int width, int height, glm::vec2 jitter);
+
+    // What the last draw did, for benches and tests.
+    struct DrawReport {
+        bool partial = false;  // only some objects were redrawn (partialIds of them, 0: nothing changed)
+        int partialIds = 0;
+        bool shadowMaps = false;    // the shadow maps were re-rendered
+        bool environments = false;  // the environment cubes were re-rendered
+    };
+    const DrawReport& lastDraw() const { return report_; }
+
     // Shadow-map layers rendered for the last shadowed draw (0: none needed), for reports and benches.
     int shadowLayers() const { return shadows_.layers(); }
 
@@ -64,6 +86,7 @@ private:
         int skipPlane = -1, skipSphere = -1, skipRange = -1;
         bool mirrored = false;
         bool reflections = true;  // planar mirrors and environment cubes looked up (the primary pass only)
+        const std::vector<uint32_t>* only = nullptr;  // a partial redraw: only objects with these coverage ids
     };
     // model: shading::SL_MODEL_*; normalized: Scene::normalized.
     void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId, int model, bool normalized) const;
@@ -75,6 +98,10 @@ private:
     void prepareShadows(const Scene& scene, int width, int height);
     void prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs);
     void drawBackdrop(const FrameBlock& frame) const;
+    void render(RenderTarget& target, const Scene& scene, int width, int height, bool withCoverage, Band band,
+                glm::vec2 jitter, bool reusable);
+    void redrawPart(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
+                    const std::vector<uint32_t>& ids);
 
     // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
     struct ColorPrograms {
@@ -89,8 +116,8 @@ private:
     std::vector<float> shadowKey_;  // what the current shadow maps were rendered from
     uint64_t meshGeneration_ = 0;   // bumped by uploadMeshes
     EnvironmentCubes environments_;
-    std::vector<EnvironmentProbe> probes_;  // this draw's reflective spheres and mesh parts, cube i for probe i
-    std::vector<float> environmentKey_;     // what the cubes were rendered from
+    std::vector<EnvironmentProbe> probes_;   // this draw's reflective spheres and mesh parts, cube i for probe i
+    std::optional<DrawKey> environmentKey_;  // what the cubes were rendered from
     std::vector<RenderTarget> mirrorTargets_;
     std::vector<int> mirrorOfPlane_;  // per plane: index into mirrorTargets_ for this band, or -1
     mutable MeshTextures textures_;   // base-colour textures, uploaded on a part's first draw
@@ -101,6 +128,14 @@ private:
     gl::Buffer meshVbo_, meshIbo_, cubeVbo_;
     std::vector<DrawRange> ranges_;
     RenderTarget target_;
+    RenderTarget sampleTarget_;  // drawSample's
+    bool partialRedraw_ = false;
+    std::optional<DrawKey> lastKey_;  // what target_ holds, when a partial redraw may start from it
+    RenderTarget partialTarget_;      // the redrawn objects, over a copy of target_'s depth
+    gl::Program partialMerge_;        // copies their pixels into target_ (partial_merge.frag)
+    gl::Framebuffer mergeFbo_;        // target_'s colour alone
+    bool environmentsRendered_ = false;
+    DrawReport report_;
 };
 
 // Number of bands that keeps the RGBA32F target near `maxTargetBytes` (1 for small images).

@@ -22,6 +22,7 @@ public:
     bool hasCoverage() const { return bool(coverage_); }
     GLuint colorTexture() const { return color_.id(); }
     GLuint coverageTexture() const { return coverage_.id(); }  // 0 when made without coverage
+    GLuint framebuffer() const { return fbo_.id(); }
 
     // Read back with row 0 at the top.
     void readColor(ImageF& out) const;
