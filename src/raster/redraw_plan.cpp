@@ -23,7 +23,7 @@ void addTexture(KeyBytes& k, const TextureBinding& t) {
 KeyBytes materialKey(const Material& m) {
     KeyBytes k;
     k.add(m.ma).add(m.md).add(m.ms).add(m.s).add(m.kr).add(m.kt).add(m.ior);
-    k.add(m.baseColor).add(m.metallic).add(m.roughness);
+    k.add(m.baseColor).add(m.metallic).add(m.roughness).add(m.emission);
     addTexture(k, m.baseColorTexture);
     return k;
 }
