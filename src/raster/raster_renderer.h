@@ -72,6 +72,9 @@ private:
     void uploadFrame(const FrameBlock& frame) const;
     void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
                     const PassOptions& options) const;
+    // One mesh part (ranges_[k]) with its material, through drawPasses' state.
+    void drawRange(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
+                   const PassOptions& options, size_t k) const;
     void prepareShadows(const Scene& scene, int width, int height);
     void prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs);
     void drawBackdrop(const FrameBlock& frame) const;

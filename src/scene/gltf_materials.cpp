@@ -40,6 +40,16 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
         m.metallic = 0.0f;
         m.roughness = roughness;
     }
+    // alphaMode: OPAQUE (the default) ignores alpha; MASK and BLEND read baseColorFactor[3] times the texture's.
+    if (pbr.baseColorFactor.size() >= 4) m.alpha = finiteClamp(pbr.baseColorFactor[3], 0.0f, 1.0f, 1.0f);
+    if (gm.alphaMode == "MASK") {
+        m.alphaMode = AlphaMode::Mask;
+        m.alphaCutoff = finiteClamp(gm.alphaCutoff, 0.0f, 1e6f, 0.5f);
+    } else if (gm.alphaMode == "BLEND") {
+        m.alphaMode = AlphaMode::Blend;
+    } else if (!gm.alphaMode.empty() && gm.alphaMode != "OPAQUE") {
+        warnings.push_back(place + ".alphaMode: unknown \"" + gm.alphaMode + "\"; treated as OPAQUE");
+    }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);
