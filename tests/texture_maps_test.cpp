@@ -4,13 +4,16 @@
 // second UV set ignored, the alpha mode ignored, the metallic-roughness and occlusion maps dropped).
 #include "gl_fixture.h"
 #include "render_compare.h"
+#include "scene/bounds.h"
 #include "scene/gltf_import.h"
 #include "scene/texture.h"
 #include "test_output.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -142,6 +145,63 @@ TEST_F(TextureMaps, MetallicRoughnessAndOcclusionDroppedFail) {
         Scene noAo = scene;
         part(noAo, 0).occlusionTexture = {};
         EXPECT_FALSE(gate(scene, noAo, "maps_occlusion_dropped" + tag).pass);
+    }
+}
+
+// assimp-testmodels' BoxTexcoords (base colour on TEXCOORD_0, the same image as metallic-roughness on
+// TEXCOORD_1) and ClearCoat (normal maps, jpg and png), head-on: within the gates, and not flat. Head-on
+// because on BoxTexcoords' grazing side faces llvmpipe's per-quad derivatives pick other mip levels than the
+// tracer's exact differentials (textures-status.md, "Known limits"): 0.27 % of pixels over, max 136/255.
+// ClearCoat is held to the shadow-edge gates (1 %, no hard maximum, mean <= 1/255): untextured, it already
+// fails the strict ones (0.66 % over, max 147) on its capsules' silhouettes against their own tiles, which
+// share one coverage id; textured, 0.09 % over, max 114, on the same pixels.
+TEST_F(TextureMaps, AssimpModelsWithinTheGates) {
+    const std::string models = "/usr/share/assimp/models/glTF2/";
+    for (const char* file : {"BoxTexcoords-glTF/boxTexcoords.gltf", "ClearCoat-glTF/ClearCoatTest.gltf"}) {
+        if (!std::filesystem::exists(models + file)) GTEST_SKIP() << "assimp-testmodels is missing (Debian package)";
+        Scene scene = comparisonStage();
+        const GltfImport g = importGltf(models + file);
+        Mesh mesh;
+        mesh.name = file;
+        mesh.parts = g.parts;
+        Bounds box;
+        size_t normalMaps = 0, secondSet = 0;
+        for (const MeshPart& p : mesh.parts) {
+            box.extend(p.geometry->bounds.lo);
+            box.extend(p.geometry->bounds.hi);
+            normalMaps += p.material.normalTexture ? 1 : 0;
+            secondSet += p.material.metallicRoughnessTexture.texCoord == 1 ? 1 : 0;
+        }
+        if (std::string(file).find("Texcoords") != std::string::npos)
+            EXPECT_GT(secondSet, 0u);
+        else
+            EXPECT_GT(normalMaps, 0u);
+        scene.meshes.push_back(mesh);
+        const glm::vec3 centre = 0.5f * (box.lo + box.hi);
+        scene.camera.target = centre;
+        scene.camera.position = centre + glm::vec3(0.0f, 0.0f, 1.6f) * glm::length(box.hi - box.lo);
+        scene.lights.push_back(pointLight(scene.camera.position + glm::vec3(-1.0f, 1.0f, 0.0f), glm::vec3(0.9f)));
+        for (ShadingModel model : {ShadingModel::Phong, ShadingModel::Pbr}) {
+            scene.model = model;
+            const std::string tag = std::string("maps_assimp_") + (secondSet ? "boxtexcoords" : "clearcoat") +
+                                    (model == ShadingModel::Pbr ? "_pbr" : "_phong");
+            const Rendered r = rasterizeWithCoverage(scene, 240, 240);
+            const CompareResult c = gateWithEvidence(r, traceWithCoverage(scene, 240, 240, comparisonDepth(scene, 0)),
+                                                     secondSet ? CompareGates{} : kShadowEdgeGates, tag);
+            EXPECT_TRUE(c.pass) << tag;
+            // Not flat: the covered pixels' colours spread by more than 20/255 in some channel.
+            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0};
+            for (int y = 0; y < 240; ++y)
+                for (int x = 0; x < 240; ++x) {
+                    if (r.coverage[size_t(y) * 240 + size_t(x)] == 0) continue;
+                    for (int k = 0; k < 3; ++k) {
+                        const int v = r.pixels.pixel(x, y)[k];
+                        lo[k] = std::min(lo[k], v);
+                        hi[k] = std::max(hi[k], v);
+                    }
+                }
+            EXPECT_GT(std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}), 20) << tag;
+        }
     }
 }
 
