@@ -1,7 +1,12 @@
 // Triangle meshes: interpolated normal, renormalised in shadeLight, flipped to face the viewer by winding;
-// the material's glTF maps (base colour, metallic-roughness, normal, occlusion) and its alpha mode.
+// with SL_MATERIAL_MAPS (scenes with a textured or non-opaque part; RasterRenderer::programsFor), the
+// material's glTF maps (base colour, metallic-roughness, normal, occlusion) and its alpha mode. Its value
+// has bit 1 << k set when some part of the scene has map k, and bit 16 for a non-opaque alpha mode: the code
+// of maps no part has is left out, since llvmpipe's compile time grows with every inlined sampler.
 #include "surface.glsl"
+#ifdef SL_MATERIAL_MAPS
 #include "material_maps.glsl"
+#endif
 #if SL_ENVIRONMENT
 #include "environment.glsl"
 #endif
@@ -12,6 +17,7 @@ in vec2 v2f_texcoord;
 in vec2 v2f_texcoord1;
 in vec4 v2f_tangent;
 
+#ifdef SL_MATERIAL_MAPS
 // The material's textures (src/raster/mesh_textures.h), map 0 base colour, 1 metallic-roughness, 2 normal,
 // 3 occlusion: each mip chain as RGBA32F levels, filtered by hand in texture_sample.glsl exactly as the tracer
 // filters it. u_tex[map]: x the level count (0: no texture), y, z the wrap modes of u and v, w the flags
@@ -54,18 +60,26 @@ vec4 sampleMap(int map) {
     return texSample(map, t.x, t.y, t.z, (t.w & 1) != 0, (t.w & 2) != 0, (t.w & 4) != 0, (t.w & 8) != 0, uv, lod);
 }
 
+#endif
+
 void main() {
     vec3 N = gl_FrontFacing ? v2f_normal : -v2f_normal;
     vec3 V = u_eye.xyz - v2f_position;
+#ifdef SL_MATERIAL_MAPS
     float alpha = u_alpha.x;
+#if (SL_MATERIAL_MAPS & 1) != 0
     if (u_tex[0].x > 0) {
         vec4 base = sampleMap(0);
         s_tex = base.rgb;
         alpha *= base.a;
     }
+#endif
+#if (SL_MATERIAL_MAPS & 16) != 0
     // glTF alphaMode MASK: what falls below the cutoff is not there (the tracer passes through it).
     if (u_alpha.z == 1.0f && alpha < u_alpha.y) discard;
+#endif
     vec3 md = u_md * s_tex;
+#if (SL_MATERIAL_MAPS & 2) != 0
     if (u_tex[1].x > 0) {
         vec4 mr = sampleMap(1);
         float metallic = mapMetallic(u_mapFactors.x, mr);
@@ -76,16 +90,28 @@ void main() {
         s_ms = mapSpecular(SL_MODEL, u_mapFactors.z != 0.0f, base, metallic, s_s);
         s_mapped = true;
     }
+#endif
+#if (SL_MATERIAL_MAPS & 4) != 0
     if (u_tex[2].x > 0) {
         vec3 n = mapNormal(v2f_normal, v2f_tangent, sampleMap(2), u_texOffset[2].w);
         N = gl_FrontFacing ? n : -n;
     }
+#endif
+#if (SL_MATERIAL_MAPS & 8) != 0
     if (u_tex[3].x > 0) s_ao = mapOcclusion(u_texOffset[3].w, sampleMap(3));
+#endif
+#else
+    float alpha = 1.0f;
+    vec3 md = u_md;
+#endif
     vec3 I = shadeSurface(v2f_position, N, V, md);
 #if SL_ENVIRONMENT
     I += environmentReflection(N, V);
 #endif
     // BLEND: the colour is composited over what is behind by the blend state (raster_passes.cpp).
-    o_color = vec4(I, u_alpha.z == 2.0f ? clamp(alpha, 0.0f, 1.0f) : 1.0f);
+#ifdef SL_MATERIAL_MAPS
+    if (u_alpha.z != 2.0f) alpha = 1.0f;
+#endif
+    o_color = vec4(I, clamp(alpha, 0.0f, 1.0f));
     o_coverage = u_objectId;
 }

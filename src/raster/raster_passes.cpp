@@ -72,8 +72,11 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform4fv(p.uniform("u_alpha"), 1, glm::value_ptr(alpha));
 }
 
-const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant) {
-    const std::string defines = variant.defines();
+const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant, int materialMaps) {
+    // mesh.frag's texture code (SL_MATERIAL_MAPS, the maps the scene's parts use) only where a part needs it:
+    // all of it triples the mesh programs' compile time, which every untextured render would otherwise pay.
+    const std::string defines =
+        variant.defines() + (materialMaps ? "#define SL_MATERIAL_MAPS " + std::to_string(materialMaps) + "\n" : "");
     if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
     if (programs_.size() >= 32) programs_.clear();  // a long viewer session: drop them all, not one by one
     ColorPrograms set;

@@ -372,7 +372,15 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     const FrameBlock frame = makeFrameBlock(scene, view, band, jitter);
     if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
-    const ColorPrograms& programs = programsFor(makeShaderVariant(frame, &shadows_.block()));
+    int maps = 0;  // mesh.frag's SL_MATERIAL_MAPS: bit k for map k some part has, 16 for a non-opaque alpha mode
+    for (const Mesh& m : scene.meshes)
+        for (const MeshPart& p : m.parts) {
+            const Material& mat = p.material;
+            maps |= (mat.baseColorTexture ? 1 : 0) | (mat.metallicRoughnessTexture ? 2 : 0) |
+                    (mat.normalTexture ? 4 : 0) | (mat.occlusionTexture ? 8 : 0) |
+                    (mat.alphaMode != AlphaMode::Opaque ? 16 : 0);
+        }
+    const ColorPrograms& programs = programsFor(makeShaderVariant(frame, &shadows_.block()), maps);
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);

@@ -85,7 +85,8 @@ private:
         gl::Program meshEnvironment, sphereEnvironment;  // + kr ⊙ env(R) from the object's cube (SL_ENVIRONMENT)
         gl::Program planeMirror;                         // + kr ⊙ the planar reflection pass (SL_ENVIRONMENT)
     };
-    const ColorPrograms& programsFor(const ShaderVariant& variant);
+    // materialMaps: mesh.frag's SL_MATERIAL_MAPS bits (set in draw() from the scene's parts), 0 for none.
+    const ColorPrograms& programsFor(const ShaderVariant& variant, int materialMaps = 0);
     const gl::ShaderLibrary shaders_;
     std::map<std::string, ColorPrograms> programs_;
     ShadowMaps shadows_;
