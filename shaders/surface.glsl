@@ -23,6 +23,9 @@ uniform float u_s;
 vec3 surfaceMs() { return s_mapped ? s_ms : u_ms + u_msTex * (s_tex - 1.0f); }
 vec3 surfaceMa() { return s_mapped ? s_ma : u_ma * s_tex; }
 float surfaceS() { return s_mapped ? s_s : u_s; }
+uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
+// The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
+vec3 s_emissive = vec3(1.0f);
 uniform uint u_objectId;
 
 layout(location = 0) out vec4 o_color;
@@ -105,7 +108,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
 #if SL_IBL
     I += environmentLight(N, V, md, dfg) * s_ao;
 #endif
-    return I;
+    return I + u_emission * s_emissive;
 }
 
 // The primary ray through this fragment's pixel centre, exactly as the tracer builds it. When the image is

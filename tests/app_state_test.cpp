@@ -740,7 +740,7 @@ TEST(AppScript, ActionsAreParsedOnceIntoTypedFields) {
     EXPECT_EQ(std::get<actions::ResizeWindow>(sc.actions[6].action).height, 480);
     // Words outside a table are refused at their path, listing the table.
     EXPECT_EQ(parseError(R"([{"action": "setMode", "mode": "both"}])"),
-              "actions.json: actions[0].mode: unknown view mode 'both'; expected raster, traced, split or difference");
+              "actions.json: actions[0].mode: unknown view mode 'both'; expected raster, traced, split, difference, global or local-global");
     EXPECT_EQ(parseError(R"([{"action": "setEncoding", "encoding": "gamma"}])"),
               "actions.json: actions[0].encoding: unknown encoding 'gamma'; expected srgb or linear");
     EXPECT_EQ(parseError(R"([{"action": "addLight", "type": "spot"}])"),

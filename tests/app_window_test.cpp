@@ -304,6 +304,35 @@ TEST(AppWindow, ProgressiveReferenceCompletesWhileTheWindowRuns) {
     EXPECT_TRUE(fs::exists(window));
 }
 
+// Global mode: the path tracer in the window draws exactly what `shadelab render --renderer path` draws with
+// the same number of samples (it is deterministic for any thread count and split into passes).
+TEST(AppWindow, GlobalModeEqualsTheHeadlessPathTracer) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/local-vs-global.json");
+    const std::string shot = test::outputPath("global_window.png");
+    const std::string script = writeText("global_script.json", R"([
+        {"frame": 1, "action": "setMode", "mode": "global"},
+        {"action": "waitReference", "timeout": 120},
+        {"action": "referenceScreenshot", "path": ")" + shot + R"("}])");
+    Result v = view(scenePath + " --size 160x90 --frames 3 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    const std::string marker = "path traced, ";
+    const size_t at = v.out.find(marker);
+    ASSERT_NE(at, std::string::npos) << v.out;
+    const int spp = std::atoi(v.out.c_str() + at + marker.size());
+    ASSERT_GE(spp, 1) << v.out;
+    const std::string headless = test::outputPath("global_headless.png");
+    Result r = shell(binary() + " render " + scenePath + " --size 160x90 --renderer path --spp " + std::to_string(spp) +
+                     " -o " + headless);
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(sameBytes(shot, headless)) << spp << " samples: " << shot << " vs " << headless;
+    // Negative control: one sample more is another image.
+    Result more = shell(binary() + " render " + scenePath + " --size 160x90 --renderer path --spp " +
+                        std::to_string(spp + 1) + " -o " + headless);
+    ASSERT_EQ(more.code, 0) << more.out;
+    EXPECT_FALSE(sameBytes(shot, headless));
+}
+
 TEST(AppWindow, TracedGlassTreeExitsPromptlyAfterItsFrames) {
     // Issue 11: 45 spheres with kr = kt = 1 at depth 64, every pixel glass. Before the ray tree was bounded
     // and cancellable inside a tree, the reference workers never stopped and the viewer never exited;

@@ -81,6 +81,51 @@ TEST(Cli, RenderDefaultSceneWritesNonTrivialPng) {
     EXPECT_GT(colours.size(), 500u) << "a lit scene has many distinct colours; image: " << out;
 }
 
+// The path tracer from the command line: the lesson scenes render, the summary line names the sample count
+// and the noise, the indirect part is darker than the whole, and its flags are refused with other renderers.
+TEST(CliPath, PathTracesTheLessonScenesAndSaysHowNoisy) {
+    for (const char* scene : {"cornell", "local-vs-global"}) {
+        const std::string out = test::outputPath(std::string("path_") + scene + ".png");
+        fs::remove(out);
+        Result r = run("render " + test::sourcePath(std::string("assets/scenes/") + scene + ".json") + " -o " + out +
+                       " --size 64x48 --renderer path --spp 5 --depth 3");
+        ASSERT_EQ(r.code, 0) << r.out;
+        EXPECT_NE(r.out.find("path traced 5 samples per pixel"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("mean standard error"), std::string::npos) << r.out;
+        const Image8 img = readPng(out);
+        EXPECT_EQ(img.width, 64);
+        double sum = 0.0;
+        for (uint8_t v : img.data) sum += v;
+        EXPECT_GT(sum / double(img.data.size()), 20.0) << "a lit box; image: " << out;
+    }
+    const std::string all = test::outputPath("path_lvg_all.png"), indirect = test::outputPath("path_lvg_indirect.png");
+    const std::string scene = test::sourcePath("assets/scenes/local-vs-global.json");
+    ASSERT_EQ(run("render " + scene + " -o " + all + " --size 48x36 --renderer path --spp 8").code, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + indirect + " --size 48x36 --renderer path --spp 8 --light-paths indirect").code, 0);
+    double a = 0.0, b = 0.0;
+    for (uint8_t v : readPng(all).data) a += v;
+    for (uint8_t v : readPng(indirect).data) b += v;
+    EXPECT_LT(b, 0.9 * a) << "indirect light alone is darker than all light: " << all << " " << indirect;
+    EXPECT_GT(b, 0.1 * a) << "a closed white box bounces much light: " << indirect;
+}
+
+TEST(CliPath, TimeLimitStopsAtAWholeSampleCountAndPathFlagsNeedThePathRenderer) {
+    const std::string out = test::outputPath("path_time_limit.png");
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    Result r = run("render " + scene + " -o " + out + " --size 64x36 --renderer path --spp 100000 --time-limit 0.5");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("(time limit)"), std::string::npos) << r.out;
+    for (const char* flags : {"--time-limit 1", "--estimator bsdf", "--light-paths indirect"}) {
+        Result bad = run("render " + scene + " -o " + out + " --renderer trace " + flags);
+        EXPECT_EQ(bad.code, 2) << flags << ": " << bad.out;
+        EXPECT_NE(bad.out.find("is for --renderer path"), std::string::npos) << bad.out;
+    }
+    Result spp = run("render " + scene + " -o " + out + " --renderer path --spp 7 --size 16x9");
+    EXPECT_EQ(spp.code, 0) << "any sample count, not only squares: " << spp.out;
+    Result grid = run("render " + scene + " -o " + out + " --renderer trace --spp 7");
+    EXPECT_EQ(grid.code, 2) << grid.out;
+}
+
 TEST(Cli, RenderGlbAsScene) {
     const std::string model = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
     if (!fs::exists(model)) GTEST_SKIP() << "assimp-testmodels not installed: " << model;
@@ -187,7 +232,7 @@ TEST(Cli, EnumFlagsListTheirWordsAndAcceptTheSameAliasesAsSceneFiles) {
     const std::pair<const char*, const char*> cases[] = {
         {"--encoding gamma", "shadelab: usage error: --encoding: expected srgb or linear, got 'gamma'"},
         {"--model gouraud", "shadelab: usage error: --model: expected phong, blinn-phong or pbr, got 'gouraud'"},
-        {"--renderer gpu", "shadelab: usage error: --renderer: expected raster, trace or both, got 'gpu'"},
+        {"--renderer gpu", "shadelab: usage error: --renderer: expected raster, trace, both or path, got 'gpu'"},
         {"--terms ambient,glow",
          "shadelab: usage error: --terms: unknown term 'glow'; expected ambient, diffuse, "
          "specular, shadows, reflections or none"},

@@ -56,8 +56,10 @@ class Renderer:
         """Renders `scene` (a Scene, a scene file's path or a dict) to a shadelab.Image.
 
         size: (width, height) or "WxH", each 1..16384 (the binary's default 1280x720).
-        renderer: "raster" (OpenGL) or "trace" (the CPU reference); "path" once the path tracer lands.
-        spp: samples per pixel, a perfect square (1, 4, 9, ...), the same grid in both renderers.
+        renderer: "raster" (OpenGL), "trace" (the CPU Whitted reference) or "path" (the path tracer: global
+            illumination, ambient off; spp may be any count, and the image is the same for any thread count).
+        spp: samples per pixel, a perfect square (1, 4, 9, ...), the same grid in raster and trace; any count
+            from 1 for path.
         encoding: "srgb" (default) or "linear": how to_uint8(), save() and the PNG encode the linear floats.
         depth: the tracer's secondary-ray depth (default: the scene's maxDepth); threads: tracer workers
         (0 = every core); coverage: also return per-pixel object ids (image.coverage), which compare() uses.

@@ -1,6 +1,19 @@
 #include "app/captions.h"
 
 namespace shadelab::app {
+namespace {
+
+const char* globalCaption(trace::PathPart part) {
+    switch (part) {
+        case trace::PathPart::Direct: return "global illumination, direct light only (path traced)";
+        case trace::PathPart::Indirect: return "indirect light only: what the ambient term stands in for";
+        case trace::PathPart::All: break;
+    }
+    return "global illumination (path traced)";
+}
+
+}  // namespace
+
 
 std::string modelCaption(const Scene& scene) {
     switch (scene.model) {
@@ -28,6 +41,8 @@ std::string imageCaption(const ViewerState& state) {
         case ViewMode::Traced: mode = "reference (Whitted ray tracer)"; break;
         case ViewMode::Split: mode = "raster | reference"; break;
         case ViewMode::Difference: mode = "|raster - reference|, amplified"; break;
+        case ViewMode::Global: mode = globalCaption(state.globalPart); break;
+        case ViewMode::LocalGlobal: mode = "local (raster) | global (path traced)"; break;
     }
     return modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(state.scene.terms) + "  \xc2\xb7  " + mode;
 }

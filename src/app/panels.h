@@ -6,6 +6,7 @@
 
 #include "app/albedo_plot.h"
 #include "app/file_list.h"
+#include "app/global_renderer.h"
 #include "app/probe.h"
 #include "app/viewer_state.h"
 #include "image/compare.h"
@@ -64,6 +65,16 @@ struct ReferenceInfo {
     std::string error;
 };
 
+struct GlobalInfo {
+    bool active = false;
+    int samples = 0, maxSamples = 0;
+    float passProgress = 0.0f;  // of the sample pass under way
+    double noise8 = 0.0;        // mean standard error, 8-bit sRGB units
+    double seconds = 0.0;
+    int threads = 0;
+    std::string error;
+};
+
 struct PanelContext {
     PanelContext(ViewerState& s, PanelServices& sv, UiFields& f) : state(s), services(sv), fields(f) {}
     ViewerState& state;
@@ -71,6 +82,8 @@ struct PanelContext {
     UiFields& fields;
     const ProbeResult* probe = nullptr;  // null when no probe is set
     ReferenceInfo reference;
+    GlobalInfo global;                          // the path tracer of Global and Local | Global
+    std::optional<GlobalEstimate> probeGlobal;  // its estimate at the probed pixel, in those modes
     const CompareResult* metrics = nullptr;  // raster vs complete reference, when available
     std::string metricsWords;                // the same, in plain words
     std::string shaderError;

@@ -219,6 +219,13 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
         const bool shadows = ctx.state.scene.terms.shadows;
         if (!p.lights.empty()) lightTable(p, shadows, pbr);
         totalsTable(p, ctx.state.scene.model, ctx.state.encoding);
+        if (ctx.probeGlobal && ctx.probeGlobal->samples > 0) {
+            // The path tracer's estimate of the same pixel: what the local terms plus ambient approximate.
+            const GlobalEstimate& g = *ctx.probeGlobal;
+            ImGui::Text("global (path traced) %.3f %.3f %.3f", g.mean.r, g.mean.g, g.mean.b);
+            ImGui::TextDisabled("  \xc2\xb1 %.3f %.3f %.3f (standard error, %d samples)", g.standardError.r,
+                                g.standardError.g, g.standardError.b, g.samples);
+        }
         ImGui::TextDisabled(shadows ? "visible: the reference's shadow ray; no reflections"
                                     : "local terms, as both renderers compute them");
     }

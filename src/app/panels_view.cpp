@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace shadelab::app {
@@ -45,14 +47,48 @@ void metricsTable(const CompareResult& r) {
     ImGui::TreePop();
 }
 
+// Global and Local | Global: which light to show, and how far the path tracer has got.
+void drawGlobalStatus(PanelContext& ctx) {
+    ViewerState& s = ctx.state;
+    if (s.mode == ViewMode::LocalGlobal) {
+        float split = s.splitPosition;
+        if (ImGui::SliderFloat("wipe", &split, 0.0f, 1.0f, "%.2f")) setSplitPosition(s, split);
+        ImGui::TextDisabled("left local (raster), right global (path traced)");
+    }
+    int part = int(s.globalPart);
+    ImGui::TextDisabled("light");
+    const char* parts[] = {"all", "direct", "indirect only"};
+    for (int i = 0; i < 3; ++i) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(parts[i], &part, i)) setGlobalPart(s, trace::PathPart(i));
+    }
+    const GlobalInfo& g = ctx.global;
+    if (!g.error.empty()) {
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "path tracer: %s", g.error.c_str());
+        return;
+    }
+    char overlay[96];
+    if (g.samples == 0)
+        std::snprintf(overlay, sizeof overlay, "first sample %.0f%%", 100.0 * g.passProgress);
+    else
+        std::snprintf(overlay, sizeof overlay, "%d samples, noise %.1f/255, %.0f s", g.samples, g.noise8, g.seconds);
+    const float fraction = g.samples == 0 ? g.passProgress : std::min(1.0f, float(g.samples) / 256.0f);
+    ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("path tracer, %d thread(s) at low priority; the ambient term is off (light bounces instead); "
+                       "refines until %d samples, restarts on every change",
+                       g.threads, g.maxSamples);
+    ImGui::PopStyleColor();
+}
+
 }  // namespace
 
 void drawViewSection(PanelContext& ctx) {
     ViewerState& s = ctx.state;
     int mode = int(s.mode);
-    const char* names[] = {"Raster", "Traced", "Split", "Difference"};
-    for (int i = 0; i < 4; ++i) {
-        if (i) ImGui::SameLine();
+    const char* names[] = {"Raster", "Traced", "Split", "Difference", "Global", "Local | Global"};
+    for (int i = 0; i < 6; ++i) {
+        if (i && i != 4) ImGui::SameLine();
         if (ImGui::RadioButton(names[i], &mode, i)) setMode(s, ViewMode(i));
     }
     ImGui::TextDisabled("camera");
@@ -85,6 +121,10 @@ void drawViewSection(PanelContext& ctx) {
         if (ImGui::SliderInt("gain", &gain, 1, 64)) setHeatGain(s, gain);
     }
     if (s.mode == ViewMode::Raster) return;
+    if (isGlobal(s.mode)) {
+        drawGlobalStatus(ctx);
+        return;
+    }
 
     const ReferenceInfo& ref = ctx.reference;
     if (!ref.error.empty()) {

@@ -35,6 +35,8 @@ public:
     // The mesh BVH of `scene`'s geometry, shared with the trace workers (built once per geometry). The
     // probe traces through it, so it asks the very scene the reference renders.
     std::shared_ptr<const trace::MeshBvh> meshBvh(const Scene& scene) { return meshes_.get(scene); }
+    // The cache itself, shared with the path tracer of Global mode (GlobalRenderer).
+    trace::MeshBvhCache& meshCache() { return meshes_; }
     // Cancels any trace in progress (e.g. back in Raster mode); the next request starts afresh.
     void pause();
     // UI thread, GL context current: moves finished tiles into the image and the textures. True when

@@ -6,14 +6,20 @@
 
 namespace shadelab::app {
 
-enum class ViewMode { Raster, Traced, Split, Difference };
+// Raster, the Whitted reference (Traced), the two side by side (Split) or their difference; the path
+// tracer's global illumination (Global), or local (raster) | global side by side (LocalGlobal).
+enum class ViewMode { Raster, Traced, Split, Difference, Global, LocalGlobal };
 
 inline constexpr EnumName<ViewMode> kViewModeNames[] = {
     {ViewMode::Raster, "raster"},
     {ViewMode::Traced, "traced"},
     {ViewMode::Split, "split"},
     {ViewMode::Difference, "difference"},
+    {ViewMode::Global, "global"},
+    {ViewMode::LocalGlobal, "local-global"},
 };
+
+inline bool isGlobal(ViewMode m) { return m == ViewMode::Global || m == ViewMode::LocalGlobal; }
 
 inline const char* toString(ViewMode m) { return nameOf(kViewModeNames, m); }
 inline std::optional<ViewMode> parseViewMode(std::string_view name) { return lookupName(kViewModeNames, name); }

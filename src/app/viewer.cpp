@@ -65,6 +65,7 @@ void Viewer::waitForWork() {
     }
     double timeout = 1e9;  // glfwWaitEventsTimeout needs a finite number
     if (reference_->active() && !reference_->complete()) timeout = 1.0 / 30.0;  // show tiles as they finish
+    if (global_->active() && global_->samples() < GlobalRenderer::kMaxSamples) timeout = 0.1;  // and sample passes
     const double statusLeft = statusTime_ + kStatusSeconds - glfwGetTime();
     if (statusLeft > 0.0) timeout = std::min(timeout, statusLeft + 0.01);
     const double before = glfwGetTime();
@@ -100,6 +101,9 @@ bool Viewer::frame() {
     ctx.probe = probe_ ? &*probe_ : nullptr;
     ctx.reference = {reference_->active(),  reference_->complete(), reference_->progress(),
                      reference_->seconds(), reference_->threads(),  reference_->error()};
+    ctx.global = {global_->active(),       global_->samples(), GlobalRenderer::kMaxSamples, global_->passProgress(),
+                  global_->noise8(),       global_->seconds(), global_->threads(),          global_->error()};
+    if (probe_ && isGlobal(state_.mode)) ctx.probeGlobal = global_->estimate(probe_->x, probe_->y);
     ctx.metrics = metrics_ && metricsRevision_ == state_.revision ? &*metrics_ : nullptr;
     if (ctx.metrics) ctx.metricsWords = metricsWords_;
     ctx.shaderError = shaderError_;
@@ -243,6 +247,13 @@ bool Viewer::accumulate() {
 }
 
 void Viewer::updateReference() {
+    if (isGlobal(state_.mode)) {
+        reference_->pause();
+        global_->request(state_.scene, renderW_, renderH_, state_.referenceRevision, state_.globalPart);
+        global_->update();
+        return;
+    }
+    global_->pause();
     if (state_.mode == ViewMode::Raster && !waiting_) {
         reference_->pause();
         return;
@@ -307,12 +318,19 @@ void Viewer::compose() {
     in.raster = smooth ? accumulation_->texture() : raster_->target().colorTexture();
     in.imageWidth = raster_->target().width();
     in.imageHeight = raster_->target().height();
-    if (reference_->active()) {
+    if (isGlobal(state_.mode) && global_->active()) {
+        // The path tracer's image in the traced slot: Global shows it whole, Local | Global as the wipe's right.
+        in.traced = global_->texture();
+        in.tiles = global_->tileTexture();
+        in.tileSize = global_->tileSize();
+    } else if (reference_->active()) {
         in.traced = reference_->texture();
         in.tiles = reference_->tileTexture();
         in.tileSize = reference_->tileSize();
     }
-    in.mode = state_.mode;
+    in.mode = state_.mode == ViewMode::Global ? ViewMode::Traced
+              : state_.mode == ViewMode::LocalGlobal ? ViewMode::Split
+                                                     : state_.mode;
     in.encoding = state_.encoding;
     in.split = state_.splitPosition;
     in.gain = float(state_.heatGain);

@@ -12,6 +12,7 @@
 #include "app/frame_stats.h"
 #include "app/image_view.h"
 #include "app/panels.h"
+#include "app/global_renderer.h"
 #include "app/reference_renderer.h"
 #include "app/script.h"
 #include "app/undo_history.h"
@@ -108,6 +109,7 @@ private:
     std::unique_ptr<ImageView> imageView_;
     std::unique_ptr<ArrowOverlay> arrows_;
     std::unique_ptr<ReferenceRenderer> reference_;
+    std::unique_ptr<GlobalRenderer> global_;  // after reference_: it borrows reference_'s mesh BVH cache
     std::unique_ptr<Accumulation> accumulation_;
 
     // Layout, in window (logical) units unless named fb*.

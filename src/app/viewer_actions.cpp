@@ -59,7 +59,11 @@ void Viewer::runScript() {
     }
     if (waiting_) {
         const float timeout = std::get<actions::WaitReference>(waiting_->action).timeout;
-        if (reference_->complete() && reference_->revision() == state_.referenceRevision) {
+        // In Global modes: the path tracer's first whole sample pass of this state.
+        const bool done = isGlobal(state_.mode)
+                              ? global_->samples() > 0 && global_->revision() == state_.referenceRevision
+                              : reference_->complete() && reference_->revision() == state_.referenceRevision;
+        if (done) {
             waiting_ = nullptr;
         } else if (glfwGetTime() - waitStarted_ > double(timeout)) {
             throw InputError(script_->file, "actions[" + std::to_string(waiting_->index) + "]",
@@ -85,6 +89,17 @@ void Viewer::performAction(const ScriptAction& a) {
             if constexpr (std::is_same_v<T, Screenshot>) {
                 writePng(x.path, captureRaster());
             } else if constexpr (std::is_same_v<T, ReferenceScreenshot>) {
+                if (isGlobal(state_.mode)) {
+                    // The path tracer's image as it stands: the PNG `shadelab render --renderer path --spp N`
+                    // writes, N the samples so far (printed, so a script or a test can render the same).
+                    if (global_->samples() == 0 || global_->revision() != state_.referenceRevision)
+                        throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
+                                         "the path tracer has no whole sample yet (use waitReference first)");
+                    writePng(x.path, toImage8(global_->image(), state_.encoding));
+                    std::fprintf(stderr, "shadelab: %s: path traced, %d samples per pixel\n", x.path.c_str(),
+                                 global_->samples());
+                    return;
+                }
                 if (!reference_->complete() || reference_->revision() != state_.referenceRevision)
                     throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
                                      "the reference is not complete (use waitReference first)");

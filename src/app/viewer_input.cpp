@@ -169,7 +169,7 @@ void Viewer::handleKeys() {
             case GLFW_KEY_P:  // pbr and back to Phong: the pbr-vs-phong lesson flips between them
                 setModel(state_, state_.scene.model == ShadingModel::Pbr ? ShadingModel::Phong : ShadingModel::Pbr);
                 break;
-            case GLFW_KEY_V: setMode(state_, ViewMode((int(state_.mode) + 1) % 4)); break;
+            case GLFW_KEY_V: setMode(state_, ViewMode((int(state_.mode) + 1) % 6)); break;
             case GLFW_KEY_TAB: showPanel_ = !showPanel_; break;
             case GLFW_KEY_C: fields_.captions = !fields_.captions; break;
             case GLFW_KEY_F11: overlayPanel_ = !overlayPanel_; break;

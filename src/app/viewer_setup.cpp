@@ -69,6 +69,7 @@ Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Sc
         imageView_ = std::make_unique<ImageView>(shaders);
         arrows_ = std::make_unique<ArrowOverlay>(shaders);
         reference_ = std::make_unique<ReferenceRenderer>();
+        global_ = std::make_unique<GlobalRenderer>(reference_->meshCache());
         accumulation_ = std::make_unique<Accumulation>(shaders);
         if (options_.verbose) std::fprintf(stderr, "shadelab: shaders from %s\n", shaders.origin().c_str());
     } catch (...) {
@@ -82,6 +83,7 @@ Viewer::~Viewer() { shutdown(); }
 // GL objects go while their context is current; then ImGui, the window and GLFW.
 void Viewer::shutdown() {
     if (window_) glfwMakeContextCurrent(window_);
+    global_.reset();     // joins the path tracer's threads (it borrows the reference's BVH cache)
     reference_.reset();  // joins the tracer threads, then deletes its textures
     arrows_.reset();
     imageView_.reset();

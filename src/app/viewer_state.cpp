@@ -328,6 +328,8 @@ void resetCamera(ViewerState& state) {
 
 void setMode(ViewerState& state, ViewMode mode) { state.mode = mode; }
 
+void setGlobalPart(ViewerState& state, trace::PathPart part) { state.globalPart = part; }
+
 void setEncoding(ViewerState& state, Encoding encoding) { state.encoding = encoding; }
 
 void setSplitPosition(ViewerState& state, float position) { state.splitPosition = std::clamp(position, 0.0f, 1.0f); }

@@ -7,6 +7,7 @@
 #include "app/material_presets.h"
 #include "app/orbit_camera.h"
 #include "app/view_mode.h"
+#include "trace/path_settings.h"
 #include "image/encode.h"
 #include "scene/scene.h"
 
@@ -40,6 +41,7 @@ struct ViewerState {
     Camera fileCamera;                      // the scene file's camera, restored by resetCamera (key R)
     OrbitCamera orbit;                      // scene.camera as orbit parameters; written back on every move
     ViewMode mode = ViewMode::Raster;
+    trace::PathPart globalPart = trace::PathPart::All;  // what Global mode shows: all, direct or indirect light
     Encoding encoding = Encoding::Srgb;
     uint32_t selected = 0;  // coverage id of the selected object (scene/coverage.h), 0 = none
     ProbeState probe;
@@ -137,6 +139,7 @@ void setStageOn(ViewerState& state, bool on);  // e.g. one of a model's glTF cam
 
 // --- view ---
 void setMode(ViewerState& state, ViewMode mode);
+void setGlobalPart(ViewerState& state, trace::PathPart part);
 void setEncoding(ViewerState& state, Encoding encoding);
 void setSplitPosition(ViewerState& state, float position);  // clamped to [0, 1]
 void setHeatGain(ViewerState& state, int gain);             // clamped to [1, 255]

@@ -39,8 +39,11 @@ uint64_t defaultMaxMemory() {
 
 uint64_t estimateRenderBytes(const Scene& scene, const RenderOptions& o) {
     const uint64_t pixels = uint64_t(o.width) * uint64_t(o.height);
-    const bool raster = o.renderer != RendererChoice::Trace, trace = o.renderer != RendererChoice::Raster;
+    const bool raster = o.renderer == RendererChoice::Raster || o.renderer == RendererChoice::Both;
+    const bool trace = o.renderer != RendererChoice::Raster;
     uint64_t bytes = 0;
+    // The path tracer's per-pixel sums and squares (2 × 3 doubles) and sample count.
+    if (o.renderer == RendererChoice::Path) bytes += pixels * (48 + 4);
     if (raster) bytes += pixels * kRasterBytesPerPixel + triangles(scene) * kRasterBytesPerTriangle;
     if (trace) bytes += pixels * kTraceBytesPerPixel + triangles(scene) * kTraceBytesPerTriangle;
     if (raster && trace) bytes += pixels * (4 + 1 + 4 + 12);  // raster coverage, band mask, heatmap, side-by-side

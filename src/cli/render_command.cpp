@@ -15,6 +15,7 @@
 #include "image/png.h"
 #include "raster/offscreen.h"
 #include "scene/scene_load.h"
+#include "trace/path_render.h"
 #include "trace/trace_image.h"
 #include "util/input_error.h"
 #include "util/messages.h"
@@ -85,6 +86,37 @@ Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& 
     return r;
 }
 
+// The path tracer (design.md §8): settings from the flags, a progress bar, and one line saying how many
+// samples it took and how noisy the image is.
+Image8 pathTrace(const Scene& scene, const RenderOptions& o, StageTimer& timer) {
+    trace::PathSettings settings;
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.spp = o.spp;
+    settings.threads = o.threads;
+    settings.maxDepth = o.depth.value_or(scene.maxDepth);
+    settings.timeLimit = o.timeLimit;
+    settings.estimator = o.estimator;
+    settings.part = o.part;
+    auto traced = std::make_shared<const trace::TraceScene>(scene);
+    timer.stage("BVH build");
+    trace::PathOutput out;
+    {
+        ProgressBar bar("path tracing");
+        out = trace::pathTraceImage(traced, settings, [&bar](float f) { bar.update(f); });
+    }
+    timer.stage("path trace");
+    const double paths = double(o.width) * double(o.height) * double(out.spp);
+    std::fprintf(stderr,
+                 "shadelab: path traced %d samples per pixel%s in %.2f s (%.2f M paths/s, %d bounces); mean "
+                 "standard error %.2f (8-bit sRGB units)\n",
+                 out.spp, o.timeLimit > 0.0 && out.spp < o.spp ? " (time limit)" : "", out.seconds,
+                 paths / std::max(out.seconds, 1e-9) * 1e-6, settings.maxDepth, out.meanStandardError8);
+    Image8 pixels = toImage8(out.color, o.encoding);
+    timer.stage("conversion");
+    return pixels;
+}
+
 // The files a render reads that -o must not replace: the scene and the glTF files its meshes name, resolved
 // as scene_load.cpp resolves them. The buffers and images inside a glTF are not listed.
 std::vector<std::string> sceneInputs(const std::string& input, const Scene& scene) {
@@ -100,7 +132,7 @@ std::vector<std::string> sceneInputs(const std::string& input, const Scene& scen
 
 // The render itself; `doing` names the stage in progress, for an out-of-memory message.
 int render(const RenderOptions& o, std::string& doing) {
-    const bool needRaster = o.renderer != RendererChoice::Trace;
+    const bool needRaster = o.renderer == RendererChoice::Raster || o.renderer == RendererChoice::Both;
     StageTimer timer;
     // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
     GltfImportOptions gltf;
@@ -132,6 +164,8 @@ int render(const RenderOptions& o, std::string& doing) {
         output = rasterize(scene, o, false, timer).pixels;
     } else if (o.renderer == RendererChoice::Trace) {
         output = traceReference(scene, o, timer).pixels;
+    } else if (o.renderer == RendererChoice::Path) {
+        output = pathTrace(scene, o, timer);
     } else {
         Rendered a = rasterize(scene, o, true, timer);
         Rendered b = traceReference(scene, o, timer);

@@ -23,17 +23,26 @@ const char* const kHelpHead =
     "  -o, --output PATH          PNG to write (required); written atomically; - for stdout. Refused when\n"
     "                             it is the scene or a model it loads, or exists and is not a regular file\n"
     "  --size WxH                 image size in pixels, each side 1..16384 (default 1280x720)\n"
-    "  --renderer NAME            raster (default) | trace | both (raster | traced | heatmap in one PNG)\n"
+    "  --renderer NAME            raster (default) | trace | both (raster | traced | heatmap in one PNG) |\n"
+    "                             path (the path tracer: global illumination, docs/lighting.md)\n"
     "  --model NAME               phong | blinn-phong | pbr, blinn-phong also written blinn (default: the scene's)\n"
     "  --terms LIST               comma-separated terms to switch on, the rest off:\n"
     "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
-    "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1)\n"
+    "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1);\n"
+    "                             --renderer path: random samples, any N from 1 (default 16)\n"
     "  --camera fit|file|N        fit: frame the scene's bounds (default for a .gltf/.glb); file: the scene\n"
     "                             file's camera (default for a .json) or a model's first glTF camera; N: the\n"
     "                             model's glTF camera N, from 0\n"
     "  --threads N                tracer threads, 0 = every core (default 0)\n"
     "  --depth N                  tracer secondary-ray depth, 0..64 (default: the scene's maxDepth; with\n"
-    "                             --renderer both at most 1, the rasterizer's one bounce)\n";
+    "                             --renderer both at most 1, the rasterizer's one bounce; path: bounces\n"
+    "                             after the camera hit, 0 = direct light only)\n"
+    "  --time-limit SECONDS       path: stop at the last whole sample pass begun within this time, and say\n"
+    "                             how many samples it took (at most --spp)\n"
+    "  --estimator NAME           path: mis (default) | bsdf | light: how emitters' light is sampled; all\n"
+    "                             converge to the same image, with different noise\n"
+    "  --light-paths NAME         path: all (default) | direct | indirect: indirect is the light scattered\n"
+    "                             twice or more, what the lecture's ambient term stands in for\n";
 
 const char* const kHelpTail =
     "  --encoding NAME            srgb (default) | linear: how linear colour becomes 8-bit\n"
@@ -74,7 +83,8 @@ CameraChoice parseCameraFlag(const std::string& value) {
 RenderOptions parseRenderOptions(int argc, char** argv) {
     std::vector<std::string> valued = {"-o",         "--output",     "--size",  "--model",    "--terms",
                                        "--encoding", "--gl-backend", "--spp",   "--renderer", "--threads",
-                                       "--depth",    "--max-memory", "--camera"};
+                                       "--depth",    "--max-memory", "--camera", "--time-limit", "--estimator",
+                                       "--light-paths"};
     std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
@@ -97,10 +107,17 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--model")) o.model = parseChoice("--model", *v, kShadingModelNames);
     if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
     if (auto v = args.value("--encoding")) o.encoding = parseChoice("--encoding", *v, kEncodingNames);
-    if (auto v = args.value("--spp")) o.spp = parseInt("--spp", *v, 1, 64);
-    if (auto v = args.value("--camera")) o.camera = parseCameraFlag(*v);
-    raster::samplesPerSide(o.spp);  // a perfect square
     if (auto v = args.value("--renderer")) o.renderer = parseChoice("--renderer", *v, kRendererNames);
+    const bool path = o.renderer == RendererChoice::Path;
+    if (path) o.spp = 16;
+    if (auto v = args.value("--spp")) o.spp = parseInt("--spp", *v, 1, path ? 1 << 20 : 64);
+    if (auto v = args.value("--camera")) o.camera = parseCameraFlag(*v);
+    if (!path) raster::samplesPerSide(o.spp);  // a perfect square
+    for (const char* flag : {"--time-limit", "--estimator", "--light-paths"})
+        if (!path && args.value(flag)) throw UsageError(std::string(flag) + " is for --renderer path");
+    if (auto v = args.value("--time-limit")) o.timeLimit = parseNumber("--time-limit", *v, 0.0f, 1e7f);
+    if (auto v = args.value("--estimator")) o.estimator = parseChoice("--estimator", *v, trace::kPathEstimatorNames);
+    if (auto v = args.value("--light-paths")) o.part = parseChoice("--light-paths", *v, trace::kPathPartNames);
     if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);
     if (auto v = args.value("--depth")) o.depth = parseInt("--depth", *v, 0, 64);
     if (auto v = args.value("--gl-backend")) o.backend = parseChoice("--gl-backend", *v, gl::kGlBackendNames);

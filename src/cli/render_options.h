@@ -6,6 +6,7 @@
 #include "scene/camera_choice.h"
 #include "scene/raster_override.h"
 #include "scene/scene.h"
+#include "trace/path_settings.h"
 #include "util/name_table.h"
 
 #include <cstdint>
@@ -14,13 +15,14 @@
 
 namespace shadelab::cli {
 
-enum class RendererChoice { Raster, Trace, Both };
+enum class RendererChoice { Raster, Trace, Both, Path };
 
 // The words of --renderer.
 inline constexpr EnumName<RendererChoice> kRendererNames[] = {
     {RendererChoice::Raster, "raster"},
     {RendererChoice::Trace, "trace"},
     {RendererChoice::Both, "both"},
+    {RendererChoice::Path, "path"},
 };
 
 inline const char* toString(RendererChoice r) { return nameOf(kRendererNames, r); }
@@ -32,12 +34,16 @@ struct RenderOptions {
     std::optional<ShadingModel> model;  // unset: the scene's
     std::optional<Terms> terms;         // unset: the scene's
     Encoding encoding = Encoding::Srgb;
-    int spp = 1;                         // perfect square, both renderers
+    int spp = 1;                         // perfect square for raster, trace and both; any N >= 1 for path
     std::optional<CameraChoice> camera;  // --camera; unset: the scene's own (a bare model: fit)
     RendererChoice renderer = RendererChoice::Raster;
     int threads = 0;           // tracer worker threads; 0 = every core
     std::optional<int> depth;  // tracer secondary-ray depth; unset: the scene's maxDepth
     RasterOverride raster;     // --shadow-map-size, --pcf, ...: over the scene's "raster"
+    // The path tracer (--renderer path): --time-limit seconds (0: none), --estimator, --light-paths.
+    double timeLimit = 0.0;
+    trace::PathEstimator estimator = trace::PathEstimator::Mis;
+    trace::PathPart part = trace::PathPart::All;
     gl::GlBackend backend = gl::GlBackend::Auto;
     bool allowExternalPaths = false;  // glTF buffers may live outside the model's folder
     uint64_t maxMemory = 0;           // --max-memory, bytes; 0 = defaultMaxMemory() (memory_budget.h)

@@ -23,12 +23,7 @@ E named(const EnumName<E> (&table)[N], const std::string& word, const char* argu
     throw UsageError(std::string(argument) + ": unknown value '" + word + "'; expected " + nameChoices(table));
 }
 
-Engine engineNamed(const std::string& word) {
-    if (word == "path")
-        throw UsageError("renderer: the path tracer (design.md §8) is not in this build yet; expected " +
-                         nameChoices(kEngineNames));
-    return named(kEngineNames, word, "renderer");
-}
+Engine engineNamed(const std::string& word) { return named(kEngineNames, word, "renderer"); }
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include "python/gl_session.h"
 #include "raster/offscreen.h"
 #include "raster/raster_renderer.h"
+#include "trace/path_render.h"
 #include "trace/trace_image.h"
 #include "trace/trace_scene.h"
 #include "util/input_error.h"
@@ -46,7 +47,9 @@ void validate(const RenderRequest& r) {
         throw UsageError("size: each side must be 1..16384 pixels, got " + std::to_string(r.width) + "x" +
                          std::to_string(r.height));
     const int k = int(std::lround(std::sqrt(double(std::max(r.spp, 0)))));
-    if (r.spp < 1 || r.spp > 64 || k * k != r.spp)
+    if (r.engine == Engine::Path && (r.spp < 1 || r.spp > 1 << 20))
+        throw UsageError("spp: the path tracer takes 1 to 1048576 samples per pixel, got " + std::to_string(r.spp));
+    if (r.engine != Engine::Path && (r.spp < 1 || r.spp > 64 || k * k != r.spp))
         throw UsageError("spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " +
                          std::to_string(r.spp));
     if (r.depth && (*r.depth < 0 || *r.depth > 64))
@@ -83,7 +86,12 @@ ImageData Renderer::render(const Scene& scene, const RenderRequest& request) {
     validate(request);
     std::lock_guard<std::mutex> lock(mutex_);
     BusyScope busy(busy_);
-    return request.engine == Engine::Raster ? rasterize(scene, request) : trace(scene, request);
+    switch (request.engine) {
+        case Engine::Raster: return rasterize(scene, request);
+        case Engine::Path: return pathTrace(scene, request);
+        case Engine::Trace: break;
+    }
+    return trace(scene, request);
 }
 
 ImageData Renderer::rasterize(const Scene& scene, const RenderRequest& request) {
@@ -140,6 +148,30 @@ ImageData Renderer::trace(const Scene& scene, const RenderRequest& request) {
     out.coverage = std::move(traced.coverage);
     out.encoding = request.encoding;
     out.source = "trace";
+    return out;
+}
+
+// The path tracer as `shadelab render --renderer path` runs it (same settings, same bytes).
+ImageData Renderer::pathTrace(const Scene& scene, const RenderRequest& request) {
+    trace::PathSettings s;
+    s.width = request.width;
+    s.height = request.height;
+    s.spp = request.spp;
+    s.threads = request.threads;
+    s.maxDepth = request.depth.value_or(scene.maxDepth);
+    s.coverage = request.coverage;
+    Clock::time_point t0 = Clock::now();
+    trace::PathOutput traced =
+        trace::pathTraceImage(std::make_shared<const trace::TraceScene>(scene, bvh_.get(scene)), s);
+    ImageData out;
+    out.drawMs = msSince(t0);
+    t0 = Clock::now();
+    out.pixels = toImage8(traced.color, request.encoding);
+    out.readMs = msSince(t0);
+    out.linear = std::move(traced.color);
+    out.coverage = std::move(traced.coverage);
+    out.encoding = request.encoding;
+    out.source = "path";
     return out;
 }
 

@@ -25,18 +25,19 @@ namespace shadelab::python {
 
 class GlSession;
 
-enum class Engine { Raster, Trace };
+enum class Engine { Raster, Trace, Path };
 
-// The words of render(renderer=...). The path tracer (design.md §8) joins when it lands.
+// The words of render(renderer=...), as the binary's --renderer.
 inline constexpr EnumName<Engine> kEngineNames[] = {
     {Engine::Raster, "raster"},
     {Engine::Trace, "trace"},
+    {Engine::Path, "path"},
 };
 
 struct RenderRequest {
     int width = 1280, height = 720;  // pixels, 1..16384 each (the binary's --size)
     Engine engine = Engine::Raster;
-    int spp = 1;                         // a perfect square k² from 1 to 64, both renderers
+    int spp = 1;                         // a perfect square k² from 1 to 64 (raster, trace); path: 1..1048576
     Encoding encoding = Encoding::Srgb;  // of the 8-bit pixels; the linear floats are kept either way
     std::optional<int> depth;            // tracer's secondary-ray depth; unset: the scene's maxDepth
     int threads = 0;                     // tracer workers; 0 = every core
@@ -70,6 +71,7 @@ private:
     std::shared_ptr<GlSession> session();  // under mutex_
     ImageData rasterize(const Scene& scene, const RenderRequest& request);
     ImageData trace(const Scene& scene, const RenderRequest& request);
+    ImageData pathTrace(const Scene& scene, const RenderRequest& request);
 
     std::mutex mutex_;
     gl::GlBackend backend_;

@@ -34,6 +34,7 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform3fv(p.uniform("u_md"), 1, glm::value_ptr(c.md));
     glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(c.ms));
     glUniform1f(p.uniform("u_s"), c.s);
+    glUniform3fv(p.uniform("u_emission"), 1, glm::value_ptr(m.emission));
     glUniform1ui(p.uniform("u_objectId"), objectId);
     glUniform3fv(p.uniform("u_kr"), 1, glm::value_ptr(m.kr));  // planes' mirrors and objects' cubes
     // Base-colour texture (mesh.frag): F0 = u_ms + u_msTex·(tex − 1) under pbr, as the tracer's local().

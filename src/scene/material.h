@@ -27,6 +27,8 @@ struct Material {
     glm::vec3 baseColor{0.7f};  // pbr: base colour, linear RGB in [0, 1] (= md by default)
     float metallic = 0.0f;      // pbr: [0, 1], 0 dielectric (F0 = 0.04), 1 metal (F0 = baseColor)
     float roughness = 0.4925f;  // pbr: perceptual roughness in [0, 1], α = roughness²; ≈ s = 32's equivalent
+    glm::vec3 emission{0.0f};   // emitted radiance, linear RGB, >= 0, from both sides: an area light under the
+                                // path tracer; the other renderers add it to the surface's colour (design.md §8)
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
     // Phong (docs/gltf-import.md). Imported only; a scene file cannot set it.
     TextureBinding baseColorTexture;
@@ -69,9 +71,10 @@ struct MaterialOverride {
     std::optional<float> ior;
     std::optional<glm::vec3> baseColor;
     std::optional<float> metallic, roughness;
+    std::optional<glm::vec3> emission;
 
     bool empty() const {
-        return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness;
+        return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission;
     }
     void applyTo(Material& m) const {
         if (ma) m.ma = *ma;
@@ -84,6 +87,7 @@ struct MaterialOverride {
         if (baseColor) m.baseColor = *baseColor;
         if (metallic) m.metallic = *metallic;
         if (roughness) m.roughness = *roughness;
+        if (emission) m.emission = *emission;
         const bool phong = ma || md || ms || s, pbr = baseColor || metallic || roughness;
         if (phong && !pbr) {
             if (md) m.baseColor = *md;

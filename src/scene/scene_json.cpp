@@ -34,7 +34,7 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 // ---- 1. Loading materials, camera, lights --------------------------------------------------------------
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness"});
+    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "emission"});
     return parseMaterialOverride(n);
 }
 
@@ -198,6 +198,7 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("baseColor")) m.baseColor = f->unitRgb();
     if (auto f = n.find("metallic")) m.metallic = f->inRange(0.0f, 1.0f, false, false);
     if (auto f = n.find("roughness")) m.roughness = f->inRange(0.0f, 1.0f, false, false);
+    if (auto f = n.find("emission")) m.emission = f->rgb();
     return m;
 }
 
@@ -299,7 +300,7 @@ double exact(float f) {
 OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
 
 OJson materialJson(const Material& m) {
-    return {{"ma", vec(m.ma)},
+    OJson j = {{"ma", vec(m.ma)},
             {"md", vec(m.md)},
             {"ms", vec(m.ms)},
             {"s", exact(m.s)},
@@ -309,6 +310,8 @@ OJson materialJson(const Material& m) {
             {"baseColor", vec(m.baseColor)},
             {"metallic", exact(m.metallic)},
             {"roughness", exact(m.roughness)}};
+    if (m.emission != glm::vec3(0.0f)) j["emission"] = vec(m.emission);  // written only for emitters
+    return j;
 }
 
 OJson overrideJson(const MaterialOverride& m) {
@@ -323,6 +326,7 @@ OJson overrideJson(const MaterialOverride& m) {
     if (m.baseColor) j["baseColor"] = vec(*m.baseColor);
     if (m.metallic) j["metallic"] = exact(*m.metallic);
     if (m.roughness) j["roughness"] = exact(*m.roughness);
+    if (m.emission) j["emission"] = vec(*m.emission);
     return j;
 }
 

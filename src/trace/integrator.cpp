@@ -263,10 +263,9 @@ glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::ve
     return E;
 }
 
-glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected) const {
+shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::vec3 V, glm::vec2* dfgOut) const {
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
-    const glm::vec3 V = -ray.dir;
     shading::SurfaceParams params =
         shading::surfaceParams(model_, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
     const bool pbr = model_ == shading::SL_MODEL_PBR;
@@ -280,6 +279,16 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     if (pbr && (sc.energyCompensation || env_.lightsPbr()))
         dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), s.roughness);
     if (pbr && sc.energyCompensation) params.specScale = shading::energyCompensation(params.ms, dfg);
+    if (dfgOut) *dfgOut = dfg;
+    return params;
+}
+
+glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected) const {
+    const Scene& sc = scene_.scene();
+    const Material& m = *s.material;
+    const glm::vec3 V = -ray.dir;
+    glm::vec2 dfg(0.0f);
+    const shading::SurfaceParams params = shadingParams(s, V, &dfg);
     // The environment replaces the constant ambient of pbr surfaces (design.md §8: what global light replaces).
     glm::vec3 environment(0.0f);
     if (env_.lightsPbr() && sc.terms.ambient) {
@@ -311,7 +320,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         I = first == 0 ? batch : I + batch;
         first += count;
     } while (first < sc.lights.size());
-    return env_.lightsPbr() ? I + environment : I;
+    // An emitter's own light (design.md §8), as surface.glsl adds u_emission.
+    return (env_.lightsPbr() ? I + environment : I) + m.emission;
 }
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,

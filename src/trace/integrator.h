@@ -3,6 +3,7 @@
 // renderer (progressive_trace.h) calls it per sample.
 #pragma once
 
+#include "shading/local_illumination.h"
 #include "trace/environment_light.h"
 #include "trace/ray.h"
 #include "trace/trace_scene.h"
@@ -81,6 +82,11 @@ public:
     // gets the split-sum environment light in place of Ia·ma; its specular part reads `reflected` (the
     // radiance the reflected ray brought back from an object) when given, else the prefiltered lookup.
     glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected = nullptr) const;
+
+    // The coefficients shadeLight reads at `s` seen from unit direction V (shading::surfaceParams with the
+    // base-colour texture and pbr's energy compensation applied); `dfg`, when given, receives pbr's DFG
+    // table value when the scene reads it (else 0). The path tracer's BSDF reads the same.
+    shading::SurfaceParams shadingParams(const Surface& s, glm::vec3 V, glm::vec2* dfg = nullptr) const;
 
     const EnvironmentLight& environment() const { return env_; }
 

@@ -3,6 +3,7 @@
 
 #include "scene/view.h"
 #include "trace/integrator.h"
+#include "trace/tile_renderer.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -10,16 +11,6 @@
 #include <mutex>
 
 namespace shadelab::trace {
-namespace {
-
-// shading::cameraRayDirection's D = forward + x·right + y·up per pixel step of `v`.
-PixelFootprint pixelFootprint(const ViewSetup& v) {
-    const float step = 2.0f * v.tanHalfFovY / float(v.height);
-    return {v.forward, step * v.right, -step * v.up};
-}
-
-}  // namespace
-
 struct ProgressiveTrace::Job {
     Job(std::shared_ptr<const TraceScene> s, const TraceSettings& st)
         : scene(std::move(s)),

@@ -16,6 +16,11 @@ std::vector<Tile> makeTiles(int width, int height, int tileSize) {
     return tiles;
 }
 
+PixelFootprint pixelFootprint(const ViewSetup& v) {
+    const float step = 2.0f * v.tanHalfFovY / float(v.height);
+    return {v.forward, step * v.right, -step * v.up};
+}
+
 Ray sampleRay(const ViewSetup& v, int k, int i, int j, int a, int b) {
     const float px = float(k * i + a) + 0.5f;
     const float py = float(k * j + b) + 0.5f;

@@ -32,6 +32,10 @@ std::vector<Tile> makeTiles(int width, int height, int tileSize);
 // sampleView must be makeViewSetup(scene, k·W, k·H).
 Ray sampleRay(const ViewSetup& sampleView, int k, int i, int j, int a, int b);
 
+// shading::cameraRayDirection's D = forward + x·right + y·up per pixel step of `v`: the texture footprint
+// of `v`'s camera rays (WhittedIntegrator::setPixelFootprint).
+PixelFootprint pixelFootprint(const ViewSetup& v);
+
 // Renders one tile. Colour: the k² samples summed in row order (b outer, a inner) from 0, then divided by
 // k². Coverage: the id seen by the centre-most sample (a, b) = (k/2, k/2), which for odd k is the pixel
 // centre and for even k the sample just below and right of it. Returns false, with `out` incomplete, when

@@ -81,8 +81,8 @@ def test_coverage_and_pickle(scene):
     ({"size": (0, 10)}, r"^size: each side must be 1\.\.16384 pixels, got 0x10$"),
     ({"size": "64by64"}, r"^size: expected WxH"),
     ({"spp": 2}, r"^spp: expected a perfect square from 1 to 64"),
-    ({"renderer": "path"}, r"^renderer: the path tracer .* is not in this build yet"),
-    ({"renderer": "photon"}, r"^renderer: unknown value 'photon'; expected raster or trace$"),
+    ({"renderer": "path", "spp": 0}, r"^spp: the path tracer takes 1 to 1048576 samples per pixel, got 0$"),
+    ({"renderer": "photon"}, r"^renderer: unknown value 'photon'; expected raster, trace or path$"),
     ({"encoding": "gamma"}, r"^encoding: unknown value 'gamma'; expected srgb or linear$"),
     ({"depth": 65, "renderer": "trace"}, r"^depth: must be in \[0, 64\], got 65$"),
 ])

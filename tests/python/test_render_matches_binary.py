@@ -37,6 +37,15 @@ def test_options_equal_the_binary_flags(renderer, binary, out_dir, source_dir):
         assert shadelab.render(scene, SIZE, renderer=renderer, depth=1, threads=2).to_png() == expected
 
 
+def test_path_tracer_equals_the_binary(binary, out_dir, source_dir):
+    # The path tracer is deterministic: any sample count (not only squares), any thread count, the same bytes.
+    scene = source_dir / "assets" / "scenes" / "local-vs-global.json"
+    expected = binary_png(binary, out_dir, scene, "path", "--spp", "3", "--depth", "2", "--threads", "1")
+    image = shadelab.render(scene, SIZE, renderer="path", spp=3, depth=2, threads=2)
+    image.save(out_dir / "python-path.png")
+    assert image.to_png() == expected, f"see {out_dir}"
+
+
 def test_edits_equal_the_binary_on_the_edited_file(binary, out_dir, source_dir):
     scene = shadelab.Scene.load(source_dir / "assets" / "scenes" / "default.json")
     scene.model = "blinn-phong"
