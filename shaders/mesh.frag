@@ -1,7 +1,8 @@
 // Triangle meshes: interpolated normal, renormalised in shadeLight, flipped to face the viewer by winding;
 // with SL_MATERIAL_MAPS (scenes with a textured or non-opaque part; RasterRenderer::programsFor), the
 // material's glTF maps (base colour, metallic-roughness, normal, occlusion) and its alpha mode. Its value
-// has bit 1 << k set when some part of the scene has map k, and bit 16 for a non-opaque alpha mode: the code
+// has bit 1 << k set when some part of the scene has map k (k = 4, emissive: bit 32), and bit 16 for a
+// non-opaque alpha mode: the code
 // of maps no part has is left out, since llvmpipe's compile time grows with every inlined sampler.
 #include "surface.glsl"
 #ifdef SL_MATERIAL_MAPS
@@ -19,7 +20,7 @@ in vec4 v2f_tangent;
 
 #ifdef SL_MATERIAL_MAPS
 // The material's textures (src/raster/mesh_textures.h), map 0 base colour, 1 metallic-roughness, 2 normal,
-// 3 occlusion: each mip chain as RGBA32F levels, filtered by hand in texture_sample.glsl exactly as the tracer
+// 3 occlusion, 4 emissive: each mip chain as RGBA32F levels, filtered by hand in texture_sample.glsl exactly as the tracer
 // filters it. u_tex[map]: x the level count (0: no texture), y, z the wrap modes of u and v, w the flags
 // 1 mag bilinear, 2 min bilinear, 4 mipmaps, 8 linear between levels. u_texMatrix[map]: KHR_texture_transform's
 // linear part (texTransform); u_texOffset[map]: xy its offset, z the TEXCOORD set (0 or 1), w the strength
@@ -28,9 +29,10 @@ uniform sampler2D t_baseColor;
 uniform sampler2D t_metalRough;
 uniform sampler2D t_normal;
 uniform sampler2D t_occlusion;
-uniform ivec4 u_tex[4];
-uniform vec4 u_texMatrix[4];
-uniform vec4 u_texOffset[4];
+uniform sampler2D t_emissive;
+uniform ivec4 u_tex[5];
+uniform vec4 u_texMatrix[5];
+uniform vec4 u_texOffset[5];
 uniform vec3 u_baseColor;  // pbr base colour factor: the metallic-roughness map re-derives coefficients from it
 uniform vec4 u_mapFactors;  // x metallic, y roughness (factors), z 1 when Phong's ms is normalised
 uniform vec4 u_alpha;       // x the base colour factor's alpha, y the MASK cutoff, z alphaMode (0 opaque, 1 mask, 2 blend)
@@ -39,12 +41,14 @@ vec4 texTexel(int map, int level, int x, int y) {
     if (map == 1) return texelFetch(t_metalRough, ivec2(x, y), level);
     if (map == 2) return texelFetch(t_normal, ivec2(x, y), level);
     if (map == 3) return texelFetch(t_occlusion, ivec2(x, y), level);
+    if (map == 4) return texelFetch(t_emissive, ivec2(x, y), level);
     return texelFetch(t_baseColor, ivec2(x, y), level);
 }
 ivec2 texSize(int map, int level) {
     if (map == 1) return textureSize(t_metalRough, level);
     if (map == 2) return textureSize(t_normal, level);
     if (map == 3) return textureSize(t_occlusion, level);
+    if (map == 4) return textureSize(t_emissive, level);
     return textureSize(t_baseColor, level);
 }
 int texWidth(int map, int level) { return texSize(map, level).x; }
@@ -99,6 +103,9 @@ void main() {
 #endif
 #if (SL_MATERIAL_MAPS & 8) != 0
     if (u_tex[3].x > 0) s_ao = mapOcclusion(u_texOffset[3].w, sampleMap(3));
+#endif
+#if (SL_MATERIAL_MAPS & 32) != 0
+    if (u_tex[4].x > 0) s_emissive = sampleMap(4).rgb;
 #endif
 #else
     float alpha = 1.0f;

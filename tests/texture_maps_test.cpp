@@ -22,7 +22,7 @@ namespace {
 
 const char* const kAssets[] = {"uv_checker",        "wrap_modes", "normal_bump", "normal_bump_no_tangents",
                                "texture_transform", "alpha_mask", "alpha_blend", "second_uv",
-                               "metal_rough"};
+                               "metal_rough",       "emissive"};
 
 // The asset head-on from 3.2 units (its quads span [-1, 1]), lit from the upper left, with the stage's ambient.
 Scene assetScene(const std::string& name, ShadingModel model = ShadingModel::Phong) {
@@ -146,6 +146,21 @@ TEST_F(TextureMaps, MetallicRoughnessAndOcclusionDroppedFail) {
         part(noAo, 0).occlusionTexture = {};
         EXPECT_FALSE(gate(scene, noAo, "maps_occlusion_dropped" + tag).pass);
     }
+}
+
+TEST_F(TextureMaps, EmissiveTextureDroppedOrNotDecodedFails) {
+    const Scene scene = assetScene("emissive");
+    ASSERT_TRUE(part(scene, 0).emissiveTexture);
+    EXPECT_TRUE(part(scene, 0).emissiveTexture.texture->srgb);
+    Scene dropped = scene;
+    part(dropped, 0).emissiveTexture = {};
+    EXPECT_FALSE(gate(scene, dropped, "maps_emissive_dropped").pass);
+    Scene raw = scene;
+    part(raw, 0).emissiveTexture = mapped(part(scene, 0).emissiveTexture, [](glm::vec4 v) {
+        auto enc = [](float c) { return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; };
+        return glm::vec4(enc(v.r), enc(v.g), enc(v.b), v.a);
+    });
+    EXPECT_FALSE(gate(scene, raw, "maps_emissive_srgb_skipped").pass);
 }
 
 // assimp-testmodels' BoxTexcoords (base colour on TEXCOORD_0, the same image as metallic-roughness on

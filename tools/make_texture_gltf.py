@@ -11,6 +11,7 @@ buffer and PNG images embedded as data: URIs. Every case the texture code handle
     second_uv.gltf            a quad whose base colour reads TEXCOORD_1, and whose occlusion reads TEXCOORD_0
                               with a KHR_texture_transform texCoord override to 1
     metal_rough.gltf          a quad with metallic-roughness stripes (B metal, G rough) and occlusion (strength 0.8)
+    emissive.gltf             a dark quad whose emissive texture (sRGB) times emissiveFactor glows in a ring
 Deterministic: the same bytes on every run (tests/CMakeLists.txt's texture_assets_reproducible compares them
 with assets/models/textures/). Regenerate with
     /usr/bin/python3 tools/make_texture_gltf.py --output assets/models/textures
@@ -292,13 +293,23 @@ def metal_rough():
     return d
 
 
+def emissive():
+    d = Doc("emissive.gltf")
+    t = d.texture(cutout(), "glow", LINEAR)
+    m = d.material({"name": "glowing", "emissiveTexture": {"index": t}, "emissiveFactor": [1.0, 0.8, 0.5],
+                    "pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.1, 0.1, 1.0], "metallicFactor": 0.0,
+                                             "roughnessFactor": 0.5}})
+    d.mesh(*quad(), m, "quad")
+    return d
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--output", required=True, help="folder to write the .gltf files into (created)")
     args = ap.parse_args()
     os.makedirs(args.output, exist_ok=True)
     for doc in [uv_checker(), wrap_modes(), normal_bump(True), normal_bump(False), texture_transform(),
-                alpha("MASK"), alpha("BLEND"), second_uv(), metal_rough()]:
+                alpha("MASK"), alpha("BLEND"), second_uv(), metal_rough(), emissive()]:
         doc.write(args.output)
 
 

@@ -59,6 +59,7 @@ inline constexpr GLuint kIblDfgUnit = 5;      // the DFG table
 inline constexpr GLuint kBaseColorUnit = 6;   // a mesh part's material maps (MeshTextures): base colour,
 inline constexpr GLuint kMetalRoughUnit = 7;  // metallic-roughness,
 inline constexpr GLuint kNormalMapUnit = 8;   // normal
-inline constexpr GLuint kOcclusionUnit = 9;   // and occlusion
+inline constexpr GLuint kOcclusionUnit = 9;   // occlusion
+inline constexpr GLuint kEmissiveUnit = 10;   // and emissive
 
 }  // namespace shadelab::raster

@@ -43,12 +43,12 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     // The material maps (mesh.frag's u_tex arrays; spheres and planes have none of these uniforms).
     const GLint texLoc = p.uniform("u_tex");
     if (texLoc < 0) return;
-    const TextureBinding* maps[4] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
-                                     &m.occlusionTexture};
-    const GLuint units[4] = {kBaseColorUnit, kMetalRoughUnit, kNormalMapUnit, kOcclusionUnit};
-    glm::ivec4 info[4];
-    glm::vec4 matrix[4], offset[4];
-    for (int k = 0; k < 4; ++k) {
+    const TextureBinding* maps[5] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
+                                     &m.occlusionTexture, &m.emissiveTexture};
+    const GLuint units[5] = {kBaseColorUnit, kMetalRoughUnit, kNormalMapUnit, kOcclusionUnit, kEmissiveUnit};
+    glm::ivec4 info[5];
+    glm::vec4 matrix[5], offset[5];
+    for (int k = 0; k < 5; ++k) {
         const TextureBinding& t = *maps[k];
         info[k] = glm::ivec4(0);
         matrix[k] = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
@@ -63,9 +63,9 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
         glBindTexture(GL_TEXTURE_2D, textures_.texture(t.texture));
     }
     glActiveTexture(GL_TEXTURE0);
-    glUniform4iv(texLoc, 4, glm::value_ptr(info[0]));
-    glUniform4fv(p.uniform("u_texMatrix"), 4, glm::value_ptr(matrix[0]));
-    glUniform4fv(p.uniform("u_texOffset"), 4, glm::value_ptr(offset[0]));
+    glUniform4iv(texLoc, 5, glm::value_ptr(info[0]));
+    glUniform4fv(p.uniform("u_texMatrix"), 5, glm::value_ptr(matrix[0]));
+    glUniform4fv(p.uniform("u_texOffset"), 5, glm::value_ptr(offset[0]));
     glUniform3fv(p.uniform("u_baseColor"), 1, glm::value_ptr(m.baseColor));
     const glm::vec4 factors(m.metallic, m.roughness, normalized ? 1.0f : 0.0f, 0.0f);
     const glm::vec4 alpha(m.alpha, m.alphaCutoff, float(int(m.alphaMode)), 0.0f);
@@ -100,6 +100,7 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
         glUniform1i(p->uniform("t_metalRough"), GLint(kMetalRoughUnit));
         glUniform1i(p->uniform("t_normal"), GLint(kNormalMapUnit));
         glUniform1i(p->uniform("t_occlusion"), GLint(kOcclusionUnit));
+        glUniform1i(p->uniform("t_emissive"), GLint(kEmissiveUnit));
     }
     glUseProgram(set.planeMirror.id());
     glUniform1i(set.planeMirror.uniform("t_reflection"), GLint(kReflectionUnit));

@@ -256,8 +256,8 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
             glBufferSubData(GL_ARRAY_BUFFER, GLintptr(tangentOffset + vBase * sizeof(glm::vec4)),
                             GLsizeiptr(n * sizeof(glm::vec4)), hasTangents ? g.tangents.data() : zeros4.data());
             const Material& mat = m.parts[pi].material;
-            for (const TextureBinding* b :
-                 {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture, &mat.occlusionTexture})
+            for (const TextureBinding* b : {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture,
+                                            &mat.occlusionTexture, &mat.emissiveTexture})
                 if (b->texture) textures.insert(b->texture.get());
             rebased.resize(g.indices.size());
             for (size_t k = 0; k < g.indices.size(); ++k) rebased[k] = g.indices[k] + uint32_t(vBase);
@@ -372,13 +372,13 @@ void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCo
     const FrameBlock frame = makeFrameBlock(scene, view, band, jitter);
     if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
-    int maps = 0;  // mesh.frag's SL_MATERIAL_MAPS: bit k for map k some part has, 16 for a non-opaque alpha mode
+    int maps = 0;  // mesh.frag's SL_MATERIAL_MAPS: bit k for map k some part has (emissive 32), 16 for alpha
     for (const Mesh& m : scene.meshes)
         for (const MeshPart& p : m.parts) {
             const Material& mat = p.material;
             maps |= (mat.baseColorTexture ? 1 : 0) | (mat.metallicRoughnessTexture ? 2 : 0) |
                     (mat.normalTexture ? 4 : 0) | (mat.occlusionTexture ? 8 : 0) |
-                    (mat.alphaMode != AlphaMode::Opaque ? 16 : 0);
+                    (mat.alphaMode != AlphaMode::Opaque ? 16 : 0) | (mat.emissiveTexture ? 32 : 0);
         }
     const ColorPrograms& programs = programsFor(makeShaderVariant(frame, &shadows_.block()), maps);
 

@@ -147,8 +147,7 @@ public:
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
-        // Every material map is decoded and rendered (gltf_textures.cpp) except emissive.
-        size_t emissive = 0;
+        // Every material map is decoded and rendered (gltf_textures.cpp).
         for (size_t i = 0; i < model.materials.size(); ++i) {
             const tinygltf::Material& gm = model.materials[i];
             const std::string place = indexed("materials", i);
@@ -173,9 +172,9 @@ public:
             m.occlusionTexture = bind(gm.occlusionTexture.index, gm.occlusionTexture.texCoord,
                                       gm.occlusionTexture.extensions, false, ".occlusionTexture");
             m.occlusionTexture.strength = finiteClamp(gm.occlusionTexture.strength, 0.0f, 1.0f, 1.0f);
-            if (gm.emissiveTexture.index >= 0) ++emissive;
+            m.emissiveTexture = bind(gm.emissiveTexture.index, gm.emissiveTexture.texCoord,
+                                     gm.emissiveTexture.extensions, true, ".emissiveTexture");
         }
-        if (emissive > 0) warnOnce(std::to_string(emissive) + " material(s) have emissive textures; those are ignored");
         if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
         for (const std::string& ext : model.extensionsRequired) {
             if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")

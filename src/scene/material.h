@@ -44,6 +44,9 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alpha = 1.0f;        // baseColorFactor[3], [0, 1]
     float alphaCutoff = 0.5f;  // MASK only, >= 0
+    // glTF emissiveTexture (linear RGB after sRGB decoding): multiplies `emission` in the rasterizer and the
+    // Whitted tracer (docs/gltf-import.md). Imported only.
+    TextureBinding emissiveTexture;
 };
 
 inline constexpr float kMaxShininess = 10000.0f;

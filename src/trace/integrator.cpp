@@ -227,6 +227,7 @@ Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit, int depth) 
                     shading::mapNormal(N, T, mapTexel(ray, hit, depth, m.normalTexture), m.normalTexture.strength);
                 s.N = back ? -n : n;
             }
+            if (m.emissiveTexture) s.emissive = glm::vec3(mapTexel(ray, hit, depth, m.emissiveTexture));
             if (m.occlusionTexture)
                 s.ao =
                     shading::mapOcclusion(m.occlusionTexture.strength, mapTexel(ray, hit, depth, m.occlusionTexture));
@@ -321,7 +322,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         first += count;
     } while (first < sc.lights.size());
     // An emitter's own light (design.md §8), as surface.glsl adds u_emission.
-    return (env_.lightsPbr() ? I + environment : I) + m.emission;
+    return (env_.lightsPbr() ? I + environment : I) + m.emission * s.emissive;
 }
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,

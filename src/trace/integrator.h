@@ -34,6 +34,7 @@ struct Surface {
     float roughness = 0.0f;  // pbr roughness here: the material's, or the texel's when mapped
     float ao = 1.0f;
     float alpha = 1.0f;
+    glm::vec3 emissive{1.0f};  // the emissive texture's linear RGB here (1 without one): scales emission
 };
 
 // How a primary ray's unnormalised direction D = forward + x·right + y·up changes per pixel step of the
