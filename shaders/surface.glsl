@@ -12,9 +12,20 @@ uniform vec3 u_msTex;  // pbr: metallic·baseColor, so F0 = u_ms + u_msTex·(tex
 // The base-colour texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere). It multiplies md and
 // ma, and under pbr the base colour inside F0 (src/trace/integrator.cpp does the same on the CPU).
 vec3 s_tex = vec3(1.0f);
-vec3 surfaceMs() { return u_ms + u_msTex * (s_tex - 1.0f); }
+// A metallic-roughness texture re-derives ma, ms and s per fragment (material_maps.glsl; mesh.frag sets
+// s_mapped and these); occlusion scales the indirect light by s_ao. Unset, the uniforms are used unchanged.
+bool s_mapped = false;
+vec3 s_ma = vec3(0.0f);
+vec3 s_ms = vec3(0.0f);
+float s_s = 0.0f;
+float s_ao = 1.0f;
 uniform float u_s;
+vec3 surfaceMs() { return s_mapped ? s_ms : u_ms + u_msTex * (s_tex - 1.0f); }
+vec3 surfaceMa() { return s_mapped ? s_ma : u_ma * s_tex; }
+float surfaceS() { return s_mapped ? s_s : u_s; }
 uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
+// The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
+vec3 s_emissive = vec3(1.0f);
 uniform uint u_objectId;
 
 layout(location = 0) out vec4 o_color;
@@ -40,7 +51,7 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
     vec3 sh[9];
     for (int i = 0; i < 9; ++i) sh[i] = u_iblSH[i].xyz;
     vec3 irradiance = u_iblParams.x * iblIrradianceSH(sh, iblRotate(normalize(N), u_iblParams.y, u_iblParams.z));
-    vec3 prefiltered = u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(R, u_iblParams.y, u_iblParams.z), u_s);
+    vec3 prefiltered = u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(R, u_iblParams.y, u_iblParams.z), surfaceS());
 #else
     vec3 irradiance = u_iblRadiance.xyz;
     vec3 prefiltered = u_iblRadiance.xyz;
@@ -57,7 +68,7 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
     // Attenuation (1, 0, 0) divides by exactly 1: skipped, bit for bit the same.
     vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L) : u_lightColor[i].xyz;
-    vec3 c = shadeLightScaled(N, L, V, Il, md, surfaceMs(), u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
+    vec3 c = shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
     c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
@@ -69,7 +80,7 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
 // A pbr surface in an environment (SL_IBL) gets the environment's light in place of Ia·ma.
 vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
 #if SL_IBL || SL_ENERGY_COMPENSATION
-    vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(N, V), u_s);
+    vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(N, V), surfaceS());
 #endif
 #if SL_ENERGY_COMPENSATION
     vec3 specScale = energyCompensation(surfaceMs(), dfg);
@@ -79,7 +90,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
 #if SL_IBL
     vec3 I = vec3(0.0f);
 #else
-    vec3 I = shadeAmbient(u_ambient.xyz, u_ma * s_tex, SL_AMBIENT);
+    vec3 I = shadeAmbient(u_ambient.xyz, surfaceMa() * s_ao, SL_AMBIENT);
 #endif
     // One call per specialised light with literal arguments (the variant's X-macro, unrolled).
 #define SL_LIGHT_TERM(i, isPoint, isAttenuated, kind, mask, layer) I += lightTerm(i, isPoint, isAttenuated, kind, mask, layer, P, N, V, md, specScale);
@@ -91,13 +102,13 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
-        I += shadeLightScaled(N, L, V, Il, md, surfaceMs(), u_s, SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
+        I += shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
     }
 #endif
 #if SL_IBL
-    I += environmentLight(N, V, md, dfg);
+    I += environmentLight(N, V, md, dfg) * s_ao;
 #endif
-    return I + u_emission;
+    return I + u_emission * s_emissive;
 }
 
 // The primary ray through this fragment's pixel centre, exactly as the tracer builds it. When the image is

@@ -54,8 +54,12 @@ inline constexpr GLuint kShadowBinding = 1;
 inline constexpr GLuint kShadowUnit = 1;
 inline constexpr GLuint kReflectionUnit = 2;
 inline constexpr GLuint kEnvironmentUnit = 3;
-inline constexpr GLuint kIblCubeUnit = 4;    // the prefiltered atlas (IblTextures)
-inline constexpr GLuint kIblDfgUnit = 5;     // the DFG table
-inline constexpr GLuint kBaseColorUnit = 6;  // a mesh part's base-colour texture (MeshTextures)
+inline constexpr GLuint kIblCubeUnit = 4;     // the prefiltered atlas (IblTextures)
+inline constexpr GLuint kIblDfgUnit = 5;      // the DFG table
+inline constexpr GLuint kBaseColorUnit = 6;   // a mesh part's material maps (MeshTextures): base colour,
+inline constexpr GLuint kMetalRoughUnit = 7;  // metallic-roughness,
+inline constexpr GLuint kNormalMapUnit = 8;   // normal
+inline constexpr GLuint kOcclusionUnit = 9;   // occlusion
+inline constexpr GLuint kEmissiveUnit = 10;   // and emissive
 
 }  // namespace shadelab::raster

@@ -6,6 +6,7 @@
 #include "scene/coverage.h"
 #include "shading/local_illumination.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -41,24 +42,44 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     // Base-colour texture (mesh.frag): F0 = u_ms + u_msTex·(tex − 1) under pbr, as the tracer's local().
     const glm::vec3 msTex = model == shading::SL_MODEL_PBR ? m.metallic * m.baseColor : glm::vec3(0.0f);
     glUniform3fv(p.uniform("u_msTex"), 1, glm::value_ptr(msTex));
-    const TextureBinding& t = m.baseColorTexture;
-    glm::ivec4 info(0);
-    if (t && !t.texture->levels.empty()) {
-        info = glm::ivec4(int(t.texture->levels.size()), wrapIndex(t.sampler.wrapS), wrapIndex(t.sampler.wrapT),
-                          (t.sampler.magLinear ? 1 : 0) | (t.sampler.minLinear ? 2 : 0) | (t.sampler.mipmaps ? 4 : 0) |
-                              (t.sampler.mipLinear ? 8 : 0));
-        const glm::vec4 uvMatrix = t.uvMatrix();
-        glUniform4fv(p.uniform("u_baseTexMatrix"), 1, glm::value_ptr(uvMatrix));
-        glUniform2f(p.uniform("u_baseTexOffset"), t.offset.x, t.offset.y);
-        glActiveTexture(GL_TEXTURE0 + kBaseColorUnit);
+    // The material maps (mesh.frag's u_tex arrays; spheres and planes have none of these uniforms).
+    const GLint texLoc = p.uniform("u_tex");
+    if (texLoc < 0) return;
+    const TextureBinding* maps[5] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
+                                     &m.occlusionTexture, &m.emissiveTexture};
+    const GLuint units[5] = {kBaseColorUnit, kMetalRoughUnit, kNormalMapUnit, kOcclusionUnit, kEmissiveUnit};
+    glm::ivec4 info[5];
+    glm::vec4 matrix[5], offset[5];
+    for (int k = 0; k < 5; ++k) {
+        const TextureBinding& t = *maps[k];
+        info[k] = glm::ivec4(0);
+        matrix[k] = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
+        offset[k] = glm::vec4(0.0f);
+        if (!t || t.texture->levels.empty()) continue;
+        info[k] = glm::ivec4(int(t.texture->levels.size()), wrapIndex(t.sampler.wrapS), wrapIndex(t.sampler.wrapT),
+                             (t.sampler.magLinear ? 1 : 0) | (t.sampler.minLinear ? 2 : 0) |
+                                 (t.sampler.mipmaps ? 4 : 0) | (t.sampler.mipLinear ? 8 : 0));
+        matrix[k] = t.uvMatrix();
+        offset[k] = glm::vec4(t.offset, t.texCoord == 1 ? 1.0f : 0.0f, t.strength);
+        glActiveTexture(GL_TEXTURE0 + units[k]);
         glBindTexture(GL_TEXTURE_2D, textures_.texture(t.texture));
-        glActiveTexture(GL_TEXTURE0);
     }
-    glUniform4iv(p.uniform("u_baseTex"), 1, glm::value_ptr(info));
+    glActiveTexture(GL_TEXTURE0);
+    glUniform4iv(texLoc, 5, glm::value_ptr(info[0]));
+    glUniform4fv(p.uniform("u_texMatrix"), 5, glm::value_ptr(matrix[0]));
+    glUniform4fv(p.uniform("u_texOffset"), 5, glm::value_ptr(offset[0]));
+    glUniform3fv(p.uniform("u_baseColor"), 1, glm::value_ptr(m.baseColor));
+    const glm::vec4 factors(m.metallic, m.roughness, normalized ? 1.0f : 0.0f, 0.0f);
+    const glm::vec4 alpha(m.alpha, m.alphaCutoff, float(int(m.alphaMode)), 0.0f);
+    glUniform4fv(p.uniform("u_mapFactors"), 1, glm::value_ptr(factors));
+    glUniform4fv(p.uniform("u_alpha"), 1, glm::value_ptr(alpha));
 }
 
-const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant) {
-    const std::string defines = variant.defines();
+const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant, int materialMaps) {
+    // mesh.frag's texture code (SL_MATERIAL_MAPS, the maps the scene's parts use) only where a part needs it:
+    // all of it triples the mesh programs' compile time, which every untextured render would otherwise pay.
+    const std::string defines =
+        variant.defines() + (materialMaps ? "#define SL_MATERIAL_MAPS " + std::to_string(materialMaps) + "\n" : "");
     if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
     if (programs_.size() >= 32) programs_.clear();  // a long viewer session: drop them all, not one by one
     ColorPrograms set;
@@ -78,6 +99,10 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
         glUniform1i(p->uniform("t_iblCube"), GLint(kIblCubeUnit));
         glUniform1i(p->uniform("t_iblDfg"), GLint(kIblDfgUnit));
         glUniform1i(p->uniform("t_baseColor"), GLint(kBaseColorUnit));
+        glUniform1i(p->uniform("t_metalRough"), GLint(kMetalRoughUnit));
+        glUniform1i(p->uniform("t_normal"), GLint(kNormalMapUnit));
+        glUniform1i(p->uniform("t_occlusion"), GLint(kOcclusionUnit));
+        glUniform1i(p->uniform("t_emissive"), GLint(kEmissiveUnit));
     }
     glUseProgram(set.planeMirror.id());
     glUniform1i(set.planeMirror.uniform("t_reflection"), GLint(kReflectionUnit));
@@ -118,7 +143,8 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     glFrontFace(options.mirrored ? GL_CW : GL_CCW);
 
     // Meshes first: they keep early depth testing, and the impostors behind them are rejected cheaply.
-    glDisable(GL_CULL_FACE);  // two-sided lighting: back faces are lit with the flipped normal
+    std::vector<size_t> blended;  // alphaMode BLEND parts, drawn last
+    glDisable(GL_CULL_FACE);      // two-sided lighting: back faces are lit with the flipped normal
     glBindVertexArray(meshVao_.id());
     for (size_t k = 0; k < ranges_.size(); ++k) {
         const DrawRange& r = ranges_[k];
@@ -127,10 +153,11 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             outsideClip(frame.viewProj, r.lo, r.hi))
             continue;
         const Material& m = scene.meshes[r.mesh].parts[r.part].material;
-        const gl::Program& p = objectProgram(programs.mesh, programs.meshEnvironment, -1, int(k), options);
-        setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
-        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
+        if (m.alphaMode == AlphaMode::Blend) {
+            blended.push_back(k);
+            continue;
+        }
+        drawRange(scene, frame, programs, options, k);
     }
 
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
@@ -180,9 +207,35 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         glUniform1f(planeProgram.uniform("u_checkerSize"), c.size);
         glDrawArrays(GL_TRIANGLES, 0, 12);
     }
+
+    // alphaMode BLEND (docs/gltf-import.md): over everything opaque, farthest part first by its bounds'
+    // centre, composited with the fragment's alpha and without depth writes; the coverage id is the part's.
+    if (!blended.empty()) {
+        std::stable_sort(blended.begin(), blended.end(), [&](size_t a, size_t b) {
+            const glm::vec3 ca = 0.5f * (ranges_[a].lo + ranges_[a].hi), cb = 0.5f * (ranges_[b].lo + ranges_[b].hi);
+            return glm::dot(ca - eye, ca - eye) > glm::dot(cb - eye, cb - eye);
+        });
+        glBindVertexArray(meshVao_.id());
+        glEnable(GL_BLEND);  // the coverage attachment is integer: blending leaves it alone
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        for (size_t k : blended) drawRange(scene, frame, programs, options, k);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
     glFrontFace(GL_CCW);
     glBindVertexArray(0);
     glUseProgram(0);
+}
+
+void RasterRenderer::drawRange(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
+                               const PassOptions& options, size_t k) const {
+    const DrawRange& r = ranges_[k];
+    const Material& m = scene.meshes[r.mesh].parts[r.part].material;
+    const gl::Program& p = objectProgram(programs.mesh, programs.meshEnvironment, -1, int(k), options);
+    setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
+    glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
 }
 
 }  // namespace shadelab::raster

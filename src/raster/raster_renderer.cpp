@@ -192,11 +192,14 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
         glBindVertexArray(0);
         return;
     }
-    // Positions, normals and TEXCOORD_0 (three planar arrays; (0, 0) for parts without texture coordinates),
-    // and one index buffer rebased per part.
+    // Positions, normals, TEXCOORD_0, TEXCOORD_1 and tangents (five planar arrays; zeros for parts without
+    // texture coordinates or tangents), and one index buffer rebased per part.
     const size_t uvOffset = vertexCount * 2 * sizeof(glm::vec3);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(uvOffset + vertexCount * sizeof(glm::vec2)), nullptr, GL_STATIC_DRAW);
+    const size_t uv1Offset = uvOffset + vertexCount * sizeof(glm::vec2);
+    const size_t tangentOffset = uv1Offset + vertexCount * sizeof(glm::vec2);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(tangentOffset + vertexCount * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
     std::vector<glm::vec2> zeros;
+    std::vector<glm::vec4> zeros4;
     std::set<const Texture*> textures;
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indexCount * sizeof(uint32_t)), nullptr, GL_STATIC_DRAW);
     size_t vBase = 0, iBase = 0;
@@ -205,17 +208,28 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
         const Mesh& m = scene.meshes[mi];
         for (size_t pi = 0; pi < m.parts.size(); ++pi) {
             const MeshGeometry& g = *m.parts[pi].geometry;
-            size_t bytes = g.positions.size() * sizeof(glm::vec3);
+            const size_t n = g.positions.size();
+            size_t bytes = n * sizeof(glm::vec3);
             glBufferSubData(GL_ARRAY_BUFFER, GLintptr(vBase * sizeof(glm::vec3)), GLsizeiptr(bytes),
                             g.positions.data());
             glBufferSubData(GL_ARRAY_BUFFER, GLintptr((vertexCount + vBase) * sizeof(glm::vec3)), GLsizeiptr(bytes),
                             g.normals.data());
-            const bool hasUv = g.texcoords0.size() == g.positions.size();
-            if (!hasUv) zeros.assign(g.positions.size(), glm::vec2(0.0f));
-            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(uvOffset + vBase * sizeof(glm::vec2)),
-                            GLsizeiptr(g.positions.size() * sizeof(glm::vec2)),
-                            hasUv ? g.texcoords0.data() : zeros.data());
-            if (const auto& t = m.parts[pi].material.baseColorTexture.texture) textures.insert(t.get());
+            auto uvs = [&](const std::vector<glm::vec2>& uv, size_t offset) {
+                const bool has = uv.size() == n;
+                if (!has) zeros.assign(n, glm::vec2(0.0f));
+                glBufferSubData(GL_ARRAY_BUFFER, GLintptr(offset + vBase * sizeof(glm::vec2)),
+                                GLsizeiptr(n * sizeof(glm::vec2)), has ? uv.data() : zeros.data());
+            };
+            uvs(g.texcoords0, uvOffset);
+            uvs(g.texcoords1, uv1Offset);
+            const bool hasTangents = g.tangents.size() == n;
+            if (!hasTangents) zeros4.assign(n, glm::vec4(0.0f));
+            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(tangentOffset + vBase * sizeof(glm::vec4)),
+                            GLsizeiptr(n * sizeof(glm::vec4)), hasTangents ? g.tangents.data() : zeros4.data());
+            const Material& mat = m.parts[pi].material;
+            for (const TextureBinding* b : {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture,
+                                            &mat.occlusionTexture, &mat.emissiveTexture})
+                if (b->texture) textures.insert(b->texture.get());
             rebased.resize(g.indices.size());
             for (size_t k = 0; k < g.indices.size(); ++k) rebased[k] = g.indices[k] + uint32_t(vBase);
             glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(iBase * sizeof(uint32_t)),
@@ -232,6 +246,10 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
                           reinterpret_cast<const void*>(vertexCount * sizeof(glm::vec3)));
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), reinterpret_cast<const void*>(uvOffset));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), reinterpret_cast<const void*>(uv1Offset));
+    glEnableVertexAttribArray(4);
+    glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), reinterpret_cast<const void*>(tangentOffset));
     glBindVertexArray(0);
     textures_.prune(textures);
     gl::checkError("RasterRenderer::uploadMeshes");
@@ -374,8 +392,16 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     const FrameBlock frame = makeFrameBlock(scene, view, band, jitter);
     if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
+    int maps = 0;  // mesh.frag's SL_MATERIAL_MAPS: bit k for map k some part has (emissive 32), 16 for alpha
+    for (const Mesh& m : scene.meshes)
+        for (const MeshPart& p : m.parts) {
+            const Material& mat = p.material;
+            maps |= (mat.baseColorTexture ? 1 : 0) | (mat.metallicRoughnessTexture ? 2 : 0) |
+                    (mat.normalTexture ? 4 : 0) | (mat.occlusionTexture ? 8 : 0) |
+                    (mat.alphaMode != AlphaMode::Opaque ? 16 : 0) | (mat.emissiveTexture ? 32 : 0);
+        }
     const ShaderVariant variant = makeShaderVariant(frame, &shadows_.block());
-    const ColorPrograms& programs = programsFor(variant);
+    const ColorPrograms& programs = programsFor(variant, maps);
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);
@@ -434,7 +460,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
             // Everything the colour pass reads besides the materials (redraw_plan.h): the scene's part, and
             // what this renderer derives from it or holds.
             key = drawKey(scene);
-            key->shared.add(frame).addString(variant.defines()).add(meshGeneration_).add(ibl_.generation());
+            key->shared.add(frame).addString(variant.defines()).add(maps).add(meshGeneration_).add(ibl_.generation());
             key->shared.add(width).add(height).add(shadowKey_.size());
             for (float v : shadowKey_) key->shared.add(v);
             RedrawPlan plan = planRedraw(lastKey_ ? &*lastKey_ : nullptr, *key, kMaxPartialIds);

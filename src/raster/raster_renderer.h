@@ -95,6 +95,9 @@ private:
     void uploadFrame(const FrameBlock& frame) const;
     void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
                     const PassOptions& options) const;
+    // One mesh part (ranges_[k]) with its material, through drawPasses' state.
+    void drawRange(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
+                   const PassOptions& options, size_t k) const;
     void prepareShadows(const Scene& scene, int width, int height);
     void prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs);
     void drawBackdrop(const FrameBlock& frame) const;
@@ -109,7 +112,8 @@ private:
         gl::Program meshEnvironment, sphereEnvironment;  // + kr ⊙ env(R) from the object's cube (SL_ENVIRONMENT)
         gl::Program planeMirror;                         // + kr ⊙ the planar reflection pass (SL_ENVIRONMENT)
     };
-    const ColorPrograms& programsFor(const ShaderVariant& variant);
+    // materialMaps: mesh.frag's SL_MATERIAL_MAPS bits (set in draw() from the scene's parts), 0 for none.
+    const ColorPrograms& programsFor(const ShaderVariant& variant, int materialMaps = 0);
     const gl::ShaderLibrary shaders_;
     std::map<std::string, ColorPrograms> programs_;
     ShadowMaps shadows_;

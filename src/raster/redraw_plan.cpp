@@ -15,16 +15,25 @@ void addTexture(KeyBytes& k, const TextureBinding& t) {
     k.add(static_cast<const void*>(t.texture.get()));
     k.add(t.sampler.wrapS).add(t.sampler.wrapT);
     k.add(t.sampler.magLinear).add(t.sampler.minLinear).add(t.sampler.mipmaps).add(t.sampler.mipLinear);
-    k.add(t.texCoord).add(t.offset).add(t.rotation).add(t.scale);
+    k.add(t.texCoord).add(t.strength).add(t.offset).add(t.rotation).add(t.scale);
 }
 
 }  // namespace
+
+// Every field of Material and TextureBinding: a field left out would let its edit keep a stale image. The
+// sizes below change when a field is added, so the build stops here until the key has it too.
+// (x86-64 sizes; the static_asserts are a reminder, not a portability rule.)
+static_assert(sizeof(TextureBinding) == 56, "a new TextureBinding field: add it to addTexture");
+static_assert(sizeof(Material) == 400, "a new Material field: add it to materialKey");
 
 KeyBytes materialKey(const Material& m) {
     KeyBytes k;
     k.add(m.ma).add(m.md).add(m.ms).add(m.s).add(m.kr).add(m.kt).add(m.ior);
     k.add(m.baseColor).add(m.metallic).add(m.roughness).add(m.emission);
-    addTexture(k, m.baseColorTexture);
+    for (const TextureBinding* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
+                                    &m.occlusionTexture, &m.emissiveTexture})
+        addTexture(k, *t);
+    k.add(m.alphaMode).add(m.alpha).add(m.alphaCutoff);
     return k;
 }
 

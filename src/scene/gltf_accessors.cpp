@@ -277,6 +277,29 @@ void readVec2(const tinygltf::Model& model, int index, const std::string& file, 
     readElements(model, acc, index, elementSize, file, load, out);
 }
 
+void readVec4(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec4>& out) {
+    const tinygltf::Accessor& acc = accessorAt(model, index, file);
+    if (acc.type != TINYGLTF_TYPE_VEC4)
+        throw InputError(file, accessorPlace(index), std::string("expected VEC4, got ") + typeName(acc.type));
+    const int type = acc.componentType;
+    const size_t componentSize = vec3ComponentSize(type);
+    if (componentSize == 0)
+        throw InputError(file, accessorPlace(index),
+                         std::string("expected FLOAT components (or BYTE/SHORT under KHR_mesh_quantization), got ") +
+                             componentName(type));
+    const bool normalized = acc.normalized;
+    auto load = [&](const unsigned char* p, glm::vec4& v) {
+        if (type == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+            std::memcpy(&v, p, sizeof v);
+        } else {
+            v = glm::vec4(loadComponent(p, type, normalized), loadComponent(p + componentSize, type, normalized),
+                          loadComponent(p + 2 * componentSize, type, normalized),
+                          loadComponent(p + 3 * componentSize, type, normalized));
+        }
+    };
+    readElements(model, acc, index, 4 * componentSize, file, load, out);
+}
+
 std::string bufferViewBytes(const tinygltf::Model& model, int view, const std::string& file, const std::string& where) {
     if (view < 0 || size_t(view) >= model.bufferViews.size())
         throw InputError(file, where,

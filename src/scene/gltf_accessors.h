@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ void readVec3(const tinygltf::Model& model, int index, const std::string& file, 
 
 // Reads accessor `index` as VEC2 (TEXCOORD_n): FLOAT, or normalized UNSIGNED_BYTE / UNSIGNED_SHORT.
 void readVec2(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec2>& out);
+
+// Reads accessor `index` as VEC4 (TANGENT): FLOAT, or BYTE/SHORT as readVec3 reads them.
+void readVec4(const tinygltf::Model& model, int index, const std::string& file, std::vector<glm::vec4>& out);
 
 // The bytes of buffer view `view`, proven to lie inside its buffer (an image's encoded bytes). `where`
 // names the referrer in errors, e.g. "images[0]".

@@ -12,6 +12,7 @@
 #include "scene/gltf_materials.h"
 #include "scene/gltf_textures.h"
 #include "scene/gltf_values.h"
+#include "scene/mesh_tangents.h"
 #include "util/input_error.h"
 
 #include <tiny_gltf.h>
@@ -146,26 +147,34 @@ public:
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
-        // Base-colour textures are decoded and rendered (gltf_textures.cpp); the other maps are not yet.
-        size_t otherMaps = 0;
+        // Every material map is decoded and rendered (gltf_textures.cpp).
         for (size_t i = 0; i < model.materials.size(); ++i) {
             const tinygltf::Material& gm = model.materials[i];
-            materials_.push_back(materialFrom(gm, indexed("materials", i), out_.warnings));
-            const tinygltf::TextureInfo& base = gm.pbrMetallicRoughness.baseColorTexture;
-            if (base.index >= 0) {
-                const auto transform = base.extensions.find("KHR_texture_transform");
-                materials_.back().baseColorTexture = textures_.binding(
-                    base.index, base.texCoord, true, indexed("materials", i) + ".pbrMetallicRoughness.baseColorTexture",
-                    transform == base.extensions.end() ? nullptr : &transform->second);
-            }
-            if (gm.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 || gm.normalTexture.index >= 0 ||
-                gm.occlusionTexture.index >= 0 || gm.emissiveTexture.index >= 0)
-                ++otherMaps;
+            const std::string place = indexed("materials", i);
+            materials_.push_back(materialFrom(gm, place, out_.warnings));
+            Material& m = materials_.back();
+            auto bind = [&](int index, int texCoord, const tinygltf::ExtensionMap& ext, bool srgb,
+                            const std::string& where) {
+                const auto transform = ext.find("KHR_texture_transform");
+                return index < 0 ? TextureBinding{}
+                                 : textures_.binding(index, texCoord, srgb, place + where,
+                                                     transform == ext.end() ? nullptr : &transform->second);
+            };
+            const auto& pbr = gm.pbrMetallicRoughness;
+            m.baseColorTexture = bind(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                      pbr.baseColorTexture.extensions, true, ".pbrMetallicRoughness.baseColorTexture");
+            m.metallicRoughnessTexture =
+                bind(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                     pbr.metallicRoughnessTexture.extensions, false, ".pbrMetallicRoughness.metallicRoughnessTexture");
+            m.normalTexture = bind(gm.normalTexture.index, gm.normalTexture.texCoord, gm.normalTexture.extensions,
+                                   false, ".normalTexture");
+            m.normalTexture.strength = finiteClamp(gm.normalTexture.scale, -1e6f, 1e6f, 1.0f);
+            m.occlusionTexture = bind(gm.occlusionTexture.index, gm.occlusionTexture.texCoord,
+                                      gm.occlusionTexture.extensions, false, ".occlusionTexture");
+            m.occlusionTexture.strength = finiteClamp(gm.occlusionTexture.strength, 0.0f, 1.0f, 1.0f);
+            m.emissiveTexture = bind(gm.emissiveTexture.index, gm.emissiveTexture.texCoord,
+                                     gm.emissiveTexture.extensions, true, ".emissiveTexture");
         }
-        if (otherMaps > 0)
-            warnOnce(std::to_string(otherMaps) +
-                     " material(s) have metallic-roughness, normal, occlusion or emissive textures; those are ignored "
-                     "(base colour textures are rendered)");
         if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
         for (const std::string& ext : model.extensionsRequired) {
             if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
@@ -358,30 +367,68 @@ private:
             }
         }
 
-        // TEXCOORD_0: the count must match; a non-finite coordinate becomes 0 with a warning.
-        const auto uv = prim.attributes.find("TEXCOORD_0");
-        if (uv != prim.attributes.end()) {
-            const size_t count = gltf::accessorCount(model_, uv->second, file_, where + ".attributes.TEXCOORD_0");
-            if (count != vertexCount)
-                throw InputError(file_, indexed("accessors", size_t(uv->second)),
-                                 "TEXCOORD_0 count " + std::to_string(count) + " differs from POSITION count " +
-                                     std::to_string(vertexCount));
-            gltf::readVec2(model_, uv->second, file_, geo.texcoords0);
-            size_t nonFinite = 0;
-            for (glm::vec2& t : geo.texcoords0)
-                if (!std::isfinite(t.x) || !std::isfinite(t.y)) t = glm::vec2(0.0f), ++nonFinite;
-            if (nonFinite > 0)
-                warnOnce(where + ": " + std::to_string(nonFinite) + " non-finite texture coordinates set to 0");
-        }
+        readTexcoords(prim, "TEXCOORD_0", where, vertexCount, geo.texcoords0);
+        readTexcoords(prim, "TEXCOORD_1", where, vertexCount, geo.texcoords1);
+        readTangents(prim, where, vertexCount, toWorld, mirrored, geo);
 
         if (prim.material >= 0 && size_t(prim.material) >= materials_.size())
             throw InputError(file_, where + ".material",
                              "material " + std::to_string(prim.material) + " out of range (" +
                                  std::to_string(materials_.size()) + " materials)");
         MeshPart part;
-        part.geometry = shareGeometry(std::move(geo));
         part.material = prim.material >= 0 ? materials_[size_t(prim.material)] : defaultMaterial_;
+        // A normal map needs tangents: the file's, or generated from its coordinate set (mesh_tangents.h).
+        if (const TextureBinding& nt = part.material.normalTexture; nt && geo.tangents.empty()) {
+            const std::vector<glm::vec2>& uvs = nt.texCoord == 1 ? geo.texcoords1 : geo.texcoords0;
+            if (uvs.size() == geo.positions.size())
+                geo.tangents = generateTangents(geo.positions, geo.normals, uvs, geo.indices);
+        }
+        part.geometry = shareGeometry(std::move(geo));
         out_.parts.push_back(std::move(part));
+    }
+
+    // TEXCOORD_n: the count must match; a non-finite coordinate becomes 0 with a warning.
+    void readTexcoords(const tinygltf::Primitive& prim, const std::string& name, const std::string& where,
+                       size_t vertexCount, std::vector<glm::vec2>& out) {
+        const auto uv = prim.attributes.find(name);
+        if (uv == prim.attributes.end()) return;
+        const size_t count = gltf::accessorCount(model_, uv->second, file_, where + ".attributes." + name);
+        if (count != vertexCount)
+            throw InputError(file_, indexed("accessors", size_t(uv->second)),
+                             name + " count " + std::to_string(count) + " differs from POSITION count " +
+                                 std::to_string(vertexCount));
+        gltf::readVec2(model_, uv->second, file_, out);
+        size_t nonFinite = 0;
+        for (glm::vec2& t : out)
+            if (!std::isfinite(t.x) || !std::isfinite(t.y)) t = glm::vec2(0.0f), ++nonFinite;
+        if (nonFinite > 0)
+            warnOnce(where + ": " + std::to_string(nonFinite) + " non-finite texture coordinates set to 0");
+    }
+
+    // TANGENT: xyz goes through the node's linear part (a tangent lies in the surface, so not the normal
+    // matrix), w flips under a mirroring transform; all are dropped (and generated if a normal map needs
+    // them) when one is zero or non-finite, or w is not ±1.
+    void readTangents(const tinygltf::Primitive& prim, const std::string& where, size_t vertexCount,
+                      const glm::mat4& toWorld, bool mirrored, MeshGeometry& geo) {
+        const auto tangent = prim.attributes.find("TANGENT");
+        if (tangent == prim.attributes.end()) return;
+        const size_t count = gltf::accessorCount(model_, tangent->second, file_, where + ".attributes.TANGENT");
+        if (count != vertexCount)
+            throw InputError(file_, indexed("accessors", size_t(tangent->second)),
+                             "TANGENT count " + std::to_string(count) + " differs from POSITION count " +
+                                 std::to_string(vertexCount));
+        gltf::readVec4(model_, tangent->second, file_, geo.tangents);
+        const glm::mat3 linear(toWorld);
+        for (glm::vec4& t : geo.tangents) {
+            const glm::vec3 v = linear * glm::vec3(t);
+            const float len2 = glm::dot(v, v);
+            if (!(len2 > 1e-30f) || !std::isfinite(len2) || !(std::fabs(std::fabs(t.w) - 1.0f) < 1e-3f)) {
+                warnOnce(where + ": zero, non-finite or unsigned tangents; generated ones used instead");
+                geo.tangents.clear();
+                return;
+            }
+            t = glm::vec4(v / std::sqrt(len2), (t.w < 0.0f) != mirrored ? -1.0f : 1.0f);
+        }
     }
 
     // Counts a primitive instance against the limits before its arrays are allocated. A mesh used by many

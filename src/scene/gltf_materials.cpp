@@ -40,6 +40,24 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
         m.metallic = 0.0f;
         m.roughness = roughness;
     }
+    // alphaMode: OPAQUE (the default) ignores alpha; MASK and BLEND read baseColorFactor[3] times the texture's.
+    if (pbr.baseColorFactor.size() >= 4) m.alpha = finiteClamp(pbr.baseColorFactor[3], 0.0f, 1.0f, 1.0f);
+    if (gm.alphaMode == "MASK") {
+        m.alphaMode = AlphaMode::Mask;
+        m.alphaCutoff = finiteClamp(gm.alphaCutoff, 0.0f, 1e6f, 0.5f);
+    } else if (gm.alphaMode == "BLEND") {
+        m.alphaMode = AlphaMode::Blend;
+    } else if (!gm.alphaMode.empty() && gm.alphaMode != "OPAQUE") {
+        warnings.push_back(place + ".alphaMode: unknown \"" + gm.alphaMode + "\"; treated as OPAQUE");
+    }
+    // emissiveFactor (linear RGB, >= 0) is the material's emitted radiance, times KHR_materials_emissive_strength.
+    if (gm.emissiveFactor.size() >= 3) {
+        auto channel = [&](size_t k) { return finiteClamp(gm.emissiveFactor[k], 0.0f, 1.0f, 0.0f); };
+        m.emission = glm::vec3(channel(0), channel(1), channel(2));
+        auto strength = gm.extensions.find("KHR_materials_emissive_strength");
+        if (strength != gm.extensions.end())
+            m.emission *= finiteClamp(numberOr(strength->second, "emissiveStrength", 1.0), 0.0f, 1e6f, 1.0f);
+    }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);

@@ -125,8 +125,9 @@ TextureBinding TextureLoader::binding(int index, int texCoord, bool srgb, const 
               std::to_string(model_.textures.size()) + " textures); using the factor alone");
         return b;
     }
-    if (texCoord != 0) {
-        warn_(place + ": TEXCOORD_" + std::to_string(texCoord) + " is not imported yet; using the factor alone");
+    if (texCoord != 0 && texCoord != 1) {
+        warn_(place + ": TEXCOORD_" + std::to_string(texCoord) +
+              " is not imported (only 0 and 1); using the factor alone");
         return b;
     }
     const tinygltf::Texture& t = model_.textures[size_t(index)];

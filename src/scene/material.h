@@ -14,6 +14,8 @@
 
 namespace shadelab {
 
+enum class AlphaMode : int { Opaque = 0, Mask = 1, Blend = 2 };
+
 struct Material {
     glm::vec3 ma{0.1f};         // ambient coefficient, linear RGB
     glm::vec3 md{0.7f};         // diffuse coefficient, linear RGB
@@ -30,6 +32,21 @@ struct Material {
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
     // Phong (docs/gltf-import.md). Imported only; a scene file cannot set it.
     TextureBinding baseColorTexture;
+    // The other glTF maps (docs/gltf-import.md, "Textures"), all linear and imported only. Metallic-roughness:
+    // blue multiplies metallic, green roughness, and the model's coefficients are re-derived per texel.
+    // Normal: tangent space, strength = the normal scale, tangents from MeshGeometry::tangents. Occlusion:
+    // red, 1 + strength·(R − 1), scales the indirect (ambient, environment) light only.
+    TextureBinding metallicRoughnessTexture;
+    TextureBinding normalTexture;
+    TextureBinding occlusionTexture;
+    // glTF alphaMode with the base colour factor's alpha (times the base-colour texture's): Opaque ignores it,
+    // Mask keeps what reaches alphaCutoff, Blend composites over what lies behind (docs/gltf-import.md).
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alpha = 1.0f;        // baseColorFactor[3], [0, 1]
+    float alphaCutoff = 0.5f;  // MASK only, >= 0
+    // glTF emissiveTexture (linear RGB after sRGB decoding): multiplies `emission` in the rasterizer and the
+    // Whitted tracer (docs/gltf-import.md). Imported only.
+    TextureBinding emissiveTexture;
 };
 
 inline constexpr float kMaxShininess = 10000.0f;

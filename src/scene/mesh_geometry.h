@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct MeshGeometry {
     std::vector<glm::vec3> normals;     // one per position, unit length; empty = flat shading
     std::vector<glm::vec2> texcoords0;  // TEXCOORD_0, one per position (glTF's u, v: v = 0 is the image's top
                                         // row); empty = the primitive has none
+    std::vector<glm::vec2> texcoords1;  // TEXCOORD_1, as texcoords0; empty = none
+    std::vector<glm::vec4> tangents;    // one per position: unit xyz in world space, w = ±1 the handedness
+                                        // (bitangent = w·cross(N, T)); empty = none (scene/mesh_tangents.h)
     std::vector<uint32_t> indices;      // three per triangle, each < positions.size()
     Bounds bounds;                      // of every position; set by shareGeometry
 

@@ -47,7 +47,8 @@ struct Texture {
 struct TextureBinding {
     std::shared_ptr<const Texture> texture;
     TextureSampler sampler;
-    int texCoord = 0;  // TEXCOORD_n; only 0 is imported so far
+    int texCoord = 0;       // TEXCOORD_n: 0 or 1 (the info's texCoord, or KHR_texture_transform's override)
+    float strength = 1.0f;  // normalTexture.scale or occlusionTexture.strength; 1 for the other maps
     // KHR_texture_transform: uv' = T(offset) · R(rotation) · S(scale) · uv, rotation in radians.
     glm::vec2 offset{0.0f};
     float rotation = 0.0f;

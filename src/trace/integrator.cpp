@@ -4,6 +4,7 @@
 
 #include "scene/coverage.h"
 #include "shading/local_illumination.h"
+#include "shading/material_maps.h"
 #include "shading/texture_sample.h"
 
 #include <algorithm>
@@ -40,7 +41,7 @@ WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, cons
 
 PrimarySample WhittedIntegrator::primary(const Ray& ray, const std::atomic<bool>* cancel, TreeStats* stats) const {
     Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, cancel, {}};
-    const std::optional<Hit> hit = scene_.intersect(ray);
+    const std::optional<Hit> hit = visibleHit(ray, 0.0f, 0);
     PrimarySample s{env_.escaping(ray.dir), kBackgroundId};
     if (hit) s = {shade(ray, *hit, 0, glm::vec3(1.0f), tree), scene_.coverageId(*hit)};
     if (stats) *stats = tree.stats;
@@ -53,7 +54,7 @@ glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth) const {
 }
 
 glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const {
-    const std::optional<Hit> hit = scene_.intersect(ray);
+    const std::optional<Hit> hit = visibleHit(ray, 0.0f, depth);
     return hit ? shade(ray, *hit, depth, weight, tree) : env_.escaping(ray.dir);
 }
 
@@ -80,18 +81,17 @@ bool WhittedIntegrator::admit(const glm::vec3& weight, Tree& tree) const {
     return true;
 }
 
-glm::vec3 WhittedIntegrator::baseColorTexel(const Ray& ray, const Hit& hit, int depth) const {
-    const Material& m = scene_.material(hit);
-    const TextureBinding& b = m.baseColorTexture;
+glm::vec4 WhittedIntegrator::mapTexel(const Ray& ray, const Hit& hit, int depth, const TextureBinding& b) const {
     const Texture& tex = *b.texture;
     const MeshBvh& mb = *scene_.meshBvh();
     const MeshGeometry& g = *scene_.meshPart(hit).geometry;
     const uint32_t tri = scene_.triangleInPart(hit);
     glm::vec2 uv0(0.0f), uv1(0.0f), uv2(0.0f);
-    if (g.texcoords0.size() == g.positions.size()) {
-        uv0 = g.texcoords0[g.indices[3 * size_t(tri)]];
-        uv1 = g.texcoords0[g.indices[3 * size_t(tri) + 1]];
-        uv2 = g.texcoords0[g.indices[3 * size_t(tri) + 2]];
+    const std::vector<glm::vec2>& uvs = b.texCoord == 1 ? g.texcoords1 : g.texcoords0;  // (0, 0) when absent
+    if (uvs.size() == g.positions.size()) {
+        uv0 = uvs[g.indices[3 * size_t(tri)]];
+        uv1 = uvs[g.indices[3 * size_t(tri) + 1]];
+        uv2 = uvs[g.indices[3 * size_t(tri) + 2]];
     }
     // KHR_texture_transform on the interpolated coordinate, as mesh.frag; its derivatives take the linear part.
     shading::TextureLookup transform{};  // the GLSL-shaped members are not const
@@ -132,9 +132,25 @@ glm::vec3 WhittedIntegrator::baseColorTexel(const Ray& ray, const Hit& hit, int 
                : w == TextureWrap::ClampToEdge  ? shading::kTexClamp
                                                 : shading::kTexRepeat;
     };
-    const glm::vec4 c = lookup.texSample(0, levels, wrap(b.sampler.wrapS), wrap(b.sampler.wrapT), b.sampler.magLinear,
-                                         b.sampler.minLinear, b.sampler.mipmaps, b.sampler.mipLinear, uv, lod);
-    return glm::vec3(c);
+    return lookup.texSample(0, levels, wrap(b.sampler.wrapS), wrap(b.sampler.wrapT), b.sampler.magLinear,
+                            b.sampler.minLinear, b.sampler.mipmaps, b.sampler.mipLinear, uv, lod);
+}
+
+std::optional<Hit> WhittedIntegrator::visibleHit(const Ray& ray, float after, int depth) const {
+    // A masked-out texel is not there (mesh.frag discards it): continue past it along the same line, up to 64
+    // surfaces, and measure t along `ray` so that shading and the footprint see the original ray.
+    float start = after;
+    for (int k = 0; k < 64; ++k) {
+        std::optional<Hit> hit = scene_.intersect(start > 0.0f ? Ray{ray.origin + start * ray.dir, ray.dir} : ray);
+        if (!hit) return hit;
+        if (start > 0.0f) hit->t += start;
+        const Material& m = scene_.material(*hit);
+        if (hit->kind != HitKind::Triangle || m.alphaMode != AlphaMode::Mask) return hit;
+        const float alpha = m.alpha * (m.baseColorTexture ? mapTexel(ray, *hit, depth, m.baseColorTexture).a : 1.0f);
+        if (!(alpha < m.alphaCutoff)) return hit;
+        start = hit->t + scene_.epsilon();
+    }
+    return std::nullopt;
 }
 
 Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit, int depth) const {
@@ -143,6 +159,8 @@ Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit, int depth) 
     s.material = &scene_.material(hit);
     s.md = s.material->md;
     s.baseColor = s.material->baseColor;
+    s.roughness = s.material->roughness;
+    s.alpha = s.material->alpha;
     s.P = ray.origin + hit.t * ray.dir;
     const glm::vec3 V = -ray.dir;
     switch (hit.kind) {
@@ -178,11 +196,41 @@ Surface WhittedIntegrator::surfaceAt(const Ray& ray, const Hit& hit, int depth) 
             s.entering = !back;
             const float len = glm::length(Ng);
             s.Nf = len > 0.0f ? (back ? -Ng : Ng) / len : glm::normalize(s.N);
-            if (s.material->baseColorTexture) {
-                s.tex = baseColorTexel(ray, hit, depth);
+            const Material& m = *s.material;
+            if (m.baseColorTexture) {
+                const glm::vec4 base = mapTexel(ray, hit, depth, m.baseColorTexture);
+                s.tex = glm::vec3(base);
+                s.alpha *= base.a;
                 s.md *= s.tex;
                 s.baseColor *= s.tex;
             }
+            // The other maps, as mesh.frag applies them (shaders/material_maps.glsl).
+            if (m.metallicRoughnessTexture) {
+                const glm::vec4 mr = mapTexel(ray, hit, depth, m.metallicRoughnessTexture);
+                const float metallic = shading::mapMetallic(m.metallic, mr);
+                s.roughness = shading::mapRoughness(m.roughness, mr);
+                s.s = shading::mapExponent(model_, s.roughness);
+                s.md = shading::mapDiffuse(s.baseColor, metallic);
+                s.ma = s.md;
+                s.ms = shading::mapSpecular(model_, sc.normalized, s.baseColor, metallic, s.s);
+                s.mapped = true;
+            }
+            if (m.normalTexture) {
+                const MeshGeometry& g = *scene_.meshPart(hit).geometry;
+                glm::vec4 T(0.0f);
+                if (g.tangents.size() == g.positions.size()) {
+                    const size_t i = 3 * size_t(scene_.triangleInPart(hit));
+                    T = hit.b0 * g.tangents[g.indices[i]] + hit.b1 * g.tangents[g.indices[i + 1]] +
+                        hit.b2 * g.tangents[g.indices[i + 2]];
+                }
+                const glm::vec3 n =
+                    shading::mapNormal(N, T, mapTexel(ray, hit, depth, m.normalTexture), m.normalTexture.strength);
+                s.N = back ? -n : n;
+            }
+            if (m.emissiveTexture) s.emissive = glm::vec3(mapTexel(ray, hit, depth, m.emissiveTexture));
+            if (m.occlusionTexture)
+                s.ao =
+                    shading::mapOcclusion(m.occlusionTexture.strength, mapTexel(ray, hit, depth, m.occlusionTexture));
             break;
         }
     }
@@ -208,8 +256,9 @@ glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::ve
     const Scene& sc = scene_.scene();
     if (!env_.lightsPbr() || !sc.terms.ambient || !sc.terms.specular) return glm::vec3(0.0f);
     const Material& m = *s.material;
-    const glm::vec3 f0 = shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
-    const glm::vec2 dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
+    const glm::vec3 f0 =
+        s.mapped ? s.ms : shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
+    const glm::vec2 dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), s.roughness);
     glm::vec3 E = shading::specularDFG(f0, dfg);
     if (sc.energyCompensation) E = E * shading::energyCompensation(f0, dfg);
     return E;
@@ -225,9 +274,11 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     // A base-colour texture scales ma, and F0's base colour under pbr, the affine form mesh.frag uses.
     params.ma = params.ma * s.tex;
     if (pbr) params.ms = params.ms + m.metallic * m.baseColor * (s.tex - 1.0f);
+    if (s.mapped) params = {s.ma, s.md, s.ms, s.s};  // a metallic-roughness texel (surfaceAt)
+    params.ma = params.ma * s.ao;
     glm::vec2 dfg(0.0f);
     if (pbr && (sc.energyCompensation || env_.lightsPbr()))
-        dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), m.roughness);
+        dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), s.roughness);
     if (pbr && sc.energyCompensation) params.specScale = shading::energyCompensation(params.ms, dfg);
     if (dfgOut) *dfgOut = dfg;
     return params;
@@ -244,9 +295,9 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     if (env_.lightsPbr() && sc.terms.ambient) {
         const glm::vec3 R = shading::IblLookup{}.iblReflect(s.N, V);
         const glm::vec3 pre =
-            reflected ? env_.prefilteredWithMirror(R, m.roughness, *reflected) : env_.prefiltered(R, m.roughness);
-        environment = shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
-                                                sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
+            reflected ? env_.prefilteredWithMirror(R, s.roughness, *reflected) : env_.prefiltered(R, s.roughness);
+        environment = s.ao * shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
+                                                       sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
     }
     const bool ambientOn = sc.terms.ambient && !env_.lightsPbr();
     const bool lit = sc.terms.diffuse || sc.terms.specular;
@@ -271,13 +322,22 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         first += count;
     } while (first < sc.lights.size());
     // An emitter's own light (design.md §8), as surface.glsl adds u_emission.
-    return (env_.lightsPbr() ? I + environment : I) + m.emission;
+    return (env_.lightsPbr() ? I + environment : I) + m.emission * s.emissive;
 }
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,
                                    Tree& tree) const {
     const Surface s = surfaceAt(ray, hit, depth);
-    if (!scene_.scene().terms.reflections || depth >= maxDepth_) return local(ray, s);
+    // alphaMode BLEND: this surface over what lies behind it on the same ray, as the rasterizer's blend state
+    // composites it (docs/gltf-import.md); the surface behind is shaded at the same depth.
+    const float alpha = s.material->alphaMode == AlphaMode::Blend ? glm::clamp(s.alpha, 0.0f, 1.0f) : 1.0f;
+    glm::vec3 behind(0.0f);
+    if (alpha < 1.0f) {
+        const std::optional<Hit> next = visibleHit(ray, hit.t + scene_.epsilon(), depth);
+        behind = next ? shade(ray, *next, depth, weight * (1.0f - alpha), tree) : env_.escaping(ray.dir);
+    }
+    auto over = [&](const glm::vec3& c) { return alpha < 1.0f ? c * alpha + behind * (1.0f - alpha) : c; };
+    if (!scene_.scene().terms.reflections || depth >= maxDepth_) return over(local(ray, s));
 
     const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
@@ -305,14 +365,14 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
     // specular's trilinear lookup, with its weight 1 − roughness·(levels − 1): smooth surfaces reflect
     // objects sharply, and from roughness 1/(levels − 1) (0.2) on the lookup is the prefiltered one alone.
     const glm::vec3 specularWeight = environmentSpecularWeight(s, V);
-    const float mirror = positive(specularWeight) ? env_.mirrorWeight(m.roughness) : 0.0f;
+    const float mirror = positive(specularWeight) ? env_.mirrorWeight(s.roughness) : 0.0f;
     const glm::vec3 rayWeight = reflectWeight + mirror * specularWeight;
     glm::vec3 I;
     if (positive(rayWeight) && admit(weight * rayWeight, tree)) {
         // Whitted 1980: mirror direction 2N(N·V) − V.
         const glm::vec3 R = glm::normalize(2.0f * NoV * N - V);
         const Ray reflectedRay{s.P + eps * s.Nf, R};
-        const std::optional<Hit> next = scene_.intersect(reflectedRay);
+        const std::optional<Hit> next = visibleHit(reflectedRay, 0.0f, depth + 1);
         if (next) {
             const glm::vec3 Lr = shade(reflectedRay, *next, depth + 1, weight * rayWeight, tree);
             I = local(ray, s, mirror > 0.0f ? &Lr : nullptr);
@@ -324,7 +384,7 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
     } else {
         I = local(ray, s);
     }
-    return I + transmitted;
+    return over(I + transmitted);
 }
 
 }  // namespace shadelab::trace

@@ -26,6 +26,15 @@ struct Surface {
     glm::vec3 baseColor{0.0f};  // pbr base colour, after the plane's checker and the base-colour texture
     glm::vec3 tex{1.0f};        // the base-colour texture's linear RGB here (1 without one): scales md, ma, F0
     const Material* material = nullptr;
+    // The other glTF maps (shaders/material_maps.glsl, as mesh.frag): a metallic-roughness texel re-derives
+    // ma, md, ms and s (mapped); occlusion scales indirect light by ao; alpha is the base colour's.
+    bool mapped = false;
+    glm::vec3 ma{0.0f}, ms{0.0f};
+    float s = 0.0f;
+    float roughness = 0.0f;  // pbr roughness here: the material's, or the texel's when mapped
+    float ao = 1.0f;
+    float alpha = 1.0f;
+    glm::vec3 emissive{1.0f};  // the emissive texture's linear RGB here (1 without one): scales emission
 };
 
 // How a primary ray's unnormalised direction D = forward + x·right + y·up changes per pixel step of the
@@ -98,8 +107,10 @@ private:
     RayTreeLimits limits_;
     EnvironmentLight env_;
     PixelFootprint footprint_;
-    // The base-colour texture's value at a triangle hit (surfaceAt).
-    glm::vec3 baseColorTexel(const Ray& ray, const Hit& hit, int depth) const;
+    // A material map's filtered linear texel at a triangle hit (surfaceAt), as mesh.frag's sampleMap.
+    glm::vec4 mapTexel(const Ray& ray, const Hit& hit, int depth, const TextureBinding& b) const;
+    // The first hit along `ray` beyond t = `after` that an alpha mask does not cut away (Hit::t along `ray`).
+    std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const;
     // The split-sum specular weight E = (F0·A + B)·compensation of a pbr surface (0 without IBL specular).
     glm::vec3 environmentSpecularWeight(const Surface& s, glm::vec3 V) const;
 };
