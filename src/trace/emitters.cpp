@@ -14,6 +14,10 @@ namespace {
 
 bool emits(const Material& m) { return m.emission.x > 0.0f || m.emission.y > 0.0f || m.emission.z > 0.0f; }
 
+// Light sampling draws emitters of uniform radiance only: an emissive texture varies over the triangle (and
+// alpha may cut it away), so such parts are left to BSDF sampling, which reads the texture where it hits.
+bool sampledDirectly(const Material& m) { return emits(m) && !m.emissiveTexture && m.alphaMode == AlphaMode::Opaque; }
+
 // 1 + this: how far outside a sphere (in radii squared) P must be for the cone to be used.
 constexpr float kOutsideMargin = 1e-4f;
 
@@ -25,7 +29,7 @@ Emitters::Emitters(const TraceScene& scene, const EnvironmentSampler& environmen
     std::vector<double> power;
     for (size_t i = 0; i < sc.spheres.size(); ++i) {
         const Sphere& s = sc.spheres[i];
-        if (!emits(s.material)) continue;
+        if (!sampledDirectly(s.material)) continue;
         Entry e;
         e.sphere = true;
         e.sphereIndex = uint32_t(i);
@@ -35,7 +39,7 @@ Emitters::Emitters(const TraceScene& scene, const EnvironmentSampler& environmen
     }
     for (const Mesh& mesh : sc.meshes)
         for (const MeshPart& part : mesh.parts) {
-            if (!emits(part.material) || !part.geometry) continue;
+            if (!sampledDirectly(part.material) || !part.geometry) continue;
             const MeshGeometry& g = *part.geometry;
             for (size_t t = 0; t + 2 < g.indices.size(); t += 3) {
                 Entry e;
@@ -126,7 +130,7 @@ std::optional<EmitterSample> Emitters::sample(const glm::vec3& P, const glm::vec
 float Emitters::pdfHit(const Ray& ray, const Hit& hit) const {
     if (pick_.empty() || hit.kind == HitKind::Plane) return 0.0f;
     const Material& m = scene_->material(hit);
-    if (!emits(m)) return 0.0f;
+    if (!sampledDirectly(m)) return 0.0f;
     const float share = objectShare() / float(pick_.total());
     const glm::vec3 q = ray.origin + hit.t * ray.dir;
     if (hit.kind == HitKind::Sphere) {

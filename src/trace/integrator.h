@@ -94,6 +94,10 @@ public:
     // vis_l: 1 when the shadow ray from s.P + ε·s.Nf toward the light reaches it, else 0.
     float visibility(const Surface& s, const Light& light) const;
 
+    // The first hit along `ray` beyond t = `after` that an alpha mask does not cut away (Hit::t along `ray`).
+    // The path tracer intersects through it too.
+    std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const;
+
 private:
     struct Tree;  // one sample's budget, cancel flag and stats
     glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const;
@@ -109,8 +113,6 @@ private:
     PixelFootprint footprint_;
     // A material map's filtered linear texel at a triangle hit (surfaceAt), as mesh.frag's sampleMap.
     glm::vec4 mapTexel(const Ray& ray, const Hit& hit, int depth, const TextureBinding& b) const;
-    // The first hit along `ray` beyond t = `after` that an alpha mask does not cut away (Hit::t along `ray`).
-    std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const;
     // The split-sum specular weight E = (F0·A + B)·compensation of a pbr surface (0 without IBL specular).
     glm::vec3 environmentSpecularWeight(const Surface& s, glm::vec3 V) const;
 };

@@ -17,6 +17,8 @@ namespace {
 // never depend on another's.
 constexpr uint32_t kGroupBsdf = 0;     // lobe pick, direction (2), Russian roulette
 constexpr uint32_t kGroupEmitter = 1;  // emitter pick, point on it (3)
+constexpr uint32_t kGroupBlend = 2;    // alpha BLEND: pass through or not, one group per layer (2, 3, ...)
+constexpr int kMaxBlendLayers = 64;
 
 bool positive(const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; }
 
@@ -68,7 +70,16 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
     float prevPdf = 0.0f;  // density of the BSDF sample that made `ray`; 0 after the camera or a delta lobe
     int scattered = 0;
     for (int bounce = 0;; ++bounce) {
-        const std::optional<Hit> hit = scene_.intersect(ray);
+        // Alpha MASK cut-outs are not there (as in the Whitted tracer); an alpha BLEND surface is passed
+        // through with probability 1 − alpha, which composites it over what lies behind on average.
+        std::optional<Hit> hit = whitted_.visibleHit(ray, 0.0f, bounce == 0 ? 0 : 1);
+        for (int layer = 0; hit && layer < kMaxBlendLayers; ++layer) {
+            const Material& hm = scene_.material(*hit);
+            if (hm.alphaMode != AlphaMode::Blend) break;
+            const float alpha = whitted_.surfaceAt(ray, *hit, bounce == 0 ? 0 : 1).alpha;
+            if (rng.draw(uint32_t(bounce), kGroupBlend + uint32_t(layer)).x < alpha) break;
+            hit = whitted_.visibleHit(ray, hit->t + eps, bounce == 0 ? 0 : 1);
+        }
         if (!hit) {
             if (environment_.emits() || bounce == 0) {
                 const float w = prevPdf > 0.0f ? weightBsdf(prevPdf, emitters_.pdfEnvironment(ray.dir)) : 1.0f;
@@ -81,7 +92,7 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
         const Material& m = *s.material;
         if (positive(m.emission)) {
             const float w = prevPdf > 0.0f ? weightBsdf(prevPdf, emitters_.pdfHit(ray, *hit)) : 1.0f;
-            add(beta * m.emission * w, scattered);
+            add(beta * m.emission * s.emissive * w, scattered);  // s.emissive: the emissive texture, or 1
         }
         if (bounce > settings_.maxDepth) break;
 
