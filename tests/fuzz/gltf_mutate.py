@@ -5,7 +5,9 @@ and checks the promises for bad input: exit 0 or 1, at most one error line, ever
 within 10 s and 1 GiB. Failing mutants and their output are kept in the output folder.
 
 usage: gltf_mutate.py SHADELAB [--cases N] [--seed S] [--out DIR] [MODEL ...]
-Models default to assets/models/*.gltf and a few of Debian's assimp-testmodels (glTF and GLB)."""
+Models default to assets/models/torus.gltf, four of the generated textured assets (assets/models/textures/:
+tangents generated, alpha mask, metallic-roughness + occlusion, emissive) and a few of Debian's
+assimp-testmodels (glTF and GLB)."""
 
 import argparse
 import json
@@ -27,6 +29,10 @@ MEMORY_LIMIT_MIB = 1024.0
 ASSIMP = "/usr/share/assimp/models/glTF2"
 DEFAULT_MODELS = [
     "assets/models/torus.gltf",
+    "assets/models/textures/normal_bump_no_tangents.gltf",
+    "assets/models/textures/alpha_mask.gltf",
+    "assets/models/textures/metal_rough.gltf",
+    "assets/models/textures/emissive.gltf",
     ASSIMP + "/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
     ASSIMP + "/BoxTextured-glTF/BoxTextured.gltf",
     ASSIMP + "/BoxTextured-glTF-Binary/BoxTextured.glb",
