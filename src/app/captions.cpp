@@ -14,7 +14,6 @@ const char* globalCaption(trace::PathPart part) {
 
 }  // namespace
 
-
 std::string modelCaption(const Scene& scene) {
     switch (scene.model) {
         case ShadingModel::Phong: return scene.normalized ? "normalised Phong" : "Phong";
@@ -44,7 +43,10 @@ std::string imageCaption(const ViewerState& state) {
         case ViewMode::Global: mode = globalCaption(state.globalPart); break;
         case ViewMode::LocalGlobal: mode = "local (raster) | global (path traced)"; break;
     }
-    return modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(state.scene.terms) + "  \xc2\xb7  " + mode;
+    // The path tracer leaves the ambient term out whatever its switch says (light bounces instead).
+    Terms terms = state.scene.terms;
+    if (state.mode == ViewMode::Global) terms.ambient = false;
+    return modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(terms) + "  \xc2\xb7  " + mode;
 }
 
 }  // namespace shadelab::app
