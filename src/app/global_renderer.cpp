@@ -1,12 +1,11 @@
 // GlobalRenderer: the controller thread (owns the PathRender, one pass at a time) and the UI-side upload.
 #include "app/global_renderer.h"
 
+#include "app/idle_priority.h"
 #include "image/encode.h"
 #include "trace/path_render.h"
 #include "trace/trace_scene.h"
 
-#include <sched.h>
-#include <sys/resource.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -36,9 +35,7 @@ GlobalRenderer::~GlobalRenderer() {
 }
 
 void GlobalRenderer::controllerLoop() {
-    // Idle priority, inherited by the pass workers: the UI thread and llvmpipe come first (as the reference).
-    const sched_param idle{};
-    if (sched_setscheduler(0, SCHED_IDLE, &idle) != 0) setpriority(PRIO_PROCESS, 0, 19);
+    lowerToIdlePriority();  // inherited by the pass workers
     std::unique_ptr<trace::PathRender> render;
     uint64_t running = 0;
     for (;;) {

@@ -2,11 +2,10 @@
 // tile collection into a CPU image and two textures.
 #include "app/reference_renderer.h"
 
+#include "app/idle_priority.h"
 #include "trace/progressive_trace.h"
 #include "trace/trace_scene.h"
 
-#include <sched.h>
-#include <sys/resource.h>
 #include <algorithm>
 #include <cstring>
 
@@ -27,12 +26,7 @@ ReferenceRenderer::~ReferenceRenderer() {
 }
 
 void ReferenceRenderer::controllerLoop() {
-    // On Linux scheduling policy and nice value belong to the thread, and threads inherit them from their
-    // creator: the trace workers started below run under SCHED_IDLE (only on otherwise idle cores), or at
-    // nice +19 where that is refused, so the UI thread and llvmpipe's threads always come first. Nice +10
-    // alone was not enough: workers restarted on every slider step still took half of both cores.
-    const sched_param idle{};
-    if (sched_setscheduler(0, SCHED_IDLE, &idle) != 0) setpriority(PRIO_PROCESS, 0, 19);
+    lowerToIdlePriority();  // inherited by the trace workers started below
     trace::ProgressiveTrace trace;
     uint64_t running = 0;
     for (;;) {

@@ -16,7 +16,7 @@ struct ImageData {
     Image8 pixels;  // RGB (RGBA when read from an RGBA file): exactly what the binary's PNG holds
     Encoding encoding = Encoding::Srgb;
     std::vector<uint32_t> coverage;  // width x height ids (scene/coverage.h) when asked for; else empty
-    std::string source;              // "raster", "trace", "file" or "array"
+    std::string source;              // "raster", "trace", "path", "file" or "array"
     double drawMs = 0.0;             // raster: draw (glFinish'ed); trace: the whole trace
     double readMs = 0.0;             // raster: readback + conversion; trace: conversion
 };

@@ -32,6 +32,22 @@ std::vector<std::shared_ptr<const MeshGeometry>> geometryOf(const Scene& scene) 
     return g;
 }
 
+// A CPU tracer's linear image as an ImageData: the 8-bit conversion timed as the raster's readback is. `started`:
+// when tracing began (drawMs runs from it).
+ImageData fromTracer(ImageF color, std::vector<uint32_t> coverage, Encoding encoding, const char* source,
+                     Clock::time_point started) {
+    ImageData out;
+    out.drawMs = msSince(started);
+    const Clock::time_point t0 = Clock::now();
+    out.pixels = toImage8(color, encoding);
+    out.readMs = msSince(t0);
+    out.linear = std::move(color);
+    out.coverage = std::move(coverage);
+    out.encoding = encoding;
+    out.source = source;
+    return out;
+}
+
 // Sets busy while a render runs.
 struct BusyScope {
     explicit BusyScope(std::atomic<bool>& flag) : flag_(flag) { flag_ = true; }
@@ -136,19 +152,10 @@ ImageData Renderer::trace(const Scene& scene, const RenderRequest& request) {
     s.threads = request.threads;
     s.maxDepth = request.depth.value_or(scene.maxDepth);
     s.coverage = request.coverage;
-    Clock::time_point t0 = Clock::now();
+    const Clock::time_point t0 = Clock::now();
     const trace::TraceScene prepared(scene, bvh_.get(scene));
     trace::TraceOutput traced = trace::traceImage(prepared, s);
-    ImageData out;
-    out.drawMs = msSince(t0);
-    t0 = Clock::now();
-    out.pixels = toImage8(traced.color, request.encoding);
-    out.readMs = msSince(t0);
-    out.linear = std::move(traced.color);
-    out.coverage = std::move(traced.coverage);
-    out.encoding = request.encoding;
-    out.source = "trace";
-    return out;
+    return fromTracer(std::move(traced.color), std::move(traced.coverage), request.encoding, "trace", t0);
 }
 
 // The path tracer as `shadelab render --renderer path` runs it (same settings, same bytes).
@@ -160,19 +167,10 @@ ImageData Renderer::pathTrace(const Scene& scene, const RenderRequest& request) 
     s.threads = request.threads;
     s.maxDepth = request.depth.value_or(scene.maxDepth);
     s.coverage = request.coverage;
-    Clock::time_point t0 = Clock::now();
+    const Clock::time_point t0 = Clock::now();
     trace::PathOutput traced =
         trace::pathTraceImage(std::make_shared<const trace::TraceScene>(scene, bvh_.get(scene)), s);
-    ImageData out;
-    out.drawMs = msSince(t0);
-    t0 = Clock::now();
-    out.pixels = toImage8(traced.color, request.encoding);
-    out.readMs = msSince(t0);
-    out.linear = std::move(traced.color);
-    out.coverage = std::move(traced.coverage);
-    out.encoding = request.encoding;
-    out.source = "path";
-    return out;
+    return fromTracer(std::move(traced.color), std::move(traced.coverage), request.encoding, "path", t0);
 }
 
 }  // namespace shadelab::python
