@@ -35,6 +35,9 @@ PathRender::PathRender(std::shared_ptr<const TraceScene> scene, const PathSettin
         settings_.threads = n > 0 ? int(n) : 1;
     }
     view_ = makeViewSetup(scene_->scene(), settings_.width, settings_.height);
+    // Built once: its emitter and environment distributions serve every pass.
+    integrator_ = std::make_unique<PathIntegrator>(*scene_, settings_);
+    integrator_->setPixelFootprint(pixelFootprint(view_));
     const size_t n = size_t(settings_.width) * size_t(settings_.height);
     sum_.assign(3 * n, 0.0);
     sumSq_.assign(3 * n, 0.0);
@@ -49,7 +52,7 @@ PathRender::PathRender(std::shared_ptr<const TraceScene> scene, const PathSettin
     }
 }
 
-void PathRender::renderPixel(const PathIntegrator& integrator, int x, int y, int count) {
+void PathRender::renderPixel(int x, int y, int count) {
     const size_t p = size_t(y) * size_t(settings_.width) + size_t(x);
     SampleRng rng;
     rng.pixel = uint32_t(p);
@@ -58,7 +61,7 @@ void PathRender::renderPixel(const PathIntegrator& integrator, int x, int y, int
         const uint32_t done = count_[p].load(std::memory_order_relaxed);
         rng.sample = done;
         const glm::vec4 j = rng.draw(0, kGroupCamera);
-        const glm::vec3 c = integrator.trace(cameraRay(view_, float(x) + j.x, float(y) + j.y), rng).color;
+        const glm::vec3 c = integrator_->trace(cameraRay(view_, float(x) + j.x, float(y) + j.y), rng).color;
         for (int ch = 0; ch < 3; ++ch) {
             sum_[3 * p + size_t(ch)] += double(c[ch]);
             sumSq_[3 * p + size_t(ch)] += double(c[ch]) * double(c[ch]);
@@ -69,8 +72,6 @@ void PathRender::renderPixel(const PathIntegrator& integrator, int x, int y, int
 
 bool PathRender::addSamples(int count, const std::atomic<bool>* cancel, const std::function<void(float)>& progress) {
     if (count <= 0) return true;
-    PathIntegrator integrator(*scene_, settings_);
-    integrator.setPixelFootprint(pixelFootprint(view_));
     const std::vector<Tile> tiles = makeTiles(settings_.width, settings_.height, settings_.tileSize);
     std::atomic<size_t> next{0}, done{0};
     std::atomic<bool> stopped{false};
@@ -85,7 +86,7 @@ bool PathRender::addSamples(int count, const std::atomic<bool>* cancel, const st
                         stopped = true;
                         break;
                     }
-                    renderPixel(integrator, x, y, count);
+                    renderPixel(x, y, count);
                 }
             done.fetch_add(1);
         }

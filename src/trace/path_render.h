@@ -56,11 +56,12 @@ public:
     const std::vector<uint32_t>& coverage() const { return coverage_; }
 
 private:
-    void renderPixel(const PathIntegrator& integrator, int x, int y, int count);
+    void renderPixel(int x, int y, int count);
 
     std::shared_ptr<const TraceScene> scene_;
     PathSettings settings_;
     ViewSetup view_;
+    std::unique_ptr<PathIntegrator> integrator_;  // over *scene_, with the resolved settings
     std::vector<double> sum_, sumSq_;  // 3 per pixel
     std::unique_ptr<std::atomic<uint32_t>[]> count_;  // per pixel; written (release) after its sums
     std::vector<uint32_t> coverage_;
