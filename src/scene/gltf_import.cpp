@@ -2,12 +2,13 @@
 // the perspective cameras, and metallic-roughness → Phong (docs/gltf-import.md). Reading the file is
 // gltf_file.cpp; accessor bytes are read, bounds-checked, by gltf_accessors.cpp.
 //
-// Sections: 1. node transforms   2. primitives (triangulation, normals)   3. (materials: gltf_materials.cpp)
-//           4. the importer: hierarchy walk, meshes, lights, camera   5. public functions
+// Node transforms, triangulation and generated normals are gltf_geometry.cpp; materials gltf_materials.cpp.
+// Sections: 1. the importer: hierarchy walk, meshes, lights, camera   2. public functions
 #include "scene/gltf_import.h"
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_file.h"
+#include "scene/gltf_geometry.h"
 #include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_textures.h"
@@ -18,10 +19,8 @@
 #include <tiny_gltf.h>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/gtc/constants.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
@@ -35,100 +34,11 @@ namespace {
 
 constexpr int kMaxNodeDepth = 1000;                 // deeper hierarchies are rejected, not walked
 constexpr size_t kMaxNodeVisits = size_t(1) << 20;  // bounds node sharing (a node under several parents)
-const glm::vec3 kFallbackNormal{0.0f, 1.0f, 0.0f};  // for vertices whose faces have no area
 
 std::string indexed(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
 
 // ---------------------------------------------------------------------------------------------------------
-// 1. Node transforms (glTF 2.0 spec, "Transformations": matrix, or T * R * S)
-// ---------------------------------------------------------------------------------------------------------
-
-bool allFinite(const std::vector<double>& v) {
-    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
-}
-
-glm::dmat4 localMatrix(const tinygltf::Node& node, size_t index, const std::string& file,
-                       std::vector<std::string>& warnings) {
-    const std::string place = indexed("nodes", index);
-    auto check = [&](const std::vector<double>& v, size_t n, const char* name) {
-        if (!v.empty() && v.size() != n)
-            throw InputError(file, place, std::string(name) + " must have " + std::to_string(n) + " numbers");
-        if (!allFinite(v)) throw InputError(file, place, std::string(name) + " has a non-finite value");
-    };
-    check(node.matrix, 16, "matrix");
-    check(node.translation, 3, "translation");
-    check(node.rotation, 4, "rotation");
-    check(node.scale, 3, "scale");
-    if (!node.matrix.empty()) return glm::make_mat4(node.matrix.data());  // column-major, as glTF stores it
-
-    glm::dmat4 m(1.0);
-    if (!node.translation.empty())
-        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
-    if (!node.rotation.empty()) {
-        const auto& r = node.rotation;  // glTF order x, y, z, w; glm's constructor takes w first
-        glm::dquat q(r[3], r[0], r[1], r[2]);
-        const double len = glm::length(q);
-        if (len > 1e-12)
-            m *= glm::mat4_cast(q / len);
-        else
-            warnings.push_back(place + ": zero rotation quaternion treated as identity");
-    }
-    if (!node.scale.empty()) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
-    return m;
-}
-
-// Normals transform by the inverse transpose (Turkowski 1990, "Properties of surface-normal transformations").
-// The cofactor matrix is det(M)·M^-T; scaling it by sign(det) keeps the inverse transpose's orientation
-// and stays defined when M is singular (a zero scale flattens normals instead of failing).
-glm::mat3 normalMatrix(const glm::dmat3& m) {
-    const glm::dmat3 cofactor(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]), glm::cross(m[0], m[1]));
-    return glm::mat3(glm::determinant(m) < 0.0 ? -cofactor : cofactor);
-}
-
-// ---------------------------------------------------------------------------------------------------------
-// 2. Primitives
-// ---------------------------------------------------------------------------------------------------------
-
-// glTF 2.0 spec, "Meshes" (primitive topology): strip triangle i is (i, i+1+i%2, i+2-i%2); fan triangle i is
-// (i+1, i+2, 0). Returns how many trailing indices of a TRIANGLES list formed no whole triangle.
-size_t triangulate(int mode, const std::vector<uint32_t>& v, std::vector<uint32_t>& out) {
-    const size_t n = v.size();
-    out.clear();
-    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-        if (n < 3) return n;
-        out.reserve(3 * (n - 2));
-        for (size_t i = 0; i + 2 < n; ++i) {
-            if (mode == TINYGLTF_MODE_TRIANGLE_STRIP)
-                out.insert(out.end(), {v[i], v[i + 1 + i % 2], v[i + 2 - i % 2]});
-            else
-                out.insert(out.end(), {v[i + 1], v[i + 2], v[0]});
-        }
-        return 0;
-    }
-    out.assign(v.begin(), v.begin() + std::ptrdiff_t(n / 3 * 3));
-    return n % 3;
-}
-
-// Area-weighted vertex normals: each triangle adds its unnormalised cross product (twice its area) to its
-// three vertices. Unshared vertices (non-indexed data) therefore get flat face normals.
-void generateNormals(const MeshGeometry& g, std::vector<glm::vec3>& out) {
-    out.assign(g.positions.size(), glm::vec3(0.0f));
-    const auto& p = g.positions;
-    for (size_t t = 0; t + 2 < g.indices.size(); t += 3) {
-        const uint32_t a = g.indices[t], b = g.indices[t + 1], c = g.indices[t + 2];
-        const glm::vec3 n = glm::cross(p[b] - p[a], p[c] - p[a]);
-        out[a] += n;
-        out[b] += n;
-        out[c] += n;
-    }
-    for (glm::vec3& n : out) {
-        const float len2 = glm::dot(n, n);
-        n = len2 > 0.0f && std::isfinite(len2) ? n / std::sqrt(len2) : kFallbackNormal;
-    }
-}
-
-// ---------------------------------------------------------------------------------------------------------
-// 4. The importer
+// 1. The importer
 // ---------------------------------------------------------------------------------------------------------
 
 class Importer {
@@ -246,7 +156,7 @@ private:
         seen_[index] = onPath_[index] = 1;
 
         const tinygltf::Node& node = model_.nodes[index];
-        const glm::dmat4 world = parent * localMatrix(node, index, file_, out_.warnings);
+        const glm::dmat4 world = parent * localMatrix(node, place, file_, out_.warnings);
         if (node.skin >= 0) warnOnce("skins are ignored (meshes are placed by their node transform)");
         if (node.mesh >= 0) addMesh(node, place, world);
         if (node.camera >= 0) addCamera(node, place, world);
@@ -532,7 +442,7 @@ private:
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------------
-// 5. Public functions
+// 2. Public functions
 // ---------------------------------------------------------------------------------------------------------
 
 GltfImport importGltf(const std::string& path, const glm::mat4& transform, const GltfImportOptions& options) {
