@@ -1,4 +1,4 @@
-// Building the 4-wide BVH (design in bvh.h): binned SAH (Wald 2007, "On fast Construction of SAH-based
+// Building the 8-wide BVH (design in bvh.h): binned SAH (Wald 2007, "On fast Construction of SAH-based
 // Bounding Volume Hierarchies"; cost of MacDonald & Booth 1990) on 32-byte primitive references, nodes made
 // by repeated binary splits of the widest child, subtrees built on worker threads and appended in order.
 #include "trace/bvh.h"
@@ -318,21 +318,21 @@ private:
         const uint32_t index = uint32_t(nodes.size());
         nodes.emplace_back();
         BvhNode empty;
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kBvhWidth; ++k) {
             for (int a = 0; a < 3; ++a) {
                 empty.bounds[a][k] = INFINITY;
                 empty.bounds[3 + a][k] = -INFINITY;
             }
             empty.child[k] = kLeafBit;
-            empty.pad[k] = 0;
         }
+        for (uint32_t& p : empty.pad) p = 0;
         nodes[index] = empty;
 
-        Range kids[4];
+        Range kids[kBvhWidth];
         int n = 1;
         kids[0] = r;
         for (;;) {
-            // Split the child of largest area that is not a leaf, until there are four.
+            // Split the child of largest area that is not a leaf, until there are kBvhWidth.
             int pick = -1;
             float pickArea = -1.0f;
             for (int k = 0; k < n; ++k)
@@ -340,10 +340,35 @@ private:
                     pick = k;
                     pickArea = kids[k].box.area();
                 }
-            if (pick < 0 || n == 4) break;
+            if (pick < 0 || n == kBvhWidth) break;
             std::pair<Range, Range> halves = apply(kids[pick]);
             evaluate(halves.first, top);
             evaluate(halves.second, top);
+            kids[pick] = halves.first;
+            kids[n++] = halves.second;
+        }
+        // Room left over once every child is a leaf: split the leaves too (largest first), so the node's box
+        // test, which costs the same for any number of children, culls what would otherwise be triangle tests.
+        while (n < kBvhWidth) {
+            int pick = -1;
+            float pickArea = -1.0f;
+            for (int k = 0; k < n; ++k)
+                if (kids[k].count() > 1 && kids[k].box.area() > pickArea) {
+                    pick = k;
+                    pickArea = kids[k].box.area();
+                }
+            if (pick < 0) break;
+            Range& leaf = kids[pick];
+            if (leaf.split.axis < 0) {
+                float e[3];
+                for (int a = 0; a < 3; ++a) e[a] = leaf.centres.lane(true, a) - leaf.centres.lane(false, a);
+                leaf.split.axis = e[0] >= e[1] && e[0] >= e[2] ? 0 : (e[1] >= e[2] ? 1 : 2);
+                leaf.split.median = true;
+            }
+            std::pair<Range, Range> halves = apply(leaf);
+            evaluate(halves.first, top);
+            evaluate(halves.second, top);
+            halves.first.leaf = halves.second.leaf = true;
             kids[pick] = halves.first;
             kids[n++] = halves.second;
         }
@@ -445,7 +470,7 @@ float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
     const float rootArea = std::max(bvh.bounds.area(), 1e-30f);
     double cost = options.traversalCost;  // the root
     for (const BvhNode& nd : bvh.nodes)
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kBvhWidth; ++k) {
             if (!nd.used(k)) continue;
             Bounds b;
             b.lo = glm::vec3(nd.bounds[0][k], nd.bounds[1][k], nd.bounds[2][k]);

@@ -40,17 +40,21 @@ inline uint32_t leafFirst(uint32_t ref) { return (ref & ~kLeafBit) >> 4; }
 inline uint32_t leafCount(uint32_t ref) { return ref & 15u; }
 inline uint32_t makeLeafRef(uint32_t first, uint32_t count) { return kLeafBit | first << 4 | count; }
 
-// One node: four child boxes, side-major (bounds[side][child], side 0-2 lo x y z, 3-5 hi x y z, world units,
-// indexable by slab side as slab_test.h's nearIdx/farIdx), and four child references. An unused child has
-// lo = +inf, hi = -inf and reference kLeafBit (an empty leaf).
+// Children per node.
+inline constexpr int kBvhWidth = 8;
+
+// One node: eight child boxes, side-major (bounds[side][child], side 0-2 lo x y z, 3-5 hi x y z, world units,
+// indexable by slab side as slab_test.h's nearIdx/farIdx), and eight child references. An unused child has
+// lo = +inf, hi = -inf and reference kLeafBit (an empty leaf). Each row of 8 floats is 32-byte aligned: one
+// AVX register, or two SSE registers (children 0-3 and 4-7).
 struct alignas(64) BvhNode {
-    float bounds[6][4];
-    uint32_t child[4];
-    uint32_t pad[4];  // to 128 bytes: two whole cache lines
+    float bounds[6][kBvhWidth];
+    uint32_t child[kBvhWidth];
+    uint32_t pad[8];  // to 256 bytes: four whole cache lines
 
     bool used(int k) const { return !(bounds[0][k] > bounds[3][k]); }
 };
-static_assert(sizeof(BvhNode) == 128, "BvhNode must stay two cache lines");
+static_assert(sizeof(BvhNode) == 256, "BvhNode must stay four cache lines");
 
 // Minimal 64-byte aligned allocator for the node array.
 template <class T>
