@@ -405,6 +405,10 @@ private:
             for (size_t k; (k = next.fetch_add(1)) < bySize.size();) {
                 Queued& q = queue_[bySize[k]];
                 Builder sub(prims_, threads_, bins_, maxLeaf_, traversalCost_);
+                // Room for the usual subtree (about one node per 6 primitives) up front: growing by doubling
+                // would copy it and leave up to half of a 256-byte-node array as resident slack at the peak,
+                // when every subtree and the final array are alive at once. Untouched capacity stays virtual.
+                q.nodes.reserve(q.range.count() / 4 + 16);
                 sub.buildNode(q.range, q.nodes, false);
                 q.depth = sub.depth_;
             }

@@ -1,8 +1,8 @@
 // The SAH BVH (bvh.h) and its traversals (mesh_bvh.h, sphere_set.h) against brute force: same nearest hit (t
 // bit-equal, same triangle) and any-hit answers for random rays over real assimp-testmodels meshes.
 // Sections: brute force | structural invariants | real models | degenerate inputs | random triangle soups
-// (issue 14's 4-wide tree: sizes around the parallel-build threshold, ties, empty scenes, thread counts,
-// the 4-wide slab test) | spheres.
+// (issue 14's 8-wide tree: sizes around the parallel-build threshold, ties, empty scenes, thread counts,
+// the 8-wide slab test, AVX2 against SSE2 walks) | spheres.
 #include "trace/bvh.h"
 #include "trace/bvh_isa.h"
 #include "trace/bvh_traverse_avx2.h"
@@ -455,7 +455,7 @@ TEST(BvhBuild, ZeroAreaAndDuplicateTrianglesMatchBruteForce) {
     EXPECT_EQ(bvh.sourceTriangle(copy->slot), tris[firstCopy].source) << "a tie must go to the first copy";
 }
 
-// ---- Random triangle soups (the 4-wide tree) --------------------------------------------------------
+// ---- Random triangle soups (the 8-wide tree) --------------------------------------------------------
 
 // `n` random triangles in [-1, 1]^3, sizes from 1e-4 to 1 (log-uniform), a new part every 97 triangles, and
 // every 11th triangle an exact copy of an earlier one (exact ties in t).

@@ -1,4 +1,4 @@
-// MeshBvh: every triangle of a scene's meshes in one 4-wide SAH BVH (bvh.h), the vertex positions stored in
+// MeshBvh: every triangle of a scene's meshes in one 8-wide SAH BVH (bvh.h), the vertex positions stored in
 // leaf order next to which part and triangle each is (44 bytes per triangle; vertex normals are read from the
 // scene's shared geometry, which it keeps alive). Geometry only and immutable once built, so TraceScene
 // versions that differ only in materials, lights or camera share one (see trace_scene.h).
