@@ -365,9 +365,8 @@ private:
                 leaf.split.axis = e[0] >= e[1] && e[0] >= e[2] ? 0 : (e[1] >= e[2] ? 1 : 2);
                 leaf.split.median = true;
             }
+            // The halves stay leaves; no SAH for them (a further split of one takes the object median).
             std::pair<Range, Range> halves = apply(leaf);
-            evaluate(halves.first, top);
-            evaluate(halves.second, top);
             halves.first.leaf = halves.second.leaf = true;
             kids[pick] = halves.first;
             kids[n++] = halves.second;

@@ -4,10 +4,10 @@
 // (issue 14's 8-wide tree: sizes around the parallel-build threshold, ties, empty scenes, thread counts,
 // the 8-wide slab test, AVX2 against SSE2 walks) | spheres.
 #include "trace/bvh.h"
-#include "trace/bvh_isa.h"
-#include "trace/bvh_traverse_avx2.h"
 #include "scene/scene_load.h"
 #include "shading/lighting.h"
+#include "trace/bvh_isa.h"
+#include "trace/bvh_traverse_avx2.h"
 #include "trace/mesh_bvh.h"
 #include "trace/slab_test.h"
 #include "trace/sphere_set.h"
@@ -635,9 +635,8 @@ TEST(BvhIsa, Avx2WalksMatchTheBaselineBitForBit) {
     if (std::filesystem::exists(path)) scenes.push_back(loadScene(path));
     auto same = [](const std::optional<MeshHit>& a, const std::optional<MeshHit>& b) {
         if (a.has_value() != b.has_value()) return false;
-        return !a || (std::memcmp(&a->t, &b->t, 4) == 0 && a->slot == b->slot &&
-                      std::memcmp(&a->b0, &b->b0, 4) == 0 && std::memcmp(&a->b1, &b->b1, 4) == 0 &&
-                      std::memcmp(&a->b2, &b->b2, 4) == 0);
+        return !a || (std::memcmp(&a->t, &b->t, 4) == 0 && a->slot == b->slot && std::memcmp(&a->b0, &b->b0, 4) == 0 &&
+                      std::memcmp(&a->b1, &b->b1, 4) == 0 && std::memcmp(&a->b2, &b->b2, 4) == 0);
     };
     for (const Scene& sc : scenes) {
         const std::vector<SceneTri> tris = sceneTriangles(sc);

@@ -151,8 +151,8 @@ float traverseClosest(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& lea
     if (bvh.empty()) return tMax;
     const BoxRay4 r = makeBoxRay4(br);
     return traverseClosestWith(
-        bvh.nodes.data(), tMax, [&](const BvhNode& n, float t, float* tNear) { return slabHits8(r, n.bounds, t, tNear); },
-        leaf);
+        bvh.nodes.data(), tMax,
+        [&](const BvhNode& n, float t, float* tNear) { return slabHits8(r, n.bounds, t, tNear); }, leaf);
 }
 
 template <typename LeafFn>
@@ -160,8 +160,8 @@ bool traverseAny(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
     if (bvh.empty()) return false;
     const BoxRay4 r = makeBoxRay4(br);
     return traverseAnyWith(
-        bvh.nodes.data(), tMax, [&](const BvhNode& n, float t, float* tNear) { return slabHits8(r, n.bounds, t, tNear); },
-        leaf);
+        bvh.nodes.data(), tMax,
+        [&](const BvhNode& n, float t, float* tNear) { return slabHits8(r, n.bounds, t, tNear); }, leaf);
 }
 
 }  // namespace shadelab::trace

@@ -158,7 +158,8 @@ bool MeshBvh::anyHit(const Ray& ray, float tMax) const { return anyHit(ray, tMax
 bool MeshBvh::anyHit(const Ray& ray, float tMax, BvhIsa isa) const {
     if (bvh_.empty()) return false;
     const TriangleLeafData data{positions_.data(), source_.data()};
-    if (isa == BvhIsa::Avx2) return anyTriangleAvx2(bvh_.nodes.data(), makeBoxRay(ray), makeWatertightRay(ray), data, tMax);
+    if (isa == BvhIsa::Avx2)
+        return anyTriangleAvx2(bvh_.nodes.data(), makeBoxRay(ray), makeWatertightRay(ray), data, tMax);
     return traverseAny(bvh_, makeBoxRay(ray), tMax,
                        AnyTriangleLeaf<watertight_detail::BaselineTag>{data, makeWatertightRay(ray), tMax});
 }
