@@ -13,6 +13,10 @@
 #include <thread>
 #include <utility>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 namespace shadelab::trace {
 namespace {
 
@@ -347,30 +351,6 @@ private:
             kids[pick] = halves.first;
             kids[n++] = halves.second;
         }
-        // Room left over once every child is a leaf: split the leaves too (largest first), so the node's box
-        // test, which costs the same for any number of children, culls what would otherwise be triangle tests.
-        while (n < kBvhWidth) {
-            int pick = -1;
-            float pickArea = -1.0f;
-            for (int k = 0; k < n; ++k)
-                if (kids[k].count() > 1 && kids[k].box.area() > pickArea) {
-                    pick = k;
-                    pickArea = kids[k].box.area();
-                }
-            if (pick < 0) break;
-            Range& leaf = kids[pick];
-            if (leaf.split.axis < 0) {
-                float e[3];
-                for (int a = 0; a < 3; ++a) e[a] = leaf.centres.lane(true, a) - leaf.centres.lane(false, a);
-                leaf.split.axis = e[0] >= e[1] && e[0] >= e[2] ? 0 : (e[1] >= e[2] ? 1 : 2);
-                leaf.split.median = true;
-            }
-            // The halves stay leaves; no SAH for them (a further split of one takes the object median).
-            std::pair<Range, Range> halves = apply(leaf);
-            halves.first.leaf = halves.second.leaf = true;
-            kids[pick] = halves.first;
-            kids[n++] = halves.second;
-        }
         for (int k = 0; k < n; ++k) {
             const Range& c = kids[k];
             for (int a = 0; a < 3; ++a) {
@@ -420,6 +400,7 @@ private:
         size_t total = top.size();
         for (const Queued& q : queue_) total += q.nodes.size();
         top.reserve(total);
+        size_t freed = 0;
         for (Queued& q : queue_) {
             const uint32_t offset = uint32_t(top.size());
             for (BvhNode node : q.nodes) {
@@ -429,7 +410,17 @@ private:
             }
             top[q.parent].child[q.slot] = offset;
             depth_ = std::max(depth_, q.depth);
+            freed += q.nodes.size() * sizeof(BvhNode);
             NodeArray().swap(q.nodes);
+#ifdef __GLIBC__
+            // The subtrees were allocated by the worker threads, in their own malloc arenas, which keep freed
+            // pages resident: hand them back as the copy proceeds, so the final array and the subtrees not yet
+            // copied never add up to twice the nodes (about 140 MiB at 4.2 M triangles).
+            if (freed >= (size_t(32) << 20)) {
+                malloc_trim(0);
+                freed = 0;
+            }
+#endif
         }
         queue_.clear();
     }
