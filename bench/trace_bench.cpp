@@ -14,6 +14,7 @@
 #include "image/png.h"
 #include "scene/scene_load.h"
 #include "scene/view.h"
+#include "trace/bvh_isa.h"
 #include "trace/integrator.h"
 #include "trace/tile_renderer.h"
 #include "trace/trace_image.h"
@@ -30,6 +31,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -60,6 +62,10 @@ double median(std::vector<double> v) {
 }
 
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+// CPU seconds this process has used (all threads): on a loaded machine, rays per CPU-second move far less with
+// the other processes than rays per wall-clock second do.
+double cpuSeconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 void benchSpheres(const Options& o) {
     trace::TraceSettings s;
@@ -257,7 +263,7 @@ double mraysPerSecond(const RayCounts& c, double s) { return double(c.primary + 
 void printTreeStats(const char* what, const trace::Bvh& bvh) {
     size_t children = 0, leaves = 0, prims = 0;
     for (const trace::BvhNode& n : bvh.nodes)
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < trace::kBvhWidth; ++k) {
             if (!n.used(k)) continue;
             ++children;
             if (trace::isLeafRef(n.child[k])) ++leaves, prims += trace::leafCount(n.child[k]);
@@ -428,32 +434,40 @@ void benchIncoherent(const Options& o) {
     if (o.embree) es.emplace(scene);
 #endif
     // Runs alternate between the two (ours, Embree, ours, ...), so load from other processes hits both alike.
-    std::vector<double> ours, theirs;
+    std::vector<double> ours, theirs, oursCpu, theirsCpu;
     uint64_t hits = 0, eh = 0;
     for (int r = 0; r < o.runs; ++r) {
         auto t0 = Clock::now();
+        double c0 = cpuSeconds();
         hits = nearestHitsOurs(ts, rays, o.threads);
         double s = seconds(t0, Clock::now());
+        oursCpu.push_back(double(rays.size()) / (cpuSeconds() - c0) * 1e-6);
         ours.push_back(double(rays.size()) / s * 1e-6);
-        std::printf("  shadelab run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, ours.back());
+        std::printf("  shadelab run %d: %.3f s, %.2f Mrays/s (%.2f per CPU-second)\n", r + 1, s, ours.back(),
+                    oursCpu.back());
 #ifdef SHADELAB_HAVE_EMBREE
         if (!es) continue;
         t0 = Clock::now();
+        c0 = cpuSeconds();
         eh = nearestHitsEmbree(*es, rays, o.threads);
         s = seconds(t0, Clock::now());
+        theirsCpu.push_back(double(rays.size()) / (cpuSeconds() - c0) * 1e-6);
         theirs.push_back(double(rays.size()) / s * 1e-6);
-        std::printf("  embree run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, theirs.back());
+        std::printf("  embree run %d: %.3f s, %.2f Mrays/s (%.2f per CPU-second)\n", r + 1, s, theirs.back(),
+                    theirsCpu.back());
 #endif
     }
     const double oursMedian = median(ours);
     std::printf("incoherent %dx%d, %d threads: %zu cosine-distributed secondary rays, %llu hit\n", o.width, o.height,
                 o.threads, rays.size(), (unsigned long long)hits);
-    std::printf("shadelab incoherent: median of %d: %.2f Mrays/s\n", o.runs, oursMedian);
+    std::printf("shadelab incoherent (BVH walks: %s): median of %d: %.2f Mrays/s, %.2f Mrays per CPU-second\n",
+                trace::bvhIsaName(trace::defaultBvhIsa()), o.runs, oursMedian, median(oursCpu));
     if (theirs.empty()) return;
     const double embreeMedian = median(theirs);
-    std::printf("embree incoherent: %llu hit; median of %d: %.2f Mrays/s\n", (unsigned long long)eh, o.runs,
-                embreeMedian);
-    std::printf("ratio shadelab / embree, incoherent: %.2f (target >= 1.0)\n", oursMedian / embreeMedian);
+    std::printf("embree incoherent: %llu hit; median of %d: %.2f Mrays/s, %.2f Mrays per CPU-second\n",
+                (unsigned long long)eh, o.runs, embreeMedian, median(theirsCpu));
+    std::printf("ratio shadelab / embree, incoherent: %.2f (target >= 1.0); per CPU-second %.2f\n",
+                oursMedian / embreeMedian, median(oursCpu) / median(theirsCpu));
 }
 
 // ---- (d) scale: a generated grid of UV spheres ---------------------------------------------------------

@@ -1,4 +1,4 @@
-// Building the 4-wide BVH (design in bvh.h): binned SAH (Wald 2007, "On fast Construction of SAH-based
+// Building the 8-wide BVH (design in bvh.h): binned SAH (Wald 2007, "On fast Construction of SAH-based
 // Bounding Volume Hierarchies"; cost of MacDonald & Booth 1990) on 32-byte primitive references, nodes made
 // by repeated binary splits of the widest child, subtrees built on worker threads and appended in order.
 #include "trace/bvh.h"
@@ -12,6 +12,10 @@
 #include <numeric>
 #include <thread>
 #include <utility>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace shadelab::trace {
 namespace {
@@ -318,21 +322,21 @@ private:
         const uint32_t index = uint32_t(nodes.size());
         nodes.emplace_back();
         BvhNode empty;
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kBvhWidth; ++k) {
             for (int a = 0; a < 3; ++a) {
                 empty.bounds[a][k] = INFINITY;
                 empty.bounds[3 + a][k] = -INFINITY;
             }
             empty.child[k] = kLeafBit;
-            empty.pad[k] = 0;
         }
+        for (uint32_t& p : empty.pad) p = 0;
         nodes[index] = empty;
 
-        Range kids[4];
+        Range kids[kBvhWidth];
         int n = 1;
         kids[0] = r;
         for (;;) {
-            // Split the child of largest area that is not a leaf, until there are four.
+            // Split the child of largest area that is not a leaf, until there are kBvhWidth.
             int pick = -1;
             float pickArea = -1.0f;
             for (int k = 0; k < n; ++k)
@@ -340,7 +344,7 @@ private:
                     pick = k;
                     pickArea = kids[k].box.area();
                 }
-            if (pick < 0 || n == 4) break;
+            if (pick < 0 || n == kBvhWidth) break;
             std::pair<Range, Range> halves = apply(kids[pick]);
             evaluate(halves.first, top);
             evaluate(halves.second, top);
@@ -380,6 +384,10 @@ private:
             for (size_t k; (k = next.fetch_add(1)) < bySize.size();) {
                 Queued& q = queue_[bySize[k]];
                 Builder sub(prims_, threads_, bins_, maxLeaf_, traversalCost_);
+                // Room for the usual subtree (about one node per 6 primitives) up front: growing by doubling
+                // would copy it and leave up to half of a 256-byte-node array as resident slack at the peak,
+                // when every subtree and the final array are alive at once. Untouched capacity stays virtual.
+                q.nodes.reserve(q.range.count() / 4 + 16);
                 sub.buildNode(q.range, q.nodes, false);
                 q.depth = sub.depth_;
             }
@@ -392,6 +400,7 @@ private:
         size_t total = top.size();
         for (const Queued& q : queue_) total += q.nodes.size();
         top.reserve(total);
+        size_t freed = 0;
         for (Queued& q : queue_) {
             const uint32_t offset = uint32_t(top.size());
             for (BvhNode node : q.nodes) {
@@ -401,7 +410,17 @@ private:
             }
             top[q.parent].child[q.slot] = offset;
             depth_ = std::max(depth_, q.depth);
+            freed += q.nodes.size() * sizeof(BvhNode);
             NodeArray().swap(q.nodes);
+#ifdef __GLIBC__
+            // The subtrees were allocated by the worker threads, in their own malloc arenas, which keep freed
+            // pages resident: hand them back as the copy proceeds, so the final array and the subtrees not yet
+            // copied never add up to twice the nodes (about 140 MiB at 4.2 M triangles).
+            if (freed >= (size_t(32) << 20)) {
+                malloc_trim(0);
+                freed = 0;
+            }
+#endif
         }
         queue_.clear();
     }
@@ -445,7 +464,7 @@ float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
     const float rootArea = std::max(bvh.bounds.area(), 1e-30f);
     double cost = options.traversalCost;  // the root
     for (const BvhNode& nd : bvh.nodes)
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kBvhWidth; ++k) {
             if (!nd.used(k)) continue;
             Bounds b;
             b.lo = glm::vec3(nd.bounds[0][k], nd.bounds[1][k], nd.bounds[2][k]);

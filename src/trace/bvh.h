@@ -1,25 +1,33 @@
-// Bvh: a 4-wide bounding-volume hierarchy over boxes. It only sees boxes: the traversals live in
-// bvh_traverse.h and call back into the primitives (mesh_bvh.cpp for triangles, sphere_set.cpp for spheres).
+// Bvh: an 8-wide bounding-volume hierarchy over boxes. It only sees boxes: the traversals live in
+// bvh_traverse.h (and bvh_traverse_avx2.h) and call back into the primitives (mesh_bvh.cpp for triangles,
+// sphere_set.cpp for spheres).
 //
 // Design (issue 14: fast traversal of incoherent rays, fast builds of millions of triangles):
-// - Layout. A node holds the boxes of its (up to) four children as structure-of-arrays floats, one row of 4
-//   per box side (lo x, lo y, lo z, hi x, hi y, hi z), so one SSE register holds one side of all four boxes
-//   and a ray tests all four with 6 subtractions, 6 multiplications and a few min/max (bvh_traverse.h).
-//   A node is 128 bytes, two cache lines, aligned. Unused children have an inverted box (+inf, -inf) that
-//   every ray misses, so traversal needs no child count.
+// - Layout. A node holds the boxes of its (up to) eight children as structure-of-arrays floats, one row of 8
+//   per box side (lo x, lo y, lo z, hi x, hi y, hi z). One AVX register holds one side of all eight boxes, so
+//   on CPUs with AVX2 a ray tests all eight with 6 subtractions, 6 multiplications and a few min/max
+//   (bvh_traverse_avx2.h); x86-64's baseline SSE2 does the same in two halves of four (slab_test.h). Which one
+//   runs is chosen once per process (bvh_isa.h); both give the same bits. A node is 256 bytes, four cache
+//   lines, aligned. Unused children have an inverted box (+inf, -inf) that every ray misses, so traversal
+//   needs no child count. Eight children rather than four: fewer levels, so fewer nodes per ray (7.5 instead
+//   of 11 on issue 14's incoherent rays), each tested in one AVX2 step.
 // - Child references are 32 bits: an interior child is a node index; a leaf is kLeafBit | first << 4 | count,
 //   a range of at most 15 primitives in leaf order. So a tree holds fewer than 2^27 primitives.
 // - Build. Binned SAH (MacDonald & Booth 1990 cost; Wald 2007 binning, 16 bins) on primitive references that
 //   carry their own box (BvhPrim, 32 bytes), so binning and partitioning read memory sequentially. A node is
 //   made by splitting its range in two by SAH, then splitting the child of largest area again, until it has
-//   four children or every child is a leaf (the usual binary-to-wide collapse, done while building).
+//   eight children or every child is a leaf (the usual binary-to-wide collapse, done while building). Slots
+//   left free stay free (splitting leaves into them was measured: no faster, and a slower build).
 //   Below kMedianDepth binary splits the object median takes over, which bounds the depth for any input.
 // - Parallel build. The top of the tree is built on the calling thread, with the binning of large ranges
 //   split across threads; subtrees below a size threshold are queued and built by `threads` workers into
 //   their own node arrays, then appended in queue order. The result does not depend on the thread count or
 //   on scheduling: the same input gives the same nodes and the same leaf order.
 // - Memory. The builder's only scratch is the BvhPrim array the caller hands in (it becomes the leaf order);
-//   nodes are about n / 4 x 128 bytes (leaves average about 2 triangles, nodes about 3 children).
+//   nodes are about n / 6.4 x 256 bytes (about 40 bytes per primitive; on 2CylinderEngine leaves average 2
+//   triangles and nodes 4.2 children, on the sphere grid 2 and 4.4). The worker threads' subtree arrays are
+//   reserved up front and their pages handed back (malloc_trim) as they are copied into the final array, so
+//   the build's peak holds the nodes about once.
 #pragma once
 
 #include "scene/bounds.h"
@@ -40,17 +48,21 @@ inline uint32_t leafFirst(uint32_t ref) { return (ref & ~kLeafBit) >> 4; }
 inline uint32_t leafCount(uint32_t ref) { return ref & 15u; }
 inline uint32_t makeLeafRef(uint32_t first, uint32_t count) { return kLeafBit | first << 4 | count; }
 
-// One node: four child boxes, side-major (bounds[side][child], side 0-2 lo x y z, 3-5 hi x y z, world units,
-// indexable by slab side as slab_test.h's nearIdx/farIdx), and four child references. An unused child has
-// lo = +inf, hi = -inf and reference kLeafBit (an empty leaf).
+// Children per node.
+inline constexpr int kBvhWidth = 8;
+
+// One node: eight child boxes, side-major (bounds[side][child], side 0-2 lo x y z, 3-5 hi x y z, world units,
+// indexable by slab side as slab_test.h's nearIdx/farIdx), and eight child references. An unused child has
+// lo = +inf, hi = -inf and reference kLeafBit (an empty leaf). Each row of 8 floats is 32-byte aligned: one
+// AVX register, or two SSE registers (children 0-3 and 4-7).
 struct alignas(64) BvhNode {
-    float bounds[6][4];
-    uint32_t child[4];
-    uint32_t pad[4];  // to 128 bytes: two whole cache lines
+    float bounds[6][kBvhWidth];
+    uint32_t child[kBvhWidth];
+    uint32_t pad[8];  // to 256 bytes: four whole cache lines
 
     bool used(int k) const { return !(bounds[0][k] > bounds[3][k]); }
 };
-static_assert(sizeof(BvhNode) == 128, "BvhNode must stay two cache lines");
+static_assert(sizeof(BvhNode) == 256, "BvhNode must stay four cache lines");
 
 // Minimal 64-byte aligned allocator for the node array.
 template <class T>
@@ -78,7 +90,7 @@ struct BvhBuildOptions {
     int threads = 0;             // build threads; 0: std::thread::hardware_concurrency(). Small inputs use one.
 };
 
-// Deepest tree the builder makes, in binary splits (a 4-wide level is one to three of them); traversal
+// Deepest tree the builder makes, in binary splits (an 8-wide level is one to seven of them); traversal
 // stacks are sized from it.
 inline constexpr int kMaxBvhDepth = 64;
 

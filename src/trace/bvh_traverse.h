@@ -1,7 +1,12 @@
-// The two walks of the 4-wide BVH every primitive type shares: ordered closest-hit and early-out any-hit.
+// The two walks of the 8-wide BVH every primitive type shares: ordered closest-hit and early-out any-hit.
 // Primitive tests come in as leaf callbacks, so triangles (mesh_bvh.cpp) and spheres (sphere_set.cpp) walk
-// one code path. Each node's four child boxes are tested at once (slabHits4); the children hit are visited
-// nearest entry first, the others wait on a small fixed stack. No allocation, no virtual calls.
+// one code path. A node's eight child boxes are tested at once by a box test the caller picks (slabHits8 here,
+// on x86-64's baseline SSE2; bvh_traverse_avx2.cpp's AVX2 one); the children hit are visited nearest entry
+// first, the others wait on a small fixed stack. No allocation, no virtual calls.
+//
+// The walks are templates instantiated with the caller's own lambdas, and they call no inline function that is
+// not one too (only builtins), so the AVX2 translation unit's copies never stand in for the baseline ones at
+// link time (see bvh_traverse_avx2.h).
 #pragma once
 
 #include "trace/bvh.h"
@@ -14,51 +19,30 @@ namespace shadelab::trace {
 
 namespace bvh_detail {
 
-// A node pushes at most three children and the tree is at most kMaxBvhDepth nodes deep.
-inline constexpr int kStackSize = 3 * kMaxBvhDepth + 1;
+// A node pushes at most seven children and the tree is at most kMaxBvhDepth nodes deep.
+inline constexpr int kStackSize = (kBvhWidth - 1) * kMaxBvhDepth + 1;
 
 struct Entry {
     uint32_t ref;
     float tEntry;
 };
 
-// Starts loading a node that will be visited later (both of its cache lines); leaves are left alone.
-inline void prefetchNode(const BvhNode* nodes, uint32_t ref) {
-    if (isLeafRef(ref)) return;
-    const char* p = reinterpret_cast<const char*>(nodes + ref);
-    prefetchLine(p);
-    prefetchLine(p + 64);
-}
+// The reference of an unused child, never visited; also "no child to visit".
+inline constexpr uint32_t kNoChild = kLeafBit;
 
-// Index of the lowest set bit of a non-zero 4-bit mask.
-inline int lowestBit(int m) {
-#if defined(__GNUC__)
-    return __builtin_ctz(unsigned(m));
-#else
-    int k = 0;
-    while (!(m & (1 << k))) ++k;
-    return k;
-#endif
-}
-
-// One node step: tests the four child boxes of `node`, pushes the children hit beyond the nearest with
-// `push(ref, tEntry)` (farthest first, so they pop nearest first; equal entries pop in child order) and returns
-// the nearest child to visit next, or kNoChild when the ray misses all four.
-inline constexpr uint32_t kNoChild = kLeafBit;  // the reference of an unused child, never visited
-
+// Orders the children a node's box test hit (`mask`, bit k for child k; `tNear[k]` their entry distances):
+// pushes all but the nearest with `push(ref, tEntry)` (farthest first, so they pop nearest first; equal entries
+// pop in child order) and returns the nearest, or kNoChild when the mask is empty.
 template <typename Push>
-inline uint32_t stepNode(const BvhNode& node, const BoxRay4& r, float tMax, Push&& push) {
-    F4 tn;
-    int m = slabHits4(r, node.bounds, tMax, tn);
-    if (m == 0) return kNoChild;
-    const int i0 = lowestBit(m);
-    m &= m - 1;
-    if (m == 0) return node.child[i0];  // the common case: one child hit
-    float tNear[4];
-    store4(tNear, tn);
-    const int i1 = lowestBit(m);
-    m &= m - 1;
-    if (m == 0) {
+inline uint32_t orderChildren(const BvhNode& node, unsigned mask, const float* tNear, Push&& push) {
+    static_assert(kBvhWidth == 8, "the masks below hold 8 children");
+    if (mask == 0) return kNoChild;
+    const int i0 = __builtin_ctz(mask);
+    mask &= mask - 1;
+    if (mask == 0) return node.child[i0];  // the common case: one child hit
+    const int i1 = __builtin_ctz(mask);
+    mask &= mask - 1;
+    if (mask == 0) {
         if (tNear[i1] < tNear[i0]) {
             push(node.child[i0], tNear[i0]);
             return node.child[i1];
@@ -66,14 +50,14 @@ inline uint32_t stepNode(const BvhNode& node, const BoxRay4& r, float tMax, Push
         push(node.child[i1], tNear[i1]);
         return node.child[i0];
     }
-    // Three or four: sort them on the stack, farthest deepest, then take the nearest off the top.
-    Entry e[4];
+    // Three or more: sort them, farthest first, then push all but the nearest.
+    Entry e[kBvhWidth];
     int n = 0;
     e[n++] = {node.child[i0], tNear[i0]};
     e[n++] = {node.child[i1], tNear[i1]};
-    while (m) {
-        const int i = lowestBit(m);
-        m &= m - 1;
+    while (mask) {
+        const int i = __builtin_ctz(mask);
+        mask &= mask - 1;
         e[n++] = {node.child[i], tNear[i]};
     }
     // Insertion sort, farthest first; equal distances keep the higher child index deeper.
@@ -89,32 +73,40 @@ inline uint32_t stepNode(const BvhNode& node, const BoxRay4& r, float tMax, Push
 
 }  // namespace bvh_detail
 
-// Visits leaves that may hold a hit nearer than `tMax`, nearer children first. `leaf(first, count)` tests the
+// Visits leaves that may hold a hit nearer than `tMax`, nearer children first, from the root nodes[0] (of a
+// tree that is not empty). `boxes(node, tMax, tNear)`
+// tests a node's eight child boxes (returns the hit mask, fills tNear[8]); `leaf(first, count)` tests the
 // primitives at leaf slots [first, first + count) and returns the distance of the nearest hit so far (or the
 // bound it was given); subtrees entered beyond it are skipped. The bound is a local here, not shared with the
-// callback, so it stays in a register.
-template <typename LeafFn>
-void traverseClosest(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
+// callback, so it stays in a register. Returns the final bound.
+template <typename BoxFn, typename LeafFn>
+float traverseClosestWith(const BvhNode* nodes, float tMax, BoxFn&& boxes, LeafFn&& leaf) {
     using bvh_detail::Entry;
-    if (bvh.empty()) return;
-    const BvhNode* nodes = bvh.nodes.data();
-    const BoxRay4 r = makeBoxRay4(br);
+    // Starts loading a node that will be visited later (all four cache lines); leaves are left alone.
+    auto prefetch = [nodes](uint32_t c) {
+        if (c & kLeafBit) return;
+        const char* p = reinterpret_cast<const char*>(nodes + c);
+        for (int line = 0; line < 4; ++line) __builtin_prefetch(p + 64 * line);
+    };
     Entry stack[bvh_detail::kStackSize];
     int sp = 0;
     uint32_t ref = 0;  // the root node
     for (;;) {
-        if (!isLeafRef(ref)) {
-            ref = bvh_detail::stepNode(nodes[ref], r, tMax, [&](uint32_t c, float t) {
-                bvh_detail::prefetchNode(nodes, c);
+        if (!(ref & kLeafBit)) {
+            alignas(32) float tNear[kBvhWidth];
+            const BvhNode& node = nodes[ref];
+            const unsigned mask = unsigned(boxes(node, tMax, tNear));
+            ref = bvh_detail::orderChildren(node, mask, tNear, [&](uint32_t c, float t) {
+                prefetch(c);
                 stack[sp++] = Entry{c, t};
             });
             if (ref != bvh_detail::kNoChild) continue;
         } else {
-            tMax = leaf(leafFirst(ref), leafCount(ref));
+            tMax = leaf((ref & ~kLeafBit) >> 4, ref & 15u);
         }
         // Pop the next subtree that may still hold a hit no farther than the best so far.
         for (;;) {
-            if (sp == 0) return;
+            if (sp == 0) return tMax;
             --sp;
             if (stack[sp].tEntry <= tMax) break;
         }
@@ -123,29 +115,53 @@ void traverseClosest(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf
 }
 
 // True as soon as `leaf(first, count)` reports a hit closer than tMax; nearer children first, so an occluder
-// near the origin is found without visiting the far side.
-template <typename LeafFn>
-bool traverseAny(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
-    using bvh_detail::Entry;
-    if (bvh.empty()) return false;
-    const BvhNode* nodes = bvh.nodes.data();
-    const BoxRay4 r = makeBoxRay4(br);
+// near the origin is found without visiting the far side. `boxes` as for traverseClosestWith.
+template <typename BoxFn, typename LeafFn>
+bool traverseAnyWith(const BvhNode* nodes, float tMax, BoxFn&& boxes, LeafFn&& leaf) {
+    // Starts loading a node that will be visited later (all four cache lines); leaves are left alone.
+    auto prefetch = [nodes](uint32_t c) {
+        if (c & kLeafBit) return;
+        const char* p = reinterpret_cast<const char*>(nodes + c);
+        for (int line = 0; line < 4; ++line) __builtin_prefetch(p + 64 * line);
+    };
     uint32_t stack[bvh_detail::kStackSize];
     int sp = 0;
     uint32_t ref = 0;
     for (;;) {
-        if (!isLeafRef(ref)) {
-            ref = bvh_detail::stepNode(nodes[ref], r, tMax, [&](uint32_t c, float) {
-                bvh_detail::prefetchNode(nodes, c);
+        if (!(ref & kLeafBit)) {
+            alignas(32) float tNear[kBvhWidth];
+            const BvhNode& node = nodes[ref];
+            const unsigned mask = unsigned(boxes(node, tMax, tNear));
+            ref = bvh_detail::orderChildren(node, mask, tNear, [&](uint32_t c, float) {
+                prefetch(c);
                 stack[sp++] = c;
             });
             if (ref != bvh_detail::kNoChild) continue;
-        } else if (leaf(leafFirst(ref), leafCount(ref))) {
+        } else if (leaf((ref & ~kLeafBit) >> 4, ref & 15u)) {
             return true;
         }
         if (sp == 0) return false;
         ref = stack[--sp];
     }
+}
+
+// The baseline (SSE2) walks: slabHits8 as the box test. An empty tree is never entered.
+template <typename LeafFn>
+float traverseClosest(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
+    if (bvh.empty()) return tMax;
+    const BoxRay4 r = makeBoxRay4(br);
+    return traverseClosestWith(
+        bvh.nodes.data(), tMax,
+        [&](const BvhNode& n, float t, float* tNear) { return slabHits8(r, n.bounds, t, tNear); }, leaf);
+}
+
+template <typename LeafFn>
+bool traverseAny(const Bvh& bvh, const BoxRay& br, float tMax, LeafFn&& leaf) {
+    if (bvh.empty()) return false;
+    const BoxRay4 r = makeBoxRay4(br);
+    return traverseAnyWith(
+        bvh.nodes.data(), tMax,
+        [&](const BvhNode& n, float t, float* tNear) { return slabHits8(r, n.bounds, t, tNear); }, leaf);
 }
 
 }  // namespace shadelab::trace

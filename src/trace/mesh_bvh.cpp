@@ -4,6 +4,8 @@
 #include "trace/mesh_bvh.h"
 
 #include "trace/bvh_traverse.h"
+#include "trace/bvh_traverse_avx2.h"
+#include "trace/triangle_leaf.h"
 #include "trace/watertight.h"
 #include "util/check.h"
 
@@ -131,36 +133,35 @@ bool MeshBvh::matches(const Scene& scene) const {
 }
 
 std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
-    if (bvh_.empty()) return std::nullopt;  // skip the per-ray set-up for scenes without triangles
-    const WatertightRay wr = makeWatertightRay(ray);
-    MeshHit best{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
-    traverseClosest(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
-        for (uint32_t s = first, end = first + count; s < end; ++s) {
-            const float* v = &positions_[size_t(s) * 9];
-            const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, best.t);
-            if (!h) continue;
-            // Strictly nearer wins; an exact tie goes to the lower scene-order index.
-            const bool better = best.slot == UINT32_MAX
-                                    ? h->t < tMax
-                                    : (h->t < best.t || (h->t == best.t && source_[s] < source_[best.slot]));
-            if (better) best = MeshHit{h->t, s, h->b0, h->b1, h->b2};
-        }
-        return best.t;
-    });
-    return best.slot == UINT32_MAX ? std::nullopt : std::optional<MeshHit>(best);
+    return closestHit(ray, tMax, defaultBvhIsa());
 }
 
-bool MeshBvh::anyHit(const Ray& ray, float tMax) const {
+std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax, BvhIsa isa) const {
+    if (bvh_.empty()) return std::nullopt;  // skip the per-ray set-up for scenes without triangles
+    const TriangleLeafData data{positions_.data(), source_.data()};
+    const TriangleLeafHit none{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
+    TriangleLeafHit best;
+    if (isa == BvhIsa::Avx2) {
+        best = none;
+        closestTriangleAvx2(bvh_.nodes.data(), makeBoxRay(ray), makeWatertightRay(ray), data, best);
+    } else {
+        ClosestTriangleLeaf<watertight_detail::BaselineTag> leaf{data, makeWatertightRay(ray), tMax, none};
+        traverseClosest(bvh_, makeBoxRay(ray), tMax, leaf);
+        best = leaf.best;
+    }
+    if (best.slot == UINT32_MAX) return std::nullopt;
+    return MeshHit{best.t, best.slot, best.b0, best.b1, best.b2};
+}
+
+bool MeshBvh::anyHit(const Ray& ray, float tMax) const { return anyHit(ray, tMax, defaultBvhIsa()); }
+
+bool MeshBvh::anyHit(const Ray& ray, float tMax, BvhIsa isa) const {
     if (bvh_.empty()) return false;
-    const WatertightRay wr = makeWatertightRay(ray);
-    return traverseAny(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
-        for (uint32_t s = first, end = first + count; s < end; ++s) {
-            const float* v = &positions_[size_t(s) * 9];
-            const std::optional<TriangleHit> h = intersectTriangle(wr, v, v + 3, v + 6, tMax);
-            if (h && h->t < tMax) return true;
-        }
-        return false;
-    });
+    const TriangleLeafData data{positions_.data(), source_.data()};
+    if (isa == BvhIsa::Avx2)
+        return anyTriangleAvx2(bvh_.nodes.data(), makeBoxRay(ray), makeWatertightRay(ray), data, tMax);
+    return traverseAny(bvh_, makeBoxRay(ray), tMax,
+                       AnyTriangleLeaf<watertight_detail::BaselineTag>{data, makeWatertightRay(ray), tMax});
 }
 
 }  // namespace shadelab::trace

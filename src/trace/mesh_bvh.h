@@ -1,4 +1,4 @@
-// MeshBvh: every triangle of a scene's meshes in one 4-wide SAH BVH (bvh.h), the vertex positions stored in
+// MeshBvh: every triangle of a scene's meshes in one 8-wide SAH BVH (bvh.h), the vertex positions stored in
 // leaf order next to which part and triangle each is (44 bytes per triangle; vertex normals are read from the
 // scene's shared geometry, which it keeps alive). Geometry only and immutable once built, so TraceScene
 // versions that differ only in materials, lights or camera share one (see trace_scene.h).
@@ -6,6 +6,7 @@
 
 #include "scene/scene.h"
 #include "trace/bvh.h"
+#include "trace/bvh_isa.h"
 #include "trace/ray.h"
 
 #include <cstdint>
@@ -34,9 +35,13 @@ public:
 
     // The nearest hit with 0 < t < tMax. Exactly equal distances go to the lower sourceTriangle(), so
     // the answer does not depend on traversal order (brute force over the scene gives the same hit).
+    // The walks use defaultBvhIsa(); the overloads taking an isa (available: bvhIsaAvailable) give the same
+    // answers bit for bit, and exist for tests and benchmarks.
     std::optional<MeshHit> closestHit(const Ray& ray, float tMax) const;
+    std::optional<MeshHit> closestHit(const Ray& ray, float tMax, BvhIsa isa) const;
     // Whether any triangle is hit at 0 < t < tMax (shadow rays): stops at the first one found.
     bool anyHit(const Ray& ray, float tMax) const;
+    bool anyHit(const Ray& ray, float tMax, BvhIsa isa) const;
 
     size_t triangleCount() const { return part_.size(); }
     // Vertex positions of a slot as 9 floats (v0, v1, v2), world units.

@@ -1,4 +1,4 @@
-// F4: four floats in one SSE register, the few operations the BVH builder and its 4-wide box test need.
+// F4: four floats in one SSE register, the few operations the BVH builder and its SSE2 box test need.
 // x86-64's baseline (SSE2) only, so the binary runs on any x86-64; other targets get a plain-array version
 // with the same results (min/max as `a < b ? a : b`, as _mm_min_ps; IEEE add/sub/mul are the same everywhere).
 #pragma once

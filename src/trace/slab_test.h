@@ -40,13 +40,14 @@ inline BoxRay makeBoxRay(const Ray& ray) {
 // the float slab test conservative, so a box is never culled while a primitive inside it is hit.
 inline constexpr float kSlabFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// The slab test of one ray against the four child boxes of a BVH node, `bounds[side][child]` (side 0-2 lo
-// x, y, z; 3-5 hi x, y, z; 16-byte aligned rows). Returns a mask with bit k set when the ray meets box k at
-// some 0 <= t <= tMax, and sets tNear to where it enters each (clamped to 0 when the origin is inside). An
-// inverted box (lo > hi) is always missed. Per lane:
+// The slab test of one ray against four child boxes of a BVH node, `bounds[side][first + k]` for k = 0-3
+// (side 0-2 lo x, y, z; 3-5 hi x, y, z; 16-byte aligned rows). Returns a mask with bit k set when the ray meets
+// box k at some 0 <= t <= tMax, and sets tNear to where it enters each (clamped to 0 when the origin is
+// inside). An inverted box (lo > hi) is always missed. Per lane:
 //   max(tx0, ty0, tz0, 0) <= min(tx1 · s, ty1 · s, tz1 · s, tMax), with s = kSlabFarScale
 // (for tMax >= 0 the same as tNear <= tFar, tFar >= 0, tNear <= tMax; a negative tMax, for which no hit with
-// t > 0 exists, misses everything).
+// t > 0 exists, misses everything). bvh_traverse_avx2.cpp evaluates the same expression, operation for
+// operation, on eight lanes at once, so both give the same bits.
 struct BoxRay4 {
     F4 org[3], invDir[3];
     int nearIdx[3], farIdx[3];
@@ -63,17 +64,28 @@ inline BoxRay4 makeBoxRay4(const BoxRay& r) {
     return b;
 }
 
-inline int slabHits4(const BoxRay4& r, const float (*bounds)[4], float tMax, F4& tNear) {
-    const F4 tx0 = (load4(bounds[r.nearIdx[0]]) - r.org[0]) * r.invDir[0];
-    const F4 tx1 = (load4(bounds[r.farIdx[0]]) - r.org[0]) * r.invDir[0];
-    const F4 ty0 = (load4(bounds[r.nearIdx[1]]) - r.org[1]) * r.invDir[1];
-    const F4 ty1 = (load4(bounds[r.farIdx[1]]) - r.org[1]) * r.invDir[1];
-    const F4 tz0 = (load4(bounds[r.nearIdx[2]]) - r.org[2]) * r.invDir[2];
-    const F4 tz1 = (load4(bounds[r.farIdx[2]]) - r.org[2]) * r.invDir[2];
+template <int Width>
+inline int slabHits4(const BoxRay4& r, const float (*bounds)[Width], int first, float tMax, F4& tNear) {
+    const F4 tx0 = (load4(bounds[r.nearIdx[0]] + first) - r.org[0]) * r.invDir[0];
+    const F4 tx1 = (load4(bounds[r.farIdx[0]] + first) - r.org[0]) * r.invDir[0];
+    const F4 ty0 = (load4(bounds[r.nearIdx[1]] + first) - r.org[1]) * r.invDir[1];
+    const F4 ty1 = (load4(bounds[r.farIdx[1]] + first) - r.org[1]) * r.invDir[1];
+    const F4 tz0 = (load4(bounds[r.nearIdx[2]] + first) - r.org[2]) * r.invDir[2];
+    const F4 tz1 = (load4(bounds[r.farIdx[2]] + first) - r.org[2]) * r.invDir[2];
     const F4 tn = max4(max4(tx0, ty0), max4(tz0, splat4(0.0f)));
     const F4 tf = min4(min4(tx1, ty1), tz1) * splat4(kSlabFarScale);
     tNear = tn;
     return lessEqualMask(tn, min4(tf, splat4(tMax)));
+}
+
+// The same for eight boxes, `bounds[side][k]` for k = 0-7, as two groups of four: bit k of the mask for box
+// k, tNear[k] its entry distance.
+inline int slabHits8(const BoxRay4& r, const float (*bounds)[8], float tMax, float* tNear) {
+    F4 lo, hi;
+    const int m = slabHits4(r, bounds, 0, tMax, lo) | slabHits4(r, bounds, 4, tMax, hi) << 4;
+    store4(tNear, lo);
+    store4(tNear + 4, hi);
+    return m;
 }
 
 }  // namespace shadelab::trace

@@ -45,9 +45,13 @@ struct TriangleHit {
     float b0, b1, b2;  // barycentric weights of v0, v1, v2 (sum 1 up to rounding)
 };
 
-// The triangle (v0, v1, v2), each a float[3], hit at 0 < t <= tMax; std::nullopt otherwise.
-inline std::optional<TriangleHit> intersectTriangle(const WatertightRay& r, const float* v0, const float* v1,
-                                                    const float* v2, float tMax) {
+// The test itself: true with `out` set when the triangle (v0, v1, v2), each a float[3], is hit at 0 < t <= tMax.
+// A template on a tag type only so that bvh_traverse_avx2.cpp can instantiate its own copy (with a tag of its
+// own) for AVX2 without the linker ever taking it for the baseline one; plain IEEE float and double operations
+// with no library calls, so every copy rounds alike.
+template <typename Tag>
+inline bool intersectTriangleT(const WatertightRay& r, const float* v0, const float* v1, const float* v2, float tMax,
+                               TriangleHit& out) {
     // Vertices relative to the ray origin, read straight in the permuted order (x, y, z = kx, ky, kz).
     const int kx = r.kx, ky = r.ky, kz = r.kz;
     const float Akx = v0[kx] - r.ox, Aky = v0[ky] - r.oy, Akz = v0[kz] - r.oz;
@@ -70,17 +74,30 @@ inline std::optional<TriangleHit> intersectTriangle(const WatertightRay& r, cons
         V = float(double(Ax) * double(Cy) - double(Ay) * double(Cx));
         W = float(double(Bx) * double(Ay) - double(By) * double(Ax));
     }
-    if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return std::nullopt;
+    if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return false;
     const float det = U + V + W;
-    if (det == 0.0f) return std::nullopt;  // the ray lies in the triangle's plane
+    if (det == 0.0f) return false;  // the ray lies in the triangle's plane
 
     // Scaled hit distance from the sheared z coordinates.
     const float Az = r.Sz * Akz, Bz = r.Sz * Bkz, Cz = r.Sz * Ckz;
     const float T = U * Az + V * Bz + W * Cz;
     const float rcpDet = 1.0f / det;
     const float t = T * rcpDet;
-    if (!(t > 0.0f && t <= tMax)) return std::nullopt;  // also rejects NaN
-    return TriangleHit{t, U * rcpDet, V * rcpDet, W * rcpDet};
+    if (!(t > 0.0f && t <= tMax)) return false;  // also rejects NaN
+    out = TriangleHit{t, U * rcpDet, V * rcpDet, W * rcpDet};
+    return true;
+}
+
+namespace watertight_detail {
+struct BaselineTag {};
+}  // namespace watertight_detail
+
+// The triangle (v0, v1, v2), each a float[3], hit at 0 < t <= tMax; std::nullopt otherwise.
+inline std::optional<TriangleHit> intersectTriangle(const WatertightRay& r, const float* v0, const float* v1,
+                                                    const float* v2, float tMax) {
+    TriangleHit h;
+    if (!intersectTriangleT<watertight_detail::BaselineTag>(r, v0, v1, v2, tMax, h)) return std::nullopt;
+    return h;
 }
 
 }  // namespace shadelab::trace

@@ -1,0 +1,30 @@
+// MeshBvh's two walks with an AVX2 box test: a node's eight child boxes in one register per box side.
+// Compiled alone with -mavx2 (bvh_traverse_avx2.cpp); call only where bvhIsaAvailable(BvhIsa::Avx2).
+//
+// Same answers as the baseline walks, bit for bit: the box test evaluates slab_test.h's expression operation
+// for operation (no FMA: the file is built with -ffp-contract=off and without -mfma), so the walks visit the
+// same nodes in the same order, and the leaf tests are triangle_leaf.h's. The AVX2 file instantiates every
+// template it uses with types of its own, so the linker can never hand its AVX2 code to a baseline caller.
+#pragma once
+
+#include "trace/bvh.h"
+#include "trace/slab_test.h"
+#include "trace/triangle_leaf.h"
+#include "trace/watertight.h"
+
+#include <cstdint>
+
+namespace shadelab::trace {
+
+// The nearest triangle hit nearer than best.t (updated in place; best.slot stays UINT32_MAX without one), from
+// the root nodes[0] of a tree that is not empty. As ClosestTriangleLeaf with tMax = best.t on entry.
+void closestTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
+                         TriangleLeafHit& best);
+// Whether any triangle is hit at 0 < t < tMax.
+bool anyTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
+                     float tMax);
+
+// The AVX2 box test alone, for tests: slabHits8's mask and tNear[8] (bounds rows 32-byte aligned).
+int slabHits8Avx2(const BoxRay& ray, const float (*bounds)[8], float tMax, float* tNear);
+
+}  // namespace shadelab::trace
