@@ -1,6 +1,7 @@
-// MeshTextures: the GL copies of the scene's shared Textures (scene/texture.h), uploaded on first use as
-// RGBA32F with every level of the texture's own mip chain, so mesh.frag's texelFetch reads exactly the texels
-// the tracer reads. Keyed by the shared object; a texture no longer in the scene is dropped by prune().
+// MeshTextures: the GL copies of the scene's shared Textures (scene/texture.h), uploaded on first use with
+// every level of the texture's own 8-bit mip chain, each code as its half-float linear value (RGBA16F,
+// shading/texel_decode.h), so mesh.frag's texelFetch reads exactly the floats the tracer decodes. Keyed by the shared
+// object; a texture no longer in the scene is dropped by prune().
 #pragma once
 
 #include "gl/objects.h"
@@ -9,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <vector>
 
 namespace shadelab::raster {
 
@@ -26,6 +28,7 @@ private:
         gl::Texture gl;
     };
     std::map<const Texture*, Entry> uploaded_;
+    std::vector<uint16_t> halves_;  // the level being uploaded, as half floats (kept: no fresh pages per texture)
 };
 
 }  // namespace shadelab::raster

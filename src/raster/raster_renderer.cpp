@@ -229,7 +229,7 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
             const Material& mat = m.parts[pi].material;
             for (const TextureBinding* b : {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture,
                                             &mat.occlusionTexture, &mat.emissiveTexture})
-                if (b->texture) textures.insert(b->texture.get());
+                if (b->texture && textures.insert(b->texture.get()).second) textures_.texture(b->texture);
             rebased.resize(g.indices.size());
             for (size_t k = 0; k < g.indices.size(); ++k) rebased[k] = g.indices[k] + uint32_t(vBase);
             glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(iBase * sizeof(uint32_t)),

@@ -41,7 +41,8 @@ public:
     // Compiles the programs; needs a current GL 3.3 core context. Throws InputError on shader errors.
     explicit RasterRenderer(const gl::ShaderLibrary& shaders = gl::ShaderLibrary());
 
-    // Uploads every mesh part. Call again when geometry changes; materials are read at draw time.
+    // Uploads every mesh part and the textures its material has (a texture a later material edit binds is
+    // uploaded at its first draw). Call again when geometry changes; materials are read at draw time.
     void uploadMeshes(const Scene& scene);
 
     // Draws the scene (or one band of it) into the internal target, with coverage ids when asked. The
@@ -143,7 +144,7 @@ private:
 };
 
 // Number of bands that keeps the RGBA32F target near `maxTargetBytes` (1 for small images).
-int bandCount(int width, int height, size_t maxTargetBytes = size_t(8) << 20);
+int bandCount(int width, int height, size_t maxTargetBytes = size_t(32) << 20);
 
 // Convenience for one-shot renders: draw, then read colour (and coverage when asked).
 struct RasterOutput {
