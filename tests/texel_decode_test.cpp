@@ -1,9 +1,9 @@
-// 8-bit texels (issue 16): the rasterizer's reading of an uploaded texture (MeshTextures' RGBA16F levels,
-// texelFetch as mesh.frag uses it) gives exactly the floats the tracer decodes through shading/texel_decode.h's
-// tables, for all 256 codes of every channel and every mip level; and the mip chain's fast sRGB encoder equals
-// image/encode.h's encodeChannel. Negative controls: an sRGB texture read as if linear, and a one-ulp change
-// of one table entry, must be caught. (llvmpipe's own GL_SRGB8_ALPHA8 decoding, tried first, was off from the
-// exact values by up to 1.2e-3 on 3,539 of these 3,584 channel values, and its GL_RGBA8 by one ulp on 1,968.)
+// 8-bit texels (issue 16): the rasterizer's reading of an uploaded texture (MeshTextures' GL_SRGB8_ALPHA8 /
+// GL_RGBA8 levels, texelFetch as mesh.frag uses it) against the floats the tracer decodes through
+// shading/texel_decode.h's tables, for all 256 codes of every channel and every mip level: within
+// kGlTexelDecodeError, and the measured difference printed (llvmpipe is not bit-exact: its sRGB decoding is a
+// polynomial). Also: the mip chain's fast sRGB encoder equals image/encode.h's encodeChannel. Negative
+// controls: an sRGB texture that the tracer would read as linear, and a table entry 1/255 off, must fail.
 #include "shading/texel_decode.h"
 #include "gl/program.h"
 #include "gl_fixture.h"
@@ -14,6 +14,7 @@
 #include "test_output.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -68,11 +69,13 @@ ImageF fetchLevel(const Texture& tex, raster::MeshTextures& uploaded, const std:
 }
 
 struct Mismatch {
-    int count = 0;
-    float worst = 0.0f;
+    int count = 0;       // channel values more than kGlTexelDecodeError apart
+    int inexact = 0;     // channel values not bit-identical
+    int total = 0;       // channel values compared
+    float worst = 0.0f;  // largest difference
 };
 
-// Every texel of every level, GL against `decode` (the tracer's reading), bit for bit.
+// Every texel of every level, GL against `decode` (the tracer's reading).
 template <class Decode>
 Mismatch compareAllLevels(const std::shared_ptr<const Texture>& tex, Decode decode, const std::string& csv) {
     raster::MeshTextures uploaded;
@@ -86,10 +89,13 @@ Mismatch compareAllLevels(const std::shared_ptr<const Texture>& tex, Decode deco
                 const glm::vec4 want = decode(level, x, y);
                 for (int k = 0; k < 4; ++k) {
                     const float got = gl.pixel(x, y)[k];
+                    ++m.total;
                     if (std::memcmp(&got, &want[k], sizeof(float)) == 0) continue;
+                    ++m.inexact;
+                    m.worst = std::max(m.worst, std::abs(got - want[k]));
+                    if (std::abs(got - want[k]) <= shading::kGlTexelDecodeError) continue;
                     if (m.count++ < 64)
                         report << level << ',' << x << ',' << y << ',' << k << ',' << got << ',' << want[k] << '\n';
-                    m.worst = std::max(m.worst, std::abs(got - want[k]));
                 }
             }
     }
@@ -103,6 +109,8 @@ TEST_F(TexelDecode, SrgbTexelFetchEqualsTheTable) {
     ASSERT_EQ(tex->levels.size(), 9u);  // 256×3, 128×1, ..., 1×1
     const Mismatch m = compareAllLevels(
         tex, [&](size_t level, int x, int y) { return tex->texel(level, x, y); }, "texel_decode_srgb.csv");
+    std::printf("sRGB: %d of %d channel values not bit-identical, worst %.3g (bound %.3g)\n", m.inexact, m.total,
+                double(m.worst), double(shading::kGlTexelDecodeError));
     EXPECT_EQ(m.count, 0) << "worst difference " << m.worst << " (texel_decode_srgb.csv)";
 }
 
@@ -110,6 +118,8 @@ TEST_F(TexelDecode, LinearTexelFetchEqualsTheTable) {
     const auto tex = allCodes(false);
     const Mismatch m = compareAllLevels(
         tex, [&](size_t level, int x, int y) { return tex->texel(level, x, y); }, "texel_decode_linear.csv");
+    std::printf("UNORM8: %d of %d channel values not bit-identical, worst %.3g (bound %.3g)\n", m.inexact, m.total,
+                double(m.worst), double(shading::kGlTexelDecodeError));
     EXPECT_EQ(m.count, 0) << "worst difference " << m.worst << " (texel_decode_linear.csv)";
 }
 
@@ -121,45 +131,22 @@ TEST_F(TexelDecode, NegativeControlsAreCaught) {
         [&](size_t level, int x, int y) {
             const TextureLevel& l = tex->levels[level];
             const uint8_t* p = &l.texels[(size_t(y) * size_t(l.width) + size_t(x)) * 4];
-            const auto& u = shading::unormDecodeTable().value;
+            const auto& u = shading::unormDecodeTable();
             return glm::vec4(u[p[0]], u[p[1]], u[p[2]], u[p[3]]);
         },
         "texel_decode_skipped.csv");
-    EXPECT_GT(skipped.count, 256 * 3 * 2);
-    // One ulp off in one table entry is caught too: the comparison is bit for bit.
+    EXPECT_GT(skipped.count, 256 * 3);
+    // A table off by one code's step in one entry is caught, though the bound tolerates llvmpipe's rounding.
     const int code = 128;
-    const Mismatch ulp = compareAllLevels(
+    const Mismatch step = compareAllLevels(
         tex,
         [&](size_t level, int x, int y) {
             glm::vec4 v = tex->texel(level, x, y);
-            if (level == 0 && x == code && y == 0) v.r = std::nextafter(v.r, std::numeric_limits<float>::infinity());
+            if (level == 0 && x == code && y == 0) v.r = shading::srgbDecodeTable()[code + 1];
             return v;
         },
-        "texel_decode_ulp.csv");
-    EXPECT_EQ(ulp.count, 1);
-}
-
-// The tables: each value is the exact one rounded to the nearest half, so within half a half-ulp (2^-12
-// relative) of it, strictly increasing (no two codes merge), and the ends exact.
-TEST(TexelDecodeTables, HalfRoundedExactValues) {
-    for (bool srgb : {true, false}) {
-        const auto& t = srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable();
-        for (int i = 0; i < 256; ++i) {
-            const double c = i / 255.0;
-            const double exact = !srgb ? c : c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-            EXPECT_LE(std::abs(double(t.value[size_t(i)]) - exact), exact * std::ldexp(1.0, -11) + 1e-12) << i;
-            if (i > 0) {
-                EXPECT_GT(t.value[size_t(i)], t.value[size_t(i) - 1]) << i;
-            }
-            EXPECT_EQ(double(t.value[size_t(i)]), shading::halfBitsValue(t.half[size_t(i)]));
-        }
-        EXPECT_EQ(t.value[0], 0.0f);
-        EXPECT_EQ(t.value[255], 1.0f);
-    }
-    // Negative control: a value two halves away is outside that bound.
-    const double exact = std::pow((128 / 255.0 + 0.055) / 1.055, 2.4);
-    const double stepped = shading::halfBitsValue(uint16_t(shading::srgbDecodeTable().half[128] + 2));
-    EXPECT_GT(std::abs(stepped - exact), exact * std::ldexp(1.0, -11));
+        "texel_decode_step.csv");
+    EXPECT_EQ(step.count, 1);
 }
 
 // The mip chain's fast sRGB encoder against image/encode.h's (double precision, round half up): a fine sweep

@@ -1,6 +1,6 @@
-// MeshTextures: the GL copies of the scene's shared Textures (scene/texture.h), uploaded on first use with
-// every level of the texture's own 8-bit mip chain, each code as its half-float linear value (RGBA16F,
-// shading/texel_decode.h), so mesh.frag's texelFetch reads exactly the floats the tracer decodes. Keyed by the shared
+// MeshTextures: the GL copies of the scene's shared Textures (scene/texture.h), uploaded as the scene's meshes
+// are (or on first use) with every level of the texture's own 8-bit mip chain, as GL_SRGB8_ALPHA8 (colour
+// maps) or GL_RGBA8, so that mesh.frag's texelFetch decodes the very codes the tracer decodes. Keyed by the shared
 // object; a texture no longer in the scene is dropped by prune().
 #pragma once
 
@@ -10,7 +10,6 @@
 #include <map>
 #include <memory>
 #include <set>
-#include <vector>
 
 namespace shadelab::raster {
 
@@ -28,7 +27,6 @@ private:
         gl::Texture gl;
     };
     std::map<const Texture*, Entry> uploaded_;
-    std::vector<uint16_t> halves_;  // the level being uploaded, as half floats (kept: no fresh pages per texture)
 };
 
 }  // namespace shadelab::raster

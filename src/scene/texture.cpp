@@ -3,7 +3,6 @@
 #include "scene/texture.h"
 
 #include "shading/texel_decode.h"
-#include "util/split_rows.h"
 
 #include <algorithm>
 #include <array>
@@ -67,13 +66,13 @@ uint8_t encodeLinear(float v) {
 // 2d+2 for the last destination texel of an odd size.
 int spanOf(int d, int src, int dst) { return (d == dst - 1 && src > 2 * dst) ? 3 : std::min(2, src - 2 * d); }
 
-constexpr long long kSplitTexels = 1 << 16;  // a level of at least this many texels is split across two threads
-
-// Rows [yBegin, yEnd) of one 2×2 box-filter step: `dst` (float RGBA, dw × dh) from the source's linear texels,
-// read by `at(x, y, sum)`, which adds texel (x, y) to sum.
+// One 2×2 box-filter step: `dst` (float RGBA, dw × dh) from the source's linear texels, read by
+// `at(x, y, sum)`, which adds texel (x, y) to sum.
 template <class Read>
-void halveRows(int sw, int sh, const Read& at, float* dst, int dw, int dh, int yBegin, int yEnd) {
-    for (int y = yBegin; y < yEnd; ++y) {
+void halve(int sw, int sh, const Read& at, float* dst, int& dw, int& dh) {
+    dw = std::max(1, sw / 2);
+    dh = std::max(1, sh / 2);
+    for (int y = 0; y < dh; ++y) {
         const int y0 = sh == 1 ? 0 : 2 * y, ny = sh == 1 ? 1 : spanOf(y, sh, dh);
         for (int x = 0; x < dw; ++x) {
             const int x0 = sw == 1 ? 0 : 2 * x, nx = sw == 1 ? 1 : spanOf(x, sw, dw);
@@ -87,30 +86,18 @@ void halveRows(int sw, int sh, const Read& at, float* dst, int dw, int dh, int y
     }
 }
 
-// One whole step; a large level is split across two threads by rows (util/split_rows.h), which does not
-// change the result.
-template <class Read>
-void halve(int sw, int sh, const Read& at, float* dst, int& dw, int& dh) {
-    dw = std::max(1, sw / 2);
-    dh = std::max(1, sh / 2);
-    const int w = dw, h = dh;
-    splitRows(h, w, kSplitTexels, [&](int begin, int end) { halveRows(sw, sh, at, dst, w, h, begin, end); });
-}
-
 TextureLevel encodeLevel(const float* linear, int w, int h, bool srgb) {
     TextureLevel l;
     l.width = w;
     l.height = h;
     l.texels.resize(size_t(w) * size_t(h) * kTexelBytes);
     const SrgbEncoder& enc = srgbEncoder();
-    splitRows(h, w, kSplitTexels, [&](int begin, int end) {
-        for (size_t i = size_t(begin) * size_t(w); i < size_t(end) * size_t(w); ++i) {
-            const float* v = linear + 4 * i;
-            uint8_t* p = &l.texels[4 * i];
-            for (int k = 0; k < 3; ++k) p[k] = srgb ? enc(v[k]) : encodeLinear(v[k]);
-            p[3] = encodeLinear(v[3]);
-        }
-    });
+    for (size_t i = 0; i < size_t(w) * size_t(h); ++i) {
+        const float* v = linear + 4 * i;
+        uint8_t* p = &l.texels[4 * i];
+        for (int k = 0; k < 3; ++k) p[k] = srgb ? enc(v[k]) : encodeLinear(v[k]);
+        p[3] = encodeLinear(v[3]);
+    }
     return l;
 }
 
@@ -127,8 +114,8 @@ size_t Texture::texelBytes() const {
 glm::vec4 Texture::texel(size_t level, int x, int y) const {
     const TextureLevel& l = levels[level];
     const uint8_t* p = &l.texels[(size_t(y) * size_t(l.width) + size_t(x)) * kTexelBytes];
-    const std::array<float, 256>& rgb = (srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable()).value;
-    const std::array<float, 256>& a = shading::unormDecodeTable().value;
+    const std::array<float, 256>& rgb = (srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable());
+    const std::array<float, 256>& a = shading::unormDecodeTable();
     return {rgb[p[0]], rgb[p[1]], rgb[p[2]], a[p[3]]};
 }
 
@@ -157,8 +144,8 @@ std::shared_ptr<const Texture> makeTexture(std::string name, const uint8_t* rgba
     // Level 1 straight from the 8-bit codes, each next level from the previous one's unrounded floats, in two
     // buffers used in turn (each level is at most a quarter of the one before, after level 1's). Not
     // zero-filled: every float is written before it is read.
-    const float* rgb = (srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable()).value.data();
-    const float* alpha = shading::unormDecodeTable().value.data();
+    const float* rgb = (srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable()).data();
+    const float* alpha = shading::unormDecodeTable().data();
     const size_t level1 = size_t(std::max(1, width / 2)) * size_t(std::max(1, height / 2)) * 4;
     std::unique_ptr<float[]> a(new float[level1]), b(new float[level1 / 2 + 4]);
     float* cur = a.get();

@@ -1,7 +1,7 @@
 // C++ view of shaders/texture_sample.glsl: the same sampling text compiled as members of TextureLookup,
 // whose texel hooks read a plain view of one texture's 8-bit mip chain and decode each texel through the
-// tables of shading/texel_decode.h, the values the rasterizer uploads (the tracer builds the view from
-// scene/texture.h; the rasterizer runs the GLSL over texelFetch). No GL and no scene types.
+// tables of shading/texel_decode.h, as GL's texelFetch decodes GL_SRGB8_ALPHA8 / GL_RGBA8 (the tracer builds
+// the view from scene/texture.h; the rasterizer runs the GLSL over texelFetch). No GL and no scene types.
 #pragma once
 
 #include <cstddef>
@@ -25,8 +25,8 @@ inline constexpr int kTexRepeat = 0, kTexMirroredRepeat = 1, kTexClamp = 2;
 struct TextureLookup {
     const TexelLevelView* levels = nullptr;  // one texture's chain; `map` is ignored (one texture per lookup)
     int levelCount = 0;
-    const float* rgb = nullptr;    // 256 linear values of an RGB code: srgbDecodeTable().value or unormDecodeTable()'s
-    const float* alpha = nullptr;  // 256 linear values of an alpha code: unormDecodeTable().value
+    const float* rgb = nullptr;    // 256 linear values of an RGB code: srgbDecodeTable() or unormDecodeTable()
+    const float* alpha = nullptr;  // 256 linear values of an alpha code: unormDecodeTable()
 
     using vec2 = glm::vec2;
     using vec4 = glm::vec4;

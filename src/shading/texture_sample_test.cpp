@@ -36,15 +36,15 @@ struct Chain {
         views[2] = {1, 1, l2.data()};
         lookup.levels = views;
         lookup.levelCount = 3;
-        lookup.rgb = unormDecodeTable().value.data();
-        lookup.alpha = unormDecodeTable().value.data();
+        lookup.rgb = unormDecodeTable().data();
+        lookup.alpha = unormDecodeTable().data();
     }
     static int code(const std::vector<uint8_t>& l, int w, int x, int y, int k) {
         return l[size_t((y * w + x) * 4 + k)];
     }
     // Texel (x, y) of a level as the lookup decodes it.
     static glm::vec4 decoded(const std::vector<uint8_t>& l, int w, int x, int y) {
-        const auto& t = unormDecodeTable().value;
+        const auto& t = unormDecodeTable();
         return {t[size_t(code(l, w, x, y, 0))], t[size_t(code(l, w, x, y, 1))], t[size_t(code(l, w, x, y, 2))],
                 t[size_t(code(l, w, x, y, 3))]};
     }

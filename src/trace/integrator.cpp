@@ -128,8 +128,8 @@ glm::vec4 WhittedIntegrator::mapTexel(const Ray& ray, const Hit& hit, int depth,
     for (int l = 0; l < levels; ++l)
         views[l] = {tex.levels[size_t(l)].width, tex.levels[size_t(l)].height, tex.levels[size_t(l)].texels.data()};
     shading::TextureLookup lookup{views, levels,
-                                  (tex.srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable()).value.data(),
-                                  shading::unormDecodeTable().value.data()};
+                                  (tex.srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable()).data(),
+                                  shading::unormDecodeTable().data()};
     auto wrap = [](TextureWrap w) {
         return w == TextureWrap::MirroredRepeat ? shading::kTexMirroredRepeat
                : w == TextureWrap::ClampToEdge  ? shading::kTexClamp
