@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -22,8 +23,9 @@ uint8_t encodeReference(float linear, bool srgb) {
 }
 
 // The sRGB encoder, exact against encodeReference and fast: a 4096-entry table of the code at each bucket's
-// lower end, then a step up past every threshold the value reaches (at most about one: the curve's steepest
-// slope, 12.92 · 255 codes per unit, is under 4096). threshold[c] is the least float whose code exceeds c.
+// lower end, then one step up if the value reaches the next code's threshold (never more: the curve's
+// steepest slope, 12.92 · 255 codes per unit, is under 4096, so no bucket spans two thresholds; checked at
+// construction). threshold[c] is the least float whose code exceeds c.
 struct SrgbEncoder {
     std::array<uint8_t, 4097> start{};
     std::array<float, 256> threshold{};
@@ -41,13 +43,14 @@ struct SrgbEncoder {
         }
         threshold[255] = std::numeric_limits<float>::infinity();
         for (int b = 0; b <= 4096; ++b) start[size_t(b)] = encodeReference(float(b) / 4096.0f, true);
+        for (int b = 0; b < 4096; ++b)
+            if (start[size_t(b) + 1] - start[size_t(b)] > 1) std::abort();  // one step would not be enough
     }
     uint8_t operator()(float v) const {
         if (!(v > 0.0f)) return 0;  // NaN too
         if (v >= 1.0f) return 255;
-        int c = start[size_t(v * 4096.0f)];
-        while (v >= threshold[size_t(c)]) ++c;
-        return uint8_t(c);
+        const int c = start[size_t(v * 4096.0f)];
+        return uint8_t(c + (v >= threshold[size_t(c)] ? 1 : 0));
     }
 };
 
