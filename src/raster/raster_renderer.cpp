@@ -148,8 +148,10 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shad
     full.shadowKind = {kShadowOrtho, kShadowPerspective, kShadowCube};
     full.planes = 1;
     full.planeMask = {1, 1, 1};
-    programsFor(local);
-    programsFor(full);
+    for (const ShaderVariant* v : {&local, &full}) {
+        const ColorPrograms& set = programsFor(*v);
+        for (int k = 0; k < ColorPrograms::kKinds; ++k) set.get(ColorPrograms::Kind(k));
+    }
     glUseProgram(0);
     // Environment cubes are sampled bilinearly across face edges (core profile leaves this off).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
