@@ -20,11 +20,12 @@ in vec4 v2f_tangent;
 
 #ifdef SL_MATERIAL_MAPS
 // The material's textures (src/raster/mesh_textures.h), map 0 base colour, 1 metallic-roughness, 2 normal,
-// 3 occlusion, 4 emissive: each mip chain as RGBA32F levels, filtered by hand in texture_sample.glsl exactly as the tracer
-// filters it. u_tex[map]: x the level count (0: no texture), y, z the wrap modes of u and v, w the flags
-// 1 mag bilinear, 2 min bilinear, 4 mipmaps, 8 linear between levels. u_texMatrix[map]: KHR_texture_transform's
-// linear part (texTransform); u_texOffset[map]: xy its offset, z the TEXCOORD set (0 or 1), w the strength
-// (normal scale, occlusion strength).
+// 3 occlusion, 4 emissive: each 8-bit mip chain decoded to the tracer's linear values and uploaded as RGBA16F
+// levels (shading/texel_decode.h), read with texelFetch and filtered by hand in texture_sample.glsl exactly as
+// the tracer filters it. u_tex[map]: x the level count (0: no texture), y, z the wrap modes of u and v, w the
+// flags 1 mag bilinear, 2 min bilinear, 4 mipmaps, 8 linear between levels. u_texMatrix[map]:
+// KHR_texture_transform's linear part (texTransform); u_texOffset[map]: xy its offset, z the TEXCOORD set (0
+// or 1), w the strength (normal scale, occlusion strength).
 uniform sampler2D t_baseColor;
 uniform sampler2D t_metalRough;
 uniform sampler2D t_normal;

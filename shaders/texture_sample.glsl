@@ -46,19 +46,19 @@ SL_FN vec4 texFetchWrapped(int map, int level, int x, int y, int w, int h, int w
     return texTexel(map, level, texIndex(x, w, wrapS), texIndex(y, h, wrapT));
 }
 
-// One level, nearest or bilinear (texel centres at half-integers, as OpenGL).
+// One level, nearest or bilinear (texel centres at half-integers, as OpenGL). One code path for both:
+// nearest is the bilinear form with weights 0 (mix(a, b, 0) is a exactly), since llvmpipe runs every branch
+// of non-uniform control flow, and two paths would fetch twice as many texels.
 SL_FN vec4 texSampleLevel(int map, int level, bool linear, int wrapS, int wrapT, vec2 uv) {
     int w = texWidth(map, level);
     int h = texHeight(map, level);
-    float fx = texFold(uv.x, wrapS) * float(w);
-    float fy = texFold(uv.y, wrapT) * float(h);
-    if (!linear) return texFetchWrapped(map, level, int(floor(fx)), int(floor(fy)), w, h, wrapS, wrapT);
-    fx = fx - 0.5f;
-    fy = fy - 0.5f;
+    float shift = linear ? 0.5f : 0.0f;
+    float fx = texFold(uv.x, wrapS) * float(w) - shift;
+    float fy = texFold(uv.y, wrapT) * float(h) - shift;
     int ix = int(floor(fx));
     int iy = int(floor(fy));
-    float tx = fx - float(ix);
-    float ty = fy - float(iy);
+    float tx = linear ? fx - float(ix) : 0.0f;
+    float ty = linear ? fy - float(iy) : 0.0f;
     vec4 a = mix(texFetchWrapped(map, level, ix, iy, w, h, wrapS, wrapT),
                  texFetchWrapped(map, level, ix + 1, iy, w, h, wrapS, wrapT), tx);
     vec4 b = mix(texFetchWrapped(map, level, ix, iy + 1, w, h, wrapS, wrapT),
@@ -69,20 +69,29 @@ SL_FN vec4 texSampleLevel(int map, int level, bool linear, int wrapS, int wrapT,
 // The filtered texel at `uv` for level-of-detail `lod` (texLod), under the sampler's modes, as the OpenGL 4.6
 // spec §8.14 states them: minification from lod > c, c = 0.5 when the mag filter is bilinear and the min filter
 // nearest (else 0); between levels the nearest level (ceil(lod + 0.5) − 1) or a linear blend of levels
-// floor(lod) and floor(lod) + 1 (mipLinear), each clamped to the chain.
+// floor(lod) and floor(lod) + 1 (mipLinear), each clamped to the chain. Always two level reads blended by t
+// (t = 0 and one level twice where a single level is meant), for the reason texSampleLevel gives.
 SL_FN vec4 texSample(int map, int levels, int wrapS, int wrapT, bool magLinear, bool minLinear, bool mipmaps,
                      bool mipLinear, vec2 uv, float lod) {
     float c = magLinear && !minLinear ? 0.5f : 0.0f;
-    if (!(lod > c) || !mipmaps) return texSampleLevel(map, 0, lod > c ? minLinear : magLinear, wrapS, wrapT, uv);
-    float top = float(levels - 1);
-    if (!mipLinear) {
-        int level = lod <= 0.5f ? 0 : int(min(ceil(lod + 0.5f) - 1.0f, top));
-        return texSampleLevel(map, level, minLinear, wrapS, wrapT, uv);
+    bool minify = lod > c;
+    int l0 = 0;
+    int l1 = 0;
+    float t = 0.0f;
+    if (minify && mipmaps) {
+        float top = float(levels - 1);
+        if (!mipLinear) {
+            l0 = lod <= 0.5f ? 0 : int(min(ceil(lod + 0.5f) - 1.0f, top));
+            l1 = l0;
+        } else {
+            float l = min(lod, top);
+            l0 = int(floor(l));
+            l1 = min(l0 + 1, levels - 1);
+            t = l - float(l0);
+        }
     }
-    float l = min(lod, top);
-    int l0 = int(floor(l));
-    int l1 = min(l0 + 1, levels - 1);
-    vec4 a = texSampleLevel(map, l0, minLinear, wrapS, wrapT, uv);
-    vec4 b = texSampleLevel(map, l1, minLinear, wrapS, wrapT, uv);
-    return mix(a, b, l - float(l0));
+    bool linear = minify ? minLinear : magLinear;
+    vec4 a = texSampleLevel(map, l0, linear, wrapS, wrapT, uv);
+    vec4 b = texSampleLevel(map, l1, linear, wrapS, wrapT, uv);
+    return mix(a, b, t);
 }

@@ -93,7 +93,8 @@ TEST_F(RasterBandsTest, BandsEqualWholeImage) {
 
 TEST(RasterBands, BandCountKeepsTargetSmall) {
     EXPECT_EQ(raster::bandCount(320, 240), 1);
-    EXPECT_EQ(raster::bandCount(1920, 1080), 4);  // 33 MB of RGBA32F in four 8 MB bands
+    EXPECT_EQ(raster::bandCount(1920, 1080), 1);  // 31.6 MiB of RGBA32F: one band of the 32 MiB budget
+    EXPECT_EQ(raster::bandCount(3840, 2160), 4);  // 4K (or 1080p at --spp 4): four bands
     EXPECT_EQ(raster::bandCount(16, 2, 1), 2);    // never more bands than rows
 }
 

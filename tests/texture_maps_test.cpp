@@ -44,12 +44,20 @@ Scene assetScene(const std::string& name, ShadingModel model = ShadingModel::Pho
 Material& part(Scene& s, size_t k) { return s.meshes[0].parts[k].material; }
 const Material& part(const Scene& s, size_t k) { return s.meshes[0].parts[k].material; }
 
-// A copy of `t` whose texels went through `f` (every level, so filtering sees the change everywhere).
+// A copy of `t` whose texels (decoded, then encoded back to 8 bits) went through `f` (every level, so
+// filtering sees the change everywhere).
 template <class F>
 TextureBinding mapped(const TextureBinding& t, F f) {
     auto copy = std::make_shared<Texture>(*t.texture);
-    for (TextureLevel& l : copy->levels)
-        for (glm::vec4& v : l.texels) v = f(v);
+    for (size_t level = 0; level < copy->levels.size(); ++level) {
+        TextureLevel& l = copy->levels[level];
+        for (int y = 0; y < l.height; ++y)
+            for (int x = 0; x < l.width; ++x) {
+                const glm::vec4 v = f(t.texture->texel(level, x, y));
+                uint8_t* p = &l.texels[(size_t(y) * size_t(l.width) + size_t(x)) * kTexelBytes];
+                for (int k = 0; k < 4; ++k) p[k] = encodeTexelChannel(v[k], copy->srgb && k < 3);
+            }
+    }
     TextureBinding b = t;
     b.texture = copy;
     return b;

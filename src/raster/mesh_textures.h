@@ -1,6 +1,7 @@
-// MeshTextures: the GL copies of the scene's shared Textures (scene/texture.h), uploaded on first use as
-// RGBA32F with every level of the texture's own mip chain, so mesh.frag's texelFetch reads exactly the texels
-// the tracer reads. Keyed by the shared object; a texture no longer in the scene is dropped by prune().
+// MeshTextures: the GL copies of the scene's shared Textures (scene/texture.h), uploaded as the scene's meshes
+// are (or on first use) with every level of the texture's own 8-bit mip chain, as GL_SRGB8_ALPHA8 (colour
+// maps) or GL_RGBA8, so that mesh.frag's texelFetch decodes the very codes the tracer decodes. Keyed by the shared
+// object; a texture no longer in the scene is dropped by prune().
 #pragma once
 
 #include "gl/objects.h"

@@ -18,9 +18,9 @@ struct OffscreenOptions {
     int width = 1280, height = 720;  // output pixels
     int spp = 1;                     // samples per pixel: a perfect square k², on the grid (i + (a+0.5)/k)
     Encoding encoding = Encoding::Srgb;
-    bool coverage = false;                    // also return coverage ids (of sample a = b = k/2, as the tracer)
-    bool keepLinear = false;                  // also return the linear floats the conversion read (RGBA)
-    size_t maxTargetBytes = size_t(8) << 20;  // float colour target budget per band
+    bool coverage = false;                     // also return coverage ids (of sample a = b = k/2, as the tracer)
+    bool keepLinear = false;                   // also return the linear floats the conversion read (RGBA)
+    size_t maxTargetBytes = size_t(32) << 20;  // float colour target budget per band: 1920x1080 is one band
 };
 
 struct OffscreenResult {

@@ -83,39 +83,42 @@ const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVar
     if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
     if (programs_.size() >= 32) programs_.clear();  // a long viewer session: drop them all, not one by one
     ColorPrograms set;
-    const std::string environment = defines + "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n";
-    set.mesh = gl::Program::build(shaders_, "mesh.vert", "mesh.frag", defines);
-    set.sphere = gl::Program::build(shaders_, "sphere.vert", "sphere.frag", defines);
-    set.plane = gl::Program::build(shaders_, "plane.vert", "plane.frag", defines);
-    set.meshEnvironment = gl::Program::build(shaders_, "mesh.vert", "mesh.frag", environment);
-    set.sphereEnvironment = gl::Program::build(shaders_, "sphere.vert", "sphere.frag", environment);
-    set.planeMirror = gl::Program::build(shaders_, "plane.vert", "plane.frag", environment);
-    for (const gl::Program* p :
-         {&set.mesh, &set.sphere, &set.plane, &set.meshEnvironment, &set.sphereEnvironment, &set.planeMirror}) {
-        p->bindBlock("Frame", kFrameBinding);
-        p->bindBlock("Shadows", kShadowBinding);
-        glUseProgram(p->id());
-        glUniform1i(p->uniform("t_shadowMaps"), GLint(kShadowUnit));
-        glUniform1i(p->uniform("t_iblCube"), GLint(kIblCubeUnit));
-        glUniform1i(p->uniform("t_iblDfg"), GLint(kIblDfgUnit));
-        glUniform1i(p->uniform("t_baseColor"), GLint(kBaseColorUnit));
-        glUniform1i(p->uniform("t_metalRough"), GLint(kMetalRoughUnit));
-        glUniform1i(p->uniform("t_normal"), GLint(kNormalMapUnit));
-        glUniform1i(p->uniform("t_occlusion"), GLint(kOcclusionUnit));
-        glUniform1i(p->uniform("t_emissive"), GLint(kEmissiveUnit));
-    }
-    glUseProgram(set.planeMirror.id());
-    glUniform1i(set.planeMirror.uniform("t_reflection"), GLint(kReflectionUnit));
-    for (const gl::Program* p : {&set.meshEnvironment, &set.sphereEnvironment}) {
-        glUseProgram(p->id());
-        glUniform1i(p->uniform("t_environment"), GLint(kEnvironmentUnit));
-    }
+    set.shaders = &shaders_;
+    set.defines = defines;
     return programs_.emplace(defines, std::move(set)).first->second;
 }
 
+const gl::Program& RasterRenderer::ColorPrograms::get(Kind kind) const {
+    gl::Program& p = built[size_t(kind)];
+    if (p) return p;
+    const bool environment = kind == MeshEnvironment || kind == SphereEnvironment || kind == PlaneMirror;
+    const std::string text = environment ? defines + "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n" : defines;
+    const char* stem = kind == Mesh || kind == MeshEnvironment       ? "mesh"
+                       : kind == Sphere || kind == SphereEnvironment ? "sphere"
+                                                                     : "plane";
+    p = gl::Program::build(*shaders, std::string(stem) + ".vert", std::string(stem) + ".frag", text);
+    p.bindBlock("Frame", kFrameBinding);
+    p.bindBlock("Shadows", kShadowBinding);
+    glUseProgram(p.id());
+    glUniform1i(p.uniform("t_shadowMaps"), GLint(kShadowUnit));
+    glUniform1i(p.uniform("t_iblCube"), GLint(kIblCubeUnit));
+    glUniform1i(p.uniform("t_iblDfg"), GLint(kIblDfgUnit));
+    glUniform1i(p.uniform("t_baseColor"), GLint(kBaseColorUnit));
+    glUniform1i(p.uniform("t_metalRough"), GLint(kMetalRoughUnit));
+    glUniform1i(p.uniform("t_normal"), GLint(kNormalMapUnit));
+    glUniform1i(p.uniform("t_occlusion"), GLint(kOcclusionUnit));
+    glUniform1i(p.uniform("t_emissive"), GLint(kEmissiveUnit));
+    if (kind == PlaneMirror) glUniform1i(p.uniform("t_reflection"), GLint(kReflectionUnit));
+    if (kind == MeshEnvironment || kind == SphereEnvironment)
+        glUniform1i(p.uniform("t_environment"), GLint(kEnvironmentUnit));
+    glUseProgram(0);
+    return p;
+}
+
 // The program for one object: with its environment cube when it has one and this pass looks them up.
-const gl::Program& RasterRenderer::objectProgram(const gl::Program& plain, const gl::Program& environment, int sphere,
-                                                 int range, const PassOptions& options) const {
+const gl::Program& RasterRenderer::objectProgram(const ColorPrograms& programs, int plainKind, int environmentKind,
+                                                 int sphere, int range, const PassOptions& options) const {
+    const gl::Program& plain = programs.get(ColorPrograms::Kind(plainKind));
     if (!options.reflections) {
         glUseProgram(plain.id());
         return plain;
@@ -123,6 +126,7 @@ const gl::Program& RasterRenderer::objectProgram(const gl::Program& plain, const
     for (size_t cube = 0; cube < probes_.size(); ++cube) {
         const EnvironmentProbe& probe = probes_[cube];
         if ((sphere >= 0 && probe.sphere == sphere) || (range >= 0 && probe.range == range)) {
+            const gl::Program& environment = programs.get(ColorPrograms::Kind(environmentKind));
             glUseProgram(environment.id());
             glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
             glBindTexture(GL_TEXTURE_CUBE_MAP, environments_.texture(int(cube)));
@@ -167,7 +171,8 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         if (int(i) == options.skipSphere || skipped(sphereCoverageId(scene, i))) continue;
         const Sphere& s = scene.spheres[i];
-        const gl::Program& p = objectProgram(programs.sphere, programs.sphereEnvironment, int(i), -1, options);
+        const gl::Program& p =
+            objectProgram(programs, ColorPrograms::Sphere, ColorPrograms::SphereEnvironment, int(i), -1, options);
         setMaterial(p, s.material, sphereCoverageId(scene, i), frame.flags.x, scene.normalized);
         glUniform3fv(p.uniform("u_center"), 1, glm::value_ptr(s.center));
         glUniform1f(p.uniform("u_radius"), s.radius);
@@ -182,7 +187,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         if (int(i) == options.skipPlane || skipped(planeCoverageId(scene, i))) continue;  // a mirror: not itself
         const Plane& p = scene.planes[i];
         const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
-        const gl::Program& planeProgram = mirror >= 0 ? programs.planeMirror : programs.plane;
+        const gl::Program& planeProgram = programs.get(mirror >= 0 ? ColorPrograms::PlaneMirror : ColorPrograms::Plane);
         glUseProgram(planeProgram.id());
         if (mirror >= 0) {
             glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
@@ -232,7 +237,8 @@ void RasterRenderer::drawRange(const Scene& scene, const FrameBlock& frame, cons
                                const PassOptions& options, size_t k) const {
     const DrawRange& r = ranges_[k];
     const Material& m = scene.meshes[r.mesh].parts[r.part].material;
-    const gl::Program& p = objectProgram(programs.mesh, programs.meshEnvironment, -1, int(k), options);
+    const gl::Program& p =
+        objectProgram(programs, ColorPrograms::Mesh, ColorPrograms::MeshEnvironment, -1, int(k), options);
     setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
     glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));

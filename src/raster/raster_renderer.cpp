@@ -148,8 +148,10 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shad
     full.shadowKind = {kShadowOrtho, kShadowPerspective, kShadowCube};
     full.planes = 1;
     full.planeMask = {1, 1, 1};
-    programsFor(local);
-    programsFor(full);
+    for (const ShaderVariant* v : {&local, &full}) {
+        const ColorPrograms& set = programsFor(*v);
+        for (int k = 0; k < ColorPrograms::kKinds; ++k) set.get(ColorPrograms::Kind(k));
+    }
     glUseProgram(0);
     // Environment cubes are sampled bilinearly across face edges (core profile leaves this off).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -229,7 +231,7 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
             const Material& mat = m.parts[pi].material;
             for (const TextureBinding* b : {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture,
                                             &mat.occlusionTexture, &mat.emissiveTexture})
-                if (b->texture) textures.insert(b->texture.get());
+                if (b->texture && textures.insert(b->texture.get()).second) textures_.texture(b->texture);
             rebased.resize(g.indices.size());
             for (size_t k = 0; k < g.indices.size(); ++k) rebased[k] = g.indices[k] + uint32_t(vBase);
             glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(iBase * sizeof(uint32_t)),

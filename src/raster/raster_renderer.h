@@ -16,6 +16,7 @@
 #include "raster/shadow_maps.h"
 #include "scene/scene.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -40,8 +41,11 @@ class RasterRenderer {
 public:
     // Compiles the programs; needs a current GL 3.3 core context. Throws InputError on shader errors.
     explicit RasterRenderer(const gl::ShaderLibrary& shaders = gl::ShaderLibrary());
+    RasterRenderer(const RasterRenderer&) = delete;  // its program sets point at shaders_
+    RasterRenderer& operator=(const RasterRenderer&) = delete;
 
-    // Uploads every mesh part. Call again when geometry changes; materials are read at draw time.
+    // Uploads every mesh part and the textures its material has (a texture a later material edit binds is
+    // uploaded at its first draw). Call again when geometry changes; materials are read at draw time.
     void uploadMeshes(const Scene& scene);
 
     // Draws the scene (or one band of it) into the internal target, with coverage ids when asked. The
@@ -90,7 +94,8 @@ private:
     };
     // model: shading::SL_MODEL_*; normalized: Scene::normalized.
     void setMaterial(const gl::Program& p, const Material& m, uint32_t objectId, int model, bool normalized) const;
-    const gl::Program& objectProgram(const gl::Program& plain, const gl::Program& environment, int sphere, int range,
+    // plain, environment: ColorPrograms::Kind values.
+    const gl::Program& objectProgram(const ColorPrograms& programs, int plain, int environment, int sphere, int range,
                                      const PassOptions& options) const;
     void uploadFrame(const FrameBlock& frame) const;
     void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
@@ -107,10 +112,16 @@ private:
                     const std::vector<uint32_t>& ids);
 
     // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
+    // One variant's programs, each compiled at its first use (a textured scene of meshes alone never pays
+    // for the sphere, plane and environment programs of its variant). Environment kinds add kr ⊙ env(R) from
+    // the object's cube, and the plane mirror kr ⊙ the planar reflection pass (SL_ENVIRONMENT).
     struct ColorPrograms {
-        gl::Program mesh, sphere, plane;
-        gl::Program meshEnvironment, sphereEnvironment;  // + kr ⊙ env(R) from the object's cube (SL_ENVIRONMENT)
-        gl::Program planeMirror;                         // + kr ⊙ the planar reflection pass (SL_ENVIRONMENT)
+        enum Kind { Mesh, Sphere, Plane, MeshEnvironment, SphereEnvironment, PlaneMirror, kKinds };
+        const gl::ShaderLibrary* shaders = nullptr;
+        std::string defines;
+        mutable std::array<gl::Program, kKinds> built;
+        // Compiles on first use; leaves no program in use (callers bind what they draw with).
+        const gl::Program& get(Kind kind) const;
     };
     // materialMaps: mesh.frag's SL_MATERIAL_MAPS bits (set in draw() from the scene's parts), 0 for none.
     const ColorPrograms& programsFor(const ShaderVariant& variant, int materialMaps = 0);
@@ -143,7 +154,7 @@ private:
 };
 
 // Number of bands that keeps the RGBA32F target near `maxTargetBytes` (1 for small images).
-int bandCount(int width, int height, size_t maxTargetBytes = size_t(8) << 20);
+int bandCount(int width, int height, size_t maxTargetBytes = size_t(32) << 20);
 
 // Convenience for one-shot renders: draw, then read colour (and coverage when asked).
 struct RasterOutput {

@@ -15,7 +15,7 @@ struct GltfLimits {
     uint64_t maxImageBytes = uint64_t(64) << 20;     // one image's encoded bytes (PNG/JPEG as stored)
     uint64_t maxTextures = 256;                      // images decoded per model; later ones fall back
     uint64_t maxTextureSide = 8192;                  // one image's width or height, texels
-    uint64_t maxTextureBytes = uint64_t(1) << 30;    // decoded texels per model (float RGBA, with mips)
+    uint64_t maxTextureBytes = uint64_t(512) << 20;  // decoded texels per model (8-bit RGBA, with mips)
     uint64_t maxTriangles = 16'000'000;              // triangles over every primitive instance, whole scene
     uint64_t maxMeshBytes = uint64_t(4) << 30;       // vertex and index memory the import may allocate, bytes
 };

@@ -82,22 +82,30 @@ TEST(GltfTextures, EmbeddedPngDecodesToLinearTexelsWithTexcoords) {
         EXPECT_FALSE(b.sampler.mipmaps);
         for (int y = 0; y < 4; ++y)
             for (int x = 0; x < 4; ++x) {
-                const glm::vec4 t = b.texture->levels[0].texels[size_t(4 * y + x)];
+                // Level 0 keeps the file's codes; they decode to the exact value rounded to a half float.
+                const glm::vec4 t = b.texture->texel(0, x, y);
                 const uint8_t* p = img.pixel(x, y);
-                EXPECT_NEAR(t.r, srgbDecode(p[0]), 1e-6f);
-                EXPECT_NEAR(t.g, srgbDecode(p[1]), 1e-6f);
-                EXPECT_NEAR(t.b, srgbDecode(p[2]), 1e-6f);
+                EXPECT_EQ(b.texture->levels[0].texels[size_t(4 * (4 * y + x))], p[0]);
+                EXPECT_NEAR(t.r, srgbDecode(p[0]), srgbDecode(p[0]) / 2048.0f);
+                EXPECT_NEAR(t.g, srgbDecode(p[1]), srgbDecode(p[1]) / 2048.0f);
+                EXPECT_NEAR(t.b, srgbDecode(p[2]), srgbDecode(p[2]) / 2048.0f);
                 EXPECT_EQ(t.a, 1.0f);
                 // Negative control: the undecoded value differs (sRGB decoding is not a no-op here).
                 if (p[0] > 10 && p[0] < 250) {
                     EXPECT_GT(std::abs(t.r - p[0] / 255.0f), 0.01f);
                 }
             }
-        // Mip levels average in linear space: the last level is the mean of level 0.
+        // Mip levels average in linear space: the last level is the mean of level 0, encoded to 8 bits.
         glm::vec4 mean(0.0f);
-        for (const glm::vec4& t : b.texture->levels[0].texels) mean += t / 16.0f;
-        const glm::vec4 last = b.texture->levels.back().texels[0];
-        for (int k = 0; k < 4; ++k) EXPECT_NEAR(last[k], mean[k], 1e-6f);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) mean += b.texture->texel(0, x, y) / 16.0f;
+        const uint8_t* last = &b.texture->levels.back().texels[0];
+        for (int k = 0; k < 4; ++k) EXPECT_EQ(last[k], encodeTexelChannel(mean[k], k < 3)) << k;
+        // Negative control: averaging the codes themselves (sRGB space) gives another, darker mean.
+        float codeMean = 0.0f;
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) codeMean += img.pixel(x, y)[0] / 16.0f;
+        EXPECT_GT(std::abs(float(last[0]) - codeMean), 2.0f);
         const MeshGeometry& geo = *g.parts[0].geometry;
         ASSERT_EQ(geo.texcoords0.size(), 4u);
         EXPECT_EQ(geo.texcoords0[3], glm::vec2(0.0f, 0.0f));
@@ -111,7 +119,7 @@ TEST(GltfTextures, OddSizesKeepTheMeanThroughTheChain) {
     ASSERT_EQ(tex->levels.size(), 2u);
     EXPECT_EQ(tex->levels[1].width, 1);
     const glm::vec4 want = (glm::vec4(0) + glm::vec4(1) + glm::vec4(30, 60, 90, 120) / 255.0f) / 3.0f;
-    for (int k = 0; k < 4; ++k) EXPECT_NEAR(tex->levels[1].texels[0][k], want[k], 1e-6f);
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(tex->levels[1].texels[size_t(k)], encodeTexelChannel(want[k], false)) << k;
     EXPECT_EQ(tex->texelBytes(), textureBytesFor(3, 1));
 }
 
@@ -138,7 +146,7 @@ TEST(GltfTextures, BoxTexturedInEachFormHasItsTexture) {
         if (!first) {
             first = b.texture;
             // The Cesium logo: mostly white-grey with a green-blue mark; its mean is light and not grey.
-            const glm::vec4 mean = first->levels.back().texels[0];
+            const glm::vec4 mean = first->texel(first->levels.size() - 1, 0, 0);
             std::printf("BoxTextured mean texel (linear): %.4f %.4f %.4f %.4f\n", mean.r, mean.g, mean.b, mean.a);
         } else {
             ASSERT_EQ(b.texture->levels[0].texels.size(), first->levels[0].texels.size());

@@ -1,9 +1,11 @@
 // C++ view of shaders/texture_sample.glsl: the same sampling text compiled as members of TextureLookup,
-// whose texel hooks read a plain view of one texture's mip chain (the tracer builds it from scene/texture.h;
-// the rasterizer runs the GLSL over texelFetch). No GL and no scene types.
+// whose texel hooks read a plain view of one texture's 8-bit mip chain and decode each texel through the
+// tables of shading/texel_decode.h, as GL's texelFetch decodes GL_SRGB8_ALPHA8 / GL_RGBA8 (the tracer builds
+// the view from scene/texture.h; the rasterizer runs the GLSL over texelFetch). No GL and no scene types.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
@@ -14,7 +16,7 @@ namespace shadelab::shading {
 
 struct TexelLevelView {
     int width = 0, height = 0;
-    const glm::vec4* texels = nullptr;  // row-major, row 0 first
+    const uint8_t* texels = nullptr;  // RGBA bytes, row-major, row 0 first
 };
 
 // Wrap-mode numbers of texture_sample.glsl.
@@ -23,13 +25,16 @@ inline constexpr int kTexRepeat = 0, kTexMirroredRepeat = 1, kTexClamp = 2;
 struct TextureLookup {
     const TexelLevelView* levels = nullptr;  // one texture's chain; `map` is ignored (one texture per lookup)
     int levelCount = 0;
+    const float* rgb = nullptr;    // 256 linear values of an RGB code: srgbDecodeTable() or unormDecodeTable()
+    const float* alpha = nullptr;  // 256 linear values of an alpha code: unormDecodeTable()
 
     using vec2 = glm::vec2;
     using vec4 = glm::vec4;
 
     vec4 texTexel(int, int level, int x, int y) const {
         const TexelLevelView& l = levels[level];
-        return l.texels[size_t(y) * size_t(l.width) + size_t(x)];
+        const uint8_t* p = l.texels + 4 * (size_t(y) * size_t(l.width) + size_t(x));
+        return vec4(rgb[p[0]], rgb[p[1]], rgb[p[2]], alpha[p[3]]);
     }
     int texWidth(int, int level) const { return levels[level].width; }
     int texHeight(int, int level) const { return levels[level].height; }

@@ -1,7 +1,9 @@
-// shaders/texture_sample.glsl through its C++ view: known texel values (nearest gives the texels, bilinear
-// the analytic average), the three wrap modes, and the level selection. Negative controls: a half-texel
-// shift of the sample point must change nearest's answer, and bilinear at a corner is not any one texel.
+// shaders/texture_sample.glsl through its C++ view over 8-bit texels: known texel values (nearest gives the
+// texels, bilinear the analytic average), the three wrap modes, and the level selection. Negative controls: a
+// half-texel shift of the sample point must change nearest's answer, and bilinear at a corner is not any one texel.
 #include "shading/texture_sample.h"
+
+#include "shading/texel_decode.h"
 
 #include <gtest/gtest.h>
 
@@ -10,26 +12,45 @@
 namespace shadelab::shading {
 namespace {
 
-// A 4×4 level 0 with distinct texels, its 2×2 and 1×1 box-filtered levels.
+// A 4×4 level 0 with distinct 8-bit texels (linear codes), its 2×2 and 1×1 levels (each texel the rounded mean
+// of the four below it: which codes they hold does not matter here, only that lookups return them).
 struct Chain {
-    std::vector<glm::vec4> l0, l1, l2;
+    std::vector<uint8_t> l0, l1, l2;
     TexelLevelView views[3];
     TextureLookup lookup;
     Chain() {
         for (int y = 0; y < 4; ++y)
-            for (int x = 0; x < 4; ++x) l0.push_back(glm::vec4(x / 4.0f, y / 4.0f, (x + 4 * y) / 16.0f, 1.0f));
+            for (int x = 0; x < 4; ++x)
+                for (int v : {x * 60, y * 60, (x + 4 * y) * 15, 255}) l0.push_back(uint8_t(v));
         for (int y = 0; y < 2; ++y)
             for (int x = 0; x < 2; ++x)
-                l1.push_back(0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) +
-                                      at(2 * x + 1, 2 * y + 1)));
-        l2.push_back(0.25f * (l1[0] + l1[1] + l1[2] + l1[3]));
+                for (int k = 0; k < 4; ++k)
+                    l1.push_back(uint8_t((code(l0, 4, 2 * x, 2 * y, k) + code(l0, 4, 2 * x + 1, 2 * y, k) +
+                                          code(l0, 4, 2 * x, 2 * y + 1, k) + code(l0, 4, 2 * x + 1, 2 * y + 1, k) + 2) /
+                                         4));
+        for (int k = 0; k < 4; ++k)
+            l2.push_back(uint8_t(
+                (code(l1, 2, 0, 0, k) + code(l1, 2, 1, 0, k) + code(l1, 2, 0, 1, k) + code(l1, 2, 1, 1, k) + 2) / 4));
         views[0] = {4, 4, l0.data()};
         views[1] = {2, 2, l1.data()};
         views[2] = {1, 1, l2.data()};
         lookup.levels = views;
         lookup.levelCount = 3;
+        lookup.rgb = unormDecodeTable().data();
+        lookup.alpha = unormDecodeTable().data();
     }
-    glm::vec4 at(int x, int y) const { return l0[size_t(y * 4 + x)]; }
+    static int code(const std::vector<uint8_t>& l, int w, int x, int y, int k) {
+        return l[size_t((y * w + x) * 4 + k)];
+    }
+    // Texel (x, y) of a level as the lookup decodes it.
+    static glm::vec4 decoded(const std::vector<uint8_t>& l, int w, int x, int y) {
+        const auto& t = unormDecodeTable();
+        return {t[size_t(code(l, w, x, y, 0))], t[size_t(code(l, w, x, y, 1))], t[size_t(code(l, w, x, y, 2))],
+                t[size_t(code(l, w, x, y, 3))]};
+    }
+    glm::vec4 at(int x, int y) const { return decoded(l0, 4, x, y); }
+    glm::vec4 level1(int i) const { return decoded(l1, 2, i % 2, i / 2); }
+    glm::vec4 level2() const { return decoded(l2, 1, 0, 0); }
     glm::vec4 sample(glm::vec2 uv, bool linear, int wrap = kTexRepeat, float lod = 0.0f, bool mipmaps = true,
                      bool mipLinear = false) {
         return lookup.texSample(0, 3, wrap, wrap, linear, linear, mipmaps, mipLinear, uv, lod);
@@ -86,16 +107,16 @@ TEST(TextureSample, LevelSelection) {
     EXPECT_NEAR(c.lookup.texLod(4, 4, {0.5f, 0.0f}, {0.0f, 0.1f}), 1.0f, 1e-6f);
     EXPECT_NEAR(c.lookup.texLod(4, 4, {0.0f, 0.0f}, {0.0f, 1.0f}), 2.0f, 1e-6f);
     const glm::vec2 uv(0.3f, 0.3f);
-    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 1.0f), c.l1[0]);
-    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 1.4f), c.l1[0]);
-    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 1.6f), c.l2[0]);
-    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 9.0f), c.l2[0]);
+    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 1.0f), c.level1(0));
+    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 1.4f), c.level1(0));
+    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 1.6f), c.level2());
+    EXPECT_EQ(c.sample(uv, false, kTexRepeat, 9.0f), c.level2());
     EXPECT_EQ(c.sample(uv, false, kTexRepeat, 2.0f, false), c.at(1, 1)) << "no mipmaps: level 0";
     EXPECT_EQ(c.sample(uv, false, kTexRepeat, -3.0f), c.at(1, 1)) << "magnified: level 0";
     EXPECT_EQ(c.sample(uv, false, kTexRepeat, 0.4f), c.at(1, 1)) << "nearest level: level 0 up to lod 0.5";
     // Linear between levels: lod 1.25 blends levels 1 and 2 by 1/4.
     const glm::vec4 blend = c.sample(uv, false, kTexRepeat, 1.25f, true, true);
-    const glm::vec4 want = 0.75f * c.l1[0] + 0.25f * c.l2[0];
+    const glm::vec4 want = 0.75f * c.level1(0) + 0.25f * c.level2();
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(blend[k], want[k], 1e-6f);
     // Mag bilinear with min nearest: minification starts at lod 0.5 (OpenGL's c), so 0.3 is still bilinear.
     const glm::vec4 mag = c.lookup.texSample(0, 3, kTexRepeat, kTexRepeat, true, false, true, true, {0.5f, 0.5f}, 0.3f);

@@ -5,6 +5,7 @@
 #include "scene/coverage.h"
 #include "shading/local_illumination.h"
 #include "shading/material_maps.h"
+#include "shading/texel_decode.h"
 #include "shading/texture_sample.h"
 
 #include <algorithm>
@@ -126,7 +127,9 @@ glm::vec4 WhittedIntegrator::mapTexel(const Ray& ray, const Hit& hit, int depth,
     const int levels = int(std::min<size_t>(tex.levels.size(), 32));
     for (int l = 0; l < levels; ++l)
         views[l] = {tex.levels[size_t(l)].width, tex.levels[size_t(l)].height, tex.levels[size_t(l)].texels.data()};
-    shading::TextureLookup lookup{views, levels};
+    shading::TextureLookup lookup{views, levels,
+                                  (tex.srgb ? shading::srgbDecodeTable() : shading::unormDecodeTable()).data(),
+                                  shading::unormDecodeTable().data()};
     auto wrap = [](TextureWrap w) {
         return w == TextureWrap::MirroredRepeat ? shading::kTexMirroredRepeat
                : w == TextureWrap::ClampToEdge  ? shading::kTexClamp
