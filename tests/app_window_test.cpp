@@ -607,8 +607,8 @@ TEST(AppWindow, MovingPreviewOnlyWhileTheCameraMoves) {
         const std::string script = writeText("moving_preview_" + tag + ".json", actions + "]");
         shot[on] = test::outputPath("moving_preview_exit_" + tag + ".png");
         fs::remove(shot[on]);
-        Result v = view(scene + " --size " + kSize + " --frames 9 --stats --script " + script + " --screenshot " +
-                        shot[on]);
+        Result v =
+            view(scene + " --size " + kSize + " --frames 9 --stats --script " + script + " --screenshot " + shot[on]);
         ASSERT_EQ(v.code, 0) << v.out;
         out[on] = v.out;
     }

@@ -64,7 +64,7 @@ private:
     // it); without it a preview image counts as stale and the full one is drawn.
     bool ensureRasterCurrent(bool force, bool preview = false);
     bool cameraMoved();  // whether the scene's camera changed since the last call (once per frame)
-    bool accumulate();                     // two more jittered samples while still; true when it drew
+    bool accumulate();   // two more jittered samples while still; true when it drew
     void updateReference();
     void updateProbe();
     void compose();
@@ -129,10 +129,10 @@ private:
 
     // What the raster target holds.
     uint64_t rasterRevision_ = 0, rasterGeometry_ = 0, meshGeometry_ = 0;
-    int rasterW_ = 0, rasterH_ = 0;  // the image's full size (a preview is about half of it)
-    bool rasterPreview_ = false;      // the target holds the half-size preview of a moving camera
+    int rasterW_ = 0, rasterH_ = 0;     // the image's full size (a preview is about half of it)
+    bool rasterPreview_ = false;        // the target holds the half-size preview of a moving camera
     std::optional<Camera> lastCamera_;  // the camera of the previous frame, for cameraMoved()
-    double lastChange_ = 0.0;  // glfwGetTime() of the last change of the image (for --verbose)
+    double lastChange_ = 0.0;           // glfwGetTime() of the last change of the image (for --verbose)
 
     // Probe, recomputed when the state or pixel changes.
     std::optional<ProbeResult> probe_;
