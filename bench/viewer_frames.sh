@@ -2,7 +2,9 @@
 # Issue-4/15 benchmark: viewer frame times under Xvfb at 1280x720 (`shadelab view --frames N --stats`), each
 # case run RUNS times (default 5); prints every run's medians and the median of them. Targets: a frame while
 # a shininess slider is dragged <= 33 ms; orbiting < 40 ms; <= 50 ms while the reference restarts every frame
-# (Split, a shininess change per frame). ENGINE=0 leaves out the 2CylinderEngine case.
+# (Split, a shininess change per frame). Orbiting is measured twice: as the viewer runs by default, with the
+# half-size preview while the camera moves (raster.movingPreview), and with the preview off (every orbit frame
+# at full size). ENGINE=0 leaves out the 2CylinderEngine case.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
@@ -31,8 +33,10 @@ bench() {  # label, then shadelab view arguments
 bench "default scene, Raster, shininess dragged every frame (a partial redraw)" assets/scenes/default.json \
     --script bench/viewer_drag.json
 bench "default scene, Raster, full redraw of an unchanged image" assets/scenes/default.json
-bench "default scene, Raster, orbiting 1.5 degrees every frame" assets/scenes/default.json \
-    --script bench/viewer_orbit.json
+bench "default scene, Raster, orbiting 1.5 degrees every frame (half-size preview while moving, the default)" \
+    assets/scenes/default.json --script bench/viewer_orbit.json
+bench "default scene, Raster, orbiting 1.5 degrees every frame, preview off (full size every frame)" \
+    assets/scenes/default.json --script bench/viewer_orbit_full.json
 bench "default scene, Split, reference restarting every frame" assets/scenes/default.json \
     --script bench/viewer_split_restart.json
 if [[ -f $engine && ${ENGINE:-1} != 0 ]]; then

@@ -762,6 +762,13 @@ TEST(AppScript, SetRasterChangesOnlyTheFieldsGiven) {
     applyScriptAction(a, sc.actions[2], sc.file);
     setRasterSettings(b, RasterSettings{0, 2.0f, 0.75f, true, 64});
     EXPECT_EQ(sceneToJson(a.scene), sceneToJson(b.scene));
+    // The viewer's moving preview (on by default, the control) is switched like the others.
+    const Script off = parse(R"([{"action": "setRaster", "movingPreview": false}])");
+    ViewerState c = defaultState();
+    EXPECT_TRUE(c.scene.raster.movingPreview);
+    applyScriptAction(c, off.actions[0], off.file);
+    EXPECT_FALSE(c.scene.raster.movingPreview);
+    EXPECT_EQ(c.scene.raster.pcf, RasterSettings{}.pcf);
     // Errors name the field as the scene file's do; a field of another action is refused.
     EXPECT_EQ(parseError(R"([{"action": "setRaster", "shadowMapSize": 5}])"),
               "actions.json: actions[0].shadowMapSize: expected \"auto\" or an integer in 16..8192, got 5");

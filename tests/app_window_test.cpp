@@ -589,3 +589,32 @@ TEST(AppWindow, StatusMessagesNeverMoveTheControls) {
     // Negative control: a real change in the panel (an object selected) is seen by the same comparison.
     EXPECT_GT(panelRowsDiffer(a, c), 0);
 }
+
+TEST(AppWindow, MovingPreviewOnlyWhileTheCameraMoves) {
+    // Issue 15's orbit speed: while the camera moves the raster image is drawn at half size
+    // (raster.movingPreview, on by default); once it stops, the full-size image is back. --stats counts the
+    // half-size draws; the image at exit, after the camera stopped, is the full-size one either way.
+    REQUIRE_XVFB();
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    std::string out[2];
+    std::string shot[2];
+    for (int on = 0; on < 2; ++on) {
+        const std::string tag = on ? "on" : "off";
+        std::string actions = on ? "[" : R"([{"frame": 0, "action": "setRaster", "movingPreview": false},)";
+        for (int f = 0; f < 5; ++f)
+            actions += std::string(f ? "," : "") + R"({"frame": )" + std::to_string(f) +
+                       R"(, "action": "orbit", "yaw": 3, "pitch": 0})";
+        const std::string script = writeText("moving_preview_" + tag + ".json", actions + "]");
+        shot[on] = test::outputPath("moving_preview_exit_" + tag + ".png");
+        fs::remove(shot[on]);
+        Result v =
+            view(scene + " --size " + kSize + " --frames 9 --stats --script " + script + " --screenshot " + shot[on]);
+        ASSERT_EQ(v.code, 0) << v.out;
+        out[on] = v.out;
+    }
+    // Frames 1..4 moved the camera (frame 0 has no earlier camera to compare with).
+    EXPECT_NE(out[1].find("half-size previews     4 of"), std::string::npos) << out[1];
+    // Negative control: switched off, no frame is drawn at half size.
+    EXPECT_NE(out[0].find("half-size previews     0 of"), std::string::npos) << out[0];
+    expectSameImage("moving_preview_exit", shot[1], shot[0]);
+}

@@ -105,6 +105,13 @@ void drawViewSection(PanelContext& ctx) {
     ImGui::SameLine();
     ImGui::Checkbox("light markers", &ctx.fields.lightMarkers);
     ImGui::Checkbox("smooth edges when still (16 samples)", &ctx.fields.smooth);
+    // The scene's raster.movingPreview (raster_settings.h): a quarter of the pixels while the camera moves.
+    bool preview = s.scene.raster.movingPreview;
+    if (ImGui::Checkbox("half-size preview while the camera moves", &preview)) {
+        RasterSettings r = s.scene.raster;
+        r.movingPreview = preview;
+        setRasterSettings(s, r);
+    }
     int encoding = s.encoding == Encoding::Srgb ? 0 : 1;
     ImGui::TextDisabled("encoding");
     ImGui::SameLine();

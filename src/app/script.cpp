@@ -91,7 +91,7 @@ const ActionInfo kActions[] = {
      [](const JsonNode& a) -> Action { return SetSplit{a.child("position").inRange(0.0f, 1.0f, false, false)}; }},
     {"setAmbient", {"value"}, [](const JsonNode& a) -> Action { return SetAmbient{a.child("value").rgb()}; }},
     {"setRaster",
-     {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"},
+     {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize", "movingPreview"},
      [](const JsonNode& a) -> Action { return SetRaster{parseRasterOverride(a)}; }},
     {"addLight",
      {"type", "position", "direction", "color"},

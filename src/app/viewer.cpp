@@ -6,6 +6,7 @@
 #include "app/light_markers.h"
 #include "compare/comparison.h"
 #include "image/png.h"
+#include "raster/raster_limits.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -36,6 +37,8 @@ int Viewer::run() {
             "shadelab:   partial redraws        %zu of %zu (a material edit: only its objects); shadow maps "
             "re-rendered in %zu, environment cubes in %zu\n",
             partialDraws_, rasterStats_.count(), shadowRenders_, environmentRenders_);
+        std::printf("shadelab:   half-size previews     %zu of %zu (the camera moving, raster.movingPreview %s)\n",
+                    previewDraws_, rasterStats_.count(), state_.scene.raster.movingPreview ? "on" : "off");
         if (idleStats_.count())
             std::printf("shadelab:   frame, nothing changed median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
                         idleStats_.median(), idleStats_.percentile(95.0), idleStats_.count());
@@ -144,7 +147,8 @@ bool Viewer::frame() {
     // --stats forces a raster redraw on every other frame, so it measures both the frame a change costs
     // (the honest figure) and the frame that only redraws the window.
     const bool forced = options_.stats && frame_ % 2 == 0;
-    const bool redrawn = ensureRasterCurrent(forced);
+    const bool moving = cameraMoved();
+    const bool redrawn = ensureRasterCurrent(forced, moving && state_.scene.raster.movingPreview);
     if (!redrawn) accumulate();
     compose();
     ++frame_;
@@ -199,38 +203,58 @@ void Viewer::computeLayout() {
     imageH_ = float(fbRect_.height) / fbScale_;
 }
 
-bool Viewer::ensureRasterCurrent(bool force) {
+bool Viewer::cameraMoved() {
+    const Camera& c = state_.scene.camera;
+    const bool moved = lastCamera_ && (c.position != lastCamera_->position || c.target != lastCamera_->target ||
+                                       c.up != lastCamera_->up || c.fovY != lastCamera_->fovY);
+    lastCamera_ = c;
+    return moved;
+}
+
+bool Viewer::ensureRasterCurrent(bool force, bool preview) {
     if (renderW_ <= 0 || renderH_ <= 0) return false;
     if (meshGeometry_ != state_.geometryRevision) {
         raster_->uploadMeshes(state_.scene);
         meshGeometry_ = state_.geometryRevision;
         rasterRevision_ = 0;
     }
-    const bool changed = rasterRevision_ != state_.revision || rasterW_ != renderW_ || rasterH_ != renderH_;
+    const bool changed = rasterRevision_ != state_.revision || rasterW_ != renderW_ || rasterH_ != renderH_ ||
+                         (rasterPreview_ && !preview);
     if (!force && !changed) return false;
     if (changed) lastChange_ = glfwGetTime();
     // A forced redraw of an unchanged image (--stats) is a full one: what any change but a material edit costs.
     if (!changed) raster_->invalidate();
     const double t0 = glfwGetTime();
     try {
-        raster_->draw(state_.scene, renderW_, renderH_, true);
+        if (preview) {
+            // Half the width and height, a quarter of the pixels; the display pass scales it up. The shadow
+            // maps keep the full image's size ("auto" depends on it), so they are neither re-rendered nor
+            // coarser than in the full frame that follows.
+            Scene scene = state_.scene;
+            scene.raster.shadowMapSize = raster::shadowMapSizeFor(scene.raster, renderW_, renderH_);
+            raster_->draw(scene, std::max(1, (renderW_ + 1) / 2), std::max(1, (renderH_ + 1) / 2), true);
+        } else {
+            raster_->draw(state_.scene, renderW_, renderH_, true);
+        }
     } catch (const std::runtime_error& e) {
         // A shadow-map size too large for memory (raster_limits.h budget): say so and fall back to auto.
         if (state_.scene.raster.shadowMapSize == 0) throw;
         setStatus(std::string(e.what()) + "; using auto", true);
         state_.scene.raster.shadowMapSize = 0;
         markRasterChanged(state_);
-        return ensureRasterCurrent(force);
+        return ensureRasterCurrent(force, preview);
     }
     if (options_.stats) glFinish();  // so the figure is the draw, not just its submission
     if (options_.stats) rasterStats_.add((glfwGetTime() - t0) * 1000.0);
     const raster::RasterRenderer::DrawReport& report = raster_->lastDraw();
     partialDraws_ += report.partial ? 1 : 0;
+    previewDraws_ += preview ? 1 : 0;
     shadowRenders_ += report.shadowMaps ? 1 : 0;
     environmentRenders_ += report.environments ? 1 : 0;
     rasterRevision_ = state_.revision;
     rasterW_ = renderW_;
     rasterH_ = renderH_;
+    rasterPreview_ = preview;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return true;
 }

@@ -59,8 +59,12 @@ private:
     bool frame();
     void waitForWork();
     void computeLayout();
-    bool ensureRasterCurrent(bool force);  // true when it drew; the target then holds the centre sample
-    bool accumulate();                     // two more jittered samples while still; true when it drew
+    // True when it drew; the target then holds the centre sample. `preview`: the camera is moving and the
+    // scene's raster.movingPreview is on, so a half-size image will do (a full-size one is never redrawn for
+    // it); without it a preview image counts as stale and the full one is drawn.
+    bool ensureRasterCurrent(bool force, bool preview = false);
+    bool cameraMoved();  // whether the scene's camera changed since the last call (once per frame)
+    bool accumulate();   // two more jittered samples while still; true when it drew
     void updateReference();
     void updateProbe();
     void compose();
@@ -125,8 +129,10 @@ private:
 
     // What the raster target holds.
     uint64_t rasterRevision_ = 0, rasterGeometry_ = 0, meshGeometry_ = 0;
-    int rasterW_ = 0, rasterH_ = 0;
-    double lastChange_ = 0.0;  // glfwGetTime() of the last change of the image (for --verbose)
+    int rasterW_ = 0, rasterH_ = 0;     // the image's full size (a preview is about half of it)
+    bool rasterPreview_ = false;        // the target holds the half-size preview of a moving camera
+    std::optional<Camera> lastCamera_;  // the camera of the previous frame, for cameraMoved()
+    double lastChange_ = 0.0;           // glfwGetTime() of the last change of the image (for --verbose)
 
     // Probe, recomputed when the state or pixel changes.
     std::optional<ProbeResult> probe_;
@@ -162,6 +168,7 @@ private:
     int settleFrames_ = kSettleFrames;
     uint64_t idleRevision_ = 0;
     FrameStats frameStats_, idleStats_, rasterStats_;    // frames with / without a raster redraw
+    size_t previewDraws_ = 0;                            // raster draws at half size (camera moving)
     size_t partialDraws_ = 0;                            // raster draws that redrew only some objects
     size_t shadowRenders_ = 0, environmentRenders_ = 0;  // raster draws that re-rendered those (--stats)
     std::array<double, 64> recentMs_{};

@@ -235,6 +235,7 @@ void setRasterSettings(ViewerState& state, const RasterSettings& raster) {
     r.normalBias = bias(raster.normalBias);
     r.pcf = raster.pcf;
     r.reflectionCubeSize = std::clamp(raster.reflectionCubeSize, kMinReflectionCubeSize, kMaxReflectionCubeSize);
+    r.movingPreview = raster.movingPreview;
     markRasterChanged(state);  // the tracer has no shadow maps or cubes: the reference keeps running
 }
 

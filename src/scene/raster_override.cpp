@@ -14,6 +14,7 @@ void RasterOverride::applyTo(RasterSettings& r) const {
     if (normalBias) r.normalBias = *normalBias;
     if (pcf) r.pcf = *pcf;
     if (reflectionCubeSize) r.reflectionCubeSize = *reflectionCubeSize;
+    if (movingPreview) r.movingPreview = *movingPreview;
 }
 
 namespace {
@@ -42,6 +43,7 @@ RasterOverride parseRasterOverride(const JsonNode& n) {
     if (auto f = n.find("pcf")) o.pcf = f->boolean();
     if (auto f = n.find("reflectionCubeSize"))
         o.reflectionCubeSize = f->integerIn(kMinReflectionCubeSize, kMaxReflectionCubeSize);
+    if (auto f = n.find("movingPreview")) o.movingPreview = f->boolean();
     return o;
 }
 

@@ -17,12 +17,13 @@ struct RasterOverride {
     std::optional<float> normalBias;   // shadow-map texels, [0, kMaxShadowBias]
     std::optional<bool> pcf;
     std::optional<int> reflectionCubeSize;  // texels per face, [kMinReflectionCubeSize, kMaxReflectionCubeSize]
+    std::optional<bool> movingPreview;
 
     void applyTo(RasterSettings& r) const;
 };
 
 // Reads whichever of "shadowMapSize" ("auto", 0 or an integer in range), "depthBias", "normalBias", "pcf"
-// and "reflectionCubeSize" object `n` holds; other keys are the caller's to warn about or refuse.
+// "reflectionCubeSize" and "movingPreview" object `n` holds; other keys are the caller's to warn about or refuse.
 RasterOverride parseRasterOverride(const JsonNode& n);
 
 }  // namespace shadelab

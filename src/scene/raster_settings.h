@@ -11,6 +11,7 @@ struct RasterSettings {
     float normalBias = 1.5f;       // shadow-map texels, receiver moved along its normal (Holbert 2011)
     bool pcf = false;              // 3x3 percentage-closer filtering; off = one hard comparison, as the tracer
     int reflectionCubeSize = 128;  // texels per face of a reflective sphere's or mesh's environment cube
+    bool movingPreview = true;     // viewer only: while the camera moves, draw at half width and height
 };
 
 // Accepted ranges (scene-file validation, CLI, viewer sliders).

@@ -257,7 +257,8 @@ Scene parseSceneDocument(const JsonNode& root) {
     if (auto f = root.find("energyCompensation")) scene.energyCompensation = f->boolean();
     if (auto f = root.find("maxDepth")) scene.maxDepth = f->integerIn(0, kMaxDepthLimit);
     if (auto f = root.find("raster")) {
-        f->requireObject().warnUnknownKeys({"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize"});
+        f->requireObject().warnUnknownKeys(
+            {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize", "movingPreview"});
         parseRasterOverride(*f).applyTo(scene.raster);
     }
 
@@ -400,7 +401,8 @@ std::string sceneToJson(const Scene& scene) {
                      {"depthBias", exact(r.depthBias)},
                      {"normalBias", exact(r.normalBias)},
                      {"pcf", r.pcf},
-                     {"reflectionCubeSize", r.reflectionCubeSize}};
+                     {"reflectionCubeSize", r.reflectionCubeSize},
+                     {"movingPreview", r.movingPreview}};
 
     OJson lights = OJson::array();
     for (const Light& l : scene.lights) {

@@ -91,6 +91,7 @@ std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
     d.f("raster.normalBias", a.raster.normalBias, b.raster.normalBias);
     d.eq("raster.pcf", a.raster.pcf, b.raster.pcf);
     d.eq("raster.reflectionCubeSize", a.raster.reflectionCubeSize, b.raster.reflectionCubeSize);
+    d.eq("raster.movingPreview", a.raster.movingPreview, b.raster.movingPreview);
     d.eq("lights.size", a.lights.size(), b.lights.size());
     for (size_t i = 0; i < std::min(a.lights.size(), b.lights.size()); ++i) {
         const Light &x = a.lights[i], &y = b.lights[i];
@@ -243,6 +244,7 @@ struct RandomSceneMaker {
             s.raster.pcf = coin();
             s.raster.reflectionCubeSize =
                 kMinReflectionCubeSize + upTo(kMaxReflectionCubeSize - kMinReflectionCubeSize);
+            s.raster.movingPreview = coin();
         }
         for (int i = upTo(kMaxLights); i > 0; --i) {
             Light l;
@@ -313,10 +315,10 @@ TEST(SceneJson, RasterSettingsRoundTripAndAcceptAutoOrZero) {
     s.raster = RasterSettings{2048, 0.25f, 3.0f, true, 256};
     std::string text = sceneToJson(s);
     EXPECT_EQ(nlohmann::json::parse(text)["raster"], nlohmann::json::parse(R"({"shadowMapSize": 2048,
-        "depthBias": 0.25, "normalBias": 3.0, "pcf": true, "reflectionCubeSize": 256})"))
+        "depthBias": 0.25, "normalBias": 3.0, "pcf": true, "reflectionCubeSize": 256, "movingPreview": true})"))
         << text;
     expectRoundTrip(s);
-    s.raster = RasterSettings{kMinShadowMapSize, 0.0f, kMaxShadowBias, false, kMaxReflectionCubeSize};
+    s.raster = RasterSettings{kMinShadowMapSize, 0.0f, kMaxShadowBias, false, kMaxReflectionCubeSize, false};
     expectRoundTrip(s);
 
     Scene a = parse(R"({"raster": {"shadowMapSize": "auto", "pcf": true}})");
@@ -324,6 +326,8 @@ TEST(SceneJson, RasterSettingsRoundTripAndAcceptAutoOrZero) {
     EXPECT_TRUE(a.raster.pcf);
     EXPECT_EQ(a.raster.depthBias, RasterSettings{}.depthBias) << "fields left out keep their defaults";
     EXPECT_EQ(a.raster.reflectionCubeSize, RasterSettings{}.reflectionCubeSize);
+    EXPECT_TRUE(a.raster.movingPreview) << "the viewer's moving preview is on by default";
+    EXPECT_FALSE(parse(R"({"raster": {"movingPreview": false}})").raster.movingPreview);
     EXPECT_EQ(parse(R"({"raster": {"shadowMapSize": 0}})").raster.shadowMapSize, 0);
     EXPECT_EQ(parse(R"({"raster": {"shadowMapSize": 512.0}})").raster.shadowMapSize, 512);
     EXPECT_EQ(parse(R"({"raster": {}})").raster.normalBias, RasterSettings{}.normalBias);
@@ -332,6 +336,9 @@ TEST(SceneJson, RasterSettingsRoundTripAndAcceptAutoOrZero) {
     Scene b = s;
     b.raster.normalBias = std::nextafter(b.raster.normalBias, 0.0f);
     EXPECT_EQ(joined(diffScenes(s, b)).rfind("raster.normalBias", 0), 0u);
+    Scene c = s;
+    c.raster.movingPreview = !c.raster.movingPreview;
+    EXPECT_EQ(joined(diffScenes(s, c)).rfind("raster.movingPreview", 0), 0u);
 }
 
 TEST(SceneJson, SaveWritesTheFile) {
