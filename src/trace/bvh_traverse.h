@@ -43,12 +43,11 @@ inline uint32_t orderChildren(const BvhNode& node, unsigned mask, const float* t
     const int i1 = __builtin_ctz(mask);
     mask &= mask - 1;
     if (mask == 0) {
-        if (tNear[i1] < tNear[i0]) {
-            push(node.child[i0], tNear[i0]);
-            return node.child[i1];
-        }
-        push(node.child[i1], tNear[i1]);
-        return node.child[i0];
+        // Two: selects, not branches (which of the two is nearer is a coin toss for incoherent rays).
+        const bool swap = tNear[i1] < tNear[i0];
+        const int nearer = swap ? i1 : i0, farther = swap ? i0 : i1;
+        push(node.child[farther], tNear[farther]);
+        return node.child[nearer];
     }
     // Three or more: sort them on a key of (entry distance, child index) with a branch-free network of
     // compare-exchanges, then push all but the nearest, farthest first. A hit child's tNear is >= 0 and not NaN
