@@ -55,21 +55,145 @@ inline int hits8(const BoxRay8& r, const float (*bounds)[8], float tMax, float* 
     return _mm256_movemask_ps(_mm256_cmp_ps(tn, _mm256_min_ps(tf, _mm256_set1_ps(tMax)), _CMP_LE_OS));
 }
 
+// The watertight test (watertight.h) on up to four triangles of one leaf at once. The leaf's positions are
+// contiguous (9 floats per slot); masked loads read each corner (never past the leaf), a permute puts its
+// components in the ray's order (kx, ky, kz) and a transpose makes a lane per triangle. Every lane does the
+// scalar test's operations in its order (sub, mul, add and div are exactly rounded, and this file is built
+// with -ffp-contract=off), so a lane's t and barycentrics are the scalar test's bits. A leaf where any
+// triangle's edge function rounds to exactly zero (the scalar test's double recomputation) is handed whole to
+// the scalar loop.
+struct LeafRay4 {
+    __m128 ox, oy, oz, Sx, Sy, Sz;
+    __m128i perm;  // (kx, ky, kz, 3): moves a corner's permuted components into lanes 0, 1, 2
+};
+
+LeafRay4 makeLeafRay4(const WatertightRay& w) {
+    LeafRay4 r;
+    r.ox = _mm_set1_ps(w.ox);
+    r.oy = _mm_set1_ps(w.oy);
+    r.oz = _mm_set1_ps(w.oz);
+    r.Sx = _mm_set1_ps(w.Sx);
+    r.Sy = _mm_set1_ps(w.Sy);
+    r.Sz = _mm_set1_ps(w.Sz);
+    r.perm = _mm_setr_epi32(w.kx, w.ky, w.kz, 3);
+    return r;
+}
+
+struct Hits4 {
+    __m128 t, b0, b1, b2;
+};
+
+// Bit k set: triangle k of the `count` (1..4) at `v` is hit at 0 < t <= tMax. -1: some lane needs the scalar
+// test's double recomputation.
+inline int triangles4(const LeafRay4& r, const float* v, uint32_t count, float tMax, Hits4& h) {
+    const __m128 live = _mm_castsi128_ps(_mm_cmpgt_epi32(_mm_set1_epi32(int(count)), _mm_setr_epi32(0, 1, 2, 3)));
+    const __m128 zero = _mm_setzero_ps();
+    // Triangle i's corner c as (x, y, z) in the ray's permuted order; lanes past the count repeat the last one.
+    const __m128i three = _mm_setr_epi32(-1, -1, -1, 0);
+    const float* p[4];
+    for (uint32_t i = 0; i < 4; ++i) p[i] = v + 9 * (i < count ? i : count - 1);
+    __m128 k[3][3];  // [corner][x, y, z]
+    for (int c = 0; c < 3; ++c) {
+        __m128 r0 = _mm_permutevar_ps(_mm_maskload_ps(p[0] + 3 * c, three), r.perm);
+        __m128 r1 = _mm_permutevar_ps(_mm_maskload_ps(p[1] + 3 * c, three), r.perm);
+        __m128 r2 = _mm_permutevar_ps(_mm_maskload_ps(p[2] + 3 * c, three), r.perm);
+        __m128 r3 = _mm_permutevar_ps(_mm_maskload_ps(p[3] + 3 * c, three), r.perm);
+        const __m128 t0 = _mm_unpacklo_ps(r0, r1), t1 = _mm_unpacklo_ps(r2, r3);
+        const __m128 t2 = _mm_unpackhi_ps(r0, r1), t3 = _mm_unpackhi_ps(r2, r3);
+        k[c][0] = _mm_movelh_ps(t0, t1);
+        k[c][1] = _mm_movehl_ps(t1, t0);
+        k[c][2] = _mm_movelh_ps(t2, t3);
+    }
+    const __m128 Akx = _mm_sub_ps(k[0][0], r.ox), Aky = _mm_sub_ps(k[0][1], r.oy), Akz = _mm_sub_ps(k[0][2], r.oz);
+    const __m128 Bkx = _mm_sub_ps(k[1][0], r.ox), Bky = _mm_sub_ps(k[1][1], r.oy), Bkz = _mm_sub_ps(k[1][2], r.oz);
+    const __m128 Ckx = _mm_sub_ps(k[2][0], r.ox), Cky = _mm_sub_ps(k[2][1], r.oy), Ckz = _mm_sub_ps(k[2][2], r.oz);
+    const __m128 Ax = _mm_sub_ps(Akx, _mm_mul_ps(r.Sx, Akz)), Ay = _mm_sub_ps(Aky, _mm_mul_ps(r.Sy, Akz));
+    const __m128 Bx = _mm_sub_ps(Bkx, _mm_mul_ps(r.Sx, Bkz)), By = _mm_sub_ps(Bky, _mm_mul_ps(r.Sy, Bkz));
+    const __m128 Cx = _mm_sub_ps(Ckx, _mm_mul_ps(r.Sx, Ckz)), Cy = _mm_sub_ps(Cky, _mm_mul_ps(r.Sy, Ckz));
+    const __m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
+    const __m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
+    const __m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
+    const __m128 onEdge = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero));
+    if (_mm_movemask_ps(_mm_and_ps(onEdge, live))) return -1;
+    const __m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
+    const __m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
+    const __m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
+    const __m128 T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, _mm_mul_ps(r.Sz, Akz)), _mm_mul_ps(V, _mm_mul_ps(r.Sz, Bkz))),
+                                _mm_mul_ps(W, _mm_mul_ps(r.Sz, Ckz)));
+    const __m128 rcpDet = _mm_div_ps(_mm_set1_ps(1.0f), det);
+    h.t = _mm_mul_ps(T, rcpDet);
+    h.b0 = _mm_mul_ps(U, rcpDet);
+    h.b1 = _mm_mul_ps(V, rcpDet);
+    h.b2 = _mm_mul_ps(W, rcpDet);
+    // Kept: live, not straddling (signs mixed), det != 0, 0 < t <= tMax (ordered compares: NaN fails).
+    __m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), live);
+    ok = _mm_andnot_ps(_mm_cmpeq_ps(det, zero), ok);
+    ok = _mm_and_ps(ok, _mm_cmpgt_ps(h.t, zero));
+    ok = _mm_and_ps(ok, _mm_cmple_ps(h.t, _mm_set1_ps(tMax)));
+    return _mm_movemask_ps(ok);
+}
+
+// ClosestTriangleLeaf's answer, four triangles at a time: of the lanes hit, the nearest (lowest scene-order index
+// on a tie) is then weighed against the best so far by the scalar leaf's own rule.
+struct ClosestTriangleLeaf4 {
+    LeafRay4 r;
+    ClosestTriangleLeaf<Avx2Tag> scalar;  // the best so far, and the fallback
+
+    float operator()(uint32_t first, uint32_t count) {
+        TriangleLeafHit& best = scalar.best;
+        Hits4 h;
+        int m = triangles4(r, scalar.data.positions + size_t(first) * 9, count, best.t, h);
+        if (m < 0) return scalar(first, count);
+        if (m == 0) return best.t;
+        alignas(16) float t[4], b0[4], b1[4], b2[4];
+        _mm_store_ps(t, h.t);
+        int k = __builtin_ctz(unsigned(m));
+        for (m &= m - 1; m; m &= m - 1) {
+            const int j = __builtin_ctz(unsigned(m));
+            if (t[j] < t[k] || (t[j] == t[k] && scalar.data.source[first + j] < scalar.data.source[first + k])) k = j;
+        }
+        const uint32_t s = first + uint32_t(k);
+        const bool better =
+            best.slot == UINT32_MAX
+                ? t[k] < scalar.tMax
+                : (t[k] < best.t || (t[k] == best.t && scalar.data.source[s] < scalar.data.source[best.slot]));
+        if (better) {
+            _mm_store_ps(b0, h.b0);
+            _mm_store_ps(b1, h.b1);
+            _mm_store_ps(b2, h.b2);
+            best = TriangleLeafHit{t[k], s, b0[k], b1[k], b2[k]};
+        }
+        return best.t;
+    }
+};
+
+struct AnyTriangleLeaf4 {
+    LeafRay4 r;
+    AnyTriangleLeaf<Avx2Tag> scalar;
+
+    bool operator()(uint32_t first, uint32_t count) const {
+        Hits4 h;
+        const int m = triangles4(r, scalar.data.positions + size_t(first) * 9, count, scalar.tMax, h);
+        if (m < 0) return scalar(first, count);
+        return (m & _mm_movemask_ps(_mm_cmplt_ps(h.t, _mm_set1_ps(scalar.tMax)))) != 0;
+    }
+};
+
 }  // namespace
 
 void closestTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
                          TriangleLeafHit& best) {
     const BoxRay8 r = makeBoxRay8(boxRay);
-    ClosestTriangleLeaf<Avx2Tag> leaf{data, wr, best.t, best};
+    ClosestTriangleLeaf4 leaf{makeLeafRay4(wr), ClosestTriangleLeaf<Avx2Tag>{data, wr, best.t, best}};
     traverseClosestWith(
         nodes, best.t, [r](const BvhNode& n, float t, float* tNear) { return hits8(r, n.bounds, t, tNear); }, leaf);
-    best = leaf.best;
+    best = leaf.scalar.best;
 }
 
 bool anyTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
                      float tMax) {
     const BoxRay8 r = makeBoxRay8(boxRay);
-    const AnyTriangleLeaf<Avx2Tag> leaf{data, wr, tMax};
+    const AnyTriangleLeaf4 leaf{makeLeafRay4(wr), AnyTriangleLeaf<Avx2Tag>{data, wr, tMax}};
     return traverseAnyWith(
         nodes, tMax, [r](const BvhNode& n, float t, float* tNear) { return hits8(r, n.bounds, t, tNear); }, leaf);
 }

@@ -3,7 +3,9 @@
 //
 // Same answers as the baseline walks, bit for bit: the box test evaluates slab_test.h's expression operation
 // for operation (no FMA: the file is built with -ffp-contract=off and without -mfma), so the walks visit the
-// same nodes in the same order, and the leaf tests are triangle_leaf.h's. The AVX2 file instantiates every
+// same nodes in the same order. A leaf's up to four triangles are tested in one SSE step that performs the scalar
+// watertight test's operations per lane (watertight.h); a leaf where an edge function rounds to exactly 0 goes
+// to triangle_leaf.h's scalar loop, whose double recomputation the lanes do not do. The AVX2 file instantiates every
 // template it uses with types of its own, so the linker can never hand its AVX2 code to a baseline caller.
 #pragma once
 

@@ -1,7 +1,8 @@
 // The leaf tests of MeshBvh's two walks: a leaf's triangles (slots [first, first + count), positions in slot
 // order) against one ray, keeping the nearest hit with its order-independent tie-break, or stopping at any hit.
 // Templates on a tag type, like watertight.h's test, so the baseline walks (mesh_bvh.cpp) and the AVX2 ones
-// (bvh_traverse_avx2.cpp) each inline their own copy into the node walk.
+// (bvh_traverse_avx2.cpp) each inline their own copy into the node walk. The AVX2 walk tests a leaf's triangles
+// four at a time and falls back to these loops only for a leaf with an edge function of exactly 0.
 #pragma once
 
 #include "trace/watertight.h"
