@@ -1,9 +1,9 @@
 // texture_upload_bench (issue 16): 16 MiB of 8-bit RGBA textures (four 1024² images) made ready to draw,
 // in the two stages shadelab takes: (a) scene/texture.h's makeTexture, the 8-bit level 0 kept and the mip
 // chain built on the CPU (averaged in linear light, re-encoded to 8-bit sRGB), as the glTF importer does once
-// per image; (b) raster/mesh_textures.h's upload of every level (each code as its half-float linear value,
-// RGBA16F) into a headless GL context, up to glFinish. Budget for both together: 60 ms. Prints medians of N
-// runs. Usage: texture_upload_bench [runs] [images] [side]
+// per image; (b) raster/mesh_textures.h's upload of every level as the 8-bit codes (GL_SRGB8_ALPHA8 or
+// GL_RGBA8; GL decodes them) into a headless GL context, up to glFinish. Budget for both together: 60 ms.
+// Prints medians of N runs. Usage: texture_upload_bench [runs] [images] [side]
 #include "gl/gl_api.h"
 #include "gl/headless_context.h"
 #include "raster/mesh_textures.h"
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
             total.push_back(m + upload.back());
         }
         std::printf("makeTexture (8-bit level 0 + mips, CPU): median %.1f ms\n", median(make));
-        std::printf("upload (RGBA16F, every level, glFinish): median %.1f ms\n", median(upload));
+        std::printf("upload (8-bit sRGB or UNORM, every level, glFinish): median %.1f ms\n", median(upload));
         std::printf("both: median %.1f ms (budget 60 ms)\n", median(total));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "texture_upload_bench: %s\n", e.what());
