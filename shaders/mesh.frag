@@ -1,9 +1,9 @@
 // Triangle meshes: interpolated normal, renormalised in shadeLight, flipped to face the viewer by winding;
-// with SL_MATERIAL_MAPS (scenes with a textured or non-opaque part; RasterRenderer::programsFor), the
-// material's glTF maps (base colour, metallic-roughness, normal, occlusion) and its alpha mode. Its value
-// has bit 1 << k set when some part of the scene has map k (k = 4, emissive: bit 32), and bit 16 for a
-// non-opaque alpha mode: the code
-// of maps no part has is left out, since llvmpipe's compile time grows with every inlined sampler.
+// with SL_MATERIAL_MAPS (a textured or non-opaque part; RasterRenderer::programsFor), the material's glTF
+// maps (base colour, metallic-roughness, normal, occlusion, emissive) and its alpha mode. Its value has bit
+// 1 << k set when the part has map k (k = 4, emissive: bit 32), and bit 16 for a non-opaque alpha mode: each
+// part's program holds the code of its own maps only, since llvmpipe's compile time grows with every inlined
+// sampler and it runs the code of every branch, taken or not.
 #include "surface.glsl"
 #ifdef SL_MATERIAL_MAPS
 #include "material_maps.glsl"
@@ -20,9 +20,9 @@ in vec4 v2f_tangent;
 
 #ifdef SL_MATERIAL_MAPS
 // The material's textures (src/raster/mesh_textures.h), map 0 base colour, 1 metallic-roughness, 2 normal,
-// 3 occlusion, 4 emissive: each 8-bit mip chain decoded to the tracer's linear values and uploaded as RGBA16F
-// levels (shading/texel_decode.h), read with texelFetch and filtered by hand in texture_sample.glsl exactly as
-// the tracer filters it. u_tex[map]: x the level count (0: no texture), y, z the wrap modes of u and v, w the
+// 3 occlusion, 4 emissive: each 8-bit mip chain uploaded as its codes (GL_SRGB8_ALPHA8 or GL_RGBA8; GL decodes
+// them, within 2e-3 of the tracer's tables in shading/texel_decode.h), read with texelFetch and filtered by
+// hand in texture_sample.glsl as the tracer filters it. u_tex[map]: x the level count (0: no texture), y, z the wrap modes of u and v, w the
 // flags 1 mag bilinear, 2 min bilinear, 4 mipmaps, 8 linear between levels. u_texMatrix[map]:
 // KHR_texture_transform's linear part (texTransform); u_texOffset[map]: xy its offset, z the TEXCOORD set (0
 // or 1), w the strength (normal scale, occlusion strength).

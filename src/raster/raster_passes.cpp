@@ -75,13 +75,17 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     glUniform4fv(p.uniform("u_alpha"), 1, glm::value_ptr(alpha));
 }
 
+int RasterRenderer::materialMaps(const Material& m) {
+    return (m.baseColorTexture ? 1 : 0) | (m.metallicRoughnessTexture ? 2 : 0) | (m.normalTexture ? 4 : 0) |
+           (m.occlusionTexture ? 8 : 0) | (m.alphaMode != AlphaMode::Opaque ? 16 : 0) | (m.emissiveTexture ? 32 : 0);
+}
+
 const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant, int materialMaps) {
     // mesh.frag's texture code (SL_MATERIAL_MAPS, the maps the scene's parts use) only where a part needs it:
     // all of it triples the mesh programs' compile time, which every untextured render would otherwise pay.
     const std::string defines =
         variant.defines() + (materialMaps ? "#define SL_MATERIAL_MAPS " + std::to_string(materialMaps) + "\n" : "");
     if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
-    if (programs_.size() >= 32) programs_.clear();  // a long viewer session: drop them all, not one by one
     ColorPrograms set;
     set.shaders = &shaders_;
     set.defines = defines;
@@ -161,7 +165,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             blended.push_back(k);
             continue;
         }
-        drawRange(scene, frame, programs, options, k);
+        drawRange(scene, frame, options, k);
     }
 
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
@@ -224,7 +228,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         glEnable(GL_BLEND);  // the coverage attachment is integer: blending leaves it alone
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
-        for (size_t k : blended) drawRange(scene, frame, programs, options, k);
+        for (size_t k : blended) drawRange(scene, frame, options, k);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
@@ -233,12 +237,13 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     glUseProgram(0);
 }
 
-void RasterRenderer::drawRange(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
-                               const PassOptions& options, size_t k) const {
+void RasterRenderer::drawRange(const Scene& scene, const FrameBlock& frame, const PassOptions& options,
+                               size_t k) const {
     const DrawRange& r = ranges_[k];
     const Material& m = scene.meshes[r.mesh].parts[r.part].material;
+    const ColorPrograms* programs = meshPrograms_[size_t(materialMaps(m))];  // filled by render()
     const gl::Program& p =
-        objectProgram(programs, ColorPrograms::Mesh, ColorPrograms::MeshEnvironment, -1, int(k), options);
+        objectProgram(*programs, ColorPrograms::Mesh, ColorPrograms::MeshEnvironment, -1, int(k), options);
     setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
     glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));

@@ -394,16 +394,20 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     const FrameBlock frame = makeFrameBlock(scene, view, band, jitter);
     if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
-    int maps = 0;  // mesh.frag's SL_MATERIAL_MAPS: bit k for map k some part has (emissive 32), 16 for alpha
+    const ShaderVariant variant = makeShaderVariant(frame, &shadows_.block());
+    // The program sets this render uses, dropped all at once first if there are too many to keep (a long
+    // viewer session), so no reference taken below is invalidated.
+    if (programs_.size() >= kMaxProgramSets) programs_.clear();
+    const ColorPrograms& programs = programsFor(variant);  // spheres, planes and untextured parts
+    int maps = 0;  // every part's SL_MATERIAL_MAPS bits together (the partial-redraw key)
+    meshPrograms_.fill(nullptr);
+    meshPrograms_[0] = &programs;
     for (const Mesh& m : scene.meshes)
         for (const MeshPart& p : m.parts) {
-            const Material& mat = p.material;
-            maps |= (mat.baseColorTexture ? 1 : 0) | (mat.metallicRoughnessTexture ? 2 : 0) |
-                    (mat.normalTexture ? 4 : 0) | (mat.occlusionTexture ? 8 : 0) |
-                    (mat.alphaMode != AlphaMode::Opaque ? 16 : 0) | (mat.emissiveTexture ? 32 : 0);
+            const int bits = materialMaps(p.material);
+            maps |= bits;
+            if (!meshPrograms_[size_t(bits)]) meshPrograms_[size_t(bits)] = &programsFor(variant, bits);
         }
-    const ShaderVariant variant = makeShaderVariant(frame, &shadows_.block());
-    const ColorPrograms& programs = programsFor(variant, maps);
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);

@@ -101,8 +101,7 @@ private:
     void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
                     const PassOptions& options) const;
     // One mesh part (ranges_[k]) with its material, through drawPasses' state.
-    void drawRange(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
-                   const PassOptions& options, size_t k) const;
+    void drawRange(const Scene& scene, const FrameBlock& frame, const PassOptions& options, size_t k) const;
     void prepareShadows(const Scene& scene, int width, int height);
     void prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs);
     void drawBackdrop(const FrameBlock& frame) const;
@@ -123,10 +122,18 @@ private:
         // Compiles on first use; leaves no program in use (callers bind what they draw with).
         const gl::Program& get(Kind kind) const;
     };
-    // materialMaps: mesh.frag's SL_MATERIAL_MAPS bits (set in draw() from the scene's parts), 0 for none.
+    // materialMaps: mesh.frag's SL_MATERIAL_MAPS bits of one part (materialMaps in raster_passes.cpp), 0 for
+    // none. The reference stays valid until render() drops the sets (a long viewer session: more than
+    // kMaxProgramSets of them), which it does before it takes any.
     const ColorPrograms& programsFor(const ShaderVariant& variant, int materialMaps = 0);
+    // mesh.frag's SL_MATERIAL_MAPS bits for one material: bit k for map k (emissive 32), 16 for alpha.
+    static int materialMaps(const Material& m);
+    static constexpr size_t kMaxProgramSets = 32;
     const gl::ShaderLibrary shaders_;
     std::map<std::string, ColorPrograms> programs_;
+    // This render's mesh programs by the part's SL_MATERIAL_MAPS bits (null for bits no part has): each part
+    // runs only the texture code of its own maps, since llvmpipe executes every branch of the union's code.
+    std::array<const ColorPrograms*, 64> meshPrograms_{};
     ShadowMaps shadows_;
     std::vector<float> shadowKey_;  // what the current shadow maps were rendered from
     uint64_t meshGeneration_ = 0;   // bumped by uploadMeshes
