@@ -22,10 +22,10 @@ in vec4 v2f_tangent;
 // The material's textures (src/raster/mesh_textures.h), map 0 base colour, 1 metallic-roughness, 2 normal,
 // 3 occlusion, 4 emissive: each 8-bit mip chain uploaded as its codes (GL_SRGB8_ALPHA8 or GL_RGBA8; GL decodes
 // them, within 2e-3 of the tracer's tables in shading/texel_decode.h), read with texelFetch and filtered by
-// hand in texture_sample.glsl as the tracer filters it. u_tex[map]: x the level count (0: no texture), y, z the wrap modes of u and v, w the
-// flags 1 mag bilinear, 2 min bilinear, 4 mipmaps, 8 linear between levels. u_texMatrix[map]:
-// KHR_texture_transform's linear part (texTransform); u_texOffset[map]: xy its offset, z the TEXCOORD set (0
-// or 1), w the strength (normal scale, occlusion strength).
+// hand in texture_sample.glsl as the tracer filters it. u_tex[map]: x the level count (0: no texture), y, z
+// the wrap modes of u and v, w the flags 1 mag bilinear, 2 min bilinear, 4 mipmaps, 8 linear between levels.
+// u_texMatrix[map]: KHR_texture_transform's linear part (texTransform); u_texOffset[map]: xy its offset, z
+// the TEXCOORD set (0 or 1), w the strength (normal scale, occlusion strength).
 uniform sampler2D t_baseColor;
 uniform sampler2D t_metalRough;
 uniform sampler2D t_normal;

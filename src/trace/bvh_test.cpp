@@ -1,15 +1,13 @@
 // The SAH BVH (bvh.h) and its traversals (mesh_bvh.h, sphere_set.h) against brute force: same nearest hit (t
 // bit-equal, same triangle) and any-hit answers for random rays over real assimp-testmodels meshes.
 // Sections: brute force | structural invariants | real models | degenerate inputs | random triangle soups
-// (issue 14's 8-wide tree: sizes around the parallel-build threshold, ties, empty scenes, thread counts,
-// the 8-wide slab test, AVX2 against SSE2 walks) | spheres.
+// (issue 14's 8-wide tree: sizes around the parallel-build threshold, ties, empty scenes, thread counts) |
+// spheres. The AVX2 walks and the 8-wide slab test against the baseline are bvh_isa_test.cpp.
 #include "trace/bvh.h"
 #include "scene/scene_load.h"
 #include "shading/lighting.h"
-#include "trace/bvh_isa.h"
-#include "trace/bvh_traverse_avx2.h"
+#include "trace/bvh_test_util.h"
 #include "trace/mesh_bvh.h"
-#include "trace/slab_test.h"
 #include "trace/sphere_set.h"
 #include "trace/trace_scene.h"
 #include "trace/trace_test_util.h"
@@ -30,33 +28,11 @@
 
 using namespace shadelab;
 using namespace shadelab::trace;
+using namespace shadelab::trace::test;
 
 namespace {
 
 // ---- Brute force over the scene's own triangles ---------------------------------------------------
-
-struct SceneTri {
-    float v[9];
-    uint32_t source;  // scene order over all triangles, as MeshBvh::sourceTriangle numbers them
-};
-
-bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-// Every triangle with finite vertices, in scene order (mesh, part, triangle), read from the Scene itself.
-std::vector<SceneTri> sceneTriangles(const Scene& scene) {
-    std::vector<SceneTri> out;
-    uint32_t source = 0;
-    for (const Mesh& m : scene.meshes)
-        for (const MeshPart& part : m.parts)
-            for (size_t t = 0, n = part.triangleCount(); t < n; ++t, ++source) {
-                const MeshGeometry& p = *part.geometry;
-                const glm::vec3 a = p.positions[p.indices[3 * t]], b = p.positions[p.indices[3 * t + 1]],
-                                c = p.positions[p.indices[3 * t + 2]];
-                if (finite(a) && finite(b) && finite(c) && !isDegenerateTriangle(a, b, c))
-                    out.push_back({{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z}, source});
-            }
-    return out;
-}
 
 struct Nearest {
     float t = INFINITY;
@@ -113,40 +89,6 @@ std::vector<Nearest> bruteForceAll(const std::vector<SceneTri>& tris, const std:
         });
     for (std::thread& t : workers) t.join();
     return out;
-}
-
-// Half the rays start anywhere in or around the bounds with a random direction; half aim at a random point
-// of a random triangle, so that most of those hit and probe the tree's interior.
-std::vector<Ray> randomRays(const std::vector<SceneTri>& tris, const Bounds& b, int n, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
-    std::normal_distribution<float> g;
-    const glm::vec3 ext = b.hi - b.lo;
-    const float pad = 0.25f * std::max({ext.x, ext.y, ext.z, 1e-3f});
-    const glm::vec3 lo = b.lo - glm::vec3(pad), size = ext + glm::vec3(2.0f * pad);
-    std::vector<Ray> rays;
-    for (int i = 0; i < n; ++i) {
-        const glm::vec3 o = lo + glm::vec3(u01(rng), u01(rng), u01(rng)) * size;
-        if (i % 2 == 0) {
-            rays.push_back(Ray{o, glm::normalize(glm::vec3(g(rng), g(rng), g(rng)))});
-            continue;
-        }
-        const SceneTri& t = tris[std::min(size_t(u01(rng) * float(tris.size())), tris.size() - 1)];
-        float w0 = u01(rng), w1 = u01(rng);
-        if (w0 + w1 > 1.0f) w0 = 1.0f - w0, w1 = 1.0f - w1;
-        const glm::vec3 a(t.v[0], t.v[1], t.v[2]), bb(t.v[3], t.v[4], t.v[5]), c(t.v[6], t.v[7], t.v[8]);
-        const glm::vec3 target = a + w0 * (bb - a) + w1 * (c - a);
-        if (glm::length(target - o) > 0.0f) rays.push_back(test::rayTowards(o, target));
-    }
-    return rays;
-}
-
-// "ray i o=(...) d=(...)" with every float digit, so a failing ray can be replayed.
-std::string describe(size_t i, const Ray& r) {
-    std::ostringstream s;
-    s << std::setprecision(9) << "ray " << i << " o=(" << r.origin.x << "f, " << r.origin.y << "f, " << r.origin.z
-      << "f) d=(" << r.dir.x << "f, " << r.dir.y << "f, " << r.dir.z << "f)";
-    return s.str();
 }
 
 struct Disagreement {
@@ -457,41 +399,6 @@ TEST(BvhBuild, ZeroAreaAndDuplicateTrianglesMatchBruteForce) {
 
 // ---- Random triangle soups (the 8-wide tree) --------------------------------------------------------
 
-// `n` random triangles in [-1, 1]^3, sizes from 1e-4 to 1 (log-uniform), a new part every 97 triangles, and
-// every 11th triangle an exact copy of an earlier one (exact ties in t).
-Scene soupScene(int n, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f), e(-4.0f, 0.0f);
-    std::normal_distribution<float> g;
-    Scene sc;
-    sc.meshes.push_back(Mesh{});
-    MeshGeometry p;
-    std::vector<glm::vec3> all;
-    auto flush = [&] {
-        if (!p.indices.empty()) sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(p)), Material{}});
-        p = MeshGeometry{};
-    };
-    for (int i = 0; i < n; ++i) {
-        glm::vec3 v[3];
-        if (i % 11 == 10 && !all.empty()) {
-            const size_t k = 3 * size_t(std::uniform_int_distribution<size_t>(0, all.size() / 3 - 1)(rng));
-            v[0] = all[k], v[1] = all[k + 1], v[2] = all[k + 2];
-        } else {
-            const glm::vec3 c(u(rng), u(rng), u(rng));
-            const float size = std::pow(10.0f, e(rng));
-            for (glm::vec3& q : v) q = c + size * glm::vec3(g(rng), g(rng), g(rng));
-        }
-        for (const glm::vec3& q : v) {
-            p.indices.push_back(uint32_t(p.positions.size()));
-            p.positions.push_back(q);
-            all.push_back(q);
-        }
-        if (i % 97 == 96) flush();
-    }
-    flush();
-    return sc;
-}
-
 TEST(BvhSoup, RandomSoupsMatchBruteForce) {
     // Sizes below and above the parallel build's queue threshold (4,096) and the parallel binning one.
     for (const int n : {1, 2, 5, 37, 1000, 6000, 70000}) {
@@ -623,157 +530,6 @@ TEST(BvhBuild, SameTreeForAnyThreadCount) {
     // Negative control: a different bin count builds a different tree, and the comparison sees it.
     o.bins = 8;
     EXPECT_FALSE(same(one, buildBvh(boxes, o)));
-}
-
-// The AVX2 walks against the SSE2 ones: the same hit (t, slot, barycentrics, bit for bit) and the same
-// any-hit answer for every ray, on the engine model and on a random soup, with tMax both open and cut short.
-TEST(BvhIsa, Avx2WalksMatchTheBaselineBitForBit) {
-    if (!bvhIsaAvailable(BvhIsa::Avx2)) GTEST_SKIP() << "this CPU or build has no AVX2 walks";
-    const std::string path = test::modelPath("2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
-    std::vector<Scene> scenes;
-    scenes.push_back(soupScene(20000, 99u));
-    if (std::filesystem::exists(path)) scenes.push_back(loadScene(path));
-    auto same = [](const std::optional<MeshHit>& a, const std::optional<MeshHit>& b) {
-        if (a.has_value() != b.has_value()) return false;
-        return !a || (std::memcmp(&a->t, &b->t, 4) == 0 && a->slot == b->slot && std::memcmp(&a->b0, &b->b0, 4) == 0 &&
-                      std::memcmp(&a->b1, &b->b1, 4) == 0 && std::memcmp(&a->b2, &b->b2, 4) == 0);
-    };
-    for (const Scene& sc : scenes) {
-        const std::vector<SceneTri> tris = sceneTriangles(sc);
-        const MeshBvh bvh(sc);
-        const std::vector<Ray> rays = randomRays(tris, bvh.bounds(), 20000, 31u);
-        size_t hits = 0, badClosest = 0, badAny = 0, control = 0;
-        for (size_t i = 0; i < rays.size(); ++i) {
-            const float tMax = i % 3 == 0 ? INFINITY : 0.05f * float(i % 40);
-            const std::optional<MeshHit> base = bvh.closestHit(rays[i], tMax, BvhIsa::Sse2);
-            const std::optional<MeshHit> wide = bvh.closestHit(rays[i], tMax, BvhIsa::Avx2);
-            hits += base.has_value();
-            badClosest += !same(base, wide);
-            badAny += bvh.anyHit(rays[i], tMax, BvhIsa::Sse2) != bvh.anyHit(rays[i], tMax, BvhIsa::Avx2);
-            // Negative control: the baseline with a bound cut to just past the AVX2 hit must not always agree.
-            if (wide) control += !same(bvh.closestHit(rays[i], std::nextafter(wide->t, 0.0f), BvhIsa::Sse2), wide);
-        }
-        std::printf("%zu triangles, %zu rays, %zu hits\n", tris.size(), rays.size(), hits);
-        EXPECT_GT(hits, rays.size() / 10) << "too few hits to test anything";
-        EXPECT_EQ(badClosest, 0u);
-        EXPECT_EQ(badAny, 0u);
-        EXPECT_EQ(control, hits) << "the comparison cannot see a changed hit";
-    }
-}
-
-TEST(BvhIsa, Avx2FourTriangleLeavesMatchOnEdgesVerticesAndTies) {
-    // The AVX2 walk tests a leaf's triangles four at a time and hands a leaf with an edge function of exactly 0
-    // to the scalar test. A tilted integer grid of quads (two triangles each, every fourth quad doubled in a
-    // later part so exact ties meet in one leaf), hit by rays through its vertices, edge midpoints and cell
-    // interiors, axis-parallel and oblique, from both sides: both walks must give the same bits.
-    if (!bvhIsaAvailable(BvhIsa::Avx2)) GTEST_SKIP() << "this CPU or build has no AVX2 walks";
-    Scene sc;
-    sc.meshes.push_back(Mesh{});
-    const int kN = 24;
-    auto z = [](int x, int y) { return 0.25f * float(x) - 0.125f * float(y); };
-    auto vertex = [&](int x, int y) { return glm::vec3(float(x), float(y), z(x, y)); };
-    for (int copy = 0; copy < 2; ++copy) {
-        MeshGeometry p;
-        for (int y = 0; y < kN; ++y)
-            for (int x = 0; x < kN; ++x) {
-                if (copy == 1 && (x + y) % 4 != 0) continue;
-                const glm::vec3 q[4] = {vertex(x, y), vertex(x + 1, y), vertex(x + 1, y + 1), vertex(x, y + 1)};
-                for (int k : {0, 1, 2, 0, 2, 3}) {
-                    p.indices.push_back(uint32_t(p.positions.size()));
-                    p.positions.push_back(q[k]);
-                }
-            }
-        sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(p)), Material{}});
-    }
-    const MeshBvh bvh(sc);
-    std::mt19937 rng(17);
-    std::uniform_int_distribution<int> cell(1, kN - 1), half(0, 2);
-    std::normal_distribution<float> g;
-    size_t rays = 0, hits = 0, badClosest = 0, badAny = 0, control = 0;
-    for (int i = 0; i < 20000; ++i) {
-        // Targets on the grid: a vertex (2·k), an edge midpoint or a cell centre (odd halves).
-        const float tx = float(cell(rng)) + 0.5f * float(half(rng) % 2), ty = float(cell(rng)) + 0.5f * float(i % 2);
-        const glm::vec3 target(tx, ty, 0.25f * tx - 0.125f * ty);
-        glm::vec3 d(0.0f, 0.0f, i % 4 < 2 ? -1.0f : 1.0f);
-        if (i % 3 == 1) d = glm::normalize(glm::vec3(0.25f * g(rng), 0.25f * g(rng), d.z));
-        if (i % 3 == 2) d = glm::normalize(glm::vec3(d.z, 0.0f, 0.0f) + glm::vec3(0.0f, 0.0f, 0.5f * d.z));
-        const Ray ray{target - 3.0f * d, d};
-        const float tMax = i % 5 == 0 ? 3.0f : INFINITY;
-        const std::optional<MeshHit> base = bvh.closestHit(ray, tMax, BvhIsa::Sse2);
-        const std::optional<MeshHit> wide = bvh.closestHit(ray, tMax, BvhIsa::Avx2);
-        ++rays;
-        hits += base.has_value();
-        const bool same =
-            base.has_value() == wide.has_value() &&
-            (!base || (std::memcmp(&base->t, &wide->t, 4) == 0 && base->slot == wide->slot &&
-                       std::memcmp(&base->b0, &wide->b0, 4) == 0 && std::memcmp(&base->b1, &wide->b1, 4) == 0 &&
-                       std::memcmp(&base->b2, &wide->b2, 4) == 0));
-        badClosest += !same;
-        if (!same && badClosest <= 3) ADD_FAILURE() << describe(size_t(i), ray);
-        badAny += bvh.anyHit(ray, tMax, BvhIsa::Sse2) != bvh.anyHit(ray, tMax, BvhIsa::Avx2);
-        // Negative control: a bound just short of the hit must lose it.
-        if (wide)
-            control += !bvh.closestHit(ray, std::nextafter(wide->t, 0.0f), BvhIsa::Avx2).has_value() ||
-                       bvh.closestHit(ray, std::nextafter(wide->t, 0.0f), BvhIsa::Avx2)->t != wide->t;
-    }
-    std::printf("%zu triangles, %zu rays, %zu hits\n", bvh.triangleCount(), rays, hits);
-    EXPECT_GT(hits, rays / 2) << "too few hits to test anything";
-    EXPECT_EQ(badClosest, 0u);
-    EXPECT_EQ(badAny, 0u);
-    EXPECT_EQ(control, hits) << "the comparison cannot see a changed hit";
-}
-
-TEST(SlabTest, EightBoxesAgreeWithTheScalarFormula) {
-    // slabHits8 (SSE2, two groups of four) and, where the CPU has it, slabHits8Avx2 against the per-lane formula
-    // they document, computed here in plain floats: random boxes (some inverted: unused children), origins
-    // inside and outside, axis-parallel directions, tMax spread. Both must give the same bits.
-    const bool avx2 = bvhIsaAvailable(BvhIsa::Avx2);
-    std::mt19937 rng(3);
-    std::uniform_real_distribution<float> u(-2.0f, 2.0f), s(0.0f, 1.5f);
-    std::normal_distribution<float> g;
-    size_t hits = 0, bad = 0, badAvx2 = 0, badControl = 0;
-    const int kRays = 10000;
-    for (int i = 0; i < kRays; ++i) {
-        alignas(32) float b[6][8];
-        for (int k = 0; k < 8; ++k) {
-            const bool inverted = (i + k) % 13 == 0;
-            for (int a = 0; a < 3; ++a) {
-                const float lo = u(rng), ext = 2.0f * s(rng);
-                b[a][k] = inverted ? INFINITY : lo;
-                b[3 + a][k] = inverted ? -INFINITY : lo + ext;
-            }
-        }
-        glm::vec3 d(g(rng), g(rng), g(rng));
-        if (i % 5 == 0) d[i % 3] = 0.0f;
-        if (i % 7 == 0) d = glm::vec3(0.0f), d[i % 3] = i % 2 ? 1.0f : -1.0f;
-        const Ray ray{{0.5f * u(rng), 0.5f * u(rng), 0.5f * u(rng)}, glm::normalize(d)};
-        const float tMax = i % 4 == 0 ? INFINITY : s(rng) * 3.0f;
-        const BoxRay br = makeBoxRay(ray);
-        float tNear[8], tNearAvx2[8];
-        const int mask = slabHits8(makeBoxRay4(br), b, tMax, tNear);
-        const int maskAvx2 = avx2 ? slabHits8Avx2(br, b, tMax, tNearAvx2) : mask;
-        if (!avx2) std::memcpy(tNearAvx2, tNear, sizeof tNear);
-        badAvx2 += maskAvx2 != mask || std::memcmp(tNear, tNearAvx2, sizeof tNear) != 0;
-        for (int k = 0; k < 8; ++k) {
-            float tn = 0.0f, tf = INFINITY;
-            for (int a = 0; a < 3; ++a) {
-                const float t0 = (b[br.nearIdx[a]][k] - br.org[a]) * br.invDir[a];
-                const float t1 = (b[br.farIdx[a]][k] - br.org[a]) * br.invDir[a] * kSlabFarScale;
-                tn = std::max(tn, t0);
-                tf = std::min(tf, t1);
-            }
-            const bool hit = tn <= std::min(tf, tMax);
-            hits += hit;
-            bad += hit != bool(mask & (1 << k)) || (hit && tn != tNear[k]);
-            const bool control = tn <= std::min(tf, 0.5f * tMax);  // a wrong bound must be noticed
-            badControl += control != bool(mask & (1 << k));
-        }
-    }
-    std::printf("%zu of %d box tests hit; AVX2 %s\n", hits, 8 * kRays, avx2 ? "compared" : "not available");
-    EXPECT_GT(hits, 3000u);
-    EXPECT_EQ(bad, 0u);
-    EXPECT_EQ(badAvx2, 0u);
-    EXPECT_GT(badControl, 100u);
 }
 
 TEST(SphereSetBvh, MatchesBruteForce) {
