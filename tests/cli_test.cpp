@@ -101,7 +101,10 @@ TEST(CliPath, PathTracesTheLessonScenesAndSaysHowNoisy) {
     const std::string all = test::outputPath("path_lvg_all.png"), indirect = test::outputPath("path_lvg_indirect.png");
     const std::string scene = test::sourcePath("assets/scenes/local-vs-global.json");
     ASSERT_EQ(run("render " + scene + " -o " + all + " --size 48x36 --renderer path --spp 8").code, 0);
-    ASSERT_EQ(run("render " + scene + " -o " + indirect + " --size 48x36 --renderer path --spp 8 --light-paths indirect").code, 0);
+    ASSERT_EQ(
+        run("render " + scene + " -o " + indirect + " --size 48x36 --renderer path --spp 8 --light-paths indirect")
+            .code,
+        0);
     double a = 0.0, b = 0.0;
     for (uint8_t v : readPng(all).data) a += v;
     for (uint8_t v : readPng(indirect).data) b += v;
@@ -373,6 +376,42 @@ TEST(Cli, RasterFlagsOverrideTheScenesRasterSettings) {
                      "--shadow-map-size auto --reflection-cube-size 128 --no-pcf"),
               base)
         << "--no-pcf turns the file's PCF off";
+}
+
+// A glTF whose base-colour PNG is cut short (issue 16): by default one warning and the factor alone (exit 0);
+// under --strict that line is the error (exit 1), and nothing is written.
+TEST(Cli, StrictMakesAnInputWarningAnErrorAndWritesNothing) {
+    const std::string intact = test::sourcePath("assets/models/textures/uv_checker.gltf");
+    std::string text = readAll(intact);
+    const std::string key = "data:image/png;base64,";
+    size_t at = text.find(key);
+    ASSERT_NE(at, std::string::npos);
+    at += key.size() + 40;  // 40 base64 characters: the signature and part of the header
+    const size_t end = text.find('"', at);
+    ASSERT_NE(end, std::string::npos);
+    text.erase(at, end - at);
+    const std::string model = writeText("strict_truncated.gltf", text);
+    const std::string out = test::outputPath("strict_truncated.png");
+    fs::remove(out);
+
+    const Result lenient = run("render " + model + " -o " + out + " --size 64x64");
+    EXPECT_EQ(lenient.code, 0) << lenient.out;
+    EXPECT_NE(lenient.out.find("warning: "), std::string::npos) << lenient.out;
+    EXPECT_TRUE(fs::exists(out));
+    fs::remove(out);
+
+    const Result strict = run("render " + model + " -o " + out + " --size 64x64 --strict");
+    EXPECT_EQ(strict.code, 1) << strict.out;
+    EXPECT_EQ(lineCount(strict.out), 1) << strict.out;
+    EXPECT_NE(strict.out.find("error: "), std::string::npos) << strict.out;
+    EXPECT_NE(strict.out.find("strict_truncated.gltf: images[0]"), std::string::npos) << strict.out;
+    EXPECT_NE(strict.out.find("--strict"), std::string::npos) << strict.out;
+    EXPECT_FALSE(fs::exists(out));
+
+    // Negative control: the intact model has nothing to warn about, so --strict renders it.
+    const Result clean = run("render " + intact + " -o " + out + " --size 64x64 --strict");
+    EXPECT_EQ(clean.code, 0) << clean.out;
+    EXPECT_TRUE(fs::exists(out));
 }
 
 TEST(CliCompare, ExitCodesFollowTheGates) {

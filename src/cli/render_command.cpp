@@ -130,6 +130,10 @@ std::vector<std::string> sceneInputs(const std::string& input, const Scene& scen
     return files;
 }
 
+// --strict: a warning about the input ends the render with that line as the error (exit 1), before anything
+// is written.
+void failOnWarning(const std::string& text) { throw InputError("", text + " (an error under --strict)"); }
+
 // The render itself; `doing` names the stage in progress, for an out-of-memory message.
 int render(const RenderOptions& o, std::string& doing) {
     const bool needRaster = o.renderer == RendererChoice::Raster || o.renderer == RendererChoice::Both;
@@ -137,7 +141,8 @@ int render(const RenderOptions& o, std::string& doing) {
     // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
     GltfImportOptions gltf;
     gltf.allowExternalPaths = o.allowExternalPaths;
-    auto sceneFuture = std::async(std::launch::async, [&] { return loadScene(o.input, printWarning, gltf); });
+    auto sceneFuture = std::async(std::launch::async,
+                                  [&] { return loadScene(o.input, o.strict ? failOnWarning : printWarning, gltf); });
     std::unique_ptr<gl::HeadlessContext> context;
     if (needRaster) {
         try {

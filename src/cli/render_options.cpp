@@ -49,6 +49,8 @@ const char* const kHelpTail =
     "  --gl-backend NAME          auto | egl-device | egl-surfaceless | osmesa\n"
     "                             (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
     "  --allow-external-paths     let glTF buffer URIs point outside the model's folder (../, absolute)\n"
+    "  --strict                   a warning about the input (an image that cannot be read or decoded, an\n"
+    "                             unknown field, a skipped feature) is an error: exit 1, nothing written\n"
     "  --max-memory SIZE          refuse a render estimated to need more, e.g. 512M or 4G\n"
     "                             (default: half of physical memory, within ulimit -v)\n"
     "  --timings                  print a per-stage timing and memory breakdown to stderr\n"
@@ -81,11 +83,11 @@ CameraChoice parseCameraFlag(const std::string& value) {
 }
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
-    std::vector<std::string> valued = {"-o",         "--output",     "--size",  "--model",    "--terms",
-                                       "--encoding", "--gl-backend", "--spp",   "--renderer", "--threads",
-                                       "--depth",    "--max-memory", "--camera", "--time-limit", "--estimator",
-                                       "--light-paths"};
-    std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths"};
+    std::vector<std::string> valued = {"-o",         "--output",     "--size",       "--model",
+                                       "--terms",    "--encoding",   "--gl-backend", "--spp",
+                                       "--renderer", "--threads",    "--depth",      "--max-memory",
+                                       "--camera",   "--time-limit", "--estimator",  "--light-paths"};
+    std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths", "--strict"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
     Args args(argc, argv, 2, valued, flags);
@@ -125,6 +127,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     o.allowExternalPaths = args.flag("--allow-external-paths");
     o.verbose = args.flag("--verbose");
     o.timings = args.flag("--timings");
+    o.strict = args.flag("--strict");
     return o;
 }
 

@@ -49,7 +49,8 @@ struct RenderOptions {
     uint64_t maxMemory = 0;           // --max-memory, bytes; 0 = defaultMaxMemory() (memory_budget.h)
     bool verbose = false;
     bool timings = false;
-    bool help = false;  // --help was given: print renderHelp() and do nothing else
+    bool strict = false;  // a warning about the input is an error: exit 1, nothing written
+    bool help = false;    // --help was given: print renderHelp() and do nothing else
 };
 
 // --camera's value (scene/camera_choice.h); throws UsageError naming --camera.
