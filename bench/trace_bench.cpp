@@ -204,6 +204,22 @@ struct EmbreeScene {
     }
 };
 
+// Embree's ray-hit record for `ray`, from t = 0 to infinity, with no hit yet.
+RTCRayHit embreeRayHit(const trace::Ray& ray) {
+    RTCRayHit rh{};
+    rh.ray.org_x = ray.origin.x;
+    rh.ray.org_y = ray.origin.y;
+    rh.ray.org_z = ray.origin.z;
+    rh.ray.dir_x = ray.dir.x;
+    rh.ray.dir_y = ray.dir.y;
+    rh.ray.dir_z = ray.dir.z;
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = INFINITY;
+    rh.ray.mask = ~0u;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
 RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, const ViewSetup& view, int threads) {
     std::vector<RayCounts> perRow(size_t(view.height));
     parallelRows(view.height, threads, [&](int y) {
@@ -213,17 +229,7 @@ RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, cons
         for (int x = 0; x < view.width; ++x) {
             const trace::Ray ray = trace::sampleRay(view, 1, x, y, 0, 0);
             ++c.primary;
-            RTCRayHit rh{};
-            rh.ray.org_x = ray.origin.x;
-            rh.ray.org_y = ray.origin.y;
-            rh.ray.org_z = ray.origin.z;
-            rh.ray.dir_x = ray.dir.x;
-            rh.ray.dir_y = ray.dir.y;
-            rh.ray.dir_z = ray.dir.z;
-            rh.ray.tnear = 0.0f;
-            rh.ray.tfar = INFINITY;
-            rh.ray.mask = ~0u;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            RTCRayHit rh = embreeRayHit(ray);
             rtcIntersect1(es.scene, &ctx, &rh);
             if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
             ++c.hits;
@@ -400,17 +406,7 @@ uint64_t nearestHitsEmbree(const EmbreeScene& es, const std::vector<trace::Ray>&
         uint64_t h = 0;
         for (size_t i = b; i < e; ++i) {
             const trace::Ray& ray = rays[i];
-            RTCRayHit rh{};
-            rh.ray.org_x = ray.origin.x;
-            rh.ray.org_y = ray.origin.y;
-            rh.ray.org_z = ray.origin.z;
-            rh.ray.dir_x = ray.dir.x;
-            rh.ray.dir_y = ray.dir.y;
-            rh.ray.dir_z = ray.dir.z;
-            rh.ray.tnear = 0.0f;
-            rh.ray.tfar = INFINITY;
-            rh.ray.mask = ~0u;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            RTCRayHit rh = embreeRayHit(ray);
             rtcIntersect1(es.scene, &ctx, &rh);
             h += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? 1 : 0;
         }

@@ -82,7 +82,7 @@ TEST(GltfTextures, EmbeddedPngDecodesToLinearTexelsWithTexcoords) {
         EXPECT_FALSE(b.sampler.mipmaps);
         for (int y = 0; y < 4; ++y)
             for (int x = 0; x < 4; ++x) {
-                // Level 0 keeps the file's codes; they decode to the exact value rounded to a half float.
+                // Level 0 keeps the file's codes; they decode to the exact value (texel_decode.h's tables).
                 const glm::vec4 t = b.texture->texel(0, x, y);
                 const uint8_t* p = img.pixel(x, y);
                 EXPECT_EQ(b.texture->levels[0].texels[size_t(4 * (4 * y + x))], p[0]);
