@@ -95,6 +95,16 @@ bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const s
     }
 }
 
+// tinygltf's own warnings about an external image it could not read ("File not found : ...", "File read
+// error : ...", "Failed to load external 'uri' for image[...]"). Only images warn this way (buffers are
+// required: they fail the load), and gltf_textures.cpp reports each image a material uses in one clear line
+// of its own, so these would only repeat it less clearly.
+bool isExternalImageNoise(const std::string& line) {
+    for (const char* prefix : {"File not found : ", "File read error : ", "Failed to load external 'uri' for image["})
+        if (line.rfind(prefix, 0) == 0) return true;
+    return false;
+}
+
 // Parses glTF text (`binary` false) or GLB bytes. External buffers resolve through `guard` (which refuses
 // those outside the model's folder unless allowed); without a guard every external file is refused (the
 // fuzzer's setting). `name` is the file named in errors.
@@ -144,7 +154,10 @@ tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::s
         if (ours != std::string::npos) reason = reason.substr(ours);
         throw InputError(name, reason);
     }
-    appendLines(warn, warnings);
+    std::vector<std::string> lines;
+    appendLines(warn, lines);
+    for (std::string& line : lines)
+        if (!isExternalImageNoise(line)) warnings.push_back(std::move(line));
     appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
     return model;
 }

@@ -155,8 +155,8 @@ TEST(GltfTextures, BoxTexturedInEachFormHasItsTexture) {
     }
 }
 
-// Each hostile image: the import succeeds, one warning line names the image and the fallback, and the
-// material has no texture.
+// Each hostile image: the import succeeds, one warning line names the image and the fallback (and no other
+// line repeats it: tinygltf's own words about an external file are left out), and the material has no texture.
 void expectFallback(const std::string& gltf, const std::string& reason) {
     const GltfImport g = importGltfBytes(gltf, false, "hostile.gltf");
     ASSERT_EQ(g.parts.size(), 1u);
@@ -170,6 +170,9 @@ void expectFallback(const std::string& gltf, const std::string& reason) {
             EXPECT_EQ(w.find('\n'), std::string::npos);
         }
     EXPECT_EQ(lines, 1u) << reason;
+    std::string all;
+    for (const std::string& w : g.warnings) all += w + " | ";
+    EXPECT_EQ(g.warnings.size(), 1u) << reason << ": " << all;
 }
 
 std::string bombPng() {
