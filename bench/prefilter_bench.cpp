@@ -2,6 +2,7 @@
 // (assets/environments/sky.hdr, 256x128) on 2 threads: the source cube, its mips, the GGX levels and the SH9
 // (the budget is 150 ms on 2 cores), and, for scale, on 1 thread; the .hdr decode and the DFG table apart.
 // Prints medians of N runs. Usage: prefilter_bench [sky.hdr] [runs] [cube size]
+#include "bench_timing.h"
 #include "image/hdr.h"
 #include "shading/dfg_lut.h"
 #include "shading/prefilter.h"
@@ -16,13 +17,9 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
+using shadelab::bench::Clock;
+using shadelab::bench::median;
+using shadelab::bench::msSince;
 
 double fastest(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
 

@@ -5,6 +5,7 @@
 //            until the first 32² tile of a 1280x720 reference arrives;
 //   deep     for scale: copying the vertex and index arrays, which the copy no longer does.
 // Prints medians of N runs. Usage: scene_copy_bench [model.glb] [runs]
+#include "bench_timing.h"
 #include "scene/scene_load.h"
 #include "trace/mesh_bvh_cache.h"
 #include "trace/progressive_trace.h"
@@ -19,13 +20,9 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
+using shadelab::bench::Clock;
+using shadelab::bench::median;
+using shadelab::bench::msSince;
 
 }  // namespace
 

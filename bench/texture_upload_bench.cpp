@@ -4,6 +4,7 @@
 // per image; (b) raster/mesh_textures.h's upload of every level as the 8-bit codes (GL_SRGB8_ALPHA8 or
 // GL_RGBA8; GL decodes them) into a headless GL context, up to glFinish. Budget for both together: 60 ms.
 // Prints medians of N runs. Usage: texture_upload_bench [runs] [images] [side]
+#include "bench_timing.h"
 #include "gl/gl_api.h"
 #include "gl/headless_context.h"
 #include "raster/mesh_textures.h"
@@ -21,13 +22,9 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
+using shadelab::bench::Clock;
+using shadelab::bench::median;
+using shadelab::bench::msSince;
 
 }  // namespace
 
