@@ -18,16 +18,9 @@
 #include <memory>
 #include <vector>
 
-namespace {
-
-using shadelab::bench::Clock;
-using shadelab::bench::median;
-using shadelab::bench::msSince;
-
-}  // namespace
-
 int main(int argc, char** argv) {
     using namespace shadelab;
+    using namespace shadelab::bench;
     const char* model =
         argc > 1 ? argv[1] : "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 21;

@@ -20,16 +20,9 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-using shadelab::bench::Clock;
-using shadelab::bench::median;
-using shadelab::bench::msSince;
-
-}  // namespace
-
 int main(int argc, char** argv) {
     using namespace shadelab;
+    using namespace shadelab::bench;
     const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
     const int images = argc > 2 ? std::max(1, std::atoi(argv[2])) : 4;
     const int side = argc > 3 ? std::max(1, std::atoi(argv[3])) : 1024;
