@@ -11,7 +11,7 @@ bool bvhIsaAvailable(BvhIsa isa) {
         case BvhIsa::Sse2: return true;
         case BvhIsa::Avx2:
 #if defined(SHADELAB_BVH_AVX2) && (defined(__GNUC__) || defined(__clang__))
-            return __builtin_cpu_supports("avx2");
+            return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #else
             return false;
 #endif

@@ -1,5 +1,5 @@
-// Which instruction set the BVH walks use: x86-64's baseline SSE2 everywhere, or AVX2 (8 child boxes in one
-// register, bvh_traverse_avx2.h) where the build has the AVX2 walks and the CPU runs them. Both find the same
+// Which instruction set the BVH walks use: x86-64's baseline SSE2 everywhere, or AVX2 with FMA (8 child boxes in
+// one register, bvh_traverse_avx2.h) where the build has the AVX2 walks and the CPU runs them. Both find the same
 // hits bit for bit; only the speed differs. Chosen once per process at run time.
 #pragma once
 

@@ -21,38 +21,79 @@ namespace {
 // This file's own tag: the triangle-test templates instantiated here are this file's alone.
 struct Avx2Tag {};
 
-// The rows a ray reads, as byte offsets into the node (size_t, so no store of the walk's uint32_t stack entries
-// can alias them and force a reload).
+// The box test with one fused multiply-subtract per slab: t = bound·invDir − org·invDir. Only the product
+// org·invDir is rounded apart, so the per-ray constants are that product nudged outward: up by at least one ulp
+// for the near slabs (orgNear >= org·invDir exactly), down for the far ones (orgFar <= it). Then each computed
+// near distance lies at or below its exact value (bound − org)·invDir up to the one rounding of the fused
+// operation, and each far one at or above it, so the test is at least as conservative as slab_test.h's
+// (whose far scale, sized for three roundings, covers the two here: the fused one and invDir's). It sees every
+// box that slabHits8 sees up to rounding, and its tNear may differ from slabHits8's in the last bits; the walks
+// still find the same hits, which do not depend on visiting order (MeshBvh::closestHit). Where a product
+// overflows (a huge origin times a clamped reciprocal) the fused form could meet inf − inf, so such a ray
+// takes hitsExact8, slab_test.h's expression operation for operation.
+// Offsets are bytes into the node (size_t, so no store of the walk's uint32_t stack entries can alias them).
 struct BoxRay8 {
-    __m256 org[3], invDir[3];
+    __m256 org[3], invDir[3], orgNear[3], orgFar[3];
     size_t nearOff[3], farOff[3];
+    bool fused;  // the products are finite: hitsFused8 applies
 };
 
 BoxRay8 makeBoxRay8(const BoxRay& r) {
     BoxRay8 b;
+    // o·r, then o·r ± (|o·r|·2^-23 + the least denormal): at least one ulp of o·r outward, so past the exact
+    // product, whose rounding moved it at most half an ulp (zero included).
+    const __m128 o = _mm_setr_ps(r.org[0], r.org[1], r.org[2], 0.0f);
+    const __m128 inv = _mm_setr_ps(r.invDir[0], r.invDir[1], r.invDir[2], 0.0f);
+    const __m128 p = _mm_mul_ps(o, inv);
+    const __m128 absP = _mm_andnot_ps(_mm_set1_ps(-0.0f), p);
+    const __m128 nudge = _mm_add_ps(_mm_mul_ps(absP, _mm_set1_ps(0x1p-23f)), _mm_set1_ps(0x1p-149f));
+    alignas(16) float hi[4], lo[4];
+    _mm_store_ps(hi, _mm_add_ps(p, nudge));
+    _mm_store_ps(lo, _mm_sub_ps(p, nudge));
+    const __m128 finite = _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(hi)),
+                                                  _mm_set1_ps(INFINITY)),
+                                     _mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(lo)),
+                                                  _mm_set1_ps(INFINITY)));
+    b.fused = (_mm_movemask_ps(finite) & 7) == 7;
     for (int a = 0; a < 3; ++a) {
         b.org[a] = _mm256_set1_ps(r.org[a]);
         b.invDir[a] = _mm256_set1_ps(r.invDir[a]);
+        b.orgNear[a] = _mm256_set1_ps(hi[a]);
+        b.orgFar[a] = _mm256_set1_ps(lo[a]);
         b.nearOff[a] = size_t(r.nearIdx[a]) * sizeof(float[8]);
         b.farOff[a] = size_t(r.farIdx[a]) * sizeof(float[8]);
     }
     return b;
 }
 
-// slabHits4's expression on eight lanes; the same operand order in every min and max, so NaN lanes agree too.
-inline int hits8(const BoxRay8& r, const float (*bounds)[8], float tMax, float* tNear) {
-    const char* b = reinterpret_cast<const char*>(bounds);
-    auto row = [b](size_t off) { return _mm256_load_ps(reinterpret_cast<const float*>(b + off)); };
-    const __m256 tx0 = _mm256_mul_ps(_mm256_sub_ps(row(r.nearOff[0]), r.org[0]), r.invDir[0]);
-    const __m256 tx1 = _mm256_mul_ps(_mm256_sub_ps(row(r.farOff[0]), r.org[0]), r.invDir[0]);
-    const __m256 ty0 = _mm256_mul_ps(_mm256_sub_ps(row(r.nearOff[1]), r.org[1]), r.invDir[1]);
-    const __m256 ty1 = _mm256_mul_ps(_mm256_sub_ps(row(r.farOff[1]), r.org[1]), r.invDir[1]);
-    const __m256 tz0 = _mm256_mul_ps(_mm256_sub_ps(row(r.nearOff[2]), r.org[2]), r.invDir[2]);
-    const __m256 tz1 = _mm256_mul_ps(_mm256_sub_ps(row(r.farOff[2]), r.org[2]), r.invDir[2]);
+inline __m256 boundsRow(const float (*bounds)[8], size_t off) {
+    return _mm256_load_ps(reinterpret_cast<const float*>(reinterpret_cast<const char*>(bounds) + off));
+}
+
+// Both tests end alike: max(tx0, ty0, tz0, 0) <= min(min(tx1, ty1, tz1) · s, tMax), the same operand order in
+// every min and max, so NaN lanes (inverted boxes) miss in both.
+inline int slabMask8(__m256 tx0, __m256 ty0, __m256 tz0, __m256 tx1, __m256 ty1, __m256 tz1, float tMax,
+                     float* tNear) {
     const __m256 tn = _mm256_max_ps(_mm256_max_ps(tx0, ty0), _mm256_max_ps(tz0, _mm256_setzero_ps()));
     const __m256 tf = _mm256_mul_ps(_mm256_min_ps(_mm256_min_ps(tx1, ty1), tz1), _mm256_set1_ps(kSlabFarScale));
     _mm256_store_ps(tNear, tn);
     return _mm256_movemask_ps(_mm256_cmp_ps(tn, _mm256_min_ps(tf, _mm256_set1_ps(tMax)), _CMP_LE_OS));
+}
+
+inline int hitsFused8(const BoxRay8& r, const float (*b)[8], float tMax, float* tNear) {
+    return slabMask8(_mm256_fmsub_ps(boundsRow(b, r.nearOff[0]), r.invDir[0], r.orgNear[0]),
+                     _mm256_fmsub_ps(boundsRow(b, r.nearOff[1]), r.invDir[1], r.orgNear[1]),
+                     _mm256_fmsub_ps(boundsRow(b, r.nearOff[2]), r.invDir[2], r.orgNear[2]),
+                     _mm256_fmsub_ps(boundsRow(b, r.farOff[0]), r.invDir[0], r.orgFar[0]),
+                     _mm256_fmsub_ps(boundsRow(b, r.farOff[1]), r.invDir[1], r.orgFar[1]),
+                     _mm256_fmsub_ps(boundsRow(b, r.farOff[2]), r.invDir[2], r.orgFar[2]), tMax, tNear);
+}
+
+// slabHits4's expression on eight lanes, operation for operation.
+inline int hitsExact8(const BoxRay8& r, const float (*b)[8], float tMax, float* tNear) {
+    auto t = [&](size_t off, int a) { return _mm256_mul_ps(_mm256_sub_ps(boundsRow(b, off), r.org[a]), r.invDir[a]); };
+    return slabMask8(t(r.nearOff[0], 0), t(r.nearOff[1], 1), t(r.nearOff[2], 2), t(r.farOff[0], 0),
+                     t(r.farOff[1], 1), t(r.farOff[2], 2), tMax, tNear);
 }
 
 // The watertight test (watertight.h) on up to four triangles of one leaf at once. The leaf's positions are
@@ -117,6 +158,9 @@ inline int triangles4(const LeafRay4& r, const float* v, uint32_t count, float t
     if (_mm_movemask_ps(_mm_and_ps(onEdge, live))) return -1;
     const __m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
     const __m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
+    // Most triangles of a leaf the ray reaches are missed by the edge test: stop before the division.
+    __m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), live);
+    if (_mm_movemask_ps(ok) == 0) return 0;
     const __m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
     const __m128 T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, _mm_mul_ps(r.Sz, Akz)), _mm_mul_ps(V, _mm_mul_ps(r.Sz, Bkz))),
                                 _mm_mul_ps(W, _mm_mul_ps(r.Sz, Ckz)));
@@ -126,7 +170,6 @@ inline int triangles4(const LeafRay4& r, const float* v, uint32_t count, float t
     h.b1 = _mm_mul_ps(V, rcpDet);
     h.b2 = _mm_mul_ps(W, rcpDet);
     // Kept: live, not straddling (signs mixed), det != 0, 0 < t <= tMax (ordered compares: NaN fails).
-    __m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), live);
     ok = _mm_andnot_ps(_mm_cmpeq_ps(det, zero), ok);
     ok = _mm_and_ps(ok, _mm_cmpgt_ps(h.t, zero));
     ok = _mm_and_ps(ok, _mm_cmple_ps(h.t, _mm_set1_ps(tMax)));
@@ -185,8 +228,14 @@ void closestTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const Water
                          TriangleLeafHit& best) {
     const BoxRay8 r = makeBoxRay8(boxRay);
     ClosestTriangleLeaf4 leaf{makeLeafRay4(wr), ClosestTriangleLeaf<Avx2Tag>{data, wr, best.t, best}};
-    traverseClosestWith(
-        nodes, best.t, [r](const BvhNode& n, float t, float* tNear) { return hits8(r, n.bounds, t, tNear); }, leaf);
+    if (r.fused)
+        traverseClosestWith(
+            nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); },
+            leaf);
+    else
+        traverseClosestWith(
+            nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsExact8(r, n.bounds, t, tn); },
+            leaf);
     best = leaf.scalar.best;
 }
 
@@ -194,13 +243,18 @@ bool anyTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const Watertigh
                      float tMax) {
     const BoxRay8 r = makeBoxRay8(boxRay);
     const AnyTriangleLeaf4 leaf{makeLeafRay4(wr), AnyTriangleLeaf<Avx2Tag>{data, wr, tMax}};
+    if (r.fused)
+        return traverseAnyWith(
+            nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); },
+            leaf);
     return traverseAnyWith(
-        nodes, tMax, [r](const BvhNode& n, float t, float* tNear) { return hits8(r, n.bounds, t, tNear); }, leaf);
+        nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsExact8(r, n.bounds, t, tn); }, leaf);
 }
 
 int slabHits8Avx2(const BoxRay& ray, const float (*bounds)[8], float tMax, float* tNear) {
     alignas(32) float t[8];
-    const int m = hits8(makeBoxRay8(ray), bounds, tMax, t);
+    const BoxRay8 r = makeBoxRay8(ray);
+    const int m = r.fused ? hitsFused8(r, bounds, tMax, t) : hitsExact8(r, bounds, tMax, t);
     for (int k = 0; k < 8; ++k) tNear[k] = t[k];
     return m;
 }

@@ -1,12 +1,14 @@
 // MeshBvh's two walks with an AVX2 box test: a node's eight child boxes in one register per box side.
-// Compiled alone with -mavx2 (bvh_traverse_avx2.cpp); call only where bvhIsaAvailable(BvhIsa::Avx2).
+// Compiled alone with -mavx2 -mfma (bvh_traverse_avx2.cpp); call only where bvhIsaAvailable(BvhIsa::Avx2).
 //
-// Same answers as the baseline walks, bit for bit: the box test evaluates slab_test.h's expression operation
-// for operation (no FMA: the file is built with -ffp-contract=off and without -mfma), so the walks visit the
-// same nodes in the same order. A leaf's up to four triangles are tested in one SSE step that performs the scalar
-// watertight test's operations per lane (watertight.h); a leaf where an edge function rounds to exactly 0 goes
-// to triangle_leaf.h's scalar loop, whose double recomputation the lanes do not do. The AVX2 file instantiates every
-// template it uses with types of its own, so the linker can never hand its AVX2 code to a baseline caller.
+// Same hits as the baseline walks, bit for bit. The box test takes one fused multiply-subtract per slab
+// (bound·invDir − org·invDir, the product nudged outward so the test stays conservative), so a child's entry
+// distance may differ from slab_test.h's in the last bits and a few more boxes may pass; the closest hit does not
+// depend on that (ties go to the lower scene index wherever they are found). A leaf's up to four triangles are
+// tested in one SSE step that performs the scalar watertight test's operations per lane (watertight.h); a leaf
+// where an edge function rounds to exactly 0 goes to triangle_leaf.h's scalar loop, whose double recomputation
+// the lanes do not do. The AVX2 file instantiates every template it uses with types of its own, so the linker
+// can never hand its AVX2 code to a baseline caller.
 #pragma once
 
 #include "trace/bvh.h"
@@ -26,7 +28,7 @@ void closestTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const Water
 bool anyTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
                      float tMax);
 
-// The AVX2 box test alone, for tests: slabHits8's mask and tNear[8] (bounds rows 32-byte aligned).
+// The AVX2 box test alone, for tests: as slabHits8, conservative, up to rounding (bounds rows 32-byte aligned).
 int slabHits8Avx2(const BoxRay& ray, const float (*bounds)[8], float tMax, float* tNear);
 
 }  // namespace shadelab::trace

@@ -46,8 +46,8 @@ inline constexpr float kSlabFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f -
 // inside). An inverted box (lo > hi) is always missed. Per lane:
 //   max(tx0, ty0, tz0, 0) <= min(tx1 · s, ty1 · s, tz1 · s, tMax), with s = kSlabFarScale
 // (for tMax >= 0 the same as tNear <= tFar, tFar >= 0, tNear <= tMax; a negative tMax, for which no hit with
-// t > 0 exists, misses everything). bvh_traverse_avx2.cpp evaluates the same expression, operation for
-// operation, on eight lanes at once, so both give the same bits.
+// t > 0 exists, misses everything). bvh_traverse_avx2.cpp evaluates it on eight lanes at once with fused
+// multiply-subtracts (conservative too, not the same bits).
 struct BoxRay4 {
     F4 org[3], invDir[3];
     int nearIdx[3], farIdx[3];
