@@ -121,6 +121,42 @@ TEST(BvhIsa, Avx2FourTriangleLeavesMatchOnEdgesVerticesAndTies) {
     EXPECT_EQ(control, hits) << "the comparison cannot see a changed hit";
 }
 
+TEST(BvhIsa, Avx2RayConstantsMatchTheScalarOnes) {
+    // The AVX2 walks set up each ray without branches (rayConstantsAvx2); every constant must be makeBoxRay's and
+    // makeWatertightRay's bits: random directions, and ones with equal magnitudes (the axis choice's ties),
+    // zero and negative-zero components, tiny components (the reciprocal's clamp), axis-parallel rays.
+    if (!bvhIsaAvailable(BvhIsa::Avx2)) GTEST_SKIP() << "this CPU or build has no AVX2 walks";
+    std::mt19937 rng(5);
+    std::normal_distribution<float> g;
+    const float special[] = {0.0f, -0.0f, 1e-31f, -1e-31f, 1e-30f, 0.5f, -0.5f, 1.0f, -1.0f};
+    auto same = [](const BoxRay& a, const WatertightRay& wa, const BoxRay& b, const WatertightRay& wb) {
+        return std::memcmp(a.org, b.org, sizeof a.org) == 0 && std::memcmp(a.invDir, b.invDir, sizeof a.invDir) == 0 &&
+               std::memcmp(a.nearIdx, b.nearIdx, sizeof a.nearIdx) == 0 &&
+               std::memcmp(a.farIdx, b.farIdx, sizeof a.farIdx) == 0 && std::memcmp(&wa, &wb, sizeof wa) == 0;
+    };
+    size_t bad = 0, control = 0;
+    const int kRays = 20000;
+    for (int i = 0; i < kRays; ++i) {
+        glm::vec3 d(g(rng), g(rng), g(rng));
+        if (i % 4 == 1) d = glm::vec3(special[rng() % 9], special[rng() % 9], special[rng() % 9]);
+        if (i % 4 == 2) d = glm::vec3(float(int(rng() % 5) - 2), float(int(rng() % 5) - 2), float(int(rng() % 5) - 2));
+        if (d == glm::vec3(0.0f)) d.z = -1.0f;
+        const Ray ray{{g(rng), g(rng), g(rng)}, d};
+        BoxRay box;
+        WatertightRay wt;
+        rayConstantsAvx2(ray, box, wt);
+        WatertightRay expected = makeWatertightRay(ray);
+        bad += !same(box, wt, makeBoxRay(ray), expected);
+        if (bad && bad <= 3 && !same(box, wt, makeBoxRay(ray), expected))
+            ADD_FAILURE() << "dir " << d.x << " " << d.y << " " << d.z;
+        // Negative control: the reversed ray's constants differ, and the comparison sees it.
+        const Ray back{ray.origin, -ray.dir};
+        control += !same(box, wt, makeBoxRay(back), makeWatertightRay(back));
+    }
+    EXPECT_EQ(bad, 0u);
+    EXPECT_EQ(control, size_t(kRays));
+}
+
 // Random boxes (every 13th inverted: an unused child), origins inside and outside, axis-parallel directions,
 // tMax spread; rays i % 3 == 0 graze: they aim at a point on an edge of box i % 8, so the exact entry and exit
 // nearly meet and rounding decides.

@@ -21,6 +21,60 @@ namespace {
 // This file's own tag: the triangle-test templates instantiated here are this file's alone.
 struct Avx2Tag {};
 
+// makeBoxRay's and makeWatertightRay's constants, the same bits, without their branches (which way a ray points
+// is a coin toss for incoherent rays) and with the divisions in two vector ones: per-ray set-up showed up as a
+// tenth of a profile of rays that miss everything.
+struct RaySetup {
+    BoxRay box;
+    WatertightRay wt;
+};
+
+RaySetup setUpRay(const Ray& ray) {
+    RaySetup s;
+    const __m128 d = _mm_setr_ps(ray.dir.x, ray.dir.y, ray.dir.z, 1.0f);
+    const __m128 o = _mm_setr_ps(ray.origin.x, ray.origin.y, ray.origin.z, 0.0f);
+    const __m128 signBit = _mm_set1_ps(-0.0f);
+    const __m128 ad = _mm_andnot_ps(signBit, d);
+    // Slabs: 1/d, or ±1e30 where |d| <= 1e-30; the near side by the reciprocal's sign.
+    const __m128 inv = _mm_blendv_ps(_mm_or_ps(_mm_and_ps(d, signBit), _mm_set1_ps(1e30f)),
+                                     _mm_div_ps(_mm_set1_ps(1.0f), d), _mm_cmpgt_ps(ad, _mm_set1_ps(1e-30f)));
+    alignas(16) float invs[4], abs[4], org[4];
+    _mm_store_ps(invs, inv);
+    _mm_store_ps(abs, ad);
+    _mm_store_ps(org, o);
+    const int invNeg = _mm_movemask_ps(_mm_cmplt_ps(inv, _mm_setzero_ps()));
+    for (int a = 0; a < 3; ++a) {
+        const int n = (invNeg >> a) & 1;
+        s.box.org[a] = org[a];
+        s.box.invDir[a] = invs[a];
+        s.box.nearIdx[a] = a + 3 * n;
+        s.box.farIdx[a] = a + 3 * (1 - n);
+    }
+    // Watertight: z is the axis of largest |d| (ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2)), x and y swapped
+    // where d[z] < 0.
+    static constexpr int8_t kKz[8] = {2, 1, 2, 1, 2, 2, 0, 0};  // by (ax > ay, ax > az, ay > az)
+    static constexpr int8_t kKx[6] = {1, 2, 2, 0, 0, 1}, kKy[6] = {2, 1, 0, 2, 1, 0};  // by (kz, d[kz] < 0)
+    const int kz = kKz[(abs[0] > abs[1]) * 4 + (abs[0] > abs[2]) * 2 + (abs[1] > abs[2])];
+    const int neg = (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) >> kz) & 1;
+    const int kx = kKx[2 * kz + neg], ky = kKy[2 * kz + neg];
+    // (d[kx], d[ky], 1) / d[kz]: Sx, Sy, Sz; and the origin in (kx, ky, kz) order.
+    alignas(16) float shear[4], permuted[4];
+    _mm_store_ps(shear, _mm_div_ps(_mm_permutevar_ps(d, _mm_setr_epi32(kx, ky, 3, 3)),
+                                   _mm_permutevar_ps(d, _mm_set1_epi32(kz))));
+    _mm_store_ps(permuted, _mm_permutevar_ps(o, _mm_setr_epi32(kx, ky, kz, 3)));
+    for (int a = 0; a < 3; ++a) s.wt.org[a] = org[a];
+    s.wt.kx = kx;
+    s.wt.ky = ky;
+    s.wt.kz = kz;
+    s.wt.Sx = shear[0];
+    s.wt.Sy = shear[1];
+    s.wt.Sz = shear[2];
+    s.wt.ox = permuted[0];
+    s.wt.oy = permuted[1];
+    s.wt.oz = permuted[2];
+    return s;
+}
+
 // The box test with one fused multiply-subtract per slab: t = bound·invDir − org·invDir. Only the product
 // org·invDir is rounded apart, so the per-ray constants are that product nudged outward: up by at least one ulp
 // for the near slabs (orgNear >= org·invDir exactly), down for the far ones (orgFar <= it). Then each computed
@@ -224,10 +278,10 @@ struct AnyTriangleLeaf4 {
 
 }  // namespace
 
-void closestTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
-                         TriangleLeafHit& best) {
-    const BoxRay8 r = makeBoxRay8(boxRay);
-    ClosestTriangleLeaf4 leaf{makeLeafRay4(wr), ClosestTriangleLeaf<Avx2Tag>{data, wr, best.t, best}};
+void closestTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data, TriangleLeafHit& best) {
+    const RaySetup rs = setUpRay(ray);
+    const BoxRay8 r = makeBoxRay8(rs.box);
+    ClosestTriangleLeaf4 leaf{makeLeafRay4(rs.wt), ClosestTriangleLeaf<Avx2Tag>{data, rs.wt, best.t, best}};
     if (r.fused)
         traverseClosestWith(
             nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); },
@@ -239,16 +293,22 @@ void closestTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const Water
     best = leaf.scalar.best;
 }
 
-bool anyTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
-                     float tMax) {
-    const BoxRay8 r = makeBoxRay8(boxRay);
-    const AnyTriangleLeaf4 leaf{makeLeafRay4(wr), AnyTriangleLeaf<Avx2Tag>{data, wr, tMax}};
+bool anyTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data, float tMax) {
+    const RaySetup rs = setUpRay(ray);
+    const BoxRay8 r = makeBoxRay8(rs.box);
+    const AnyTriangleLeaf4 leaf{makeLeafRay4(rs.wt), AnyTriangleLeaf<Avx2Tag>{data, rs.wt, tMax}};
     if (r.fused)
         return traverseAnyWith(
             nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); },
             leaf);
     return traverseAnyWith(
         nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsExact8(r, n.bounds, t, tn); }, leaf);
+}
+
+void rayConstantsAvx2(const Ray& ray, BoxRay& box, WatertightRay& wt) {
+    const RaySetup rs = setUpRay(ray);
+    box = rs.box;
+    wt = rs.wt;
 }
 
 int slabHits8Avx2(const BoxRay& ray, const float (*bounds)[8], float tMax, float* tNear) {
@@ -261,10 +321,9 @@ int slabHits8Avx2(const BoxRay& ray, const float (*bounds)[8], float tMax, float
 
 #else  // built without AVX2: bvhIsaAvailable(BvhIsa::Avx2) is false, so nothing calls these
 
-void closestTriangleAvx2(const BvhNode*, const BoxRay&, const WatertightRay&, TriangleLeafData, TriangleLeafHit&) {
-    std::abort();
-}
-bool anyTriangleAvx2(const BvhNode*, const BoxRay&, const WatertightRay&, TriangleLeafData, float) { std::abort(); }
+void closestTriangleAvx2(const BvhNode*, const Ray&, TriangleLeafData, TriangleLeafHit&) { std::abort(); }
+bool anyTriangleAvx2(const BvhNode*, const Ray&, TriangleLeafData, float) { std::abort(); }
+void rayConstantsAvx2(const Ray&, BoxRay&, WatertightRay&) { std::abort(); }
 int slabHits8Avx2(const BoxRay&, const float (*)[8], float, float*) { std::abort(); }
 
 #endif

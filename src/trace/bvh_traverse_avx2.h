@@ -22,11 +22,12 @@ namespace shadelab::trace {
 
 // The nearest triangle hit nearer than best.t (updated in place; best.slot stays UINT32_MAX without one), from
 // the root nodes[0] of a tree that is not empty. As ClosestTriangleLeaf with tMax = best.t on entry.
-void closestTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
-                         TriangleLeafHit& best);
+void closestTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data, TriangleLeafHit& best);
 // Whether any triangle is hit at 0 < t < tMax.
-bool anyTriangleAvx2(const BvhNode* nodes, const BoxRay& boxRay, const WatertightRay& wr, TriangleLeafData data,
-                     float tMax);
+bool anyTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data, float tMax);
+
+// The per-ray constants the walks above use, for tests: makeBoxRay's and makeWatertightRay's, bit for bit.
+void rayConstantsAvx2(const Ray& ray, BoxRay& box, WatertightRay& wt);
 
 // The AVX2 box test alone, for tests: as slabHits8, conservative, up to rounding (bounds rows 32-byte aligned).
 int slabHits8Avx2(const BoxRay& ray, const float (*bounds)[8], float tMax, float* tNear);

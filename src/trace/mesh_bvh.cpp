@@ -133,33 +133,42 @@ bool MeshBvh::matches(const Scene& scene) const {
 }
 
 std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
-    return closestHit(ray, tMax, defaultBvhIsa());
+    return closestHit(ray, tMax, isa_);
 }
 
 std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax, BvhIsa isa) const {
-    if (bvh_.empty()) return std::nullopt;  // skip the per-ray set-up for scenes without triangles
+    MeshHit hit;
+    if (!closestHitWith(ray, tMax, isa, hit)) return std::nullopt;
+    return hit;
+}
+
+bool MeshBvh::closestHit(const Ray& ray, float tMax, MeshHit& out) const {
+    return closestHitWith(ray, tMax, isa_, out);
+}
+
+bool MeshBvh::closestHitWith(const Ray& ray, float tMax, BvhIsa isa, MeshHit& out) const {
+    if (bvh_.empty()) return false;  // skip the per-ray set-up for scenes without triangles
     const TriangleLeafData data{positions_.data(), source_.data()};
-    const TriangleLeafHit none{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
-    TriangleLeafHit best;
+    TriangleLeafHit best{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
     if (isa == BvhIsa::Avx2) {
-        best = none;
-        closestTriangleAvx2(bvh_.nodes.data(), makeBoxRay(ray), makeWatertightRay(ray), data, best);
+        closestTriangleAvx2(bvh_.nodes.data(), ray, data, best);
     } else {
-        ClosestTriangleLeaf<watertight_detail::BaselineTag> leaf{data, makeWatertightRay(ray), tMax, none};
+        ClosestTriangleLeaf<watertight_detail::BaselineTag> leaf{data, makeWatertightRay(ray), tMax, best};
         traverseClosest(bvh_, makeBoxRay(ray), tMax, leaf);
         best = leaf.best;
     }
-    if (best.slot == UINT32_MAX) return std::nullopt;
-    return MeshHit{best.t, best.slot, best.b0, best.b1, best.b2};
+    if (best.slot == UINT32_MAX) return false;
+    out = MeshHit{best.t, best.slot, best.b0, best.b1, best.b2};
+    return true;
 }
 
-bool MeshBvh::anyHit(const Ray& ray, float tMax) const { return anyHit(ray, tMax, defaultBvhIsa()); }
+bool MeshBvh::anyHit(const Ray& ray, float tMax) const { return anyHit(ray, tMax, isa_); }
 
 bool MeshBvh::anyHit(const Ray& ray, float tMax, BvhIsa isa) const {
     if (bvh_.empty()) return false;
     const TriangleLeafData data{positions_.data(), source_.data()};
     if (isa == BvhIsa::Avx2)
-        return anyTriangleAvx2(bvh_.nodes.data(), makeBoxRay(ray), makeWatertightRay(ray), data, tMax);
+        return anyTriangleAvx2(bvh_.nodes.data(), ray, data, tMax);
     return traverseAny(bvh_, makeBoxRay(ray), tMax,
                        AnyTriangleLeaf<watertight_detail::BaselineTag>{data, makeWatertightRay(ray), tMax});
 }

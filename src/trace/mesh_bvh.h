@@ -39,6 +39,9 @@ public:
     // answers bit for bit, and exist for tests and benchmarks.
     std::optional<MeshHit> closestHit(const Ray& ray, float tMax) const;
     std::optional<MeshHit> closestHit(const Ray& ray, float tMax, BvhIsa isa) const;
+    // The same into `out` (left alone without a hit): the per-ray path TraceScene takes, with no optional to
+    // build and copy at each level.
+    bool closestHit(const Ray& ray, float tMax, MeshHit& out) const;
     // Whether any triangle is hit at 0 < t < tMax (shadow rays): stops at the first one found.
     bool anyHit(const Ray& ray, float tMax) const;
     bool anyHit(const Ray& ray, float tMax, BvhIsa isa) const;
@@ -64,6 +67,9 @@ public:
     bool matches(const Scene& scene) const;
 
 private:
+    bool closestHitWith(const Ray& ray, float tMax, BvhIsa isa, MeshHit& out) const;
+
+    BvhIsa isa_ = defaultBvhIsa();  // read once, not per ray
     Bvh bvh_;
     std::vector<float> positions_;                               // 9 per slot
     std::vector<uint32_t> part_;                                 // per slot

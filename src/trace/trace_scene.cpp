@@ -35,14 +35,16 @@ void TraceScene::prepare() {
 }
 
 std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
+    // Plain locals, no optional per primitive type: this runs once per ray, and scenes often have only one type.
     Hit best;
     best.t = INFINITY;
     bool found = false;
-    if (const std::optional<SphereHit> s = spheres_->closestHit(ray, 0.0f, INFINITY)) {
-        best.t = s->t;
-        best.index = s->index;
-        found = true;
-    }
+    if (spheres_->size() != 0)
+        if (const std::optional<SphereHit> s = spheres_->closestHit(ray, 0.0f, INFINITY)) {
+            best.t = s->t;
+            best.index = s->index;
+            found = true;
+        }
     for (size_t i = 0; i < scene_.planes.size(); ++i) {
         const Plane& p = scene_.planes[i];
         const float t = shading::intersectPlane(ray.origin, ray.dir, p.normal, p.offset, 0.0f);
@@ -53,11 +55,13 @@ std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
             found = true;
         }
     }
-    if (const std::optional<MeshHit> m = meshes_->closestHit(ray, best.t)) {
-        best = Hit{m->t, HitKind::Triangle, m->slot, m->b0, m->b1, m->b2};
+    MeshHit m;
+    if (meshes_->closestHit(ray, best.t, m)) {
+        best = Hit{m.t, HitKind::Triangle, m.slot, m.b0, m.b1, m.b2};
         found = true;
     }
-    return found ? std::optional<Hit>(best) : std::nullopt;
+    if (!found) return std::nullopt;
+    return best;
 }
 
 bool TraceScene::occluded(const Ray& ray, float tMax) const {
