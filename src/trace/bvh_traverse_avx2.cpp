@@ -230,6 +230,15 @@ inline int triangles4(const LeafRay4& r, const float* v, uint32_t count, float t
     return _mm_movemask_ps(ok);
 }
 
+// The scalar loops for a leaf with an edge function of exactly 0: rare, so kept out of the walk's code.
+__attribute__((noinline, cold)) float closestScalar(ClosestTriangleLeaf<Avx2Tag>& leaf, uint32_t first,
+                                                    uint32_t count) {
+    return leaf(first, count);
+}
+__attribute__((noinline, cold)) bool anyScalar(const AnyTriangleLeaf<Avx2Tag>& leaf, uint32_t first, uint32_t count) {
+    return leaf(first, count);
+}
+
 // ClosestTriangleLeaf's answer, four triangles at a time: of the lanes hit, the nearest (lowest scene-order index
 // on a tie) is then weighed against the best so far by the scalar leaf's own rule.
 struct ClosestTriangleLeaf4 {
@@ -240,7 +249,7 @@ struct ClosestTriangleLeaf4 {
         TriangleLeafHit& best = scalar.best;
         Hits4 h;
         int m = triangles4(r, scalar.data.positions + size_t(first) * 9, count, best.t, h);
-        if (m < 0) return scalar(first, count);
+        if (m < 0) return closestScalar(scalar, first, count);
         if (m == 0) return best.t;
         alignas(16) float t[4], b0[4], b1[4], b2[4];
         _mm_store_ps(t, h.t);
@@ -271,7 +280,7 @@ struct AnyTriangleLeaf4 {
     bool operator()(uint32_t first, uint32_t count) const {
         Hits4 h;
         const int m = triangles4(r, scalar.data.positions + size_t(first) * 9, count, scalar.tMax, h);
-        if (m < 0) return scalar(first, count);
+        if (m < 0) return anyScalar(scalar, first, count);
         return (m & _mm_movemask_ps(_mm_cmplt_ps(h.t, _mm_set1_ps(scalar.tMax)))) != 0;
     }
 };
