@@ -271,7 +271,8 @@ TEST(SlabTest, BoxTestsAreConservativeOnGrazingRays) {
         // rounding bound·invDir − org·invDir once, larger than slabHits8's relative error where the origin is
         // far from the world origin compared with the distance (or a direction component is 0).
         double fusedSlack = 0.0;
-        for (int a = 0; a < 3; ++a) fusedSlack = std::max(fusedSlack, 4.0 * 0x1p-23 * std::fabs(br.org[a] * br.invDir[a]));
+        for (int a = 0; a < 3; ++a)
+            fusedSlack = std::max(fusedSlack, 4.0 * 0x1p-23 * std::fabs(br.org[a] * br.invDir[a]));
         for (int k = 0; k < 8; ++k) {
             const ExactSlab e = exactSlab(c, k);
             const double far = std::min(e.tFar, double(c.tMax));
@@ -295,8 +296,8 @@ TEST(SlabTest, BoxTestsAreConservativeOnGrazingRays) {
             lostNaive += hit && !(tn <= std::min(tf, c.tMax));
         }
     }
-    std::printf("%zu of %d boxes met (%zu grazing); lost: SSE2 %zu, AVX2 %zu (%s), naive %zu\n", exactHits,
-                8 * kRays, grazing, lost, lostAvx2, avx2 ? "compared" : "not available", lostNaive);
+    std::printf("%zu of %d boxes met (%zu grazing); lost: SSE2 %zu, AVX2 %zu (%s), naive %zu\n", exactHits, 8 * kRays,
+                grazing, lost, lostAvx2, avx2 ? "compared" : "not available", lostNaive);
     EXPECT_GT(grazing, 500u) << "too few grazing rays to test anything";
     EXPECT_EQ(lost, 0u);
     EXPECT_EQ(lostAvx2, 0u);

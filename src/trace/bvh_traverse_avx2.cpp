@@ -52,7 +52,7 @@ RaySetup setUpRay(const Ray& ray) {
     }
     // Watertight: z is the axis of largest |d| (ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2)), x and y swapped
     // where d[z] < 0.
-    static constexpr int8_t kKz[8] = {2, 1, 2, 1, 2, 2, 0, 0};  // by (ax > ay, ax > az, ay > az)
+    static constexpr int8_t kKz[8] = {2, 1, 2, 1, 2, 2, 0, 0};                         // by (ax > ay, ax > az, ay > az)
     static constexpr int8_t kKx[6] = {1, 2, 2, 0, 0, 1}, kKy[6] = {2, 1, 0, 2, 1, 0};  // by (kz, d[kz] < 0)
     const int kz = kKz[(abs[0] > abs[1]) * 4 + (abs[0] > abs[2]) * 2 + (abs[1] > abs[2])];
     const int neg = (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) >> kz) & 1;
@@ -104,10 +104,9 @@ BoxRay8 makeBoxRay8(const BoxRay& r) {
     alignas(16) float hi[4], lo[4];
     _mm_store_ps(hi, _mm_add_ps(p, nudge));
     _mm_store_ps(lo, _mm_sub_ps(p, nudge));
-    const __m128 finite = _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(hi)),
-                                                  _mm_set1_ps(INFINITY)),
-                                     _mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(lo)),
-                                                  _mm_set1_ps(INFINITY)));
+    const __m128 finite =
+        _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(hi)), _mm_set1_ps(INFINITY)),
+                   _mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(lo)), _mm_set1_ps(INFINITY)));
     b.fused = (_mm_movemask_ps(finite) & 7) == 7;
     for (int a = 0; a < 3; ++a) {
         b.org[a] = _mm256_set1_ps(r.org[a]);
@@ -126,8 +125,7 @@ inline __m256 boundsRow(const float (*bounds)[8], size_t off) {
 
 // Both tests end alike: max(tx0, ty0, tz0, 0) <= min(min(tx1, ty1, tz1) · s, tMax), the same operand order in
 // every min and max, so NaN lanes (inverted boxes) miss in both.
-inline int slabMask8(__m256 tx0, __m256 ty0, __m256 tz0, __m256 tx1, __m256 ty1, __m256 tz1, float tMax,
-                     float* tNear) {
+inline int slabMask8(__m256 tx0, __m256 ty0, __m256 tz0, __m256 tx1, __m256 ty1, __m256 tz1, float tMax, float* tNear) {
     const __m256 tn = _mm256_max_ps(_mm256_max_ps(tx0, ty0), _mm256_max_ps(tz0, _mm256_setzero_ps()));
     const __m256 tf = _mm256_mul_ps(_mm256_min_ps(_mm256_min_ps(tx1, ty1), tz1), _mm256_set1_ps(kSlabFarScale));
     _mm256_store_ps(tNear, tn);
@@ -146,8 +144,8 @@ inline int hitsFused8(const BoxRay8& r, const float (*b)[8], float tMax, float* 
 // slabHits4's expression on eight lanes, operation for operation.
 inline int hitsExact8(const BoxRay8& r, const float (*b)[8], float tMax, float* tNear) {
     auto t = [&](size_t off, int a) { return _mm256_mul_ps(_mm256_sub_ps(boundsRow(b, off), r.org[a]), r.invDir[a]); };
-    return slabMask8(t(r.nearOff[0], 0), t(r.nearOff[1], 1), t(r.nearOff[2], 2), t(r.farOff[0], 0),
-                     t(r.farOff[1], 1), t(r.farOff[2], 2), tMax, tNear);
+    return slabMask8(t(r.nearOff[0], 0), t(r.nearOff[1], 1), t(r.nearOff[2], 2), t(r.farOff[0], 0), t(r.farOff[1], 1),
+                     t(r.farOff[2], 2), tMax, tNear);
 }
 
 // The watertight test (watertight.h) on up to four triangles of one leaf at once. The leaf's positions are
@@ -293,12 +291,10 @@ void closestTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData 
     ClosestTriangleLeaf4 leaf{makeLeafRay4(rs.wt), ClosestTriangleLeaf<Avx2Tag>{data, rs.wt, best.t, best}};
     if (r.fused)
         traverseClosestWith(
-            nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); },
-            leaf);
+            nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); }, leaf);
     else
         traverseClosestWith(
-            nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsExact8(r, n.bounds, t, tn); },
-            leaf);
+            nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsExact8(r, n.bounds, t, tn); }, leaf);
     best = leaf.scalar.best;
 }
 
@@ -308,8 +304,7 @@ bool anyTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data
     const AnyTriangleLeaf4 leaf{makeLeafRay4(rs.wt), AnyTriangleLeaf<Avx2Tag>{data, rs.wt, tMax}};
     if (r.fused)
         return traverseAnyWith(
-            nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); },
-            leaf);
+            nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); }, leaf);
     return traverseAnyWith(
         nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsExact8(r, n.bounds, t, tn); }, leaf);
 }

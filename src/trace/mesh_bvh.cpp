@@ -132,9 +132,7 @@ bool MeshBvh::matches(const Scene& scene) const {
     return k == geometry_.size();
 }
 
-std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const {
-    return closestHit(ray, tMax, isa_);
-}
+std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax) const { return closestHit(ray, tMax, isa_); }
 
 std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax, BvhIsa isa) const {
     MeshHit hit;
@@ -167,8 +165,7 @@ bool MeshBvh::anyHit(const Ray& ray, float tMax) const { return anyHit(ray, tMax
 bool MeshBvh::anyHit(const Ray& ray, float tMax, BvhIsa isa) const {
     if (bvh_.empty()) return false;
     const TriangleLeafData data{positions_.data(), source_.data()};
-    if (isa == BvhIsa::Avx2)
-        return anyTriangleAvx2(bvh_.nodes.data(), ray, data, tMax);
+    if (isa == BvhIsa::Avx2) return anyTriangleAvx2(bvh_.nodes.data(), ray, data, tMax);
     return traverseAny(bvh_, makeBoxRay(ray), tMax,
                        AnyTriangleLeaf<watertight_detail::BaselineTag>{data, makeWatertightRay(ray), tMax});
 }
