@@ -1,0 +1,162 @@
+// The viewer's plots (issues 12 and 15), no window: the equivalent Blinn exponent, the lobe plots and the
+// directional-albedo curves.
+#include "app/albedo_plot.h"
+#include "app/lobe_plot.h"
+#include "app/specular_lobe.h"
+#include "shading/lighting.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+using namespace shadelab;
+using namespace shadelab::app;
+
+// ---- Equivalent Blinn exponent -------------------------------------------------------------------------
+
+TEST(AppState, EquivalentBlinnExponentMatchesHalfMaximum) {
+    for (float s : {1.0f, 4.0f, 32.0f, 200.0f, 2048.0f}) {
+        const float sb = equivalentBlinnExponent(s);
+        const double halfAngle = std::acos(std::pow(0.5, 1.0 / s));  // Phong's half maximum
+        EXPECT_NEAR(std::pow(std::cos(halfAngle / 2.0), double(sb)), 0.5, 1e-4) << s;
+        EXPECT_NEAR(equivalentPhongExponent(sb), s, 1e-3f * s) << s;
+        // Better than the classic 4s everywhere, and much better than the same exponent (negative control).
+        EXPECT_LT(lobeRmsDifference(s, sb), lobeRmsDifference(s, fourTimesRule(s))) << s;
+        EXPECT_GT(lobeRmsDifference(s, s), 5.0f * lobeRmsDifference(s, sb)) << s;
+    }
+    EXPECT_NEAR(equivalentBlinnExponent(512.0f), 4.0f * 512.0f + std::log(2.0f), 0.01f);
+    EXPECT_EQ(equivalentBlinnExponent(0.0f), 0.0f);
+    EXPECT_EQ(equivalentPhongExponent(1.5f), 0.0f);
+    const std::vector<float> lobe = phongLobe(8.0f, 91);
+    EXPECT_EQ(lobe.front(), 1.0f);
+    EXPECT_NEAR(lobe.back(), 0.0f, 1e-6f);
+}
+
+// ---- Lobe plots (issues 12 and 15) ----------------------------------------------------------------------
+
+namespace {
+
+// The axis the lobe plot used before issue 15: four times Phong's half-maximum angle, within [5, 90] degrees.
+// Its curve looked the same for every s >= 32 (the negative control below).
+float oldRescaledAxis(float s) {
+    const double halfMax = std::acos(std::exp2(-1.0 / double(s))) * 180.0 / M_PI;
+    return float(std::clamp(4.0 * halfMax, 5.0, 90.0));
+}
+
+// True when every width is smaller than the one before.
+bool strictlyShrinking(const std::vector<float>& widths) {
+    for (size_t i = 1; i < widths.size(); ++i)
+        if (!(widths[i] < widths[i - 1])) return false;
+    return true;
+}
+
+const float kExponents[] = {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048};
+
+}  // namespace
+
+TEST(LobePlot, HalfWidthReadFromTheDataShrinksAsShininessGrows) {
+    // What the panel draws on its fixed 0..90° axis: the half-width, as a fraction of the plot's width, must
+    // shrink at every step from s = 1 to 2048, for each lecture lobe.
+    for (LobeModel m : {LobeModel::Phong, LobeModel::BlinnSame, LobeModel::BlinnEquivalent}) {
+        std::vector<float> screen;
+        for (float s : kExponents) {
+            LobePlotSettings settings;
+            settings.phongExponent = s;
+            const LobePlot plot = makeLobePlot(settings);
+            ASSERT_EQ(plot.curves[size_t(m)].value.size(), size_t(settings.samples));
+            const float hwhm = halfWidthAtHalfMaximum(plot.curves[size_t(m)].value, plot.settings.axis);
+            screen.push_back(hwhm / plot.settings.axis);
+            if (m == LobeModel::Phong) {  // the closed form: cos(a)^s = 1/2
+                EXPECT_NEAR(hwhm, std::acos(std::exp2(-1.0 / s)) * 180.0 / M_PI, 0.05) << s;
+            }
+        }
+        // Blinn-Phong at the same s = 1 and 2 stays above half beyond 90° (cos(a/2)^s = 1/2 at a = 120°, 90°):
+        // it is checked from s = 4 on.
+        if (m == LobeModel::BlinnSame) screen.erase(screen.begin(), screen.begin() + 2);
+        EXPECT_TRUE(strictlyShrinking(screen)) << "model " << int(m) << ": " << testing::PrintToString(screen);
+        EXPECT_LT(screen.back(), m == LobeModel::BlinnSame ? 0.04f : 0.02f) << "s = 2048 must look narrow on screen";
+    }
+    // Equivalent exponents give Phong's half-width (the rule of specular_lobe.h), same exponents a wider one.
+    LobePlotSettings settings;
+    settings.phongExponent = 64.0f;
+    const LobePlot plot = makeLobePlot(settings);
+    const auto hw = [&](LobeModel m) { return halfWidthAtHalfMaximum(plot.curves[size_t(m)].value, 90.0f); };
+    EXPECT_NEAR(hw(LobeModel::BlinnEquivalent), hw(LobeModel::Phong), 0.05f);
+    EXPECT_GT(hw(LobeModel::BlinnSame), 1.8f * hw(LobeModel::Phong));
+}
+
+TEST(LobePlot, TheOldRescaledAxisAndAConstantLobeFailTheCheck) {
+    // Negative controls for the check above: on the old axis the on-screen width stopped shrinking at s = 32,
+    // and a lobe that never changes cannot shrink.
+    std::vector<float> rescaled, constant;
+    for (float s : kExponents) {
+        LobePlotSettings settings;
+        settings.phongExponent = s;
+        settings.axis = oldRescaledAxis(s);
+        const LobePlot plot = makeLobePlot(settings);
+        rescaled.push_back(halfWidthAtHalfMaximum(plot.curves[0].value, plot.settings.axis) / plot.settings.axis);
+        LobePlotSettings fixed;
+        fixed.phongExponent = 32.0f;
+        const LobePlot same = makeLobePlot(fixed);
+        constant.push_back(halfWidthAtHalfMaximum(same.curves[0].value, 90.0f) / 90.0f);
+    }
+    EXPECT_FALSE(strictlyShrinking(rescaled));
+    EXPECT_FALSE(strictlyShrinking(constant));
+    EXPECT_NEAR(rescaled[6], rescaled.back(), 0.01f);  // s = 64 and 2048 looked alike
+}
+
+TEST(LobePlot, PolarLobesPeakAtTheMirrorDirectionAndNarrowWithRoughness) {
+    LobePlotSettings settings;
+    settings.incidence = 40.0f;
+    settings.phongExponent = 50.0f;
+    settings.roughness = 0.3f;
+    const LobePlot plot = makeLobePlot(settings);
+    for (const LobeCurve& c : plot.curves) {
+        size_t best = 0;
+        for (size_t i = 0; i < c.polar.size(); ++i)
+            if (c.polar[i] > c.polar[best]) best = i;
+        EXPECT_NEAR(plot.polarAngleAt(int(best)), 40.0f, 3.0f) << c.label;
+        EXPECT_NEAR(c.polar[best], 1.0f, 1e-6f) << c.label;
+        EXPECT_GT(c.peak, 0.0f) << c.label;
+    }
+    // The pbr lobe narrows as roughness falls (its half-width read from the Cartesian data).
+    std::vector<float> widths;
+    for (float r : {1.0f, 0.7f, 0.5f, 0.3f, 0.2f, 0.1f}) {
+        settings.roughness = r;
+        const LobePlot p = makeLobePlot(settings);
+        widths.push_back(halfWidthAtHalfMaximum(p.curves[size_t(LobeModel::Pbr)].value, 90.0f));
+    }
+    EXPECT_TRUE(strictlyShrinking(widths));
+    // The probe's vectors in the plane of incidence: L on the left, R its mirror, V out of the plane.
+    const glm::vec3 N(0, 1, 0), L = glm::normalize(glm::vec3(-1, 1, 0)), V = glm::normalize(glm::vec3(0.5f, 1, 0.5f));
+    const PlaneOfIncidence pi = planeOfIncidence(N, L, V);
+    EXPECT_NEAR(pi.incidence, 45.0f, 1e-3f);
+    EXPECT_NEAR(pi.L.x, -pi.R.x, 1e-6f);
+    EXPECT_LT(pi.L.x, 0.0f);
+    EXPECT_NEAR(pi.vOutOfPlane, std::asin(0.5f / glm::length(glm::vec3(0.5f, 1, 0.5f))) * 180.0f / M_PI, 1e-3f);
+}
+
+TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
+    AlbedoPlotSettings settings;
+    settings.phongExponent = 64.0f;
+    settings.roughness = 1.0f;
+    const AlbedoPlot plot = makeAlbedoPlot(settings);
+    ASSERT_EQ(plot.curves.size(), 7u);
+    for (float v : plot.curves[0].albedo) EXPECT_NEAR(v, 1.0f, 3e-3f);  // Lambert
+    EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);    // Phong: 2/(s+1)
+    EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);   // normalised
+    for (float v : plot.curves[5].albedo) EXPECT_LT(v, 0.999f);         // GGX loses
+    // With compensation a white metal keeps its energy (issue 12: within 1 %), away from grazing angles.
+    EXPECT_EQ(plot.curves[6].label, "GGX  compensated");
+    for (size_t i = 0; i < plot.viewAngles.size(); ++i)
+        if (plot.viewAngles[i] <= 75.0f) {
+            EXPECT_NEAR(plot.curves[6].albedo[i], 1.0f, 0.015f) << plot.viewAngles[i];
+        }
+    // The hook: a curve from any shade function.
+    AlbedoPlot copy = plot;
+    addAlbedoCurve(copy, "half Lambert",
+                   [](const shading::vec3& L, const shading::vec3&) { return 0.5f * std::max(L.z, 0.0f); });
+    EXPECT_NEAR(copy.curves.back().albedo[3], 0.5f, 2e-3f);
+}
