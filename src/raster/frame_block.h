@@ -3,10 +3,13 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "raster/band.h"
 #include "scene/scene.h"
+#include "scene/view.h"
 
 #include <cstddef>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 namespace shadelab::raster {
@@ -61,5 +64,9 @@ inline constexpr GLuint kMetalRoughUnit = 7;  // metallic-roughness,
 inline constexpr GLuint kNormalMapUnit = 8;   // normal
 inline constexpr GLuint kOcclusionUnit = 9;   // occlusion
 inline constexpr GLuint kEmissiveUnit = 10;   // and emissive
+
+// The block for drawing `band` of the image `v` describes, every sample moved by `jitter` pixels (x right, y
+// down) off the pixel centre: the lights, terms, model and environment of `scene` in the layout above.
+FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band, glm::vec2 jitter = glm::vec2(0.0f));
 
 }  // namespace shadelab::raster

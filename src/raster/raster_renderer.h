@@ -5,6 +5,7 @@
 
 #include "gl/program.h"
 #include "image/image.h"
+#include "raster/band.h"
 #include "raster/draw_range.h"
 #include "raster/environment_cubes.h"
 #include "raster/ibl_textures.h"
@@ -28,14 +29,6 @@
 namespace shadelab::raster {
 
 struct FrameBlock;
-
-// A horizontal band of the image, rows [top, top + rows) counted from the top; rows = 0 is the whole image.
-// Headless renders draw large images band by band to bound the float target's memory (bench figures in
-// docs/cli.md); every band samples exactly the full image's pixel centres.
-struct Band {
-    int top = 0;
-    int rows = 0;
-};
 
 class RasterRenderer {
 public:
