@@ -21,8 +21,9 @@
 #include "trace/trace_scene.h"
 
 #ifdef SHADELAB_HAVE_EMBREE
-#include <embree3/rtcore.h>
+#include "embree_scene.h"
 #endif
+#include "sphere_grid.h"
 
 #include <algorithm>
 #include <atomic>
@@ -41,6 +42,7 @@
 #include <vector>
 
 using namespace shadelab;
+using namespace shadelab::bench;
 using Clock = std::chrono::steady_clock;
 
 namespace {
@@ -154,72 +156,6 @@ RayCounts traceOurs(const trace::TraceScene& ts, const ViewSetup& view, int thre
 }
 
 #ifdef SHADELAB_HAVE_EMBREE
-struct EmbreeScene {
-    RTCDevice device = nullptr;
-    RTCScene scene = nullptr;
-    std::vector<glm::vec3> normals;  // geometric, per triangle, for the shadow-ray offset
-    double commitSeconds = 0.0;      // rtcCommitScene alone: Embree's BVH build
-
-    explicit EmbreeScene(const Scene& s) {
-        device = rtcNewDevice(nullptr);
-        scene = rtcNewScene(device);
-        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        size_t nv = 0, nt = 0;
-        for (const Mesh& m : s.meshes)
-            for (const MeshPart& p : m.parts) {
-                nv += p.geometry->positions.size();
-                nt += p.triangleCount();
-            }
-        auto* v = static_cast<float*>(
-            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
-        auto* idx = static_cast<unsigned*>(
-            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
-        size_t vb = 0, ti = 0;
-        for (const Mesh& m : s.meshes)
-            for (const MeshPart& part : m.parts) {
-                const MeshGeometry& p = *part.geometry;
-                for (size_t k = 0; k < p.positions.size(); ++k) {
-                    v[3 * (vb + k) + 0] = p.positions[k].x;
-                    v[3 * (vb + k) + 1] = p.positions[k].y;
-                    v[3 * (vb + k) + 2] = p.positions[k].z;
-                }
-                for (size_t t = 0; t < p.triangleCount(); ++t, ++ti) {
-                    for (int c = 0; c < 3; ++c) idx[3 * ti + size_t(c)] = unsigned(vb + p.indices[3 * t + size_t(c)]);
-                    const glm::vec3 a = p.positions[p.indices[3 * t]], b = p.positions[p.indices[3 * t + 1]],
-                                    c = p.positions[p.indices[3 * t + 2]];
-                    normals.push_back(glm::cross(b - a, c - a));
-                }
-                vb += p.positions.size();
-            }
-        rtcCommitGeometry(geom);
-        rtcAttachGeometry(scene, geom);
-        rtcReleaseGeometry(geom);
-        const auto t0 = Clock::now();
-        rtcCommitScene(scene);
-        commitSeconds = seconds(t0, Clock::now());
-    }
-    ~EmbreeScene() {
-        rtcReleaseScene(scene);
-        rtcReleaseDevice(device);
-    }
-};
-
-// Embree's ray-hit record for `ray`, from t = 0 to infinity, with no hit yet.
-RTCRayHit embreeRayHit(const trace::Ray& ray) {
-    RTCRayHit rh{};
-    rh.ray.org_x = ray.origin.x;
-    rh.ray.org_y = ray.origin.y;
-    rh.ray.org_z = ray.origin.z;
-    rh.ray.dir_x = ray.dir.x;
-    rh.ray.dir_y = ray.dir.y;
-    rh.ray.dir_z = ray.dir.z;
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = INFINITY;
-    rh.ray.mask = ~0u;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    return rh;
-}
-
 RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, const ViewSetup& view, int threads) {
     std::vector<RayCounts> perRow(size_t(view.height));
     parallelRows(view.height, threads, [&](int y) {
@@ -467,57 +403,6 @@ void benchIncoherent(const Options& o) {
 }
 
 // ---- (d) scale: a generated grid of UV spheres ---------------------------------------------------------
-
-// A UV sphere of 64 slices and 33 stacks: 2 x 64 cap triangles + 31 x 64 x 2 band triangles = 4,096.
-MeshGeometry uvSphere(glm::vec3 c, float radius) {
-    constexpr int kSlices = 64, kStacks = 33;
-    MeshGeometry g;
-    g.positions.push_back(c + glm::vec3(0, radius, 0));
-    g.normals.emplace_back(0, 1, 0);
-    for (int i = 1; i < kStacks; ++i) {
-        const float theta = 3.14159265358979f * float(i) / float(kStacks);
-        for (int j = 0; j < kSlices; ++j) {
-            const float phi = 6.28318530718f * float(j) / float(kSlices);
-            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-            g.positions.push_back(c + radius * n);
-            g.normals.push_back(n);
-        }
-    }
-    g.positions.push_back(c - glm::vec3(0, radius, 0));
-    g.normals.emplace_back(0, -1, 0);
-    const uint32_t south = uint32_t(g.positions.size() - 1);
-    auto ring = [](int i, int j) { return uint32_t(1 + (i - 1) * kSlices + (j % kSlices)); };
-    for (int j = 0; j < kSlices; ++j) g.indices.insert(g.indices.end(), {0u, ring(1, j + 1), ring(1, j)});
-    for (int i = 1; i < kStacks - 1; ++i)
-        for (int j = 0; j < kSlices; ++j) {
-            const uint32_t a = ring(i, j), b = ring(i, j + 1), cc = ring(i + 1, j), d = ring(i + 1, j + 1);
-            g.indices.insert(g.indices.end(), {a, b, d, a, d, cc});
-        }
-    for (int j = 0; j < kSlices; ++j)
-        g.indices.insert(g.indices.end(), {south, ring(kStacks - 1, j), ring(kStacks - 1, j + 1)});
-    return g;
-}
-
-// n x n spheres of radius 0.45 on a unit grid in the z = 0 plane, each its own mesh (as a glTF file with one
-// mesh per sphere imports), seen from the front with one point light beside the camera.
-Scene sphereGrid(int n) {
-    Scene s;
-    const float mid = 0.5f * float(n - 1);
-    s.camera.position = glm::vec3(mid, mid, 1.3f * float(n));
-    s.camera.target = glm::vec3(mid, mid, 0.0f);
-    s.camera.fovY = 45.0f;
-    Light l;
-    l.position = s.camera.position + glm::vec3(0.3f * float(n), 0.4f * float(n), 0.0f);
-    s.lights.push_back(l);
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            Mesh m;
-            m.name = "sphere";
-            m.parts.push_back(MeshPart{shareGeometry(uvSphere(glm::vec3(float(j), float(i), 0.0f), 0.45f)), {}});
-            s.meshes.push_back(std::move(m));
-        }
-    return s;
-}
 
 long peakRssKiB() {
     FILE* f = std::fopen("/proc/self/status", "r");
