@@ -1,5 +1,5 @@
-// Runs the shadelab binary from CLI tests (cli_test.cpp, cli_outputs_test.cpp): its exit code and output, and
-// the small file helpers both use.
+// Runs the shadelab binary from tests (the CLI's, and the viewer window's through app_window_run.h): its exit
+// code and output, and the small file helpers they share.
 #pragma once
 
 #include "test_output.h"
@@ -18,17 +18,21 @@ struct Result {
     std::string out;  // stdout and stderr together
 };
 
-// Runs shadelab with `args`; `env` is prepended to the shell command (e.g. "VAR=value ").
-inline Result run(const std::string& args, const std::string& env = "") {
-    std::string cmd = env + std::string(SHADELAB_BINARY) + " " + args + " 2>&1";
+// Runs a shell command line, its stderr with its stdout.
+inline Result shell(const std::string& cmd) {
     Result r;
-    FILE* p = popen(cmd.c_str(), "r");
+    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
     if (!p) return r;
     std::array<char, 4096> buf;
     while (size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
-    int status = pclose(p);
+    const int status = pclose(p);
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     return r;
+}
+
+// Runs shadelab with `args`; `env` is prepended to the shell command (e.g. "VAR=value ").
+inline Result run(const std::string& args, const std::string& env = "") {
+    return shell(env + std::string(SHADELAB_BINARY) + " " + args);
 }
 
 inline std::string writeText(const std::string& name, const std::string& text) {
