@@ -35,7 +35,8 @@ void TraceScene::prepare() {
 }
 
 std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
-    // Plain locals, no optional per primitive type: this runs once per ray, and scenes often have only one type.
+    // Once per ray: only the kinds of object the scene has are asked, and the meshes answer through an
+    // out-parameter (an optional built and copied there stalled on a partial store).
     Hit best;
     best.t = INFINITY;
     bool found = false;
