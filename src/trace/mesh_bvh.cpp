@@ -13,6 +13,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <thread>
 #include <utility>
 
 namespace shadelab::trace {
@@ -28,38 +29,52 @@ bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec
 }
 
 MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
-    // One BvhPrim per finite, non-degenerate triangle: its box, its index in its part and the part's index.
-    // `source` numbers every triangle, kept or not, in scene order.
-    std::vector<BvhPrim> prims;
-    size_t total = 0;
-    for (const Mesh& m : scene.meshes) total += m.triangleCount();
-    prims.reserve(total);
-    uint32_t source = 0;
+    // The parts in scene order, each with its geometry and the scene-order index (`source`) of its first
+    // triangle; `source` numbers every triangle, kept or not.
+    uint32_t total = 0;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         for (const MeshPart& part : scene.meshes[m].parts) {
             SHADELAB_CHECK(part.geometry != nullptr);
-            const MeshGeometry& p = *part.geometry;
-            const uint32_t partIndex = uint32_t(partMesh_.size());
             partMesh_.push_back(uint32_t(m));
             geometry_.push_back(part.geometry);
-            partFirst_.push_back(source);
-            for (size_t t = 0; t < p.triangleCount(); ++t) {
-                glm::vec3 v[3];
-                for (int k = 0; k < 3; ++k) {
-                    const uint32_t idx = p.indices[3 * t + size_t(k)];
-                    SHADELAB_CHECK_LT(size_t(idx), p.positions.size());
-                    v[k] = p.positions[idx];
-                }
-                if (!finite(v[0]) || !finite(v[1]) || !finite(v[2])) continue;
-                if (isDegenerateTriangle(v[0], v[1], v[2])) continue;
-                const glm::vec3 lo = glm::min(glm::min(v[0], v[1]), v[2]), hi = glm::max(glm::max(v[0], v[1]), v[2]);
-                prims.push_back(BvhPrim{{lo.x, lo.y, lo.z}, uint32_t(t), {hi.x, hi.y, hi.z}, partIndex});
-                bounds_.lo = glm::min(bounds_.lo, lo);
-                bounds_.hi = glm::max(bounds_.hi, hi);
-            }
-            SHADELAB_CHECK_LT(size_t(source) + p.triangleCount(), size_t(UINT32_MAX));
-            source += uint32_t(p.triangleCount());
+            partFirst_.push_back(total);
+            SHADELAB_CHECK_LT(size_t(total) + part.geometry->triangleCount(), size_t(UINT32_MAX));
+            total += uint32_t(part.geometry->triangleCount());
         }
+    }
+    const int threads = gatherThreads(options, total);
+
+    // One BvhPrim per finite, non-degenerate triangle, in scene order: its box, its index in its part and the
+    // part's index. The test (a cross product in double) runs on `threads` ranges of the scene's triangles;
+    // each range then writes its kept triangles at its offset, so the order does not depend on the split.
+    std::vector<uint8_t> keep(total);
+    std::vector<uint32_t> kept(size_t(threads) + 1, 0);
+    forRanges(total, threads, [&](int r, uint32_t begin, uint32_t end) {
+        uint32_t count = 0;
+        forTriangles(begin, end, [&](uint32_t g, uint32_t, size_t, const glm::vec3* v) {
+            keep[g] = finite(v[0]) && finite(v[1]) && finite(v[2]) && !isDegenerateTriangle(v[0], v[1], v[2]);
+            count += keep[g];
+        });
+        kept[size_t(r) + 1] = count;
+    });
+    for (int r = 0; r < threads; ++r) kept[size_t(r) + 1] += kept[size_t(r)];
+    std::vector<BvhPrim> prims(kept[size_t(threads)]);
+    std::vector<Bounds> rangeBounds(static_cast<size_t>(threads));
+    forRanges(total, threads, [&](int r, uint32_t begin, uint32_t end) {
+        BvhPrim* out = prims.data() + kept[size_t(r)];
+        Bounds& b = rangeBounds[size_t(r)];
+        forTriangles(begin, end, [&](uint32_t g, uint32_t part, size_t t, const glm::vec3* v) {
+            if (!keep[g]) return;
+            const glm::vec3 lo = glm::min(glm::min(v[0], v[1]), v[2]), hi = glm::max(glm::max(v[0], v[1]), v[2]);
+            *out++ = BvhPrim{{lo.x, lo.y, lo.z}, uint32_t(t), {hi.x, hi.y, hi.z}, part};
+            b.lo = glm::min(b.lo, lo);
+            b.hi = glm::max(b.hi, hi);
+        });
+    });
+    std::vector<uint8_t>().swap(keep);
+    for (const Bounds& b : rangeBounds) {
+        bounds_.lo = glm::min(bounds_.lo, b.lo);
+        bounds_.hi = glm::max(bounds_.hi, b.hi);
     }
     // Pad every box by far more than a triangle hit's rounding, which scales with the coordinates' magnitude:
     // otherwise a triangle lying in its box's face can round to a hit just before the box's rounded entry and
@@ -80,23 +95,67 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     // Store what the traversal and shading read in leaf order, so a leaf's triangles are contiguous in memory;
     // normals stay in the scene's geometry (interpolatedNormal reads them through the part). The ids first,
     // then the primitive references are freed before the positions are gathered: the peak holds only one.
-    const size_t n = prims.size();
+    const uint32_t n = uint32_t(prims.size());
     part_.resize(n);
     source_.resize(n);
-    for (size_t slot = 0; slot < n; ++slot) {
-        part_[slot] = prims[slot].id2;
-        source_[slot] = partFirst_[prims[slot].id2] + prims[slot].id;
-    }
+    forRanges(n, threads, [&](int, uint32_t begin, uint32_t end) {
+        for (uint32_t slot = begin; slot < end; ++slot) {
+            part_[slot] = prims[slot].id2;
+            source_[slot] = partFirst_[prims[slot].id2] + prims[slot].id;
+        }
+    });
     std::vector<BvhPrim>().swap(prims);
-    positions_.resize(9 * n);
-    for (size_t slot = 0; slot < n; ++slot) {
-        const MeshGeometry& g = *geometry_[part_[slot]];
-        const size_t tri = source_[slot] - partFirst_[part_[slot]];
-        for (int k = 0; k < 3; ++k) {
-            const glm::vec3& v = g.positions[g.indices[3 * tri + size_t(k)]];
-            positions_[9 * slot + size_t(3 * k)] = v.x;
-            positions_[9 * slot + size_t(3 * k + 1)] = v.y;
-            positions_[9 * slot + size_t(3 * k + 2)] = v.z;
+    positions_.resize(9 * size_t(n));
+    forRanges(n, threads, [&](int, uint32_t begin, uint32_t end) {
+        for (uint32_t slot = begin; slot < end; ++slot) {
+            const MeshGeometry& g = *geometry_[part_[slot]];
+            const size_t tri = source_[slot] - partFirst_[part_[slot]];
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3& v = g.positions[g.indices[3 * tri + size_t(k)]];
+                positions_[9 * size_t(slot) + size_t(3 * k)] = v.x;
+                positions_[9 * size_t(slot) + size_t(3 * k + 1)] = v.y;
+                positions_[9 * size_t(slot) + size_t(3 * k + 2)] = v.z;
+            }
+        }
+    });
+}
+
+int MeshBvh::gatherThreads(const BvhBuildOptions& options, uint32_t triangles) {
+    if (triangles < kMinParallelGather) return 1;
+    const int t = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());
+    return std::max(1, std::min(t, 64));
+}
+
+template <typename F>
+void MeshBvh::forRanges(uint32_t count, int threads, F&& f) {
+    auto range = [&](int r) {
+        const uint32_t begin = uint32_t(uint64_t(count) * uint64_t(r) / uint64_t(threads));
+        const uint32_t end = uint32_t(uint64_t(count) * uint64_t(r + 1) / uint64_t(threads));
+        f(r, begin, end);
+    };
+    std::vector<std::thread> pool;
+    for (int r = 1; r < threads; ++r) pool.emplace_back(range, r);
+    range(0);
+    for (std::thread& t : pool) t.join();
+}
+
+template <typename F>
+void MeshBvh::forTriangles(uint32_t begin, uint32_t end, F&& f) const {
+    if (begin >= end) return;
+    // The part holding `begin`: the last whose first source index is <= begin.
+    size_t part = size_t(std::upper_bound(partFirst_.begin(), partFirst_.end(), begin) - partFirst_.begin()) - 1;
+    for (uint32_t g = begin; g < end; ++part) {
+        const MeshGeometry& p = *geometry_[part];
+        const uint32_t first = partFirst_[part], last = first + uint32_t(p.triangleCount());
+        for (; g < end && g < last; ++g) {
+            const size_t t = g - first;
+            glm::vec3 v[3];
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t idx = p.indices[3 * t + size_t(k)];
+                SHADELAB_CHECK_LT(size_t(idx), p.positions.size());
+                v[k] = p.positions[idx];
+            }
+            f(g, uint32_t(part), t, v);
         }
     }
 }

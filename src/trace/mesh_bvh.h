@@ -69,6 +69,16 @@ public:
 private:
     bool closestHitWith(const Ray& ray, float tMax, BvhIsa isa, MeshHit& out) const;
 
+    // The constructor's gathering runs on options.threads threads from this many triangles (one below it).
+    static constexpr uint32_t kMinParallelGather = 100000;
+    static int gatherThreads(const BvhBuildOptions& options, uint32_t triangles);
+    // f(range, begin, end) for `threads` consecutive ranges of [0, count), on as many threads.
+    template <typename F>
+    static void forRanges(uint32_t count, int threads, F&& f);
+    // f(source, part, triangle in part, corners) for the scene-order triangles [begin, end).
+    template <typename F>
+    void forTriangles(uint32_t begin, uint32_t end, F&& f) const;
+
     BvhIsa isa_ = defaultBvhIsa();  // read once, not per ray
     Bvh bvh_;
     std::vector<float> positions_;                               // 9 per slot
