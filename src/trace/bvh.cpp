@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <thread>
 #include <utility>
@@ -96,11 +97,13 @@ struct Bins {
     uint32_t count[3][kMaxBins];
 
     explicit Bins(int bins) {
+        // All counts at once (a fixed size, so plain vector stores; a loop to `bins` became a slow `rep stos`
+        // for the many small ranges), then the boxes of the bins in use.
+        std::memset(count, 0, sizeof count);
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < bins; ++b) {
                 lo[a][b] = splat4(INFINITY);
                 hi[a][b] = splat4(-INFINITY);
-                count[a][b] = 0;
             }
     }
     void extend(int a, int b, F4 l, F4 h) {
