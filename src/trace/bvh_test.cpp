@@ -532,6 +532,46 @@ TEST(BvhBuild, SameTreeForAnyThreadCount) {
     EXPECT_FALSE(same(one, buildBvh(boxes, o)));
 }
 
+TEST(MeshBvhBuild, SameForAnyThreadCount) {
+    // MeshBvh gathers its triangles and their leaf-order positions on the build's threads (above 100,000
+    // triangles): any thread count must give the same slots, positions, ids, nodes and bounds. A soup of many
+    // parts (ranges split inside parts) plus a part of degenerate and non-finite triangles (left out).
+    Scene sc = soupScene(120000, 7u);
+    MeshGeometry odd;
+    for (int i = 0; i < 3000; ++i) {
+        const float x = float(i) * 1e-3f;
+        glm::vec3 v[3] = {{x, 0.0f, 0.0f}, {x, 1.0f, 0.0f}, {x + 0.5f, 0.0f, 1.0f}};
+        if (i % 3 == 0) v[2] = v[1];        // degenerate
+        if (i % 5 == 0) v[1].y = INFINITY;  // not finite
+        for (const glm::vec3& q : v) {
+            odd.indices.push_back(uint32_t(odd.positions.size()));
+            odd.positions.push_back(q);
+        }
+    }
+    sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(odd)), Material{}});
+    auto same = [](const MeshBvh& a, const MeshBvh& b) {
+        if (a.triangleCount() != b.triangleCount() || a.bvh().nodes.size() != b.bvh().nodes.size()) return false;
+        for (uint32_t s = 0; s < a.triangleCount(); ++s)
+            if (std::memcmp(a.vertices(s), b.vertices(s), 9 * sizeof(float)) != 0 ||
+                a.sourceTriangle(s) != b.sourceTriangle(s) || a.part(s) != b.part(s))
+                return false;
+        return std::memcmp(a.bvh().nodes.data(), b.bvh().nodes.data(), a.bvh().nodes.size() * sizeof(BvhNode)) == 0 &&
+               a.bounds().lo == b.bounds().lo && a.bounds().hi == b.bounds().hi;
+    };
+    BvhBuildOptions o;
+    o.threads = 1;
+    const MeshBvh one(sc, o);
+    // 120,000 soup triangles and the 3000 - 1000 - 600 + 200 = 1,600 sound ones of the odd part.
+    EXPECT_EQ(one.triangleCount(), 121600u);
+    for (const int t : {2, 3}) {
+        o.threads = t;
+        EXPECT_TRUE(same(one, MeshBvh(sc, o))) << t << " threads gathered differently";
+    }
+    // Negative control: a different bin count builds a different tree, and the comparison sees it.
+    o.bins = 8;
+    EXPECT_FALSE(same(one, MeshBvh(sc, o)));
+}
+
 TEST(SphereSetBvh, MatchesBruteForce) {
     std::mt19937 rng(23);
     std::uniform_real_distribution<float> u(-5.0f, 5.0f), r(0.05f, 0.6f);
