@@ -1,11 +1,12 @@
 // The SAH BVH (bvh.h) and its traversals (mesh_bvh.h, sphere_set.h) against brute force: same nearest hit (t
 // bit-equal, same triangle) and any-hit answers for random rays over real assimp-testmodels meshes.
-// Sections: brute force | structural invariants | real models | degenerate inputs | random triangle soups
-// (issue 14's 8-wide tree: sizes around the parallel-build threshold, ties, empty scenes, thread counts) |
-// spheres. The AVX2 walks and the 8-wide slab test against the baseline are bvh_isa_test.cpp.
+// Sections: brute force | real models | degenerate inputs | random triangle soups (issue 14's 8-wide tree:
+// sizes around the parallel-build threshold, ties, empty scenes) | spheres. The builder's own properties are
+// bvh_build_test.cpp; the AVX2 walks and the 8-wide slab tests against the baseline are bvh_isa_test.cpp.
 #include "trace/bvh.h"
 #include "scene/scene_load.h"
 #include "shading/lighting.h"
+#include "trace/bvh_invariants.h"
 #include "trace/bvh_test_util.h"
 #include "trace/mesh_bvh.h"
 #include "trace/sphere_set.h"
@@ -18,7 +19,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <optional>
@@ -124,103 +124,6 @@ Disagreement compare(const MeshBvh& bvh, const std::vector<Ray>& rays, const std
     return d;
 }
 
-std::vector<Bounds> boxesOf(const std::vector<SceneTri>& tris) {
-    std::vector<Bounds> boxes(tris.size());
-    for (size_t i = 0; i < tris.size(); ++i)
-        for (int k = 0; k < 3; ++k) boxes[i].extend(glm::make_vec3(tris[i].v + 3 * k));
-    return boxes;
-}
-
-// ---- Structural invariants ------------------------------------------------------------------------
-
-Bounds box(glm::vec3 lo, glm::vec3 hi) { return Bounds{lo, hi}; }
-
-Bounds childBox(const BvhNode& n, int k) {
-    return box({n.bounds[0][k], n.bounds[1][k], n.bounds[2][k]}, {n.bounds[3][k], n.bounds[4][k], n.bounds[5][k]});
-}
-
-bool contains(const Bounds& outer, const Bounds& b) {
-    for (int a = 0; a < 3; ++a)
-        if (b.lo[a] < outer.lo[a] || b.hi[a] > outer.hi[a]) return false;
-    return true;
-}
-
-// Every primitive in exactly one leaf, leaves of 1..maxLeaf primitives inside their boxes, interior children's
-// boxes inside their parent's box for them, unused children inverted and empty, every node reached once, and
-// at most depth + 1 levels. `order[k]` is the primitive (index into boxes) at leaf slot k.
-::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Bounds>& boxes, int maxLeaf,
-                                      const std::vector<uint32_t>& order) {
-    if (boxes.empty())
-        return bvh.empty() ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << "not empty";
-    if (order.size() != boxes.size() || bvh.primitives != boxes.size())
-        return ::testing::AssertionFailure() << "order has " << order.size();
-    std::vector<int> seen(boxes.size(), 0);
-    std::vector<int> reached(bvh.nodes.size(), 0);
-    int levels = 0;
-    struct Item {
-        uint32_t node;
-        Bounds box;
-        int level;
-    };
-    std::vector<Item> stack{{0u, bvh.bounds, 1}};
-    while (!stack.empty()) {
-        const Item it = stack.back();
-        stack.pop_back();
-        if (it.node >= bvh.nodes.size() || reached[it.node]++)
-            return ::testing::AssertionFailure() << "node " << it.node << " out of range or reached twice";
-        levels = std::max(levels, it.level);
-        const BvhNode& n = bvh.nodes[it.node];
-        int used = 0;
-        for (int k = 0; k < kBvhWidth; ++k) {
-            const uint32_t ref = n.child[k];
-            if (!n.used(k)) {
-                if (ref != kLeafBit) return ::testing::AssertionFailure() << "unused child " << k << " has a reference";
-                continue;
-            }
-            ++used;
-            const Bounds b = childBox(n, k);
-            if (!contains(it.box, b))
-                return ::testing::AssertionFailure() << "node " << it.node << " child " << k << " outside its parent";
-            if (!isLeafRef(ref)) {
-                stack.push_back({ref, b, it.level + 1});
-                continue;
-            }
-            const uint32_t first = leafFirst(ref), count = leafCount(ref);
-            if (count == 0 || count > uint32_t(maxLeaf))
-                return ::testing::AssertionFailure() << "leaf in node " << it.node << " holds " << count;
-            if (size_t(first) + count > order.size()) return ::testing::AssertionFailure() << "leaf range";
-            for (uint32_t s = first; s < first + count; ++s) {
-                const uint32_t p = order[s];
-                if (p >= boxes.size() || seen[p]++)
-                    return ::testing::AssertionFailure() << "primitive " << p << " twice";
-                if (!contains(b, boxes[p]))
-                    return ::testing::AssertionFailure() << "leaf in node " << it.node << " misses box " << p;
-            }
-        }
-        if (used == 0) return ::testing::AssertionFailure() << "node " << it.node << " has no children";
-    }
-    for (size_t i = 0; i < reached.size(); ++i)
-        if (!reached[i]) return ::testing::AssertionFailure() << "node " << i << " unreachable";
-    if (levels > bvh.depth + 1 || bvh.depth >= kMaxBvhDepth)
-        return ::testing::AssertionFailure() << levels << " levels vs reported depth " << bvh.depth;
-    return ::testing::AssertionSuccess();
-}
-
-::testing::AssertionResult bvhIsValid(const Bvh& bvh, const std::vector<Bounds>& boxes, int maxLeaf) {
-    return bvhIsValid(bvh, boxes, maxLeaf, bvh.order);
-}
-
-// A MeshBvh's leaf order as indices into sceneTriangles() (which lists the kept triangles by source).
-::testing::AssertionResult meshBvhIsValid(const MeshBvh& bvh, const std::vector<SceneTri>& tris, int maxLeaf) {
-    std::vector<uint32_t> order(bvh.triangleCount());
-    for (uint32_t s = 0; s < order.size(); ++s) {
-        const auto it = std::lower_bound(tris.begin(), tris.end(), bvh.sourceTriangle(s),
-                                         [](const SceneTri& t, uint32_t src) { return t.source < src; });
-        order[s] = it != tris.end() && it->source == bvh.sourceTriangle(s) ? uint32_t(it - tris.begin()) : UINT32_MAX;
-    }
-    return bvhIsValid(bvh.bvh(), boxesOf(tris), maxLeaf, order);
-}
-
 // ---- Real models ---------------------------------------------------------------------------------
 
 struct ModelCase {
@@ -276,66 +179,6 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 // ---- Degenerate inputs -----------------------------------------------------------------------------
-
-TEST(BvhBuild, EmptyAndSinglePrimitive) {
-    EXPECT_TRUE(buildBvh({}).empty());
-    const std::vector<Bounds> one = {box({1, 2, 3}, {4, 5, 6})};
-    const Bvh b = buildBvh(one);
-    EXPECT_TRUE(bvhIsValid(b, one, 4));
-    ASSERT_EQ(b.nodes.size(), 1u);
-    EXPECT_EQ(b.nodes[0].child[0], makeLeafRef(0, 1));
-    EXPECT_FALSE(b.nodes[0].used(1));
-    EXPECT_EQ(b.depth, 0);
-}
-
-TEST(BvhBuild, IdenticalBoxesSplitByCountWithinTheDepthLimit) {
-    for (const size_t n : {size_t(5), size_t(1000), size_t(100000)})
-        for (const int leaf : {1, 4}) {
-            const std::vector<Bounds> same(n, box({-1, 0, 2}, {1, 0.5f, 3}));
-            BvhBuildOptions o;
-            o.maxLeafSize = leaf;
-            const Bvh b = buildBvh(same, o);
-            EXPECT_TRUE(bvhIsValid(b, same, leaf)) << n << " boxes, leaf " << leaf;
-            EXPECT_LE(b.depth, int(std::ceil(std::log2(double(n)))) + 1) << "object-median fallback should halve";
-        }
-    // Points and flat boxes: zero area everywhere.
-    std::vector<Bounds> flat;
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    for (int i = 0; i < 3000; ++i) {
-        const glm::vec3 p(u(rng), u(rng), 0.0f);
-        flat.push_back(i % 2 ? box(p, p) : box(p, p + glm::vec3(0.1f, 0.0f, 0.0f)));
-    }
-    EXPECT_TRUE(bvhIsValid(buildBvh(flat), flat, 4));
-}
-
-TEST(BvhBuild, OptionsAndSahCostOnRandomBoxes) {
-    std::mt19937 rng(9);
-    std::uniform_real_distribution<float> u(-10.0f, 10.0f), s(0.0f, 0.3f);
-    std::vector<Bounds> boxes;
-    for (int i = 0; i < 5000; ++i) {
-        const glm::vec3 p(u(rng), u(rng), u(rng));
-        boxes.push_back(box(p, p + glm::vec3(s(rng), s(rng), s(rng))));
-    }
-    for (const int bins : {2, 16, 100})
-        for (const int leaf : {0, 1, 8}) {
-            BvhBuildOptions o;
-            o.bins = bins;
-            o.maxLeafSize = leaf;
-            const Bvh b = buildBvh(boxes, o);
-            EXPECT_TRUE(bvhIsValid(b, boxes, std::max(leaf, 1))) << "bins " << bins << " leaf " << leaf;
-            EXPECT_LT(sahCost(b, o), 0.02f * float(boxes.size())) << "far worse than SAH should give";
-        }
-    // Negative control: the validator notices a shrunken leaf and a lost primitive.
-    Bvh broken = buildBvh(boxes);
-    size_t leafNode = 0;
-    while (!isLeafRef(broken.nodes[leafNode].child[0])) ++leafNode;
-    broken.nodes[leafNode].bounds[3][0] = broken.nodes[leafNode].bounds[0][0];
-    EXPECT_FALSE(bvhIsValid(broken, boxes, 4));
-    broken = buildBvh(boxes);
-    broken.order[0] = broken.order[1];
-    EXPECT_FALSE(bvhIsValid(broken, boxes, 4));
-}
 
 // Zero-area triangles: points (i % 3 == 0), collinear slivers a, a + d/2, a + d (1), and one segment with a
 // repeated vertex (2); among them 200 small real triangles and 200 copies of one big triangle on top.
@@ -504,72 +347,6 @@ TEST(BvhSoup, EmptySceneAndOnlyDegenerateTrianglesAreNeverHit) {
     real.meshes.push_back(Mesh{});
     real.meshes[0].parts.push_back(MeshPart{shareGeometry(p), Material{}});
     check(real, 1, true);
-}
-
-TEST(BvhBuild, SameTreeForAnyThreadCount) {
-    std::mt19937 rng(41);
-    std::uniform_real_distribution<float> u(-10.0f, 10.0f), s(0.0f, 0.5f);
-    std::vector<Bounds> boxes;
-    for (int i = 0; i < 80000; ++i) {  // above the parallel binning threshold (65,536)
-        const glm::vec3 p(u(rng), u(rng) * 0.1f, u(rng));
-        boxes.push_back(box(p, p + glm::vec3(s(rng), s(rng), s(rng))));
-    }
-    auto same = [](const Bvh& a, const Bvh& b) {
-        return a.nodes.size() == b.nodes.size() && a.order == b.order && a.depth == b.depth &&
-               std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)) == 0;
-    };
-    BvhBuildOptions o;
-    o.threads = 1;
-    const Bvh one = buildBvh(boxes, o);
-    EXPECT_TRUE(bvhIsValid(one, boxes, o.maxLeafSize));
-    for (const int t : {2, 3}) {
-        o.threads = t;
-        const Bvh many = buildBvh(boxes, o);
-        EXPECT_TRUE(same(one, many)) << t << " threads built a different tree";
-    }
-    // Negative control: a different bin count builds a different tree, and the comparison sees it.
-    o.bins = 8;
-    EXPECT_FALSE(same(one, buildBvh(boxes, o)));
-}
-
-TEST(MeshBvhBuild, SameForAnyThreadCount) {
-    // MeshBvh gathers its triangles and their leaf-order positions on the build's threads (above 100,000
-    // triangles): any thread count must give the same slots, positions, ids, nodes and bounds. A soup of many
-    // parts (ranges split inside parts) plus a part of degenerate and non-finite triangles (left out).
-    Scene sc = soupScene(120000, 7u);
-    MeshGeometry odd;
-    for (int i = 0; i < 3000; ++i) {
-        const float x = float(i) * 1e-3f;
-        glm::vec3 v[3] = {{x, 0.0f, 0.0f}, {x, 1.0f, 0.0f}, {x + 0.5f, 0.0f, 1.0f}};
-        if (i % 3 == 0) v[2] = v[1];        // degenerate
-        if (i % 5 == 0) v[1].y = INFINITY;  // not finite
-        for (const glm::vec3& q : v) {
-            odd.indices.push_back(uint32_t(odd.positions.size()));
-            odd.positions.push_back(q);
-        }
-    }
-    sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(odd)), Material{}});
-    auto same = [](const MeshBvh& a, const MeshBvh& b) {
-        if (a.triangleCount() != b.triangleCount() || a.bvh().nodes.size() != b.bvh().nodes.size()) return false;
-        for (uint32_t s = 0; s < a.triangleCount(); ++s)
-            if (std::memcmp(a.vertices(s), b.vertices(s), 9 * sizeof(float)) != 0 ||
-                a.sourceTriangle(s) != b.sourceTriangle(s) || a.part(s) != b.part(s))
-                return false;
-        return std::memcmp(a.bvh().nodes.data(), b.bvh().nodes.data(), a.bvh().nodes.size() * sizeof(BvhNode)) == 0 &&
-               a.bounds().lo == b.bounds().lo && a.bounds().hi == b.bounds().hi;
-    };
-    BvhBuildOptions o;
-    o.threads = 1;
-    const MeshBvh one(sc, o);
-    // 120,000 soup triangles and the 3000 - 1000 - 600 + 200 = 1,600 sound ones of the odd part.
-    EXPECT_EQ(one.triangleCount(), 121600u);
-    for (const int t : {2, 3}) {
-        o.threads = t;
-        EXPECT_TRUE(same(one, MeshBvh(sc, o))) << t << " threads gathered differently";
-    }
-    // Negative control: a different bin count builds a different tree, and the comparison sees it.
-    o.bins = 8;
-    EXPECT_FALSE(same(one, MeshBvh(sc, o)));
 }
 
 TEST(SphereSetBvh, MatchesBruteForce) {
