@@ -6,15 +6,14 @@
 #include "image/compare.h"
 #include "image/compare_report.h"
 #include "image/png.h"
+#include "pixel_of.h"
 #include "scene/view.h"
 #include "test_output.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <glm/vec4.hpp>
 #include <string>
 #include <vector>
 
@@ -58,11 +57,7 @@ inline bool sameBytes(const std::string& pathA, const std::string& pathB) {
     return readPng(pathA).data == readPng(pathB).data;
 }
 
-inline glm::ivec2 pixelOf(const Scene& scene, const glm::vec3& p) {
-    const ViewSetup v = makeViewSetup(scene, kW, kH);
-    const glm::vec4 clip = v.viewProj * glm::vec4(p, 1.0f);
-    return {int(std::floor((clip.x / clip.w * 0.5f + 0.5f) * float(kW))),
-            int(std::floor((1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(kH)))};
-}
+// The pixel of the tests' kW x kH images that contains a world point.
+inline glm::ivec2 pixelOf(const Scene& scene, const glm::vec3& p) { return pixelOf(scene, kW, kH, p); }
 
 }  // namespace shadelab::test
