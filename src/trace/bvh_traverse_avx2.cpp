@@ -21,58 +21,46 @@ namespace {
 // This file's own tag: the triangle-test templates instantiated here are this file's alone.
 struct Avx2Tag {};
 
-// makeBoxRay's and makeWatertightRay's constants, the same bits, without their branches (which way a ray points
-// is a coin toss for incoherent rays) and with the divisions in two vector ones: per-ray set-up showed up as a
-// tenth of a profile of rays that miss everything.
-struct RaySetup {
-    BoxRay box;
-    WatertightRay wt;
-};
+// Per-ray set-up. It is a third of the instructions of an incoherent ray that visits five nodes (callgrind), so
+// it is built straight from the ray into what the walk reads, without branches (which way a ray points is a coin
+// toss for incoherent rays) and without the scalar structs: the values are makeBoxRay's and makeWatertightRay's,
+// bit for bit (BvhIsa.Avx2RayConstantsMatchTheScalarOnes), and only the cold scalar fallback rebuilds those.
 
-RaySetup setUpRay(const Ray& ray) {
-    RaySetup s;
-    const __m128 d = _mm_setr_ps(ray.dir.x, ray.dir.y, ray.dir.z, 1.0f);
-    const __m128 o = _mm_setr_ps(ray.origin.x, ray.origin.y, ray.origin.z, 0.0f);
+// The ray as (ox, oy, oz, 0) and (dx, dy, dz, 1), from two overlapping 16-byte loads inside the 24-byte Ray.
+static_assert(sizeof(Ray) == 24, "the loads below read a Ray as six packed floats");
+inline void loadRay(const Ray& ray, __m128& o, __m128& d) {
+    const __m128 head = _mm_loadu_ps(&ray.origin.x);  // ox oy oz dx
+    const __m128 tail = _mm_loadu_ps(&ray.origin.z);  // oz dx dy dz
+    o = _mm_blend_ps(head, _mm_setzero_ps(), 8);
+    d = _mm_blend_ps(_mm_permute_ps(tail, _MM_SHUFFLE(0, 3, 2, 1)), _mm_set1_ps(1.0f), 8);
+}
+
+// makeBoxRay's reciprocals: 1/d, or ±1e30 where |d| <= 1e-30 (lane 3: 1).
+inline __m128 reciprocals(__m128 d) {
     const __m128 signBit = _mm_set1_ps(-0.0f);
-    const __m128 ad = _mm_andnot_ps(signBit, d);
-    // Slabs: 1/d, or ±1e30 where |d| <= 1e-30; the near side by the reciprocal's sign.
-    const __m128 inv = _mm_blendv_ps(_mm_or_ps(_mm_and_ps(d, signBit), _mm_set1_ps(1e30f)),
-                                     _mm_div_ps(_mm_set1_ps(1.0f), d), _mm_cmpgt_ps(ad, _mm_set1_ps(1e-30f)));
-    alignas(16) float invs[4], abs[4], org[4];
-    _mm_store_ps(invs, inv);
-    _mm_store_ps(abs, ad);
-    _mm_store_ps(org, o);
-    const int invNeg = _mm_movemask_ps(_mm_cmplt_ps(inv, _mm_setzero_ps()));
-    for (int a = 0; a < 3; ++a) {
-        const int n = (invNeg >> a) & 1;
-        s.box.org[a] = org[a];
-        s.box.invDir[a] = invs[a];
-        s.box.nearIdx[a] = a + 3 * n;
-        s.box.farIdx[a] = a + 3 * (1 - n);
+    return _mm_blendv_ps(_mm_or_ps(_mm_and_ps(d, signBit), _mm_set1_ps(1e30f)), _mm_div_ps(_mm_set1_ps(1.0f), d),
+                         _mm_cmpgt_ps(_mm_andnot_ps(signBit, d), _mm_set1_ps(1e-30f)));
+}
+
+// Byte offsets into a node's bounds of each axis's near rows (0-2) and far rows (3-5), by the mask of negative
+// reciprocals: slab_test.h's nearIdx/farIdx (lo x y z = rows 0-2, hi = 3-5), times a row's 32 bytes.
+struct SlabOffsets {
+    size_t off[8][6];
+    constexpr SlabOffsets() : off() {
+        for (int m = 0; m < 8; ++m)
+            for (int a = 0; a < 3; ++a) {
+                const int n = (m >> a) & 1;
+                off[m][a] = size_t(a + 3 * n) * sizeof(float[8]);
+                off[m][3 + a] = size_t(a + 3 * (1 - n)) * sizeof(float[8]);
+            }
     }
-    // Watertight: z is the axis of largest |d| (ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2)), x and y swapped
-    // where d[z] < 0.
-    static constexpr int8_t kKz[8] = {2, 1, 2, 1, 2, 2, 0, 0};                         // by (ax > ay, ax > az, ay > az)
-    static constexpr int8_t kKx[6] = {1, 2, 2, 0, 0, 1}, kKy[6] = {2, 1, 0, 2, 1, 0};  // by (kz, d[kz] < 0)
-    const int kz = kKz[(abs[0] > abs[1]) * 4 + (abs[0] > abs[2]) * 2 + (abs[1] > abs[2])];
-    const int neg = (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) >> kz) & 1;
-    const int kx = kKx[2 * kz + neg], ky = kKy[2 * kz + neg];
-    // (d[kx], d[ky], 1) / d[kz]: Sx, Sy, Sz; and the origin in (kx, ky, kz) order.
-    alignas(16) float shear[4], permuted[4];
-    _mm_store_ps(shear, _mm_div_ps(_mm_permutevar_ps(d, _mm_setr_epi32(kx, ky, 3, 3)),
-                                   _mm_permutevar_ps(d, _mm_set1_epi32(kz))));
-    _mm_store_ps(permuted, _mm_permutevar_ps(o, _mm_setr_epi32(kx, ky, kz, 3)));
-    for (int a = 0; a < 3; ++a) s.wt.org[a] = org[a];
-    s.wt.kx = kx;
-    s.wt.ky = ky;
-    s.wt.kz = kz;
-    s.wt.Sx = shear[0];
-    s.wt.Sy = shear[1];
-    s.wt.Sz = shear[2];
-    s.wt.ox = permuted[0];
-    s.wt.oy = permuted[1];
-    s.wt.oz = permuted[2];
-    return s;
+};
+alignas(64) constexpr SlabOffsets kSlabOffsets;
+
+// Lane k of v in all eight lanes.
+template <int k>
+inline __m256 lane8(__m128 v) {
+    return _mm256_broadcastss_ps(k == 0 ? v : _mm_permute_ps(v, _MM_SHUFFLE(k, k, k, k)));
 }
 
 // The box test with one fused multiply-subtract per slab: t = bound·invDir − org·invDir. Only the product
@@ -85,38 +73,94 @@ RaySetup setUpRay(const Ray& ray) {
 // still find the same hits, which do not depend on visiting order (MeshBvh::closestHit). Where a product
 // overflows (a huge origin times a clamped reciprocal) the fused form could meet inf − inf, so such a ray
 // takes hitsExact8, slab_test.h's expression operation for operation.
-// Offsets are bytes into the node (size_t, so no store of the walk's uint32_t stack entries can alias them).
 struct BoxRay8 {
-    __m256 org[3], invDir[3], orgNear[3], orgFar[3];
-    size_t nearOff[3], farOff[3];
-    bool fused;  // the products are finite: hitsFused8 applies
+    __m256 invDir[3], orgNear[3], orgFar[3];
+    __m128 org, inv;    // (x, y, z, 0) and the reciprocals: hitsExact8 broadcasts them itself (rare)
+    const size_t* off;  // kSlabOffsets' row for this ray: near rows 0-2, far rows 3-5
+    bool fused;         // the products are finite: hitsFused8 applies
 };
 
-BoxRay8 makeBoxRay8(const BoxRay& r) {
+// From the origin (x, y, z, 0) and makeBoxRay's reciprocals (x, y, z, anything finite).
+inline BoxRay8 makeBoxRay8(__m128 o, __m128 inv) {
     BoxRay8 b;
     // o·r, then o·r ± (|o·r|·2^-23 + the least denormal): at least one ulp of o·r outward, so past the exact
     // product, whose rounding moved it at most half an ulp (zero included).
-    const __m128 o = _mm_setr_ps(r.org[0], r.org[1], r.org[2], 0.0f);
-    const __m128 inv = _mm_setr_ps(r.invDir[0], r.invDir[1], r.invDir[2], 0.0f);
+    const __m128 signBit = _mm_set1_ps(-0.0f);
     const __m128 p = _mm_mul_ps(o, inv);
-    const __m128 absP = _mm_andnot_ps(_mm_set1_ps(-0.0f), p);
-    const __m128 nudge = _mm_add_ps(_mm_mul_ps(absP, _mm_set1_ps(0x1p-23f)), _mm_set1_ps(0x1p-149f));
-    alignas(16) float hi[4], lo[4];
-    _mm_store_ps(hi, _mm_add_ps(p, nudge));
-    _mm_store_ps(lo, _mm_sub_ps(p, nudge));
-    const __m128 finite =
-        _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(hi)), _mm_set1_ps(INFINITY)),
-                   _mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_load_ps(lo)), _mm_set1_ps(INFINITY)));
-    b.fused = (_mm_movemask_ps(finite) & 7) == 7;
-    for (int a = 0; a < 3; ++a) {
-        b.org[a] = _mm256_set1_ps(r.org[a]);
-        b.invDir[a] = _mm256_set1_ps(r.invDir[a]);
-        b.orgNear[a] = _mm256_set1_ps(hi[a]);
-        b.orgFar[a] = _mm256_set1_ps(lo[a]);
-        b.nearOff[a] = size_t(r.nearIdx[a]) * sizeof(float[8]);
-        b.farOff[a] = size_t(r.farIdx[a]) * sizeof(float[8]);
-    }
+    const __m128 nudge =
+        _mm_add_ps(_mm_mul_ps(_mm_andnot_ps(signBit, p), _mm_set1_ps(0x1p-23f)), _mm_set1_ps(0x1p-149f));
+    const __m128 hi = _mm_add_ps(p, nudge), lo = _mm_sub_ps(p, nudge);
+    const __m128 biggest = _mm_max_ps(_mm_andnot_ps(signBit, hi), _mm_andnot_ps(signBit, lo));
+    b.fused = (_mm_movemask_ps(_mm_cmplt_ps(biggest, _mm_set1_ps(INFINITY))) & 7) == 7;
+    b.off = kSlabOffsets.off[_mm_movemask_ps(_mm_cmplt_ps(inv, _mm_setzero_ps())) & 7];
+    b.org = o;
+    b.inv = inv;
+    b.invDir[0] = lane8<0>(inv), b.invDir[1] = lane8<1>(inv), b.invDir[2] = lane8<2>(inv);
+    b.orgNear[0] = lane8<0>(hi), b.orgNear[1] = lane8<1>(hi), b.orgNear[2] = lane8<2>(hi);
+    b.orgFar[0] = lane8<0>(lo), b.orgFar[1] = lane8<1>(lo), b.orgFar[2] = lane8<2>(lo);
     return b;
+}
+
+// The watertight test's constants (watertight.h) as the leaf test reads them: broadcast, and the permutation
+// (kx, ky, kz, 3) that moves a corner's components into the ray's order.
+struct LeafRay4 {
+    __m128 ox, oy, oz, Sx, Sy, Sz;
+    __m128i perm;
+};
+
+// Per (kz, d[kz] < 0): the permutation (kx, ky, kz, 3), the shear numerators' (kx, ky, 3, 3) and kz four times.
+// z is the axis of largest |d|; x and y follow it cyclically, swapped where d[kz] < 0 (makeWatertightRay).
+struct AxisOrder {
+    alignas(16) int32_t perm[4];
+    alignas(16) int32_t num[4];
+    alignas(16) int32_t den[4];
+};
+constexpr AxisOrder kAxisOrder[6] = {
+    {{1, 2, 0, 3}, {1, 2, 3, 3}, {0, 0, 0, 0}}, {{2, 1, 0, 3}, {2, 1, 3, 3}, {0, 0, 0, 0}},
+    {{2, 0, 1, 3}, {2, 0, 3, 3}, {1, 1, 1, 1}}, {{0, 2, 1, 3}, {0, 2, 3, 3}, {1, 1, 1, 1}},
+    {{0, 1, 2, 3}, {0, 1, 3, 3}, {2, 2, 2, 2}}, {{1, 0, 2, 3}, {1, 0, 3, 3}, {2, 2, 2, 2}},
+};
+
+inline LeafRay4 makeLeafRay4(__m128 o, __m128 d) {
+    // kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2), from (ax > ay, ax > az, ay > az) in bits 0, 1, 2.
+    static constexpr int8_t kKz[8] = {2, 2, 2, 0, 1, 2, 1, 0};
+    const __m128 ad = _mm_andnot_ps(_mm_set1_ps(-0.0f), d);
+    const int bits = _mm_movemask_ps(
+        _mm_cmpgt_ps(_mm_permute_ps(ad, _MM_SHUFFLE(3, 1, 0, 0)), _mm_permute_ps(ad, _MM_SHUFFLE(3, 2, 2, 1))));
+    const int kz = kKz[bits & 7];
+    const int neg = (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) >> kz) & 1;
+    const AxisOrder& order = kAxisOrder[2 * kz + neg];
+    LeafRay4 r;
+    r.perm = _mm_load_si128(reinterpret_cast<const __m128i*>(order.perm));
+    // (d[kx], d[ky], 1) / d[kz]: Sx, Sy, Sz; and the origin in (kx, ky, kz) order.
+    const __m128 shear = _mm_div_ps(_mm_permutevar_ps(d, _mm_load_si128(reinterpret_cast<const __m128i*>(order.num))),
+                                    _mm_permutevar_ps(d, _mm_load_si128(reinterpret_cast<const __m128i*>(order.den))));
+    const __m128 permuted = _mm_permutevar_ps(o, r.perm);
+    r.Sx = _mm_permute_ps(shear, _MM_SHUFFLE(0, 0, 0, 0));
+    r.Sy = _mm_permute_ps(shear, _MM_SHUFFLE(1, 1, 1, 1));
+    r.Sz = _mm_permute_ps(shear, _MM_SHUFFLE(2, 2, 2, 2));
+    r.ox = _mm_permute_ps(permuted, _MM_SHUFFLE(0, 0, 0, 0));
+    r.oy = _mm_permute_ps(permuted, _MM_SHUFFLE(1, 1, 1, 1));
+    r.oz = _mm_permute_ps(permuted, _MM_SHUFFLE(2, 2, 2, 2));
+    return r;
+}
+
+// The scalar constants back from the vector ones: the fallback leaf loop and the tests read them.
+WatertightRay scalarWatertightRay(const LeafRay4& r, const Ray& ray) {
+    WatertightRay w;
+    w.org[0] = ray.origin.x;
+    w.org[1] = ray.origin.y;
+    w.org[2] = ray.origin.z;
+    w.kx = _mm_cvtsi128_si32(r.perm);
+    w.ky = _mm_extract_epi32(r.perm, 1);
+    w.kz = _mm_extract_epi32(r.perm, 2);
+    w.Sx = _mm_cvtss_f32(r.Sx);
+    w.Sy = _mm_cvtss_f32(r.Sy);
+    w.Sz = _mm_cvtss_f32(r.Sz);
+    w.ox = _mm_cvtss_f32(r.ox);
+    w.oy = _mm_cvtss_f32(r.oy);
+    w.oz = _mm_cvtss_f32(r.oz);
+    return w;
 }
 
 inline __m256 boundsRow(const float (*bounds)[8], size_t off) {
@@ -133,19 +177,20 @@ inline int slabMask8(__m256 tx0, __m256 ty0, __m256 tz0, __m256 tx1, __m256 ty1,
 }
 
 inline int hitsFused8(const BoxRay8& r, const float (*b)[8], float tMax, float* tNear) {
-    return slabMask8(_mm256_fmsub_ps(boundsRow(b, r.nearOff[0]), r.invDir[0], r.orgNear[0]),
-                     _mm256_fmsub_ps(boundsRow(b, r.nearOff[1]), r.invDir[1], r.orgNear[1]),
-                     _mm256_fmsub_ps(boundsRow(b, r.nearOff[2]), r.invDir[2], r.orgNear[2]),
-                     _mm256_fmsub_ps(boundsRow(b, r.farOff[0]), r.invDir[0], r.orgFar[0]),
-                     _mm256_fmsub_ps(boundsRow(b, r.farOff[1]), r.invDir[1], r.orgFar[1]),
-                     _mm256_fmsub_ps(boundsRow(b, r.farOff[2]), r.invDir[2], r.orgFar[2]), tMax, tNear);
+    const size_t* off = r.off;
+    return slabMask8(_mm256_fmsub_ps(boundsRow(b, off[0]), r.invDir[0], r.orgNear[0]),
+                     _mm256_fmsub_ps(boundsRow(b, off[1]), r.invDir[1], r.orgNear[1]),
+                     _mm256_fmsub_ps(boundsRow(b, off[2]), r.invDir[2], r.orgNear[2]),
+                     _mm256_fmsub_ps(boundsRow(b, off[3]), r.invDir[0], r.orgFar[0]),
+                     _mm256_fmsub_ps(boundsRow(b, off[4]), r.invDir[1], r.orgFar[1]),
+                     _mm256_fmsub_ps(boundsRow(b, off[5]), r.invDir[2], r.orgFar[2]), tMax, tNear);
 }
 
 // slabHits4's expression on eight lanes, operation for operation.
 inline int hitsExact8(const BoxRay8& r, const float (*b)[8], float tMax, float* tNear) {
-    auto t = [&](size_t off, int a) { return _mm256_mul_ps(_mm256_sub_ps(boundsRow(b, off), r.org[a]), r.invDir[a]); };
-    return slabMask8(t(r.nearOff[0], 0), t(r.nearOff[1], 1), t(r.nearOff[2], 2), t(r.farOff[0], 0), t(r.farOff[1], 1),
-                     t(r.farOff[2], 2), tMax, tNear);
+    const __m256 org[3] = {lane8<0>(r.org), lane8<1>(r.org), lane8<2>(r.org)};
+    auto t = [&](int row, int a) { return _mm256_mul_ps(_mm256_sub_ps(boundsRow(b, r.off[row]), org[a]), r.invDir[a]); };
+    return slabMask8(t(0, 0), t(1, 1), t(2, 2), t(3, 0), t(4, 1), t(5, 2), tMax, tNear);
 }
 
 // The watertight test (watertight.h) on up to four triangles of one leaf at once. The leaf's positions are
@@ -155,23 +200,6 @@ inline int hitsExact8(const BoxRay8& r, const float (*b)[8], float tMax, float* 
 // with -ffp-contract=off), so a lane's t and barycentrics are the scalar test's bits. A leaf where any
 // triangle's edge function rounds to exactly zero (the scalar test's double recomputation) is handed whole to
 // the scalar loop.
-struct LeafRay4 {
-    __m128 ox, oy, oz, Sx, Sy, Sz;
-    __m128i perm;  // (kx, ky, kz, 3): moves a corner's permuted components into lanes 0, 1, 2
-};
-
-LeafRay4 makeLeafRay4(const WatertightRay& w) {
-    LeafRay4 r;
-    r.ox = _mm_set1_ps(w.ox);
-    r.oy = _mm_set1_ps(w.oy);
-    r.oz = _mm_set1_ps(w.oz);
-    r.Sx = _mm_set1_ps(w.Sx);
-    r.Sy = _mm_set1_ps(w.Sy);
-    r.Sz = _mm_set1_ps(w.Sz);
-    r.perm = _mm_setr_epi32(w.kx, w.ky, w.kz, 3);
-    return r;
-}
-
 struct Hits4 {
     __m128 t, b0, b1, b2;
 };
@@ -228,39 +256,47 @@ inline int triangles4(const LeafRay4& r, const float* v, uint32_t count, float t
     return _mm_movemask_ps(ok);
 }
 
-// The scalar loops for a leaf with an edge function of exactly 0: rare, so kept out of the walk's code.
-__attribute__((noinline, cold)) float closestScalar(ClosestTriangleLeaf<Avx2Tag>& leaf, uint32_t first,
-                                                    uint32_t count) {
-    return leaf(first, count);
+// The scalar loops for a leaf with an edge function of exactly 0: rare, so kept out of the walk's code, with the
+// scalar ray constants they need made only here.
+__attribute__((noinline, cold)) void closestScalar(const LeafRay4& r, const Ray& ray, TriangleLeafData data,
+                                                   float tMax, TriangleLeafHit& best, uint32_t first, uint32_t count) {
+    ClosestTriangleLeaf<Avx2Tag> leaf{data, scalarWatertightRay(r, ray), tMax, best};
+    leaf(first, count);
+    best = leaf.best;
 }
-__attribute__((noinline, cold)) bool anyScalar(const AnyTriangleLeaf<Avx2Tag>& leaf, uint32_t first, uint32_t count) {
-    return leaf(first, count);
+__attribute__((noinline, cold)) bool anyScalar(const LeafRay4& r, const Ray& ray, TriangleLeafData data, float tMax,
+                                               uint32_t first, uint32_t count) {
+    return AnyTriangleLeaf<Avx2Tag>{data, scalarWatertightRay(r, ray), tMax}(first, count);
 }
 
 // ClosestTriangleLeaf's answer, four triangles at a time: of the lanes hit, the nearest (lowest scene-order index
 // on a tie) is then weighed against the best so far by the scalar leaf's own rule.
 struct ClosestTriangleLeaf4 {
     LeafRay4 r;
-    ClosestTriangleLeaf<Avx2Tag> scalar;  // the best so far, and the fallback
+    const Ray& ray;
+    TriangleLeafData data;
+    float tMax;            // hits must be nearer than this
+    TriangleLeafHit best;  // the best so far
 
     float operator()(uint32_t first, uint32_t count) {
-        TriangleLeafHit& best = scalar.best;
         Hits4 h;
-        int m = triangles4(r, scalar.data.positions + size_t(first) * 9, count, best.t, h);
-        if (m < 0) return closestScalar(scalar, first, count);
+        int m = triangles4(r, data.positions + size_t(first) * 9, count, best.t, h);
+        if (m < 0) {
+            closestScalar(r, ray, data, tMax, best, first, count);
+            return best.t;
+        }
         if (m == 0) return best.t;
         alignas(16) float t[4], b0[4], b1[4], b2[4];
         _mm_store_ps(t, h.t);
         int k = __builtin_ctz(unsigned(m));
         for (m &= m - 1; m; m &= m - 1) {
             const int j = __builtin_ctz(unsigned(m));
-            if (t[j] < t[k] || (t[j] == t[k] && scalar.data.source[first + j] < scalar.data.source[first + k])) k = j;
+            if (t[j] < t[k] || (t[j] == t[k] && data.source[first + j] < data.source[first + k])) k = j;
         }
         const uint32_t s = first + uint32_t(k);
-        const bool better =
-            best.slot == UINT32_MAX
-                ? t[k] < scalar.tMax
-                : (t[k] < best.t || (t[k] == best.t && scalar.data.source[s] < scalar.data.source[best.slot]));
+        const bool better = best.slot == UINT32_MAX
+                                ? t[k] < tMax
+                                : (t[k] < best.t || (t[k] == best.t && data.source[s] < data.source[best.slot]));
         if (better) {
             _mm_store_ps(b0, h.b0);
             _mm_store_ps(b1, h.b1);
@@ -273,35 +309,39 @@ struct ClosestTriangleLeaf4 {
 
 struct AnyTriangleLeaf4 {
     LeafRay4 r;
-    AnyTriangleLeaf<Avx2Tag> scalar;
+    const Ray& ray;
+    TriangleLeafData data;
+    float tMax;
 
     bool operator()(uint32_t first, uint32_t count) const {
         Hits4 h;
-        const int m = triangles4(r, scalar.data.positions + size_t(first) * 9, count, scalar.tMax, h);
-        if (m < 0) return anyScalar(scalar, first, count);
-        return (m & _mm_movemask_ps(_mm_cmplt_ps(h.t, _mm_set1_ps(scalar.tMax)))) != 0;
+        const int m = triangles4(r, data.positions + size_t(first) * 9, count, tMax, h);
+        if (m < 0) return anyScalar(r, ray, data, tMax, first, count);
+        return (m & _mm_movemask_ps(_mm_cmplt_ps(h.t, _mm_set1_ps(tMax)))) != 0;
     }
 };
 
 }  // namespace
 
 void closestTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data, TriangleLeafHit& best) {
-    const RaySetup rs = setUpRay(ray);
-    const BoxRay8 r = makeBoxRay8(rs.box);
-    ClosestTriangleLeaf4 leaf{makeLeafRay4(rs.wt), ClosestTriangleLeaf<Avx2Tag>{data, rs.wt, best.t, best}};
+    __m128 o, d;
+    loadRay(ray, o, d);
+    const BoxRay8 r = makeBoxRay8(o, reciprocals(d));
+    ClosestTriangleLeaf4 leaf{makeLeafRay4(o, d), ray, data, best.t, best};
     if (r.fused)
         traverseClosestWith(
             nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); }, leaf);
     else
         traverseClosestWith(
             nodes, best.t, [&r](const BvhNode& n, float t, float* tn) { return hitsExact8(r, n.bounds, t, tn); }, leaf);
-    best = leaf.scalar.best;
+    best = leaf.best;
 }
 
 bool anyTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data, float tMax) {
-    const RaySetup rs = setUpRay(ray);
-    const BoxRay8 r = makeBoxRay8(rs.box);
-    const AnyTriangleLeaf4 leaf{makeLeafRay4(rs.wt), AnyTriangleLeaf<Avx2Tag>{data, rs.wt, tMax}};
+    __m128 o, d;
+    loadRay(ray, o, d);
+    const BoxRay8 r = makeBoxRay8(o, reciprocals(d));
+    const AnyTriangleLeaf4 leaf{makeLeafRay4(o, d), ray, data, tMax};
     if (r.fused)
         return traverseAnyWith(
             nodes, tMax, [&r](const BvhNode& n, float t, float* tn) { return hitsFused8(r, n.bounds, t, tn); }, leaf);
@@ -310,14 +350,25 @@ bool anyTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data
 }
 
 void rayConstantsAvx2(const Ray& ray, BoxRay& box, WatertightRay& wt) {
-    const RaySetup rs = setUpRay(ray);
-    box = rs.box;
-    wt = rs.wt;
+    __m128 o, d;
+    loadRay(ray, o, d);
+    const BoxRay8 r = makeBoxRay8(o, reciprocals(d));
+    alignas(16) float org[4], inv[4];
+    _mm_store_ps(org, r.org);
+    _mm_store_ps(inv, r.inv);
+    for (int a = 0; a < 3; ++a) {
+        box.org[a] = org[a];
+        box.invDir[a] = inv[a];
+        box.nearIdx[a] = int(r.off[a] / sizeof(float[8]));
+        box.farIdx[a] = int(r.off[3 + a] / sizeof(float[8]));
+    }
+    wt = scalarWatertightRay(makeLeafRay4(o, d), ray);
 }
 
 int slabHits8Avx2(const BoxRay& ray, const float (*bounds)[8], float tMax, float* tNear) {
     alignas(32) float t[8];
-    const BoxRay8 r = makeBoxRay8(ray);
+    const BoxRay8 r = makeBoxRay8(_mm_setr_ps(ray.org[0], ray.org[1], ray.org[2], 0.0f),
+                                  _mm_setr_ps(ray.invDir[0], ray.invDir[1], ray.invDir[2], 1.0f));
     const int m = r.fused ? hitsFused8(r, bounds, tMax, t) : hitsExact8(r, bounds, tMax, t);
     for (int k = 0; k < 8; ++k) tNear[k] = t[k];
     return m;
