@@ -101,11 +101,11 @@ inline BoxRay8 makeBoxRay8(__m128 o, __m128 inv) {
     return b;
 }
 
-// The watertight test's constants (watertight.h) as the leaf test reads them: broadcast, and the permutation
-// (kx, ky, kz, 3) that moves a corner's components into the ray's order.
+// The watertight test's constants (watertight.h) as the leaf test reads them: broadcast, and the axes
+// (kx, ky, kz) whose rows the leaf test loads for the ray's x, y and z.
 struct LeafRay4 {
     __m128 ox, oy, oz, Sx, Sy, Sz;
-    __m128i perm;
+    const int32_t* axes;  // kAxisOrder's (kx, ky, kz, 3) for this ray
 };
 
 // Per (kz, d[kz] < 0): the permutation (kx, ky, kz, 3), the shear numerators' (kx, ky, 3, 3) and kz four times.
@@ -131,11 +131,12 @@ inline LeafRay4 makeLeafRay4(__m128 o, __m128 d) {
     const int neg = (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) >> kz) & 1;
     const AxisOrder& order = kAxisOrder[2 * kz + neg];
     LeafRay4 r;
-    r.perm = _mm_load_si128(reinterpret_cast<const __m128i*>(order.perm));
+    r.axes = order.perm;
+    const __m128i perm = _mm_load_si128(reinterpret_cast<const __m128i*>(order.perm));
     // (d[kx], d[ky], 1) / d[kz]: Sx, Sy, Sz; and the origin in (kx, ky, kz) order.
     const __m128 shear = _mm_div_ps(_mm_permutevar_ps(d, _mm_load_si128(reinterpret_cast<const __m128i*>(order.num))),
                                     _mm_permutevar_ps(d, _mm_load_si128(reinterpret_cast<const __m128i*>(order.den))));
-    const __m128 permuted = _mm_permutevar_ps(o, r.perm);
+    const __m128 permuted = _mm_permutevar_ps(o, perm);
     r.Sx = _mm_permute_ps(shear, _MM_SHUFFLE(0, 0, 0, 0));
     r.Sy = _mm_permute_ps(shear, _MM_SHUFFLE(1, 1, 1, 1));
     r.Sz = _mm_permute_ps(shear, _MM_SHUFFLE(2, 2, 2, 2));
@@ -151,9 +152,9 @@ WatertightRay scalarWatertightRay(const LeafRay4& r, const Ray& ray) {
     w.org[0] = ray.origin.x;
     w.org[1] = ray.origin.y;
     w.org[2] = ray.origin.z;
-    w.kx = _mm_cvtsi128_si32(r.perm);
-    w.ky = _mm_extract_epi32(r.perm, 1);
-    w.kz = _mm_extract_epi32(r.perm, 2);
+    w.kx = r.axes[0];
+    w.ky = r.axes[1];
+    w.kz = r.axes[2];
     w.Sx = _mm_cvtss_f32(r.Sx);
     w.Sy = _mm_cvtss_f32(r.Sy);
     w.Sz = _mm_cvtss_f32(r.Sz);
@@ -193,9 +194,10 @@ inline int hitsExact8(const BoxRay8& r, const float (*b)[8], float tMax, float* 
     return slabMask8(t(0, 0), t(1, 1), t(2, 2), t(3, 0), t(4, 1), t(5, 2), tMax, tNear);
 }
 
-// The watertight test (watertight.h) on up to four triangles of one leaf at once. The leaf's positions are
-// contiguous (9 floats per slot); masked loads read each corner (never past the leaf), a permute puts its
-// components in the ray's order (kx, ky, kz) and a transpose makes a lane per triangle. Every lane does the
+// The watertight test (watertight.h) on up to four triangles of one leaf at once. The leaf's positions are rows
+// of a float per triangle (leaf_positions.h): one load per corner and axis, the axes in the ray's order
+// (kx, ky, kz), makes a lane per triangle; the lanes past the count read the following floats and are masked
+// off by `live` wherever they could matter. Every lane does the
 // scalar test's operations in its order (sub, mul, add and div are exactly rounded, and this file is built
 // with -ffp-contract=off), so a lane's t and barycentrics are the scalar test's bits. A leaf where any
 // triangle's edge function rounds to exactly zero (the scalar test's double recomputation) is handed whole to
@@ -209,21 +211,14 @@ struct Hits4 {
 inline int triangles4(const LeafRay4& r, const float* v, uint32_t count, float tMax, Hits4& h) {
     const __m128 live = _mm_castsi128_ps(_mm_cmpgt_epi32(_mm_set1_epi32(int(count)), _mm_setr_epi32(0, 1, 2, 3)));
     const __m128 zero = _mm_setzero_ps();
-    // Triangle i's corner c as (x, y, z) in the ray's permuted order; lanes past the count repeat the last one.
-    const __m128i three = _mm_setr_epi32(-1, -1, -1, 0);
-    const float* p[4];
-    for (uint32_t i = 0; i < 4; ++i) p[i] = v + 9 * (i < count ? i : count - 1);
+    // Corner c's row for the ray's axis x, y or z: v + (3c + k·)·count.
+    const size_t n = count, ox = size_t(r.axes[0]) * n, oy = size_t(r.axes[1]) * n, oz = size_t(r.axes[2]) * n;
     __m128 k[3][3];  // [corner][x, y, z]
     for (int c = 0; c < 3; ++c) {
-        __m128 r0 = _mm_permutevar_ps(_mm_maskload_ps(p[0] + 3 * c, three), r.perm);
-        __m128 r1 = _mm_permutevar_ps(_mm_maskload_ps(p[1] + 3 * c, three), r.perm);
-        __m128 r2 = _mm_permutevar_ps(_mm_maskload_ps(p[2] + 3 * c, three), r.perm);
-        __m128 r3 = _mm_permutevar_ps(_mm_maskload_ps(p[3] + 3 * c, three), r.perm);
-        const __m128 t0 = _mm_unpacklo_ps(r0, r1), t1 = _mm_unpacklo_ps(r2, r3);
-        const __m128 t2 = _mm_unpackhi_ps(r0, r1), t3 = _mm_unpackhi_ps(r2, r3);
-        k[c][0] = _mm_movelh_ps(t0, t1);
-        k[c][1] = _mm_movehl_ps(t1, t0);
-        k[c][2] = _mm_movelh_ps(t2, t3);
+        const float* row = v + 3 * size_t(c) * n;
+        k[c][0] = _mm_loadu_ps(row + ox);
+        k[c][1] = _mm_loadu_ps(row + oy);
+        k[c][2] = _mm_loadu_ps(row + oz);
     }
     const __m128 Akx = _mm_sub_ps(k[0][0], r.ox), Aky = _mm_sub_ps(k[0][1], r.oy), Akz = _mm_sub_ps(k[0][2], r.oz);
     const __m128 Bkx = _mm_sub_ps(k[1][0], r.ox), Bky = _mm_sub_ps(k[1][1], r.oy), Bkz = _mm_sub_ps(k[1][2], r.oz);

@@ -9,6 +9,7 @@
 #include "shading/texture_sample.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -103,7 +104,7 @@ glm::vec4 WhittedIntegrator::mapTexel(const Ray& ray, const Hit& hit, int depth,
     // and (u, v) derivatives through the triangle's edges; texLod turns them into a level of detail.
     float lod = -1.0f;
     if (depth == 0 && footprint_.dDdx != glm::vec3(0.0f)) {
-        const float* v = mb.vertices(hit.index);
+        const std::array<float, 9> v = mb.vertices(hit.index);
         const glm::vec3 p0(v[0], v[1], v[2]), e1 = glm::vec3(v[3], v[4], v[5]) - p0,
                                               e2 = glm::vec3(v[6], v[7], v[8]) - p0;
         const glm::vec3 n = glm::cross(e1, e2);

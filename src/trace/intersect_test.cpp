@@ -419,7 +419,7 @@ TEST(MeshBvhRobustness, ExactlyCollinearTrianglesAreNeverHit) {
             const std::optional<MeshHit> h = bvh.closestHit(r, INFINITY);
             if (!h) continue;
             ++hits;
-            const float* v = bvh.vertices(h->slot);
+            const std::array<float, 9> v = bvh.vertices(h->slot);
             const glm::vec3 ha(v[0], v[1], v[2]), hc(v[6], v[7], v[8]), P = r.origin + h->t * r.dir;
             const float s = glm::clamp(glm::dot(P - ha, hc - ha) / glm::dot(hc - ha, hc - ha), 0.0f, 1.0f);
             worst = std::max(worst, glm::length(P - (ha + s * (hc - ha))));

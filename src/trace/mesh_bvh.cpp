@@ -5,6 +5,7 @@
 
 #include "trace/bvh_traverse.h"
 #include "trace/bvh_traverse_avx2.h"
+#include "trace/leaf_positions.h"
 #include "trace/triangle_leaf.h"
 #include "trace/watertight.h"
 #include "util/check.h"
@@ -105,19 +106,33 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
         }
     });
     std::vector<BvhPrim>().swap(prims);
-    positions_.resize(9 * size_t(n));
+    // Each slot's place in its leaf, from the leaf references, then the positions by leaf (leaf_positions.h).
+    lane_.resize(n);
+    for (const BvhNode& node : bvh_.nodes)
+        for (uint32_t ref : node.child)
+            if (isLeafRef(ref))
+                for (uint32_t j = 0; j < leafCount(ref); ++j)
+                    lane_[leafFirst(ref) + j] = uint8_t(j << 4 | leafCount(ref));
+    positions_.assign(9 * size_t(n) + kLeafRowPadding, 0.0f);
     forRanges(n, threads, [&](int, uint32_t begin, uint32_t end) {
         for (uint32_t slot = begin; slot < end; ++slot) {
             const MeshGeometry& g = *geometry_[part_[slot]];
             const size_t tri = source_[slot] - partFirst_[part_[slot]];
-            for (int k = 0; k < 3; ++k) {
-                const glm::vec3& v = g.positions[g.indices[3 * tri + size_t(k)]];
-                positions_[9 * size_t(slot) + size_t(3 * k)] = v.x;
-                positions_[9 * size_t(slot) + size_t(3 * k + 1)] = v.y;
-                positions_[9 * size_t(slot) + size_t(3 * k + 2)] = v.z;
+            const uint32_t j = lane_[slot] >> 4, count = lane_[slot] & 15u;
+            float* rows = &positions_[9 * size_t(slot - j)];
+            for (uint32_t k = 0; k < 3; ++k) {
+                const glm::vec3& v = g.positions[g.indices[3 * tri + k]];
+                for (uint32_t a = 0; a < 3; ++a) rows[size_t(3 * k + a) * count + j] = v[int(a)];
             }
         }
     });
+}
+
+std::array<float, 9> MeshBvh::vertices(uint32_t slot) const {
+    const uint32_t j = lane_[slot] >> 4;
+    std::array<float, 9> v;
+    gatherLeafTriangle(&positions_[9 * size_t(slot - j)], lane_[slot] & 15u, j, v.data());
+    return v;
 }
 
 int MeshBvh::gatherThreads(const BvhBuildOptions& options, uint32_t triangles) {
@@ -176,7 +191,7 @@ glm::vec3 MeshBvh::interpolatedNormal(const MeshHit& hit) const {
 }
 
 glm::vec3 MeshBvh::geometricNormal(uint32_t slot) const {
-    const float* v = vertices(slot);
+    const std::array<float, 9> v = vertices(slot);
     const glm::vec3 v0(v[0], v[1], v[2]), v1(v[3], v[4], v[5]), v2(v[6], v[7], v[8]);
     return glm::cross(v1 - v0, v2 - v0);
 }

@@ -1,6 +1,7 @@
 // MeshBvh: every triangle of a scene's meshes in one 8-wide SAH BVH (bvh.h), the vertex positions stored in
-// leaf order next to which part and triangle each is (44 bytes per triangle; vertex normals are read from the
-// scene's shared geometry, which it keeps alive). Geometry only and immutable once built, so TraceScene
+// leaf order next to which part and triangle each is (45 bytes per triangle; vertex normals are read from the
+// scene's shared geometry, which it keeps alive). A leaf's positions are 9 rows, one per corner and axis, of one
+// float per triangle (leaf_positions.h), so the AVX2 leaf test loads each row as a register without shuffling. Geometry only and immutable once built, so TraceScene
 // versions that differ only in materials, lights or camera share one (see trace_scene.h).
 #pragma once
 
@@ -9,6 +10,7 @@
 #include "trace/bvh_isa.h"
 #include "trace/ray.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <memory>
@@ -48,7 +50,7 @@ public:
 
     size_t triangleCount() const { return part_.size(); }
     // Vertex positions of a slot as 9 floats (v0, v1, v2), world units.
-    const float* vertices(uint32_t slot) const { return &positions_[size_t(slot) * 9]; }
+    std::array<float, 9> vertices(uint32_t slot) const;
     // b0·n0 + b1·n1 + b2·n2 from the glTF vertex normals, not renormalised (shadeLight does that).
     glm::vec3 interpolatedNormal(const MeshHit& hit) const;
     // cross(v1 − v0, v2 − v0): points out of the counter-clockwise (front) side; not unit length.
@@ -81,7 +83,8 @@ private:
 
     BvhIsa isa_ = defaultBvhIsa();  // read once, not per ray
     Bvh bvh_;
-    std::vector<float> positions_;                               // 9 per slot
+    std::vector<float> positions_;                               // 9 per slot, by leaf (leaf_positions.h), + padding
+    std::vector<uint8_t> lane_;                                  // per slot: its index in its leaf << 4 | the leaf's count
     std::vector<uint32_t> part_;                                 // per slot
     std::vector<uint32_t> source_;                               // per slot
     std::vector<uint32_t> partMesh_;                             // per flattened part

@@ -5,13 +5,15 @@
 // four at a time and falls back to these loops only for a leaf with an edge function of exactly 0.
 #pragma once
 
+#include "trace/leaf_positions.h"
 #include "trace/watertight.h"
 
 #include <cstdint>
 
 namespace shadelab::trace {
 
-// What the leaf tests read of a MeshBvh: 9 floats per slot, and each slot's scene-order triangle index.
+// What the leaf tests read of a MeshBvh: 9 floats per slot, by leaf (leaf_positions.h), and each slot's
+// scene-order triangle index.
 struct TriangleLeafData {
     const float* positions;
     const uint32_t* source;
@@ -32,8 +34,11 @@ struct ClosestTriangleLeaf {
     TriangleLeafHit best;  // starts as {tMax, UINT32_MAX, ...}
 
     float operator()(uint32_t first, uint32_t count) {
-        for (uint32_t s = first, end = first + count; s < end; ++s) {
-            const float* v = data.positions + size_t(s) * 9;
+        const float* rows = data.positions + size_t(first) * 9;
+        for (uint32_t j = 0; j < count; ++j) {
+            const uint32_t s = first + j;
+            float v[9];
+            gatherLeafTriangle(rows, count, j, v);
             TriangleHit h;
             if (!intersectTriangleT<Tag>(wr, v, v + 3, v + 6, best.t, h)) continue;
             // Strictly nearer wins; an exact tie goes to the lower scene-order index.
@@ -53,8 +58,10 @@ struct AnyTriangleLeaf {
     float tMax;  // hits must be nearer than this
 
     bool operator()(uint32_t first, uint32_t count) const {
-        for (uint32_t s = first, end = first + count; s < end; ++s) {
-            const float* v = data.positions + size_t(s) * 9;
+        const float* rows = data.positions + size_t(first) * 9;
+        for (uint32_t j = 0; j < count; ++j) {
+            float v[9];
+            gatherLeafTriangle(rows, count, j, v);
             TriangleHit h;
             if (intersectTriangleT<Tag>(wr, v, v + 3, v + 6, tMax, h) && h.t < tMax) return true;
         }
