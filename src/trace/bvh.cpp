@@ -30,7 +30,10 @@ constexpr uint32_t kMinQueuedBuild = 4096;
 // Ranges this large bin on several threads.
 constexpr uint32_t kMinParallelBinning = 1u << 16;
 
+// A worker thread's subtree: ordinary pages (its reserve is mostly untouched); the finished tree, Bvh::nodes, asks
+// for huge pages (aligned_allocators.h).
 using NodeArray = std::vector<BvhNode, CacheLineAllocator<BvhNode>>;
+using FinalNodeArray = decltype(Bvh::nodes);
 
 F4 primLo(const BvhPrim& p) { return keepLanes3(loadu4(p.lo)); }
 F4 primHi(const BvhPrim& p) { return keepLanes3(loadu4(p.hi)); }
@@ -325,7 +328,8 @@ private:
 
     // Makes the node for an evaluated, non-leaf range (or, for the root, any range) and its subtree in
     // `nodes`; returns its index. `top`: subtrees below queueBelow_ primitives go to the queue instead.
-    uint32_t buildNode(const Range& r, NodeArray& nodes, bool top) {
+    template <class Nodes>
+    uint32_t buildNode(const Range& r, Nodes& nodes, bool top) {
         const uint32_t index = uint32_t(nodes.size());
         nodes.emplace_back();
         BvhNode empty;
@@ -380,7 +384,7 @@ private:
     }
 
     // Builds the queued subtrees on the worker threads, biggest first, and appends them in queue order.
-    void runQueue(NodeArray& top) {
+    void runQueue(FinalNodeArray& top) {
         if (queue_.empty()) return;
         std::vector<size_t> bySize(queue_.size());
         std::iota(bySize.begin(), bySize.end(), size_t(0));

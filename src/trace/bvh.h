@@ -31,6 +31,7 @@
 #pragma once
 
 #include "scene/bounds.h"
+#include "trace/aligned_allocators.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -64,25 +65,6 @@ struct alignas(64) BvhNode {
 };
 static_assert(sizeof(BvhNode) == 256, "BvhNode must stay four cache lines");
 
-// Minimal 64-byte aligned allocator for the node array.
-template <class T>
-struct CacheLineAllocator {
-    using value_type = T;
-    CacheLineAllocator() = default;
-    template <class U>
-    CacheLineAllocator(const CacheLineAllocator<U>&) {}
-    T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64))); }
-    void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
-    template <class U>
-    bool operator==(const CacheLineAllocator<U>&) const {
-        return true;
-    }
-    template <class U>
-    bool operator!=(const CacheLineAllocator<U>&) const {
-        return false;
-    }
-};
-
 struct BvhBuildOptions {
     int bins = 16;               // SAH candidate planes per axis are bins - 1 (at most 32 bins)
     int maxLeafSize = 4;         // leaves never hold more primitives than this (at most kMaxLeafCount)
@@ -105,7 +87,7 @@ struct BvhPrim {
 static_assert(sizeof(BvhPrim) == 32, "BvhPrim must stay 32 bytes");
 
 struct Bvh {
-    std::vector<BvhNode, CacheLineAllocator<BvhNode>> nodes;  // [0] is the root; empty when no primitives
+    std::vector<BvhNode, HugePageAllocator<BvhNode>> nodes;  // [0] is the root; empty when no primitives
     std::vector<uint32_t> order;  // buildBvh(boxes) only: order[k] is the input primitive at leaf slot k
     Bounds bounds;                // of every primitive
     uint32_t primitives = 0;

@@ -83,7 +83,7 @@ private:
 
     BvhIsa isa_ = defaultBvhIsa();  // read once, not per ray
     Bvh bvh_;
-    std::vector<float> positions_;                               // 9 per slot, by leaf (leaf_positions.h), + padding
+    std::vector<float, HugePageAllocator<float>> positions_;     // 9 per slot, by leaf (leaf_positions.h), + padding
     std::vector<uint8_t> lane_;                                  // per slot: its index in its leaf << 4 | the leaf's count
     std::vector<uint32_t> part_;                                 // per slot
     std::vector<uint32_t> source_;                               // per slot
