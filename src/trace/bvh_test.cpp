@@ -268,6 +268,26 @@ TEST(BvhSoup, RandomSoupsMatchBruteForce) {
     }
 }
 
+TEST(BvhSoup, LargerLeavesAskedForAreCappedAtWhatTheLeafTestTakes) {
+    // The AVX2 leaf test takes up to kMaxMeshLeafSize triangles in one step, so MeshBvh caps the option; asked for
+    // leaves of 12, the tree must still hold at most 4 per leaf and find every hit brute force finds.
+    const Scene sc = soupScene(3000, 77u);
+    const std::vector<SceneTri> tris = sceneTriangles(sc);
+    BvhBuildOptions o;
+    o.maxLeafSize = 12;
+    o.traversalCost = 4.0f;  // makes large leaves cheap, so an uncapped build would use them
+    const MeshBvh bvh(sc, o);
+    EXPECT_TRUE(meshBvhIsValid(bvh, tris, kMaxMeshLeafSize));
+    const std::vector<Ray> rays = randomRays(tris, bvh.bounds(), 3000, 78u);
+    const Disagreement d = compare(bvh, rays, bruteForceAll(tris, rays));
+    EXPECT_GT(d.hits, d.rays / 10) << "too few hits to test anything";
+    EXPECT_EQ(d.closest, 0u) << d.first;
+    EXPECT_EQ(d.any, 0u) << d.firstAny;
+    // Negative control: the same options on the same boxes without the cap make leaves of more than 4.
+    std::vector<Bounds> boxes = boxesOf(tris);
+    EXPECT_FALSE(bvhIsValid(buildBvh(boxes, o), boxes, kMaxMeshLeafSize)) << "the options would not make large leaves";
+}
+
 TEST(BvhSoup, ExactTiesGoToTheLowerSourceTriangle) {
     // A strip of quads in z = 0 (two triangles each, sharing the diagonal and the edges between quads), the
     // whole strip repeated three times (exact copies in later parts), and rays straight down through the

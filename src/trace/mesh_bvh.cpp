@@ -91,7 +91,9 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
         bounds_.lo -= glm::vec3(pad);
         bounds_.hi += glm::vec3(pad);
     }
-    bvh_ = buildBvh(prims, options);
+    BvhBuildOptions leafOptions = options;
+    leafOptions.maxLeafSize = std::min(options.maxLeafSize, int(kMaxMeshLeafSize));
+    bvh_ = buildBvh(prims, leafOptions);
 
     // Store what the traversal and shading read in leaf order, so a leaf's triangles are contiguous in memory;
     // normals stay in the scene's geometry (interpolatedNormal reads them through the part). The ids first,

@@ -1,8 +1,9 @@
 // MeshBvh: every triangle of a scene's meshes in one 8-wide SAH BVH (bvh.h), the vertex positions stored in
 // leaf order next to which part and triangle each is (45 bytes per triangle; vertex normals are read from the
 // scene's shared geometry, which it keeps alive). A leaf's positions are 9 rows, one per corner and axis, of one
-// float per triangle (leaf_positions.h), so the AVX2 leaf test loads each row as a register without shuffling. Geometry only and immutable once built, so TraceScene
-// versions that differ only in materials, lights or camera share one (see trace_scene.h).
+// float per triangle (leaf_positions.h), so the AVX2 leaf test loads each row as a register without shuffling. Geometry
+// only and immutable once built, so TraceScene versions that differ only in materials, lights or camera share one (see
+// trace_scene.h).
 #pragma once
 
 #include "scene/scene.h"
@@ -30,9 +31,13 @@ struct MeshHit {
 // otherwise report hits at rounding-noise distances for rays in its plane.
 bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 
+// A leaf holds at most this many triangles: the AVX2 leaf test takes them in one 4-wide step.
+inline constexpr int kMaxMeshLeafSize = 4;
+
 class MeshBvh {
 public:
     // Triangles with a non-finite vertex are left out (they cannot be hit); indices must be in range.
+    // options.maxLeafSize is capped at kMaxMeshLeafSize.
     explicit MeshBvh(const Scene& scene, const BvhBuildOptions& options = {});
 
     // The nearest hit with 0 < t < tMax. Exactly equal distances go to the lower sourceTriangle(), so
@@ -83,12 +88,12 @@ private:
 
     BvhIsa isa_ = defaultBvhIsa();  // read once, not per ray
     Bvh bvh_;
-    std::vector<float, HugePageAllocator<float>> positions_;     // 9 per slot, by leaf (leaf_positions.h), + padding
-    std::vector<uint8_t> lane_;                                  // per slot: its index in its leaf << 4 | the leaf's count
-    std::vector<uint32_t> part_;                                 // per slot
-    std::vector<uint32_t> source_;                               // per slot
-    std::vector<uint32_t> partMesh_;                             // per flattened part
-    std::vector<uint32_t> partFirst_;                            // per flattened part: its first source index
+    std::vector<float, HugePageAllocator<float>> positions_;  // 9 per slot, by leaf (leaf_positions.h), + padding
+    std::vector<uint8_t> lane_;                               // per slot: its index in its leaf << 4 | the leaf's count
+    std::vector<uint32_t> part_;                              // per slot
+    std::vector<uint32_t> source_;                            // per slot
+    std::vector<uint32_t> partMesh_;                          // per flattened part
+    std::vector<uint32_t> partFirst_;                         // per flattened part: its first source index
     std::vector<std::shared_ptr<const MeshGeometry>> geometry_;  // per flattened part, for matches()
     Bounds bounds_;
 };
