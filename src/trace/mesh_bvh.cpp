@@ -216,10 +216,6 @@ std::optional<MeshHit> MeshBvh::closestHit(const Ray& ray, float tMax, BvhIsa is
     return hit;
 }
 
-bool MeshBvh::closestHit(const Ray& ray, float tMax, MeshHit& out) const {
-    return closestHitWith(ray, tMax, isa_, out);
-}
-
 bool MeshBvh::closestHitWith(const Ray& ray, float tMax, BvhIsa isa, MeshHit& out) const {
     if (bvh_.empty()) return false;  // skip the per-ray set-up for scenes without triangles
     const TriangleLeafData data{positions_.data(), source_.data()};
@@ -235,8 +231,6 @@ bool MeshBvh::closestHitWith(const Ray& ray, float tMax, BvhIsa isa, MeshHit& ou
     out = MeshHit{best.t, best.slot, best.b0, best.b1, best.b2};
     return true;
 }
-
-bool MeshBvh::anyHit(const Ray& ray, float tMax) const { return anyHit(ray, tMax, isa_); }
 
 bool MeshBvh::anyHit(const Ray& ray, float tMax, BvhIsa isa) const {
     if (bvh_.empty()) return false;

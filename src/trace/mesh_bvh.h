@@ -9,6 +9,7 @@
 #include "scene/scene.h"
 #include "trace/bvh.h"
 #include "trace/bvh_isa.h"
+#include "trace/bvh_traverse_avx2.h"
 #include "trace/ray.h"
 
 #include <array>
@@ -47,10 +48,20 @@ public:
     std::optional<MeshHit> closestHit(const Ray& ray, float tMax) const;
     std::optional<MeshHit> closestHit(const Ray& ray, float tMax, BvhIsa isa) const;
     // The same into `out` (left alone without a hit): the per-ray path TraceScene takes, with no optional to
-    // build and copy at each level.
-    bool closestHit(const Ray& ray, float tMax, MeshHit& out) const;
+    // build and copy at each level. Inline, like anyHit below, so a ray reaches the AVX2 walk in one call.
+    bool closestHit(const Ray& ray, float tMax, MeshHit& out) const {
+        if (isa_ != BvhIsa::Avx2 || bvh_.empty()) return closestHitWith(ray, tMax, isa_, out);
+        TriangleLeafHit best{tMax, UINT32_MAX, 0.0f, 0.0f, 0.0f};
+        closestTriangleAvx2(bvh_.nodes.data(), ray, TriangleLeafData{positions_.data(), source_.data()}, best);
+        if (best.slot == UINT32_MAX) return false;
+        out = MeshHit{best.t, best.slot, best.b0, best.b1, best.b2};
+        return true;
+    }
     // Whether any triangle is hit at 0 < t < tMax (shadow rays): stops at the first one found.
-    bool anyHit(const Ray& ray, float tMax) const;
+    bool anyHit(const Ray& ray, float tMax) const {
+        if (isa_ != BvhIsa::Avx2 || bvh_.empty()) return anyHit(ray, tMax, isa_);
+        return anyTriangleAvx2(bvh_.nodes.data(), ray, TriangleLeafData{positions_.data(), source_.data()}, tMax);
+    }
     bool anyHit(const Ray& ray, float tMax, BvhIsa isa) const;
 
     size_t triangleCount() const { return part_.size(); }
