@@ -13,7 +13,7 @@ namespace shadelab::cli {
 namespace {
 
 constexpr uint64_t kMiB = uint64_t(1) << 20;
-constexpr uint64_t kTraceBytesPerTriangle = 128;  // MeshBvh: 4-wide nodes, positions, ids (about 80 measured) and build scratch
+constexpr uint64_t kTraceBytesPerTriangle = 128;  // MeshBvh: 8-wide nodes, positions, ids (about 85 kept) and build scratch
 constexpr uint64_t kRasterBytesPerTriangle = 160;         // vertex and index buffers, the driver's copy included
 // Per pixel. The rasterizer draws in bands, so only its 8-bit image and the PNG rows span the whole image
 // (16384² measured 6.3 B/pixel); the tracer keeps float RGBA and coverage too (measured 18.6 B/pixel).
