@@ -24,37 +24,23 @@
 
 namespace shadelab::trace {
 
-// 64-byte aligned storage for std::vector.
-template <class T>
-struct CacheLineAllocator {
-    using value_type = T;
-    CacheLineAllocator() = default;
-    template <class U>
-    CacheLineAllocator(const CacheLineAllocator<U>&) {}
-    T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64))); }
-    void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
-    template <class U>
-    bool operator==(const CacheLineAllocator<U>&) const {
-        return true;
-    }
-    template <class U>
-    bool operator!=(const CacheLineAllocator<U>&) const {
-        return false;
-    }
-};
-
 inline constexpr size_t kHugePageBytes = size_t(2) << 20;
 inline constexpr size_t kMaxHugePageArrayBytes = size_t(64) << 20;
 
-// As CacheLineAllocator outside [kHugePageBytes, kMaxHugePageArrayBytes]; inside, whole 2 MiB-aligned huge
-// pages, advised as such.
-template <class T>
-struct HugePageAllocator {
+// 64-byte aligned storage for std::vector. With HugePages, an array of kHugePageBytes to kMaxHugePageArrayBytes
+// takes whole 2 MiB-aligned huge pages instead, advised as such.
+template <class T, bool HugePages>
+struct AlignedAllocator {
     using value_type = T;
-    HugePageAllocator() = default;
     template <class U>
-    HugePageAllocator(const HugePageAllocator<U>&) {}
-    static bool huge(size_t bytes) { return bytes >= kHugePageBytes && bytes <= kMaxHugePageArrayBytes; }
+    struct rebind {
+        using other = AlignedAllocator<U, HugePages>;
+    };
+    AlignedAllocator() = default;
+    template <class U>
+    AlignedAllocator(const AlignedAllocator<U, HugePages>&) {}
+
+    static bool huge(size_t bytes) { return HugePages && bytes >= kHugePageBytes && bytes <= kMaxHugePageArrayBytes; }
     T* allocate(size_t n) {
         const size_t bytes = n * sizeof(T);
         if (!huge(bytes)) return static_cast<T*>(::operator new(bytes, std::align_val_t(64)));
@@ -72,14 +58,20 @@ struct HugePageAllocator {
         else
             std::free(p);
     }
+    // Stateless: any two allocate and free alike.
     template <class U>
-    bool operator==(const HugePageAllocator<U>&) const {
+    bool operator==(const AlignedAllocator<U, HugePages>&) const {
         return true;
     }
     template <class U>
-    bool operator!=(const HugePageAllocator<U>&) const {
+    bool operator!=(const AlignedAllocator<U, HugePages>&) const {
         return false;
     }
 };
+
+template <class T>
+using CacheLineAllocator = AlignedAllocator<T, false>;
+template <class T>
+using HugePageAllocator = AlignedAllocator<T, true>;
 
 }  // namespace shadelab::trace
