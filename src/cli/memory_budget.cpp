@@ -2,6 +2,7 @@
 // default scene (bench/README.md), rounded up.
 #include "cli/memory_budget.h"
 
+#include "trace/mesh_bvh.h"
 #include "util/input_error.h"
 
 #include <sys/resource.h>
@@ -14,6 +15,9 @@ namespace {
 
 constexpr uint64_t kMiB = uint64_t(1) << 20;
 constexpr uint64_t kTraceBytesPerTriangle = 128;  // MeshBvh: 8-wide nodes, positions, ids (about 85 kept) and build scratch
+// Spatial splits, on scenes small enough for them, add slots and their pass's scratch: peak RSS of a 2CylinderEngine
+// render went from 30 to 36 MiB (+55 B per triangle), and the budget allows twice the slots that made.
+constexpr uint64_t kSplitBytesPerTriangle = 128;
 constexpr uint64_t kRasterBytesPerTriangle = 160;         // vertex and index buffers, the driver's copy included
 // Per pixel. The rasterizer draws in bands, so only its 8-bit image and the PNG rows span the whole image
 // (16384² measured 6.3 B/pixel); the tracer keeps float RGBA and coverage too (measured 18.6 B/pixel).
@@ -45,7 +49,11 @@ uint64_t estimateRenderBytes(const Scene& scene, const RenderOptions& o) {
     // The path tracer's per-pixel sums and squares (2 × 3 doubles) and sample count.
     if (o.renderer == RendererChoice::Path) bytes += pixels * (48 + 4);
     if (raster) bytes += pixels * kRasterBytesPerPixel + triangles(scene) * kRasterBytesPerTriangle;
-    if (trace) bytes += pixels * kTraceBytesPerPixel + triangles(scene) * kTraceBytesPerTriangle;
+    if (trace) {
+        const uint64_t n = triangles(scene);
+        bytes += pixels * kTraceBytesPerPixel + n * kTraceBytesPerTriangle;
+        if (n <= trace::kMaxSpatialSplitTriangles) bytes += n * kSplitBytesPerTriangle;
+    }
     if (raster && trace) bytes += pixels * (4 + 1 + 4 + 12);  // raster coverage, band mask, heatmap, side-by-side
     return bytes;
 }

@@ -19,6 +19,8 @@
 //   eight children or every child is a leaf (the usual binary-to-wide collapse, done while building). Slots
 //   left free stay free (splitting leaves into them was measured: no faster, and a slower build).
 //   Below kMedianDepth binary splits the object median takes over, which bounds the depth for any input.
+//   The builder splits objects only; MeshBvh first cuts long triangles into spatial-split references
+//   (spatial_splits.h), so a triangle may fill several slots.
 // - Parallel build. The top of the tree is built on the calling thread, with the binning of large ranges
 //   split across threads; subtrees below a size threshold are queued and built by `threads` workers into
 //   their own node arrays, then appended in queue order. The result does not depend on the thread count or
@@ -70,6 +72,9 @@ struct BvhBuildOptions {
     int maxLeafSize = 4;         // leaves never hold more primitives than this (at most kMaxLeafCount)
     float traversalCost = 1.0f;  // SAH cost of visiting a node, relative to one primitive test
     int threads = 0;             // build threads; 0: std::thread::hardware_concurrency(). Small inputs use one.
+    // MeshBvh only: extra references spatial splits may make, as a fraction of the triangles (spatial_splits.h);
+    // 0 turns them off.
+    float spatialSplitBudget = 1.0f;
 };
 
 // Deepest tree the builder makes, in binary splits (an 8-wide level is one to seven of them); traversal

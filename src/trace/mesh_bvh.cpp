@@ -6,6 +6,7 @@
 #include "trace/bvh_traverse.h"
 #include "trace/bvh_traverse_avx2.h"
 #include "trace/leaf_positions.h"
+#include "trace/spatial_splits.h"
 #include "trace/triangle_leaf.h"
 #include "trace/watertight.h"
 #include "util/check.h"
@@ -77,20 +78,29 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
         bounds_.lo = glm::min(bounds_.lo, b.lo);
         bounds_.hi = glm::max(bounds_.hi, b.hi);
     }
-    // Pad every box by far more than a triangle hit's rounding, which scales with the coordinates' magnitude:
-    // otherwise a triangle lying in its box's face can round to a hit just before the box's rounded entry and
-    // be culled (SphereSet pads spheres the same way).
-    if (!prims.empty()) {
-        const glm::vec3 m = glm::max(glm::abs(bounds_.lo), glm::abs(bounds_.hi));
-        const float pad = 1e-6f * std::max({m.x, m.y, m.z, 1e-30f});
-        for (BvhPrim& b : prims)
-            for (int a = 0; a < 3; ++a) {
-                b.lo[a] -= pad;
-                b.hi[a] += pad;
-            }
-        bounds_.lo -= glm::vec3(pad);
-        bounds_.hi += glm::vec3(pad);
+    // Every box is padded by far more than a triangle hit's rounding, which scales with the coordinates'
+    // magnitude: otherwise a triangle lying in its box's face can round to a hit just before the box's rounded
+    // entry and be culled (SphereSet pads spheres the same way).
+    const glm::vec3 extent = glm::max(glm::abs(bounds_.lo), glm::abs(bounds_.hi));
+    const float pad = prims.empty() ? 0.0f : 1e-6f * std::max({extent.x, extent.y, extent.z, 1e-30f});
+    // Long triangles across the axes become several references (spatial_splits.h), below a size where the
+    // sequential top of that pass would cost more than the build itself.
+    triangles_ = uint32_t(prims.size());
+    if (options.spatialSplitBudget > 0.0f && prims.size() <= kMaxSpatialSplitTriangles) {
+        const TriangleCorners corners = [this](const BvhPrim& ref, glm::vec3 c[3]) {
+            const MeshGeometry& g = *geometry_[ref.id2];
+            for (size_t k = 0; k < 3; ++k) c[k] = g.positions[g.indices[3 * size_t(ref.id) + k]];
+        };
+        prims = spatialSplitReferences(std::move(prims), corners,
+                                       SpatialSplitOptions{options.spatialSplitBudget, 1e-5f, pad, threads});
     }
+    for (BvhPrim& b : prims)
+        for (int a = 0; a < 3; ++a) {
+            b.lo[a] -= pad;
+            b.hi[a] += pad;
+        }
+    bounds_.lo -= glm::vec3(pad);
+    bounds_.hi += glm::vec3(pad);
     BvhBuildOptions leafOptions = options;
     leafOptions.maxLeafSize = std::min(options.maxLeafSize, int(kMaxMeshLeafSize));
     bvh_ = buildBvh(prims, leafOptions);

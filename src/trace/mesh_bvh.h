@@ -1,9 +1,10 @@
-// MeshBvh: every triangle of a scene's meshes in one 8-wide SAH BVH (bvh.h), the vertex positions stored in
-// leaf order next to which part and triangle each is (45 bytes per triangle; vertex normals are read from the
-// scene's shared geometry, which it keeps alive). A leaf's positions are 9 rows, one per corner and axis, of one
-// float per triangle (leaf_positions.h), so the AVX2 leaf test loads each row as a register without shuffling. Geometry
-// only and immutable once built, so TraceScene versions that differ only in materials, lights or camera share one (see
-// trace_scene.h).
+// MeshBvh: every triangle of a scene's meshes in one 8-wide SAH BVH (bvh.h), built over spatial-split references
+// (spatial_splits.h: a long triangle across the axes fills several slots, each slot the same triangle), the
+// vertex positions stored in leaf order next to which part and triangle each is (45 bytes per slot; vertex normals are
+// read from the scene's shared geometry, which it keeps alive). A leaf's positions are 9 rows, one per corner and axis,
+// of one float per triangle (leaf_positions.h), so the AVX2 leaf test loads each row as a register without shuffling.
+// Geometry only and immutable once built, so TraceScene versions that differ only in materials, lights or camera share
+// one (see trace_scene.h).
 #pragma once
 
 #include "scene/scene.h"
@@ -35,6 +36,12 @@ bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec
 // A leaf holds at most this many triangles: the AVX2 leaf test takes them in one 4-wide step.
 inline constexpr int kMaxMeshLeafSize = 4;
 
+// Spatial splits (spatial_splits.h) run on scenes of up to this many triangles. Their pass costs about 2 µs per
+// triangle on 2 threads (0.21 s for 2CylinderEngine's 110 K, against 0.07 s for the build itself), so above this
+// it would add more than a second; large scanned or tessellated meshes are also the ones made of small,
+// well-shaped triangles that splits help least.
+inline constexpr size_t kMaxSpatialSplitTriangles = 500000;
+
 class MeshBvh {
 public:
     // Triangles with a non-finite vertex are left out (they cannot be hit); indices must be in range.
@@ -64,7 +71,9 @@ public:
     }
     bool anyHit(const Ray& ray, float tMax, BvhIsa isa) const;
 
-    size_t triangleCount() const { return part_.size(); }
+    // Triangles kept (finite, not degenerate), and slots: a triangle cut by spatial splits fills several.
+    size_t triangleCount() const { return triangles_; }
+    size_t slotCount() const { return part_.size(); }
     // Vertex positions of a slot as 9 floats (v0, v1, v2), world units.
     std::array<float, 9> vertices(uint32_t slot) const;
     // b0·n0 + b1·n1 + b2·n2 from the glTF vertex normals, not renormalised (shadeLight does that).
@@ -98,6 +107,7 @@ private:
     void forTriangles(uint32_t begin, uint32_t end, F&& f) const;
 
     BvhIsa isa_ = defaultBvhIsa();  // read once, not per ray
+    uint32_t triangles_ = 0;
     Bvh bvh_;
     std::vector<float, HugePageAllocator<float>> positions_;  // 9 per slot, by leaf (leaf_positions.h), + padding
     std::vector<uint8_t> lane_;                               // per slot: its index in its leaf << 4 | the leaf's count
