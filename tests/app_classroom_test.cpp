@@ -144,13 +144,15 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     EXPECT_EQ(termsCaption(s.scene.terms), "ambient + diffuse + specular + shadows + reflections");
     // Global: the path tracer has no ambient term, whatever its switch says; Local | Global's left side does.
     setMode(s, ViewMode::Global);
-    EXPECT_EQ(imageCaption(s), "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
-                               "global illumination (path traced)");
+    EXPECT_EQ(imageCaption(s),
+              "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
+              "global illumination (path traced)");
     setGlobalPart(s, trace::PathPart::Indirect);
     EXPECT_NE(imageCaption(s).find("indirect light only"), std::string::npos);
     setMode(s, ViewMode::LocalGlobal);
-    EXPECT_EQ(imageCaption(s), "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular + shadows + reflections  "
-                               "\xc2\xb7  local (raster) | global (path traced)");
+    EXPECT_EQ(imageCaption(s),
+              "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular + shadows + reflections  "
+              "\xc2\xb7  local (raster) | global (path traced)");
     for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
         setTerm(s, t, false);
     EXPECT_EQ(termsCaption(s.scene.terms), "nothing");

@@ -186,7 +186,8 @@ TEST(HostileInput, FifoAsViewerScriptNeverBlocks) {
     // The script is read before the window opens, so this needs no display.
     const std::string dir = folder("script");
     ASSERT_EQ(mkfifo((dir + "/actions.json").c_str(), 0600), 0);
-    const Result r = run({"view", shadelab::test::sourcePath("assets/scenes/default.json"), "--script", dir + "/actions.json"});
+    const Result r =
+        run({"view", shadelab::test::sourcePath("assets/scenes/default.json"), "--script", dir + "/actions.json"});
     if (r.out.find("no viewer") != std::string::npos) GTEST_SKIP() << "this build has no viewer";
     expectRefused(r, "actions.json", "is a FIFO, not a regular file");
 }
@@ -234,7 +235,8 @@ TEST(HostileInput, ControlCharactersAndHugeTextStayOnOneCappedLine) {
     expectRefused(lng, "long.json", "unknown material");
     EXPECT_LT(lng.out.size(), 400u) << lng.out.substr(0, 400);
     // tinygltf echoes a bad data: URI whole (133 KB lines were seen); the line stays under the cap.
-    writeText(dir + "/uri.gltf", gltfWithBuffer("data:application/octet-stream;base64," + std::string(100000, '!'), 840));
+    writeText(dir + "/uri.gltf",
+              gltfWithBuffer("data:application/octet-stream;base64," + std::string(100000, '!'), 840));
     const Result uri = render(dir + "/uri.gltf", dir);
     EXPECT_EQ(uri.code, 1) << uri.out.substr(0, 400);
     EXPECT_LT(uri.out.size(), 400u) << uri.out.substr(0, 400);

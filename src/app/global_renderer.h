@@ -53,13 +53,13 @@ public:
     bool active() const { return job_ != 0; }
     // Whether the texture holds an image of the current request yet (after its first pass).
     bool ready() const { return active() && samples_ > 0; }
-    GLuint texture() const { return color_.id(); }   // RGBA32F, GL row order
+    GLuint texture() const { return color_.id(); }     // RGBA32F, GL row order
     GLuint tileTexture() const { return done_.id(); }  // R8, one texel per tile: 1 = has its first sample
     int tileSize() const { return kTileSize; }
     int samples() const { return samples_; }
     uint64_t revision() const { return revision_; }  // the state revision being rendered
-    float passProgress() const;   // of the pass under way, [0, 1]
-    double noise8() const { return noise8_; }  // mean standard error, 8-bit sRGB units
+    float passProgress() const;                      // of the pass under way, [0, 1]
+    double noise8() const { return noise8_; }        // mean standard error, 8-bit sRGB units
     double seconds() const;
     int threads() const { return threads_; }
     std::string error() const;

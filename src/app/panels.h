@@ -84,8 +84,8 @@ struct PanelContext {
     ReferenceInfo reference;
     GlobalInfo global;                          // the path tracer of Global and Local | Global
     std::optional<GlobalEstimate> probeGlobal;  // its estimate at the probed pixel, in those modes
-    const CompareResult* metrics = nullptr;  // raster vs complete reference, when available
-    std::string metricsWords;                // the same, in plain words
+    const CompareResult* metrics = nullptr;     // raster vs complete reference, when available
+    std::string metricsWords;                   // the same, in plain words
     std::string shaderError;
     std::string status;
     bool statusError = false;

@@ -60,8 +60,9 @@ void drawMaterialSection(PanelContext& ctx) {
         changed = true;
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("emitted radiance: an area light under the path tracer (Global mode); the rasterizer and "
-                          "the Whitted reference add it to the object's colour");
+        ImGui::SetTooltip(
+            "emitted radiance: an area light under the path tracer (Global mode); the rasterizer and "
+            "the Whitted reference add it to the object's colour");
     ImGui::TextDisabled("pbr: glTF metallic-roughness");
     changed |= ImGui::ColorEdit3("baseColor", glm::value_ptr(m.baseColor), ImGuiColorEditFlags_Float);
     changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f, "%.2f");

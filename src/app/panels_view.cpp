@@ -75,9 +75,10 @@ void drawGlobalStatus(PanelContext& ctx) {
     const float fraction = g.samples == 0 ? g.passProgress : std::min(1.0f, float(g.samples) / 256.0f);
     ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("path tracer, %d thread(s) at low priority; the ambient term is off (light bounces instead); "
-                       "refines until %d samples, restarts on every change",
-                       g.threads, g.maxSamples);
+    ImGui::TextWrapped(
+        "path tracer, %d thread(s) at low priority; the ambient term is off (light bounces instead); "
+        "refines until %d samples, restarts on every change",
+        g.threads, g.maxSamples);
     ImGui::PopStyleColor();
 }
 

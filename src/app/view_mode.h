@@ -11,12 +11,8 @@ namespace shadelab::app {
 enum class ViewMode { Raster, Traced, Split, Difference, Global, LocalGlobal };
 
 inline constexpr EnumName<ViewMode> kViewModeNames[] = {
-    {ViewMode::Raster, "raster"},
-    {ViewMode::Traced, "traced"},
-    {ViewMode::Split, "split"},
-    {ViewMode::Difference, "difference"},
-    {ViewMode::Global, "global"},
-    {ViewMode::LocalGlobal, "local-global"},
+    {ViewMode::Raster, "raster"},         {ViewMode::Traced, "traced"}, {ViewMode::Split, "split"},
+    {ViewMode::Difference, "difference"}, {ViewMode::Global, "global"}, {ViewMode::LocalGlobal, "local-global"},
 };
 
 inline bool isGlobal(ViewMode m) { return m == ViewMode::Global || m == ViewMode::LocalGlobal; }

@@ -108,8 +108,8 @@ bool Viewer::frame() {
     ctx.probe = probe_ ? &*probe_ : nullptr;
     ctx.reference = {reference_->active(),  reference_->complete(), reference_->progress(),
                      reference_->seconds(), reference_->threads(),  reference_->error()};
-    ctx.global = {global_->active(),       global_->samples(), GlobalRenderer::kMaxSamples, global_->passProgress(),
-                  global_->noise8(),       global_->seconds(), global_->threads(),          global_->error()};
+    ctx.global = {global_->active(), global_->samples(), GlobalRenderer::kMaxSamples, global_->passProgress(),
+                  global_->noise8(), global_->seconds(), global_->threads(),          global_->error()};
     if (probe_ && isGlobal(state_.mode)) ctx.probeGlobal = global_->estimate(probe_->x, probe_->y);
     ctx.metrics = metrics_ && metricsRevision_ == state_.revision ? &*metrics_ : nullptr;
     if (ctx.metrics) ctx.metricsWords = metricsWords_;
@@ -361,7 +361,7 @@ void Viewer::compose() {
         in.tiles = reference_->tileTexture();
         in.tileSize = reference_->tileSize();
     }
-    in.mode = state_.mode == ViewMode::Global ? ViewMode::Traced
+    in.mode = state_.mode == ViewMode::Global        ? ViewMode::Traced
               : state_.mode == ViewMode::LocalGlobal ? ViewMode::Split
                                                      : state_.mode;
     in.encoding = state_.encoding;

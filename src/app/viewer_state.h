@@ -7,9 +7,9 @@
 #include "app/material_presets.h"
 #include "app/orbit_camera.h"
 #include "app/view_mode.h"
-#include "trace/path_settings.h"
 #include "image/encode.h"
 #include "scene/scene.h"
+#include "trace/path_settings.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>

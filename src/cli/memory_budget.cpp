@@ -14,15 +14,16 @@ namespace shadelab::cli {
 namespace {
 
 constexpr uint64_t kMiB = uint64_t(1) << 20;
-constexpr uint64_t kTraceBytesPerTriangle = 128;  // MeshBvh: 8-wide nodes, positions, ids (about 85 kept) and build scratch
+constexpr uint64_t kTraceBytesPerTriangle =
+    128;  // MeshBvh: 8-wide nodes, positions, ids (about 85 kept) and build scratch
 // Spatial splits, on scenes small enough for them, add slots and their pass's scratch: peak RSS of a 2CylinderEngine
 // render went from 30 to 36 MiB (+55 B per triangle), and the budget allows twice the slots that made.
 constexpr uint64_t kSplitBytesPerTriangle = 128;
-constexpr uint64_t kRasterBytesPerTriangle = 160;         // vertex and index buffers, the driver's copy included
+constexpr uint64_t kRasterBytesPerTriangle = 160;  // vertex and index buffers, the driver's copy included
 // Per pixel. The rasterizer draws in bands, so only its 8-bit image and the PNG rows span the whole image
 // (16384² measured 6.3 B/pixel); the tracer keeps float RGBA and coverage too (measured 18.6 B/pixel).
-constexpr uint64_t kRasterBytesPerPixel = 4 + 4;             // 8-bit RGBA, PNG rows
-constexpr uint64_t kTraceBytesPerPixel = 16 + 4 + 4 + 4;     // float RGBA, coverage, 8-bit RGBA, PNG rows
+constexpr uint64_t kRasterBytesPerPixel = 4 + 4;          // 8-bit RGBA, PNG rows
+constexpr uint64_t kTraceBytesPerPixel = 16 + 4 + 4 + 4;  // float RGBA, coverage, 8-bit RGBA, PNG rows
 
 uint64_t triangles(const Scene& scene) {
     uint64_t n = 0;

@@ -30,8 +30,8 @@ KeyBytes materialKey(const Material& m) {
     KeyBytes k;
     k.add(m.ma).add(m.md).add(m.ms).add(m.s).add(m.kr).add(m.kt).add(m.ior);
     k.add(m.baseColor).add(m.metallic).add(m.roughness).add(m.emission);
-    for (const TextureBinding* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
-                                    &m.occlusionTexture, &m.emissiveTexture})
+    for (const TextureBinding* t :
+         {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.occlusionTexture, &m.emissiveTexture})
         addTexture(k, *t);
     k.add(m.alphaMode).add(m.alpha).add(m.alphaCutoff);
     return k;

@@ -19,9 +19,9 @@
 #include <tiny_gltf.h>
 
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cctype>

@@ -34,7 +34,8 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 // ---- 1. Loading materials, camera, lights --------------------------------------------------------------
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "emission"});
+    n.requireObject().warnUnknownKeys(
+        {"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "emission"});
     return parseMaterialOverride(n);
 }
 
@@ -302,15 +303,15 @@ OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exa
 
 OJson materialJson(const Material& m) {
     OJson j = {{"ma", vec(m.ma)},
-            {"md", vec(m.md)},
-            {"ms", vec(m.ms)},
-            {"s", exact(m.s)},
-            {"kr", vec(m.kr)},
-            {"kt", vec(m.kt)},
-            {"ior", exact(m.ior)},
-            {"baseColor", vec(m.baseColor)},
-            {"metallic", exact(m.metallic)},
-            {"roughness", exact(m.roughness)}};
+               {"md", vec(m.md)},
+               {"ms", vec(m.ms)},
+               {"s", exact(m.s)},
+               {"kr", vec(m.kr)},
+               {"kt", vec(m.kt)},
+               {"ior", exact(m.ior)},
+               {"baseColor", vec(m.baseColor)},
+               {"metallic", exact(m.metallic)},
+               {"roughness", exact(m.roughness)}};
     if (m.emission != glm::vec3(0.0f)) j["emission"] = vec(m.emission);  // written only for emitters
     return j;
 }

@@ -125,8 +125,7 @@ TEST(MeshBvhBuild, SameForAnyThreadCount) {
     auto same = [](const MeshBvh& a, const MeshBvh& b) {
         if (a.slotCount() != b.slotCount() || a.bvh().nodes.size() != b.bvh().nodes.size()) return false;
         for (uint32_t s = 0; s < a.slotCount(); ++s)
-            if (a.vertices(s) != b.vertices(s) ||
-                a.sourceTriangle(s) != b.sourceTriangle(s) || a.part(s) != b.part(s))
+            if (a.vertices(s) != b.vertices(s) || a.sourceTriangle(s) != b.sourceTriangle(s) || a.part(s) != b.part(s))
                 return false;
         return std::memcmp(a.bvh().nodes.data(), b.bvh().nodes.data(), a.bvh().nodes.size() * sizeof(BvhNode)) == 0 &&
                a.bounds().lo == b.bounds().lo && a.bounds().hi == b.bounds().hi;

@@ -190,7 +190,9 @@ inline int hitsFused8(const BoxRay8& r, const float (*b)[8], float tMax, float* 
 // slabHits4's expression on eight lanes, operation for operation.
 inline int hitsExact8(const BoxRay8& r, const float (*b)[8], float tMax, float* tNear) {
     const __m256 org[3] = {lane8<0>(r.org), lane8<1>(r.org), lane8<2>(r.org)};
-    auto t = [&](int row, int a) { return _mm256_mul_ps(_mm256_sub_ps(boundsRow(b, r.off[row]), org[a]), r.invDir[a]); };
+    auto t = [&](int row, int a) {
+        return _mm256_mul_ps(_mm256_sub_ps(boundsRow(b, r.off[row]), org[a]), r.invDir[a]);
+    };
     return slabMask8(t(0, 0), t(1, 1), t(2, 2), t(3, 0), t(4, 1), t(5, 2), tMax, tNear);
 }
 
@@ -253,8 +255,8 @@ inline int triangles4(const LeafRay4& r, const float* v, uint32_t count, float t
 
 // The scalar loops for a leaf with an edge function of exactly 0: rare, so kept out of the walk's code, with the
 // scalar ray constants they need made only here.
-__attribute__((noinline, cold)) void closestScalar(const LeafRay4& r, const Ray& ray, TriangleLeafData data,
-                                                   float tMax, TriangleLeafHit& best, uint32_t first, uint32_t count) {
+__attribute__((noinline, cold)) void closestScalar(const LeafRay4& r, const Ray& ray, TriangleLeafData data, float tMax,
+                                                   TriangleLeafHit& best, uint32_t first, uint32_t count) {
     ClosestTriangleLeaf<Avx2Tag> leaf{data, scalarWatertightRay(r, ray), tMax, best};
     leaf(first, count);
     best = leaf.best;

@@ -1,10 +1,11 @@
 // Emitters: the light sources the path tracer samples by next-event estimation besides the point and
 // directional lights (design.md §8): emissive spheres and mesh triangles (material `emission`, both sides)
-// and an .hdr environment (a uniform one is left to BSDF sampling: EnvironmentSampler::sampled). One is picked per sample: the environment with probability 1/2 when there are also
-// emissive objects (else 1), an object with probability ∝ its power (luminance(emission) × area), so a
-// triangle's pick does not need its index. A sphere seen from outside is sampled by the cone it subtends,
-// from inside by area; a triangle by area. Emissive planes are infinite: they are found by BSDF sampling
-// only (pdf 0 here, so multiple importance sampling gives their hits full weight).
+// and an .hdr environment (a uniform one is left to BSDF sampling: EnvironmentSampler::sampled). One is picked per
+// sample: the environment with probability 1/2 when there are also emissive objects (else 1), an object with
+// probability ∝ its power (luminance(emission) × area), so a triangle's pick does not need its index. A sphere seen
+// from outside is sampled by the cone it subtends, from inside by area; a triangle by area. Emissive planes are
+// infinite: they are found by BSDF sampling only (pdf 0 here, so multiple importance sampling gives their hits full
+// weight).
 #pragma once
 
 #include "trace/distribution.h"
@@ -19,11 +20,11 @@
 namespace shadelab::trace {
 
 struct EmitterSample {
-    glm::vec3 wi{0.0f};  // unit direction from the shading point toward the sampled point
+    glm::vec3 wi{0.0f};     // unit direction from the shading point toward the sampled point
     float distance = 0.0f;  // to the sampled point; infinity for the environment
     float pdf = 0.0f;       // per solid angle, the emitter's pick included
     bool environment = false;
-    glm::vec3 Le{0.0f};     // emitted radiance toward the shading point (objects; the caller looks up the environment)
+    glm::vec3 Le{0.0f};  // emitted radiance toward the shading point (objects; the caller looks up the environment)
 };
 
 class Emitters {

@@ -61,8 +61,8 @@ EnvironmentSampler::EnvironmentSampler(const Scene& scene) {
             }
     std::vector<double> weights(lumSolid.size());
     for (size_t k = 0; k < weights.size(); ++k)
-        weights[k] = (lumTotal > 0.0 ? 0.9 * lumSolid[k] / lumTotal : 0.9 * solid[k] / solidTotal) +
-                     0.1 * solid[k] / solidTotal;
+        weights[k] =
+            (lumTotal > 0.0 ? 0.9 * lumSolid[k] / lumTotal : 0.9 * solid[k] / solidTotal) + 0.1 * solid[k] / solidTotal;
     texels_ = Distribution1D(weights);
 }
 
@@ -88,7 +88,8 @@ float EnvironmentSampler::pdf(const glm::vec3& dir) const {
     const int f = l.cubeFace(m);
     const glm::vec3 fc = l.cubeFaceCoords(m, f);
     const float delta = 2.0f / float(n_);
-    const int i = std::clamp(int((fc.x + 1.0f) / delta), 0, n_ - 1), j = std::clamp(int((fc.y + 1.0f) / delta), 0, n_ - 1);
+    const int i = std::clamp(int((fc.x + 1.0f) / delta), 0, n_ - 1),
+              j = std::clamp(int((fc.y + 1.0f) / delta), 0, n_ - 1);
     const size_t k = (size_t(f) * size_t(n_) + size_t(j)) * size_t(n_) + size_t(i);
     const float r2 = 1.0f + fc.x * fc.x + fc.y * fc.y;
     return texels_.probability(k) / (delta * delta) * r2 * std::sqrt(r2);

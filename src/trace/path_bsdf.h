@@ -51,16 +51,16 @@ private:
     float specularPdf(const glm::vec3& wi) const;
     glm::vec3 sampleSpecular(glm::vec2 u) const;
 
-    Frame frame_;              // around the unit shading normal
-    glm::vec3 N_, Nf_, V_;     // unit shading normal, geometric normal and view direction (all on V's side)
-    glm::vec3 md_, ms_;        // the coefficients shadeLight reads (surfaceParams, texture applied)
-    float s_;                  // exponent, or roughness under pbr
-    float alpha_ = 0.0f;       // pbr: GGX α
+    Frame frame_;           // around the unit shading normal
+    glm::vec3 N_, Nf_, V_;  // unit shading normal, geometric normal and view direction (all on V's side)
+    glm::vec3 md_, ms_;     // the coefficients shadeLight reads (surfaceParams, texture applied)
+    float s_;               // exponent, or roughness under pbr
+    float alpha_ = 0.0f;    // pbr: GGX α
     glm::vec3 specScale_{1.0f};
     int model_;
     bool diffuseOn_, specularOn_;
     glm::vec3 kr_{0.0f}, kt_{0.0f};
-    float eta_ = 1.0f;         // n1 / n2 across the surface along the arriving ray
+    float eta_ = 1.0f;            // n1 / n2 across the surface along the arriving ray
     bool totalInternal_ = false;  // kt goes to the mirror, as in the Whitted tracer
     glm::vec3 refracted_{0.0f};
     // Lobe picking probabilities (sum 1 unless everything is black).

@@ -60,8 +60,8 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
     // A contribution that reached the eye after `scattered` non-delta scatterings: 0 is an emitter seen
     // (directly or in mirrors), 1 direct light, 2 and more indirect light.
     auto add = [&](const glm::vec3& c, int scattered) {
-        const bool keep = settings_.part == PathPart::All ||
-                          (settings_.part == PathPart::Direct ? scattered <= 1 : scattered >= 2);
+        const bool keep =
+            settings_.part == PathPart::All || (settings_.part == PathPart::Direct ? scattered <= 1 : scattered >= 2);
         if (keep && std::isfinite(c.x + c.y + c.z)) out.color += c;
     };
 
@@ -111,7 +111,8 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
             }
             // One sample of the emissive objects and the environment.
             if (!emitters_.empty() && settings_.estimator != PathEstimator::Bsdf) {
-                if (const std::optional<EmitterSample> e = emitters_.sample(s.P, rng.draw(uint32_t(bounce), kGroupEmitter))) {
+                if (const std::optional<EmitterSample> e =
+                        emitters_.sample(s.P, rng.draw(uint32_t(bounce), kGroupEmitter))) {
                     const glm::vec3 f = glm::dot(e->wi, s.Nf) > 0.0f ? bsdf.evalCos(e->wi) : glm::vec3(0.0f);
                     if (positive(f)) {
                         const float tMax = e->environment ? INFINITY : e->distance * (1.0f - 1e-3f) - eps;

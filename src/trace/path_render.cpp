@@ -177,10 +177,12 @@ PathOutput pathTraceImage(std::shared_ptr<const TraceScene> scene, const PathSet
         // One sample per pass: the limit ends the render at a whole sample count.
         const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
         for (int k = 0; k < settings.spp && (k == 0 || elapsed() < settings.timeLimit); ++k) {
-            render.addSamples(1, nullptr, progress ? std::function<void(float)>([&](float f) {
-                const float byTime = float(std::min(1.0, (elapsed()) / settings.timeLimit));
-                progress(std::max(byTime, (float(k) + f) / float(settings.spp)));
-            }) : std::function<void(float)>());
+            render.addSamples(1, nullptr,
+                              progress ? std::function<void(float)>([&](float f) {
+                                  const float byTime = float(std::min(1.0, (elapsed()) / settings.timeLimit));
+                                  progress(std::max(byTime, (float(k) + f) / float(settings.spp)));
+                              })
+                                       : std::function<void(float)>());
         }
     }
     if (progress) progress(1.0f);

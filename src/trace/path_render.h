@@ -61,18 +61,18 @@ private:
     std::shared_ptr<const TraceScene> scene_;
     PathSettings settings_;
     ViewSetup view_;
-    std::unique_ptr<PathIntegrator> integrator_;  // over *scene_, with the resolved settings
-    std::vector<double> sum_, sumSq_;  // 3 per pixel
+    std::unique_ptr<PathIntegrator> integrator_;      // over *scene_, with the resolved settings
+    std::vector<double> sum_, sumSq_;                 // 3 per pixel
     std::unique_ptr<std::atomic<uint32_t>[]> count_;  // per pixel; written (release) after its sums
     std::vector<uint32_t> coverage_;
 };
 
 struct PathOutput {
-    ImageF color;                    // linear RGB, alpha 1
-    std::vector<uint32_t> coverage;  // settings.coverage only
-    int spp = 0;                     // samples every pixel got (below settings.spp when the time limit hit)
-    double seconds = 0.0;            // tracing time
-    double meanStandardError8 = 0.0; // in 8-bit sRGB units (PathRender::meanStandardError8)
+    ImageF color;                     // linear RGB, alpha 1
+    std::vector<uint32_t> coverage;   // settings.coverage only
+    int spp = 0;                      // samples every pixel got (below settings.spp when the time limit hit)
+    double seconds = 0.0;             // tracing time
+    double meanStandardError8 = 0.0;  // in 8-bit sRGB units (PathRender::meanStandardError8)
 };
 
 // The one-shot render: settings.spp samples, or fewer when settings.timeLimit ends it at a whole pass

@@ -107,9 +107,11 @@ TEST(PathSampling, NegativeControlWrongLobePdfsFail) {
     const Chi2Result phong =
         testLobe({shading::SL_MODEL_PHONG, glm::vec3(0.0f), glm::vec3(1.0f), 20.0f, kOblique}, 1.0f, 2.0f);
     EXPECT_LT(phong.pValue, kAlpha) << phong.summary();
-    const Chi2Result ggx = testLobe({shading::SL_MODEL_PBR, glm::vec3(0.0f), glm::vec3(1.0f), 0.5f, kOblique}, 1.0f, 0.1f);
+    const Chi2Result ggx =
+        testLobe({shading::SL_MODEL_PBR, glm::vec3(0.0f), glm::vec3(1.0f), 0.5f, kOblique}, 1.0f, 0.1f);
     EXPECT_LT(ggx.pValue, kAlpha) << ggx.summary();
-    const Chi2Result scaled = testLobe({shading::SL_MODEL_PHONG, glm::vec3(0.8f), glm::vec3(0.0f), 1.0f, kOblique}, 1.05f);
+    const Chi2Result scaled =
+        testLobe({shading::SL_MODEL_PHONG, glm::vec3(0.8f), glm::vec3(0.0f), 1.0f, kOblique}, 1.05f);
     EXPECT_LT(scaled.pValue, kAlpha) << scaled.summary();
 }
 
@@ -164,7 +166,8 @@ TEST(PathSampling, EmitterSamplingMatchesItsPdf) {
         const auto e = emitters.sample(P, rng.draw(0, 1));
         return e ? std::optional<glm::vec3>(e->wi) : std::nullopt;
     };
-    const Chi2Result r = test::chi2Directions(sample, [&](const glm::vec3& w) { return pdfOf(w, 1.0f); }, kSamples, 20, 40, 32);
+    const Chi2Result r = test::chi2Directions(
+        sample, [&](const glm::vec3& w) { return pdfOf(w, 1.0f); }, kSamples, 20, 40, 32);
     EXPECT_GT(r.pValue, kAlpha) << r.summary();
     // Negative control: the power weighting ignored (a uniform pick between the two) must fail.
     const Chi2Result wrong = test::chi2Directions(
@@ -227,13 +230,15 @@ TEST(PathSampling, EnvironmentMapSamplingMatchesItsPdf) {
     const EnvironmentSampler env(scene);
     ASSERT_TRUE(env.emits());
     auto sample = [&](int k) -> std::optional<glm::vec3> { return env.sample(numbers(k)).dir; };
-    const Chi2Result r = test::chi2Directions(sample, [&](const glm::vec3& w) { return env.pdf(w); }, kSamples, 30, 60, 16);
+    const Chi2Result r = test::chi2Directions(
+        sample, [&](const glm::vec3& w) { return env.pdf(w); }, kSamples, 30, 60, 16);
     EXPECT_GT(r.pValue, kAlpha) << r.summary();
     // Negative control: the rotation forgotten in the density.
     Scene unrotated = scene;
     unrotated.environment->rotation = 0.0f;
     const EnvironmentSampler other(unrotated);
-    const Chi2Result wrong = test::chi2Directions(sample, [&](const glm::vec3& w) { return other.pdf(w); }, kSamples, 30, 60, 16);
+    const Chi2Result wrong = test::chi2Directions(
+        sample, [&](const glm::vec3& w) { return other.pdf(w); }, kSamples, 30, 60, 16);
     EXPECT_LT(wrong.pValue, kAlpha) << wrong.summary();
 }
 

@@ -20,7 +20,8 @@ void validate(const PathSettings& s) {
         throw std::invalid_argument("roulette depth must be >= 0, got " + std::to_string(s.rouletteDepth));
     if (s.tileSize < 1) throw std::invalid_argument("tile size must be >= 1, got " + std::to_string(s.tileSize));
     if (!(s.timeLimit >= 0.0) || s.timeLimit > 1e7)
-        throw std::invalid_argument("--time-limit must be a number of seconds >= 0, got " + std::to_string(s.timeLimit));
+        throw std::invalid_argument("--time-limit must be a number of seconds >= 0, got " +
+                                    std::to_string(s.timeLimit));
 }
 
 }  // namespace shadelab::trace

@@ -34,7 +34,9 @@ inline constexpr EnumName<PathPart> kPathPartNames[] = {
 
 inline const char* toString(PathEstimator e) { return nameOf(kPathEstimatorNames, e); }
 inline const char* toString(PathPart p) { return nameOf(kPathPartNames, p); }
-inline std::optional<PathEstimator> parsePathEstimator(std::string_view s) { return lookupName(kPathEstimatorNames, s); }
+inline std::optional<PathEstimator> parsePathEstimator(std::string_view s) {
+    return lookupName(kPathEstimatorNames, s);
+}
 inline std::optional<PathPart> parsePathPart(std::string_view s) { return lookupName(kPathPartNames, s); }
 
 struct PathSettings {

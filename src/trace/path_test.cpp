@@ -317,7 +317,8 @@ DirectCheck compareWithWhitted(const Scene& path, const Scene& whitted, int maxD
         }
     out.badPixels = double(bad) / double(s.width * s.height);
     out.z = std::abs(r.mean.y - wMean.y) / (r.se.y + 1e-4);
-    std::printf("path %.5f ± %.5f, whitted %.5f, %.2f%% pixels apart\n", r.mean.y, r.se.y, wMean.y, 100.0 * out.badPixels);
+    std::printf("path %.5f ± %.5f, whitted %.5f, %.2f%% pixels apart\n", r.mean.y, r.se.y, wMean.y,
+                100.0 * out.badPixels);
     if (out.z >= 3.0 || out.badPixels > 0.03) {
         test::writeEvidence("path_direct_path", r.render->image());
         test::writeEvidence("path_direct_whitted", w);
