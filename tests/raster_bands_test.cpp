@@ -132,12 +132,24 @@ TEST_F(RasterBandsTest, SupersamplingIsBoxFilteredGrid) {
     EXPECT_GT(countDifferentPixels(expected, raster::renderOffscreen(r, scene, o).pixels), size_t(w * h) / 50);
 }
 
-TEST(RasterOffscreen, SppMustBeAPerfectSquare) {
-    EXPECT_EQ(raster::samplesPerSide(1), 1);
-    EXPECT_EQ(raster::samplesPerSide(16), 4);
-    EXPECT_THROW(raster::samplesPerSide(3), UsageError);
-    EXPECT_THROW(raster::samplesPerSide(0), UsageError);
-    EXPECT_THROW(raster::samplesPerSide(81), UsageError);
+// The rasterizer takes the sample grid's counts (scene/sample_grid.h) and refuses the rest by field.
+TEST_F(RasterBandsTest, SppOffTheGridIsRefusedByField) {
+    Scene scene = loadScene(test::sourcePath("assets/scenes/default.json"));
+    raster::RasterRenderer r;
+    raster::OffscreenOptions o;
+    o.width = 8;
+    o.height = 8;
+    for (int spp : {0, 3, 81}) {
+        o.spp = spp;
+        try {
+            raster::renderOffscreen(r, scene, o);
+            ADD_FAILURE() << "spp " << spp << " was accepted";
+        } catch (const SettingError& e) {
+            EXPECT_EQ(e.field(), "spp") << e.what();
+        }
+    }
+    o.spp = 4;  // control: on the grid
+    EXPECT_EQ(raster::renderOffscreen(r, scene, o).pixels.width, 8);
 }
 
 // Jittered samples (raster_renderer.h draw's `jitter`, the viewer's accumulation): the k² grid samples drawn

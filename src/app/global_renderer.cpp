@@ -59,11 +59,7 @@ void GlobalRenderer::controllerLoop() {
         if (job) {
             try {
                 auto scene = std::make_shared<const trace::TraceScene>(job->scene, meshes_.get(job->scene));
-                trace::PathSettings settings;
-                settings.width = job->width;
-                settings.height = job->height;
-                settings.threads = threads_;
-                settings.part = job->part;
+                trace::PathSettings settings = render::toPath(job->request, job->scene);
                 settings.tileSize = kTileSize;
                 render = std::make_unique<trace::PathRender>(scene, settings);
                 running = job->id;
@@ -156,7 +152,13 @@ void GlobalRenderer::request(const Scene& scene, int width, int height, uint64_t
     cancel_ = true;  // before the job is posted: the controller clears it when it takes the job
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        pending_ = Job{job_, scene, width, height, part};
+        render::RenderRequest r;
+        r.engine = render::Engine::Path;
+        r.width = width;
+        r.height = height;
+        r.threads = threads_;
+        r.path.part = part;
+        pending_ = Job{job_, scene, r};
         arrived_.reset();
         error_.clear();
     }

@@ -8,6 +8,7 @@
 
 #include "gl/objects.h"
 #include "image/image.h"
+#include "render/render_request.h"
 #include "scene/scene.h"
 #include "trace/mesh_bvh_cache.h"
 #include "trace/path_render.h"
@@ -71,8 +72,7 @@ private:
     struct Job {
         uint64_t id;
         Scene scene;
-        int width, height;
-        trace::PathPart part;
+        render::RenderRequest request;  // the path tracer at the image's size, for the light paths asked for
     };
     struct Pass {  // one finished pass, controller → UI
         uint64_t job = 0;

@@ -50,13 +50,8 @@ void ReferenceRenderer::controllerLoop() {
             running = 0;
             try {
                 auto scene = std::make_shared<trace::TraceScene>(job->scene, meshes_.get(job->scene));
-                trace::TraceSettings settings;
-                settings.width = job->width;
-                settings.height = job->height;
-                settings.threads = threads_;
+                trace::TraceSettings settings = render::toTrace(job->request, job->scene);
                 settings.tileSize = kTileSize;
-                settings.coverage = true;
-                settings.maxDepth = job->maxDepth;
                 trace.start(scene, settings);
                 running = job->id;
             } catch (const std::exception& e) {
@@ -112,7 +107,14 @@ void ReferenceRenderer::request(const Scene& scene, int width, int height, uint6
     started_ = std::chrono::steady_clock::now();
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        pending_ = Job{job_, scene, width, height, maxDepth};
+        render::RenderRequest r;
+        r.engine = render::Engine::Trace;
+        r.width = width;
+        r.height = height;
+        r.depth = maxDepth;
+        r.threads = threads_;
+        r.coverage = true;
+        pending_ = Job{job_, scene, r};
         error_.clear();
     }
     wake_.notify_all();

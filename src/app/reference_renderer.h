@@ -5,6 +5,7 @@
 
 #include "gl/objects.h"
 #include "image/image.h"
+#include "render/render_request.h"
 #include "scene/scene.h"
 #include "trace/mesh_bvh_cache.h"
 #include "trace/tile_renderer.h"
@@ -61,8 +62,7 @@ private:
     struct Job {
         uint64_t id;
         Scene scene;
-        int width, height;
-        int maxDepth;
+        render::RenderRequest request;  // the Whitted tracer at the image's size and depth, with coverage
     };
     void controllerLoop();
     void resize(int width, int height);

@@ -2,13 +2,16 @@
 // readers) into typed actions, once; and the state actions, applied without parsing anything again.
 #include "app/script.h"
 
+#include "image/image.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 #include "util/input_error.h"
 #include "util/messages.h"
 #include "util/read_file.h"
 
+#include <cctype>
 #include <glm/trigonometric.hpp>
+#include <limits>
 #include <type_traits>
 
 namespace shadelab::app {
@@ -30,6 +33,46 @@ Action pathAction(const JsonNode& a) {
 }
 
 float optionalFinite(const JsonNode& a, const char* key) { return a.has(key) ? a.child(key).finite() : 0.0f; }
+
+// A whole number whose range the render request checks (render/render_request.h), not the reader.
+int wholeNumber(const JsonNode& n) {
+    return n.integerIn(std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+}
+
+// The script's name for a render request's field: its keys are camelCase ("time_limit" -> "timeLimit").
+std::string scriptField(const std::string& field) {
+    std::string key;
+    for (size_t i = 0; i < field.size(); ++i)
+        key += field[i] == '_' && i + 1 < field.size() ? char(std::toupper(static_cast<unsigned char>(field[++i])))
+                                                       : field[i];
+    return key;
+}
+
+Action renderAction(const JsonNode& a) {
+    actions::Render r;
+    r.path = a.child("path").string();
+    if (r.path.empty()) a.failAt("path", "must not be empty");
+    render::RenderRequest& q = r.request;
+    if (a.has("renderer")) q.engine = a.child("renderer").oneOf(render::kEngineNames, "renderer");
+    if (q.engine == render::Engine::Both)
+        a.failAt("renderer", "'both' is the command line's side-by-side picture; render raster and trace apart");
+    if (a.has("size")) {
+        const JsonNode size = a.child("size");
+        if (size.arraySize() != 2) a.failAt("size", "expected [width, height]");
+        q.width = wholeNumber(size[0]);
+        q.height = wholeNumber(size[1]);
+        r.sizeGiven = true;
+    }
+    if (a.has("spp")) q.spp = wholeNumber(a.child("spp"));
+    if (a.has("depth")) q.depth = wholeNumber(a.child("depth"));
+    if (a.has("threads")) q.threads = wholeNumber(a.child("threads"));
+    if (a.has("timeLimit")) q.path.timeLimit = a.child("timeLimit").number();
+    if (a.has("estimator")) q.path.estimator = a.child("estimator").oneOf(trace::kPathEstimatorNames, "estimator");
+    if (a.has("lightPaths")) q.path.part = a.child("lightPaths").oneOf(trace::kPathPartNames, "light paths");
+    // The ranges are the request's, as every front end holds them; only the names are the script's.
+    if (std::optional<render::RequestProblem> p = render::check(q)) a.failAt(scriptField(p->field), p->reason);
+    return r;
+}
 
 // Every action: its name, its fields besides "action" and "frame", and its parser (fields in list order).
 struct ActionInfo {
@@ -150,12 +193,16 @@ const ActionInfo kActions[] = {
      [](const JsonNode& a) -> Action {
          return SmoothScreenshot{a.child("path").string(), a.has("timeout") ? a.child("timeout").positive() : 60.0f};
      }},
+    {"render",
+     {"path", "renderer", "size", "spp", "depth", "threads", "timeLimit", "estimator", "lightPaths"},
+     renderAction},
     {"undo", {}, [](const JsonNode&) -> Action { return Undo{}; }},
     {"redo", {}, [](const JsonNode&) -> Action { return Redo{}; }},
     {"resizeWindow",
      {"width", "height"},
      [](const JsonNode& a) -> Action {
-         return ResizeWindow{a.child("width").integerIn(1, 16384), a.child("height").integerIn(1, 16384)};
+         return ResizeWindow{a.child("width").integerIn(1, kMaxImageSide),
+                             a.child("height").integerIn(1, kMaxImageSide)};
      }},
 };
 

@@ -5,6 +5,7 @@
 
 #include "app/material_presets.h"
 #include "app/viewer_state.h"
+#include "render/render_request.h"
 #include "scene/light.h"
 #include "scene/raster_override.h"
 
@@ -133,6 +134,14 @@ struct SmoothScreenshot {
     std::string path;
     float timeout = 60.0f;
 };
+// Renders the current state offline, as `shadelab render` renders the saved scene (the same request, the same
+// bytes), and writes the PNG: a raster, Whitted or path-traced image at any size and sample count, whatever
+// the window shows. Without a size, the image's size in the window.
+struct Render {
+    std::string path;
+    render::RenderRequest request;
+    bool sizeGiven = false;
+};
 struct Undo {};  // the viewer holds the history (undo_history.h)
 struct Redo {};
 
@@ -146,7 +155,7 @@ using Action =
                  actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::WhiteFurnace, actions::Screenshot,
                  actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
                  actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag,
-                 actions::SmoothScreenshot, actions::Undo, actions::Redo>;
+                 actions::SmoothScreenshot, actions::Render, actions::Undo, actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

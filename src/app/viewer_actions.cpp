@@ -4,6 +4,7 @@
 #include "app/viewer.h"
 
 #include "app/app.h"
+#include "app/offline_render.h"
 #include "app/save_policy.h"
 #include "compare/difference_sites.h"
 #include "image/png.h"
@@ -118,6 +119,19 @@ void Viewer::performAction(const ScriptAction& a) {
                 waitStarted_ = glfwGetTime();
             } else if constexpr (std::is_same_v<T, Drag>) {
                 drag_ = SyntheticDrag{x, 0};
+            } else if constexpr (std::is_same_v<T, Render>) {
+                render::RenderRequest request = x.request;
+                if (!x.sizeGiven) request.width = renderW_, request.height = renderH_;
+                request.encoding = state_.encoding;
+                ensureRasterCurrent(false);  // the meshes of the state's scene are uploaded
+                try {
+                    writePng(x.path, renderOffline(*raster_, state_.scene, request));
+                } catch (const SettingError& e) {
+                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]." + e.field(),
+                                     e.reason());
+                }
+                std::fprintf(stderr, "shadelab: %s: %s render, %dx%d\n", x.path.c_str(),
+                             render::toString(request.engine), request.width, request.height);
             } else if constexpr (std::is_same_v<T, Undo>) {
                 undo();
             } else if constexpr (std::is_same_v<T, Redo>) {

@@ -68,6 +68,21 @@ int parseInt(const std::string& name, const std::string& value, int lo, int hi) 
     return v;
 }
 
+int parseWhole(const std::string& name, const std::string& value) {
+    const size_t digits = value.size() - (value.rfind('-', 0) == 0 ? 1 : 0);
+    if (digits == 0 || digits > 9 || value.find_first_not_of("0123456789", value.size() - digits) != std::string::npos)
+        throw UsageError(name + ": expected a whole number, got '" + value + "'");
+    return std::atoi(value.c_str());
+}
+
+double parseReal(const std::string& name, const std::string& value) {
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (value.empty() || std::isspace(static_cast<unsigned char>(value[0])) || *end != '\0')
+        throw UsageError(name + ": expected a number, got '" + value + "'");
+    return v;
+}
+
 float parseNumber(const std::string& name, const std::string& value, float lo, float hi) {
     char range[64];
     std::snprintf(range, sizeof range, "from %g to %g", double(lo), double(hi));
@@ -79,15 +94,13 @@ float parseNumber(const std::string& name, const std::string& value, float lo, f
 }
 
 std::pair<int, int> parseSize(const std::string& s) {
-    const std::string what = "--size: expected WxH with each side in 1..16384, got '" + s + "'";
+    const std::string what = "--size: expected WxH such as 1280x720, got '" + s + "'";
     size_t x = s.find_first_of("xX");
     if (x == std::string::npos || x == 0 || x + 1 >= s.size()) throw UsageError(what);
     auto side = [&](const std::string& part) {
         if (part.empty() || part.find_first_not_of("0123456789") != std::string::npos) throw UsageError(what);
         if (part.size() > 6) throw UsageError(what);
-        int v = std::atoi(part.c_str());
-        if (v < 1 || v > 16384) throw UsageError(what);
-        return v;
+        return std::atoi(part.c_str());
     };
     return {side(s.substr(0, x)), side(s.substr(x + 1))};
 }

@@ -29,10 +29,19 @@ private:
 // A whole number in [lo, hi] for option `name`. Throws UsageError naming the option.
 int parseInt(const std::string& name, const std::string& value, int lo, int hi);
 
+// A whole number, possibly negative, for option `name` whose range a render request checks
+// (render/render_request.h). Throws UsageError naming the option when it is not one.
+int parseWhole(const std::string& name, const std::string& value);
+
+// A number (NaN and infinities included: a render request refuses them by field) for option `name`. Throws
+// UsageError naming the option when it is not one.
+double parseReal(const std::string& name, const std::string& value);
+
 // A finite number in [lo, hi] for option `name`. Throws UsageError naming the option.
 float parseNumber(const std::string& name, const std::string& value, float lo, float hi);
 
-// "1920x1080" → {1920, 1080}; each side in [1, 16384]. Throws UsageError.
+// "1920x1080" → {1920, 1080}: two whole numbers of up to six digits (a render request checks their range).
+// Throws UsageError naming --size.
 std::pair<int, int> parseSize(const std::string& s);
 
 // The word `value` of option `name`, looked up in an enum's name table (util/name_table.h). Throws

@@ -43,12 +43,13 @@ uint64_t defaultMaxMemory() {
 }
 
 uint64_t estimateRenderBytes(const Scene& scene, const RenderOptions& o) {
-    const uint64_t pixels = uint64_t(o.width) * uint64_t(o.height);
-    const bool raster = o.renderer == RendererChoice::Raster || o.renderer == RendererChoice::Both;
-    const bool trace = o.renderer != RendererChoice::Raster;
+    const render::RenderRequest& r = o.request;
+    const uint64_t pixels = uint64_t(r.width) * uint64_t(r.height);
+    const bool raster = r.engine == render::Engine::Raster || r.engine == render::Engine::Both;
+    const bool trace = r.engine != render::Engine::Raster;
     uint64_t bytes = 0;
     // The path tracer's per-pixel sums and squares (2 × 3 doubles) and sample count.
-    if (o.renderer == RendererChoice::Path) bytes += pixels * (48 + 4);
+    if (r.engine == render::Engine::Path) bytes += pixels * (48 + 4);
     if (raster) bytes += pixels * kRasterBytesPerPixel + triangles(scene) * kRasterBytesPerTriangle;
     if (trace) {
         const uint64_t n = triangles(scene);
@@ -62,8 +63,8 @@ uint64_t estimateRenderBytes(const Scene& scene, const RenderOptions& o) {
 void checkMemoryBudget(const Scene& scene, const RenderOptions& o) {
     const uint64_t need = estimateRenderBytes(scene, o), limit = o.maxMemory ? o.maxMemory : defaultMaxMemory();
     if (need <= limit) return;
-    throw InputError(o.input, "a " + std::to_string(o.width) + "x" + std::to_string(o.height) + " " +
-                                  toString(o.renderer) + " render of this scene needs about " +
+    throw InputError(o.input, "a " + std::to_string(o.request.width) + "x" + std::to_string(o.request.height) + " " +
+                                  toString(o.request.engine) + " render of this scene needs about " +
                                   std::to_string(need / kMiB) + " MiB, over the limit of " +
                                   std::to_string(limit / kMiB) + " MiB (--max-memory)");
 }

@@ -44,60 +44,34 @@ std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageT
     return context;
 }
 
-Rendered rasterize(const Scene& scene, const RenderOptions& o, bool coverage, StageTimer& timer) {
+Rendered rasterize(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
     raster::RasterRenderer renderer;
     timer.stage("shader compile");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
-    raster::OffscreenOptions offscreen;
-    offscreen.width = o.width;
-    offscreen.height = o.height;
-    offscreen.spp = o.spp;
-    offscreen.encoding = o.encoding;
-    offscreen.coverage = coverage;
-    raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, offscreen);
+    raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, render::toOffscreen(request));
     timer.stageSplit("draw, " + std::to_string(r.bands) + " band(s) (incl. lazy shader compile)", r.drawMs,
                      "readback + conversion", r.readMs);
     return {std::move(r.pixels), std::move(r.coverage)};
 }
 
-// The tracer's depth: --depth, else the scene's; compared with the rasterizer (--renderer both), the
-// comparison's (compare/comparison.h).
-int referenceDepth(const Scene& scene, const RenderOptions& o) {
-    return o.renderer == RendererChoice::Both ? comparisonDepth(scene, o.depth) : o.depth.value_or(scene.maxDepth);
-}
-
-Rendered traceReference(const Scene& scene, const RenderOptions& o, StageTimer& timer) {
-    trace::TraceSettings settings;
-    settings.width = o.width;
-    settings.height = o.height;
-    settings.spp = o.spp;
-    settings.threads = o.threads;
-    settings.maxDepth = referenceDepth(scene, o);
-    settings.coverage = o.renderer == RendererChoice::Both;
+Rendered traceReference(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+    const trace::TraceSettings settings = render::toTrace(request, scene);
     trace::TraceOutput out;
     {
         ProgressBar bar("tracing");
         out = trace::traceImage(scene, settings, [&bar](float f) { bar.update(f); });
     }
     timer.stage("trace");
-    Rendered r{toImage8(out.color, o.encoding), std::move(out.coverage)};
+    Rendered r{toImage8(out.color, request.encoding), std::move(out.coverage)};
     timer.stage("conversion");
     return r;
 }
 
-// The path tracer (design.md §8): settings from the flags, a progress bar, and one line saying how many
+// The path tracer (design.md §8): settings from the request, a progress bar, and one line saying how many
 // samples it took and how noisy the image is.
-Image8 pathTrace(const Scene& scene, const RenderOptions& o, StageTimer& timer) {
-    trace::PathSettings settings;
-    settings.width = o.width;
-    settings.height = o.height;
-    settings.spp = o.spp;
-    settings.threads = o.threads;
-    settings.maxDepth = o.depth.value_or(scene.maxDepth);
-    settings.timeLimit = o.timeLimit;
-    settings.estimator = o.estimator;
-    settings.part = o.part;
+Image8 pathTrace(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+    const trace::PathSettings settings = render::toPath(request, scene);
     auto traced = std::make_shared<const trace::TraceScene>(scene);
     timer.stage("BVH build");
     trace::PathOutput out;
@@ -106,13 +80,13 @@ Image8 pathTrace(const Scene& scene, const RenderOptions& o, StageTimer& timer) 
         out = trace::pathTraceImage(traced, settings, [&bar](float f) { bar.update(f); });
     }
     timer.stage("path trace");
-    const double paths = double(o.width) * double(o.height) * double(out.spp);
+    const double paths = double(settings.width) * double(settings.height) * double(out.spp);
     std::fprintf(stderr,
                  "shadelab: path traced %d samples per pixel%s in %.2f s (%.2f M paths/s, %d bounces); mean "
                  "standard error %.2f (8-bit sRGB units)\n",
-                 out.spp, o.timeLimit > 0.0 && out.spp < o.spp ? " (time limit)" : "", out.seconds,
+                 out.spp, settings.timeLimit > 0.0 && out.spp < settings.spp ? " (time limit)" : "", out.seconds,
                  paths / std::max(out.seconds, 1e-9) * 1e-6, settings.maxDepth, out.meanStandardError8);
-    Image8 pixels = toImage8(out.color, o.encoding);
+    Image8 pixels = toImage8(out.color, request.encoding);
     timer.stage("conversion");
     return pixels;
 }
@@ -136,7 +110,8 @@ void failOnWarning(const std::string& text) { throw InputError("", text + " (an 
 
 // The render itself; `doing` names the stage in progress, for an out-of-memory message.
 int render(const RenderOptions& o, std::string& doing) {
-    const bool needRaster = o.renderer == RendererChoice::Raster || o.renderer == RendererChoice::Both;
+    const render::RenderRequest& request = o.request;
+    const bool needRaster = request.engine == render::Engine::Raster || request.engine == render::Engine::Both;
     StageTimer timer;
     // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
     GltfImportOptions gltf;
@@ -165,21 +140,21 @@ int render(const RenderOptions& o, std::string& doing) {
     checkMemoryBudget(scene, o);
 
     Image8 output;
-    if (o.renderer == RendererChoice::Raster) {
-        output = rasterize(scene, o, false, timer).pixels;
-    } else if (o.renderer == RendererChoice::Trace) {
-        output = traceReference(scene, o, timer).pixels;
-    } else if (o.renderer == RendererChoice::Path) {
-        output = pathTrace(scene, o, timer);
+    if (request.engine == render::Engine::Raster) {
+        output = rasterize(scene, request, timer).pixels;
+    } else if (request.engine == render::Engine::Trace) {
+        output = traceReference(scene, request, timer).pixels;
+    } else if (request.engine == render::Engine::Path) {
+        output = pathTrace(scene, request, timer);
     } else {
-        Rendered a = rasterize(scene, o, true, timer);
-        Rendered b = traceReference(scene, o, timer);
+        Rendered a = rasterize(scene, request, timer);
+        Rendered b = traceReference(scene, request, timer);
         CompareResult cmp = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
         Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
         output = sideBySide({&a.pixels, &b.pixels, &heat});
         timer.stage("compare + heatmap");
         std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
-                     referenceDepth(scene, o), compareSummary(cmp).c_str());
+                     render::traceDepth(request, scene), compareSummary(cmp).c_str());
         // The verdict is under the strict gates of design.md §4; say in words where the images differ and why.
         const DifferenceSites sites = differenceSites(a.pixels, b.pixels, a.coverage, cmp);
         std::fprintf(stderr, "%s\n", describeDifference(scene, sites, cmp.gates.threshold).c_str());
@@ -194,7 +169,7 @@ int render(const RenderOptions& o, std::string& doing) {
     if (o.verbose)
         std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n",
                      isStdout(o.output) ? "stdout" : o.output.c_str(), output.width, output.height,
-                     toString(o.encoding), png.size());
+                     toString(request.encoding), png.size());
     return 0;
 }
 
@@ -213,6 +188,9 @@ int renderCommand(int argc, char** argv) {
     std::string doing = "loading the scene";
     try {
         return render(o, doing);
+    } catch (const SettingError& e) {
+        // A limit only a renderer knows (the GL's widest target): worded as the flag it names, exit 2.
+        throw UsageError(flagOf(e.field()) + ": " + e.reason());
     } catch (const std::bad_alloc&) {
         throw InputError(o.input, "out of memory while " + doing + " (see --max-memory and --size)");
     }

@@ -4,9 +4,9 @@
 #include "cli/args.h"
 #include "cli/memory_budget.h"
 #include "cli/raster_flags.h"
-#include "raster/offscreen.h"
 #include "util/input_error.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace shadelab::cli {
@@ -28,7 +28,7 @@ const char* const kHelpHead =
     "  --model NAME               phong | blinn-phong | pbr, blinn-phong also written blinn (default: the scene's)\n"
     "  --terms LIST               comma-separated terms to switch on, the rest off:\n"
     "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
-    "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, 16, ... (default 1);\n"
+    "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, ..., 64 (default 1);\n"
     "                             --renderer path: random samples, any N from 1 (default 16)\n"
     "  --camera fit|file|N        fit: frame the scene's bounds (default for a .gltf/.glb); file: the scene\n"
     "                             file's camera (default for a .json) or a model's first glTF camera; N: the\n"
@@ -61,6 +61,12 @@ const char* const kHelpTail =
     "exit codes: 0 written, 1 bad input or rendering failure (one line on stderr), 2 usage error\n";
 
 }  // namespace
+
+std::string flagOf(const std::string& field) {
+    std::string flag = "--" + field;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return flag;
+}
 
 std::string renderHelp() { return std::string(kHelpHead) + kRasterFlagsHelp + kHelpTail; }
 
@@ -104,24 +110,24 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("-o")) o.output = *v;
     if (auto v = args.value("--output")) o.output = *v;
     if (o.output.empty()) throw UsageError("render needs -o out.png");
-    if (auto v = args.value("--size")) std::tie(o.width, o.height) = parseSize(*v);
+    render::RenderRequest& r = o.request;
+    if (auto v = args.value("--size")) std::tie(r.width, r.height) = parseSize(*v);
     if (auto v = args.value("--max-memory")) o.maxMemory = parseMemorySize(*v);
     if (auto v = args.value("--model")) o.model = parseChoice("--model", *v, kShadingModelNames);
     if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
-    if (auto v = args.value("--encoding")) o.encoding = parseChoice("--encoding", *v, kEncodingNames);
-    if (auto v = args.value("--renderer")) o.renderer = parseChoice("--renderer", *v, kRendererNames);
-    const bool path = o.renderer == RendererChoice::Path;
-    if (path) o.spp = 16;
-    if (auto v = args.value("--spp")) o.spp = parseInt("--spp", *v, 1, path ? 1 << 20 : 64);
+    if (auto v = args.value("--encoding")) r.encoding = parseChoice("--encoding", *v, kEncodingNames);
+    if (auto v = args.value("--renderer")) r.engine = parseChoice("--renderer", *v, render::kEngineNames);
+    if (auto v = args.value("--spp")) r.spp = parseWhole("--spp", *v);
     if (auto v = args.value("--camera")) o.camera = parseCameraFlag(*v);
-    if (!path) raster::samplesPerSide(o.spp);  // a perfect square
-    for (const char* flag : {"--time-limit", "--estimator", "--light-paths"})
-        if (!path && args.value(flag)) throw UsageError(std::string(flag) + " is for --renderer path");
-    if (auto v = args.value("--time-limit")) o.timeLimit = parseNumber("--time-limit", *v, 0.0f, 1e7f);
-    if (auto v = args.value("--estimator")) o.estimator = parseChoice("--estimator", *v, trace::kPathEstimatorNames);
-    if (auto v = args.value("--light-paths")) o.part = parseChoice("--light-paths", *v, trace::kPathPartNames);
-    if (auto v = args.value("--threads")) o.threads = parseInt("--threads", *v, 0, 1024);
-    if (auto v = args.value("--depth")) o.depth = parseInt("--depth", *v, 0, 64);
+    if (auto v = args.value("--time-limit")) r.path.timeLimit = parseReal("--time-limit", *v);
+    if (auto v = args.value("--estimator"))
+        r.path.estimator = parseChoice("--estimator", *v, trace::kPathEstimatorNames);
+    if (auto v = args.value("--light-paths")) r.path.part = parseChoice("--light-paths", *v, trace::kPathPartNames);
+    if (auto v = args.value("--threads")) r.threads = parseWhole("--threads", *v);
+    if (auto v = args.value("--depth")) r.depth = parseWhole("--depth", *v);
+    // The ranges are the request's, as every front end holds them; only the words are the command line's.
+    if (std::optional<render::RequestProblem> p = render::check(r))
+        throw UsageError(flagOf(p->field) + ": " + p->reason);
     if (auto v = args.value("--gl-backend")) o.backend = parseChoice("--gl-backend", *v, gl::kGlBackendNames);
     o.raster = parseRasterFlags(args);
     o.allowExternalPaths = args.flag("--allow-external-paths");

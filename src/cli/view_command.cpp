@@ -6,6 +6,7 @@
 #include "cli/args.h"
 #include "cli/raster_flags.h"
 #include "cli/render_options.h"
+#include "image/image.h"
 #include "scene/scene_load.h"
 #include "util/input_error.h"
 #include "util/messages.h"
@@ -77,7 +78,13 @@ int viewCommand(int argc, char** argv) {
     if (args.positionals().size() > 1)
         throw UsageError("view takes at most one scene file, got " + std::to_string(args.positionals().size()));
     app::ViewerOptions options;
-    if (auto v = args.value("--size")) std::tie(options.width, options.height) = parseSize(*v);
+    if (auto v = args.value("--size")) {
+        std::tie(options.width, options.height) = parseSize(*v);
+        const int w = options.width, h = options.height;
+        if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+            throw UsageError("--size: each side must be 1.." + std::to_string(kMaxImageSide) + " pixels, got " +
+                             std::to_string(w) + "x" + std::to_string(h));
+    }
     if (auto v = args.value("--frames")) options.frames = parseInt("--frames", *v, 0, 99999999);
     if (auto v = args.value("--screenshot")) options.screenshot = *v;
     if (auto v = args.value("--window-screenshot")) options.windowScreenshot = *v;

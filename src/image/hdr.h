@@ -3,6 +3,8 @@
 // problem is one InputError naming the file. Not a writer (tools/make_sky_hdr.py writes the shipped one).
 #pragma once
 
+#include "image/image.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,7 +18,7 @@ struct HdrImage {
 };
 
 inline constexpr uint64_t kMaxHdrFileBytes = uint64_t(256) << 20;  // an environment map file
-inline constexpr int kMaxHdrSide = 16384;                          // pixels per side
+inline constexpr int kMaxHdrSide = kMaxImageSide;                  // pixels per side
 inline constexpr uint64_t kMaxHdrPixels = uint64_t(16) << 20;      // 16 Mpixels (192 MiB of floats)
 
 // Reads `path` (util/read_file.h, at most kMaxHdrFileBytes) and decodes it.

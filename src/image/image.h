@@ -8,6 +8,9 @@
 
 namespace shadelab {
 
+// The largest image side, in pixels, that shadelab renders, reads or writes: every front end's size limit.
+inline constexpr int kMaxImageSide = 16384;
+
 struct ImageF {
     int width = 0;
     int height = 0;

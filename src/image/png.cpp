@@ -204,8 +204,9 @@ PngFile readPngFile(const std::string& path) {
         throw InputError(path, "corrupt PNG: IHDR declares " + std::to_string(w) + "x" + std::to_string(h) + " pixels");
     if (uint64_t(w) * uint64_t(h) > kMaxPngPixels)
         throw InputError(path, "PNG of " + std::to_string(w) + "x" + std::to_string(h) +
-                                   " pixels exceeds the limit of " + std::to_string(kMaxPngPixels) +
-                                   " pixels (16384x16384); nothing was decoded");
+                                   " pixels exceeds the limit of " + std::to_string(kMaxPngPixels) + " pixels (" +
+                                   std::to_string(kMaxImageSide) + "x" + std::to_string(kMaxImageSide) +
+                                   "); nothing was decoded");
     f.width = int(w);
     f.height = int(h);
     return f;

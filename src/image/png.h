@@ -17,8 +17,8 @@ std::vector<uint8_t> encodePng(const Image8& img);
 // destination is then untouched.
 void writePng(const std::string& path, const Image8& img);
 
-// Largest image readPng decodes: 16384 × 16384 pixels (1 GiB as RGBA), as large as shadelab renders.
-inline constexpr uint64_t kMaxPngPixels = uint64_t(16384) * 16384;
+// Largest image readPng decodes: kMaxImageSide² pixels (1 GiB as RGBA), as large as shadelab renders.
+inline constexpr uint64_t kMaxPngPixels = uint64_t(kMaxImageSide) * kMaxImageSide;
 
 // A PNG file's bytes with its size read from the IHDR chunk, before anything is decoded.
 struct PngFile {

@@ -1,6 +1,7 @@
 // _Renderer and _probe: rendering and the lighting probe, with the GIL released while they run so that other Python
 // threads (a notebook's widgets, a Dask worker's heartbeat) keep going.
 #include "app/probe.h"
+#include "image/image.h"
 #include "python/bindings.h"
 #include "python/py_json.h"
 #include "python/renderer.h"
@@ -23,7 +24,12 @@ E named(const EnumName<E> (&table)[N], const std::string& word, const char* argu
     throw UsageError(std::string(argument) + ": unknown value '" + word + "'; expected " + nameChoices(table));
 }
 
-Engine engineNamed(const std::string& word) { return named(kEngineNames, word, "renderer"); }
+template <typename E, size_t N>
+std::optional<E> namedIfGiven(const EnumName<E> (&table)[N], const std::optional<std::string>& word,
+                              const char* argument) {
+    if (!word) return std::nullopt;
+    return named(table, *word, argument);
+}
 
 }  // namespace
 
@@ -35,17 +41,22 @@ void bindRender(py::module_& m) {
              py::arg("backend") = "auto")
         .def(
             "render",
-            [](Renderer& r, const SceneHandle& scene, int width, int height, const std::string& engine, int spp,
-               const std::string& encoding, std::optional<int> depth, int threads, bool coverage) {
-                RenderRequest request;
+            [](Renderer& r, const SceneHandle& scene, int width, int height, const std::string& engine,
+               std::optional<int> spp, const std::string& encoding, std::optional<int> depth, int threads,
+               bool coverage, std::optional<double> timeLimit, const std::optional<std::string>& estimator,
+               const std::optional<std::string>& lightPaths) {
+                render::RenderRequest request;
                 request.width = width;
                 request.height = height;
-                request.engine = engineNamed(engine);
+                request.engine = named(render::kEngineNames, engine, "renderer");
                 request.spp = spp;
                 request.encoding = named(kEncodingNames, encoding, "encoding");
                 request.depth = depth;
                 request.threads = threads;
                 request.coverage = coverage;
+                request.path.timeLimit = timeLimit;
+                request.path.estimator = namedIfGiven(trace::kPathEstimatorNames, estimator, "estimator");
+                request.path.part = namedIfGiven(trace::kPathPartNames, lightPaths, "light_paths");
                 validate(request);
                 const Scene copy = scene.scene();  // O(objects); Python may edit the original meanwhile
                 auto image = std::make_shared<ImageData>();
@@ -55,9 +66,10 @@ void bindRender(py::module_& m) {
                 }
                 return image;
             },
-            py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("renderer") = "raster", py::arg("spp") = 1,
-            py::arg("encoding") = "srgb", py::arg("depth") = py::none(), py::arg("threads") = 0,
-            py::arg("coverage") = false)
+            py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("renderer") = "raster",
+            py::arg("spp") = py::none(), py::arg("encoding") = "srgb", py::arg("depth") = py::none(),
+            py::arg("threads") = 0, py::arg("coverage") = false, py::arg("time_limit") = py::none(),
+            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none())
         .def("context_info",
              [](Renderer& r) {
                  gl::ContextInfo info;
@@ -82,9 +94,9 @@ void bindRender(py::module_& m) {
     m.def(
         "_probe",
         [](const SceneHandle& scene, int x, int y, int width, int height) {
-            if (width < 1 || height < 1 || width > 16384 || height > 16384)
-                throw UsageError("size: each side must be 1..16384 pixels, got " + std::to_string(width) + "x" +
-                                 std::to_string(height));
+            if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+                throw UsageError("size: each side must be 1.." + std::to_string(kMaxImageSide) + " pixels, got " +
+                                 std::to_string(width) + "x" + std::to_string(height));
             if (x < 0 || y < 0 || x >= width || y >= height)
                 throw UsageError("pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside a " +
                                  std::to_string(width) + "x" + std::to_string(height) + " image");

@@ -57,21 +57,12 @@ struct BusyScope {
 
 }  // namespace
 
-void validate(const RenderRequest& r) {
-    constexpr int kMaxSide = 16384;  // the binary's --size limit
-    if (r.width < 1 || r.height < 1 || r.width > kMaxSide || r.height > kMaxSide)
-        throw UsageError("size: each side must be 1..16384 pixels, got " + std::to_string(r.width) + "x" +
-                         std::to_string(r.height));
-    const int k = int(std::lround(std::sqrt(double(std::max(r.spp, 0)))));
-    if (r.engine == Engine::Path && (r.spp < 1 || r.spp > 1 << 20))
-        throw UsageError("spp: the path tracer takes 1 to 1048576 samples per pixel, got " + std::to_string(r.spp));
-    if (r.engine != Engine::Path && (r.spp < 1 || r.spp > 64 || k * k != r.spp))
-        throw UsageError("spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " +
-                         std::to_string(r.spp));
-    if (r.depth && (*r.depth < 0 || *r.depth > 64))
-        throw UsageError("depth: must be in [0, 64], got " + std::to_string(*r.depth));
-    if (r.threads < 0 || r.threads > 1024)
-        throw UsageError("threads: must be in [0, 1024] (0 = every core), got " + std::to_string(r.threads));
+void validate(const render::RenderRequest& r) {
+    if (r.engine == render::Engine::Both)
+        throw UsageError(
+            "renderer: 'both' is the command line's side-by-side picture; render raster and trace and compare them "
+            "with shadelab.compare");
+    if (std::optional<render::RequestProblem> p = render::check(r)) throw UsageError(p->field + ": " + p->reason);
 }
 
 Renderer::Renderer(gl::GlBackend backend) : backend_(backend) {}
@@ -98,19 +89,24 @@ gl::ContextInfo Renderer::contextInfo() {
     return session()->info();
 }
 
-ImageData Renderer::render(const Scene& scene, const RenderRequest& request) {
+ImageData Renderer::render(const Scene& scene, const render::RenderRequest& request) {
     validate(request);
     std::lock_guard<std::mutex> lock(mutex_);
     BusyScope busy(busy_);
-    switch (request.engine) {
-        case Engine::Raster: return rasterize(scene, request);
-        case Engine::Path: return pathTrace(scene, request);
-        case Engine::Trace: break;
+    try {
+        switch (request.engine) {
+            case render::Engine::Raster: return rasterize(scene, request);
+            case render::Engine::Path: return pathTrace(scene, request);
+            case render::Engine::Trace:
+            case render::Engine::Both: break;
+        }
+        return trace(scene, request);
+    } catch (const SettingError& e) {
+        throw UsageError(e.what());  // a limit only a renderer knows (the GL's widest target), by keyword
     }
-    return trace(scene, request);
 }
 
-ImageData Renderer::rasterize(const Scene& scene, const RenderRequest& request) {
+ImageData Renderer::rasterize(const Scene& scene, const render::RenderRequest& request) {
     if (scene.lights.size() > size_t(kMaxLights))
         throw InputError("", "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
     ImageData out;
@@ -125,12 +121,7 @@ ImageData Renderer::rasterize(const Scene& scene, const RenderRequest& request) 
             raster_->uploadMeshes(scene);
             uploaded_ = std::move(geometry);
         }
-        raster::OffscreenOptions o;
-        o.width = request.width;
-        o.height = request.height;
-        o.spp = request.spp;
-        o.encoding = request.encoding;
-        o.coverage = request.coverage;
+        raster::OffscreenOptions o = render::toOffscreen(request);
         o.keepLinear = true;
         raster::OffscreenResult r = raster::renderOffscreen(*raster_, scene, o);
         out.linear = std::move(r.linear);
@@ -144,14 +135,8 @@ ImageData Renderer::rasterize(const Scene& scene, const RenderRequest& request) 
     return out;
 }
 
-ImageData Renderer::trace(const Scene& scene, const RenderRequest& request) {
-    trace::TraceSettings s;
-    s.width = request.width;
-    s.height = request.height;
-    s.spp = request.spp;
-    s.threads = request.threads;
-    s.maxDepth = request.depth.value_or(scene.maxDepth);
-    s.coverage = request.coverage;
+ImageData Renderer::trace(const Scene& scene, const render::RenderRequest& request) {
+    const trace::TraceSettings s = render::toTrace(request, scene);
     const Clock::time_point t0 = Clock::now();
     const trace::TraceScene prepared(scene, bvh_.get(scene));
     trace::TraceOutput traced = trace::traceImage(prepared, s);
@@ -159,14 +144,8 @@ ImageData Renderer::trace(const Scene& scene, const RenderRequest& request) {
 }
 
 // The path tracer as `shadelab render --renderer path` runs it (same settings, same bytes).
-ImageData Renderer::pathTrace(const Scene& scene, const RenderRequest& request) {
-    trace::PathSettings s;
-    s.width = request.width;
-    s.height = request.height;
-    s.spp = request.spp;
-    s.threads = request.threads;
-    s.maxDepth = request.depth.value_or(scene.maxDepth);
-    s.coverage = request.coverage;
+ImageData Renderer::pathTrace(const Scene& scene, const render::RenderRequest& request) {
+    const trace::PathSettings s = render::toPath(request, scene);
     const Clock::time_point t0 = Clock::now();
     trace::PathOutput traced =
         trace::pathTraceImage(std::make_shared<const trace::TraceScene>(scene, bvh_.get(scene)), s);

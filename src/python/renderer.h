@@ -1,15 +1,15 @@
 // Renderer: many renders through one GL context (GlSession) and one RasterRenderer, whose programs, shadow maps and
 // environment cubes stay warm between renders, plus the tracer with its mesh BVH kept while the geometry is the
-// same. The same library calls as `shadelab render` (raster::renderOffscreen, trace::traceImage, toImage8), so the
-// pixels are the binary's. Thread-safe: renders are serialised. Pure C++, no Python.
+// same. The same request (render/render_request.h) and library calls as `shadelab render` (raster::renderOffscreen,
+// trace::traceImage, toImage8), so the pixels are the binary's. Thread-safe: renders are serialised. Pure C++, no
+// Python.
 #pragma once
 
 #include "gl/headless_context.h"
-#include "image/encoding.h"
 #include "python/image_data.h"
+#include "render/render_request.h"
 #include "scene/scene.h"
 #include "trace/mesh_bvh_cache.h"
-#include "util/name_table.h"
 
 #include <atomic>
 #include <memory>
@@ -25,27 +25,10 @@ namespace shadelab::python {
 
 class GlSession;
 
-enum class Engine { Raster, Trace, Path };
-
-// The words of render(renderer=...), as the binary's --renderer.
-inline constexpr EnumName<Engine> kEngineNames[] = {
-    {Engine::Raster, "raster"},
-    {Engine::Trace, "trace"},
-    {Engine::Path, "path"},
-};
-
-struct RenderRequest {
-    int width = 1280, height = 720;  // pixels, 1..16384 each (the binary's --size)
-    Engine engine = Engine::Raster;
-    int spp = 1;                         // a perfect square k² from 1 to 64 (raster, trace); path: 1..1048576
-    Encoding encoding = Encoding::Srgb;  // of the 8-bit pixels; the linear floats are kept either way
-    std::optional<int> depth;            // tracer's secondary-ray depth; unset: the scene's maxDepth
-    int threads = 0;                     // tracer workers; 0 = every core
-    bool coverage = false;               // also return coverage ids
-};
-
-// Throws UsageError naming the argument (size, spp, depth, threads) when a request is out of range.
-void validate(const RenderRequest& r);
+// The request's problem as Python words it: UsageError "<keyword>: <reason>" (the keyword is the request's
+// field: size, spp, depth, threads, time_limit, estimator, light_paths). Also refuses Engine::Both, which is
+// the command line's side-by-side picture; Python compares two renders with shadelab.compare.
+void validate(const render::RenderRequest& r);
 
 class Renderer {
 public:
@@ -56,7 +39,7 @@ public:
 
     // Renders; the GL context is created by the first raster render. Throws InputError, UsageError,
     // gl::ContextError.
-    ImageData render(const Scene& scene, const RenderRequest& request);
+    ImageData render(const Scene& scene, const render::RenderRequest& request);
 
     // The GL context's backend, device and strings (creating the context when there is none yet).
     gl::ContextInfo contextInfo();
@@ -69,9 +52,9 @@ public:
 
 private:
     std::shared_ptr<GlSession> session();  // under mutex_
-    ImageData rasterize(const Scene& scene, const RenderRequest& request);
-    ImageData trace(const Scene& scene, const RenderRequest& request);
-    ImageData pathTrace(const Scene& scene, const RenderRequest& request);
+    ImageData rasterize(const Scene& scene, const render::RenderRequest& request);
+    ImageData trace(const Scene& scene, const render::RenderRequest& request);
+    ImageData pathTrace(const Scene& scene, const render::RenderRequest& request);
 
     std::mutex mutex_;
     gl::GlBackend backend_;

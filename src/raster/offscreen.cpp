@@ -2,6 +2,7 @@
 #include "raster/offscreen.h"
 
 #include "gl/gl_api.h"
+#include "scene/sample_grid.h"
 #include "util/input_error.h"
 
 #include <algorithm>
@@ -39,23 +40,15 @@ glm::vec2 gridSampleOffset(int k, int index) {
     return {(float(a) + 0.5f) / float(k) - 0.5f, (float(b) + 0.5f) / float(k) - 0.5f};
 }
 
-int samplesPerSide(int spp) {
-    int k = int(std::lround(std::sqrt(double(std::max(spp, 0)))));
-    if (spp < 1 || spp > 64 || k * k != spp)
-        throw UsageError("--spp: expected a perfect square from 1 to 64 (1, 4, 9, 16, ...), got " +
-                         std::to_string(spp));
-    return k;
-}
-
 OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, const OffscreenOptions& o) {
-    const int k = samplesPerSide(o.spp);
+    const int k = gridSamplesPerSide(o.spp);
     const int hiW = o.width * k, hiH = o.height * k;
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (hiW > maxSize)
-        throw UsageError("--size " + std::to_string(o.width) + " wide with --spp " + std::to_string(o.spp) +
-                         " needs a " + std::to_string(hiW) + "-pixel-wide target; this GL allows " +
-                         std::to_string(maxSize));
+        throw SettingError("size", std::to_string(o.width) + " pixels wide at " + std::to_string(o.spp) +
+                                       " samples per pixel needs a " + std::to_string(hiW) +
+                                       "-pixel-wide target; this GL allows " + std::to_string(maxSize));
 
     OffscreenResult r;
     r.pixels.width = o.width;

@@ -5,6 +5,7 @@
 
 #include "image/encode.h"
 #include "image/image.h"
+#include "raster/offscreen_options.h"
 #include "raster/raster_renderer.h"
 #include "scene/scene.h"
 
@@ -13,15 +14,6 @@
 #include <vector>
 
 namespace shadelab::raster {
-
-struct OffscreenOptions {
-    int width = 1280, height = 720;  // output pixels
-    int spp = 1;                     // samples per pixel: a perfect square k², on the grid (i + (a+0.5)/k)
-    Encoding encoding = Encoding::Srgb;
-    bool coverage = false;                     // also return coverage ids (of sample a = b = k/2, as the tracer)
-    bool keepLinear = false;                   // also return the linear floats the conversion read (RGBA)
-    size_t maxTargetBytes = size_t(32) << 20;  // float colour target budget per band: 1920x1080 is one band
-};
 
 struct OffscreenResult {
     Image8 pixels;                   // RGB
@@ -32,14 +24,12 @@ struct OffscreenResult {
     double readMs = 0.0;  // readback + downsampling + conversion
 };
 
-// k for spp = k²; throws UsageError naming --spp when spp is not a perfect square in [1, 64].
-int samplesPerSide(int spp);
-
 // Sample `index` (0 .. k²-1, row by row) of the k×k grid, as an offset from the pixel centre in pixels (x right,
 // y down): the sample renderOffscreen's supersampled image holds at pixel (x·k + a, y·k + b).
 glm::vec2 gridSampleOffset(int k, int index);
 
-// Throws UsageError when the supersampled width exceeds the GL maximum texture size.
+// Throws SettingError (util/input_error.h) for a sample count off the grid (scene/sample_grid.h), or for a
+// size whose supersampled width exceeds the GL maximum texture size.
 OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, const OffscreenOptions& options);
 
 }  // namespace shadelab::raster

@@ -1,5 +1,5 @@
-// PathSettings: how the path tracer renders (design.md §8), as a plain struct the CLI, the viewer, the
-// Python package and the tests all fill. validate() is the one place that rejects bad values.
+// PathSettings: how the path tracer renders (design.md §8), as a plain struct. The front ends fill it from a
+// render request (render/render_request.h); validate() is the path tracer's own guard.
 #pragma once
 
 #include "util/name_table.h"
@@ -39,6 +39,9 @@ inline std::optional<PathEstimator> parsePathEstimator(std::string_view s) {
 }
 inline std::optional<PathPart> parsePathPart(std::string_view s) { return lookupName(kPathPartNames, s); }
 
+inline constexpr int kMaxPathSamples = 1 << 20;  // samples per pixel
+inline constexpr double kMaxTimeLimit = 1e7;     // seconds
+
 struct PathSettings {
     int width = 1280, height = 720;  // pixels, >= 1
     int spp = 16;                    // samples per pixel, >= 1 (any count: samples are random, not a grid)
@@ -53,7 +56,7 @@ struct PathSettings {
     PathPart part = PathPart::All;
 };
 
-// Throws std::invalid_argument with a message fit for the command line.
+// Throws SettingError (a std::invalid_argument, util/input_error.h) naming the field, e.g. "spp: ...".
 void validate(const PathSettings& s);
 
 }  // namespace shadelab::trace

@@ -8,6 +8,7 @@
 #include "trace/path_render.h"
 #include "trace/trace_image.h"
 #include "trace/trace_test_util.h"
+#include "util/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -415,16 +416,24 @@ TEST(PathDeterminism, ACancelledPassKeepsWholePixels) {
     EXPECT_EQ(render.samples(), 4);
 }
 
-TEST(PathSettingsValidation, BadValuesAreRefusedWithTheFlagNamed) {
+TEST(PathSettingsValidation, BadValuesAreRefusedWithTheFieldNamed) {
+    auto field = [](const PathSettings& s) -> std::string {
+        try {
+            validate(s);
+        } catch (const SettingError& e) {
+            return e.field();
+        }
+        return "";
+    };
     PathSettings s;
     s.spp = 0;
-    EXPECT_THROW(validate(s), std::invalid_argument);
+    EXPECT_EQ(field(s), "spp");
     s = PathSettings{};
     s.timeLimit = -1.0;
-    EXPECT_THROW(validate(s), std::invalid_argument);
+    EXPECT_EQ(field(s), "time_limit");
     s = PathSettings{};
     s.maxDepth = 65;
-    EXPECT_THROW(validate(s), std::invalid_argument);
+    EXPECT_EQ(field(s), "depth");
     EXPECT_NO_THROW(validate(PathSettings{}));
 }
 

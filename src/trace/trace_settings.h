@@ -1,5 +1,5 @@
-// TraceSettings: how the tracer renders one image (size, samples, threads, depth), as a plain struct the
-// CLI, the viewer and the tests all fill. validate() is the one place that rejects bad values.
+// TraceSettings: how the tracer renders one image (size, samples, threads, depth), as a plain struct. The
+// front ends fill it from a render request (render/render_request.h); validate() is the tracer's own guard.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@ struct RayTreeLimits {
 struct TraceSettings {
     int width = 1280;       // pixels, >= 1
     int height = 720;       // pixels, >= 1
-    int spp = 1;            // samples per pixel: a perfect square k², a fixed k×k grid in each pixel
+    int spp = 1;            // samples per pixel: k², a fixed k×k grid in each pixel (scene/sample_grid.h)
     int threads = 0;        // worker threads; 0 = std::thread::hardware_concurrency()
     int maxDepth = -1;      // secondary-ray depth, >= 0; -1 = the scene's maxDepth
     int tileSize = 32;      // tile edge, pixels, >= 1
@@ -29,8 +29,8 @@ struct TraceSettings {
     RayTreeLimits rayTree;  // pruning of secondary rays (weight threshold, per-sample ray budget)
 };
 
-// Throws std::invalid_argument with a message fit for the command line (e.g. "--spp must be a perfect
-// square (1, 4, 9, 16, ...), got 2").
+// Throws SettingError (a std::invalid_argument, util/input_error.h) naming the field, e.g. "spp: expected a
+// perfect square from 1 to 64 (1, 4, 9, 16, ...) ..., got 2".
 void validate(const TraceSettings& s);
 
 // k for spp = k² (validate() first).

@@ -31,4 +31,20 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A setting out of its range, thrown by the libraries and named by its field as a render request names it
+// ("spp", "size", "depth"; render/render_request.h), never by a front end's spelling of it. Each front end
+// words it its own way: `--spp: ...` on the command line, `spp: ...` in Python, `actions[3].spp: ...` in a
+// viewer script. what() is "<field>: <reason>".
+class SettingError : public std::invalid_argument {
+public:
+    SettingError(const std::string& field, const std::string& reason)
+        : std::invalid_argument(field + ": " + reason), field_(field), reason_(reason) {}
+
+    const std::string& field() const { return field_; }
+    const std::string& reason() const { return reason_; }
+
+private:
+    std::string field_, reason_;
+};
+
 }  // namespace shadelab

@@ -1,0 +1,34 @@
+// renderOffline: one request, through the renderer it names.
+#include "app/offline_render.h"
+
+#include "image/encode.h"
+#include "raster/offscreen.h"
+#include "trace/path_render.h"
+#include "trace/trace_image.h"
+#include "trace/trace_scene.h"
+
+#include <memory>
+
+namespace shadelab::app {
+
+Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const render::RenderRequest& request) {
+    render::require(request);
+    switch (request.engine) {
+        case render::Engine::Raster: {
+            raster::OffscreenResult r = raster::renderOffscreen(raster, scene, render::toOffscreen(request));
+            raster.invalidate();  // its target now holds the offline bands, not the window's image
+            return std::move(r.pixels);
+        }
+        case render::Engine::Path: {
+            const trace::PathOutput out =
+                trace::pathTraceImage(std::make_shared<const trace::TraceScene>(scene), render::toPath(request, scene));
+            return toImage8(out.color, request.encoding);
+        }
+        case render::Engine::Trace:
+        case render::Engine::Both: break;
+    }
+    const trace::TraceOutput out = trace::traceImage(scene, render::toTrace(request, scene));
+    return toImage8(out.color, request.encoding);
+}
+
+}  // namespace shadelab::app

@@ -1,0 +1,102 @@
+// The render request's limits and its conversions to each renderer's settings.
+#include "render/render_request.h"
+
+#include "compare/comparison.h"
+#include "image/image.h"
+#include "scene/sample_grid.h"
+#include "util/input_error.h"
+
+#include <cstdio>
+
+namespace shadelab::render {
+namespace {
+
+std::optional<RequestProblem> problem(const char* field, std::string reason) {
+    return RequestProblem{field, std::move(reason)};
+}
+
+std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+}  // namespace
+
+int RenderRequest::samples() const { return spp.value_or(engine == Engine::Path ? kDefaultPathSamples : 1); }
+
+std::optional<RequestProblem> check(const RenderRequest& r) {
+    if (r.width < 1 || r.height < 1 || r.width > kMaxImageSide || r.height > kMaxImageSide)
+        return problem("size", "each side must be 1.." + std::to_string(kMaxImageSide) + " pixels, got " +
+                                   sizeText(r.width, r.height));
+    const int spp = r.samples();
+    if (r.engine == Engine::Path) {
+        if (spp < 1 || spp > trace::kMaxPathSamples)
+            return problem("spp", "the path tracer takes 1 to " + std::to_string(trace::kMaxPathSamples) +
+                                      " samples per pixel, got " + std::to_string(spp));
+    } else {
+        try {
+            gridSamplesPerSide(spp);
+        } catch (const SettingError& e) {
+            return problem("spp", e.reason());
+        }
+    }
+    if (r.depth && (*r.depth < 0 || *r.depth > kMaxDepth))
+        return problem("depth", "must be in [0, " + std::to_string(kMaxDepth) + "], got " + std::to_string(*r.depth));
+    if (r.threads < 0 || r.threads > kMaxThreads)
+        return problem("threads", "must be in [0, " + std::to_string(kMaxThreads) + "] (0 = every core), got " +
+                                      std::to_string(r.threads));
+    const PathOptions& p = r.path;
+    if (r.engine != Engine::Path) {
+        const char* given = p.timeLimit ? "time_limit" : p.estimator ? "estimator" : p.part ? "light_paths" : nullptr;
+        if (given)
+            return problem(given, "is for the path tracer (renderer path), not " + std::string(toString(r.engine)));
+    }
+    if (p.timeLimit && !(*p.timeLimit >= 0.0 && *p.timeLimit <= trace::kMaxTimeLimit)) {
+        char got[32];
+        std::snprintf(got, sizeof got, "%g", *p.timeLimit);
+        return problem("time_limit", "must be in [0, 1e7] seconds, got " + std::string(got));
+    }
+    return std::nullopt;
+}
+
+void require(const RenderRequest& request) {
+    if (std::optional<RequestProblem> p = check(request)) throw SettingError(p->field, p->reason);
+}
+
+int traceDepth(const RenderRequest& r, const Scene& scene) {
+    return r.engine == Engine::Both ? comparisonDepth(scene, r.depth) : r.depth.value_or(scene.maxDepth);
+}
+
+raster::OffscreenOptions toOffscreen(const RenderRequest& r) {
+    raster::OffscreenOptions o;
+    o.width = r.width;
+    o.height = r.height;
+    o.spp = r.samples();
+    o.encoding = r.encoding;
+    o.coverage = r.coverage || r.engine == Engine::Both;
+    return o;
+}
+
+trace::TraceSettings toTrace(const RenderRequest& r, const Scene& scene) {
+    trace::TraceSettings s;
+    s.width = r.width;
+    s.height = r.height;
+    s.spp = r.samples();
+    s.threads = r.threads;
+    s.maxDepth = traceDepth(r, scene);
+    s.coverage = r.coverage || r.engine == Engine::Both;
+    return s;
+}
+
+trace::PathSettings toPath(const RenderRequest& r, const Scene& scene) {
+    trace::PathSettings s;
+    s.width = r.width;
+    s.height = r.height;
+    s.spp = r.samples();
+    s.threads = r.threads;
+    s.maxDepth = r.depth.value_or(scene.maxDepth);
+    s.coverage = r.coverage;
+    s.timeLimit = r.path.timeLimit.value_or(0.0);
+    s.estimator = r.path.estimator.value_or(trace::PathEstimator::Mis);
+    s.part = r.path.part.value_or(trace::PathPart::All);
+    return s;
+}
+
+}  // namespace shadelab::render

@@ -1,0 +1,84 @@
+// RenderRequest: one render, as every front end asks for it: the command line (`shadelab render`), Python
+// (`shadelab.render`), the viewer's background renderers and its scripts. It holds the engine, size, samples,
+// depth, threads, coverage, encoding and the path tracer's options; check() is the one place a request is held
+// to its limits, and the to*() conversions are the one place it becomes each renderer's settings. A problem is
+// named by its field ("spp", "size", ...); each front end words it its own way (`--spp: ...` in the CLI,
+// `spp: ...` in Python, `actions[3].spp: ...` in a script). Plain data: no GL, nothing rendered here.
+#pragma once
+
+#include "image/encoding.h"
+#include "raster/offscreen_options.h"
+#include "scene/scene.h"
+#include "trace/path_settings.h"
+#include "trace/trace_settings.h"
+#include "util/name_table.h"
+
+#include <optional>
+#include <string>
+
+namespace shadelab::render {
+
+// Which renderer draws the image. Both: the rasterizer and the Whitted reference side by side, traced at the
+// comparison's depth (compare/comparison.h).
+enum class Engine { Raster, Trace, Both, Path };
+
+// The words of `--renderer` and of render(renderer=...).
+inline constexpr EnumName<Engine> kEngineNames[] = {
+    {Engine::Raster, "raster"},
+    {Engine::Trace, "trace"},
+    {Engine::Both, "both"},
+    {Engine::Path, "path"},
+};
+
+inline const char* toString(Engine e) { return nameOf(kEngineNames, e); }
+
+// The limits of a request; the image side is kMaxImageSide (image/image.h), the grid's samples
+// kMaxGridSamples (scene/sample_grid.h), the path tracer's kMaxPathSamples and kMaxTimeLimit
+// (trace/path_settings.h).
+inline constexpr int kMaxDepth = 64;
+inline constexpr int kMaxThreads = 1024;
+inline constexpr int kDefaultPathSamples = 16;
+
+// The path tracer's options; set only for Engine::Path (check() refuses them elsewhere).
+struct PathOptions {
+    std::optional<double> timeLimit;                // seconds; stop at the last whole pass begun in time
+    std::optional<trace::PathEstimator> estimator;  // unset: mis
+    std::optional<trace::PathPart> part;            // which light reaches the image; unset: all
+};
+
+struct RenderRequest {
+    Engine engine = Engine::Raster;
+    int width = 1280, height = 720;      // pixels, 1..kMaxImageSide each
+    std::optional<int> spp;              // unset: 1 on the grid (k², scene/sample_grid.h), 16 for the path tracer
+    std::optional<int> depth;            // secondary-ray depth / bounces, 0..64; unset: the scene's maxDepth
+    int threads = 0;                     // tracer workers, 0..kMaxThreads; 0 = every core
+    bool coverage = false;               // also the coverage ids of each pixel (Both always has them)
+    Encoding encoding = Encoding::Srgb;  // how the linear image becomes 8-bit
+    PathOptions path;
+
+    // The samples per pixel this request renders with: spp, or the engine's default.
+    int samples() const;
+};
+
+// A request's field and why it cannot be rendered. Fields: "size", "spp", "depth", "threads",
+// "time_limit", "estimator", "light_paths".
+struct RequestProblem {
+    std::string field;
+    std::string reason;
+};
+
+// The first problem of a request, or none.
+std::optional<RequestProblem> check(const RenderRequest& request);
+
+// Throws SettingError (util/input_error.h) with check()'s field and reason.
+void require(const RenderRequest& request);
+
+// The Whitted tracer's depth: the request's, else the scene's; for Engine::Both, the comparison's.
+int traceDepth(const RenderRequest& request, const Scene& scene);
+
+// The settings each renderer takes for this request (require() it first: they assume a valid request).
+raster::OffscreenOptions toOffscreen(const RenderRequest& request);
+trace::TraceSettings toTrace(const RenderRequest& request, const Scene& scene);
+trace::PathSettings toPath(const RenderRequest& request, const Scene& scene);
+
+}  // namespace shadelab::render
