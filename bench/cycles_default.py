@@ -1,4 +1,4 @@
-"""Render a shadelab scene (.json) with Blender Cycles: the baseline of issue 14's paths/s benchmark.
+"""Render a shadelab scene (.json) with Blender Cycles: the baseline of the path tracer's paths/s benchmark.
 
 Run it through Blender, never as part of shadelab (Blender is a benchmark baseline only):
 
