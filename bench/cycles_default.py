@@ -1,4 +1,4 @@
-"""Render a shadelab scene (.json) with Blender Cycles: the baseline of issue 14's paths/s benchmark.
+"""Render a shadelab scene (.json) with Blender Cycles: the baseline of the path tracer's paths/s benchmark.
 
 Run it through Blender, never as part of shadelab (Blender is a benchmark baseline only):
 
@@ -59,7 +59,7 @@ def fail(message, code=1):
 def script_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     p = argparse.ArgumentParser(prog="blender -b --factory-startup --python bench/cycles_default.py --",
-                                description="Render a shadelab scene with Cycles (issue 14 baseline).")
+                                description="Render a shadelab scene with Cycles (the paths/s benchmark's baseline).")
     p.add_argument("scene")
     p.add_argument("output")
     p.add_argument("spp", nargs="?", type=int, default=16)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-14 benchmark: paths per second of shadelab's path tracer against Blender Cycles on the default
+# Path tracer benchmark: paths per second of shadelab's path tracer against Blender Cycles on the default
 # scene (assets/scenes/default.json) at 1280x720, 16 spp, 5 bounces, 2 threads, in one run on one machine.
 # Cycles renders the scene as bench/cycles_default.py translates it (CPU, no denoising, no adaptive
 # sampling). Paths/s = 1280*720*16 / time. Runs alternate Blender and shadelab (RUNS of each, default 3) so

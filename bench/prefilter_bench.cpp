@@ -1,4 +1,4 @@
-// prefilter_bench (issue 12): building the prefiltered environment of a 256² cube from the shipped sky
+// prefilter_bench: building the prefiltered environment of a 256² cube from the shipped sky
 // (assets/environments/sky.hdr, 256x128) on 2 threads: the source cube, its mips, the GGX levels and the SH9
 // (the budget is 150 ms on 2 cores), and, for scale, on 1 thread; the .hdr decode and the DFG table apart.
 // Prints medians of N runs. Usage: prefilter_bench [sky.hdr] [runs] [cube size]

@@ -1,5 +1,5 @@
 // process_bench: runs a command N times and prints each run's wall time and peak resident memory, then
-// the medians. Whole-process figures, as the issues' speed targets are stated.
+// the medians. Whole-process figures, as the speed targets in bench/README.md are stated.
 // usage: process_bench [--runs N] [--warmup K] -- command [args...]
 #include <sys/resource.h>
 #include <sys/wait.h>

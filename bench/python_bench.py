@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The Python package's benchmarks (issue 13), printing medians; run by hand, never as a test:
+"""The Python package's benchmarks, printing medians; run by hand, never as a test:
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python_bench.py build/shadelab [--runs 5]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-5 benchmark: the cost of raster shadows and planar reflection. The default scene at 1920x1080,
+# Raster terms benchmark: the cost of raster shadows and planar reflection. The default scene at 1920x1080,
 # headless, with its 2 point lights: all terms on against --terms ambient,diffuse,specular (shadows and
 # reflections off), whole process, median of 5 after one warm-up. Target: on <= 2x off.
 # The default floor has kr = 0, so a copy with a kr = 0.3 floor is timed too (the planar mirror pass).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-2 benchmark: `shadelab render 2CylinderEngine.glb` (121,496 triangles) at 1920x1080 to PNG.
+# Headless render benchmark: `shadelab render 2CylinderEngine.glb` (121,496 triangles) at 1920x1080 to PNG.
 # Whole process, median of 5 (after one warm-up run), plus one run's per-stage breakdown.
 # Target: <= 0.25 s median wall time and <= 150 MiB peak memory on the 2-core llvmpipe machine.
 set -euo pipefail

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-12 benchmark: the 2CylinderEngine.glb headless render at 1920x1080 under `--model pbr` against the same
+# pbr benchmark: the 2CylinderEngine.glb headless render at 1920x1080 under `--model pbr` against the same
 # render under `--model phong`, whole process, back to back: PAIRS interleaved pairs (default 15, the order
 # alternating) after one warm-up each, so both models see the same machine load. Prints the medians of wall
 # time and of CPU time (user + system, all threads: steadier than wall on a shared machine) and the ratios.

@@ -1,4 +1,4 @@
-// scene_copy_bench (issue 10): what a viewer edit costs before any pixel is traced, on 2CylinderEngine.
+// scene_copy_bench: what a viewer edit costs before any pixel is traced, on 2CylinderEngine.
 //   copy     the Scene copy the viewer's ReferenceRenderer::request makes on every change (mesh geometry
 //            is shared, so O(objects));
 //   restart  after a shininess change: copy + TraceScene over the cached MeshBvh + ProgressiveTrace::start,

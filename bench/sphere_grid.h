@@ -1,4 +1,4 @@
-// trace_bench's scale model (issue 14): a grid of n x n UV spheres of 4,096 triangles each, built in memory
+// trace_bench's scale model: a grid of n x n UV spheres of 4,096 triangles each, built in memory
 // (tools/make_sphere_grid_glb.py writes a grid like it as a .glb for the CLI).
 #pragma once
 

@@ -1,4 +1,4 @@
-// texture_upload_bench (issue 16): 16 MiB of 8-bit RGBA textures (four 1024² images) made ready to draw,
+// texture_upload_bench: 16 MiB of 8-bit RGBA textures (four 1024² images) made ready to draw,
 // in the two stages shadelab takes: (a) scene/texture.h's makeTexture, the 8-bit level 0 kept and the mip
 // chain built on the CPU (averaged in linear light, re-encoded to 8-bit sRGB), as the glTF importer does once
 // per image; (b) raster/mesh_textures.h's upload of every level as the 8-bit codes (GL_SRGB8_ALPHA8 or

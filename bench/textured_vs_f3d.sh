@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-16 benchmark: a textured glTF model rendered headlessly at 1920x1080 by shadelab (`render`, EGL)
+# Textured-model benchmark: a textured glTF model rendered headlessly at 1920x1080 by shadelab (`render`, EGL)
 # and by F3D (`f3d --output`, the baseline; never a shadelab dependency: apt-get install f3d), whole
 # process, RUNS alternating runs each, medians. Target: shadelab <= 0.40x F3D's time. F3D 1.3 needs an X
 # display even for --output, so it runs on the DISPLAY given (an Xvfb is started when none is set).

@@ -1,13 +1,13 @@
-// trace_bench: in-process timings for issue 3's tracer benchmarks (a benchmark, never a timed test).
+// trace_bench: in-process timings for the tracer's benchmarks (a benchmark, never a timed test).
 //  (a) bench/spheres40.json at 1920x1080, 1 spp, 2 threads: median of 5 traceImage() calls, plus the
 //      in-process end-to-end path (load, trace, 8-bit conversion, PNG encoding) for scale.
 //  (b) 2CylinderEngine.glb at 1920x1080, 2 threads: a primary ray per pixel and one shadow ray per hit,
 //      in Mrays/s (median of 5); with Embree 3 (optional, SHADELAB_HAVE_EMBREE) the same rays through
 //      rtcIntersect1 / rtcOccluded1 and the ratio ours / Embree's. Whole-process timing is bench/trace_spheres.sh.
-//  (c) incoherent rays (issue 14): on the same model, one cosine-distributed secondary ray per primary hit
+//  (c) incoherent rays: on the same model, one cosine-distributed secondary ray per primary hit
 //      (about the geometric normal, on the viewer's side, from a per-pixel hash), nearest hit through
 //      TraceScene::intersect and through rtcIntersect1, the same precomputed rays to both.
-//  (d) scale (issue 14): a grid of N x N UV spheres of 4,096 triangles each built in memory (32 x 32 =
+//  (d) scale: a grid of N x N UV spheres of 4,096 triangles each built in memory (32 x 32 =
 //      4.19 M triangles), BVH build time (ours and Embree's) and primary + shadow rays at 1920x1080. Peak
 //      memory comes from running it alone under /usr/bin/time -v (--only scale --no-embree).
 #include "image/encode.h"

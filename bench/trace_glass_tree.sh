@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-11 ray-tree bound: `shadelab render bench/glass-tree.json --renderer trace --threads 2` (45 spheres,
+# The tracer's ray-tree bound: `shadelab render bench/glass-tree.json --renderer trace --threads 2` (45 spheres,
 # kr = kt = 1, depth 64) at 64x48, whole process, median of 5 after one warm-up; then the same scene at
 # depth 5, 9 and 12 for how the time grows with the depth now that the budget bounds it.
 set -euo pipefail

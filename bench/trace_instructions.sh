@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Instructions per incoherent ray (issue 14): shadelab's walk and, in a build with Embree, Embree's
+# Instructions per incoherent ray: shadelab's walk and, in a build with Embree, Embree's
 # rtcIntersect1 on the same rays, counted by callgrind around the timed loop alone. The count has none of the
 # ±5 % that timings spread between processes on a busy or virtual machine, so a small change to the walk can be
 # judged by it before it is timed (bench/README.md, "Counting instructions"). Prints the total per ray and the

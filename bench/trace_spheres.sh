@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-3 tracer benchmarks. (1) `shadelab render bench/spheres40.json --renderer trace --threads 2` at
+# Tracer benchmarks. (1) `shadelab render bench/spheres40.json --renderer trace --threads 2` at
 # 1920x1080, whole process, median of 5 after one warm-up (target <= 0.55 s). (2) trace_bench: the same
 # scene timed in-process, and 2CylinderEngine.glb primary + shadow rays in Mrays/s against Embree 3 when
 # libembree-dev was found at configure time (target >= 0.5x Embree).

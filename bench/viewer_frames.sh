@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-4/15 benchmark: viewer frame times under Xvfb at 1280x720 (`shadelab view --frames N --stats`), each
+# Viewer benchmark: frame times under Xvfb at 1280x720 (`shadelab view --frames N --stats`), each
 # case run RUNS times (default 5); prints every run's medians and the median of them. Targets: a frame while
 # a shininess slider is dragged <= 33 ms; orbiting < 40 ms; <= 50 ms while the reference restarts every frame
 # (Split, a shininess change per frame). Orbiting is measured twice: as the viewer runs by default, with the

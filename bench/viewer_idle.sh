@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-15 benchmark: the CPU an idle viewer uses. The viewer opens the scene in a 1720x760 Xvfb window,
+# Idle viewer benchmark: the CPU an idle viewer uses. The viewer opens the scene in a 1720x760 Xvfb window,
 # settles for SETTLE seconds (the first frames, shaders), then its CPU time (all threads: utime + stime from
 # /proc/PID/stat) is read over WINDOW seconds with no input. Target: under 2 % of one core.
 # Each case runs RUNS times; prints every run and the median.

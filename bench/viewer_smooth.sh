@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue-15 benchmark: how long after the last change the viewer's smooth still frame (16 jittered samples,
+# Smooth-frame benchmark: how long after the last change the viewer's smooth still frame (16 jittered samples,
 # src/app/accumulation.h) is complete, at 1280x720 in a 1720x720 window under Xvfb. The script changes the
 # shininess at frame 10 and then waits for the smooth frame; `--verbose` prints the time from the change.
 # Each case runs RUNS times; prints every run and the median. Target: <= 1.5 s.

@@ -1,4 +1,4 @@
-// An environment map behind the scene (issue 12): each pixel's primary ray, built as fragmentRay() in
+// An environment map behind the scene: each pixel's primary ray, built as fragmentRay() in
 // surface.glsl builds it, reads the map's level 0 exactly as the tracer's escaping rays do
 // (src/trace/environment_light.cpp). Coverage: the background.
 #include "lighting.glsl"

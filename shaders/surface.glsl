@@ -32,7 +32,7 @@ layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_coverage;
 
 #if SL_IBL || SL_ENERGY_COMPENSATION
-// Split-sum image-based lighting and energy compensation (issue 12): the tables of src/raster/ibl_textures.h,
+// Split-sum image-based lighting and energy compensation (docs/lighting.md): the tables of src/raster/ibl_textures.h,
 // read texel by texel so that ibl.glsl filters them exactly as the tracer does.
 uniform sampler2D t_iblCube;
 uniform sampler2D t_iblDfg;

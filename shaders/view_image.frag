@@ -45,7 +45,7 @@ vec3 encode(vec3 c) {
 
 // Whether this texel's reference tile is traced for the current state. A pending tile shows the raster
 // image in its place, so the reference refines tile by tile from the raster's picture instead of flashing
-// a dimmed stale result on every change (issue 15).
+// a dimmed stale result on every change.
 bool tileDone(ivec2 texel) {
     ivec2 tile = ivec2(vec2(texel.x, textureSize(t_traced, 0).y - 1 - texel.y) / u_tileSize);
     return texelFetch(t_tiles, tile, 0).r > 0.5f;

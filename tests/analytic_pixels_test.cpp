@@ -1,4 +1,4 @@
-// Analytic pixels (issue 2): a headless raster render of a sphere under a directional light, checked
+// Analytic pixels: a headless raster render of a sphere under a directional light, checked
 // pixel by pixel against the C++ equations evaluated for each pixel's own ray and hit point.
 #include "gl_fixture.h"
 #include "image/encode.h"

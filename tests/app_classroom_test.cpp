@@ -1,4 +1,4 @@
-// The viewer in front of a class (issue 15), without a window: undo and redo (every edit is one step,
+// The viewer in front of a class, without a window: undo and redo (every edit is one step,
 // camera moves are not steps and stay where they are, undoing an Open brings the other file back), Save
 // never writes scene JSON over a glTF model or another kind of file, and the captions on the image.
 #include "app/captions.h"

@@ -1,4 +1,4 @@
-// The viewer's plots (issues 12 and 15), no window: the equivalent Blinn exponent, the lobe plots and the
+// The viewer's plots, no window: the equivalent Blinn exponent, the lobe plots and the
 // directional-albedo curves.
 #include "app/albedo_plot.h"
 #include "app/lobe_plot.h"
@@ -34,11 +34,11 @@ TEST(AppState, EquivalentBlinnExponentMatchesHalfMaximum) {
     EXPECT_NEAR(lobe.back(), 0.0f, 1e-6f);
 }
 
-// ---- Lobe plots (issues 12 and 15) ----------------------------------------------------------------------
+// ---- Lobe plots -----------------------------------------------------------------------------------------
 
 namespace {
 
-// The axis the lobe plot used before issue 15: four times Phong's half-maximum angle, within [5, 90] degrees.
+// The lobe plot's former, rescaled axis: four times Phong's half-maximum angle, within [5, 90] degrees.
 // Its curve looked the same for every s >= 32 (the negative control below).
 float oldRescaledAxis(float s) {
     const double halfMax = std::acos(std::exp2(-1.0 / double(s))) * 180.0 / M_PI;
@@ -148,7 +148,7 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
     EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);    // Phong: 2/(s+1)
     EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);   // normalised
     for (float v : plot.curves[5].albedo) EXPECT_LT(v, 0.999f);         // GGX loses
-    // With compensation a white metal keeps its energy (issue 12: within 1 %), away from grazing angles.
+    // With compensation a white metal keeps its energy (within 1 %), away from grazing angles.
     EXPECT_EQ(plot.curves[6].label, "GGX  compensated");
     for (size_t i = 0; i < plot.viewAngles.size(); ++i)
         if (plot.viewAngles[i] <= 75.0f) {

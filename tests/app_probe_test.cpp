@@ -1,4 +1,4 @@
-// The viewer's probe (issues 4 and 12), no window: what it reports at a pixel equals the shared C++ shading
+// The viewer's probe, no window: what it reports at a pixel equals the shared C++ shading
 // and the integrator's local terms under every model, it finds planes, meshes and the background, and its
 // shadow-ray visibility is the tracer's.
 #include "app/probe.h"

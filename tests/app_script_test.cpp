@@ -1,4 +1,4 @@
-// Viewer scripts (issue 4), no window: frames and actions parse once into typed fields, setRaster changes
+// Viewer scripts, no window: frames and actions parse once into typed fields, setRaster changes
 // only what it names, and errors name the file and the action.
 #include "app/script.h"
 #include "app/viewer_state.h"

@@ -1,4 +1,4 @@
-// Viewer state tests (issue 4 §3), no window: every control action changes the scene as expected and
+// Viewer state tests, no window: every control action changes the scene as expected and
 // nothing else, an edited scene survives a JSON round trip exactly, the orbit camera, and the white furnace
 // switch. The probe, the plots and scripts have their own files (app_probe_test.cpp, app_plots_test.cpp,
 // app_script_test.cpp) in the same test binary.

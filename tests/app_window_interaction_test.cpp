@@ -1,4 +1,4 @@
-// The real viewer window under Xvfb (issues 4 and 15), used as a teacher uses it: the probe reports the object
+// The real viewer window under Xvfb, used as a teacher uses it: the probe reports the object
 // and the NoL of the shared C++ shading and stays on the clicked point while the camera orbits; a broken
 // shader reload keeps the last good program; dragging a light marker moves the light and its shadow; undo
 // restores a removed light exactly; saving never writes over a model; a traced glass tree ends promptly after its
@@ -97,7 +97,7 @@ TEST(AppWindow, BrokenShaderReloadKeepsLastGoodProgram) {
 }
 
 TEST(AppWindow, TracedGlassTreeExitsPromptlyAfterItsFrames) {
-    // Issue 11: 45 spheres with kr = kt = 1 at depth 64, every pixel glass. Before the ray tree was bounded
+    // The glass tree: 45 spheres with kr = kt = 1 at depth 64, every pixel glass. Before the ray tree was bounded
     // and cancellable inside a tree, the reference workers never stopped and the viewer never exited;
     // `timeout` turns such a hang into a failure (exit code 124) instead of a stuck test.
     REQUIRE_XVFB();
@@ -153,7 +153,7 @@ TEST(AppWindow, SaveNeverWritesOverAModel) {
 }
 
 TEST(AppWindow, ProjectorScaleKeepsTheWindowsShape) {
-    // Issue 15: at --ui-scale 2 the panel took half the window and the image became a cropped portrait.
+    // At --ui-scale 2 the panel once took half the window and the image became a cropped portrait.
     // Now a panel wider than a third of the window lies over the image, which keeps the window's shape.
     REQUIRE_XVFB();
     auto shapes = [&](const std::string& name, const std::string& flags) {
@@ -216,7 +216,7 @@ TEST(AppWindow, DraggingALightMarkerMovesTheLightAndItsShadow) {
 }
 
 TEST(AppWindow, ProbeStaysOnTheClickedPointWhileTheCameraOrbits) {
-    // Issue 15: orbiting moved the probe to whatever the pixel showed next. Now a click anchors it to the
+    // Orbiting once moved the probe to whatever the pixel showed next. Now a click anchors it to the
     // surface point it hit; the report after an orbit names the same object and point, at a new pixel.
     REQUIRE_XVFB();
     const std::string scenePath = test::sourcePath("assets/scenes/default.json");
@@ -252,7 +252,7 @@ TEST(AppWindow, ProbeStaysOnTheClickedPointWhileTheCameraOrbits) {
 }
 
 TEST(AppWindow, StatusMessagesNeverMoveTheControls) {
-    // Issue 15: a status message pushed the panel's controls down while it showed, so when it expired a
+    // A status message once pushed the panel's controls down while it showed, so when it expired a
     // click meant for Open landed on Save. The status line now has a fixed height, message or not.
     REQUIRE_XVFB();
     const std::string scenePath = test::sourcePath("assets/scenes/default.json");

@@ -1,4 +1,4 @@
-// The real viewer window under Xvfb (issue 4) against the headless renderers: after 30 frames its screenshot
+// The real viewer window under Xvfb against the headless renderers: after 30 frames its screenshot
 // equals `shadelab render` of the same scene and size; a scripted shininess change, the raster flags and the
 // setRaster action, the Global mode, the still frame's accumulation and the white furnace round trip give the
 // images the headless path gives for the same settings; resizing keeps them right. Every comparison has a
@@ -192,7 +192,7 @@ TEST(AppWindow, GlobalModeEqualsTheHeadlessPathTracer) {
 }
 
 TEST(AppWindow, StillFrameAccumulatesToTheSupersampledRender) {
-    // Issue 15: while the view is still, the viewer accumulates the 16 grid samples of --spp 16, so edges,
+    // While the view is still, the viewer accumulates the 16 grid samples of --spp 16, so edges,
     // shadow boundaries and the checker are smooth; screenshots and --screenshot stay the 1-spp render.
     REQUIRE_XVFB();
     const std::string scenePath = test::sourcePath("assets/scenes/default.json");
@@ -223,7 +223,7 @@ TEST(AppWindow, StillFrameAccumulatesToTheSupersampledRender) {
 }
 
 TEST(AppWindow, WhiteFurnaceRoundTripRestoresTheScreenshotByteForByte) {
-    // Issue 12: the furnace button's action (whiteFurnace) and back. The furnace frame is the headless render of
+    // The furnace button's action (whiteFurnace) and back. The furnace frame is the headless render of
     // the saved furnace scene; leaving it gives the first screenshot again, byte for byte.
     REQUIRE_XVFB();
     const std::string scenePath = test::sourcePath("assets/scenes/default.json");
@@ -255,8 +255,8 @@ TEST(AppWindow, WhiteFurnaceRoundTripRestoresTheScreenshotByteForByte) {
 }
 
 TEST(AppWindow, MovingPreviewOnlyWhileTheCameraMoves) {
-    // Issue 15's orbit speed: while the camera moves the raster image is drawn at half size
-    // (raster.movingPreview, on by default); once it stops, the full-size image is back. --stats counts the
+    // For the orbit's speed (docs/viewer.md, "Moving preview"): while the camera moves the raster image is drawn at
+    // half size (raster.movingPreview, on by default); once it stops, the full-size image is back. --stats counts the
     // half-size draws; the image at exit, after the camera stopped, is the full-size one either way.
     REQUIRE_XVFB();
     const std::string scene = test::sourcePath("assets/scenes/default.json");

@@ -1,4 +1,4 @@
-// CLI outputs (issues 6 and 11): nothing is lost. A render that cannot be written fails with one line and
+// CLI outputs (docs/cli.md, "Outputs"): nothing is lost. A render that cannot be written fails with one line and
 // leaves the existing file and no temporary behind; an output is never one of the inputs, never a device,
 // FIFO or a link to one; `-o -` is stdout; the file and then its folder are fsynced around the rename; a
 // signal during the write leaves no temporary file.
@@ -27,7 +27,7 @@ using namespace shadelab;
 using namespace shadelab::test;
 namespace fs = std::filesystem;
 
-// Nothing lost (issue 6): a render that cannot be written fails with one line, leaves the existing file as
+// Nothing lost: a render that cannot be written fails with one line, leaves the existing file as
 // it was and leaves no temporary file behind.
 namespace {
 
@@ -99,7 +99,7 @@ TEST(CliNothingLost, FullDisk) {
     EXPECT_EQ(left, std::vector<std::string>{"out.png"});
 }
 
-// Outputs that never destroy (issue 11): an output is never one of the inputs, never a device, FIFO or a
+// Outputs that never destroy: an output is never one of the inputs, never a device, FIFO or a
 // link to one; `-o -` is stdout; the file and then its folder are fsynced around the rename; a signal
 // during the write leaves no temporary file.
 namespace {

@@ -1,4 +1,4 @@
-// CLI tests (issue 2): `shadelab render` writes a real PNG; bad input exits 1 with one line naming the
+// CLI tests: `shadelab render` writes a real PNG; bad input exits 1 with one line naming the
 // file; usage errors exit 2; `compare` exits by its gates. What the CLI's outputs must never destroy is
 // cli_outputs_test.cpp's.
 #include "cli_run.h"
@@ -100,7 +100,7 @@ TEST(Cli, RenderGlbAsScene) {
     EXPECT_GT(int(centre[0]) + centre[1] + centre[2], 30) << "the box should be lit at the image centre: " << out;
 }
 
-// Issue 5: compared with the rasterizer (one bounce), the reference traces one bounce too, unless --depth.
+// Compared with the rasterizer (one bounce), the reference traces one bounce too, unless --depth.
 TEST(Cli, BothTracesTheReferenceAtDepthOneUnlessDepthIsGiven) {
     // The default scene with a kr 0.3 floor: the floor and the mirror sphere see each other, so depth 2 and
     // more add reflections of reflections.
@@ -337,7 +337,7 @@ TEST(Cli, RasterFlagsOverrideTheScenesRasterSettings) {
         << "--no-pcf turns the file's PCF off";
 }
 
-// A glTF whose base-colour PNG is cut short (issue 16): by default one warning and the factor alone (exit 0);
+// A glTF whose base-colour PNG is cut short: by default one warning and the factor alone (exit 0);
 // under --strict that line is the error (exit 1), and nothing is written.
 TEST(Cli, StrictMakesAnInputWarningAnErrorAndWritesNothing) {
     const std::string intact = test::sourcePath("assets/models/textures/uv_checker.gltf");
@@ -407,7 +407,7 @@ TEST(CliCompare, ErrorsExitTwo) {
     EXPECT_EQ(run("compare " + a + " " + a + " --threshold 300").code, 2);
 }
 
-// A broken or missing shader (issue 6): one line that names the shader file (and line for a compile error).
+// A broken or missing shader: one line that names the shader file (and line for a compile error).
 TEST(CliShaders, BrokenOrMissingShaderNamesFileAndLine) {
     std::string dir = test::outputPath("shaders_broken");
     fs::remove_all(dir);

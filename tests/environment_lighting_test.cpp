@@ -1,4 +1,4 @@
-// Image-based lighting of pbr surfaces (issue 12), raster against reference: one sphere per case in the
+// Image-based lighting of pbr surfaces, raster against reference: one sphere per case in the
 // shipped sky (assets/environments/sky.hdr) over roughness × metallic × {environment only, + a light,
 // + energy compensation}, and in a uniform environment, gated as in design.md §4 with negative controls
 // (roughness +10 %, metallic flipped). The furnace: a white sphere in a uniform environment of radiance 1

@@ -1,4 +1,4 @@
-// Hostile inputs (issue 11): every file shadelab reads goes through util/read_file.h, so a FIFO, a device
+// Hostile inputs: every file shadelab reads goes through util/read_file.h, so a FIFO, a device
 // behind a symlink, a 10 GB side file or a NUL in a path ends in one line naming the file, exit 1, within a
 // second and a small memory bound. Each case runs the real binary under `timeout`, so a hang fails it.
 #include "image/png.h"
@@ -92,7 +92,7 @@ std::string folder(const std::string& name) {
 
 void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
-// The issue's bounds: under 1 s and 100 MiB. A sanitizer build (scripts/test.sh's first pass) runs the
+// The bounds each case must meet: under 1 s and 100 MiB. A sanitizer build (scripts/test.sh's first pass) runs the
 // same binary several times slower and larger, so it gets room without losing the point (no hang, no
 // gigabytes).
 #if defined(__SANITIZE_ADDRESS__)

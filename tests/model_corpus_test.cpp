@@ -1,4 +1,4 @@
-// Broken and damaged models (issue 6): every glTF/GLB file in Debian's assimp-testmodels, and damaged
+// Broken and damaged models: every glTF/GLB file in Debian's assimp-testmodels, and damaged
 // copies of valid ones (truncated at many offsets, bytes flipped under a fixed seed), run through
 // `shadelab render`. Each must write a PNG, or exit 1 with one line that names the file; never crash or
 // hang (10 s limit). Failures list every offending file and its output.

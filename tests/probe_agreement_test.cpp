@@ -1,4 +1,4 @@
-// The probe explains the reference (issue 10): on 2CylinderEngine with shadows on, for 1,000 pixels (random
+// The probe explains the reference: on 2CylinderEngine with shadows on, for 1,000 pixels (random
 // ones, silhouette-edge ones and shadow-boundary ones), the probe's hit object, its point and each light's
 // vis_l equal what the Whitted integrator computes for the same primary ray. The oracle below is the
 // tracer's own API, not the probe's code; a probe with its own intersector or shadow-ray origin fails it.

@@ -1,4 +1,4 @@
-// Raster environment cubes against the reference (issue 5): a kr = 0.5 mirror sphere (and an icosphere
+// Raster environment cubes against the reference: a kr = 0.5 mirror sphere (and an icosphere
 // mesh) among distant coloured spheres, the tracer at depth 1. The cube is seen from the object's centre,
 // so its error grows with (object radius / distance of what it reflects), and its 128² faces blur the
 // reflected edges: the gate is the shadow gate's (1 % of interior pixels over 3/255, mean within 1/255),

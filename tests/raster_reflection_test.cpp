@@ -1,4 +1,4 @@
-// Raster planar reflection against the reference (issue 5): a kr = 0.5 checker mirror under three spheres,
+// Raster planar reflection against the reference: a kr = 0.5 checker mirror under three spheres,
 // the tracer at depth 1, gated as design.md §4 with the reflected silhouettes added to the silhouette band;
 // a kr that differs between the renderers must fail.
 #include "gl_fixture.h"

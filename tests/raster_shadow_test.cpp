@@ -1,4 +1,4 @@
-// Raster shadows against the reference (issue 5): spheres on a checker plane under 1 and 3 lights (point and
+// Raster shadows against the reference: spheres on a checker plane under 1 and 3 lights (point and
 // directional), shadows on, gated as design.md §4 with a shadow-edge allowance; a light moved in one renderer
 // must fail. Also: no acne on an unoccluded lit plane, and no NaNs in any example scene with every term on.
 #include "gl_fixture.h"

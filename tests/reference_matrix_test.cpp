@@ -1,8 +1,8 @@
-// Raster against reference (issue 3): every combination of {spheres on a checker plane, a glTF mesh} ×
+// Raster against reference: every combination of {spheres on a checker plane, a glTF mesh} ×
 // {ambient, +diffuse, +specular} × {Phong, Blinn-Phong} × {1 white light, 3 coloured lights} ×
 // {s = 1, 32, 500} is rendered headless through EGL and by the CPU tracer, and gated as in design.md §4.
 // Negative controls below must fail the same gates. Failures leave both images, the heatmap and the
-// JSON report in build/test-output/reference_matrix_test/. Issue 12 adds the pbr model: {spheres, mesh} ×
+// JSON report in build/test-output/reference_matrix_test/. The pbr model's matrix: {spheres, mesh} ×
 // roughness {0.2, 0.5, 1} × metallic {0, 1} × {1, 3 lights}, its controls, and the model-equality check.
 #include "gl_fixture.h"
 #include "image/compare.h"
@@ -159,7 +159,7 @@ TEST_F(ReferenceNegativeControls, PhongAgainstBlinnPhongFails) {
     EXPECT_FALSE(r.pass) << "Phong against Blinn-Phong passed the gates:\n" << compareSummary(r);
 }
 
-// ---- The pbr model (issue 12) --------------------------------------------------------------------------
+// ---- The pbr model -------------------------------------------------------------------------------------
 namespace {
 
 struct PbrCase {

@@ -93,7 +93,7 @@ inline CompareResult gateWithEvidence(const Rendered& a, const Rendered& b, cons
     return c;
 }
 
-// The design.md §4 gates with issue 5's shadow-edge allowance: a shadow-map texel straddling the tracer's
+// The design.md §4 gates with an allowance for raster shadow-map edges: a shadow-map texel straddling the tracer's
 // exact edge flips whole pixels, so the fraction gate is 1 % (not 0.1 %), no hard maximum, and the
 // interior mean must stay within 1/255. The environment-cube test uses them too.
 inline const CompareGates kShadowEdgeGates{3, 0.01, 255, 0.02, 1.0};

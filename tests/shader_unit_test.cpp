@@ -1,6 +1,6 @@
-// Shader-unit test (issue 2): the GLSL lighting functions, run on the GPU over a sweep of N, L, V and s,
+// Shader-unit test: the GLSL lighting functions, run on the GPU over a sweep of N, L, V and s,
 // must equal the same functions compiled as C++ within 1e-4. This proves the two are one implementation.
-// Issue 12 adds the pbr BRDF's sweep over N, L, V, roughness and metallic, with its own negative control.
+// The pbr BRDF has a sweep of its own over N, L, V, roughness and metallic, with its own negative control.
 #include "gl/program.h"
 #include "gl_fixture.h"
 #include "raster/render_target.h"

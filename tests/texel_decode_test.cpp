@@ -1,4 +1,4 @@
-// 8-bit texels (issue 16): the rasterizer's reading of an uploaded texture (MeshTextures' GL_SRGB8_ALPHA8 /
+// 8-bit texels: the rasterizer's reading of an uploaded texture (MeshTextures' GL_SRGB8_ALPHA8 /
 // GL_RGBA8 levels, texelFetch as mesh.frag uses it) against the floats the tracer decodes through
 // shading/texel_decode.h's tables, for all 256 codes of every channel and every mip level: within
 // kGlTexelDecodeError, and the measured difference printed (llvmpipe is not bit-exact: its sRGB decoding is a

@@ -1,4 +1,4 @@
-// glTF material maps (issue 16, design.md §9 and §4): each asset tools/make_texture_gltf.py writes, raster
+// glTF material maps (design.md §9 and §4): each asset tools/make_texture_gltf.py writes, raster
 // against the reference tracer under the §4 gates for Phong and pbr; and negative controls that must fail
 // (the normal map's green channel flipped, sRGB decoding skipped, the transform's rotation changed, the
 // second UV set ignored, the alpha mode ignored, the metallic-roughness and occlusion maps dropped).

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes assets/environments/sky.hdr: an analytic sky for shadelab's image-based lighting (issue 12).
+"""Writes assets/environments/sky.hdr: an analytic sky for shadelab's image-based lighting.
 
 A 256x128 equirectangular Radiance RGBE file (run-length encoded scanlines) with a blue gradient from the
 horizon to the zenith, a warm sun disk (radiance 60, 2.5 degrees across its radius) with a glow around it,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a .glb of N x N UV spheres of 4,096 triangles each (64 slices, 33 stacks; issue 14's scale model:
+"""Writes a .glb of N x N UV spheres of 4,096 triangles each (64 slices, 33 stacks; trace_bench's scale model:
 N = 32 gives 4,194,304 triangles), one sphere mesh instanced by N x N translated nodes on a unit grid in the
 z = 0 plane, and a camera that frames the grid. The importer flattens the instances into world space, so the
 tracer sees every triangle. Usage:

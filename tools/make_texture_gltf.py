@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes shadelab's textured glTF test assets (issue 16) into one folder, each a single .gltf file with its
+"""Writes shadelab's textured glTF test assets into one folder, each a single .gltf file with its
 buffer and PNG images embedded as data: URIs. Every case the texture code handles has an asset:
     uv_checker.gltf           a quad, an sRGB colour checker (nearest, repeat, UVs over 0..2)
     wrap_modes.gltf           three quads, UVs over -1..2: repeat, mirrored repeat, clamp to edge (bilinear)

@@ -1,5 +1,5 @@
-// Accumulation: the viewer's smooth still frame (issue 15). While nothing changes, the rasterizer draws the
-// k×k grid samples of `shadelab render --spp k²` one per frame (RasterRenderer::draw's jitter), and this
+// Accumulation: the viewer's smooth still frame (docs/viewer.md, "Smooth edges"). While nothing changes, the rasterizer
+// draws the k×k grid samples of `shadelab render --spp k²` one per frame (RasterRenderer::draw's jitter), and this
 // keeps their running average in an RGBA32F texture; after k² frames it is that supersampled image. Any
 // change starts it again from the centre sample, so a moving view shows 1 spp.
 #pragma once

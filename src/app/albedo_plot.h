@@ -1,4 +1,4 @@
-// The data behind the viewer's directional-albedo plot (issue 12): for each model, the fraction of light a
+// The data behind the viewer's directional-albedo plot: for each model, the fraction of light a
 // white version of the selected material's lobe reflects, against the view angle, integrated numerically
 // from the renderers' own shading functions (shading/directional_albedo.h). No ImGui: panels_lobe.cpp draws it.
 #pragma once

@@ -1,5 +1,5 @@
-// The words drawn on the image itself (issue 15), so a class sees what it shows with the panel hidden:
-// the model, the terms (the lecture's progression step), and the view mode; in Split, which side is which.
+// The words drawn on the image itself (docs/viewer.md, "Captions"), so a class sees what it shows with the panel
+// hidden: the model, the terms (the lecture's progression step), and the view mode; in Split, which side is which.
 // Plain functions of the state, so tests read the same words the window draws.
 #pragma once
 

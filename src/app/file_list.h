@@ -1,4 +1,4 @@
-// The viewer's file list (issue 15: opening a file meant typing a whole path): the scenes and folders of one
+// The viewer's file list (opening a file once meant typing a whole path): the scenes and folders of one
 // folder, read once and kept until the folder changes or the user refreshes. Plain data, no ImGui.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Lights in the view (issue 15): where each light's marker is drawn on the image, which marker the pointer
+// Lights in the view: where each light's marker is drawn on the image, which marker the pointer
 // is on, and where a light goes when its marker is dragged. Plain geometry over the scene's camera (the
 // same ViewSetup both renderers use), with no GL or ImGui, so tests check it without a window.
 //   point light:        a disc at its position.

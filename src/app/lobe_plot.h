@@ -1,4 +1,4 @@
-// The data behind the viewer's lobe plots (issues 12 and 15): each model's specular lobe in the plane of
+// The data behind the viewer's lobe plots: each model's specular lobe in the plane of
 // incidence for one material and one angle of incidence, as plain curves, so tests read exactly what the
 // panel draws. No ImGui: panels_lobe.cpp draws these. The values come from shaders/lighting.glsl's functions.
 #pragma once
@@ -36,7 +36,7 @@ struct LobeCurve {
 
 // Both views of the four lobes. In the plane of incidence L lies at −θi from N and R at +θi. The Cartesian
 // view follows V from R toward N and beyond: θo = θi − a for the angle a between R and V, so a runs over a
-// fixed axis [0, axis] whatever the material (issue 15: as s grows the lobe visibly narrows). The polar view
+// fixed axis [0, axis] whatever the material (so that as s grows the lobe visibly narrows). The polar view
 // sweeps V over θo ∈ [−90°, 90°] (the textbook figure: radius = lobe value). Each lobe is the specular term
 // the renderers add for one light of intensity 1 (Phong/Blinn-Phong: the lecture's term; pbr: π·f_spec·N·L,
 // the mean of its RGB), divided by its peak so the shapes compare; `peak` keeps the scale.

@@ -23,7 +23,7 @@ void drawSidePanel(PanelContext& ctx, float width, float height, bool overlay) {
     ImGui::SameLine();
     ImGui::TextDisabled("Ctrl+Z, Ctrl+Shift+Z");
     // The status line has a fixed height of two text lines, shown or not, so a message appearing or
-    // expiring never moves the controls under the pointer (issue 15: a click meant for Open saved).
+    // expiring never moves the controls under the pointer (once, a click meant for Open saved).
     const float statusHeight = 2.0f * ImGui::GetTextLineHeightWithSpacing();
     ImGui::BeginChild("##status", ImVec2(0.0f, statusHeight), false, ImGuiWindowFlags_NoScrollbar);
     if (!ctx.status.empty()) {

@@ -31,45 +31,44 @@ public:
 
 // Text fields and UI-only choices that are not part of the scene.
 struct UiFields {
-    std::string openPath;
-    std::string savePath;
-    std::string confirmReplace;
+    std::string openPath;             // the Open field; the opened file's path after each open
+    std::string savePath;             // the Save field; defaultSavePath of the opened file after each open
+    std::string confirmReplace;       // an existing file Save waits to replace until the user confirms
     FileList files;                   // the file list's folder, as last read
-    std::vector<std::string> recent;  // scenes opened in this session, newest first  // an existing file Save waits to
-                                      // replace until the user confirms
+    std::vector<std::string> recent;  // scenes opened in this session, newest first
     std::string screenshotPath = "shadelab-view.png";
     std::vector<ColorIntensity> lightSplits;  // per light: the colour and intensity as last edited
-    bool captions = true;
-    bool lightMarkers = true;
-    bool smooth =
-        true;  // accumulate a supersampled still frame in Raster mode (accumulation.h)        // a marker per light in
-               // the image, draggable            // the model, terms and mode written on the image (key C)
-    bool convertAllObjects = false;    // the equivalent-exponent buttons act on every object
-    bool lessonFolded = false;         // the lesson window was folded for the probe
-    bool probeWindowMoved = false;     // the user dragged the probe window: it stays put until the probe goes
-    float probeWindowWidth = 0.0f;     // window units, as last drawn (for placing it inside the image)
-    float lobeIncidence = 30.0f;       // degrees: the lobe plots' angle of incidence when no probe is set
-    float lobeAxis = 90.0f;            // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
-    std::optional<AlbedoPlot> albedo;  // the albedo plot, recomputed when its settings change
+    bool captions = true;                     // the model, terms and mode written on the image (key C)
+    bool lightMarkers = true;                 // a marker per light in the image, draggable
+    bool smooth = true;                       // accumulate a supersampled still frame in Raster mode (accumulation.h)
+    bool convertAllObjects = false;           // the equivalent-exponent buttons act on every object
+    bool lessonFolded = false;                // the lesson window was folded for the probe
+    bool probeWindowMoved = false;            // the user dragged the probe window: it stays put until the probe goes
+    float probeWindowWidth = 0.0f;            // window units, as last drawn (for placing it inside the image)
+    float lobeIncidence = 30.0f;              // degrees: the lobe plots' angle of incidence when no probe is set
+    float lobeAxis = 90.0f;                   // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
+    std::optional<AlbedoPlot> albedo;         // the albedo plot, recomputed when its settings change
 };
 
 // Where Save writes by default: "<stem>-saved.json" beside the opened file, so neither a lesson file (whose
 // comments a save would drop) nor a .gltf/.glb model is overwritten, and relative mesh paths still resolve.
 std::string defaultSavePath(const std::string& scenePath);
 
+// The Whitted reference's progress, for the View panel (Traced, Split and Difference).
 struct ReferenceInfo {
     bool active = false, complete = false;
-    float progress = 0.0f;
-    double seconds = 0.0;
+    float progress = 0.0f;  // fraction of the tiles traced, [0, 1]
+    double seconds = 0.0;   // since the current request, or its total once complete
     int threads = 0;
     std::string error;
 };
 
+// The path tracer's progress, for the View panel (Global and Local | Global).
 struct GlobalInfo {
     bool active = false;
-    int samples = 0, maxSamples = 0;
-    float passProgress = 0.0f;  // of the sample pass under way
-    double noise8 = 0.0;        // mean standard error, 8-bit sRGB units
+    int samples = 0, maxSamples = 0;  // per pixel, in the image shown; it refines until maxSamples
+    float passProgress = 0.0f;        // of the sample pass under way
+    double noise8 = 0.0;              // mean standard error, 8-bit sRGB units
     double seconds = 0.0;
     int threads = 0;
     std::string error;
@@ -86,13 +85,13 @@ struct PanelContext {
     std::optional<GlobalEstimate> probeGlobal;  // its estimate at the probed pixel, in those modes
     const CompareResult* metrics = nullptr;     // raster vs complete reference, when available
     std::string metricsWords;                   // the same, in plain words
-    std::string shaderError;
-    std::string status;
-    bool statusError = false;
-    double frameMs = 0.0;  // median of the last frames
-    int renderWidth = 0, renderHeight = 0;
-    float uiScale = 1.0f;
-    size_t undoSteps = 0, redoSteps = 0;
+    std::string shaderError;                    // why the last shader reload failed; empty after a good one
+    std::string status;                         // the status line's message while it shows, else empty
+    bool statusError = false;                   // the message is an error (drawn in red)
+    double frameMs = 0.0;                       // median of the last frames
+    int renderWidth = 0, renderHeight = 0;      // the rendered image, pixels
+    float uiScale = 1.0f;                 // --ui-scale; 2 for --projector; else the monitor's content scale, 1 to 3
+    size_t undoSteps = 0, redoSteps = 0;  // how many steps Undo and Redo can take
 };
 
 // The left side panel, filling (0, 0, width, height) of the window.

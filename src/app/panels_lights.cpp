@@ -41,7 +41,7 @@ void drawLightsSection(PanelContext& ctx) {
             }
             // Colour and intensity are edited apart: the split last edited here is kept while it still gives
             // this light's Il, so a darker colour stays a darker colour instead of being renormalised into a
-            // lower intensity (issue 15: picking a colour set the intensity to 0.935).
+            // lower intensity (picking a colour once set the intensity to 0.935).
             std::vector<ColorIntensity>& splits = ctx.fields.lightSplits;
             ColorIntensity ci = splitIntensity(l.color);
             if (i < splits.size() && joinIntensity(splits[i]) == l.color) ci = splits[i];

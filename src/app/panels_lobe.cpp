@@ -1,4 +1,4 @@
-// The Material panel's plots (issues 12 and 15): the specular lobe of every model against the angle between
+// The Material panel's plots: the specular lobe of every model against the angle between
 // R and V on a fixed axis, the same lobes as the textbook's polar figure in the plane of incidence (with the
 // probe's L, V and R), and the directional albedo of every model. The data is lobe_plot.h and albedo_plot.h;
 // this file only draws it.

@@ -1,4 +1,4 @@
-// The probe's 2D diagram (issue 15): the textbook figure of the plane of incidence, in which every vector is
+// The probe's 2D diagram: the textbook figure of the plane of incidence, in which every vector is
 // drawn at its true angle from N and full length, so none collapses to a dot the way V (pointing at the
 // camera) and N (near a sphere's centre) do in the 3D overlay. N points up; L is drawn to the left and R to
 // the right of N, as in the lecture's figure; V and H on the side their component along the surface takes

@@ -1,4 +1,4 @@
-// Where the viewer may save the scene (issue 15: a mis-aimed click once replaced a .gltf with scene JSON).
+// Where the viewer may save the scene (a mis-aimed click once replaced a .gltf with scene JSON).
 // Save writes scene JSON, so the name must end in ".json": a glTF model, an image or any other file is never
 // replaced by it. An existing .json is replaced only after the user confirms (panels_scene.cpp).
 #pragma once

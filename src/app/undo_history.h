@@ -1,4 +1,4 @@
-// Undo and redo over the viewer's edits (issue 15). An edit is any change that bumps
+// Undo and redo over the viewer's edits (docs/viewer.md, "Undo and redo"). An edit is any change that bumps
 // ViewerState::editRevision: materials, lights, the model and terms, raster settings, the opened file.
 // Navigation is not an edit: the camera, the selection, the probe, the view mode and the wipe stay as they
 // are when an edit is undone, as in most 3D tools. A slider drag is one step, because the viewer commits

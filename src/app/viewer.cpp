@@ -55,8 +55,8 @@ bool Viewer::finished() const {
     return !cursor_ || (cursor_->done() && !waiting_ && !drag_ && !smoothShot_);
 }
 
-// An idle viewer uses no CPU (issue 15): when nothing is animating it sleeps in glfwWaitEvents until input,
-// a drop or a resize arrives, or until the next thing it must show (a status message expiring, a reference
+// An idle viewer uses no CPU (docs/viewer.md, "Idle"): when nothing is animating it sleeps in glfwWaitEvents until
+// input, a drop or a resize arrives, or until the next thing it must show (a status message expiring, a reference
 // tile). A few frames after any input let ImGui settle its hover and focus state before sleeping again.
 void Viewer::waitForWork() {
     const bool scripted =

@@ -1,4 +1,4 @@
-// ViewerState: everything the viewer's panels edit, as plain data (issue 4 §3), and the actions that change
+// ViewerState: everything the viewer's panels edit, as plain data, and the actions that change
 // it. The GUI, the --script automation and the unit tests all call these same functions; drawing reads
 // the state and never writes it. Actions that change what a renderer sees bump `revision` (and, unless only
 // the rasterizer sees it, `referenceRevision`).
@@ -21,7 +21,7 @@ namespace shadelab::app {
 
 enum class ObjectKind { None, Sphere, Plane, Mesh };
 
-// The surface point a click probed, so the probe stays on it while the camera moves (issue 15).
+// The surface point a click probed, so the probe stays on it while the camera moves.
 struct ProbeAnchor {
     uint32_t objectId = 0;  // coverage id of the object clicked; 0 = not anchored yet
     glm::vec3 point{0.0f};  // the hit point, world units (objects do not move in the viewer)

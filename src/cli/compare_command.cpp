@@ -1,5 +1,5 @@
 // `shadelab compare a.png b.png`: metrics, gates and the evidence files. Exit codes differ from the other
-// commands on purpose (issue 3): 0 within the gates, 1 outside them, 2 for any error (bad file, usage).
+// commands so that scripts can gate on them: 0 within the gates, 1 outside them, 2 for any error (bad file, usage).
 #include "cli/compare_command.h"
 
 #include "cli/args.h"

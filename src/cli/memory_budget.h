@@ -1,4 +1,4 @@
-// The memory budget of one render (issue 11): an estimate of what `shadelab render` will allocate, checked
+// The memory budget of one render: an estimate of what `shadelab render` will allocate, checked
 // against --max-memory before any pixel is drawn, so a 16384² trace under a 2 GB limit is one clear line
 // instead of std::bad_alloc. An estimate for refusing, not an allocator: it errs on the generous side.
 #pragma once

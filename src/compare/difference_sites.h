@@ -1,4 +1,4 @@
-// Where two renderers' images differ, in plain words (issue 15): the pixels over the gates' threshold,
+// Where two renderers' images differ, in plain words: the pixels over the gates' threshold,
 // counted per object of the coverage, and a sentence that names the objects with the usual cause of a
 // raster/reference difference on each (an environment-cube reflection, transmission drawn by the reference
 // only, shadow-map edges). For a class and a first-time user; the verdict under the design.md §4 gates is

@@ -1,4 +1,4 @@
-// EnvironmentCubes: the rasterizer's approximation for reflective spheres and mesh parts (issue 5). Each
+// EnvironmentCubes: the rasterizer's approximation for reflective spheres and mesh parts. Each
 // gets a cube map of the scene rendered from its centre (the object itself left out) with local shading
 // and shadows, one bounce; its fragments add kr ⊙ env(R), R the mirror direction of V. Known error
 // (docs/lighting.md): the cube is seen from the centre, not from each surface point (parallax), so what

@@ -27,7 +27,7 @@ struct FrameBlock {
     glm::vec4 lightColor[kMaxLights];
     glm::vec4 lightAtten[kMaxLights];
     glm::vec4 clipPlane{0.0f, 0.0f, 0.0f, 1.0f};  // mirror passes: keep dot(xyz, P) + w >= 0
-    // The environment (issue 12, shaders/ibl.glsl): Scene::environment and energyCompensation.
+    // The environment (shaders/ibl.glsl): Scene::environment and energyCompensation.
     glm::vec4 iblParams{1.0f, 1.0f, 0.0f, 0.0f};  // intensity, cos(rotation), sin(rotation), unused
     glm::ivec4 iblInfo{0};                        // IblMode, cube size, levels, pbr energy compensation (0/1)
     glm::vec4 iblRadiance{0.0f};                  // a uniform environment's radiance: background·intensity

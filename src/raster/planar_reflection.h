@@ -1,4 +1,4 @@
-// Planar reflection (issue 5): the frame block of the scene mirrored about a plane, seen from the real
+// Planar reflection: the frame block of the scene mirrored about a plane, seen from the real
 // camera, so a screen-space lookup at the mirror's own pixel is exactly I(reflected ray) for one bounce
 // (the classic mirror pass, e.g. Kilgard 1999, "Improving shadows and reflections via the stencil buffer").
 // Not the drawing: RasterRenderer runs its passes with this frame into a second float target.

@@ -1,6 +1,6 @@
 // RasterRenderer: Scene → linear float image through OpenGL (design.md §1, §2). Meshes are rasterized;
 // spheres and planes are ray-cast impostors using the tracer's own intersection code, so silhouettes
-// and normals are exact. Shadows (shadow maps) and planar mirrors follow the scene's term switches (issue 5).
+// and normals are exact. Shadows (shadow maps) and planar mirrors follow the scene's term switches.
 #pragma once
 
 #include "gl/program.h"
@@ -52,9 +52,9 @@ public:
 
     const RenderTarget& target() const { return target_; }
 
-    // The viewer's partial redraw (issue 15), off by default. When on, a draw of the whole image at the pixel
-    // centres with coverage, after one whose inputs differed only in some objects' materials, redraws only
-    // the pixels of those objects (and of objects whose environment cube changed with them); the image is
+    // The viewer's partial redraw (docs/viewer.md, "Partial redraw"), off by default. When on, a draw of the whole
+    // image at the pixel centres with coverage, after one whose inputs differed only in some objects' materials,
+    // redraws only the pixels of those objects (and of objects whose environment cube changed with them); the image is
     // bit for bit what a full draw gives (redraw_plan.h). A draw with nothing changed then draws nothing.
     void setPartialRedraw(bool on);
     // The next draw is a full one (a benchmark's forced redraw).

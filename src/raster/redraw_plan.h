@@ -1,4 +1,4 @@
-// RedrawPlan: which part of the last raster image a new draw must redo (the viewer's partial redraw, issue 15).
+// RedrawPlan: which part of the last raster image a new draw must redo (the viewer's partial redraw).
 // A draw is keyed by everything its colour pass reads except the materials, and by each drawn object's
 // material; when only materials changed, only the objects whose material changed are redrawn. Pure: no GL.
 #pragma once

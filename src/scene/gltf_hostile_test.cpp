@@ -1,4 +1,4 @@
-// glTF import of broken and hostile files (issue 6): one-line errors naming the file and the place, cycles,
+// glTF import of broken and hostile files: one-line errors naming the file and the place, cycles,
 // out-of-range indices, buffers outside the model folder, and the size limits.
 #include "scene/gltf_test_util.h"
 

@@ -90,7 +90,7 @@ TEST(GltfImport, MaterialsFollowTheMapping) {
     expectNear(m.md, {0.8f, 0, 0});
     expectNear(m.ms, glm::vec3(0.04f));
     EXPECT_FLOAT_EQ(m.s, 1.0f);
-    // The pbr model reads the glTF values themselves (issue 12).
+    // The pbr model reads the glTF values themselves.
     expectNear(m.baseColor, {0.8f, 0, 0});
     EXPECT_EQ(m.metallic, 0.0f);
     EXPECT_EQ(m.roughness, 1.0f);
@@ -305,8 +305,9 @@ TEST(GltfImport, TwoCylinderEngineImportsWhole) {
     EXPECT_EQ(triangleCount(g), 121496u);
 }
 
-// Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed (issue 6).
-// Limits against hostile files (issue 6): each gives a one-line InputError before anything big is allocated.
+// Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed.
+// Limits against hostile files (docs/gltf-import.md, "Limits against hostile files"): each gives a one-line InputError
+// before anything big is allocated.
 
 }  // namespace
 }  // namespace shadelab

@@ -1,5 +1,6 @@
-// Limits against hostile glTF files (issue 6): sizes a model may declare before anything is allocated for
-// it, and the geometry it may produce. Plain settings; the defaults suit any real teaching model.
+// Limits against hostile glTF files (docs/gltf-import.md, "Limits against hostile files"): sizes a model may declare
+// before anything is allocated for it, and the geometry it may produce. Plain settings; the defaults suit any real
+// teaching model.
 #pragma once
 
 #include <cstddef>

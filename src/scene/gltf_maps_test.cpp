@@ -1,7 +1,7 @@
-// glTF material maps as scene data (issue 16): metallic-roughness, normal (scale) and occlusion (strength)
-// bindings, TEXCOORD_1 and the transform's texCoord override, alpha modes, TANGENT read or generated in the
-// MikkTSpace convention (mesh_tangents.h); and bad input: a missing or malformed TANGENT, TEXCOORD_2, an
-// unknown alphaMode, each one line (an error naming the accessor, or a warning and the documented fallback).
+// glTF material maps as scene data (docs/gltf-import.md, "Material maps"): metallic-roughness, normal (scale) and
+// occlusion (strength) bindings, TEXCOORD_1 and the transform's texCoord override, alpha modes, TANGENT read or
+// generated in the MikkTSpace convention (mesh_tangents.h); and bad input: a missing or malformed TANGENT, TEXCOORD_2,
+// an unknown alphaMode, each one line (an error naming the accessor, or a warning and the documented fallback).
 #include "gltf_test_util.h"
 
 #include "scene/mesh_tangents.h"

@@ -21,7 +21,7 @@ struct Material {
     glm::vec3 md{0.7f};         // diffuse coefficient, linear RGB
     glm::vec3 ms{0.3f};         // specular coefficient, linear RGB
     float s = 32.0f;            // shininess exponent, [0, 10000]
-    glm::vec3 kr{0.0f};         // reflectivity, RGB (tracer and issue-5 raster reflections)
+    glm::vec3 kr{0.0f};         // reflectivity, RGB (tracer and raster reflections)
     glm::vec3 kt{0.0f};         // transmission, RGB
     float ior = 1.5f;           // index of refraction, > 0
     glm::vec3 baseColor{0.7f};  // pbr: base colour, linear RGB in [0, 1] (= md by default)

@@ -1,6 +1,7 @@
-// RasterSettings: the rasterizer's own knobs for its shadows and reflections (issue 5), as plain scene data
-// that the scene file ("raster"), the CLI flags, the viewer's panel and the tests edit alike. The tracer
-// ignores them. The term switches (Scene::terms.shadows / .reflections) decide whether the techniques run.
+// RasterSettings: the rasterizer's own knobs for its shadows and reflections (docs/lighting.md, "Shadows and
+// reflections in the rasterizer"), as plain scene data that the scene file ("raster"), the CLI flags, the viewer's
+// panel and the tests edit alike. The tracer ignores them. The term switches (Scene::terms.shadows / .reflections)
+// decide whether the techniques run.
 #pragma once
 
 namespace shadelab {

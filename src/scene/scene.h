@@ -28,7 +28,7 @@ struct Scene {
     int maxDepth = 5;            // secondary-ray depth for the tracer, >= 0
     RasterSettings raster;       // the rasterizer's shadow-map and reflection settings
 
-    // Issue 12: what escaping rays see and what lights pbr surfaces besides the lights (none: `background`),
+    // What escaping rays see and what lights pbr surfaces besides the lights (none: `background`),
     // and pbr's multiple-scattering compensation (Filament), for lights and the environment.
     std::optional<Environment> environment;
     bool energyCompensation = false;

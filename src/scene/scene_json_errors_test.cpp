@@ -1,5 +1,5 @@
-// Scene JSON validation (issue 6): one case per rule, each error naming the file, the JSON path and the
-// reason in one line (e.g. "lights[2].color: expected 3 numbers, got 2").
+// Scene JSON validation (docs/scene-format.md, "Errors"): one case per rule, each error naming the file, the JSON path
+// and the reason in one line (e.g. "lights[2].color: expected 3 numbers, got 2").
 #include "scene/scene_json.h"
 
 #include "util/input_error.h"

@@ -88,7 +88,7 @@ Camera frameBounds(const Bounds& b, float fovY) {
     // which every corner of the box lies inside the frustum with kFrameMargin of room, in the narrower of
     // the vertical half-FOV and the 16:9 horizontal one: for a corner at offset o, depth d − o·w must hold
     // margin·|o·r| / tan(halfX) and margin·|o·u| / tan(halfY). A tight fit of the box, not of its bounding
-    // sphere, which left long models small in the frame (issue 15).
+    // sphere, which left long models small in the frame.
     const glm::vec3 w = glm::normalize(glm::vec3(0.3f, 0.35f, 1.0f));  // from the centre toward the eye
     const glm::vec3 r = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), w));
     const glm::vec3 u = glm::cross(w, r);
@@ -170,7 +170,7 @@ Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& g
         scene.lights.resize(size_t(kMaxLights));
     }
     // Framed to fit, as F3D and the glTF Sample Viewer open a model: a file's camera often frames one part or
-    // an aspect other than ours (issue 15). Its cameras stay at hand (camera_choice.h).
+    // an aspect other than ours. Its cameras stay at hand (camera_choice.h).
     scene.modelCameras = std::move(imported.cameras);
     scene.camera = frameBounds(bounds);
     return scene;

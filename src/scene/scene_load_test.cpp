@@ -166,7 +166,7 @@ TEST(SceneLoad, BoundsFramingAndRig) {
 namespace shadelab {
 namespace {
 
-// Issue 12: a glTF model's metallic-roughness materials survive the scene file: saved (the model as a mesh
+// A glTF model's metallic-roughness materials survive the scene file: saved (the model as a mesh
 // with its pbr fields overridden on one mesh) and loaded back, every part's baseColor, metallic and
 // roughness are the same, and untouched parts keep the values imported from the file.
 TEST(SceneLoad, GltfPbrMaterialsRoundTripThroughTheSceneFile) {

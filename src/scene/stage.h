@@ -1,7 +1,7 @@
-// The stage (issue 15): what a bare glTF model gets in the viewer so it looks placed rather than floating in
-// black: a soft checker floor just under its bounds, a soft grey background, and shadows. A plain function of
-// the scene, so the viewer's switch, the tests and a saved scene all see the same thing; the floor is the
-// plane named "stage".
+// The stage (docs/viewer.md, "Opening files and the stage"): what a bare glTF model gets in the viewer so it looks
+// placed rather than floating in black: a soft checker floor just under its bounds, a soft grey background, and
+// shadows. A plain function of the scene, so the viewer's switch, the tests and a saved scene all see the same thing;
+// the floor is the plane named "stage".
 #pragma once
 
 #include "scene/scene.h"

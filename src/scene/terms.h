@@ -11,8 +11,8 @@ struct Terms {
     bool ambient = true;
     bool diffuse = true;
     bool specular = true;
-    bool shadows = true;      // tracer; rasterizer from issue 5
-    bool reflections = true;  // includes refraction; tracer; rasterizer from issue 5
+    bool shadows = true;      // both renderers (the rasterizer through shadow maps)
+    bool reflections = true;  // both renderers; includes refraction, which only the tracer draws
 };
 
 enum class Term { Ambient, Diffuse, Specular, Shadows, Reflections };

@@ -1,4 +1,4 @@
-// The white furnace (issue 12): the scene with every material white and lit by nothing but a uniform
+// The white furnace: the scene with every material white and lit by nothing but a uniform
 // environment of radiance 1, so a model that loses or gains energy shows up as dark or bright rings on an
 // object that should vanish into the background. Pure functions on Scene; the viewer's button and the
 // `whiteFurnace` script action use them. What each model shows: docs/lighting.md, "The white furnace".

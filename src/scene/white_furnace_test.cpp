@@ -1,4 +1,4 @@
-// whiteFurnaceScene and leaveWhiteFurnace (issue 12): the furnace sets only background, Ia, lights, terms and
+// whiteFurnaceScene and leaveWhiteFurnace: the furnace sets only background, Ia, lights, terms and
 // materials; every material is white; leaving restores the scene exactly (controls: the furnace scene itself,
 // and a restore from the wrong scene, must differ).
 #include "scene/white_furnace.h"

@@ -1,6 +1,6 @@
 // Directional albedo: the fraction of light a surface reflects toward V, integrated numerically from the same
 // shading functions the renderers run (shaders/lighting.glsl). For the viewer's albedo plot and the energy
-// tests (issue 12). No GL and no scene types.
+// tests (docs/lighting.md, "Directional albedo: where each model's energy goes"). No GL and no scene types.
 #pragma once
 
 #include "shading/lighting.h"

@@ -1,4 +1,4 @@
-// directionalAlbedo against closed forms (issue 12): white Lambert reflects all light at every angle, a
+// directionalAlbedo against closed forms: white Lambert reflects all light at every angle, a
 // tight normalised Phong lobe at normal incidence reflects ms, and GGX without multiple-scattering
 // compensation loses energy, more as roughness grows. Each with a control that must fail.
 #include "shading/directional_albedo.h"

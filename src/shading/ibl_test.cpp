@@ -1,4 +1,4 @@
-// The environment prefilter and its lookups (issue 12, split sum): face addressing, a uniform environment
+// The environment prefilter and its lookups (the split sum): face addressing, a uniform environment
 // staying uniform at every level, thread-count independence, SH9 irradiance against its closed form, and
 // the GGX levels conserving the environment's mean radiance.
 #include "shading/ibl_lookup.h"

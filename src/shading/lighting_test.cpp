@@ -1,4 +1,4 @@
-// Shading maths against hand-computed values (issue 2): clamps, x^0 = 1, peaks, per-channel colour, sums.
+// Shading maths against hand-computed values: clamps, x^0 = 1, peaks, per-channel colour, sums.
 #include "shading/local_illumination.h"
 
 #include <gtest/gtest.h>

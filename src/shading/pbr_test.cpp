@@ -1,4 +1,4 @@
-// The pbr BRDF of shaders/lighting.glsl against closed forms (issue 12): Schlick's end points, GGX's
+// The pbr BRDF of shaders/lighting.glsl against closed forms: Schlick's end points, GGX's
 // normalisation, white Lambert's albedo of 1, GGX's albedo loss, and the light units of design.md §7;
 // and the normalised Phong / Blinn-Phong lobes of §7.
 #include "shading/local_illumination.h"

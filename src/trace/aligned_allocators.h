@@ -4,7 +4,7 @@
 // Why huge pages: an incoherent ray touches about nine nodes and leaves spread over the whole tree, so with
 // 4 KiB pages nearly every visit also misses the first-level TLB, and a tree of a few megabytes (2CylinderEngine:
 // 4.4 MiB of nodes, 4 MiB of positions) outgrows even the second level. Backed by 2 MiB pages the same arrays
-// need a handful of entries: issue 14's incoherent rays ran 2 to 5 % faster (bench/README.md).
+// need a handful of entries: the incoherent-ray benchmark ran 2 to 5 % faster (bench/README.md).
 // Which arrays ask: only the finished ones (the builder's per-thread subtrees stay on ordinary pages, whose
 // untouched reserve costs nothing), and only from 2 MiB (below, the rounding would cost more than the pages
 // save) up to 64 MiB. Above that the first touch of huge pages dominates: on the development VM a 4.2 M-triangle

@@ -2,7 +2,7 @@
 // bvh_traverse.h (and bvh_traverse_avx2.h) and call back into the primitives (mesh_bvh.cpp for triangles,
 // sphere_set.cpp for spheres).
 //
-// Design (issue 14: fast traversal of incoherent rays, fast builds of millions of triangles):
+// Design (goals: fast traversal of incoherent rays, fast builds of millions of triangles):
 // - Layout. A node holds the boxes of its (up to) eight children as structure-of-arrays floats, one row of 8
 //   per box side (lo x, lo y, lo z, hi x, hi y, hi z). One AVX register holds one side of all eight boxes, so
 //   on CPUs with AVX2 and FMA a ray tests all eight with 6 fused multiply-subtracts and a few min/max
@@ -10,7 +10,7 @@
 //   multiplications (slab_test.h). Which one runs is chosen once per process (bvh_isa.h); both find the same hits. A
 //   node is 256 bytes, four cache lines, aligned. Unused children have an inverted box (+inf, -inf) that every ray
 //   misses, so traversal needs no child count. Eight children rather than four: fewer levels, so fewer nodes per ray
-//   (7.5 instead of 11 on issue 14's incoherent rays), each tested in one AVX2 step.
+//   (7.5 instead of 11 on the incoherent-ray benchmark), each tested in one AVX2 step.
 // - Child references are 32 bits: an interior child is a node index; a leaf is kLeafBit | first << 4 | count,
 //   a range of at most 15 primitives in leaf order. So a tree holds fewer than 2^27 primitives.
 // - Build. Binned SAH (MacDonald & Booth 1990 cost; Wald 2007 binning, 16 bins) on primitive references that

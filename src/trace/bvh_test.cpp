@@ -1,6 +1,6 @@
 // The SAH BVH (bvh.h) and its traversals (mesh_bvh.h, sphere_set.h) against brute force: same nearest hit (t
 // bit-equal, same triangle) and any-hit answers for random rays over real assimp-testmodels meshes.
-// Sections: brute force | real models | degenerate inputs | random triangle soups (issue 14's 8-wide tree:
+// Sections: brute force | real models | degenerate inputs | random triangle soups (the 8-wide tree:
 // sizes around the parallel-build threshold, ties, empty scenes) | spheres. The builder's own properties are
 // bvh_build_test.cpp; the AVX2 walks and the 8-wide slab tests against the baseline are bvh_isa_test.cpp.
 #include "trace/bvh.h"

@@ -362,10 +362,10 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
             transmitted = m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1, weight * m.kt, tree);
         }
     }
-    // One reflected ray serves kr and a pbr surface's environment specular (issue 12: "one reflected ray per
-    // pixel and the same prefiltered lookup"). Escaping, it reads the environment: kr the radiance along R,
-    // the specular the prefiltered lookup at the surface's roughness, exactly as the rasterizer. Hitting an
-    // object, kr takes the object's radiance (Whitted), and so does the mirror level (level 0) of the
+    // One reflected ray serves kr and a pbr surface's environment specular: one reflected ray per pixel and
+    // the same prefiltered lookup (docs/lighting.md, "Image-based lighting"). Escaping, it reads the environment: kr
+    // the radiance along R, the specular the prefiltered lookup at the surface's roughness, exactly as the rasterizer.
+    // Hitting an object, kr takes the object's radiance (Whitted), and so does the mirror level (level 0) of the
     // specular's trilinear lookup, with its weight 1 − roughness·(levels − 1): smooth surfaces reflect
     // objects sharply, and from roughness 1/(levels − 1) (0.2) on the lookup is the prefiltered one alone.
     const glm::vec3 specularWeight = environmentSpecularWeight(s, V);

@@ -1,4 +1,4 @@
-// Tracer-only physics with exact expected values (issue 3): hard shadows leave only ambient, a mirror sphere
+// Tracer-only physics with exact expected values: hard shadows leave only ambient, a mirror sphere
 // returns a known colour, a glass slab shifts a checker as Snell's law predicts, total internal reflection
 // sends the transmitted energy into the reflected ray, and the depth limit. Each with a negative control.
 #include "trace/integrator.h"

@@ -89,7 +89,7 @@ double outliers(const PathRun& r, double expected) {
     return double(n) / double(r.render->width() * r.render->height());
 }
 
-// The image mean within ±tolerance of the closed form (the bound) and within 4 standard errors of
+// The image mean within ±tolerance of the closed form (the accuracy each case requires) and within 4 standard errors of
 // it (noise-aware: tighter as samples grow), and no more than 1 % of the pixels beyond 4 of theirs.
 void expectRadiance(const PathRun& r, double expected, double tolerance, const std::string& what) {
     for (int c = 0; c < 3; ++c) {

@@ -1,4 +1,4 @@
-// The bounded Whitted ray tree (issue 11, RayTreeLimits): exact pruning and budget counts on a pair of
+// The bounded Whitted ray tree (RayTreeLimits): exact pruning and budget counts on a pair of
 // facing mirrors, the error bound of docs/lighting.md on the shipped scenes and a glass/mirror scene (with
 // a negative control), the glass tree that used to run for ever, and cancellation inside a tree.
 #include "image/encode.h"
@@ -47,9 +47,9 @@ Scene mirrorPair(float kr) {
 }
 const Ray kDownTheAxis{{0.1f, 0.2f, 0.5f}, {0, 0, -1}};
 
-// The glass tree of issue 11: 45 spheres (5 × 3 × 3, radius 0.45, 1 apart) with kr = kt = 1, ior 1.5, depth
-// 64. Every hit spawns two children of weight 1, so the unpruned tree is exponential in the depth. Framed
-// so that every pixel sees glass. Same scene as bench/glass-tree.json.
+// The glass tree, the tree the bound exists for: 45 spheres (5 × 3 × 3, radius 0.45, 1 apart) with kr = kt = 1,
+// ior 1.5, depth 64. Every hit spawns two children of weight 1, so the unpruned tree is exponential in the depth.
+// Framed so that every pixel sees glass. Same scene as bench/glass-tree.json.
 Scene glassTree() {
     Scene sc;
     sc.camera.position = {0.3f, 0.4f, 2.6f};
@@ -207,7 +207,7 @@ TEST(RayTree, ShippedAndGlassScenesChangeByAtMostPrunedWeightTimesTheRadianceBou
     //  (a) the theorem, per pixel and channel: |unpruned − pruned| ≤ (W + 1e-5) · B_{D−1}, where W is the
     //      sample's TreeStats::prunedWeight (a sum of children each < minWeight), B_{D−1} = radianceBound(scene,
     //      D − 1) the most a child ray can carry, and 1e-5 covers float rounding;
-    //  (b) issue 11's promise, over the image: max |unpruned − pruned| ≤ minWeight · max_c B_{D−1}. It follows
+    //  (b) docs/lighting.md's bound, over the image: max |unpruned − pruned| ≤ minWeight · max_c B_{D−1}. It follows
     //      from (a) where W ≤ minWeight (one pruned child); where a sample prunes several (the glass scene:
     //      W up to 2.6 minWeight) it holds because the pruned children carry far less than B.
     // Nothing pruned (every shipped scene) must be bit-identical.

@@ -197,8 +197,8 @@ TEST_F(AtomicFileTest, ReadNonRegularFile) {
     EXPECT_NE(readFile("/proc/self/status").find("Name:"), std::string::npos);
 }
 
-// Issue 11, outputs that never destroy: only regular files are replaced, no temporary name is visible while
-// the data is written (O_TMPFILE), the fallback's name fits any target name and is removed on signals.
+// Outputs that never destroy (docs/cli.md, "Outputs"): only regular files are replaced, no temporary name is visible
+// while the data is written (O_TMPFILE), the fallback's name fits any target name and is removed on signals.
 namespace {
 
 // Whether this folder's file system can make an unnamed file (ext4, xfs, btrfs, tmpfs can).

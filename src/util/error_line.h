@@ -1,4 +1,4 @@
-// errorLine: how every message reaches the terminal: one line, whatever the text inside it (issue 11).
+// errorLine: how every message reaches the terminal: one line, whatever the text inside it.
 // Control characters from user strings (a newline in a light's name, ANSI escapes, a NUL) are escaped,
 // and the line is capped so a huge data: URI or name list cannot flood the screen.
 #pragma once

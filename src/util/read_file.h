@@ -1,6 +1,6 @@
 // readFile: the one way shadelab reads a file it is given: scene, model, glTF buffer and image, PNG,
-// script, shader. It never blocks and never reads without a bound (issue 11). Not for writing: that is
-// atomic_file.h.
+// script, shader. It never blocks and never reads without a bound (docs/cli.md, "Limits and hostile input"). Not for
+// writing: that is atomic_file.h.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // WarningCapture: keeps the warnings a load prints, so the viewer can show them in its panel as well as on
-// the terminal (issue 15: ignored textures were mentioned only on the terminal). While one is alive on a
+// the terminal (ignored textures were once mentioned only on the terminal). While one is alive on a
 // thread, WarningCapture::warn prints each line with printWarning and records it there; loaders take
 // WarningCapture::warn as their `warn` callback like printWarning itself.
 #pragma once

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Structural glTF mutation fuzzer (issue 11): mutates the JSON and GLB structure of real models (counts,
+"""Structural glTF mutation fuzzer: mutates the JSON and GLB structure of real models (counts,
 offsets, strides, URIs, component types, indices, node links), renders each mutant with the shadelab binary,
 and checks the promises for bad input: exit 0 or 1, at most one error line, every line within the cap,
 within 10 s and 1 GiB. Failing mutants and their output are kept in the output folder.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Leak check (issue 6): one headless raster render and one traced render under valgrind memcheck with
+# Leak check: one headless raster render and one traced render under valgrind memcheck with
 # tests/leaks/system.supp. Passes when valgrind reports no error and no definite or indirect leak.
 # usage: leak_check.sh SHADELAB_BINARY SOURCE_DIR raster|trace OUTPUT_DIR     (exit 77: skipped)
 set -u
