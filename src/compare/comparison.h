@@ -18,8 +18,8 @@ struct Rendered {
     std::vector<uint32_t> coverage;  // empty when coverage was not asked for
 };
 
-// The reference's secondary-ray depth when it is compared with the rasterizer: `requested` (the user's
-// --depth) if given, else the scene's maxDepth capped at 1, because the rasterizer reflects once (issue 5).
+// The reference's secondary-ray depth when it is compared with the rasterizer: `requested` (a render
+// request's depth) if given, else the scene's maxDepth capped at 1, because the rasterizer reflects once.
 int comparisonDepth(const Scene& scene, std::optional<int> requested = std::nullopt);
 
 }  // namespace shadelab
