@@ -18,6 +18,7 @@ packages=(
   python3-setuptools python3-pip python3-venv           # `pip install .` offline, with Debian's build tools
   jupyter-nbconvert python3-ipykernel python3-ipywidgets # the notebook, executed by the tests
   python3-distributed                                   # Dask: the batch-sweep example and its test
+  python3-mypy                                          # the package's type checks (mypy --strict, stubtest)
 )
 for arg in "$@"; do
   case "$arg" in

@@ -10,8 +10,12 @@ file's. It holds no rendering code of its own (design.md §5). See docs/python.m
     image = shadelab.render(scene, size=(640, 360))
     image.save("out.png")
 
-Importing the package does not import numpy; np.asarray(image) and shadelab.lighting do.
+Importing the package does not import numpy; np.asarray(image) and shadelab.lighting do. The package is
+typed (py.typed; the compiled module's signatures are in _shadelab.pyi); shadelab.typing has the aliases
+its signatures use, for annotating code that calls it.
 """
+
+from __future__ import annotations
 
 from . import _shadelab
 from ._shadelab import ContextError, Image, InputError
@@ -20,7 +24,7 @@ from .render import Renderer, default_renderer, probe, render
 from .scene import Scene, ShadelabWarning
 
 __version__ = _shadelab.build_info["version"]
-build_info = dict(_shadelab.build_info)
+build_info: dict[str, str] = dict(_shadelab.build_info)
 
 __all__ = [
     "CompareReport",
@@ -41,9 +45,16 @@ __all__ = [
 ]
 
 
-def __getattr__(name):
-    # shadelab.lighting and shadelab.plots import numpy: loaded on first use, so `import shadelab` stays light.
-    if name in ("lighting", "plots"):
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
+if TYPE_CHECKING:
+    from types import ModuleType
+
+
+def __getattr__(name: str) -> ModuleType:
+    # shadelab.lighting and shadelab.plots import numpy, shadelab.typing imports typing: each is loaded on
+    # first use, so `import shadelab` stays light. (shadelab.typing stays out of __all__: a star import would
+    # shadow the standard library's typing.)
+    if name in ("lighting", "plots", "typing"):
         import importlib
 
         return importlib.import_module("." + name, __name__)

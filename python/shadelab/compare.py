@@ -1,31 +1,43 @@
 """shadelab.compare: two images under the gates of design.md §4, the report `shadelab compare --json` writes,
 and the heatmap of |a - b|."""
 
+from __future__ import annotations
+
 import os
 
 from . import _shadelab
 
-default_gates = dict(_shadelab.default_gates)  # threshold, max_fraction_over, hard_max, ...: the JSON's names
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
+if TYPE_CHECKING:
+    from typing import Any, Mapping
+
+    from ._types import StrPath
+    from .typing import ImageLike
+
+# threshold, max_fraction_over, hard_max, max_silhouette_fraction, max_mean (None: no gate): the JSON's names.
+default_gates: dict[str, float | None] = dict(_shadelab.default_gates)
 
 
 class CompareReport:
     """The outcome of compare(): `passed`, `reasons`, `report` (the dict `shadelab compare --json` writes),
     `summary` (the lines the binary prints) and `heatmap` (an Image of |a - b|, amplified)."""
 
-    def __init__(self, report, summary, heatmap):
+    def __init__(self, report: dict[str, Any], summary: str, heatmap: _shadelab.Image) -> None:
         self.report = report
         self.summary = summary
         self.heatmap = heatmap
 
     @property
-    def passed(self):
-        return self.report["pass"]
+    def passed(self) -> bool:
+        """True when every gate is met."""
+        return bool(self.report["pass"])
 
     @property
-    def reasons(self):
+    def reasons(self) -> list[str]:
+        """The gates that failed, one line each, as the binary words them (empty when passed)."""
         return list(self.report["reasons"])
 
-    def save(self, stem):
+    def save(self, stem: StrPath) -> tuple[str, str]:
         """Writes <stem>_heat.png and <stem>_report.json; returns their paths."""
         heat, report = f"{stem}_heat.png", f"{stem}_report.json"
         self.heatmap.save(heat)
@@ -38,14 +50,14 @@ class CompareReport:
         os.replace(tmp, report)
         return heat, report
 
-    def _repr_png_(self):
+    def _repr_png_(self) -> bytes:
         return self.heatmap._repr_png_()
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<shadelab.CompareReport {self.report['verdict']}: {'; '.join(self.reasons) or 'within the gates'}>"
 
 
-def _image(x):
+def _image(x: ImageLike) -> tuple[_shadelab.Image, str]:
     if isinstance(x, _shadelab.Image):
         return x, ""
     if isinstance(x, (str, os.PathLike)):
@@ -56,17 +68,18 @@ def _image(x):
     raise TypeError(f"expected a shadelab.Image, a PNG path or a numpy array, got {type(x).__name__}")
 
 
-def compare(a, b, gates=None, *, gain=16):
+def compare(a: ImageLike, b: ImageLike, gates: Mapping[str, float | None] | None = None, *,
+            gain: int = 16) -> CompareReport:
     """Compares a with b (Images, PNG paths or numpy arrays; uint8 arrays as they are, float ones as linear
     RGB) under `gates` (a dict with any of default_gates' keys; the rest keep design.md §4's values). When
     both images carry coverage (render(..., coverage=True)) the silhouette band is masked, as in the
-    raster-against-reference tests. gain: the heatmap's amplification. Paths given are recorded in the
-    report as image_a / image_b, as the binary does."""
+    raster-against-reference tests. gain: the heatmap's amplification, 1..255 (default 16). Paths given
+    are recorded in the report as image_a / image_b, as the binary does."""
     gates = dict(gates or {})
     unknown = sorted(set(gates) - set(default_gates))
     if unknown:
         raise ValueError(f"gates: unknown gate(s) {', '.join(unknown)}; expected {', '.join(default_gates)}")
-    merged = {**default_gates, **gates}
+    merged: dict[str, Any] = {**default_gates, **gates}  # the compiled module checks each one's type
     image_a, name_a = _image(a)
     image_b, name_b = _image(b)
     report, summary, heat, _ = _shadelab._compare(image_a, image_b, merged["threshold"], merged["max_fraction_over"],

@@ -13,75 +13,99 @@ N, L and V are taken as given by phong, blinn_phong, pbr and reflect_light (pass
 shaders do); shade normalises them first, as the renderers' shadeLight does.
 """
 
+from __future__ import annotations
+
 import numpy as np
 
 from . import _shadelab
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
+if TYPE_CHECKING:
+    from typing import Mapping, Union
 
-def normalize(v):
+    from numpy.typing import ArrayLike, NDArray
+
+    from ._types import ModelName
+
+    # A lobe's values: an array of the arguments' broadcast shape, or one number when they are single vectors.
+    Scalars = Union[NDArray[np.float32], np.float32]
+
+
+def normalize(v: ArrayLike) -> NDArray[np.float32]:
     """v / |v| along the last axis, in float32."""
-    v = np.asarray(v, dtype=np.float32)
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+    a = np.asarray(v, dtype=np.float32)
+    return a / np.linalg.norm(a, axis=-1, keepdims=True)  # type: ignore[no-any-return]
 
 
-def _broadcast(vectors, scalars):
+def _broadcast(vectors: Mapping[str, ArrayLike],
+               scalars: Mapping[str, ArrayLike]) -> tuple[tuple[int, ...], list[NDArray[np.float32]]]:
     """Flattens arguments to n rows after broadcasting; returns (shape, rows...)."""
-    vectors = {k: np.asarray(v, dtype=np.float32) for k, v in vectors.items()}
-    scalars = {k: np.asarray(v, dtype=np.float32) for k, v in scalars.items()}
-    for name, v in vectors.items():
+    vecs = {k: np.asarray(v, dtype=np.float32) for k, v in vectors.items()}
+    scals = {k: np.asarray(v, dtype=np.float32) for k, v in scalars.items()}
+    for name, v in vecs.items():
         if v.ndim == 0 or v.shape[-1] != 3:
             raise ValueError(f"{name}: expected 3 components on the last axis, got shape {v.shape}")
-    shapes = [v.shape[:-1] for v in vectors.values()] + [s.shape for s in scalars.values()]
+    shapes = [v.shape[:-1] for v in vecs.values()] + [s.shape for s in scals.values()]
     try:
         shape = np.broadcast_shapes(*shapes)
     except ValueError:
         raise ValueError("arguments do not broadcast: " + ", ".join(
-            f"{k} {v.shape}" for k, v in {**vectors, **scalars}.items())) from None
-    rows = [np.ascontiguousarray(np.broadcast_to(v, shape + (3,)).reshape(-1, 3)) for v in vectors.values()]
-    rows += [np.ascontiguousarray(np.broadcast_to(s, shape).reshape(-1)) for s in scalars.values()]
+            f"{k} {v.shape}" for k, v in {**vecs, **scals}.items())) from None
+    rows = [np.ascontiguousarray(np.broadcast_to(v, shape + (3,)).reshape(-1, 3)) for v in vecs.values()]
+    rows += [np.ascontiguousarray(np.broadcast_to(s, shape).reshape(-1)) for s in scals.values()]
     return shape, rows
 
 
-def _shaped(result, shape):
-    out = result.reshape(shape + result.shape[1:])
+def _shaped(result: NDArray[np.float32], shape: tuple[int, ...]) -> Scalars:
+    """One value per row, back in the arguments' broadcast shape; a single number when that shape is ()."""
+    out = result.reshape(shape)
     return out[()] if out.ndim == 0 else out
 
 
-def phong(N, L, V, s):
+def _shaped_vectors(result: NDArray[np.float32], shape: tuple[int, ...]) -> NDArray[np.float32]:
+    """One vector per row, back in the arguments' broadcast shape, plus the 3 components."""
+    return result.reshape(shape + (3,))
+
+
+def phong(N: ArrayLike, L: ArrayLike, V: ArrayLike, s: ArrayLike) -> Scalars:
     """Phong 1975's specular factor max(R·V, 0)^s with R = 2N(N·L) − L; 0 where N·L <= 0; x^0 = 1."""
     shape, rows = _broadcast({"N": N, "L": L, "V": V}, {"s": s})
     return _shaped(_shadelab._phong(*rows), shape)
 
 
-def blinn_phong(N, L, V, s):
+def blinn_phong(N: ArrayLike, L: ArrayLike, V: ArrayLike, s: ArrayLike) -> Scalars:
     """Blinn 1977's specular factor max(N·H, 0)^s with H = normalize(L + V); 0 where N·L <= 0; x^0 = 1."""
     shape, rows = _broadcast({"N": N, "L": L, "V": V}, {"s": s})
     return _shaped(_shadelab._blinn_phong(*rows), shape)
 
 
-def pbr(N, L, V, base_color=0.7, metallic=0.0, roughness=0.5):
+def pbr(N: ArrayLike, L: ArrayLike, V: ArrayLike, base_color: ArrayLike = 0.7, metallic: ArrayLike = 0.0,
+        roughness: ArrayLike = 0.5) -> NDArray[np.float32]:
     """glTF 2.0 Appendix B's specular BRDF D·V·F (GGX, height-correlated Smith, Schlick) in 1/sr, RGB, with
     F0 = mix(0.04, base_color, metallic) and α = roughness²; 0 where N·L <= 0. The renderers add the
     diffuse layer and scale by π·N·L·Il: see shade(..., model="pbr")."""
     shape, rows = _broadcast({"N": N, "L": L, "V": V, "base_color": _rgb(base_color)},
                              {"metallic": metallic, "roughness": roughness})
-    return _shaped(_shadelab._pbr(*rows), shape)
+    return _shaped_vectors(_shadelab._pbr(*rows), shape)
 
 
-def reflect_light(N, L):
+def reflect_light(N: ArrayLike, L: ArrayLike) -> NDArray[np.float32]:
     """R = 2N(N·L) − L, the mirror of L about N."""
     shape, rows = _broadcast({"N": N, "L": L}, {})
-    return _shaped(_shadelab._reflect_light(*rows), shape)
+    return _shaped_vectors(_shadelab._reflect_light(*rows), shape)
 
 
-def _rgb(c):
-    c = np.asarray(c, dtype=np.float32)
-    return np.broadcast_to(c[..., None], c.shape + (3,)) if c.ndim == 0 else c
+def _rgb(c: ArrayLike) -> NDArray[np.float32]:
+    a = np.asarray(c, dtype=np.float32)
+    return np.broadcast_to(a[..., None], a.shape + (3,)) if a.ndim == 0 else a
 
 
-def shade(N, L, V, Il=1.0, md=0.7, ms=0.3, s=32.0, model="phong", diffuse=True, specular=True):
+def shade(N: ArrayLike, L: ArrayLike, V: ArrayLike, Il: ArrayLike = 1.0, md: ArrayLike = 0.7, ms: ArrayLike = 0.3,
+          s: ArrayLike = 32.0, model: ModelName = "phong", diffuse: bool = True,
+          specular: bool = True) -> NDArray[np.float32]:
     """One light's contribution Il ⊙ (md·max(N·L, 0) + ms·spec), RGB, exactly as both renderers compute it
     (shadeLight). model: "phong", "blinn-phong" or "pbr" (then md is the diffuse colour, ms F0 and s the
     roughness, and the result is π·f(L, V)·Il·N·L). Colours may be single numbers (grey)."""
     shape, rows = _broadcast({"N": N, "L": L, "V": V, "Il": _rgb(Il), "md": _rgb(md), "ms": _rgb(ms)}, {"s": s})
-    return _shaped(_shadelab._shade(*rows, model, bool(diffuse), bool(specular)), shape)
+    rN, rL, rV, rIl, rmd, rms, rs = rows
+    return _shaped_vectors(_shadelab._shade(rN, rL, rV, rIl, rmd, rms, rs, model, bool(diffuse), bool(specular)), shape)

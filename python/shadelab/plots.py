@@ -4,9 +4,17 @@ shadelab.Image (shows inline in Jupyter, saves as PNG). The values come from sha
     shadelab.plots.lobe_image("blinn-phong", s=64, light_angle=30)
 """
 
+from __future__ import annotations
+
 import numpy as np
 
 from . import _shadelab, lighting
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
+if TYPE_CHECKING:
+    from numpy.typing import NDArray
+
+    from ._types import ModelName
 
 _BACKGROUND = (24, 24, 28)
 _SURFACE = (150, 150, 150)
@@ -16,7 +24,8 @@ _LIGHT = (250, 220, 90)
 _MIRROR = (120, 190, 250)
 
 
-def lobe(model="phong", s=32.0, light_angle=45.0, samples=721, roughness=None):
+def lobe(model: ModelName = "phong", s: float = 32.0, light_angle: float = 45.0, samples: int = 721,
+         roughness: float | None = None) -> tuple[NDArray[np.float64], NDArray[np.float32]]:
     """The specular lobe in the plane of incidence: (view angles in degrees from N, values). L lies at
     `light_angle` degrees from N on the negative side; N = +z. Phong and Blinn-Phong give their specular
     factor; pbr the GGX BRDF times N·L (its roughness from s as the scene file maps it unless given)."""
@@ -33,7 +42,8 @@ def lobe(model="phong", s=32.0, light_angle=45.0, samples=721, roughness=None):
     return np.degrees(phi), values
 
 
-def _segment(xx, yy, end, width):
+def _segment(xx: NDArray[np.float64], yy: NDArray[np.float64], end: tuple[float, float],
+             width: float) -> NDArray[np.bool_]:
     """Pixels within width/2 of the segment from the origin to `end`."""
     ex, ey = end
     length2 = ex * ex + ey * ey
@@ -41,7 +51,8 @@ def _segment(xx, yy, end, width):
     return (xx - t * ex) ** 2 + (yy - t * ey) ** 2 <= (width / 2.0) ** 2
 
 
-def lobe_image(model="phong", s=32.0, light_angle=45.0, size=256, roughness=None):
+def lobe_image(model: ModelName = "phong", s: float = 32.0, light_angle: float = 45.0, size: int = 256,
+               roughness: float | None = None) -> _shadelab.Image:
     """A polar plot of lobe(): the lobe filled (orange), L (yellow), its mirror R (blue), N and the surface
     (grey). The radius is the value scaled to the largest one, so the shape, not the height, is compared."""
     angles, values = lobe(model, s, light_angle, roughness=roughness)

@@ -14,20 +14,30 @@ Loaded by the `pytest11` entry point once the package is pip-installed; from a b
 -p shadelab.pytest_plugin (or list it in a conftest's pytest_plugins).
 """
 
+from __future__ import annotations
+
 import json
 import os
 import re
 import shutil
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, Mapping
 
 import pytest
 
 import shadelab
 
+if TYPE_CHECKING:
+    from _pytest.terminal import TerminalReporter  # not exported as pytest.TerminalReporter before pytest 7.4
+    from numpy.typing import ArrayLike
+
+    from ._types import StrPath
+    from .typing import ImageLike
+
 _UPDATE = "--shadelab-update-baselines"
 
 
-def pytest_addoption(parser):
+def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("shadelab", "shadelab screenshot tests")
     group.addoption(_UPDATE, action="store_true", default=False,
                     help="write the renders of shadelab_regression checks as their baselines (on purpose only)")
@@ -38,11 +48,11 @@ def pytest_addoption(parser):
                   default="")
 
 
-def _safe(text):
+def _safe(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_")
 
 
-def _write_json(path, data):
+def _write_json(path: Path, data: Any) -> None:
     tmp = path.with_name(path.name + ".tmp")
     tmp.write_text(json.dumps(data, indent=2) + "\n")
     os.replace(tmp, path)
@@ -51,27 +61,33 @@ def _write_json(path, data):
 class ImageRegression:
     """The shadelab_regression fixture: check(image, name) against <baselines>/<name>.png."""
 
-    def __init__(self, request):
+    def __init__(self, request: pytest.FixtureRequest) -> None:
         self._request = request
         self._config = request.config
         self._test_dir = Path(request.node.path).parent
 
     @property
-    def updating(self):
+    def updating(self) -> bool:
+        """True when pytest runs with --shadelab-update-baselines: check() writes baselines instead."""
         return bool(self._config.getoption(_UPDATE))
 
-    def baseline_path(self, name):
-        return self._test_dir / self._config.getini("shadelab_baseline_dir") / f"{name}.png"
+    def baseline_path(self, name: str) -> Path:
+        """The baseline PNG of the check `name`."""
+        folder: str = self._config.getini("shadelab_baseline_dir")
+        return self._test_dir / folder / f"{name}.png"
 
-    def evidence_dir(self):
+    def evidence_dir(self) -> Path:
+        """Where this test's failing checks leave their evidence."""
         chosen = self._config.getoption("--shadelab-evidence-dir") or self._config.getini("shadelab_evidence_dir")
         root = Path(chosen) if chosen else self._test_dir / "shadelab-evidence"
         return root / _safe(self._request.node.nodeid.split("::", 1)[-1])
 
-    def check(self, image, name=None, *, gates=None):
+    def check(self, image: ImageLike, name: str | None = None, *,
+              gates: Mapping[str, float | None] | None = None) -> shadelab.CompareReport | None:
         """Compares `image` (a shadelab.Image, or anything shadelab.compare takes) with the baseline `name`
         (default: the test's name) under `gates` (design.md §4's by default; a dict overrides some) and
-        returns the CompareReport. Fails the test, leaving the evidence, when the gates are not met."""
+        returns the CompareReport. Fails the test, leaving the evidence, when the gates are not met. With
+        --shadelab-update-baselines it writes the baseline instead and returns None."""
         name = name or _safe(self._request.node.name)
         baseline = self.baseline_path(name)
         if not isinstance(image, shadelab.Image):
@@ -101,7 +117,7 @@ class ImageRegression:
                         f"(if the change is intended, rewrite it with {_UPDATE})", pytrace=False)
         return report
 
-    def _write_baseline(self, image, baseline):
+    def _write_baseline(self, image: shadelab.Image, baseline: Path) -> None:
         baseline.parent.mkdir(parents=True, exist_ok=True)
         image.save(str(baseline))
         meta = {"shadelab": shadelab.__version__, "size": list(image.size), "encoding": image.encoding,
@@ -109,26 +125,27 @@ class ImageRegression:
         if image.source == "raster":
             meta.update(shadelab.default_renderer().info)  # one GL context per process: the one that rendered
         _write_json(baseline.with_suffix(".json"), meta)
-        self._config.stash.setdefault(_rewritten_key, []).append(str(baseline))
+        rewritten: list[str] = self._config.stash.setdefault(_rewritten_key, [])
+        rewritten.append(str(baseline))
 
 
-def _as_image(x):
+def _as_image(x: StrPath | ArrayLike) -> shadelab.Image:
     if isinstance(x, (str, os.PathLike)):
         return shadelab.Image.open(os.fspath(x))
     return shadelab.Image.from_array(x)
 
 
-_rewritten_key = pytest.StashKey[list]()
+_rewritten_key = pytest.StashKey[list[str]]()  # the baselines this run rewrote
 
 
 @pytest.fixture
-def shadelab_regression(request):
+def shadelab_regression(request: pytest.FixtureRequest) -> ImageRegression:
     """Compares renders with baseline PNGs: shadelab_regression.check(image, name)."""
     return ImageRegression(request)
 
 
-def pytest_terminal_summary(terminalreporter, config):
-    rewritten = config.stash.get(_rewritten_key, [])
+def pytest_terminal_summary(terminalreporter: TerminalReporter, config: pytest.Config) -> None:
+    rewritten: list[str] = config.stash.get(_rewritten_key, [])
     if rewritten:
         terminalreporter.write_sep("=", f"shadelab: {len(rewritten)} baseline(s) rewritten ({_UPDATE})")
         for path in rewritten:

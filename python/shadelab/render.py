@@ -8,15 +8,24 @@ SHADELAB_GL_BACKEND or backend= forces one). A process that forks after its firs
 render in the child: use spawned processes (Dask and multiprocessing's "spawn" do).
 """
 
+from __future__ import annotations
+
 import _thread
-import atexit
 import os
 
-from . import _shadelab
+from . import _rendering, _shadelab
+from ._rendering import DEFAULT_SIZE, parse_size
 from .scene import Scene
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
+if TYPE_CHECKING:
+    from typing import Any, Sequence, SupportsInt
 
-def _scene(scene):
+    from ._types import BackendName, EncodingName, EstimatorName, LightPathsName, RendererName, Size
+    from .typing import SceneLike
+
+
+def _scene(scene: SceneLike) -> Scene:
     if isinstance(scene, Scene):
         return scene
     if isinstance(scene, dict):
@@ -24,19 +33,6 @@ def _scene(scene):
     if isinstance(scene, (str, os.PathLike)):
         return Scene.load(scene)
     raise TypeError(f"expected a shadelab.Scene, a scene file's path or a dict, got {type(scene).__name__}")
-
-
-def _size(size):
-    if isinstance(size, str):
-        w, sep, h = size.lower().partition("x")
-        if not sep or not w.isdigit() or not h.isdigit():
-            raise ValueError(f"size: expected WxH (e.g. 640x360) or (width, height), got {size!r}")
-        return int(w), int(h)
-    try:
-        w, h = size
-        return int(w), int(h)
-    except (TypeError, ValueError):
-        raise ValueError(f"size: expected (width, height) or 'WxH', got {size!r}") from None
 
 
 class Renderer:
@@ -48,78 +44,127 @@ class Renderer:
     backend: "auto" (default; honours SHADELAB_GL_BACKEND), "egl-device", "egl-surfaceless" or "osmesa".
     """
 
-    def __init__(self, backend="auto"):
+    _core: _shadelab._Renderer
+
+    def __init__(self, backend: BackendName = "auto") -> None:
         self._core = _shadelab._Renderer(backend)
 
-    def render(self, scene, size=(1280, 720), *, renderer="raster", spp=1, encoding="srgb", depth=None,
-               threads=0, coverage=False):
-        """Renders `scene` (a Scene, a scene file's path or a dict) to a shadelab.Image.
+    @classmethod
+    def _around(cls, core: _shadelab._Renderer) -> Renderer:
+        # The default Renderer: around the compiled renderer that Scene.render uses too (_rendering.py).
+        renderer = object.__new__(cls)
+        renderer._core = core
+        return renderer
 
-        size: (width, height) or "WxH", each 1..16384 (the binary's default 1280x720).
-        renderer: "raster" (OpenGL), "trace" (the CPU Whitted reference) or "path" (the path tracer: global
-            illumination, ambient off; spp may be any count, and the image is the same for any thread count).
-        spp: samples per pixel, a perfect square (1, 4, 9, ...), the same grid in raster and trace; any count
-            from 1 for path.
-        encoding: "srgb" (default) or "linear": how to_uint8(), save() and the PNG encode the linear floats.
-        depth: the tracer's secondary-ray depth (default: the scene's maxDepth); threads: tracer workers
-        (0 = every core); coverage: also return per-pixel object ids (image.coverage), which compare() uses.
-        The pixels equal `shadelab render scene.json --size WxH --renderer R --spp N --encoding E`'s PNG.
+    def render(self, scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
+               spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
+               coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
+               light_paths: LightPathsName | None = None) -> _shadelab.Image:
+        """Renders `scene` to a shadelab.Image with this Renderer's GL context and programs.
+
+        scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
+            or a dict in the scene file's schema.
+        size: (width, height) or "WxH", each side 1..16384 pixels; default (1280, 720), the binary's --size.
+        renderer: "raster" (default: OpenGL), "trace" (the CPU Whitted ray tracer, the reference) or "path" (the
+            path tracer: global illumination, ambient term off). The binary's --renderer.
+        spp: samples per pixel; default None: 1, and 16 for "path", as the binary. For "raster" and "trace" a
+            perfect square from 1 to 64 (1, 4, 9, ..., the k x k grid both share); for "path" any count from 1 to
+            1048576. The binary's --spp.
+        encoding: "srgb" (default) or "linear": how the 8-bit pixels (image.to_uint8(), save(), the PNG) encode
+            the linear floats; np.asarray(image) is linear either way. The binary's --encoding.
+        depth: the tracers' secondary-ray depth, 0..64 (0: primary rays only; for "path" the bounces after the
+            camera hit, 0: direct light only); default None, the scene's maxDepth. The rasterizer reflects once
+            and ignores it. The binary's --depth.
+        threads: the tracers' worker threads, 0..1024; default 0, every core. The path tracer's image is the same
+            for any count; the rasterizer ignores it. The binary's --threads.
+        coverage: also record per-pixel object ids (image.coverage, uint32, 0 = background), which compare()
+            uses to mask silhouettes; default False.
+        time_limit, estimator, light_paths: the path tracer's --time-limit (seconds, 0..1e7: stop after the last
+            whole sample pass begun in time), --estimator ("mis", "bsdf" or "light") and --light-paths ("all",
+            "direct" or "indirect": the indirect part is what the ambient term stands in for); default None, no
+            limit, "mis" and "all". Only for "path": given to another renderer they raise ValueError.
+
+        With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
+        raises ValueError naming the argument; an unknown keyword raises TypeError.
         """
-        scene = _scene(scene)
-        width, height = _size(size)
-        return self._core.render(scene._handle, width, height, renderer, spp, encoding, depth, threads, coverage)
+        return _rendering.render_handle(self._core, _scene(scene)._handle, size, renderer, spp, encoding, depth,
+                                        threads, coverage, time_limit, estimator, light_paths)
 
     @property
-    def info(self):
+    def info(self) -> dict[str, str]:
         """The GL context: backend, device, gl_renderer (GL_RENDERER) and gl_version (creates it if needed)."""
         return self._core.context_info()
 
     @property
-    def busy(self):
+    def busy(self) -> bool:
         """True while a render runs (readable from other threads: the GIL is released meanwhile)."""
         return self._core.busy
 
-    def close(self):
+    def close(self) -> None:
         """Frees the GL objects now; a later render starts afresh."""
         self._core.close()
 
-    def __enter__(self):
+    def __enter__(self) -> Renderer:
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
 
-_default = None
+_default: Renderer | None = None
 _default_lock = _thread.allocate_lock()  # _thread, not threading: import costs count (bench/README.md)
 
 
-def default_renderer():
-    """The Renderer that shadelab.render() uses, made on first use."""
+def default_renderer() -> Renderer:
+    """The Renderer that shadelab.render() and Scene.render use, made on first use."""
     global _default
     with _default_lock:
         if _default is None:
-            _default = Renderer()
+            _default = Renderer._around(_rendering.default_core())
         return _default
 
 
-@atexit.register
-def _close_default():
-    # Tear the context down while the interpreter (and Mesa) are whole, not at module teardown.
-    if _default is not None:
-        _default.close()
+def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
+           spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
+           coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
+           light_paths: LightPathsName | None = None) -> _shadelab.Image:
+    """Renders `scene` with the default Renderer (default_renderer()) to a shadelab.Image.
+
+    scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
+        or a dict in the scene file's schema.
+    size: (width, height) or "WxH", each side 1..16384 pixels; default (1280, 720), the binary's --size.
+    renderer: "raster" (default: OpenGL), "trace" (the CPU Whitted ray tracer, the reference) or "path" (the
+        path tracer: global illumination, ambient term off). The binary's --renderer.
+    spp: samples per pixel; default None: 1, and 16 for "path", as the binary. For "raster" and "trace" a
+        perfect square from 1 to 64 (1, 4, 9, ..., the k x k grid both share); for "path" any count from 1 to
+        1048576. The binary's --spp.
+    encoding: "srgb" (default) or "linear": how the 8-bit pixels (image.to_uint8(), save(), the PNG) encode
+        the linear floats; np.asarray(image) is linear either way. The binary's --encoding.
+    depth: the tracers' secondary-ray depth, 0..64 (0: primary rays only; for "path" the bounces after the
+        camera hit, 0: direct light only); default None, the scene's maxDepth. The rasterizer reflects once
+        and ignores it. The binary's --depth.
+    threads: the tracers' worker threads, 0..1024; default 0, every core. The path tracer's image is the same
+        for any count; the rasterizer ignores it. The binary's --threads.
+    coverage: also record per-pixel object ids (image.coverage, uint32, 0 = background), which compare()
+        uses to mask silhouettes; default False.
+    time_limit, estimator, light_paths: the path tracer's --time-limit (seconds, 0..1e7: stop after the last
+        whole sample pass begun in time), --estimator ("mis", "bsdf" or "light") and --light-paths ("all",
+        "direct" or "indirect": the indirect part is what the ambient term stands in for); default None, no
+        limit, "mis" and "all". Only for "path": given to another renderer they raise ValueError.
+
+    With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
+    raises ValueError naming the argument; an unknown keyword raises TypeError.
+    """
+    return default_renderer().render(scene, size, renderer=renderer, spp=spp, encoding=encoding, depth=depth,
+                                     threads=threads, coverage=coverage, time_limit=time_limit,
+                                     estimator=estimator, light_paths=light_paths)
 
 
-def render(scene, size=(1280, 720), **options):
-    """Renders with the default Renderer; see Renderer.render for the options."""
-    return default_renderer().render(scene, size, **options)
-
-
-def probe(scene, pixel, size=(1280, 720)):
+def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_SIZE) -> dict[str, Any]:
     """The lighting probe at `pixel` = (x, y) (row 0 at the top) of a `size` image: what the primary ray hits,
     N, V, and per light L, R, H, every dot product and term for Phong and Blinn-Phong, as a dict (the viewer's
     probe report, docs/viewer.md). Asks the tracer; needs no GL context."""
-    scene = _scene(scene)
-    width, height = _size(size)
+    handle = _scene(scene)._handle
+    width, height = parse_size(size)
     x, y = pixel
-    return _shadelab._probe(scene._handle, int(x), int(y), width, height)
+    return _shadelab._probe(handle, int(x), int(y), width, height)

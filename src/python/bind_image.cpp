@@ -125,7 +125,7 @@ In Jupyter an image shows itself.)")
             "(H, W, 3): the shape of np.asarray(image)")
         .def_property_readonly("encoding", [](const ImageData& i) { return std::string(toString(i.encoding)); })
         .def_property_readonly(
-            "source", [](const ImageData& i) { return i.source; }, "'raster', 'trace', 'file' or 'array'")
+            "source", [](const ImageData& i) { return i.source; }, "'raster', 'trace', 'path', 'file' or 'array'")
         .def_property_readonly(
             "coverage",
             [](const ImageData& i) -> py::object {

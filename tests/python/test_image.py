@@ -82,7 +82,7 @@ def test_coverage_and_pickle(scene):
     ({"size": "64by64"}, r"^size: expected WxH"),
     ({"spp": 2}, r"^spp: expected a perfect square from 1 to 64"),
     ({"renderer": "path", "spp": 0}, r"^spp: the path tracer takes 1 to 1048576 samples per pixel, got 0$"),
-    ({"renderer": "photon"}, r"^renderer: unknown value 'photon'; expected raster, trace or path$"),
+    ({"renderer": "photon"}, r"^renderer: unknown value 'photon'; expected raster, trace, both or path$"),
     ({"encoding": "gamma"}, r"^encoding: unknown value 'gamma'; expected srgb or linear$"),
     ({"depth": 65, "renderer": "trace"}, r"^depth: must be in \[0, 64\], got 65$"),
 ])
