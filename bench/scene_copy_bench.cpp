@@ -7,7 +7,7 @@
 // Prints medians of N runs. Usage: scene_copy_bench [model.glb] [runs]
 #include "bench_timing.h"
 #include "scene/scene_load.h"
-#include "trace/mesh_bvh_cache.h"
+#include "trace/accel/mesh_bvh_cache.h"
 #include "trace/progressive_trace.h"
 
 #include <algorithm>

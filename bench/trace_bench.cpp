@@ -14,7 +14,7 @@
 #include "image/png.h"
 #include "scene/scene_load.h"
 #include "scene/view.h"
-#include "trace/bvh_isa.h"
+#include "trace/accel/bvh_isa.h"
 #include "trace/integrator.h"
 #include "trace/tile_renderer.h"
 #include "trace/trace_image.h"

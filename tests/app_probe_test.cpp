@@ -1,9 +1,9 @@
 // The viewer's probe, no window: what it reports at a pixel equals the shared C++ shading
 // and the integrator's local terms under every model, it finds planes, meshes and the background, and its
 // shadow-ray visibility is the tracer's.
-#include "app/probe.h"
 #include "app/viewer_state.h"
 #include "app_test_util.h"
+#include "probe/probe.h"
 #include "scene/scene_load.h"
 #include "scene/view.h"
 #include "shading/lighting.h"

@@ -18,7 +18,7 @@ inline app::ViewerState defaultState() {
 }
 
 inline uint32_t idOf(const app::ViewerState& s, const std::string& name) {
-    auto id = app::findObject(s.scene, name);
+    auto id = findObject(s.scene, name);
     EXPECT_TRUE(id.has_value()) << name;
     return id.value_or(0);
 }

@@ -2,7 +2,7 @@
 // ones, silhouette-edge ones and shadow-boundary ones), the probe's hit object, its point and each light's
 // vis_l equal what the Whitted integrator computes for the same primary ray. The oracle below is the
 // tracer's own API, not the probe's code; a probe with its own intersector or shadow-ray origin fails it.
-#include "app/probe.h"
+#include "probe/probe.h"
 #include "scene/scene_load.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
@@ -107,7 +107,7 @@ TEST(ProbeAgreement, EngineProbeEqualsTheIntegratorOnAThousandPixels) {
     for (const int p : picks) {
         const int x = p % kW, y = p / kW;
         const Expected& e = all[size_t(p)];
-        const app::ProbeResult r = app::probePixel(ts, kW, kH, x, y);
+        const ProbeResult r = probePixel(ts, kW, kH, x, y);
         bool same = r.hit == e.hit && r.objectId == e.id;
         if (same && e.hit) {
             same = r.P == e.P && r.lights.size() == e.visibility.size();

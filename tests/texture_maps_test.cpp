@@ -5,7 +5,7 @@
 #include "gl_fixture.h"
 #include "render_compare.h"
 #include "scene/bounds.h"
-#include "scene/gltf_import.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/texture.h"
 #include "test_output.h"
 

@@ -6,8 +6,8 @@
 #include "image/encode.h"
 #include "render_compare.h"
 #include "scene/bounds.h"
-#include "scene/gltf_import.h"
-#include "scene/gltf_textures.h"
+#include "scene/gltf/gltf_import.h"
+#include "scene/gltf/gltf_textures.h"
 #include "util/read_file.h"
 
 #include <gtest/gtest.h>

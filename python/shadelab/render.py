@@ -79,10 +79,13 @@ class Renderer:
             for any count; the rasterizer ignores it. The binary's --threads.
         coverage: also record per-pixel object ids (image.coverage, uint32, 0 = background), which compare()
             uses to mask silhouettes; default False.
-        time_limit, estimator, light_paths: the path tracer's --time-limit (seconds, 0..1e7: stop after the last
-            whole sample pass begun in time), --estimator ("mis", "bsdf" or "light") and --light-paths ("all",
-            "direct" or "indirect": the indirect part is what the ambient term stands in for); default None, no
-            limit, "mis" and "all". Only for "path": given to another renderer they raise ValueError.
+        time_limit: "path" only: stop after the last whole sample pass begun within this many seconds, 0..1e7;
+            default None, no limit. The binary's --time-limit.
+        estimator: "path" only: how emitters' light is sampled, "mis", "bsdf" or "light" (all converge to the
+            same image, with different noise); default None, "mis". The binary's --estimator.
+        light_paths: "path" only: which light reaches the image, "all", "direct" or "indirect" (what the ambient
+            term stands in for); default None, "all". The binary's --light-paths. Given to another renderer,
+            any of these three raises ValueError.
 
         With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
         raises ValueError naming the argument; an unknown keyword raises TypeError.
@@ -147,10 +150,13 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
         for any count; the rasterizer ignores it. The binary's --threads.
     coverage: also record per-pixel object ids (image.coverage, uint32, 0 = background), which compare()
         uses to mask silhouettes; default False.
-    time_limit, estimator, light_paths: the path tracer's --time-limit (seconds, 0..1e7: stop after the last
-        whole sample pass begun in time), --estimator ("mis", "bsdf" or "light") and --light-paths ("all",
-        "direct" or "indirect": the indirect part is what the ambient term stands in for); default None, no
-        limit, "mis" and "all". Only for "path": given to another renderer they raise ValueError.
+    time_limit: "path" only: stop after the last whole sample pass begun within this many seconds, 0..1e7;
+        default None, no limit. The binary's --time-limit.
+    estimator: "path" only: how emitters' light is sampled, "mis", "bsdf" or "light" (all converge to the
+        same image, with different noise); default None, "mis". The binary's --estimator.
+    light_paths: "path" only: which light reaches the image, "all", "direct" or "indirect" (what the ambient
+        term stands in for); default None, "all". The binary's --light-paths. Given to another renderer,
+        any of these three raises ValueError.
 
     With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
     raises ValueError naming the argument; an unknown keyword raises TypeError.

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "app/image_view.h"
-#include "app/probe.h"
 #include "gl/program.h"
+#include "probe/probe.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

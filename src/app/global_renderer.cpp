@@ -3,7 +3,7 @@
 
 #include "app/idle_priority.h"
 #include "image/encode.h"
-#include "trace/path_render.h"
+#include "trace/path/path_render.h"
 #include "trace/trace_scene.h"
 
 #include <algorithm>

@@ -10,9 +10,9 @@
 #include "image/image.h"
 #include "render/render_request.h"
 #include "scene/scene.h"
-#include "trace/mesh_bvh_cache.h"
-#include "trace/path_render.h"
-#include "trace/path_settings.h"
+#include "trace/accel/mesh_bvh_cache.h"
+#include "trace/path/path_render.h"
+#include "trace/path/path_settings.h"
 
 #include <atomic>
 #include <condition_variable>

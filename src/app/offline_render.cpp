@@ -3,7 +3,7 @@
 
 #include "image/encode.h"
 #include "raster/offscreen.h"
-#include "trace/path_render.h"
+#include "trace/path/path_render.h"
 #include "trace/trace_image.h"
 #include "trace/trace_scene.h"
 

@@ -7,9 +7,9 @@
 #include "app/albedo_plot.h"
 #include "app/file_list.h"
 #include "app/global_renderer.h"
-#include "app/probe.h"
 #include "app/viewer_state.h"
 #include "image/compare.h"
+#include "probe/probe.h"
 
 #include <optional>
 #include <string>

@@ -6,7 +6,7 @@
 // Plain geometry, no ImGui: the probe window draws it and the tests read it.
 #pragma once
 
-#include "app/probe.h"
+#include "probe/probe.h"
 
 #include <glm/vec2.hpp>
 #include <string>

@@ -7,7 +7,7 @@
 #include "image/image.h"
 #include "render/render_request.h"
 #include "scene/scene.h"
-#include "trace/mesh_bvh_cache.h"
+#include "trace/accel/mesh_bvh_cache.h"
 #include "trace/tile_renderer.h"
 
 #include <chrono>

@@ -8,8 +8,10 @@
 #include "app/orbit_camera.h"
 #include "app/view_mode.h"
 #include "image/encode.h"
+#include "probe/probe.h"
+#include "scene/object_ref.h"
 #include "scene/scene.h"
-#include "trace/path_settings.h"
+#include "trace/path/path_settings.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -18,14 +20,6 @@
 #include <vector>
 
 namespace shadelab::app {
-
-enum class ObjectKind { None, Sphere, Plane, Mesh };
-
-// The surface point a click probed, so the probe stays on it while the camera moves.
-struct ProbeAnchor {
-    uint32_t objectId = 0;  // coverage id of the object clicked; 0 = not anchored yet
-    glm::vec3 point{0.0f};  // the hit point, world units (objects do not move in the viewer)
-};
 
 struct ProbeState {
     bool active = false;
@@ -64,17 +58,7 @@ void markRasterChanged(ViewerState& state);
 // undo does not step over it (undo_history.h).
 void markCameraChanged(ViewerState& state);
 
-// --- objects, by coverage id (1-based: spheres, planes, meshes in scene order) ---
-struct ObjectRef {
-    ObjectKind kind = ObjectKind::None;
-    size_t index = 0;
-};
-ObjectRef objectRef(const Scene& scene, uint32_t id);
-uint32_t objectCount(const Scene& scene);
-// "red plastic (sphere 1)"; unnamed objects read "sphere 1". Indices in labels count from 1.
-std::string objectLabel(const Scene& scene, uint32_t id);
-// An object by exact name (the first one), or by "#<id>". nullopt when nothing matches.
-std::optional<uint32_t> findObject(const Scene& scene, const std::string& nameOrId);
+// --- objects, by coverage id (scene/object_ref.h) ---
 // A mesh's material is its first part's; setting it writes the changed fields into the mesh's override
 // (so a save keeps them) and applies them to every part.
 Material objectMaterial(const Scene& scene, uint32_t id);

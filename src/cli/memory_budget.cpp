@@ -2,7 +2,7 @@
 // default scene (bench/README.md), rounded up.
 #include "cli/memory_budget.h"
 
-#include "trace/mesh_bvh.h"
+#include "trace/accel/mesh_bvh.h"
 #include "util/input_error.h"
 
 #include <sys/resource.h>

@@ -15,7 +15,7 @@
 #include "image/png.h"
 #include "raster/offscreen.h"
 #include "scene/scene_load.h"
-#include "trace/path_render.h"
+#include "trace/path/path_render.h"
 #include "trace/trace_image.h"
 #include "util/input_error.h"
 #include "util/messages.h"

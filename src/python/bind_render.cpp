@@ -1,7 +1,7 @@
 // _Renderer and _probe: rendering and the lighting probe, with the GIL released while they run so that other Python
 // threads (a notebook's widgets, a Dask worker's heartbeat) keep going.
-#include "app/probe.h"
 #include "image/image.h"
+#include "probe/probe.h"
 #include "python/bindings.h"
 #include "python/py_json.h"
 #include "python/renderer.h"
@@ -105,9 +105,9 @@ void bindRender(py::module_& m) {
             {
                 py::gil_scoped_release released;
                 const trace::TraceScene prepared(copy);
-                const app::ProbeResult probe = app::probePixel(prepared, width, height, x, y);
+                const ProbeResult probe = probePixel(prepared, width, height, x, y);
                 // The tracer's own coverage id stands where the viewer puts the rasterizer's.
-                report = app::probeReportJson(probe, copy, probe.objectId);
+                report = probeReportJson(probe, copy, probe.objectId);
             }
             return jsonTextToPython(report);
         },

@@ -6,7 +6,7 @@
 #include "python/gl_session.h"
 #include "raster/offscreen.h"
 #include "raster/raster_renderer.h"
-#include "trace/path_render.h"
+#include "trace/path/path_render.h"
 #include "trace/trace_image.h"
 #include "trace/trace_scene.h"
 #include "util/input_error.h"

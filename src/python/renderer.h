@@ -9,7 +9,7 @@
 #include "python/image_data.h"
 #include "render/render_request.h"
 #include "scene/scene.h"
-#include "trace/mesh_bvh_cache.h"
+#include "trace/accel/mesh_bvh_cache.h"
 
 #include <atomic>
 #include <memory>

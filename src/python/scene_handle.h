@@ -4,7 +4,7 @@
 // imported geometry. Pure C++: the bindings (bind_scene.cpp) convert Python values to documents (py_json.h).
 #pragma once
 
-#include "scene/gltf_import.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>

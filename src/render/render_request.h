@@ -9,7 +9,7 @@
 #include "image/encoding.h"
 #include "raster/offscreen_options.h"
 #include "scene/scene.h"
-#include "trace/path_settings.h"
+#include "trace/path/path_settings.h"
 #include "trace/trace_settings.h"
 #include "util/name_table.h"
 
@@ -34,7 +34,7 @@ inline const char* toString(Engine e) { return nameOf(kEngineNames, e); }
 
 // The limits of a request; the image side is kMaxImageSide (image/image.h), the grid's samples
 // kMaxGridSamples (scene/sample_grid.h), the path tracer's kMaxPathSamples and kMaxTimeLimit
-// (trace/path_settings.h).
+// (trace/path/path_settings.h).
 inline constexpr int kMaxDepth = 64;
 inline constexpr int kMaxThreads = 1024;
 inline constexpr int kDefaultPathSamples = 16;

@@ -1,5 +1,5 @@
 // Bounds: the one axis-aligned box type of every module (scene framing, mesh geometry, the tracer's BVH,
-// shadow-map fitting). Plain data; no ray tests here (trace/slab_test.h has the slab test).
+// shadow-map fitting). Plain data; no ray tests here (trace/accel/slab_test.h has the slab test).
 #pragma once
 
 #include <glm/common.hpp>

@@ -3,7 +3,7 @@
 #include "scene/scene_load.h"
 
 #include "scene/environment_load.h"
-#include "scene/gltf_import.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/scene_json.h"
 #include "util/input_error.h"
 #include "util/read_file.h"

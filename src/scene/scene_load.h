@@ -4,7 +4,7 @@
 #pragma once
 
 #include "scene/bounds.h"
-#include "scene/gltf_import.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/scene.h"
 
 #include <glm/vec3.hpp>

@@ -1,7 +1,7 @@
 // loadScene: glTF/GLB files as scenes (framing, default rig, their own camera and lights), errors, and
 // importSceneMeshes with transforms and material overrides.
 #include "scene/camera_choice.h"
-#include "scene/gltf_test_util.h"
+#include "scene/gltf/gltf_test_util.h"
 #include "scene/scene_json.h"
 
 #include <filesystem>

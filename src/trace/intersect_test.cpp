@@ -2,10 +2,10 @@
 // Sections: spheres | planes and ties | triangles | watertightness (dense rays through the shared edges and
 // vertices of closed meshes and fans must never fall through) | MeshBvh robustness (two known bugs).
 #include "shading/lighting.h"
+#include "trace/accel/watertight.h"
 #include "trace/integrator.h"
 #include "trace/trace_scene.h"
 #include "trace/trace_test_util.h"
-#include "trace/watertight.h"
 
 #include <gtest/gtest.h>
 

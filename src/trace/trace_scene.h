@@ -4,9 +4,9 @@
 #pragma once
 
 #include "scene/scene.h"
-#include "trace/mesh_bvh.h"
+#include "trace/accel/mesh_bvh.h"
+#include "trace/accel/sphere_set.h"
 #include "trace/ray.h"
-#include "trace/sphere_set.h"
 
 #include <cstdint>
 #include <memory>

@@ -9,7 +9,7 @@
 namespace shadelab {
 
 // Size bounds per kind of file, bytes (docs/cli.md "Limits"). glTF files and their side files have theirs
-// in scene/gltf_limits.h.
+// in scene/gltf/gltf_limits.h.
 inline constexpr uint64_t kMaxSceneFileBytes = uint64_t(64) << 20;    // scene .json
 inline constexpr uint64_t kMaxScriptFileBytes = uint64_t(16) << 20;   // viewer --script .json
 inline constexpr uint64_t kMaxShaderFileBytes = uint64_t(4) << 20;    // one shader source (hot reload)

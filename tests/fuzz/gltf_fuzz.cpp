@@ -1,6 +1,6 @@
 // libFuzzer target: glTF import of arbitrary bytes, as glTF text and as GLB, with external files refused.
 // Every input must import or raise an InputError. Built only with -DSHADELAB_FUZZ=ON and clang.
-#include "scene/gltf_import.h"
+#include "scene/gltf/gltf_import.h"
 #include "util/input_error.h"
 
 #include <cstddef>

@@ -20,7 +20,8 @@ PACKAGE = Path(shadelab.__file__).resolve().parent  # build/python/shadelab: the
 STUB = PACKAGE / "_shadelab.pyi"
 SIZE = (24, 16)
 
-KEYWORDS = {"renderer": "raster", "spp": 1, "encoding": "srgb", "depth": None, "threads": 0, "coverage": False}
+KEYWORDS = {"renderer": "raster", "spp": None, "encoding": "srgb", "depth": None, "threads": 0, "coverage": False,
+            "time_limit": None, "estimator": None, "light_paths": None}
 
 
 @pytest.fixture(scope="module")
@@ -261,7 +262,7 @@ def _doc_signature(obj, name):
 _TYPES = {
     "int": {"int"}, "float": {"float"}, "bool": {"bool"}, "bytes": {"bytes"}, "None": {"None"},
     "str": {"str", "EncodingName"}, "os.PathLike": {"StrPath"},
-    "Optional[int]": {"int | None"}, "Optional[float]": {"float | None"},
+    "Optional[int]": {"int | None"}, "Optional[float]": {"float | None"}, "Optional[str]": {"str | None"},
     "numpy.ndarray": {"ArrayLike", "NDArray[np.uint8]"},
     "numpy.ndarray[numpy.float32]": {"ArrayLike", "NDArray[np.float32]"},
     "shadelab._shadelab.Image": {"Image"}, "shadelab._shadelab._Scene": {"_Scene"},

@@ -1,0 +1,147 @@
+// probePixel and probeAnchor: the tracer's ray, nearest hit and surface, then every lighting term there.
+#include "probe/probe.h"
+
+#include "scene/coverage.h"
+#include "scene/ray_epsilon.h"
+#include "scene/view.h"
+#include "shading/local_illumination.h"
+#include "trace/integrator.h"
+#include "trace/tile_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <optional>
+
+namespace shadelab {
+
+namespace {
+
+// Every quantity at the nearest hit of `ray`, which comes from the eye (V = −ray.dir).
+ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, ProbeResult r) {
+    const Scene& scene = traced.scene();
+    const std::optional<trace::Hit> hit = traced.intersect(ray);
+    if (!hit) return r;
+    const trace::WhittedIntegrator integrator(traced, scene.maxDepth);
+    const trace::Surface s = integrator.surfaceAt(ray, *hit);
+    const glm::vec3 V = -ray.dir;
+
+    r.hit = true;
+    r.objectId = traced.coverageId(*hit);
+    r.kind = objectRef(scene, r.objectId).kind;
+    r.label = objectLabel(scene, r.objectId);
+    r.t = hit->t;
+    r.P = s.P;
+    r.N = glm::normalize(s.N);
+    r.V = glm::normalize(V);
+    r.material = *s.material;
+    r.material.md = s.md;
+    const Material& m = r.material;
+    r.ambient = shading::shadeAmbient(scene.ambient, m.ma, true);
+
+    // Each model's specular coefficient, with its energy normalisation when the scene asks for it.
+    const auto paramsFor = [&](int model) {
+        return shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness,
+                                      scene.normalized);
+    };
+    const glm::vec3 msPhong = paramsFor(shading::SL_MODEL_PHONG).ms;
+    const glm::vec3 msBlinn = paramsFor(shading::SL_MODEL_BLINN_PHONG).ms;
+    // As WhittedIntegrator: the checker's second tiles change pbr's base colour (F0 stays the plane's).
+    shading::SurfaceParams paramsPbr = paramsFor(shading::SL_MODEL_PBR);
+    paramsPbr.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
+    r.pbrDiffuseColor = paramsPbr.md;
+    r.pbrF0 = paramsPbr.ms;
+    const int pbr = shading::SL_MODEL_PBR;
+    // Each light: the same raw vectors the fragment shaders pass (surface.glsl), then shadeLight.
+    std::vector<shading::LightSample> samples;
+    for (const Light& light : scene.lights) {
+        const bool isPoint = light.type == LightType::Point;
+        const glm::vec3 Lraw = shading::lightVector(isPoint ? light.position : light.direction, isPoint, r.P);
+        const glm::vec3 Il = shading::lightIntensityAt(light.color, isPoint, light.attenuation, Lraw);
+        const bool lit = glm::dot(s.N, Lraw) > 0.0f;  // the terms are 0 on the unlit side: no ray needed
+        const float vis = scene.terms.shadows && lit ? integrator.visibility(s, light) : 1.0f;
+        samples.push_back({Lraw, Il, vis});
+        ProbeLight pl;
+        pl.name = light.name;
+        pl.L = glm::normalize(Lraw);
+        pl.R = shading::reflectLight(r.N, pl.L);
+        pl.H = glm::normalize(pl.L + r.V);
+        pl.NoL = glm::dot(r.N, pl.L);
+        pl.RoV = glm::dot(pl.R, r.V);
+        pl.NoH = glm::dot(r.N, pl.H);
+        pl.Il = Il;
+        pl.visibility = vis;
+        pl.specPhong = shading::specularPhong(r.N, pl.L, r.V, m.s);
+        pl.specBlinn = shading::specularBlinnPhong(r.N, pl.L, r.V, m.s);
+        const int phong = shading::SL_MODEL_PHONG, blinn = shading::SL_MODEL_BLINN_PHONG;
+        pl.diffuse = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, m.ms, m.s, phong, true, false);
+        pl.specularPhong = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, msPhong, m.s, phong, false, true);
+        pl.specularBlinn = vis * shading::shadeLight(s.N, Lraw, V, Il, m.md, msBlinn, m.s, blinn, false, true);
+        // pbr: the factors as specularGGX computes them, and the two parts as shadeLight adds them.
+        const float a = shading::pbrAlpha(paramsPbr.s);
+        const glm::vec3 NxH = glm::cross(r.N, pl.H);
+        pl.D = shading::D_GGX(std::max(pl.NoH, 0.0f), glm::dot(NxH, NxH), a);
+        pl.Vis = shading::V_SmithGGXCorrelated(std::max(glm::dot(r.N, r.V), 1e-4f), std::max(pl.NoL, 0.0f), a);
+        pl.F = shading::F_Schlick(paramsPbr.ms, std::max(glm::dot(r.V, pl.H), 0.0f));
+        const glm::vec3 both =
+            shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, true, true);
+        pl.specularPbr =
+            vis * shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, false, true);
+        pl.diffusePbr = vis * both - pl.specularPbr;
+        r.lights.push_back(pl);
+    }
+    const shading::SurfaceParams paramsPhong{m.ma, m.md, msPhong, m.s}, paramsBlinn{m.ma, m.md, msBlinn, m.s};
+    const shading::TermFlags flags{scene.terms.ambient, scene.terms.diffuse, scene.terms.specular};
+    r.totalPhong = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsPhong, scene.ambient,
+                                       shading::SL_MODEL_PHONG, flags);
+    r.totalBlinn = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsBlinn, scene.ambient,
+                                       shading::SL_MODEL_BLINN_PHONG, flags);
+    r.totalPbr = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsPbr, scene.ambient, pbr, flags);
+    return r;
+}
+
+}  // namespace
+
+ProbeResult probePixel(const trace::TraceScene& traced, int width, int height, int x, int y) {
+    ProbeResult r;
+    r.x = x;
+    r.y = y;
+    r.width = width;
+    r.height = height;
+    if (width <= 0 || height <= 0) return r;
+    // The tracer's own primary ray, nearest hit and surface: the probe explains the reference's pixel.
+    return probeRay(traced, trace::sampleRay(makeViewSetup(traced.scene(), width, height), 1, x, y, 0, 0), r);
+}
+
+ProbeResult probeAnchor(const trace::TraceScene& traced, int width, int height, const ProbeAnchor& anchor) {
+    const Scene& scene = traced.scene();
+    ProbeResult r;
+    r.width = width;
+    r.height = height;
+    if (width <= 0 || height <= 0 || anchor.objectId == 0 || anchor.objectId > objectCount(scene)) return r;
+    const ViewSetup view = makeViewSetup(scene, width, height);
+    const glm::vec3 toPoint = anchor.point - view.eye;
+    const float distance = glm::length(toPoint);
+    if (!(distance > 0.0f)) return r;
+    // The pixel the point falls in now, for the window and the overlay (it may be outside the image).
+    const glm::vec4 clip = view.viewProj * glm::vec4(anchor.point, 1.0f);
+    if (clip.w > 0.0f) {
+        r.x = int(std::floor((clip.x / clip.w * 0.5f + 0.5f) * float(width)));
+        r.y = int(std::floor((1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * float(height)));
+    }
+    // A ray from the eye's direction that starts just short of the point: it reaches the anchored surface
+    // whatever now stands in front of it. V is still the direction to the eye.
+    const float eps = secondaryRayEpsilon(scene, view.eye);
+    trace::Ray ray;
+    ray.dir = toPoint / distance;
+    ray.origin = anchor.point - ray.dir * std::min(64.0f * eps, 0.5f * distance);
+    ProbeResult hit = probeRay(traced, ray, r);
+    if (!hit.hit || hit.objectId != anchor.objectId || glm::length(hit.P - anchor.point) > 256.0f * eps) {
+        r.hit = false;  // the object has changed under the anchor (an undo, another file): no probe
+        return r;
+    }
+    hit.t = distance;  // from the eye, as a pixel probe reports it
+    return hit;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,73 @@
+// probeReportJson: the probe as JSON for scripts and tests (field names follow design.md's vocabulary).
+#include "probe/probe.h"
+
+#include <nlohmann/json.hpp>
+
+namespace shadelab {
+namespace {
+
+nlohmann::json vec(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+const char* kindName(ObjectKind k) {
+    switch (k) {
+        case ObjectKind::Sphere: return "sphere";
+        case ObjectKind::Plane: return "plane";
+        case ObjectKind::Mesh: return "mesh";
+        case ObjectKind::None: break;
+    }
+    return "background";
+}
+
+}  // namespace
+
+std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t coverageId) {
+    nlohmann::json j;
+    j["pixel"] = {p.x, p.y};
+    j["size"] = {p.width, p.height};
+    j["hit"] = p.hit;
+    j["coverage_id"] = coverageId;  // what the rasterizer's coverage buffer holds at the pixel
+    j["model"] = toString(scene.model);
+    if (!p.hit) return j.dump(2) + "\n";
+    j["object"] = {{"id", p.objectId}, {"kind", kindName(p.kind)}, {"label", p.label}};
+    j["t"] = p.t;
+    j["P"] = vec(p.P);
+    j["N"] = vec(p.N);
+    j["V"] = vec(p.V);
+    const Material& m = p.material;
+    j["material"] = {{"ma", vec(m.ma)},
+                     {"md", vec(m.md)},
+                     {"ms", vec(m.ms)},
+                     {"s", m.s},
+                     {"baseColor", vec(m.baseColor)},
+                     {"metallic", m.metallic},
+                     {"roughness", m.roughness},
+                     {"pbr_diffuse_color", vec(p.pbrDiffuseColor)},
+                     {"pbr_f0", vec(p.pbrF0)}};
+    j["ambient"] = vec(p.ambient);
+    nlohmann::json lights = nlohmann::json::array();
+    for (const ProbeLight& l : p.lights)
+        lights.push_back({{"name", l.name},
+                          {"L", vec(l.L)},
+                          {"R", vec(l.R)},
+                          {"H", vec(l.H)},
+                          {"NoL", l.NoL},
+                          {"RoV", l.RoV},
+                          {"NoH", l.NoH},
+                          {"Il", vec(l.Il)},
+                          {"visibility", l.visibility},
+                          {"spec_phong", l.specPhong},
+                          {"spec_blinn", l.specBlinn},
+                          {"diffuse", vec(l.diffuse)},
+                          {"specular_phong", vec(l.specularPhong)},
+                          {"specular_blinn", vec(l.specularBlinn)},
+                          {"D", l.D},
+                          {"Vis", l.Vis},
+                          {"F", vec(l.F)},
+                          {"diffuse_pbr", vec(l.diffusePbr)},
+                          {"specular_pbr", vec(l.specularPbr)}});
+    j["lights"] = lights;
+    j["total"] = {{"phong", vec(p.totalPhong)}, {"blinn_phong", vec(p.totalBlinn)}, {"pbr", vec(p.totalPbr)}};
+    return j.dump(2) + "\n";
+}
+
+}  // namespace shadelab

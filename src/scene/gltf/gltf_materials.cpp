@@ -1,0 +1,92 @@
+// glTF materials → shadelab's Phong materials (docs/gltf-import.md): metallic-roughness by the documented
+// mapping, KHR_materials_pbrSpecularGlossiness and KHR_materials_ior when present.
+#include "scene/gltf/gltf_materials.h"
+
+#include "scene/gltf/gltf_import.h"
+#include "scene/gltf/gltf_values.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+
+namespace shadelab {
+namespace {
+
+glm::vec3 colorFrom(const std::vector<double>& v, glm::vec3 fallback) {
+    if (v.size() < 3) return fallback;
+    return {finiteClamp(v[0], 0.0f, 1.0f, fallback.r), finiteClamp(v[1], 0.0f, 1.0f, fallback.g),
+            finiteClamp(v[2], 0.0f, 1.0f, fallback.b)};
+}
+
+}  // namespace
+
+Material materialFrom(const tinygltf::Material& gm, const std::string& place, std::vector<std::string>& warnings) {
+    const auto& pbr = gm.pbrMetallicRoughness;
+    Material m = phongFromMetallicRoughness(colorFrom(pbr.baseColorFactor, glm::vec3(1.0f)),
+                                            finiteClamp(pbr.metallicFactor, 0.0f, 1.0f, 1.0f),
+                                            finiteClamp(pbr.roughnessFactor, 0.0f, 1.0f, 1.0f));
+    // KHR_materials_pbrSpecularGlossiness is a Phong-like model already: diffuse → md, specular → ms.
+    auto sg = gm.extensions.find("KHR_materials_pbrSpecularGlossiness");
+    if (sg != gm.extensions.end()) {
+        const float roughness = 1.0f - finiteClamp(numberOr(sg->second, "glossinessFactor", 1.0), 0.0f, 1.0f, 1.0f);
+        const Material shape = phongFromMetallicRoughness(glm::vec3(1.0f), 0.0f, roughness);
+        m.md = m.ma = colorFrom(numbersOf(sg->second, "diffuseFactor"), glm::vec3(1.0f));
+        m.ms = colorFrom(numbersOf(sg->second, "specularFactor"), glm::vec3(1.0f));
+        m.s = shape.s;
+        // pbr reads the diffuse colour as a dielectric's base colour and 1 − glossiness as its roughness.
+        m.baseColor = m.md;
+        m.metallic = 0.0f;
+        m.roughness = roughness;
+    }
+    // alphaMode: OPAQUE (the default) ignores alpha; MASK and BLEND read baseColorFactor[3] times the texture's.
+    if (pbr.baseColorFactor.size() >= 4) m.alpha = finiteClamp(pbr.baseColorFactor[3], 0.0f, 1.0f, 1.0f);
+    if (gm.alphaMode == "MASK") {
+        m.alphaMode = AlphaMode::Mask;
+        m.alphaCutoff = finiteClamp(gm.alphaCutoff, 0.0f, 1e6f, 0.5f);
+    } else if (gm.alphaMode == "BLEND") {
+        m.alphaMode = AlphaMode::Blend;
+    } else if (!gm.alphaMode.empty() && gm.alphaMode != "OPAQUE") {
+        warnings.push_back(place + ".alphaMode: unknown \"" + gm.alphaMode + "\"; treated as OPAQUE");
+    }
+    // emissiveFactor (linear RGB, >= 0) is the material's emitted radiance, times KHR_materials_emissive_strength.
+    if (gm.emissiveFactor.size() >= 3) {
+        auto channel = [&](size_t k) { return finiteClamp(gm.emissiveFactor[k], 0.0f, 1.0f, 0.0f); };
+        m.emission = glm::vec3(channel(0), channel(1), channel(2));
+        auto strength = gm.extensions.find("KHR_materials_emissive_strength");
+        if (strength != gm.extensions.end())
+            m.emission *= finiteClamp(numberOr(strength->second, "emissiveStrength", 1.0), 0.0f, 1e6f, 1.0f);
+    }
+    auto ior = gm.extensions.find("KHR_materials_ior");
+    if (ior != gm.extensions.end()) {
+        const double value = numberOr(ior->second, "ior", 1.5);
+        if (std::isfinite(value) && value > 0.0)
+            m.ior = float(value);
+        else
+            warnings.push_back(place + ".extensions.KHR_materials_ior: ior " + std::to_string(value) +
+                               " ignored (kept 1.5)");
+    }
+    return m;
+}
+
+Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, float roughness) {
+    metallic = std::clamp(metallic, 0.0f, 1.0f);
+    roughness = std::clamp(roughness, 0.0f, 1.0f);
+    Material m;
+    // glTF 2.0 Appendix B: dielectrics have F0 = 0.04 and a diffuse lobe; metals tint F0 and have none.
+    m.md = baseColor * (1.0f - metallic);
+    m.ms = glm::mix(glm::vec3(0.04f), baseColor, metallic);
+    m.s = shininessFromRoughness(roughness);  // Walter et al. 2007, eq. 33
+    m.ma = m.md;                              // ambient light shows the surface's own colour
+    m.kr = glm::vec3(0.0f);
+    m.kt = glm::vec3(0.0f);
+    m.ior = 1.5f;
+    // The pbr model reads the metallic-roughness values themselves, not the Phong conversion above.
+    m.baseColor = baseColor;
+    m.metallic = metallic;
+    m.roughness = roughness;
+    return m;
+}
+
+}  // namespace shadelab

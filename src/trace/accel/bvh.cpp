@@ -1,0 +1,489 @@
+// Building the 8-wide BVH (design in bvh.h): binned SAH (Wald 2007, "On fast Construction of SAH-based
+// Bounding Volume Hierarchies"; cost of MacDonald & Booth 1990) on 32-byte primitive references, nodes made
+// by repeated binary splits of the widest child, subtrees built on worker threads and appended in order.
+#include "trace/accel/bvh.h"
+
+#include "trace/accel/simd4.h"
+#include "util/check.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <thread>
+#include <utility>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
+namespace shadelab::trace {
+namespace {
+
+constexpr int kMaxBins = 32;
+// Below this many binary splits the builder uses SAH; deeper ranges split at the object median, which halves
+// the count and so bounds the depth by kMedianDepth + log2(kMaxBvhPrimitives) = 55 < kMaxBvhDepth.
+constexpr int kMedianDepth = 28;
+// Inputs this small build on the calling thread in one piece (no subtree queue).
+constexpr uint32_t kMinQueuedBuild = 4096;
+// Ranges this large bin on several threads.
+constexpr uint32_t kMinParallelBinning = 1u << 16;
+
+// A worker thread's subtree: ordinary pages (its reserve is mostly untouched); the finished tree, Bvh::nodes, asks
+// for huge pages (aligned_allocators.h).
+using NodeArray = std::vector<BvhNode, CacheLineAllocator<BvhNode>>;
+using FinalNodeArray = decltype(Bvh::nodes);
+
+F4 primLo(const BvhPrim& p) { return keepLanes3(loadu4(p.lo)); }
+F4 primHi(const BvhPrim& p) { return keepLanes3(loadu4(p.hi)); }
+// Twice the box centre: the builder bins and partitions by it; its bounds are the "centroid bounds".
+F4 primCentre2(const BvhPrim& p) { return primLo(p) + primHi(p); }
+
+struct Box4 {
+    F4 lo = splat4(INFINITY), hi = splat4(-INFINITY);
+    void extend(F4 l, F4 h) {
+        lo = min4(lo, l);
+        hi = max4(hi, h);
+    }
+    void extend(const Box4& b) { extend(b.lo, b.hi); }
+    float lane(bool high, int axis) const {
+        float v[4];
+        store4(v, high ? hi : lo);
+        return v[axis];
+    }
+    // Surface area, 0 for an empty box (the SAH's probability measure).
+    float area() const {
+        float l[4], h[4];
+        store4(l, lo);
+        store4(h, hi);
+        if (l[0] > h[0] || l[1] > h[1] || l[2] > h[2]) return 0.0f;
+        const float ex = h[0] - l[0], ey = h[1] - l[1], ez = h[2] - l[2];
+        return 2.0f * (ex * ey + ey * ez + ez * ex);
+    }
+};
+
+struct Split {
+    int axis = -1;  // -1: none found
+    int bin = 0;    // SAH: primitives in bins [0, bin] go left
+    bool median = false;
+    float cost = INFINITY;
+};
+
+struct Range {
+    uint32_t begin = 0, end = 0;
+    Box4 box, centres;  // of the primitives' boxes and of their doubled centres
+    int depth = 0;      // binary splits above it
+    Split split;        // set by evaluate()
+    bool leaf = false;  // set by evaluate()
+
+    uint32_t count() const { return end - begin; }
+};
+
+// The binning grid of one range: per axis, bins over the doubled centres' extent.
+struct Grid {
+    F4 lo, scale;
+    bool axisOk[3];
+    int bins;
+
+    // Bin of a primitive per axis; the same expression decides binning and partitioning.
+    void binsOf(const BvhPrim& p, int* out) const {
+        truncate4((primCentre2(p) - lo) * scale, out);
+        for (int a = 0; a < 3; ++a) out[a] = std::min(std::max(out[a], 0), bins - 1);
+    }
+};
+
+// Per axis and bin: the primitives' box and count. Only the first `bins` are set, so a range of a few
+// primitives does not pay for initialising all kMaxBins.
+struct Bins {
+    F4 lo[3][kMaxBins], hi[3][kMaxBins];
+    uint32_t count[3][kMaxBins];
+
+    explicit Bins(int bins) {
+        // All counts at once (a fixed size, so plain vector stores; a loop to `bins` became a slow `rep stos`
+        // for the many small ranges), then the boxes of the bins in use.
+        std::memset(count, 0, sizeof count);
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < bins; ++b) {
+                lo[a][b] = splat4(INFINITY);
+                hi[a][b] = splat4(-INFINITY);
+            }
+    }
+    void extend(int a, int b, F4 l, F4 h) {
+        lo[a][b] = min4(lo[a][b], l);
+        hi[a][b] = max4(hi[a][b], h);
+        ++count[a][b];
+    }
+    void add(const Bins& o, int bins) {
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < bins; ++b) {
+                lo[a][b] = min4(lo[a][b], o.lo[a][b]);
+                hi[a][b] = max4(hi[a][b], o.hi[a][b]);
+                count[a][b] += o.count[a][b];
+            }
+    }
+};
+
+void binPrims(const BvhPrim* prims, uint32_t n, const Grid& g, Bins& out) {
+    int b[4];
+    for (uint32_t i = 0; i < n; ++i) {
+        const BvhPrim& p = prims[i];
+        g.binsOf(p, b);
+        const F4 lo = primLo(p), hi = primHi(p);
+        for (int a = 0; a < 3; ++a) out.extend(a, b[a], lo, hi);
+    }
+}
+
+class Builder {
+public:
+    Builder(std::vector<BvhPrim>& prims, const BvhBuildOptions& o, int threads)
+        : prims_(prims.data()),
+          threads_(threads),
+          bins_(std::min(std::max(o.bins, 2), kMaxBins)),
+          maxLeaf_(uint32_t(std::min(std::max(o.maxLeafSize, 1), int(kMaxLeafCount)))),
+          traversalCost_(o.traversalCost) {}
+
+    Bvh build(uint32_t n) {
+        Bvh bvh;
+        bvh.primitives = n;
+        Range root;
+        root.begin = 0;
+        root.end = n;
+        measure(root);
+        root.depth = 0;
+        evaluate(root, true);
+        // Subtrees below n/16 go to the workers: at least 16 of them, so a few threads stay busy, while the top
+        // (which partitions on this thread alone) stays small. n/64 left a third of a 4 M-triangle build on
+        // this thread; n/16 builds it 8 % faster on 2 threads (bench/README.md). A function of n alone, so the
+        // nodes do not depend on the thread count.
+        queueBelow_ = n >= kMinQueuedBuild ? std::max<uint32_t>(n / 16, 1024) : 0;
+        buildNode(root, bvh.nodes, true);
+        runQueue(bvh.nodes);
+        bvh.depth = depth_;
+        SHADELAB_CHECK_LT(bvh.depth, kMaxBvhDepth);
+        for (int a = 0; a < 3; ++a) {
+            bvh.bounds.lo[a] = root.box.lane(false, a);
+            bvh.bounds.hi[a] = root.box.lane(true, a);
+        }
+        return bvh;
+    }
+
+private:
+    Builder(BvhPrim* prims, int threads, int bins, uint32_t maxLeaf, float traversalCost)
+        : prims_(prims), threads_(threads), bins_(bins), maxLeaf_(maxLeaf), traversalCost_(traversalCost) {}
+
+    struct Queued {
+        Range range;
+        uint32_t parent;  // node index in the top array
+        int slot;         // child slot in it
+        NodeArray nodes;  // the subtree, its root at [0], indices local
+        int depth = 0;
+    };
+
+    // The box and centre bounds of a range, by scanning it.
+    void measure(Range& r) const {
+        Box4 box, centres;
+        for (uint32_t i = r.begin; i < r.end; ++i) {
+            const F4 lo = primLo(prims_[i]), hi = primHi(prims_[i]);
+            box.extend(lo, hi);
+            const F4 c = lo + hi;
+            centres.extend(c, c);
+        }
+        r.box = box;
+        r.centres = centres;
+    }
+
+    // Decides whether the range becomes a leaf and, if not, how it splits.
+    void evaluate(Range& r, bool mayParallel) const {
+        const uint32_t n = r.count();
+        r.split = Split{};
+        r.leaf = n <= 1;
+        if (r.leaf) return;
+        if (r.depth < kMedianDepth) r.split = sahSplit(r, mayParallel && n >= kMinParallelBinning);
+        if (n <= maxLeaf_ && !(r.split.cost < float(n))) {
+            r.leaf = true;  // a leaf is cheaper than any split
+            return;
+        }
+        if (r.split.axis < 0) {
+            // No usable SAH split (all centres equal, or too deep): object median on the widest axis.
+            float e[3];
+            for (int a = 0; a < 3; ++a) e[a] = r.centres.lane(true, a) - r.centres.lane(false, a);
+            r.split.axis = e[0] >= e[1] && e[0] >= e[2] ? 0 : (e[1] >= e[2] ? 1 : 2);
+            r.split.median = true;
+        }
+    }
+
+    // Fewer bins for small ranges (at least 4, at most the option): the same candidates matter less there, and
+    // sweeping 32 bins for 5 primitives would dominate the build.
+    Grid grid(const Range& r) const {
+        Grid g;
+        g.bins = std::min(bins_, std::max(4, int(std::min<uint32_t>(r.count(), 64u))));
+        float lo[4] = {0, 0, 0, 0}, scale[4] = {0, 0, 0, 0};
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = r.centres.lane(false, a);
+            const float extent = r.centres.lane(true, a) - lo[a];
+            const float s = float(g.bins) / extent;
+            g.axisOk[a] = extent > 0.0f && std::isfinite(s);
+            scale[a] = g.axisOk[a] ? s : 0.0f;
+        }
+        g.lo = loadu4(lo);
+        g.scale = loadu4(scale);
+        return g;
+    }
+
+    Split sahSplit(const Range& r, bool parallel) const {
+        const Grid g = grid(r);
+        Split best;
+        if (!g.axisOk[0] && !g.axisOk[1] && !g.axisOk[2]) return best;
+        Bins bins(g.bins);
+        const uint32_t n = r.count();
+        if (parallel && threads_ > 1) {
+            std::vector<Bins> part;
+            part.reserve(size_t(threads_ - 1));
+            for (int t = 1; t < threads_; ++t) part.emplace_back(g.bins);
+            std::vector<std::thread> pool;
+            const uint32_t chunk = (n + uint32_t(threads_) - 1) / uint32_t(threads_);
+            for (int t = 1; t < threads_; ++t) {
+                const uint32_t b = std::min(n, uint32_t(t) * chunk), e = std::min(n, b + chunk);
+                pool.emplace_back([&, t, b, e] { binPrims(prims_ + r.begin + b, e - b, g, part[size_t(t - 1)]); });
+            }
+            binPrims(prims_ + r.begin, std::min(n, chunk), g, bins);
+            for (std::thread& th : pool) th.join();
+            for (const Bins& p : part) bins.add(p, g.bins);  // min, max and integer sums: order-independent
+        } else {
+            binPrims(prims_ + r.begin, n, g, bins);
+        }
+        const float parentArea = r.box.area();
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!g.axisOk[axis]) continue;
+            // Sweep from the right for each suffix's area and count, then from the left.
+            float rightArea[kMaxBins];
+            uint32_t rightCount[kMaxBins];
+            Box4 acc;
+            uint32_t cnt = 0;
+            for (int b = g.bins - 1; b > 0; --b) {
+                acc.extend(bins.lo[axis][b], bins.hi[axis][b]);
+                cnt += bins.count[axis][b];
+                rightArea[b] = acc.area();
+                rightCount[b] = cnt;
+            }
+            acc = Box4();
+            cnt = 0;
+            for (int b = 0; b < g.bins - 1; ++b) {
+                acc.extend(bins.lo[axis][b], bins.hi[axis][b]);
+                cnt += bins.count[axis][b];
+                if (cnt == 0 || rightCount[b + 1] == 0) continue;
+                // C = Ct + (A_l·N_l + A_r·N_r) / A, in units of one primitive test.
+                const float cost = traversalCost_ +
+                                   (acc.area() * float(cnt) + rightArea[b + 1] * float(rightCount[b + 1])) / parentArea;
+                if (cost < best.cost) best = Split{axis, b, false, cost};
+            }
+        }
+        return best;
+    }
+
+    // Splits `r` as evaluate() decided into two measured, unevaluated ranges.
+    std::pair<Range, Range> apply(const Range& r) const {
+        Range left, right;
+        left.depth = right.depth = r.depth + 1;
+        left.begin = r.begin;
+        right.end = r.end;
+        const int axis = r.split.axis;
+        if (r.split.median) {
+            const uint32_t mid = r.begin + r.count() / 2;
+            auto key = [axis](const BvhPrim& p) { return p.lo[axis] + p.hi[axis]; };
+            std::nth_element(prims_ + r.begin, prims_ + mid, prims_ + r.end, [&](const BvhPrim& a, const BvhPrim& b) {
+                return key(a) < key(b) || (key(a) == key(b) && (a.id < b.id || (a.id == b.id && a.id2 < b.id2)));
+            });
+            left.end = right.begin = mid;
+            measure(left);
+            measure(right);
+            return {left, right};
+        }
+        // Hoare partition by bin, accumulating both sides' boxes on the way.
+        const Grid g = grid(r);
+        auto isLeft = [&](const BvhPrim& p) {
+            int b[4];
+            g.binsOf(p, b);
+            return b[axis] <= r.split.bin;
+        };
+        auto add = [](Range& side, const BvhPrim& p) {
+            const F4 lo = primLo(p), hi = primHi(p), c = lo + hi;
+            side.box.extend(lo, hi);
+            side.centres.extend(c, c);
+        };
+        uint32_t i = r.begin, j = r.end;
+        for (;;) {
+            while (i < j && isLeft(prims_[i])) add(left, prims_[i++]);
+            while (i < j && !isLeft(prims_[j - 1])) add(right, prims_[--j]);
+            if (i >= j) break;
+            std::swap(prims_[i], prims_[j - 1]);
+            add(left, prims_[i++]);
+            add(right, prims_[--j]);
+        }
+        left.end = right.begin = i;
+        SHADELAB_CHECK(left.count() > 0 && right.count() > 0);
+        return {left, right};
+    }
+
+    // Makes the node for an evaluated, non-leaf range (or, for the root, any range) and its subtree in
+    // `nodes`; returns its index. `top`: subtrees below queueBelow_ primitives go to the queue instead.
+    template <class Nodes>
+    uint32_t buildNode(const Range& r, Nodes& nodes, bool top) {
+        const uint32_t index = uint32_t(nodes.size());
+        nodes.emplace_back();
+        BvhNode empty;
+        for (int k = 0; k < kBvhWidth; ++k) {
+            for (int a = 0; a < 3; ++a) {
+                empty.bounds[a][k] = INFINITY;
+                empty.bounds[3 + a][k] = -INFINITY;
+            }
+            empty.child[k] = kLeafBit;
+        }
+        for (uint32_t& p : empty.pad) p = 0;
+        nodes[index] = empty;
+
+        Range kids[kBvhWidth];
+        int n = 1;
+        kids[0] = r;
+        for (;;) {
+            // Split the child of largest area that is not a leaf, until there are kBvhWidth.
+            int pick = -1;
+            float pickArea = -1.0f;
+            for (int k = 0; k < n; ++k)
+                if (!kids[k].leaf && kids[k].box.area() > pickArea) {
+                    pick = k;
+                    pickArea = kids[k].box.area();
+                }
+            if (pick < 0 || n == kBvhWidth) break;
+            std::pair<Range, Range> halves = apply(kids[pick]);
+            evaluate(halves.first, top);
+            evaluate(halves.second, top);
+            kids[pick] = halves.first;
+            kids[n++] = halves.second;
+        }
+        for (int k = 0; k < n; ++k) {
+            const Range& c = kids[k];
+            for (int a = 0; a < 3; ++a) {
+                nodes[index].bounds[a][k] = c.box.lane(false, a);
+                nodes[index].bounds[3 + a][k] = c.box.lane(true, a);
+            }
+            uint32_t ref;
+            if (c.leaf) {
+                ref = makeLeafRef(c.begin, c.count());
+                depth_ = std::max(depth_, c.depth);
+            } else if (top && c.count() < queueBelow_) {
+                queue_.push_back(Queued{c, index, k, {}, 0});
+                ref = kLeafBit;  // set when the queue has run
+            } else {
+                ref = buildNode(c, nodes, top);
+            }
+            nodes[index].child[k] = ref;
+        }
+        return index;
+    }
+
+    // Builds the queued subtrees on the worker threads, biggest first, and appends them in queue order.
+    void runQueue(FinalNodeArray& top) {
+        if (queue_.empty()) return;
+        std::vector<size_t> bySize(queue_.size());
+        std::iota(bySize.begin(), bySize.end(), size_t(0));
+        std::stable_sort(bySize.begin(), bySize.end(),
+                         [&](size_t a, size_t b) { return queue_[a].range.count() > queue_[b].range.count(); });
+        std::atomic<size_t> next{0};
+        auto work = [&] {
+            for (size_t k; (k = next.fetch_add(1)) < bySize.size();) {
+                Queued& q = queue_[bySize[k]];
+                Builder sub(prims_, threads_, bins_, maxLeaf_, traversalCost_);
+                // Room for the usual subtree (about one node per 6 primitives) up front: growing by doubling
+                // would copy it and leave up to half of a 256-byte-node array as resident slack at the peak,
+                // when every subtree and the final array are alive at once. Untouched capacity stays virtual.
+                q.nodes.reserve(q.range.count() / 4 + 16);
+                sub.buildNode(q.range, q.nodes, false);
+                q.depth = sub.depth_;
+            }
+        };
+        std::vector<std::thread> pool;
+        for (int t = 1; t < threads_; ++t) pool.emplace_back(work);
+        work();
+        for (std::thread& th : pool) th.join();
+
+        size_t total = top.size();
+        for (const Queued& q : queue_) total += q.nodes.size();
+        top.reserve(total);
+        size_t freed = 0;
+        for (Queued& q : queue_) {
+            const uint32_t offset = uint32_t(top.size());
+            for (BvhNode node : q.nodes) {
+                for (uint32_t& c : node.child)
+                    if (!isLeafRef(c)) c += offset;
+                top.push_back(node);
+            }
+            top[q.parent].child[q.slot] = offset;
+            depth_ = std::max(depth_, q.depth);
+            freed += q.nodes.size() * sizeof(BvhNode);
+            NodeArray().swap(q.nodes);
+#ifdef __GLIBC__
+            // The subtrees were allocated by the worker threads, in their own malloc arenas, which keep freed
+            // pages resident: hand them back as the copy proceeds, so the final array and the subtrees not yet
+            // copied never add up to twice the nodes (about 140 MiB at 4.2 M triangles).
+            if (freed >= (size_t(32) << 20)) {
+                malloc_trim(0);
+                freed = 0;
+            }
+#endif
+        }
+        queue_.clear();
+    }
+
+    BvhPrim* prims_;
+    int threads_;
+    int bins_;
+    uint32_t maxLeaf_;
+    float traversalCost_;
+    uint32_t queueBelow_ = 0;
+    int depth_ = 0;
+    std::vector<Queued> queue_;
+};
+
+}  // namespace
+
+Bvh buildBvh(std::vector<BvhPrim>& prims, const BvhBuildOptions& options) {
+    if (prims.empty()) return Bvh{};
+    SHADELAB_CHECK_LT(prims.size(), size_t(kMaxBvhPrimitives));
+    int threads = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());
+    threads = std::max(1, std::min(threads, 64));
+    if (prims.size() < kMinQueuedBuild) threads = 1;
+    return Builder(prims, options, threads).build(uint32_t(prims.size()));
+}
+
+Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options) {
+    std::vector<BvhPrim> prims(boxes.size());
+    for (size_t i = 0; i < boxes.size(); ++i)
+        prims[i] = BvhPrim{{boxes[i].lo.x, boxes[i].lo.y, boxes[i].lo.z},
+                           uint32_t(i),
+                           {boxes[i].hi.x, boxes[i].hi.y, boxes[i].hi.z},
+                           0};
+    Bvh bvh = buildBvh(prims, options);
+    bvh.order.resize(prims.size());
+    for (size_t k = 0; k < prims.size(); ++k) bvh.order[k] = prims[k].id;
+    return bvh;
+}
+
+float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
+    if (bvh.empty()) return 0.0f;
+    const float rootArea = std::max(bvh.bounds.area(), 1e-30f);
+    double cost = options.traversalCost;  // the root
+    for (const BvhNode& nd : bvh.nodes)
+        for (int k = 0; k < kBvhWidth; ++k) {
+            if (!nd.used(k)) continue;
+            Bounds b;
+            b.lo = glm::vec3(nd.bounds[0][k], nd.bounds[1][k], nd.bounds[2][k]);
+            b.hi = glm::vec3(nd.bounds[3][k], nd.bounds[4][k], nd.bounds[5][k]);
+            const double p = b.area() / rootArea;
+            cost += isLeafRef(nd.child[k]) ? p * leafCount(nd.child[k]) : p * options.traversalCost;
+        }
+    return float(cost);
+}
+
+}  // namespace shadelab::trace

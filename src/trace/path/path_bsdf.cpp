@@ -1,0 +1,139 @@
+// PathBsdf: evaluation through lighting.glsl's shadeLightScaled, lobe sampling through warp.h.
+#include "trace/path/path_bsdf.h"
+
+#include "shading/lighting.h"
+#include "trace/luminance.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab::trace {
+namespace {
+
+float nonNegative(float x) { return x > 0.0f ? x : 0.0f; }
+
+}  // namespace
+
+PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const glm::vec3& V, int model,
+                   const BsdfTerms& terms)
+    : frame_(glm::normalize(s.N)),
+      N_(frame_.n),
+      Nf_(s.Nf),
+      V_(V),
+      md_(params.md),
+      ms_(params.ms),
+      s_(params.s),
+      specScale_(params.specScale),
+      model_(model),
+      diffuseOn_(terms.diffuse),
+      specularOn_(terms.specular) {
+    const Material& m = *s.material;
+    if (model_ == shading::SL_MODEL_PBR) alpha_ = shading::pbrAlpha(s_);
+    const float NoV = std::clamp(glm::dot(N_, V_), 0.0f, 1.0f);
+
+    // Estimated albedos of each lobe pick the lobe: a sample goes where the light it carries is.
+    float diffuse = diffuseOn_ ? luminance(md_) : 0.0f;
+    float specular = 0.0f;
+    if (specularOn_) {
+        if (model_ == shading::SL_MODEL_PHONG) {
+            specular = luminance(ms_) * 2.0f / (s_ + 2.0f);  // ∫ cos^s over the hemisphere, relative to the cosine's
+        } else if (model_ == shading::SL_MODEL_BLINN_PHONG) {
+            specular = luminance(ms_) * 8.0f / (s_ + 8.0f);
+        } else {
+            const float F = luminance(shading::F_Schlick(ms_, NoV) * specScale_);
+            specular = F;
+            diffuse *= 1.0f - std::min(F, 1.0f);
+        }
+        // A lobe with any weight keeps a floor of samples: its albedo estimate may be off near grazing angles.
+        if (luminance(ms_) > 0.0f) specular = std::max(specular, 0.05f * luminance(ms_));
+    }
+    if (terms.reflections) {
+        kr_ = m.kr;
+        if (glm::any(glm::greaterThan(m.kt, glm::vec3(0.0f)))) {
+            // Snell's law as the Whitted tracer applies it (integrator.cpp, shade()).
+            eta_ = s.entering ? 1.0f / m.ior : m.ior;
+            const float cos2 = 1.0f - eta_ * eta_ * (1.0f - NoV * NoV);
+            if (cos2 < 0.0f) {
+                totalInternal_ = true;
+                kr_ += m.kt;
+            } else {
+                kt_ = m.kt;
+                refracted_ = glm::normalize(-eta_ * V_ + (eta_ * NoV - std::sqrt(cos2)) * N_);
+            }
+        }
+    }
+    const float mirror = nonNegative(luminance(kr_)), glass = nonNegative(luminance(kt_));
+    const float total = diffuse + specular + mirror + glass;
+    if (total > 0.0f) {
+        pDiffuse_ = diffuse / total;
+        pSpecular_ = specular / total;
+        pMirror_ = mirror / total;
+        pGlass_ = glass / total;
+    }
+}
+
+glm::vec3 PathBsdf::evalCos(const glm::vec3& wi) const {
+    if (!hasSmooth()) return glm::vec3(0.0f);
+    return shading::shadeLightScaled(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
+                                     specScale_) *
+           (1.0f / kPi);
+}
+
+float PathBsdf::specularPdf(const glm::vec3& wi) const {
+    if (model_ == shading::SL_MODEL_PHONG) return powerCosinePdf(glm::dot(wi, reflectAbout(V_, N_)), s_);
+    const glm::vec3 h = wi + V_;
+    const float len = glm::length(h);
+    if (!(len > 0.0f)) return 0.0f;
+    const glm::vec3 H = h / len;
+    const float VoH = glm::dot(V_, H);
+    if (VoH <= 0.0f) return 0.0f;
+    if (model_ == shading::SL_MODEL_BLINN_PHONG) return powerCosinePdf(glm::dot(N_, H), s_) / (4.0f * VoH);
+    return ggxVisibleNormalPdf(frame_.toLocal(V_), frame_.toLocal(H), alpha_) / (4.0f * VoH);
+}
+
+float PathBsdf::pdf(const glm::vec3& wi) const {
+    float p = 0.0f;
+    if (pDiffuse_ > 0.0f) p += pDiffuse_ * cosineHemispherePdf(glm::dot(N_, wi));
+    if (pSpecular_ > 0.0f) p += pSpecular_ * specularPdf(wi);
+    return p;
+}
+
+glm::vec3 PathBsdf::sampleSpecular(glm::vec2 u) const {
+    if (model_ == shading::SL_MODEL_PHONG) return Frame(reflectAbout(V_, N_)).toWorld(samplePowerCosine(u, s_));
+    if (model_ == shading::SL_MODEL_BLINN_PHONG) return reflectAbout(V_, frame_.toWorld(samplePowerCosine(u, s_)));
+    const glm::vec3 v = frame_.toLocal(V_);
+    if (v.z <= 0.0f) return glm::vec3(0.0f);
+    return reflectAbout(V_, frame_.toWorld(sampleGgxVisibleNormal(v, alpha_, u)));
+}
+
+std::optional<BsdfSample> PathBsdf::sample(const glm::vec3& u) const {
+    float pick = u.x;
+    const glm::vec2 uv(u.y, u.z);
+    BsdfSample out;
+    if (pick < pMirror_) {
+        out.wi = glm::normalize(reflectAbout(V_, N_));
+        out.weight = kr_ / pMirror_;
+        out.delta = true;
+        return out;
+    }
+    pick -= pMirror_;
+    if (pick < pGlass_) {
+        out.wi = refracted_;
+        out.weight = kt_ / pGlass_;
+        out.delta = true;
+        out.transmitted = true;
+        return out;
+    }
+    pick -= pGlass_;
+    if (!hasSmooth()) return std::nullopt;
+    out.wi = pick < pDiffuse_ ? frame_.toWorld(sampleCosineHemisphere(uv)) : sampleSpecular(uv);
+    // Directions under the shading or the geometric surface carry nothing back (f is 0 there, or the ray
+    // would start inside the object).
+    if (!(glm::dot(out.wi, N_) > 0.0f) || !(glm::dot(out.wi, Nf_) > 0.0f)) return std::nullopt;
+    out.pdf = pdf(out.wi);
+    if (!(out.pdf > 0.0f)) return std::nullopt;
+    out.weight = evalCos(out.wi) / out.pdf;
+    return out;
+}
+
+}  // namespace shadelab::trace

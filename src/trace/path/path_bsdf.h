@@ -1,0 +1,70 @@
+// PathBsdf: a surface's scattering as the path tracer samples it (design.md §8). The non-delta part is the
+// lecture's local model read as a BRDF: f·N·L = shadeLight(Il = 1)/π, the very lighting.glsl code both other
+// renderers run, so a light's direct contribution π·f·Il·N·L is the Whitted tracer's term for term. Phong's
+// and Blinn-Phong's specular lobes are sampled by their cos^s lobes (Lafortune & Willems 1994), pbr's GGX
+// lobe by its visible normals (Heitz 2018), the diffuse lobe by the cosine. Mirrors (kr) and glass (kt,
+// ior, refracted as the Whitted tracer refracts, total internal reflection going to the mirror) are delta
+// lobes. One lobe is picked per sample with probabilities from estimated albedos; pdf() is the mixture's.
+#pragma once
+
+#include "shading/local_illumination.h"
+#include "trace/integrator.h"
+#include "trace/path/warp.h"
+
+#include <glm/vec3.hpp>
+#include <optional>
+
+namespace shadelab::trace {
+
+struct BsdfSample {
+    glm::vec3 wi{0.0f};      // unit direction the light arrives from (the continuing ray's direction)
+    glm::vec3 weight{0.0f};  // f·|N·wi| / pdf for the non-delta part; the lobe's factor / its probability for deltas
+    float pdf = 0.0f;        // solid-angle density of the whole mixture at wi (non-delta), 0 for delta lobes
+    bool delta = false;      // a mirror or refraction: no light sampling can reach this direction
+    bool transmitted = false;
+};
+
+// Which lobes a path may scatter into (the terms a student switches on and off apply here as well).
+struct BsdfTerms {
+    bool diffuse = true, specular = true, reflections = true;
+};
+
+class PathBsdf {
+public:
+    // `s` from SurfaceSetup::at (trace/surface.h), `V` the unit direction back along the arriving ray.
+    // `params` from WhittedIntegrator::shadingParams (textures and energy compensation applied).
+    PathBsdf(const Surface& s, const shading::SurfaceParams& params, const glm::vec3& V, int model,
+             const BsdfTerms& terms);
+
+    // f(wi, V)·max(N·wi, 0) of the non-delta part (0 below the surface), linear RGB.
+    glm::vec3 evalCos(const glm::vec3& wi) const;
+    // The density with which sample() returns wi through a non-delta lobe (including the lobe's pick).
+    float pdf(const glm::vec3& wi) const;
+    // One scattering direction from u (three uniform numbers; u.x picks the lobe). nullopt: absorbed, or a
+    // direction under the geometric surface.
+    std::optional<BsdfSample> sample(const glm::vec3& u) const;
+
+    // Whether the non-delta part can scatter at all (light sampling is pointless without it).
+    bool hasSmooth() const { return pDiffuse_ + pSpecular_ > 0.0f; }
+
+private:
+    float specularPdf(const glm::vec3& wi) const;
+    glm::vec3 sampleSpecular(glm::vec2 u) const;
+
+    Frame frame_;           // around the unit shading normal
+    glm::vec3 N_, Nf_, V_;  // unit shading normal, geometric normal and view direction (all on V's side)
+    glm::vec3 md_, ms_;     // the coefficients shadeLight reads (surfaceParams, texture applied)
+    float s_;               // exponent, or roughness under pbr
+    float alpha_ = 0.0f;    // pbr: GGX α
+    glm::vec3 specScale_{1.0f};
+    int model_;
+    bool diffuseOn_, specularOn_;
+    glm::vec3 kr_{0.0f}, kt_{0.0f};
+    float eta_ = 1.0f;            // n1 / n2 across the surface along the arriving ray
+    bool totalInternal_ = false;  // kt goes to the mirror, as in the Whitted tracer
+    glm::vec3 refracted_{0.0f};
+    // Lobe picking probabilities (sum 1 unless everything is black).
+    float pDiffuse_ = 0.0f, pSpecular_ = 0.0f, pMirror_ = 0.0f, pGlass_ = 0.0f;
+};
+
+}  // namespace shadelab::trace

@@ -1,0 +1,68 @@
+// What a ray's hit looks like to shading, and SurfaceSetup, the one place that works it out for every
+// integrator (the Whitted tracer, the path tracer and the probe): the normal flipped to the viewer, the
+// plane's checker, and the glTF material maps sampled with the rasterizer's filtering, exactly as the
+// rasterizer's shaders do (shaders/sphere.frag, plane.frag, mesh.frag, material_maps.glsl).
+#pragma once
+
+#include "trace/ray.h"
+#include "trace/trace_scene.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <optional>
+
+namespace shadelab::trace {
+
+// What a hit looks like to shading.
+struct Surface {
+    glm::vec3 P{0.0f};          // hit point, origin + t·dir as the rasterizer computes it
+    glm::vec3 N{0.0f};          // shading normal on the viewer's side, as handed to shadeLight (meshes: not unit)
+    glm::vec3 Nf{0.0f};         // unit geometric normal on the viewer's side: secondary rays are offset along it
+    bool entering = true;       // the ray arrives from the outward side (sphere outside, plane normal side,
+                                // mesh counter-clockwise front), so refraction goes from 1 into ior
+    glm::vec3 md{0.0f};         // diffuse coefficient, after the plane's checker
+    glm::vec3 baseColor{0.0f};  // pbr base colour, after the plane's checker and the base-colour texture
+    glm::vec3 tex{1.0f};        // the base-colour texture's linear RGB here (1 without one): scales md, ma, F0
+    const Material* material = nullptr;
+    // The other glTF maps (shaders/material_maps.glsl, as mesh.frag): a metallic-roughness texel re-derives
+    // ma, md, ms and s (mapped); occlusion scales indirect light by ao; alpha is the base colour's.
+    bool mapped = false;
+    glm::vec3 ma{0.0f}, ms{0.0f};
+    float s = 0.0f;
+    float roughness = 0.0f;  // pbr roughness here: the material's, or the texel's when mapped
+    float ao = 1.0f;
+    float alpha = 1.0f;
+    glm::vec3 emissive{1.0f};  // the emissive texture's linear RGB here (1 without one): scales emission
+};
+
+// How a primary ray's unnormalised direction D = forward + x·right + y·up changes per pixel step of the
+// sampled image (shading::cameraRayDirection): dDdx = (2·tan(fovY/2)/height)·right, dDdy = −(…)·up. With it
+// the tracer selects a texture's mip level from exact ray differentials (Igehy 1999), as the rasterizer does
+// from screen-space derivatives (shaders/texture_sample.glsl).
+struct PixelFootprint {
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};
+    glm::vec3 dDdx{0.0f}, dDdy{0.0f};  // zero: no footprint known (every texture sampled as magnified)
+};
+
+class SurfaceSetup {
+public:
+    explicit SurfaceSetup(const TraceScene& scene);
+
+    // The surface at `hit` along `ray`. `depth` 0 is a camera ray: its texture footprint comes from the pixel
+    // footprint. Deeper rays sample textures at level 0 with the magnification filter
+    // (docs/textures-status.md).
+    Surface at(const Ray& ray, const Hit& hit, int depth = 0) const;
+    // The first hit along `ray` beyond t = `after` that an alpha mask does not cut away (Hit::t along `ray`).
+    std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const;
+    void setPixelFootprint(const PixelFootprint& f) { footprint_ = f; }
+
+private:
+    // A material map's filtered linear texel at a triangle hit, as mesh.frag's sampleMap.
+    glm::vec4 mapTexel(const Ray& ray, const Hit& hit, int depth, const TextureBinding& b) const;
+
+    const TraceScene& scene_;
+    int model_;
+    PixelFootprint footprint_;
+};
+
+}  // namespace shadelab::trace
