@@ -103,6 +103,45 @@ TEST(AppWindow, ScriptedShininessChangeMatchesHeadlessRenderOfChangedScene) {
     EXPECT_EQ(sceneToJson(parseSceneJson(readFile(saved), saved)), changedJson);
 }
 
+// The script action `render` is `shadelab render` of the state saved as a scene: the same request, the same
+// bytes, for each engine, at a size and sample count other than the window's.
+TEST(AppWindow, ScriptRenderEqualsTheCommandLinesRenderOfTheSavedState) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string saved = test::outputPath("script_render_state.json");
+    struct Case {
+        const char* name;
+        const char* keys;   // the action's request keys
+        const char* flags;  // the same request on the command line
+    };
+    const Case cases[] = {
+        {"raster", R"("spp": 4)", "--renderer raster --spp 4"},
+        {"trace", R"("renderer": "trace", "spp": 4, "depth": 2)", "--renderer trace --spp 4 --depth 2"},
+        {"path", R"("renderer": "path", "spp": 3, "lightPaths": "indirect")",
+         "--renderer path --spp 3 --light-paths indirect"},
+    };
+    std::string actions = R"({"frame": 4, "action": "setShininess", "object": "red plastic", "s": 4},)";
+    int frame = 6;
+    for (const Case& c : cases)
+        actions += R"({"frame": )" + std::to_string(frame++) + R"(, "action": "render", "path": ")" +
+                   test::outputPath(std::string("script_render_") + c.name + ".png") + R"(", "size": [96, 54], )" +
+                   c.keys + "},";
+    actions += R"({"frame": 10, "action": "saveScene", "path": ")" + saved + R"("})";
+    const std::string script = writeText("script_render.json", R"({"actions": [)" + actions + "]}");
+    Result v = view(scenePath + " --size " + kSize + " --frames 14 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    for (const Case& c : cases) {
+        const std::string scripted = test::outputPath(std::string("script_render_") + c.name + ".png");
+        const std::string cli = test::outputPath(std::string("script_render_") + c.name + "_cli.png");
+        ASSERT_EQ(render(saved, cli, std::string("--size 96x54 ") + c.flags).code, 0) << c.name;
+        expectSameImage(std::string("script_render_") + c.name, scripted, cli);
+        // Negative control: the scene as loaded, before the edit, is another image.
+        const std::string unedited = test::outputPath(std::string("script_render_") + c.name + "_unedited.png");
+        ASSERT_EQ(render(scenePath, unedited, std::string("--size 96x54 ") + c.flags).code, 0) << c.name;
+        EXPECT_FALSE(sameBytes(scripted, unedited)) << c.name << ": the edit did not reach the scripted render";
+    }
+}
+
 TEST(AppWindow, RasterFlagsAndSetRasterMatchHeadlessRenders) {
     REQUIRE_XVFB();
     const std::string scenePath = test::sourcePath("assets/scenes/default.json");

@@ -1,6 +1,7 @@
 // GlobalRenderer: the controller thread (owns the PathRender, one pass at a time) and the UI-side upload.
 #include "app/global_renderer.h"
 
+#include "app/background_textures.h"
 #include "app/idle_priority.h"
 #include "image/encode.h"
 #include "trace/path/path_render.h"
@@ -9,7 +10,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cstring>
 #include <memory>
 
 namespace shadelab::app {
@@ -19,18 +19,12 @@ double now() { return std::chrono::duration<double>(std::chrono::steady_clock::n
 
 }  // namespace
 
-GlobalRenderer::GlobalRenderer(trace::MeshBvhCache& meshes) : meshes_(meshes) {
-    threads_ = std::max(1, int(std::thread::hardware_concurrency()) - 1);
-    controller_ = std::thread([this] { controllerLoop(); });
-}
+GlobalRenderer::GlobalRenderer(trace::MeshBvhCache& meshes)
+    : meshes_(meshes), threads_(backgroundWorkerCount()), controller_([this] { controllerLoop(); }) {}
 
 GlobalRenderer::~GlobalRenderer() {
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        quit_ = true;
-    }
+    jobs_.quit();
     cancel_ = true;
-    wake_.notify_all();
     controller_.join();
 }
 
@@ -40,21 +34,17 @@ void GlobalRenderer::controllerLoop() {
     uint64_t running = 0;
     for (;;) {
         std::optional<Job> job;
-        {
-            std::unique_lock<std::mutex> lock(mutex_);
-            const bool more = render && render->samples() < kMaxSamples;
-            if (!more) wake_.wait(lock, [&] { return quit_ || pending_ || pauseRequested_; });
-            if (quit_) break;
-            if (pauseRequested_) {
-                pauseRequested_ = false;
-                render.reset();
-                running = 0;
-                continue;
-            }
-            job = std::move(pending_);
-            pending_.reset();
-            if (job) cancel_ = false;
+        const bool more = render && render->samples() < kMaxSamples;
+        // Taking a job clears the cancel flag under the hand-off's lock, so a request posted after it cancels.
+        const auto event = jobs_.take(!more, job, [&](bool gotJob) {
+            if (gotJob) cancel_ = false;
             passProgress_ = 0.0f;
+        });
+        if (event == JobHandOff<Job>::Event::Quit) break;
+        if (event == JobHandOff<Job>::Event::Pause) {
+            render.reset();
+            running = 0;
+            continue;
         }
         if (job) {
             try {
@@ -64,8 +54,7 @@ void GlobalRenderer::controllerLoop() {
                 render = std::make_unique<trace::PathRender>(scene, settings);
                 running = job->id;
             } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(mutex_);
-                error_ = e.what();
+                jobs_.fail(e.what());
                 render.reset();
                 continue;
             }
@@ -81,13 +70,13 @@ void GlobalRenderer::controllerLoop() {
                 partial = snapshot(running, *render);
                 published = now();
             }
-            std::lock_guard<std::mutex> lock(mutex_);
             passProgress_ = f;
+            std::lock_guard<std::mutex> lock(arrivedMutex_);
             if (partial.job) arrived_ = std::move(partial);
         });
         if (!finished) continue;  // a new request (or quit) arrived mid-pass
         Pass pass = snapshot(running, *render);
-        std::lock_guard<std::mutex> lock(mutex_);
+        std::lock_guard<std::mutex> lock(arrivedMutex_);
         arrived_ = std::move(pass);
     }
 }
@@ -128,16 +117,8 @@ void GlobalRenderer::request(const Scene& scene, int width, int height, uint64_t
     if (width != width_ || height != height_ || !color_) {
         width_ = width;
         height_ = height;
-        color_ = gl::Texture::create();
-        glBindTexture(GL_TEXTURE_2D, color_.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        done_ = gl::Texture::create();
-        glBindTexture(GL_TEXTURE_2D, done_.id());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glBindTexture(GL_TEXTURE_2D, 0);
+        color_ = makeImageTexture(width, height);
+        done_ = makeTileTexture();
     }
     // Until the first tiles of this request arrive, the display shows the raster image (tile test 0).
     tilesX_ = (width + kTileSize - 1) / kTileSize;
@@ -151,18 +132,16 @@ void GlobalRenderer::request(const Scene& scene, int width, int height, uint64_t
     started_ = now();
     cancel_ = true;  // before the job is posted: the controller clears it when it takes the job
     {
-        std::lock_guard<std::mutex> lock(mutex_);
-        render::RenderRequest r;
-        r.engine = render::Engine::Path;
-        r.width = width;
-        r.height = height;
-        r.threads = threads_;
-        r.path.part = part;
-        pending_ = Job{job_, scene, r};
+        std::lock_guard<std::mutex> lock(arrivedMutex_);
         arrived_.reset();
-        error_.clear();
     }
-    wake_.notify_all();
+    render::RenderRequest r;
+    r.engine = render::Engine::Path;
+    r.width = width;
+    r.height = height;
+    r.threads = threads_;
+    r.path.part = part;
+    jobs_.post(Job{job_, scene, r});
 }
 
 void GlobalRenderer::pause() {
@@ -171,18 +150,16 @@ void GlobalRenderer::pause() {
     samples_ = 0;
     cancel_ = true;
     {
-        std::lock_guard<std::mutex> lock(mutex_);
-        pending_.reset();
+        std::lock_guard<std::mutex> lock(arrivedMutex_);
         arrived_.reset();
-        pauseRequested_ = true;
     }
-    wake_.notify_all();
+    jobs_.pause();
 }
 
 bool GlobalRenderer::update() {
     std::optional<Pass> pass;
     {
-        std::lock_guard<std::mutex> lock(mutex_);
+        std::lock_guard<std::mutex> lock(arrivedMutex_);
         pass.swap(arrived_);
     }
     if (!pass || pass->job != job_ || pass->image.width != width_ || pass->image.height != height_) return false;
@@ -191,37 +168,21 @@ bool GlobalRenderer::update() {
     image_ = std::move(pass->image);
     standardError_ = std::move(pass->standardError);
     // GL row order, as the raster target.
-    const size_t rowFloats = size_t(width_) * 4;
-    flipped_.resize(image_.rgba.size());
-    for (int row = 0; row < height_; ++row)
-        std::memcpy(&flipped_[size_t(height_ - 1 - row) * rowFloats], &image_.rgba[size_t(row) * rowFloats],
-                    rowFloats * sizeof(float));
-    glBindTexture(GL_TEXTURE_2D, color_.id());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, flipped_.data());
+    uploadRowsFlipped(color_, 0, 0, width_, height_, height_, image_.rgba.data(), flipped_);
     uploadTiles(pass->tiles);
     return true;
 }
 
 void GlobalRenderer::uploadTiles(const std::vector<uint8_t>& tiles) {
     if (tiles.size() != size_t(tilesX_) * size_t(tilesY_)) return;
-    glBindTexture(GL_TEXTURE_2D, done_.id());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, tilesX_, tilesY_, 0, GL_RED, GL_UNSIGNED_BYTE, tiles.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    uploadTileMask(done_, tilesX_, tilesY_, tiles.data());
 }
 
-float GlobalRenderer::passProgress() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return passProgress_;
-}
+float GlobalRenderer::passProgress() const { return passProgress_; }
 
 double GlobalRenderer::seconds() const { return job_ == 0 ? 0.0 : now() - started_; }
 
-std::string GlobalRenderer::error() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return error_;
-}
+std::string GlobalRenderer::error() const { return jobs_.error(); }
 
 GlobalEstimate GlobalRenderer::estimate(int x, int y) const {
     GlobalEstimate e;

@@ -6,6 +6,7 @@
 // ~0.3 s (pending tiles show the raster image, as the reference's do).
 #pragma once
 
+#include "app/job_hand_off.h"
 #include "gl/objects.h"
 #include "image/image.h"
 #include "render/render_request.h"
@@ -15,7 +16,6 @@
 #include "trace/path/path_settings.h"
 
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <mutex>
@@ -88,15 +88,11 @@ private:
     void uploadTiles(const std::vector<uint8_t>& tiles);  // UI thread
 
     trace::MeshBvhCache& meshes_;
-    mutable std::mutex mutex_;
-    std::condition_variable wake_;
-    std::optional<Job> pending_;
-    bool pauseRequested_ = false, quit_ = false;
+    JobHandOff<Job> jobs_;
     std::atomic<bool> cancel_{false};  // set by the UI thread: the pass under way stops between pixels
-    std::optional<Pass> arrived_;
-    float passProgress_ = 0.0f;
-    std::string error_;
-    std::thread controller_;
+    std::mutex arrivedMutex_;
+    std::optional<Pass> arrived_;  // under arrivedMutex_
+    std::atomic<float> passProgress_{0.0f};
     int threads_ = 1;
 
     // UI thread only.
@@ -109,6 +105,8 @@ private:
     double started_ = 0.0;
     gl::Texture color_, done_;
     std::vector<float> flipped_;
+
+    std::thread controller_;  // last: it starts once every member exists
 };
 
 }  // namespace shadelab::app

@@ -5,6 +5,9 @@
 #include <sched.h>
 #include <sys/resource.h>
 
+#include <algorithm>
+#include <thread>
+
 namespace shadelab::app {
 
 // Drops the calling thread to SCHED_IDLE (only otherwise idle cores), or nice +19 where that is refused. On
@@ -15,5 +18,8 @@ inline void lowerToIdlePriority() {
     const sched_param idle{};
     if (sched_setscheduler(0, SCHED_IDLE, &idle) != 0) setpriority(PRIO_PROCESS, 0, 19);
 }
+
+// Workers for a background renderer: every core but one, which stays the UI thread's; at least one.
+inline int backgroundWorkerCount() { return std::max(1, int(std::thread::hardware_concurrency()) - 1); }
 
 }  // namespace shadelab::app

@@ -2,6 +2,7 @@
 // tile collection into a CPU image and two textures.
 #include "app/reference_renderer.h"
 
+#include "app/background_textures.h"
 #include "app/idle_priority.h"
 #include "trace/progressive_trace.h"
 #include "trace/trace_scene.h"
@@ -11,17 +12,10 @@
 
 namespace shadelab::app {
 
-ReferenceRenderer::ReferenceRenderer() {
-    threads_ = std::max(1, int(std::thread::hardware_concurrency()) - 1);
-    controller_ = std::thread([this] { controllerLoop(); });
-}
+ReferenceRenderer::ReferenceRenderer() : threads_(backgroundWorkerCount()), controller_([this] { controllerLoop(); }) {}
 
 ReferenceRenderer::~ReferenceRenderer() {
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        quit_ = true;
-    }
-    wake_.notify_all();
+    jobs_.quit();
     controller_.join();
 }
 
@@ -31,19 +25,12 @@ void ReferenceRenderer::controllerLoop() {
     uint64_t running = 0;
     for (;;) {
         std::optional<Job> job;
-        {
-            std::unique_lock<std::mutex> lock(mutex_);
-            if (running == 0 || trace.done()) wake_.wait(lock, [&] { return quit_ || pending_ || pauseRequested_; });
-            if (quit_) break;
-            if (pauseRequested_) {
-                pauseRequested_ = false;
-                lock.unlock();
-                trace.cancel();
-                running = 0;
-                continue;
-            }
-            job = std::move(pending_);
-            pending_.reset();
+        const auto event = jobs_.take(running == 0 || trace.done(), job);
+        if (event == JobHandOff<Job>::Event::Quit) break;
+        if (event == JobHandOff<Job>::Event::Pause) {
+            trace.cancel();
+            running = 0;
+            continue;
         }
         if (job) {
             trace.cancel();
@@ -55,8 +42,7 @@ void ReferenceRenderer::controllerLoop() {
                 trace.start(scene, settings);
                 running = job->id;
             } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(mutex_);
-                error_ = e.what();
+                jobs_.fail(e.what());
                 continue;
             }
         }
@@ -64,7 +50,7 @@ void ReferenceRenderer::controllerLoop() {
             std::vector<trace::TileResult> tiles;
             trace.wait(tiles, std::chrono::milliseconds(30));
             if (!tiles.empty()) {
-                std::lock_guard<std::mutex> lock(mutex_);
+                std::lock_guard<std::mutex> lock(arrivedMutex_);
                 for (trace::TileResult& t : tiles) arrived_.emplace_back(running, std::move(t));
             }
         }
@@ -80,16 +66,8 @@ void ReferenceRenderer::resize(int width, int height) {
     tilesX_ = (width + kTileSize - 1) / kTileSize;
     tilesY_ = (height + kTileSize - 1) / kTileSize;
     tileState_.assign(size_t(tilesX_) * size_t(tilesY_), 0);
-    color_ = gl::Texture::create();
-    glBindTexture(GL_TEXTURE_2D, color_.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, image_.rgba.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    tiles_ = gl::Texture::create();
-    glBindTexture(GL_TEXTURE_2D, tiles_.id());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    color_ = makeImageTexture(width, height, image_.rgba.data());
+    tiles_ = makeTileTexture();
     tilesDirty_ = true;
 }
 
@@ -105,36 +83,26 @@ void ReferenceRenderer::request(const Scene& scene, int width, int height, uint6
     maxDepth_ = maxDepth;
     job_ = nextJob_++;
     started_ = std::chrono::steady_clock::now();
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        render::RenderRequest r;
-        r.engine = render::Engine::Trace;
-        r.width = width;
-        r.height = height;
-        r.depth = maxDepth;
-        r.threads = threads_;
-        r.coverage = true;
-        pending_ = Job{job_, scene, r};
-        error_.clear();
-    }
-    wake_.notify_all();
+    render::RenderRequest r;
+    r.engine = render::Engine::Trace;
+    r.width = width;
+    r.height = height;
+    r.depth = maxDepth;
+    r.threads = threads_;
+    r.coverage = true;
+    jobs_.post(Job{job_, scene, r});
 }
 
 void ReferenceRenderer::pause() {
     if (job_ == 0) return;
     job_ = 0;
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        pending_.reset();
-        pauseRequested_ = true;
-    }
-    wake_.notify_all();
+    jobs_.pause();
 }
 
 bool ReferenceRenderer::update() {
     std::vector<std::pair<uint64_t, trace::TileResult>> tiles;
     {
-        std::lock_guard<std::mutex> lock(mutex_);
+        std::lock_guard<std::mutex> lock(arrivedMutex_);
         tiles.swap(arrived_);
     }
     bool any = false;
@@ -150,14 +118,7 @@ bool ReferenceRenderer::update() {
                             &t.coverage[size_t(row) * size_t(tile.width)], size_t(tile.width) * sizeof(uint32_t));
         }
         // The texture is in GL row order, as the raster target is.
-        flipped_.resize(t.rgba.size());
-        const size_t rowFloats = size_t(tile.width) * 4;
-        for (int row = 0; row < tile.height; ++row)
-            std::memcpy(&flipped_[size_t(tile.height - 1 - row) * rowFloats], &t.rgba[size_t(row) * rowFloats],
-                        rowFloats * sizeof(float));
-        glBindTexture(GL_TEXTURE_2D, color_.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, tile.x0, height_ - tile.y0 - tile.height, tile.width, tile.height, GL_RGBA,
-                        GL_FLOAT, flipped_.data());
+        uploadRowsFlipped(color_, tile.x0, tile.y0, tile.width, tile.height, height_, t.rgba.data(), flipped_);
         const int tx = tile.x0 / kTileSize, ty = tile.y0 / kTileSize;
         uint8_t& state = tileState_[size_t(ty) * size_t(tilesX_) + size_t(tx)];
         if (state == 0) ++tilesDone_;
@@ -166,13 +127,9 @@ bool ReferenceRenderer::update() {
     }
     if (any && tilesDone_ == tileTotal_) finished_ = std::chrono::steady_clock::now();
     if (tilesDirty_ && tiles_) {
-        glBindTexture(GL_TEXTURE_2D, tiles_.id());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, tilesX_, tilesY_, 0, GL_RED, GL_UNSIGNED_BYTE, tileState_.data());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        uploadTileMask(tiles_, tilesX_, tilesY_, tileState_.data());
         tilesDirty_ = false;
     }
-    glBindTexture(GL_TEXTURE_2D, 0);
     return any;
 }
 
@@ -182,9 +139,6 @@ double ReferenceRenderer::seconds() const {
     return std::chrono::duration<double>(end - started_).count();
 }
 
-std::string ReferenceRenderer::error() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return error_;
-}
+std::string ReferenceRenderer::error() const { return jobs_.error(); }
 
 }  // namespace shadelab::app

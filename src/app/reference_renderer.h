@@ -3,6 +3,7 @@
 // finished tiles each frame into a float texture, so the window stays responsive while it runs.
 #pragma once
 
+#include "app/job_hand_off.h"
 #include "gl/objects.h"
 #include "image/image.h"
 #include "render/render_request.h"
@@ -11,7 +12,6 @@
 #include "trace/tile_renderer.h"
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -68,15 +68,10 @@ private:
     void resize(int width, int height);
 
     // Shared with the controller thread.
-    mutable std::mutex mutex_;
-    std::condition_variable wake_;
-    std::optional<Job> pending_;
-    bool pauseRequested_ = false;
-    bool quit_ = false;
+    JobHandOff<Job> jobs_;
+    std::mutex arrivedMutex_;
     std::vector<std::pair<uint64_t, trace::TileResult>> arrived_;  // (job id, tile), not yet collected
-    std::string error_;
     trace::MeshBvhCache meshes_;
-    std::thread controller_;
     int threads_ = 1;
 
     // UI thread only.
@@ -90,6 +85,8 @@ private:
     std::chrono::steady_clock::time_point started_, finished_;
     gl::Texture color_, tiles_;
     std::vector<float> flipped_;
+
+    std::thread controller_;  // last: it starts once every member exists
 };
 
 }  // namespace shadelab::app
