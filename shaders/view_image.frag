@@ -7,7 +7,7 @@
 uniform sampler2D t_raster;     // RGBA32F linear, GL row order
 uniform sampler2D t_traced;     // RGBA32F linear, GL row order
 uniform sampler2D t_tiles;      // R8, one texel per reference tile (row 0 = top tiles): 1 = rendered
-uniform sampler2D t_ramp;       // 256 x 1 RGB8 heat ramp (src/image/compare_report.h heatRamp)
+uniform sampler2D t_ramp;       // 256 x 1 RGB8 heat ramp (src/compare/compare_report.h heatRamp)
 uniform vec2 u_origin;          // image rectangle in window framebuffer pixels: lower-left corner (GL)
 uniform vec2 u_scale;           // image pixels per window pixel
 uniform float u_split;          // wipe position in window pixels from u_origin.x

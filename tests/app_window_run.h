@@ -3,8 +3,8 @@
 #pragma once
 
 #include "cli_run.h"
-#include "image/compare.h"
-#include "image/compare_report.h"
+#include "compare/compare_report.h"
+#include "compare/image_compare.h"
 #include "image/png.h"
 #include "pixel_of.h"
 #include "scene/view.h"

@@ -1,7 +1,7 @@
 // Banded rendering (raster_renderer.h Band): drawing an image in horizontal bands must give the same
 // pixels and coverage as drawing it whole, because every band samples the full image's pixel centres.
+#include "compare/image_compare.h"
 #include "gl_fixture.h"
-#include "image/compare.h"
 #include "image/encode.h"
 #include "image/png.h"
 #include "raster/offscreen.h"

@@ -4,8 +4,8 @@
 // reflected edges: the gate is the shadow gate's (1 % of interior pixels over 3/255, mean within 1/255),
 // met here because everything reflected is far. A kr differing between the renderers, and the cube left
 // out, must fail; a near object shows the documented parallax error.
+#include "compare/image_compare.h"
 #include "gl_fixture.h"
-#include "image/compare.h"
 #include "render_compare.h"
 #include "trace/trace_test_util.h"
 

@@ -1,9 +1,9 @@
 // Raster planar reflection against the reference: a kr = 0.5 checker mirror under three spheres,
 // the tracer at depth 1, gated as design.md §4 with the reflected silhouettes added to the silhouette band;
 // a kr that differs between the renderers must fail.
+#include "compare/compare_report.h"
+#include "compare/image_compare.h"
 #include "gl_fixture.h"
-#include "image/compare.h"
-#include "image/compare_report.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
 #include "render_compare.h"

@@ -1,9 +1,9 @@
 // Raster shadows against the reference: spheres on a checker plane under 1 and 3 lights (point and
 // directional), shadows on, gated as design.md §4 with a shadow-edge allowance; a light moved in one renderer
 // must fail. Also: no acne on an unoccluded lit plane, and no NaNs in any example scene with every term on.
+#include "compare/compare_report.h"
+#include "compare/image_compare.h"
 #include "gl_fixture.h"
-#include "image/compare.h"
-#include "image/compare_report.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
 #include "render_compare.h"

@@ -4,9 +4,9 @@
 // Negative controls below must fail the same gates. Failures leave both images, the heatmap and the
 // JSON report in build/test-output/reference_matrix_test/. The pbr model's matrix: {spheres, mesh} ×
 // roughness {0.2, 0.5, 1} × metallic {0, 1} × {1, 3 lights}, its controls, and the model-equality check.
+#include "compare/compare_report.h"
+#include "compare/image_compare.h"
 #include "gl_fixture.h"
-#include "image/compare.h"
-#include "image/compare_report.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
 #include "render_compare.h"

@@ -3,9 +3,9 @@
 // report behind. Shared by the matrix, shadow and reflection tests; the gates are the caller's.
 #pragma once
 
+#include "compare/compare_report.h"
 #include "compare/comparison.h"
-#include "image/compare.h"
-#include "image/compare_report.h"
+#include "compare/image_compare.h"
 #include "image/encode.h"
 #include "raster/offscreen.h"
 #include "test_output.h"

@@ -1,7 +1,7 @@
 // ImageView: one full-rectangle triangle through shaders/view_image.frag.
 #include "app/image_view.h"
 
-#include "image/compare_report.h"
+#include "compare/compare_report.h"
 
 #include <string>
 #include <vector>

@@ -8,7 +8,7 @@
 #include "app/file_list.h"
 #include "app/global_renderer.h"
 #include "app/viewer_state.h"
-#include "image/compare.h"
+#include "compare/image_compare.h"
 #include "probe/probe.h"
 
 #include <optional>

@@ -17,7 +17,7 @@
 #include "app/script.h"
 #include "app/undo_history.h"
 #include "app/viewer_state.h"
-#include "image/compare.h"
+#include "compare/image_compare.h"
 #include "raster/raster_renderer.h"
 
 #include <array>

@@ -3,8 +3,8 @@
 #include "cli/compare_command.h"
 
 #include "cli/args.h"
-#include "image/compare.h"
-#include "image/compare_report.h"
+#include "compare/compare_report.h"
+#include "compare/image_compare.h"
 #include "image/png.h"
 #include "util/input_error.h"
 #include "util/messages.h"

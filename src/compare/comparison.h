@@ -1,6 +1,6 @@
 // The raster-against-reference comparison's policy, in one place for the CLI (--renderer both), the viewer
 // (Split, Difference) and the tests: what each renderer hands over, and the depth the reference is traced
-// at. Not the gates or the metrics (image/compare.h); it renders nothing and links neither renderer.
+// at. Not the gates or the metrics (compare/image_compare.h); it renders nothing and links neither renderer.
 #pragma once
 
 #include "image/image.h"

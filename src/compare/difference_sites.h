@@ -5,7 +5,7 @@
 // still given beside it.
 #pragma once
 
-#include "image/compare.h"
+#include "compare/image_compare.h"
 #include "scene/scene.h"
 
 #include <cstdint>

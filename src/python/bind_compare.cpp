@@ -1,8 +1,8 @@
-// _compare: `shadelab compare --json` for images in memory (image/compare.h, image/compare_report.h): the same
-// gates, metrics, JSON report and heatmap. With coverage on both sides (render(..., coverage=True)) the silhouette
+// _compare: `shadelab compare --json` for images in memory (compare/image_compare.h, compare/compare_report.h): the
+// same gates, metrics, JSON report and heatmap. With coverage on both sides (render(..., coverage=True)) the silhouette
 // band is masked as in the raster-against-reference tests.
-#include "image/compare.h"
-#include "image/compare_report.h"
+#include "compare/compare_report.h"
+#include "compare/image_compare.h"
 #include "python/bindings.h"
 #include "python/image_data.h"
 #include "python/py_json.h"

@@ -1,8 +1,8 @@
 // Tests for the image comparison (design.md §4): exact metrics on hand-made differences, the strict
 // "over" rule, every gate with a negative control, silhouette bands against brute force, and the report.
-#include "image/compare.h"
+#include "compare/image_compare.h"
 
-#include "image/compare_report.h"
+#include "compare/compare_report.h"
 #include "image/png.h"
 #include "util/input_error.h"
 

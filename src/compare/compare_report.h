@@ -2,7 +2,7 @@
 // short human summary, the JSON report, and the evidence files a failing test writes. No metrics here.
 #pragma once
 
-#include "image/compare.h"
+#include "compare/image_compare.h"
 #include "image/image.h"
 
 #include <string>

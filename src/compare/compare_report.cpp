@@ -1,6 +1,6 @@
 // Heatmap, side-by-side strip, summary text and JSON report for a CompareResult. nlohmann::json stays
 // inside this file; the header exposes strings only.
-#include "image/compare_report.h"
+#include "compare/compare_report.h"
 
 #include "image/png.h"
 #include "util/atomic_file.h"

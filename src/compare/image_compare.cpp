@@ -1,6 +1,6 @@
 // Image comparison (design.md §4): one pass over both images accumulating integer sums per region,
 // then the gates. Nothing here allocates per pixel; the band needs one width*height mask and a 3-row ring.
-#include "image/compare.h"
+#include "compare/image_compare.h"
 
 #include "util/check.h"
 #include "util/input_error.h"
