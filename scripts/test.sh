@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Quick start "test": install what is missing, build, run the whole test suite through ctest:
+# Quick start "test": install what is missing, check the C++ formatting (scripts/check-format.sh), build, run the
+# whole test suite through ctest:
 #   1. under AddressSanitizer + UndefinedBehaviorSanitizer (Debug build in build-asan/), every test but the
 #      valgrind leak checks; Mesa's driver allocations are reported as leaks once its module is unloaded,
 #      so LeakSanitizer is off there and leaks are checked by tests/leaks/ under valgrind instead;
@@ -14,6 +15,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
 scripts/install-deps.sh
+scripts/check-format.sh  # before any build, so that a formatting slip fails in seconds
 scripts/build.sh -DSHADELAB_WERROR=ON
 
 # What of GLFW and Dear ImGui binary $1 carries: shared libraries (ldd) and linked-in symbols (nm).
