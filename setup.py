@@ -1,11 +1,14 @@
 """Builds shadelab's compiled module for `pip install .` with CMake: the project's own build, configured without
 tests and viewer, target shadelab_python only, for the Python that runs pip (a venv's too). Everything comes
-from Debian packages (scripts/install-deps.sh); nothing is downloaded. Metadata lives in pyproject.toml.
+from Debian packages (scripts/install-deps.sh); nothing is downloaded. Metadata lives in pyproject.toml, but for
+the version, which is CMakeLists.txt's project(VERSION), as the binary's --version and the module's build_info
+have it.
 
 Set CMAKE_CXX_COMPILER_LAUNCHER=ccache (and CMAKE_C_COMPILER_LAUNCHER) in the environment to reuse a cache, and
 SHADELAB_CMAKE_ARGS for more -D options."""
 
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -16,6 +19,17 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 ROOT = Path(__file__).resolve().parent
+
+
+def cmake_project_version():
+    """The VERSION of the project() call in CMakeLists.txt."""
+    text = (ROOT / "CMakeLists.txt").read_text()
+    match = re.search(r"^\s*project\(\s*shadelab\b[^)]*?\bVERSION\s+([0-9][0-9.]*)", text, re.MULTILINE)
+    if not match:
+        raise RuntimeError("CMakeLists.txt has no project(shadelab VERSION x.y.z)")
+    return match.group(1)
+
+
 (ROOT / "build-pip").mkdir(exist_ok=True)  # egg_base below must exist before setuptools writes into it
 
 
@@ -35,6 +49,7 @@ class CMakeBuild(build_ext):
 
 
 setup(
+    version=cmake_project_version(),
     ext_modules=[Extension("shadelab._shadelab", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     # Out of build/, which is the CMake build folder of a checkout.

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config libgtest-dev        # build and test
+  clang-format                                          # scripts/check-format.sh (Debian 12: clang-format 14)
   libglfw3-dev                                          # window
   libglm-dev                                            # math
   libegl-dev libopengl-dev libgl-dev libosmesa6-dev     # OpenGL headers and loaders

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Quick start "test": install what is missing, build, run the whole test suite through ctest:
+# Quick start "test": install what is missing, check the C++ formatting (scripts/check-format.sh), build, run the
+# whole test suite through ctest:
 #   1. under AddressSanitizer + UndefinedBehaviorSanitizer (Debug build in build-asan/), every test but the
 #      valgrind leak checks; Mesa's driver allocations are reported as leaks once its module is unloaded,
 #      so LeakSanitizer is off there and leaks are checked by tests/leaks/ under valgrind instead;
@@ -8,11 +9,14 @@
 #      libimgui.a), checked against build/shadelab, which must show both, so that the check cannot go blind;
 #   3. the Release build in build/, last, so the run ends in ctest's summary line.
 # SHADELAB_SKIP_SANITIZERS=1 skips step 1 for a quicker local run; CI always runs all three.
+# Every build here is configured with SHADELAB_WERROR=ON: a warning in shadelab's own code fails the run (third-party
+# headers are SYSTEM includes and do not count). scripts/build.sh alone leaves it off for users' builds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
 scripts/install-deps.sh
-scripts/build.sh
+scripts/check-format.sh  # before any build, so that a formatting slip fails in seconds
+scripts/build.sh -DSHADELAB_WERROR=ON
 
 # What of GLFW and Dear ImGui binary $1 carries: shared libraries (ldd) and linked-in symbols (nm).
 viewer_libs() {
@@ -21,14 +25,15 @@ viewer_libs() {
 }
 if [[ "${SHADELAB_SKIP_SANITIZERS:-0}" != 1 ]]; then
   echo "== test suite under ASan + UBSan (build-asan/)"
-  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSHADELAB_SANITIZE=address,undefined >/dev/null
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSHADELAB_SANITIZE=address,undefined \
+    -DSHADELAB_WERROR=ON >/dev/null
   cmake --build build-asan -j "$jobs"
   (cd build-asan && ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
      ctest --output-on-failure -j "$jobs" -E '^leak_check_')
 fi
 echo "== headless build without the viewer (build-headless/)"
 cmake -S . -B build-headless -DCMAKE_BUILD_TYPE=Release -DSHADELAB_BUILD_VIEWER=OFF -DSHADELAB_BUILD_TESTS=OFF \
-  >/dev/null
+  -DSHADELAB_WERROR=ON >/dev/null
 cmake --build build-headless -j "$jobs" --target shadelab
 if [[ -z "$(viewer_libs build/shadelab)" ]]; then
   echo "FAIL: the headless check is blind: build/shadelab (with the viewer) shows no GLFW or ImGui" >&2

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -230,6 +231,27 @@ TEST(Cli, HelpExitsZero) {
     EXPECT_NE(r.out.find("--encoding"), std::string::npos);
     EXPECT_NE(r.out.find("--shadow-map-size N|auto"), std::string::npos);
     EXPECT_NE(r.out.find("--pcf"), std::string::npos);
+}
+
+// The one place the version is written is CMakeLists.txt's project(shadelab VERSION x.y.z): --version prints it,
+// as the Python module's build_info and setup.py do.
+TEST(Cli, VersionIsTheCMakeProjectVersion) {
+    const std::string cmake = readAll(test::sourcePath("CMakeLists.txt"));
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(cmake, m, std::regex(R"(project\(\s*shadelab\s[^)]*VERSION\s+([0-9][0-9.]*))")))
+        << "no project(shadelab VERSION ...) in CMakeLists.txt";
+    Result r = run("--version");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_EQ(r.out, "shadelab " + m[1].str() + "\n");
+}
+
+TEST(Cli, HelpListsEveryCommand) {
+    Result r = run("--help");
+    ASSERT_EQ(r.code, 0);
+    for (const char* command : {"render", "compare", "view"}) {
+        const std::string entry = std::string("\n  ") + command + " ";
+        EXPECT_NE(r.out.find(entry), std::string::npos) << command << " is not listed in:\n" << r.out;
+    }
 }
 
 // Hiding glvnd's EGL vendor files makes every EGL platform fail, as on a machine without Mesa's EGL.

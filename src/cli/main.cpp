@@ -20,6 +20,7 @@ const char* const kHelp =
     "commands:\n"
     "  render    render a scene (.json, .gltf, .glb) to PNG, headless\n"
     "  compare   compare two PNG images under the raster-vs-reference gates\n"
+    "  view      open a scene in the interactive viewer (needs a display)\n"
     "\n"
     "Run 'shadelab <command> --help' for a command's options. Docs: docs/cli.md\n";
 
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (command == "--version") {
-            std::puts("shadelab 0.1.0");
+            std::puts("shadelab " SHADELAB_VERSION);
             return 0;
         }
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");

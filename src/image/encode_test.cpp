@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -175,22 +174,4 @@ TEST(Encode, ParseEncoding) {
     // image/ knows no flags: a bad word is nullopt, and the CLI words the error (cli_test checks it).
     EXPECT_FALSE(parseEncoding("sRGB2").has_value());
     EXPECT_FALSE(parseEncoding("").has_value());
-}
-
-TEST(Encode, TimingFullHd) {
-    ImageF img(1920, 1080);
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) {
-            float* p = img.pixel(x, y);
-            p[0] = x / 1920.0f, p[1] = y / 1080.0f, p[2] = 0.3f + 0.7f * std::sin(float(x + y) * 0.01f), p[3] = 1;
-        }
-    toImage8(img, Encoding::Srgb);  // builds the tables
-    double best = 1e9;
-    for (int i = 0; i < 5; ++i) {
-        auto t0 = std::chrono::steady_clock::now();
-        Image8 out = toImage8(img, Encoding::Srgb);
-        best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-        ASSERT_EQ(out.data.size(), size_t(1920 * 1080 * 3));
-    }
-    std::printf("toImage8 1920x1080: %.2f ms (best of 5)\n", best);
 }

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -257,27 +256,5 @@ TEST(Png, WriteFailureNamesTheFile) {
         ADD_FAILURE() << "expected InputError";
     } catch (const InputError& e) {
         EXPECT_EQ(e.file(), path);
-    }
-}
-
-TEST(Png, TimingFullHd) {
-    const Image8 frame = makeRenderedFrame(1920, 1080);
-    ImageF noisyF(1920, 1080);
-    std::mt19937 rng(7);
-    std::normal_distribution<float> noise(0.0f, 0.05f);
-    for (size_t i = 0; i < noisyF.rgba.size(); ++i)
-        noisyF.rgba[i] = frame.data[i / 4 * 3 + i % 4 % 3] / 255.0f + noise(rng);
-    const Image8 noisy = toImage8(noisyF, Encoding::Linear);
-    for (const auto* img : {&frame, &noisy}) {
-        double best = 1e9;
-        size_t size = 0;
-        for (int i = 0; i < 5; ++i) {
-            auto t0 = std::chrono::steady_clock::now();
-            size = encodePng(*img).size();
-            best = std::min(best,
-                            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-        }
-        std::printf("encodePng 1920x1080 RGB %s: %.2f ms (best of 5), %zu bytes\n",
-                    img == &frame ? "rendered" : "rendered+noise", best, size);
     }
 }
