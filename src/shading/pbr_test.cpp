@@ -1,6 +1,7 @@
 // The pbr BRDF of shaders/lighting.glsl against closed forms: Schlick's end points, GGX's
-// normalisation, white Lambert's albedo of 1, GGX's albedo loss, and the light units of design.md §7;
+// normalisation, Lambert's 1/π and the light units of design.md §7;
 // and the normalised Phong / Blinn-Phong lobes of §7.
+#include "shading/directional_albedo.h"
 #include "shading/local_illumination.h"
 
 #include <gtest/gtest.h>
@@ -12,24 +13,6 @@ using namespace shadelab::shading;
 namespace {
 
 const vec3 kUp(0.0f, 0.0f, 1.0f);
-
-// Directional albedo ρ(V) = ∫ f(L, V) N·L dω_L = (1/π) ∫ shadeLight(Il = 1) dω_L (shadeLight is π·f·N·L),
-// by the midpoint rule in (cos θ, φ): dω = d(cos θ) dφ.
-float albedo(float NoV, int model, vec3 md, vec3 ms, float s, bool diffuse, bool specular) {
-    const vec3 V(std::sqrt(1.0f - NoV * NoV), 0.0f, NoV);
-    const int nu = 1024, nphi = 1024;
-    double sum = 0.0;
-    for (int i = 0; i < nu; ++i) {
-        const float u = (float(i) + 0.5f) / float(nu);
-        const float r = std::sqrt(1.0f - u * u);
-        for (int j = 0; j < nphi; ++j) {
-            const float phi = 2.0f * SL_PI * (float(j) + 0.5f) / float(nphi);
-            const vec3 L(r * std::cos(phi), r * std::sin(phi), u);
-            sum += double(shadeLight(kUp, L, V, vec3(1.0f), md, ms, s, model, diffuse, specular).x);
-        }
-    }
-    return float(sum * (1.0 / nu) * (2.0 * M_PI / nphi) / M_PI);
-}
 
 }  // namespace
 
@@ -57,23 +40,9 @@ TEST(Pbr, GgxIntegratesToOneOverProjectedHemisphere) {
     }
 }
 
-TEST(Pbr, WhiteLambertAlbedoIsOne) {
-    for (float NoV : {0.2f, 0.7f, 1.0f})
-        EXPECT_NEAR(albedo(NoV, SL_MODEL_PBR, vec3(1.0f), vec3(0.04f), 0.5f, true, false), 1.0f, 1e-3f);
-    EXPECT_NEAR(SL_PI * Fd_Lambert(), 1.0f, 1e-7f);
-}
-
-TEST(Pbr, GgxAlbedoWithoutCompensationIsBelowOneAndFallsWithRoughness) {
-    // A white metal (F0 = 1): all loss is multiple scattering that a single-scattering BRDF leaves out.
-    float previous = 1.0f;
-    for (float roughness : {0.3f, 0.5f, 0.7f, 1.0f}) {
-        const float e = albedo(0.7f, SL_MODEL_PBR, vec3(0.0f), vec3(1.0f), roughness, false, true);
-        EXPECT_LT(e, previous) << "roughness " << roughness;
-        EXPECT_GT(e, 0.3f) << "roughness " << roughness;
-        previous = e;
-    }
-    EXPECT_LT(previous, 0.5f);  // roughness 1 loses more than half (Kulla & Conty 2017, Fig. 2)
-}
+// Lambert's f = c/π: a white surface's π·f is 1. Its albedo of 1 at every angle, and GGX's loss, are
+// directional_albedo_test.cpp's, over the one albedo integrator (shading/directional_albedo.h).
+TEST(Pbr, LambertIsOneOverPi) { EXPECT_NEAR(SL_PI * Fd_Lambert(), 1.0f, 1e-7f); }
 
 TEST(Pbr, WhiteLambertianMatchesTheLectureDiffuseTermExactly) {
     // design.md §7: π-scaled lights make pbr's diffuse term the lecture's md·N·L, bit for bit.
@@ -139,9 +108,10 @@ TEST(NormalizedLobes, PhongAlbedoAtNormalIncidenceIsAboutOne) {
     // V = N: R·V = N·L, so (1/π) ∫ (s+2)/2 (N·L)^s dω = (s + 2)/(s + 1), which tends to 1 as s grows; the
     // unnormalised lobe's 2/(s + 1) tends to 0.
     for (float s : {10.0f, 100.0f}) {
-        const float normalized = albedo(1.0f, SL_MODEL_PHONG, vec3(0.0f), vec3(phongNormalization(s)), s, false, true);
+        const float normalized =
+            modelAlbedo(SL_MODEL_PHONG, 1.0f, vec3(0.0f), vec3(phongNormalization(s)), s, false, true);
         EXPECT_NEAR(normalized, (s + 2.0f) / (s + 1.0f), 1e-2f) << "s " << s;
-        const float lecture = albedo(1.0f, SL_MODEL_PHONG, vec3(0.0f), vec3(1.0f), s, false, true);
+        const float lecture = modelAlbedo(SL_MODEL_PHONG, 1.0f, vec3(0.0f), vec3(1.0f), s, false, true);
         EXPECT_NEAR(lecture, 2.0f / (s + 1.0f), 1e-2f) << "s " << s;
     }
 }
