@@ -33,6 +33,7 @@ void checkError(const char* what);
 #define glClearBufferuiv shadelab_glClearBufferuiv
 #define glEnable shadelab_glEnable
 #define glDisable shadelab_glDisable
+#define glIsEnabled shadelab_glIsEnabled
 #define glDepthFunc shadelab_glDepthFunc
 #define glDepthMask shadelab_glDepthMask
 #define glCullFace shadelab_glCullFace
