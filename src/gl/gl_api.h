@@ -94,6 +94,8 @@ void checkError(const char* what);
 #define glBindFragDataLocation shadelab_glBindFragDataLocation
 #define glBindAttribLocation shadelab_glBindAttribLocation
 #define glGetUniformLocation shadelab_glGetUniformLocation
+#define glGetUniformiv shadelab_glGetUniformiv
+#define glGetUniformuiv shadelab_glGetUniformuiv
 #define glGetUniformBlockIndex shadelab_glGetUniformBlockIndex
 #define glUniformBlockBinding shadelab_glUniformBlockBinding
 #define glUniform1i shadelab_glUniform1i
