@@ -33,6 +33,7 @@ void checkError(const char* what);
 #define glClearBufferuiv shadelab_glClearBufferuiv
 #define glEnable shadelab_glEnable
 #define glDisable shadelab_glDisable
+#define glIsEnabled shadelab_glIsEnabled
 #define glDepthFunc shadelab_glDepthFunc
 #define glDepthMask shadelab_glDepthMask
 #define glCullFace shadelab_glCullFace
@@ -93,6 +94,8 @@ void checkError(const char* what);
 #define glBindFragDataLocation shadelab_glBindFragDataLocation
 #define glBindAttribLocation shadelab_glBindAttribLocation
 #define glGetUniformLocation shadelab_glGetUniformLocation
+#define glGetUniformiv shadelab_glGetUniformiv
+#define glGetUniformuiv shadelab_glGetUniformuiv
 #define glGetUniformBlockIndex shadelab_glGetUniformBlockIndex
 #define glUniformBlockBinding shadelab_glUniformBlockBinding
 #define glUniform1i shadelab_glUniform1i

@@ -2,6 +2,7 @@
 // lists what was tried.
 #include "gl/headless_context.h"
 
+#include "gl/debug_output.h"
 #include "gl/gl_api.h"
 #include "util/input_error.h"
 
@@ -24,6 +25,7 @@ void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*)) {
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     if (major * 10 + minor < 33)
         throw std::runtime_error("OpenGL " + info.version + " is older than the 3.3 core profile shadelab needs");
+    installDebugOutput(getProc);  // Debug and sanitizer builds only; Release leaves the context as it is
 }
 
 std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced, std::vector<std::string>* log) {

@@ -1,8 +1,17 @@
 // Shader compilation and linking with file-and-line error messages (Dear ImGui's CheckShader does the same).
 #include "gl/program.h"
 
+#include "util/check.h"
 #include "util/input_error.h"
 
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdio>
+#include <cstdlib>
 #include <regex>
 #include <sstream>
 #include <vector>
@@ -96,6 +105,50 @@ Program Program::build(const ShaderLibrary& lib, const std::string& vertexFile, 
 void Program::bindBlock(const char* blockName, GLuint binding) const {
     GLuint index = glGetUniformBlockIndex(handle_.id(), blockName);
     if (index != GL_INVALID_INDEX) glUniformBlockBinding(handle_.id(), index, binding);
+}
+
+GLint Program::location(const char* name, Uniform need) const {
+    const GLint loc = uniform(name);
+    if (kDcheckEnabled) {
+        GLint current = 0;
+        glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+        if (GLuint(current) != handle_.id()) {
+            std::fprintf(stderr, "Program::set(\"%s\"): program %u is not current (program %d is)\n", name,
+                         handle_.id(), current);
+            std::abort();
+        }
+        if (need == Uniform::Required && loc < 0) {
+            std::fprintf(stderr, "Program::set(\"%s\"): program %u has no active uniform of that name\n", name,
+                         handle_.id());
+            std::abort();
+        }
+    }
+    return loc;
+}
+
+void Program::set(const char* name, GLint v, Uniform need) const { glUniform1i(location(name, need), v); }
+void Program::set(const char* name, GLuint v, Uniform need) const { glUniform1ui(location(name, need), v); }
+void Program::set(const char* name, float v, Uniform need) const { glUniform1f(location(name, need), v); }
+void Program::set(const char* name, const glm::vec2& v, Uniform need) const {
+    glUniform2f(location(name, need), v.x, v.y);
+}
+void Program::set(const char* name, const glm::vec3& v, Uniform need) const {
+    glUniform3fv(location(name, need), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec4& v, Uniform need) const {
+    glUniform4fv(location(name, need), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::mat4& v, Uniform need) const {
+    glUniformMatrix4fv(location(name, need), 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::ivec4* v, int count, Uniform need) const {
+    glUniform4iv(location(name, need), count, glm::value_ptr(v[0]));
+}
+void Program::set(const char* name, const glm::vec4* v, int count, Uniform need) const {
+    glUniform4fv(location(name, need), count, glm::value_ptr(v[0]));
+}
+void Program::setSampler(const char* name, GLuint unit, Uniform need) const {
+    glUniform1i(location(name, need), GLint(unit));
 }
 
 }  // namespace shadelab::gl

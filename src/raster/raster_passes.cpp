@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 
@@ -32,19 +31,18 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     // The coefficients shadeLight reads under this model, derived on the CPU exactly as the tracer does.
     const shading::SurfaceParams c =
         shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, normalized);
-    glUniform3fv(p.uniform("u_ma"), 1, glm::value_ptr(c.ma));
-    glUniform3fv(p.uniform("u_md"), 1, glm::value_ptr(c.md));
-    glUniform3fv(p.uniform("u_ms"), 1, glm::value_ptr(c.ms));
-    glUniform1f(p.uniform("u_s"), c.s);
-    glUniform3fv(p.uniform("u_emission"), 1, glm::value_ptr(m.emission));
-    glUniform1ui(p.uniform("u_objectId"), objectId);
-    glUniform3fv(p.uniform("u_kr"), 1, glm::value_ptr(m.kr));  // planes' mirrors and objects' cubes
+    p.set("u_ma", c.ma);
+    p.set("u_md", c.md);
+    p.set("u_ms", c.ms);
+    p.set("u_s", c.s);
+    p.set("u_emission", m.emission);
+    p.set("u_objectId", objectId);
+    p.set("u_kr", m.kr);  // planes' mirrors and objects' cubes
     // Base-colour texture (mesh.frag): F0 = u_ms + u_msTex·(tex − 1) under pbr, as the tracer's local().
     const glm::vec3 msTex = model == shading::SL_MODEL_PBR ? m.metallic * m.baseColor : glm::vec3(0.0f);
-    glUniform3fv(p.uniform("u_msTex"), 1, glm::value_ptr(msTex));
+    p.set("u_msTex", msTex);
     // The material maps (mesh.frag's u_tex arrays; spheres and planes have none of these uniforms).
-    const GLint texLoc = p.uniform("u_tex");
-    if (texLoc < 0) return;
+    if (p.uniform("u_tex") < 0) return;
     const TextureBinding* maps[5] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
                                      &m.occlusionTexture, &m.emissiveTexture};
     const GLuint units[5] = {kBaseColorUnit, kMetalRoughUnit, kNormalMapUnit, kOcclusionUnit, kEmissiveUnit};
@@ -65,14 +63,14 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
         glBindTexture(GL_TEXTURE_2D, textures_.texture(t.texture));
     }
     glActiveTexture(GL_TEXTURE0);
-    glUniform4iv(texLoc, 5, glm::value_ptr(info[0]));
-    glUniform4fv(p.uniform("u_texMatrix"), 5, glm::value_ptr(matrix[0]));
-    glUniform4fv(p.uniform("u_texOffset"), 5, glm::value_ptr(offset[0]));
-    glUniform3fv(p.uniform("u_baseColor"), 1, glm::value_ptr(m.baseColor));
+    p.set("u_tex", info, 5, gl::Program::Uniform::Required);
+    p.set("u_texMatrix", matrix, 5);
+    p.set("u_texOffset", offset, 5);
+    p.set("u_baseColor", m.baseColor);
     const glm::vec4 factors(m.metallic, m.roughness, normalized ? 1.0f : 0.0f, 0.0f);
     const glm::vec4 alpha(m.alpha, m.alphaCutoff, float(int(m.alphaMode)), 0.0f);
-    glUniform4fv(p.uniform("u_mapFactors"), 1, glm::value_ptr(factors));
-    glUniform4fv(p.uniform("u_alpha"), 1, glm::value_ptr(alpha));
+    p.set("u_mapFactors", factors);
+    p.set("u_alpha", alpha);
 }
 
 int RasterRenderer::materialMaps(const Material& m) {
@@ -104,17 +102,16 @@ const gl::Program& RasterRenderer::ColorPrograms::get(Kind kind) const {
     p.bindBlock("Frame", kFrameBinding);
     p.bindBlock("Shadows", kShadowBinding);
     glUseProgram(p.id());
-    glUniform1i(p.uniform("t_shadowMaps"), GLint(kShadowUnit));
-    glUniform1i(p.uniform("t_iblCube"), GLint(kIblCubeUnit));
-    glUniform1i(p.uniform("t_iblDfg"), GLint(kIblDfgUnit));
-    glUniform1i(p.uniform("t_baseColor"), GLint(kBaseColorUnit));
-    glUniform1i(p.uniform("t_metalRough"), GLint(kMetalRoughUnit));
-    glUniform1i(p.uniform("t_normal"), GLint(kNormalMapUnit));
-    glUniform1i(p.uniform("t_occlusion"), GLint(kOcclusionUnit));
-    glUniform1i(p.uniform("t_emissive"), GLint(kEmissiveUnit));
-    if (kind == PlaneMirror) glUniform1i(p.uniform("t_reflection"), GLint(kReflectionUnit));
-    if (kind == MeshEnvironment || kind == SphereEnvironment)
-        glUniform1i(p.uniform("t_environment"), GLint(kEnvironmentUnit));
+    p.setSampler("t_shadowMaps", kShadowUnit);
+    p.setSampler("t_iblCube", kIblCubeUnit);
+    p.setSampler("t_iblDfg", kIblDfgUnit);
+    p.setSampler("t_baseColor", kBaseColorUnit);
+    p.setSampler("t_metalRough", kMetalRoughUnit);
+    p.setSampler("t_normal", kNormalMapUnit);
+    p.setSampler("t_occlusion", kOcclusionUnit);
+    p.setSampler("t_emissive", kEmissiveUnit);
+    if (kind == PlaneMirror) p.setSampler("t_reflection", kReflectionUnit);
+    if (kind == MeshEnvironment || kind == SphereEnvironment) p.setSampler("t_environment", kEnvironmentUnit);
     glUseProgram(0);
     return p;
 }
@@ -178,8 +175,8 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         const gl::Program& p =
             objectProgram(programs, ColorPrograms::Sphere, ColorPrograms::SphereEnvironment, int(i), -1, options);
         setMaterial(p, s.material, sphereCoverageId(scene, i), frame.flags.x, scene.normalized);
-        glUniform3fv(p.uniform("u_center"), 1, glm::value_ptr(s.center));
-        glUniform1f(p.uniform("u_radius"), s.radius);
+        p.set("u_center", s.center, gl::Program::Uniform::Required);
+        p.set("u_radius", s.radius, gl::Program::Uniform::Required);
         glDrawArrays(GL_TRIANGLES, 0, 36);
     }
     glDisable(GL_CULL_FACE);
@@ -202,18 +199,18 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
         const glm::vec3 centre = eye - eyeHeight * p.normal;
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
-        glUniform3fv(planeProgram.uniform("u_planeCenter"), 1, glm::value_ptr(centre));
-        glUniform3fv(planeProgram.uniform("u_planeT"), 1, glm::value_ptr(t));
-        glUniform3fv(planeProgram.uniform("u_planeB"), 1, glm::value_ptr(b));
-        glUniform3fv(planeProgram.uniform("u_planeNormal"), 1, glm::value_ptr(p.normal));
-        glUniform1f(planeProgram.uniform("u_planeOffset"), p.offset);
-        glUniform1i(planeProgram.uniform("u_checker"), p.checker ? 1 : 0);
+        planeProgram.set("u_planeCenter", centre, gl::Program::Uniform::Required);
+        planeProgram.set("u_planeT", t, gl::Program::Uniform::Required);
+        planeProgram.set("u_planeB", b, gl::Program::Uniform::Required);
+        planeProgram.set("u_planeNormal", p.normal, gl::Program::Uniform::Required);
+        planeProgram.set("u_planeOffset", p.offset, gl::Program::Uniform::Required);
+        planeProgram.set("u_checker", p.checker ? 1 : 0);
         const Checker c = p.checker.value_or(Checker{});
         // pbr: the second tiles' md2 is their base colour (F0 stays the plane's), as in the tracer.
         const glm::vec3 md2 =
             frame.flags.x == shading::SL_MODEL_PBR ? shading::pbrDiffuseColor(c.md2, p.material.metallic) : c.md2;
-        glUniform3fv(planeProgram.uniform("u_md2"), 1, glm::value_ptr(md2));
-        glUniform1f(planeProgram.uniform("u_checkerSize"), c.size);
+        planeProgram.set("u_md2", md2);
+        planeProgram.set("u_checkerSize", c.size);
         glDrawArrays(GL_TRIANGLES, 0, 12);
     }
 

@@ -16,7 +16,6 @@
 #include <cstring>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <limits>
 #include <optional>
 #include <string>
@@ -273,7 +272,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
             gl::Program::build(shaders_, "fullscreen.vert", "environment_backdrop.frag", ShaderVariant().defines());
         backdrop_.bindBlock("Frame", kFrameBinding);
         glUseProgram(backdrop_.id());
-        glUniform1i(backdrop_.uniform("t_iblCube"), GLint(kIblCubeUnit));
+        backdrop_.setSampler("t_iblCube", kIblCubeUnit);
         glUseProgram(0);
     }
 
@@ -394,11 +393,11 @@ void RasterRenderer::redrawPart(const Scene& scene, const FrameBlock& frame, con
     glBindTexture(GL_TEXTURE_2D, partialTarget_.colorTexture());
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, target_.coverageTexture());
-    glUniform1i(partialMerge_.uniform("t_partial"), 0);
-    glUniform1i(partialMerge_.uniform("t_coverage"), 1);
+    partialMerge_.setSampler("t_partial", 0, gl::Program::Uniform::Required);
+    partialMerge_.setSampler("t_coverage", 1, gl::Program::Uniform::Required);
     for (size_t i = 0; i < ids.size(); ++i)
-        glUniform1ui(partialMerge_.uniform(("u_ids[" + std::to_string(i) + "]").c_str()), ids[i]);
-    glUniform1i(partialMerge_.uniform("u_idCount"), int(ids.size()));
+        partialMerge_.set(("u_ids[" + std::to_string(i) + "]").c_str(), ids[i], gl::Program::Uniform::Required);
+    partialMerge_.set("u_idCount", int(ids.size()), gl::Program::Uniform::Required);
     glBindVertexArray(emptyVao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

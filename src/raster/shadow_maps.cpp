@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 #include <stdexcept>
 #include <string>
@@ -95,7 +94,7 @@ void ShadowMaps::drawLayer(const Scene& scene, const std::vector<DrawRange>& ran
 
     glDisable(GL_CULL_FACE);
     glUseProgram(meshDepth_.id());
-    glUniformMatrix4fv(meshDepth_.uniform("u_lightViewProj"), 1, GL_FALSE, glm::value_ptr(vp));
+    meshDepth_.set("u_lightViewProj", vp, gl::Program::Uniform::Required);
     glBindVertexArray(meshVao);
     for (const DrawRange& r : ranges) {
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
@@ -109,15 +108,15 @@ void ShadowMaps::drawLayer(const Scene& scene, const std::vector<DrawRange>& ran
     glCullFace(GL_FRONT);
     glFrontFace(GL_CCW);
     glUseProgram(sphereDepth_.id());
-    glUniformMatrix4fv(sphereDepth_.uniform("u_lightViewProj"), 1, GL_FALSE, glm::value_ptr(vp));
+    sphereDepth_.set("u_lightViewProj", vp, gl::Program::Uniform::Required);
     const glm::mat4 inverse = glm::inverse(vp);
-    glUniformMatrix4fv(sphereDepth_.uniform("u_lightInverse"), 1, GL_FALSE, glm::value_ptr(inverse));
-    glUniform1f(sphereDepth_.uniform("u_mapSize"), float(size_));
+    sphereDepth_.set("u_lightInverse", inverse, gl::Program::Uniform::Required);
+    sphereDepth_.set("u_mapSize", float(size_), gl::Program::Uniform::Required);
     glBindVertexArray(cubeVao);
     for (const Sphere& s : scene.spheres) {
         if (outsideClip(vp, s.center - glm::vec3(s.radius), s.center + glm::vec3(s.radius))) continue;
-        glUniform3fv(sphereDepth_.uniform("u_center"), 1, glm::value_ptr(s.center));
-        glUniform1f(sphereDepth_.uniform("u_radius"), s.radius);
+        sphereDepth_.set("u_center", s.center, gl::Program::Uniform::Required);
+        sphereDepth_.set("u_radius", s.radius, gl::Program::Uniform::Required);
         glDrawArrays(GL_TRIANGLES, 0, 36);
     }
     glDisable(GL_CULL_FACE);
