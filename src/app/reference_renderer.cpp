@@ -87,7 +87,7 @@ void ReferenceRenderer::request(const Scene& scene, int width, int height, uint6
     r.engine = render::Engine::Trace;
     r.width = width;
     r.height = height;
-    r.depth = maxDepth;
+    if (maxDepth >= 0) r.depth = maxDepth;  // -1: the scene's
     r.threads = threads_;
     r.coverage = true;
     jobs_.post(Job{job_, scene, r});

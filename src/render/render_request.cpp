@@ -4,6 +4,7 @@
 #include "compare/comparison.h"
 #include "image/image.h"
 #include "scene/sample_grid.h"
+#include "util/check.h"
 #include "util/input_error.h"
 
 #include <cstdio>
@@ -65,6 +66,7 @@ int traceDepth(const RenderRequest& r, const Scene& scene) {
 }
 
 raster::OffscreenOptions toOffscreen(const RenderRequest& r) {
+    SHADELAB_DCHECK(!check(r));  // the front end refused a bad request before converting it
     raster::OffscreenOptions o;
     o.width = r.width;
     o.height = r.height;
@@ -75,6 +77,7 @@ raster::OffscreenOptions toOffscreen(const RenderRequest& r) {
 }
 
 trace::TraceSettings toTrace(const RenderRequest& r, const Scene& scene) {
+    SHADELAB_DCHECK(!check(r));
     trace::TraceSettings s;
     s.width = r.width;
     s.height = r.height;
@@ -86,6 +89,7 @@ trace::TraceSettings toTrace(const RenderRequest& r, const Scene& scene) {
 }
 
 trace::PathSettings toPath(const RenderRequest& r, const Scene& scene) {
+    SHADELAB_DCHECK(!check(r));
     trace::PathSettings s;
     s.width = r.width;
     s.height = r.height;
