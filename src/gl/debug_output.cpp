@@ -28,7 +28,10 @@ const char* sourceName(GLenum source) {
 
 void APIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum, GLsizei length, const GLchar* message,
                              const void*) {
-    if (type != GL_DEBUG_TYPE_ERROR) return;
+    // A shader that does not compile is bad input, not a programmer's error: gl::Program reports its log as one
+    // line naming the file and line (the CLI's promise), so the compiler's own copy is neither printed nor
+    // recorded.
+    if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     std::string text = std::string(sourceName(source)) + " error " + std::to_string(id) + ": ";
     text.append(message, length >= 0 ? size_t(length) : std::strlen(message));
     while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
