@@ -28,9 +28,6 @@ const char* sourceName(GLenum source) {
 
 void APIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum, GLsizei length, const GLchar* message,
                              const void*) {
-    // A shader that does not compile is bad input, not a programmer's error: gl::Program reports its log as one
-    // line naming the file and line (the CLI's promise), so the compiler's own copy is neither printed nor
-    // recorded.
     if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     std::string text = std::string(sourceName(source)) + " error " + std::to_string(id) + ": ";
     text.append(message, length >= 0 ? size_t(length) : std::strlen(message));
@@ -64,9 +61,12 @@ bool installDebugOutput(GetProcFn getProc) {
     auto callback = reinterpret_cast<PFNGLDEBUGMESSAGECALLBACKPROC>(getProc("glDebugMessageCallback"));
     auto control = reinterpret_cast<PFNGLDEBUGMESSAGECONTROLPROC>(getProc("glDebugMessageControl"));
     if (!callback || !control) return false;
-    // Errors only: performance hints and the like would cost a call each and say nothing a test checks.
+    // Errors only: performance hints and the like would cost a call each and say nothing a test checks. Not the
+    // shader compiler's: a shader that fails to compile is an input error Program::build reports with its file
+    // and line (a broken shader in SHADELAB_SHADER_DIR), not a wrong GL call.
     control(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_FALSE);
     control(GL_DONT_CARE, GL_DEBUG_TYPE_ERROR, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+    control(GL_DEBUG_SOURCE_SHADER_COMPILER, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_FALSE);
     callback(onDebugMessage, nullptr);
     // Synchronous: the callback runs inside the failing call, on its thread, so the record is in call order.
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);

@@ -1,8 +1,8 @@
 // GL debug output (KHR_debug) in Debug and sanitizer builds: the driver calls back on every GL error (message
-// type GL_DEBUG_TYPE_ERROR) during the call that caused it, and the message is recorded here and printed to
-// stderr, so that a test can fail on a GL error where it happened instead of at a later glGetError, or never
-// (most calls are not checked; gl::checkError runs once per pass). Release builds (NDEBUG) install nothing:
-// their GL calls and output are as without this file.
+// type GL_DEBUG_TYPE_ERROR; not the shader compiler's, which Program::build reports) during the call that caused it,
+// and the message is recorded here and printed to stderr, so that a test can fail on a GL error where it happened
+// instead of at a later glGetError, or never (most calls are not checked; gl::checkError runs once per pass). Release
+// builds (NDEBUG) install nothing: their GL calls and output are as without this file.
 #pragma once
 
 #include "gl/gl_api.h"

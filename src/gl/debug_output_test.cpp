@@ -71,6 +71,20 @@ TEST_F(DebugOutput, CorrectCallsRecordNothing) {
     EXPECT_TRUE(gl::takeDebugErrors().empty());
 }
 
+// A shader that does not compile is an input error (Program::build names its file and line), not a GL error.
+TEST_F(DebugOutput, ShaderCompileErrorsAreNotRecorded) {
+    const GLuint shader = glCreateShader(GL_FRAGMENT_SHADER);
+    const char* text = "#version 330 core\nthis is not GLSL;\n";
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_TRUE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    glDeleteShader(shader);
+    EXPECT_EQ(ok, GL_FALSE);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    EXPECT_TRUE(gl::takeDebugErrors().empty());
+}
+
 TEST_F(DebugOutput, ARunOfErrorsIsCappedAndCounted) {
     if (!gl::kDebugOutputBuild) GTEST_SKIP() << "Release build: no callback";
     const size_t extra = 10;
