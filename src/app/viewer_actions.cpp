@@ -14,6 +14,7 @@
 #include "util/error_line.h"
 #include "util/input_error.h"
 #include "util/messages.h"
+#include "util/output_file.h"
 #include "util/warning_capture.h"
 
 #define GLFW_INCLUDE_NONE
@@ -123,6 +124,8 @@ void Viewer::performAction(const ScriptAction& a) {
                 render::RenderRequest request = x.request;
                 if (!x.sizeGiven) request.width = renderW_, request.height = renderH_;
                 request.encoding = state_.encoding;
+                // A render never replaces the scene it was made from.
+                if (!state_.scenePath.empty()) refuseInputAsOutput(x.path, "path", {state_.scenePath});
                 ensureRasterCurrent(false);  // the meshes of the state's scene are uploaded
                 try {
                     writePng(x.path, renderOffline(*raster_, state_.scene, request));
