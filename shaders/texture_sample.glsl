@@ -24,11 +24,15 @@ SL_FN vec2 texTransform(vec2 uv, vec4 m, vec2 offset) {
 }
 
 // Folds coordinate c (in units of the texture's extent) into the wrap mode's base period: [0, 1) for repeat,
-// [0, 2) for mirrored repeat, [0, 1] for clamp. Done in float so no integer % sees a negative operand.
+// [0, 2) for mirrored repeat, [0, 1] for clamp. Done in float so no integer % sees a negative operand. A
+// coordinate that is not finite (a texture transform that overflows, or inf − inf) folds to 0: NaN fails
+// every comparison, so the range test below, not the arithmetic, decides, and the texel index that follows
+// can never leave the image.
 SL_FN float texFold(float c, int mode) {
-    if (mode == 0) return c - floor(c);
-    if (mode == 1) return c - 2.0f * floor(0.5f * c);
-    return clamp(c, 0.0f, 1.0f);
+    if (mode == 2) return c >= 1.0f ? 1.0f : (c > 0.0f ? c : 0.0f);
+    float period = mode == 1 ? 2.0f : 1.0f;
+    float f = mode == 1 ? c - 2.0f * floor(0.5f * c) : c - floor(c);
+    return f >= 0.0f && f < period ? f : 0.0f;
 }
 
 // Texel index i (which texFold's coordinate puts in [-1, n] for repeat and clamp, [-1, 2n] for mirrored)

@@ -19,9 +19,10 @@ from __future__ import annotations
 
 from . import _shadelab
 from ._shadelab import ContextError, Image, InputError
+from ._warnings import ShadelabWarning
 from .compare import CompareReport, compare, default_gates
 from .render import Renderer, default_renderer, probe, render
-from .scene import Scene, ShadelabWarning
+from .scene import Scene
 
 __version__ = _shadelab.build_info["version"]
 build_info: dict[str, str] = dict(_shadelab.build_info)

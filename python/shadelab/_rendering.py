@@ -12,6 +12,7 @@ import _thread
 import atexit
 
 from . import _shadelab
+from ._warnings import warn
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
 if TYPE_CHECKING:
@@ -42,8 +43,12 @@ def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Siz
     """Renders the scene behind `handle` with `core`; the arguments are Renderer.render's. The compiled renderer
     holds them to the render request's limits, the command line's (docs/design.md §5)."""
     width, height = parse_size(size)
-    return core.render(handle, width, height, renderer, spp, encoding, depth, threads, coverage, time_limit,
-                       estimator, light_paths)
+    image = core.render(handle, width, height, renderer, spp, encoding, depth, threads, coverage, time_limit,
+                        estimator, light_paths)
+    if image.non_finite_pixels:
+        # The command line's warning, in the same words: no image goes black in silence.
+        warn([f"{renderer}: {image._non_finite_message}"], stacklevel=3)
+    return image
 
 
 _default: _shadelab._Renderer | None = None

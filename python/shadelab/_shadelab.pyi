@@ -48,6 +48,11 @@ class Image:
     @property
     def timings(self) -> dict[str, float]:
         """draw_ms and read_ms: milliseconds of the render and of its readback and conversion."""
+    @property
+    def non_finite_pixels(self) -> int:
+        """Pixels whose linear value had a NaN or an infinity (written black or white); render warns when > 0."""
+    @property
+    def _non_finite_message(self) -> str: ...
     def to_uint8(self) -> NDArray[np.uint8]:
         """The 8-bit pixels, shape (H, W, 3) (or 4 for an RGBA file), a new array."""
     def to_png(self) -> bytes:
@@ -105,6 +110,10 @@ def _probe(scene: _Scene, x: int, y: int, width: int, height: int) -> dict[str, 
 def _compare(a: Image, b: Image, threshold: int = 3, max_fraction_over: float = 0.001, hard_max: int = 16,
              max_silhouette_fraction: float = 0.02, max_mean: float | None = None, gain: int = 16, name_a: str = "",
              name_b: str = "") -> tuple[dict[str, Any], str, Image, bool]: ...
+
+# Files the package writes, under the binary's output rules (atomic, never over an input, no device stems).
+def _write_file(path: str, data: bytes) -> None: ...
+def _derived_output(stem: str, suffix: str) -> str: ...
 
 # The lighting equations over rows: vectors (n, 3), scalars (n,), float32 (shadelab.lighting broadcasts).
 def _phong(N: ArrayLike, L: ArrayLike, V: ArrayLike, s: ArrayLike, /) -> NDArray[np.float32]: ...

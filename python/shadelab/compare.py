@@ -39,15 +39,13 @@ class CompareReport:
 
     def save(self, stem: StrPath) -> tuple[str, str]:
         """Writes <stem>_heat.png and <stem>_report.json; returns their paths."""
-        heat, report = f"{stem}_heat.png", f"{stem}_report.json"
-        self.heatmap.save(heat)
         import json
 
-        tmp = report + ".tmp"
-        with open(tmp, "w") as f:
-            json.dump(self.report, f, indent=2)
-            f.write("\n")
-        os.replace(tmp, report)
+        # The binary's rules for derived names and for every output (no device stem, no input replaced).
+        heat = _shadelab._derived_output(os.fspath(stem), "_heat.png")
+        report = _shadelab._derived_output(os.fspath(stem), "_report.json")
+        self.heatmap.save(heat)
+        _shadelab._write_file(report, (json.dumps(self.report, indent=2) + "\n").encode())
         return heat, report
 
     def _repr_png_(self) -> bytes:

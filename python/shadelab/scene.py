@@ -13,10 +13,9 @@ order). ``scene.objects[0]`` and friends are views by position, not copies: they
 from __future__ import annotations
 
 import os
-import warnings
 from collections.abc import MutableSequence
 
-from . import _rendering, _shadelab
+from . import _rendering, _shadelab, _warnings
 from ._rendering import DEFAULT_SIZE
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
@@ -35,13 +34,8 @@ else:
 _CONTAINERS = ("lights", "objects")
 
 
-class ShadelabWarning(UserWarning):
-    """A scene reader's warning (an unknown field in a dict, something skipped in a glTF file)."""
-
-
 def _warn(lines: Iterable[str], stacklevel: int) -> None:
-    for line in lines:
-        warnings.warn(line, ShadelabWarning, stacklevel=stacklevel + 1)
+    _warnings.warn(lines, stacklevel + 1)
 
 
 def _plain(value: Any) -> Any:

@@ -11,24 +11,26 @@
 
 namespace shadelab::app {
 
-Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const render::RenderRequest& request) {
+Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const render::RenderRequest& request,
+                     uint64_t* nonFinite) {
     render::require(request);
     switch (request.engine) {
         case render::Engine::Raster: {
             raster::OffscreenResult r = raster::renderOffscreen(raster, scene, render::toOffscreen(request));
             raster.invalidate();  // its target now holds the offline bands, not the window's image
+            if (nonFinite) *nonFinite += r.nonFinite;
             return std::move(r.pixels);
         }
         case render::Engine::Path: {
             const trace::PathOutput out =
                 trace::pathTraceImage(std::make_shared<const trace::TraceScene>(scene), render::toPath(request, scene));
-            return toImage8(out.color, request.encoding);
+            return toImage8(out.color, request.encoding, nonFinite);
         }
         case render::Engine::Trace:
         case render::Engine::Both: break;
     }
     const trace::TraceOutput out = trace::traceImage(scene, render::toTrace(request, scene));
-    return toImage8(out.color, request.encoding);
+    return toImage8(out.color, request.encoding, nonFinite);
 }
 
 }  // namespace shadelab::app

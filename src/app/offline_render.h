@@ -9,11 +9,14 @@
 #include "render/render_request.h"
 #include "scene/scene.h"
 
+#include <cstdint>
+
 namespace shadelab::app {
 
 // `request` must pass render::check() and not be Engine::Both; `raster` must hold the scene's meshes and its
 // context must be current. Leaves `raster` to redraw its next frame whole. Throws SettingError for a limit
-// only the GL knows (its widest target).
-Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const render::RenderRequest& request);
+// only the GL knows (its widest target). The pixels with no finite value are added to *nonFinite.
+Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const render::RenderRequest& request,
+                     uint64_t* nonFinite);
 
 }  // namespace shadelab::app

@@ -339,7 +339,13 @@ Script parseScript(const std::string& text, const std::string& file) {
     return script;
 }
 
-Script loadScript(const std::string& path) { return parseScript(readFile(path, kMaxScriptFileBytes), path); }
+Script loadScript(const std::string& path) {
+    InputFiles inputs;
+    InputRecorder recorder(inputs);
+    Script script = parseScript(readFile(path, kMaxScriptFileBytes), path);
+    script.inputs = std::move(inputs);
+    return script;
+}
 
 bool isStateAction(const ScriptAction& action) {
     return std::visit([](const auto& x) { return kIsStateAction<std::decay_t<decltype(x)>>; }, action.action);

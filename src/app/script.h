@@ -8,6 +8,7 @@
 #include "render/render_request.h"
 #include "scene/light.h"
 #include "scene/raster_override.h"
+#include "util/input_files.h"
 
 #include <glm/vec3.hpp>
 #include <string>
@@ -167,6 +168,7 @@ struct ScriptAction {
 struct Script {
     std::string file;                   // for messages
     std::vector<ScriptAction> actions;  // in file order; frames never decrease
+    InputFiles inputs;                  // the script's file: no action's output replaces it (input_files.h)
     int lastFrame() const { return actions.empty() ? -1 : actions.back().frame; }
 };
 

@@ -21,6 +21,7 @@
 #include "raster/raster_renderer.h"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -86,6 +87,10 @@ private:
     void feedSyntheticMouse();
     void performAction(const ScriptAction& action);
     Image8 captureRaster();
+    // A float image in the state's encoding; a pixel with no finite value is reported (warnNonFinite).
+    Image8 toPixels(const ImageF& image, const char* what);
+    // Prints and shows (status line, as an error) how many pixels of `image` had no finite value, if any.
+    void warnNonFinite(const char* what, uint64_t nonFinite, const Image8& image);
     uint32_t coverageAt(int x, int y);
     void writeProbeReport(const std::string& path);
     void writeWindowScreenshot(const std::string& path);

@@ -7,6 +7,7 @@
 #include "app/offline_render.h"
 #include "app/save_policy.h"
 #include "compare/difference_sites.h"
+#include "image/encode.h"
 #include "image/png.h"
 #include "scene/scene_json.h"
 #include "scene/scene_load.h"
@@ -31,13 +32,13 @@ namespace shadelab::app {
 namespace {
 
 // A whole float target as the 8-bit image a screenshot writes (the one shared conversion, toImage8).
-Image8 readTarget8(const raster::RenderTarget& target, Encoding encoding) {
+Image8 readTarget8(const raster::RenderTarget& target, Encoding encoding, uint64_t* nonFinite) {
     Image8 img;
     img.width = target.width();
     img.height = target.height();
     img.channels = 3;
     img.data.resize(size_t(img.width) * size_t(img.height) * 3);
-    target.readColor8(img, 0, encoding);
+    target.readColor8(img, 0, encoding, nonFinite);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return img;
 }
@@ -49,7 +50,10 @@ void Viewer::runScript() {
     if (smoothShot_) {
         const auto& shot = std::get<actions::SmoothScreenshot>(smoothShot_->action);
         if (accumulation_->converged() && !accumulation_->restart(state_.revision, renderW_, renderH_)) {
-            writePng(shot.path, readTarget8(accumulation_->target(), state_.encoding));
+            uint64_t nonFinite = 0;
+            const Image8 smooth = readTarget8(accumulation_->target(), state_.encoding, &nonFinite);
+            warnNonFinite("smooth frame", nonFinite, smooth);
+            writePng(shot.path, smooth);
             smoothShot_ = nullptr;
         } else if (glfwGetTime() - waitStarted_ > double(shot.timeout)) {
             throw InputError(script_->file, "actions[" + std::to_string(smoothShot_->index) + "]",
@@ -97,7 +101,7 @@ void Viewer::performAction(const ScriptAction& a) {
                     if (global_->samples() == 0 || global_->revision() != state_.referenceRevision)
                         throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
                                          "the path tracer has no whole sample yet (use waitReference first)");
-                    writePng(x.path, toImage8(global_->image(), state_.encoding));
+                    writePng(x.path, toPixels(global_->image(), "path-traced image"));
                     std::fprintf(stderr, "shadelab: %s: path traced, %d samples per pixel\n", x.path.c_str(),
                                  global_->samples());
                     return;
@@ -105,7 +109,7 @@ void Viewer::performAction(const ScriptAction& a) {
                 if (!reference_->complete() || reference_->revision() != state_.referenceRevision)
                     throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
                                      "the reference is not complete (use waitReference first)");
-                writePng(x.path, toImage8(reference_->image(), state_.encoding));
+                writePng(x.path, toPixels(reference_->image(), "traced image"));
             } else if constexpr (std::is_same_v<T, WindowScreenshot>) {
                 pendingWindowShot_ = x.path;
             } else if constexpr (std::is_same_v<T, ProbeReport>) {
@@ -128,7 +132,10 @@ void Viewer::performAction(const ScriptAction& a) {
                 if (!state_.scenePath.empty()) refuseInputAsOutput(x.path, "path", {state_.scenePath});
                 ensureRasterCurrent(false);  // the meshes of the state's scene are uploaded
                 try {
-                    writePng(x.path, renderOffline(*raster_, state_.scene, request));
+                    uint64_t nonFinite = 0;
+                    const Image8 image = renderOffline(*raster_, state_.scene, request, &nonFinite);
+                    warnNonFinite("render", nonFinite, image);
+                    writePng(x.path, image);
                 } catch (const SettingError& e) {
                     throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]." + e.field(),
                                      e.reason());
@@ -177,7 +184,25 @@ void Viewer::feedSyntheticMouse() {
 
 Image8 Viewer::captureRaster() {
     ensureRasterCurrent(false);
-    return readTarget8(raster_->target(), state_.encoding);
+    uint64_t nonFinite = 0;
+    Image8 img = readTarget8(raster_->target(), state_.encoding, &nonFinite);
+    warnNonFinite("raster image", nonFinite, img);
+    return img;
+}
+
+Image8 Viewer::toPixels(const ImageF& image, const char* what) {
+    uint64_t nonFinite = 0;
+    Image8 img = toImage8(image, state_.encoding, &nonFinite);
+    warnNonFinite(what, nonFinite, img);
+    return img;
+}
+
+void Viewer::warnNonFinite(const char* what, uint64_t nonFinite, const Image8& image) {
+    if (nonFinite == 0) return;
+    const std::string text =
+        std::string(what) + ": " + nonFiniteMessage(nonFinite, uint64_t(image.width) * uint64_t(image.height));
+    printWarning(text);
+    setStatus(text, true);
 }
 
 uint32_t Viewer::coverageAt(int x, int y) {
@@ -227,7 +252,7 @@ void Viewer::updateMetrics() {
     std::vector<uint32_t> rasterCoverage;
     raster_->target().readCoverage(rasterCoverage);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    const Image8 traced = toImage8(reference_->image(), state_.encoding);
+    const Image8 traced = toPixels(reference_->image(), "traced image");
     if (traced.width != raster.width || traced.height != raster.height) return;
     metrics_ = compareImages(raster, traced, rasterCoverage, reference_->coverage());
     metricsWords_ = describeDifference(state_.scene, differenceSites(raster, traced, rasterCoverage, *metrics_),

@@ -12,6 +12,7 @@
 #include "compare/difference_sites.h"
 #include "compare/image_compare.h"
 #include "gl/headless_context.h"
+#include "image/encode.h"
 #include "image/png.h"
 #include "raster/offscreen.h"
 #include "scene/scene_load.h"
@@ -23,7 +24,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <future>
 #include <memory>
 #include <string>
@@ -52,7 +52,7 @@ Rendered rasterize(const Scene& scene, const render::RenderRequest& request, Sta
     raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, render::toOffscreen(request));
     timer.stageSplit("draw, " + std::to_string(r.bands) + " band(s) (incl. lazy shader compile)", r.drawMs,
                      "readback + conversion", r.readMs);
-    return {std::move(r.pixels), std::move(r.coverage)};
+    return {std::move(r.pixels), std::move(r.coverage), r.nonFinite};
 }
 
 Rendered traceReference(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
@@ -63,14 +63,16 @@ Rendered traceReference(const Scene& scene, const render::RenderRequest& request
         out = trace::traceImage(scene, settings, [&bar](float f) { bar.update(f); });
     }
     timer.stage("trace");
-    Rendered r{toImage8(out.color, request.encoding), std::move(out.coverage)};
+    Rendered r;
+    r.pixels = toImage8(out.color, request.encoding, &r.nonFinite);
+    r.coverage = std::move(out.coverage);
     timer.stage("conversion");
     return r;
 }
 
 // The path tracer (design.md §8): settings from the request, a progress bar, and one line saying how many
 // samples it took and how noisy the image is.
-Image8 pathTrace(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+Rendered pathTrace(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
     const trace::PathSettings settings = render::toPath(request, scene);
     auto traced = std::make_shared<const trace::TraceScene>(scene);
     timer.stage("BVH build");
@@ -86,22 +88,10 @@ Image8 pathTrace(const Scene& scene, const render::RenderRequest& request, Stage
                  "standard error %.2f (8-bit sRGB units)\n",
                  out.spp, settings.timeLimit > 0.0 && out.spp < settings.spp ? " (time limit)" : "", out.seconds,
                  paths / std::max(out.seconds, 1e-9) * 1e-6, settings.maxDepth, out.meanStandardError8);
-    Image8 pixels = toImage8(out.color, request.encoding);
+    Rendered r;
+    r.pixels = toImage8(out.color, request.encoding, &r.nonFinite);
     timer.stage("conversion");
-    return pixels;
-}
-
-// The files a render reads that -o must not replace: the scene and the glTF files its meshes name, resolved
-// as scene_load.cpp resolves them. The buffers and images inside a glTF are not listed.
-std::vector<std::string> sceneInputs(const std::string& input, const Scene& scene) {
-    namespace fs = std::filesystem;
-    std::vector<std::string> files = {input};
-    const fs::path base = fs::path(input).parent_path();
-    for (const Mesh& mesh : scene.meshes) {
-        const fs::path source(mesh.source);
-        files.push_back(source.is_absolute() || base.empty() ? mesh.source : (base / source).string());
-    }
-    return files;
+    return r;
 }
 
 // --strict: a warning about the input ends the render with that line as the error (exit 1), before anything
@@ -130,7 +120,7 @@ int render(const RenderOptions& o, std::string& doing) {
     Scene scene = sceneFuture.get();
     doing = "rendering";
     timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
-    refuseInputAsOutput(o.output, "-o", sceneInputs(o.input, scene));
+    refuseInputAsOutput(o.output, "-o", scene.inputs.paths());
     if (o.camera) scene.camera = chooseCamera(scene, *o.camera, o.input);
     if (o.model) scene.model = *o.model;
     if (o.terms) scene.terms = *o.terms;
@@ -139,16 +129,31 @@ int render(const RenderOptions& o, std::string& doing) {
         throw InputError(o.input, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
     checkMemoryBudget(scene, o);
 
+    // A pixel with no finite value is said out loud (an error under --strict), before anything is written.
+    auto report = [&](const char* renderer, const Rendered& r) {
+        if (r.nonFinite == 0) return;
+        const uint64_t pixels = uint64_t(r.pixels.width) * uint64_t(r.pixels.height);
+        (o.strict ? failOnWarning
+                  : printWarning)(o.input + ": " + renderer + ": " + nonFiniteMessage(r.nonFinite, pixels));
+    };
     Image8 output;
     if (request.engine == render::Engine::Raster) {
-        output = rasterize(scene, request, timer).pixels;
+        Rendered r = rasterize(scene, request, timer);
+        report("raster", r);
+        output = std::move(r.pixels);
     } else if (request.engine == render::Engine::Trace) {
-        output = traceReference(scene, request, timer).pixels;
+        Rendered r = traceReference(scene, request, timer);
+        report("trace", r);
+        output = std::move(r.pixels);
     } else if (request.engine == render::Engine::Path) {
-        output = pathTrace(scene, request, timer);
+        Rendered r = pathTrace(scene, request, timer);
+        report("path", r);
+        output = std::move(r.pixels);
     } else {
         Rendered a = rasterize(scene, request, timer);
         Rendered b = traceReference(scene, request, timer);
+        report("raster", a);
+        report("trace", b);
         CompareResult cmp = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
         Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
         output = sideBySide({&a.pixels, &b.pixels, &heat});

@@ -10,6 +10,7 @@
 #include "scene/scene_load.h"
 #include "util/input_error.h"
 #include "util/messages.h"
+#include "util/output_file.h"
 #include "util/warning_capture.h"
 
 #include <cstdio>
@@ -17,6 +18,8 @@
 #include <filesystem>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace shadelab::cli {
 namespace {
@@ -102,6 +105,19 @@ int viewCommand(int argc, char** argv) {
     std::optional<app::Script> script;
     if (auto v = args.value("--script"); v && !v->empty()) script = app::loadScript(*v);
 
+    const std::string path = args.positionals().empty() ? defaultScenePath() : args.positionals()[0];
+    // The session's outputs, checked before any work: against the scene file and the script now (even
+    // without a display), against every file the scene reads once it has loaded.
+    const std::pair<const char*, const std::string&> outputs[] = {{"--screenshot", options.screenshot},
+                                                                  {"--window-screenshot", options.windowScreenshot},
+                                                                  {"--probe-report", options.probeReport}};
+    auto checkOutputs = [&](std::vector<std::string> inputs) {
+        if (script) inputs.push_back(script->file);
+        for (const auto& [flag, output] : outputs)
+            if (!output.empty()) checkOutput(output, flag, inputs);
+    };
+    checkOutputs({path});
+
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland))
@@ -109,12 +125,12 @@ int viewCommand(int argc, char** argv) {
             "view needs a display, but neither DISPLAY nor WAYLAND_DISPLAY is set; "
             "use 'shadelab render <scene> -o out.png' for images without one");
 
-    const std::string path = args.positionals().empty() ? defaultScenePath() : args.positionals()[0];
     Scene scene;
     WarningCapture warnings;  // shown in the viewer's panel too
     if (!path.empty()) scene = loadScene(path, WarningCapture::warn);
     raster.applyTo(scene.raster);
     if (camera) scene.camera = chooseCamera(scene, *camera, path);
+    checkOutputs(scene.inputs.paths());
     app::ViewerState state = app::makeViewerState(std::move(scene), path);
     state.loadWarnings = warnings.lines();
     app::setEncoding(state, encoding);

@@ -6,6 +6,7 @@
 #include "util/atomic_file.h"
 #include "util/check.h"
 #include "util/input_error.h"
+#include "util/output_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -178,7 +179,9 @@ std::string compareReportJson(const CompareResult& r, const std::string& imageA,
 
 std::vector<std::string> writeCompareEvidence(const std::string& stem, const Image8& a, const Image8& b,
                                               const CompareResult& r) {
-    std::vector<std::string> paths = {stem + "_a.png", stem + "_b.png", stem + "_heat.png", stem + "_report.json"};
+    std::vector<std::string> paths;
+    for (const char* suffix : {"_a.png", "_b.png", "_heat.png", "_report.json"})
+        paths.push_back(derivedOutput(stem, suffix));
     writePng(paths[0], a);
     writePng(paths[1], b);
     writePng(paths[2], diffHeatmap(a, b, r.bandMask));

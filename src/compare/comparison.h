@@ -16,6 +16,7 @@ namespace shadelab {
 struct Rendered {
     Image8 pixels;
     std::vector<uint32_t> coverage;  // empty when coverage was not asked for
+    uint64_t nonFinite = 0;          // pixels that had a NaN or infinite channel before conversion (toImage8)
 };
 
 // The reference's secondary-ray depth when it is compared with the rasterizer: `requested` (a render

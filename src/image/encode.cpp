@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -81,8 +82,11 @@ struct JoinAll {
     }
 };
 
-void encodeRows(const ImageF& img, const Thresholds& t, Image8& out, int y0, int y1) {
+// Rows [y0, y1); the pixels whose RGB is not all finite are added to `nonFinite` (one sum catches them:
+// NaN or ±inf in any channel makes it NaN or ±inf).
+void encodeRows(const ImageF& img, const Thresholds& t, Image8& out, int y0, int y1, uint64_t& nonFinite) {
     const size_t w = size_t(img.width);
+    uint64_t bad = 0;
     for (int y = y0; y < y1; ++y) {
         const float* src = img.rgba.data() + size_t(y) * w * 4;
         uint8_t* dst = out.data.data() + size_t(y) * w * 3;
@@ -90,8 +94,10 @@ void encodeRows(const ImageF& img, const Thresholds& t, Image8& out, int y0, int
             dst[3 * x + 0] = t.code(src[4 * x + 0]);
             dst[3 * x + 1] = t.code(src[4 * x + 1]);
             dst[3 * x + 2] = t.code(src[4 * x + 2]);
+            bad += std::isfinite(src[4 * x + 0] + src[4 * x + 1] + src[4 * x + 2]) ? 0 : 1;
         }
     }
+    nonFinite += bad;
 }
 
 }  // namespace
@@ -111,7 +117,7 @@ uint8_t encodeChannel(float linear, Encoding e) {
     return uint8_t(std::min(255.0, std::max(0.0, code)));
 }
 
-Image8 toImage8(const ImageF& img, Encoding e) {
+Image8 toImage8(const ImageF& img, Encoding e, uint64_t* nonFinite) {
     SHADELAB_CHECK_EQ(img.rgba.size(), size_t(img.width) * size_t(img.height) * 4);
     Image8 out;
     out.width = img.width;
@@ -125,20 +131,30 @@ Image8 toImage8(const ImageF& img, Encoding e) {
     int threads = int(std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), 8));
     threads = std::min(threads, std::max(1, int(pixels / 131072)));
     threads = std::min(threads, std::max(1, img.height));
+    std::vector<uint64_t> bad(size_t(threads), 0);  // one counter per thread: no sharing, no atomics
     if (threads <= 1) {
-        encodeRows(img, t, out, 0, img.height);
-        return out;
-    }
-    {
+        encodeRows(img, t, out, 0, img.height, bad[0]);
+    } else {
         std::vector<std::thread> pool;
         JoinAll joinAll{pool};  // joins even if starting a thread throws
         for (int i = 1; i < threads; ++i) {
             int y0 = int(int64_t(img.height) * i / threads), y1 = int(int64_t(img.height) * (i + 1) / threads);
-            pool.emplace_back(encodeRows, std::cref(img), std::cref(t), std::ref(out), y0, y1);
+            pool.emplace_back(encodeRows, std::cref(img), std::cref(t), std::ref(out), y0, y1,
+                              std::ref(bad[size_t(i)]));
         }
-        encodeRows(img, t, out, 0, int(int64_t(img.height) / threads));
+        encodeRows(img, t, out, 0, int(int64_t(img.height) / threads), bad[0]);
     }
+    if (nonFinite)
+        for (uint64_t b : bad) *nonFinite += b;
     return out;
+}
+
+std::string nonFiniteMessage(uint64_t nonFinite, uint64_t pixels) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.2g", pixels ? 100.0 * double(nonFinite) / double(pixels) : 0.0);
+    return std::to_string(nonFinite) + " of " + std::to_string(pixels) + " pixels (" + share +
+           " %) have no finite value (NaN or infinity: an overflow in the scene's numbers) and are written black "
+           "(NaN) or white (infinity)";
 }
 
 }  // namespace shadelab

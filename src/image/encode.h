@@ -17,7 +17,13 @@ float srgbToLinear(float encoded);
 // One channel: clamp, encode, round to nearest 8-bit value. NaN maps to 0.
 uint8_t encodeChannel(float linear, Encoding e);
 
-// RGB8 image (alpha dropped) from a float image.
-Image8 toImage8(const ImageF& img, Encoding e);
+// RGB8 image (alpha dropped) from a float image. A pixel whose RGB holds a NaN or an infinity has no value
+// to show: NaN is written as 0 and +inf as 255, and the number of such pixels is added to *nonFinite, which
+// every front end passes and reports (nonFiniteMessage), so that no image goes black without a word.
+Image8 toImage8(const ImageF& img, Encoding e, uint64_t* nonFinite);
+
+// "N of M pixels (P %) have no finite value (NaN or infinity) and are written black or white": the one
+// wording of that report, for the command line's warning, the viewer's status line and Python's warning.
+std::string nonFiniteMessage(uint64_t nonFinite, uint64_t pixels);
 
 }  // namespace shadelab

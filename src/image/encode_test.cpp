@@ -29,7 +29,7 @@ size_t countMismatches(const std::vector<float>& values, Encoding e) {
     ImageF img(width, int((pixels + width - 1) / width));
     for (size_t i = 0; i < values.size(); ++i) img.rgba[(i / 3) * 4 + i % 3] = values[i];
     for (size_t p = 0; p < size_t(img.width) * size_t(img.height); ++p) img.rgba[p * 4 + 3] = -7.0f;
-    Image8 out = toImage8(img, e);
+    Image8 out = toImage8(img, e, nullptr);
     EXPECT_EQ(out.channels, 3);
     size_t bad = 0;
     for (size_t i = 0; i < values.size(); ++i) {
@@ -151,7 +151,7 @@ TEST(Encode, ToImage8DropsAlphaAndKeepsLayout) {
             float* p = img.pixel(x, y);
             p[0] = x / 2.0f, p[1] = y, p[2] = 0.5f, p[3] = 0.25f;
         }
-    Image8 out = toImage8(img, Encoding::Linear);
+    Image8 out = toImage8(img, Encoding::Linear, nullptr);
     ASSERT_EQ(out.width, 3);
     ASSERT_EQ(out.height, 2);
     ASSERT_EQ(out.channels, 3);
@@ -162,8 +162,37 @@ TEST(Encode, ToImage8DropsAlphaAndKeepsLayout) {
     EXPECT_EQ(out.pixel(0, 0)[1], 0);
     EXPECT_EQ(out.pixel(0, 1)[2], 128);
 
-    Image8 empty = toImage8(ImageF(0, 0), Encoding::Srgb);
+    Image8 empty = toImage8(ImageF(0, 0), Encoding::Srgb, nullptr);
     EXPECT_EQ(empty.data.size(), 0u);
+}
+
+// No silent black image: every pixel with a NaN or an infinite channel is counted, on one thread and on many
+// (a large image converts in parallel), and the count accumulates over calls (strips of one image).
+TEST(Encode, ToImage8CountsPixelsWithoutAFiniteValue) {
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (int side : {4, 1024}) {
+        ImageF img(side, side);
+        for (float& v : img.rgba) v = 0.5f;
+        img.pixel(0, 0)[0] = nan;
+        img.pixel(1, 0)[2] = inf;
+        img.pixel(side - 1, side - 1)[1] = -inf;
+        img.pixel(2, 0)[3] = nan;  // alpha is dropped: not counted
+        uint64_t nonFinite = 0;
+        const Image8 out = toImage8(img, Encoding::Srgb, &nonFinite);
+        EXPECT_EQ(nonFinite, 3u) << side;
+        EXPECT_EQ(out.pixel(0, 0)[0], 0) << "NaN is written black";
+        EXPECT_EQ(out.pixel(1, 0)[2], 255) << "+inf is written white";
+        toImage8(img, Encoding::Linear, &nonFinite);
+        EXPECT_EQ(nonFinite, 6u) << "counts add up";
+        // Negative control: the same image with finite values counts nothing.
+        img.pixel(0, 0)[0] = img.pixel(1, 0)[2] = img.pixel(side - 1, side - 1)[1] = 3.4e38f;
+        nonFinite = 0;
+        toImage8(img, Encoding::Srgb, &nonFinite);
+        EXPECT_EQ(nonFinite, 0u) << side;
+    }
+    EXPECT_EQ(nonFiniteMessage(3, 16),
+              "3 of 16 pixels (19 %) have no finite value (NaN or infinity: an overflow in the scene's numbers) and "
+              "are written black (NaN) or white (infinity)");
 }
 
 TEST(Encode, ParseEncoding) {

@@ -68,7 +68,7 @@ ImagePtr fromFloat(py::array_t<float, py::array::c_style | py::array::forcecast>
         for (int k = 0; k < 3; ++k) img->linear.rgba[i * 4 + size_t(k)] = src[i * size_t(c) + size_t(k)];
         img->linear.rgba[i * 4 + 3] = c == 4 ? src[i * size_t(c) + 3] : 1.0f;
     }
-    img->pixels = toImage8(img->linear, e);
+    img->pixels = toImage8(img->linear, e, &img->nonFinite);
     img->encoding = e;
     img->source = "array";
     return img;
@@ -144,6 +144,14 @@ In Jupyter an image shows itself.)")
                 return d;
             },
             "Milliseconds: raster draw (finished) and readback + conversion; trace: tracing and conversion")
+        .def_property_readonly(
+            "non_finite_pixels", [](const ImageData& i) { return i.nonFinite; },
+            "Pixels whose linear value had a NaN or an infinity (written black or white); render warns when > 0")
+        .def_property_readonly("_non_finite_message",
+                               [](const ImageData& i) {
+                                   return nonFiniteMessage(i.nonFinite,
+                                                           uint64_t(i.pixels.width) * uint64_t(i.pixels.height));
+                               })
         .def("to_uint8", &uint8Array, "The 8-bit pixels, shape (H, W, 3) (or 4 for an RGBA file), a new array")
         .def(
             "to_png", [](const ImageData& i) { return pngBytes(i); }, "The PNG file's bytes")

@@ -10,5 +10,6 @@ void bindScene(pybind11::module_& m);     // _Scene: load, documents, edits (bin
 void bindRender(pybind11::module_& m);    // _Renderer, _probe (bind_render.cpp)
 void bindCompare(pybind11::module_& m);   // _compare (bind_compare.cpp)
 void bindLighting(pybind11::module_& m);  // _phong, _blinn_phong, _pbr, _shade (bind_lighting.cpp)
+void bindFiles(pybind11::module_& m);     // _write_file, _derived_output (bind_files.cpp)
 
 }  // namespace shadelab::python

@@ -19,6 +19,7 @@ struct ImageData {
     std::string source;              // "raster", "trace", "path", "file" or "array"
     double drawMs = 0.0;             // raster: draw (glFinish'ed); trace: the whole trace
     double readMs = 0.0;             // raster: readback + conversion; trace: conversion
+    uint64_t nonFinite = 0;          // pixels whose linear value had a NaN or infinity (toImage8)
 };
 
 }  // namespace shadelab::python

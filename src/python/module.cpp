@@ -30,6 +30,7 @@ PYBIND11_MODULE(_shadelab, m) {
     shadelab::python::bindRender(m);
     shadelab::python::bindCompare(m);
     shadelab::python::bindLighting(m);
+    shadelab::python::bindFiles(m);
 
     py::dict build;
     build["version"] = SHADELAB_VERSION;

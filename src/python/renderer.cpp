@@ -39,7 +39,7 @@ ImageData fromTracer(ImageF color, std::vector<uint32_t> coverage, Encoding enco
     ImageData out;
     out.drawMs = msSince(started);
     const Clock::time_point t0 = Clock::now();
-    out.pixels = toImage8(color, encoding);
+    out.pixels = toImage8(color, encoding, &out.nonFinite);
     out.readMs = msSince(t0);
     out.linear = std::move(color);
     out.coverage = std::move(coverage);
@@ -126,6 +126,7 @@ ImageData Renderer::rasterize(const Scene& scene, const render::RenderRequest& r
         raster::OffscreenResult r = raster::renderOffscreen(*raster_, scene, o);
         out.linear = std::move(r.linear);
         out.pixels = std::move(r.pixels);
+        out.nonFinite = r.nonFinite;
         out.coverage = std::move(r.coverage);
         out.drawMs = r.drawMs;
         out.readMs = r.readMs;

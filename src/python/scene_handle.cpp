@@ -74,6 +74,10 @@ bool SceneHandle::replace(const nlohmann::json& doc, std::vector<std::string>& w
 Scene SceneHandle::build(const nlohmann::json& doc, std::vector<std::string>& warnings) {
     const std::string file;  // errors name the JSON path only: the document is no file
     Scene next;
+    // The new scene keeps protecting what the handle read before (parts and maps it reuses came from those
+    // files) and records what it reads now.
+    InputFiles inputs = scene_.inputs;
+    InputRecorder recorder(inputs);
     {
         WarningScope scope(warnings);
         next = parseSceneDocument(JsonNode(doc, "", file, collectWarning));
@@ -119,6 +123,7 @@ Scene SceneHandle::build(const nlohmann::json& doc, std::vector<std::string>& wa
         else
             loadEnvironment(next, baseDir_);
     }
+    next.inputs = std::move(inputs);
     return next;
 }
 

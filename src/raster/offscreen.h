@@ -19,6 +19,7 @@ struct OffscreenResult {
     Image8 pixels;                   // RGB
     std::vector<uint32_t> coverage;  // width*height ids when asked, row 0 at the top
     ImageF linear;                   // width x height, when keepLinear: pixels == toImage8(linear, encoding)
+    uint64_t nonFinite = 0;          // pixels with a NaN or infinite channel (toImage8)
     int bands = 0;
     double drawMs = 0.0;  // GPU time, summed over bands (glFinish after each)
     double readMs = 0.0;  // readback + downsampling + conversion

@@ -2,7 +2,9 @@
 #include "scene/environment_load.h"
 
 #include "image/hdr.h"
+#include "scene/scene_limits.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace shadelab {
@@ -14,6 +16,9 @@ std::shared_ptr<const shading::PrefilteredEnvironment> loadPrefilteredHdr(const 
     map.width = hdr.width;
     map.height = hdr.height;
     map.rgb = std::move(hdr.rgb);
+    // RGBE reaches 1.7e38; held at kMaxRadiance, a texel still shows white at any exposure, and the prefilter's
+    // sums and the renderers' products of it stay finite (scene_limits.h).
+    for (float& v : map.rgb) v = std::min(v, kMaxRadiance);
     return std::make_shared<const shading::PrefilteredEnvironment>(shading::prefilterEnvironment(map, settings));
 }
 

@@ -2,12 +2,15 @@
 // Every failure is an InputError "<file>: <json path>: <reason>".
 #include "scene/json_reader.h"
 
+#include "util/finite.h"
+
 #include "util/input_error.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 namespace shadelab {
@@ -181,10 +184,9 @@ double JsonNode::number() const {
 }
 
 float JsonNode::finite() const {
-    double d = number();
-    float f = static_cast<float>(d);
-    if (!std::isfinite(d) || !std::isfinite(f)) fail("must be finite (a float is at most 3.4e38), got " + j_->dump());
-    return f;
+    const std::optional<float> f = finiteFloat(number());
+    if (!f) fail("must be finite (a float is at most 3.4e38), got " + j_->dump());
+    return *f;
 }
 
 float JsonNode::nonNegative() const {
@@ -222,6 +224,18 @@ glm::vec3 JsonNode::vec3() const {
     return {(*this)[0].finite(), (*this)[1].finite(), (*this)[2].finite()};
 }
 
+glm::vec3 JsonNode::vec3Within(float bound) const {
+    const glm::vec3 v = vec3();
+    for (size_t i = 0; i < 3; ++i) (*this)[i].within(v[int(i)], bound, "the largest coordinate");
+    return v;
+}
+
+float JsonNode::within(float f, float bound, const char* why) const {
+    if (!(std::fabs(f) <= bound))
+        fail("must be at most " + formatBound(bound) + " in magnitude (" + why + "), got " + j_->dump());
+    return f;
+}
+
 glm::vec3 JsonNode::nonZeroVec3() const {
     glm::vec3 v = vec3();
     if (v == glm::vec3(0.0f)) fail("must be non-zero");
@@ -246,6 +260,13 @@ glm::vec3 JsonNode::rgb() const {
     if (!j_->is_array()) fail(std::string("expected 3 numbers or one number, got ") + jsonTypeName(*j_));
     if (j_->size() != 3) fail("expected 3 numbers, got " + std::to_string(j_->size()));
     return {(*this)[0].nonNegative(), (*this)[1].nonNegative(), (*this)[2].nonNegative()};
+}
+
+glm::vec3 JsonNode::rgbUpTo(float max) const {
+    const glm::vec3 c = rgb();
+    if (j_->is_number()) return glm::vec3(within(c.x, max, "the largest radiance"));
+    for (size_t i = 0; i < 3; ++i) (*this)[i].within(c[int(i)], max, "the largest radiance");
+    return c;
 }
 
 glm::vec3 JsonNode::unitRgb() const {

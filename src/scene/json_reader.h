@@ -55,6 +55,8 @@ public:
     float nonNegative() const;  // finite, >= 0
     float positive() const;     // finite, > 0
     float inRange(float lo, float hi, bool openLo, bool openHi) const;
+    // `f` (this node's value) when |f| <= bound, else fails "must be at most <bound> in magnitude (<why>)".
+    float within(float f, float bound, const char* why) const;
     int integerIn(int lo, int hi) const;
     // A string naming an entry of an enum's name table (util/name_table.h). Anything else fails with
     // "unknown <what> '<word>'; expected <the table's names>".
@@ -67,11 +69,13 @@ public:
 
     // Vectors: exactly three finite numbers.
     glm::vec3 vec3() const;
-    glm::vec3 nonZeroVec3() const;  // not (0, 0, 0)
-    glm::vec3 unitVec3() const;     // non-zero, normalised (kept as written when already unit)
+    glm::vec3 vec3Within(float bound) const;  // each number's magnitude at most `bound`
+    glm::vec3 nonZeroVec3() const;            // not (0, 0, 0)
+    glm::vec3 unitVec3() const;               // non-zero, normalised (kept as written when already unit)
     // An RGB colour or coefficient: three numbers >= 0, or one number meaning grey.
     glm::vec3 rgb() const;
-    glm::vec3 unitRgb() const;  // the same, each in [0, 1] (a reflectance such as a base colour)
+    glm::vec3 rgbUpTo(float max) const;  // the same, each at most `max`
+    glm::vec3 unitRgb() const;           // the same, each in [0, 1] (a reflectance such as a base colour)
 
 private:
     std::string childPath(const std::string& key) const;

@@ -9,6 +9,7 @@
 #include "scene/raster_settings.h"
 #include "scene/shading_model.h"
 #include "scene/terms.h"
+#include "util/input_files.h"
 
 #include <optional>
 #include <string>
@@ -40,6 +41,9 @@ struct Scene {
     // A bare glTF model's own perspective cameras (node-walk order), for --camera file|N and the viewer's
     // camera menu. Never serialised: a saved scene keeps the camera in use.
     std::vector<Camera> modelCameras;
+    // The files the scene was read from (its file, models, buffers, images, environment map): while any copy
+    // of the scene lives, no output replaces them (util/input_files.h). Never serialised.
+    InputFiles inputs;
 };
 
 // Largest number of lights either renderer accepts (the rasterizer's uniform block size).

@@ -9,6 +9,7 @@
 
 #include "scene/json_reader.h"
 #include "scene/raster_override.h"
+#include "scene/scene_limits.h"
 #include "util/atomic_file.h"
 #include "util/input_error.h"
 
@@ -65,8 +66,8 @@ Material parseMaterial(const JsonNode& object, const NamedMaterials& named) {
 Camera parseCamera(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"position", "target", "up", "fovY"});
     Camera c;
-    if (auto f = n.find("position")) c.position = f->vec3();
-    if (auto f = n.find("target")) c.target = f->vec3();
+    if (auto f = n.find("position")) c.position = f->vec3Within(kMaxCoordinate);
+    if (auto f = n.find("target")) c.target = f->vec3Within(kMaxCoordinate);
     if (auto f = n.find("up")) c.up = f->nonZeroVec3();
     if (auto f = n.find("fovY")) c.fovY = f->inRange(0.0f, 180.0f, true, true);
     glm::vec3 view = c.target - c.position;
@@ -141,8 +142,9 @@ void parseObject(const JsonNode& n, const NamedMaterials& named, Scene& scene) {
         n.warnUnknownKeys({"type", "name", "center", "radius", "material"});
         Sphere s;
         s.name = name;
-        s.center = n.child("center").vec3();
-        s.radius = n.child("radius").positive();
+        s.center = n.child("center").vec3Within(kMaxCoordinate);
+        const JsonNode radius = n.child("radius");
+        s.radius = radius.within(radius.positive(), kMaxCoordinate, "the largest coordinate");
         s.material = parseMaterial(n, named);
         scene.spheres.push_back(s);
     } else if (t == "plane") {
@@ -151,9 +153,9 @@ void parseObject(const JsonNode& n, const NamedMaterials& named, Scene& scene) {
         p.name = name;
         if (auto f = n.find("normal")) p.normal = f->unitVec3();
         if (n.has("offset") && n.has("point")) n.failAt("point", "give either \"offset\" or \"point\", not both");
-        if (auto f = n.find("offset")) p.offset = f->finite();
+        if (auto f = n.find("offset")) p.offset = f->within(f->finite(), kMaxCoordinate, "the largest coordinate");
         if (auto f = n.find("point")) {
-            glm::dvec3 q(f->vec3()), normal(p.normal);
+            glm::dvec3 q(f->vec3Within(kMaxCoordinate)), normal(p.normal);
             p.offset = static_cast<float>(glm::dot(normal, q));
         }
         p.material = parseMaterial(n, named);
@@ -199,16 +201,16 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("baseColor")) m.baseColor = f->unitRgb();
     if (auto f = n.find("metallic")) m.metallic = f->inRange(0.0f, 1.0f, false, false);
     if (auto f = n.find("roughness")) m.roughness = f->inRange(0.0f, 1.0f, false, false);
-    if (auto f = n.find("emission")) m.emission = f->rgb();
+    if (auto f = n.find("emission")) m.emission = f->rgbUpTo(kMaxRadiance);
     return m;
 }
 
 LightOverride parseLightOverride(const JsonNode& n) {
     n.requireObject();
     LightOverride l;
-    if (auto f = n.find("position")) l.position = f->vec3();
+    if (auto f = n.find("position")) l.position = f->vec3Within(kMaxCoordinate);
     if (auto f = n.find("direction")) l.direction = f->unitVec3();
-    if (auto f = n.find("color")) l.color = f->rgb();
+    if (auto f = n.find("color")) l.color = f->rgbUpTo(kMaxRadiance);
     return l;
 }
 
@@ -221,7 +223,8 @@ static Environment parseEnvironment(const JsonNode& n) {
         if (e.hdr.empty()) f->fail("must name a .hdr file; omit \"hdr\" for a uniform environment");
         if (e.hdr.find('\0') != std::string::npos) f->fail("contains a NUL character");
     }
-    if (auto f = n.find("intensity")) e.intensity = f->nonNegative();
+    if (auto f = n.find("intensity"))
+        e.intensity = f->within(f->nonNegative(), kMaxEnvironmentIntensity, "the largest environment intensity");
     if (auto f = n.find("rotation")) e.rotation = f->inRange(-360.0f, 360.0f, false, false);
     return e;
 }
@@ -252,8 +255,8 @@ Scene parseSceneDocument(const JsonNode& root) {
         for (const EnumName<Term>& term : kTermNames)
             if (auto g = f->find(term.name)) termFlag(scene.terms, term.value) = g->boolean();
     }
-    if (auto f = root.find("ambient")) scene.ambient = f->rgb();
-    if (auto f = root.find("background")) scene.background = f->rgb();
+    if (auto f = root.find("ambient")) scene.ambient = f->rgbUpTo(kMaxRadiance);
+    if (auto f = root.find("background")) scene.background = f->rgbUpTo(kMaxRadiance);
     if (auto f = root.find("environment"); f && !f->json().is_null()) scene.environment = parseEnvironment(*f);
     if (auto f = root.find("energyCompensation")) scene.energyCompensation = f->boolean();
     if (auto f = root.find("maxDepth")) scene.maxDepth = f->integerIn(0, kMaxDepthLimit);

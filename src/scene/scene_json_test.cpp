@@ -2,6 +2,7 @@
 // scene and of randomized scenes, warnings, and the plane/material/transform conveniences (validation
 // errors: scene_json_errors_test.cpp). Text only: loadScene() owns files and glTF import.
 #include "scene/scene_json.h"
+#include "scene/scene_limits.h"
 
 #include "util/input_error.h"
 #include "util/read_file.h"
@@ -189,9 +190,10 @@ struct RandomSceneMaker {
     std::mt19937 rng{20240611u};
 
     float any() {  // awkward values a third of the time, else a random magnitude over many octaves
-        static const float awkward[] = {0.1f,   1e-7f,   12345.678f,  1.0f / 3.0f, 0.0f,    -0.0f,
-                                        1e-45f, FLT_MIN, 16777217.0f, 0.3f,        2.5e30f, 1.0f - FLT_EPSILON / 2,
-                                        100.0f, 0.7f};
+        static const float awkward[] = {0.1f,        1e-7f, 12345.678f,     1.0f / 3.0f,
+                                        0.0f,        -0.0f, 1e-45f,         FLT_MIN,
+                                        16777217.0f, 0.3f,  kMaxCoordinate, 1.0f - FLT_EPSILON / 2,
+                                        100.0f,      0.7f};
         std::uniform_int_distribution<int> pick(0, 2);
         if (pick(rng) == 0) return awkward[std::uniform_int_distribution<size_t>(0, std::size(awkward) - 1)(rng)];
         float m = std::uniform_real_distribution<float>(-1.0f, 1.0f)(rng);

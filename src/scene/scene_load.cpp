@@ -131,7 +131,10 @@ void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImpor
     importMeshes(scene, baseDir, nullptr, gltf);
 }
 
-Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
+namespace {
+
+// loadScene without the recording of its inputs.
+Scene loadSceneFiles(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
     // stat only: nothing is opened before readFile has refused FIFOs and devices.
     if (path.empty()) throw InputError("\"\"", "empty file name");
     std::error_code ec;
@@ -173,6 +176,17 @@ Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& g
     // an aspect other than ours. Its cameras stay at hand (camera_choice.h).
     scene.modelCameras = std::move(imported.cameras);
     scene.camera = frameBounds(bounds);
+    return scene;
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
+    // Every file read from here on is one of the scene's inputs.
+    InputFiles inputs;
+    InputRecorder recorder(inputs);
+    Scene scene = loadSceneFiles(path, warn, gltf);
+    scene.inputs = std::move(inputs);
     return scene;
 }
 

@@ -33,6 +33,10 @@ struct TextureLookup {
 
     vec4 texTexel(int, int level, int x, int y) const {
         const TexelLevelView& l = levels[level];
+        // texSample's folding already keeps (x, y) inside the level; the clamp, in integers, makes a read
+        // outside it impossible whatever coordinate reached the sampler.
+        x = glm::clamp(x, 0, l.width - 1);
+        y = glm::clamp(y, 0, l.height - 1);
         const uint8_t* p = l.texels + 4 * (size_t(y) * size_t(l.width) + size_t(x));
         return vec4(rgb[p[0]], rgb[p[1]], rgb[p[2]], alpha[p[3]]);
     }

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace shadelab::shading {
@@ -122,6 +124,56 @@ TEST(TextureSample, LevelSelection) {
     const glm::vec4 mag = c.lookup.texSample(0, 3, kTexRepeat, kTexRepeat, true, false, true, true, {0.5f, 0.5f}, 0.3f);
     const glm::vec4 corner = 0.25f * (c.at(1, 1) + c.at(2, 1) + c.at(1, 2) + c.at(2, 2));
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(mag[k], corner[k], 1e-6f);
+}
+
+}  // namespace
+}  // namespace shadelab::shading
+
+namespace shadelab::shading {
+namespace {
+
+// A texture transform can overflow (scale 2 on a coordinate of 3e38) or a file can hold NaN: the fold must
+// still land in the wrap mode's period, so the texel index that follows stays inside the image.
+TEST(TextureSample, NonFiniteAndHugeCoordinatesFoldIntoThePeriod) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float hostile[] = {nan, inf, -inf, 1e38f, -1e38f, 3e38f * 2.0f, -0.0f, 1e-45f, -1e-45f};
+    TextureLookup lookup;
+    for (float c : hostile) {
+        EXPECT_GE(lookup.texFold(c, kTexRepeat), 0.0f) << c;
+        EXPECT_LT(lookup.texFold(c, kTexRepeat), 1.0f) << c;
+        EXPECT_GE(lookup.texFold(c, kTexMirroredRepeat), 0.0f) << c;
+        EXPECT_LT(lookup.texFold(c, kTexMirroredRepeat), 2.0f) << c;
+        EXPECT_GE(lookup.texFold(c, kTexClamp), 0.0f) << c;
+        EXPECT_LE(lookup.texFold(c, kTexClamp), 1.0f) << c;
+    }
+    // Negative control: the plain fold c − floor(c) leaves the period on exactly these inputs (NaN for NaN and
+    // ±inf), and floor of NaN times the width as an int is what indexed before the image.
+    for (float c : {nan, inf, -inf}) {
+        const float plain = c - std::floor(c);
+        EXPECT_FALSE(plain >= 0.0f && plain < 1.0f) << c;
+    }
+    // Finite coordinates fold as before.
+    EXPECT_FLOAT_EQ(lookup.texFold(2.25f, kTexRepeat), 0.25f);
+    EXPECT_FLOAT_EQ(lookup.texFold(-0.25f, kTexRepeat), 0.75f);
+    EXPECT_FLOAT_EQ(lookup.texFold(3.5f, kTexMirroredRepeat), 1.5f);
+    EXPECT_FLOAT_EQ(lookup.texFold(-3.0f, kTexClamp), 0.0f);
+    EXPECT_FLOAT_EQ(lookup.texFold(0.5f, kTexClamp), 0.5f);
+}
+
+TEST(TextureSample, ASampleAtANonFiniteCoordinateIsATexelOfTheImage) {
+    Chain c;
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    for (glm::vec2 uv : {glm::vec2(nan, 0.5f), glm::vec2(inf, -inf), glm::vec2(1e38f, 3e38f * 2.0f)})
+        for (int wrap : {kTexRepeat, kTexMirroredRepeat, kTexClamp})
+            for (bool linear : {false, true})
+                for (float lod : {0.0f, 1.5f, inf, nan}) {
+                    const glm::vec4 s = c.sample(uv, linear, wrap, lod, true, linear);
+                    EXPECT_TRUE(std::isfinite(s.x + s.y + s.z + s.w)) << uv.x << " " << uv.y << " lod " << lod;
+                    for (int k = 0; k < 4; ++k) {
+                        EXPECT_GE(s[k], 0.0f);
+                        EXPECT_LE(s[k], 1.0f);
+                    }
+                }
 }
 
 }  // namespace

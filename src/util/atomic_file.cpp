@@ -3,6 +3,7 @@
 #include "util/atomic_file.h"
 
 #include "util/input_error.h"
+#include "util/input_files.h"
 #include "util/signal_cleanup.h"
 
 #include <fcntl.h>
@@ -226,12 +227,14 @@ void writeNamed(const std::string& path, int dirFd, const std::string& name, con
 }  // namespace
 
 void checkWritableTarget(const std::string& path) {
+    refuseOpenInput(path);
     const Target t = resolveTarget(path);
     FileDescriptor dir(openDir(path, t.dir));
     if (::faccessat(dir.get(), ".", W_OK, AT_EACCESS) != 0) failWrite(path, errno);
 }
 
 void writeFileAtomic(const std::string& path, const void* data, size_t size, const AtomicWriteOptions& options) {
+    refuseOpenInput(path);
     const Target t = resolveTarget(path);
     FileDescriptor dir(openDir(path, t.dir));
     if (!options.allowTmpFile || !writeAnonymous(path, dir.get(), t.name, data, size, options))

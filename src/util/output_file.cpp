@@ -35,6 +35,15 @@ void checkOutput(const std::string& path, const std::string& flag, const std::ve
     checkWritableTarget(path);
 }
 
+std::string derivedOutput(const std::string& stem, const std::string& suffix) {
+    if (isStdout(stem)) throw InputError(stem, "stdout cannot name derived outputs (" + suffix + "); give a file stem");
+    struct stat st;
+    if (::stat(stem.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw InputError(stem, "names a " + std::string(S_ISDIR(st.st_mode) ? "folder" : "device or special file") +
+                                   ", not a file stem for derived outputs (" + suffix + ")");
+    return stem + suffix;
+}
+
 void writeOutput(const std::string& path, const void* data, size_t size) {
     if (!isStdout(path)) {
         writeFileAtomic(path, data, size);

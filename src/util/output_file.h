@@ -21,6 +21,13 @@ void refuseInputAsOutput(const std::string& path, const std::string& flag, const
 // folder), so a command fails before it renders. Nothing to check for stdout.
 void checkOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs);
 
+// The name of an output derived from another (`<stem>_heat.png`, `<stem>_report.json`): stem + suffix, after
+// the checks the stem itself would get. Throws InputError naming the stem when it is stdout or names something
+// other than a regular file (a device, a FIFO, a folder): "/dev/null" must not turn into a new
+// "/dev/null_heat.png". The derived file is then written like any output (writeFileAtomic's checks, input
+// files included).
+std::string derivedOutput(const std::string& stem, const std::string& suffix);
+
 // Writes `data` to stdout when isStdout (errors name "stdout"), else writeFileAtomic.
 void writeOutput(const std::string& path, const void* data, size_t size);
 

@@ -3,6 +3,7 @@
 
 #include "util/error_line.h"
 #include "util/input_error.h"
+#include "util/input_files.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -76,6 +77,7 @@ std::string readFile(const std::string& path, uint64_t maxBytes) {
                              "file grew past the limit of " + std::to_string(maxBytes) + " bytes while being read");
         out.append(buf, size_t(n));
     }
+    noteInputRead(path);
     return out;
 }
 

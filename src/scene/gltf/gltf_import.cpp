@@ -14,6 +14,7 @@
 #include "scene/gltf/gltf_textures.h"
 #include "scene/gltf/gltf_values.h"
 #include "scene/mesh_tangents.h"
+#include "scene/scene_limits.h"
 #include "util/input_error.h"
 
 #include <tiny_gltf.h>
@@ -237,8 +238,11 @@ private:
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw InputError(file_, indexed("accessors", size_t(position->second)), "non-finite value");
             p = glm::vec3(toWorld * glm::vec4(p, 1.0f));
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                throw InputError(file_, nodePlace, "transform sends a vertex to infinity");
+            // NaN fails the comparison too: one test for infinity, overflow and the coordinate bound.
+            if (!(std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+                  std::fabs(p.z) <= kMaxCoordinate))
+                throw InputError(file_, nodePlace,
+                                 "transform sends a vertex beyond the largest coordinate (1e15) or to infinity");
         }
         // A mirroring transform turns counter-clockwise triangles clockwise; swap two corners to undo it.
         if (mirrored)
@@ -408,9 +412,9 @@ private:
             return;
         }
         if (gl.range > 0.0) warnOnce(lightPlace + ": range is ignored");
-        l.color = gl.color.size() >= 3 ? glm::vec3(finiteClamp(gl.color[0], 0.0f, 1e30f, 1.0f),
-                                                   finiteClamp(gl.color[1], 0.0f, 1e30f, 1.0f),
-                                                   finiteClamp(gl.color[2], 0.0f, 1e30f, 1.0f))
+        l.color = gl.color.size() >= 3 ? glm::vec3(finiteClamp(gl.color[0], 0.0f, kMaxRadiance, 1.0f),
+                                                   finiteClamp(gl.color[1], 0.0f, kMaxRadiance, 1.0f),
+                                                   finiteClamp(gl.color[2], 0.0f, kMaxRadiance, 1.0f))
                                        : glm::vec3(1.0f);
         lightIntensities_.push_back(finiteClamp(gl.intensity, 0.0f, 1e30f, 1.0f));
         out_.lights.push_back(std::move(l));

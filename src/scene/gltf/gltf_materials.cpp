@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <optional>
 
 namespace shadelab {
 namespace {
@@ -61,8 +62,9 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);
-        if (std::isfinite(value) && value > 0.0)
-            m.ior = float(value);
+        const std::optional<float> f = finiteFloat(value);
+        if (f && *f > 0.0f)
+            m.ior = *f;
         else
             warnings.push_back(place + ".extensions.KHR_materials_ior: ior " + std::to_string(value) +
                                " ignored (kept 1.5)");

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace shadelab::gltf {
@@ -105,20 +106,25 @@ TextureBinding TextureLoader::binding(int index, int texCoord, bool srgb, const 
         auto pair = [&](const char* key, glm::vec2 fallback) {
             const std::vector<double> v = numbersOf(*transform, key);
             if (v.empty()) return fallback;
-            if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1])) {
+            const std::optional<float> x = v.size() == 2 ? finiteFloat(v[0]) : std::nullopt;
+            const std::optional<float> y = v.size() == 2 ? finiteFloat(v[1]) : std::nullopt;
+            if (!x || !y) {
                 warn_(where + "." + key + " must be two finite numbers; ignored");
                 return fallback;
             }
-            return glm::vec2(float(v[0]), float(v[1]));
+            return glm::vec2(*x, *y);
         };
         b.offset = pair("offset", glm::vec2(0.0f));
         b.scale = pair("scale", glm::vec2(1.0f));
-        const double rotation = numberOr(*transform, "rotation", 0.0);
-        if (std::isfinite(rotation))
-            b.rotation = float(rotation);
+        if (const std::optional<float> rotation = finiteFloat(numberOr(*transform, "rotation", 0.0)))
+            b.rotation = *rotation;
         else
             warn_(where + ".rotation is not finite; ignored");
-        texCoord = int(numberOr(*transform, "texCoord", double(texCoord)));
+        const double coord = numberOr(*transform, "texCoord", double(texCoord));
+        if (const std::optional<int> n = wholeNumber(coord, 0, 1 << 30))
+            texCoord = *n;
+        else
+            texCoord = -1;  // refused below, with the other sets that are not imported
     }
     if (size_t(index) >= model_.textures.size()) {
         warn_(place + ": texture " + std::to_string(index) + " out of range (" +
@@ -126,8 +132,10 @@ TextureBinding TextureLoader::binding(int index, int texCoord, bool srgb, const 
         return b;
     }
     if (texCoord != 0 && texCoord != 1) {
-        warn_(place + ": TEXCOORD_" + std::to_string(texCoord) +
-              " is not imported (only 0 and 1); using the factor alone");
+        warn_(place +
+              (texCoord < 0 ? ": texCoord is not a whole number >= 0"
+                            : ": TEXCOORD_" + std::to_string(texCoord) + " is not imported (only 0 and 1)") +
+              "; using the factor alone");
         return b;
     }
     const tinygltf::Texture& t = model_.textures[size_t(index)];

@@ -1,16 +1,11 @@
-// Loose glTF values: numbers clamped when finite, and fields of extension objects (gltf_values.h).
+// Loose glTF values: fields of extension objects (gltf_values.h).
 #include "scene/gltf/gltf_values.h"
 
 #include <tiny_gltf.h>
 
-#include <algorithm>
 #include <cmath>
 
 namespace shadelab {
-
-float finiteClamp(double x, float lo, float hi, float fallback) {
-    return std::isfinite(x) ? std::clamp(float(x), lo, hi) : fallback;
-}
 
 double numberOr(const tinygltf::Value& obj, const char* key, double fallback) {
     if (!obj.IsObject() || !obj.Has(key)) return fallback;

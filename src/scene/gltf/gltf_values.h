@@ -1,6 +1,8 @@
-// Loose glTF values, for materials and lights: a number clamped to a range when finite, and the numbers of
-// an extension object's fields (tinygltf::Value), with fallbacks for what is missing or of the wrong type.
+// Loose glTF values, for materials and lights: the numbers of an extension object's fields (tinygltf::Value),
+// with fallbacks for what is missing or of the wrong type. They become floats through util/finite.h.
 #pragma once
+
+#include "util/finite.h"  // finiteClamp, for the files that read these values
 
 #include <vector>
 
@@ -9,9 +11,6 @@ class Value;
 }
 
 namespace shadelab {
-
-// x clamped to [lo, hi]; `fallback` when x is NaN or infinite.
-float finiteClamp(double x, float lo, float hi, float fallback);
 
 // obj[key] as a number; `fallback` when obj is not an object, lacks key, or holds something else there.
 double numberOr(const tinygltf::Value& obj, const char* key, double fallback);
