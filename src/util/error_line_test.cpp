@@ -100,7 +100,7 @@ TEST(ErrorLine, AnyBytesBecomePrintableUtf8) {
 
 TEST(ErrorLine, ANulIsEscapedInTheMessageItself) {
     const std::string word("trace\0 and more", 15);
-    EXPECT_EQ(escapeNul(word), "trace\\x00 and more");
+    EXPECT_EQ(escapeForMessage(word), "trace\\x00 and more");
     // The exceptions keep the text after the NUL in what(), a C string.
     EXPECT_STREQ(UsageError("renderer: unknown value '" + word + "'").what(),
                  "renderer: unknown value 'trace\\x00 and more'");
@@ -110,9 +110,21 @@ TEST(ErrorLine, ANulIsEscapedInTheMessageItself) {
     EXPECT_STREQ(setting.what(), "renderer: unknown value 'trace\\x00 and more'");
     EXPECT_EQ(setting.reason(), "unknown value 'trace\\x00 and more'");
     // errorLine writes a NUL the same way, so a message escaped early prints as one escaped late.
-    EXPECT_EQ(errorLine(escapeNul(word)), errorLine(word));
+    EXPECT_EQ(errorLine(escapeForMessage(word)), errorLine(word));
     // Negative control: a plain std::runtime_error loses everything after the NUL.
     EXPECT_STREQ(std::runtime_error(word).what(), "trace");
+}
+
+TEST(ErrorLine, MessagesAreValidUtf8ForPython) {
+    // A JSON parse error quotes the bytes it stopped at; Python's str() of a what() that is not UTF-8 was "".
+    const std::string quoted = "last read: '\"\xFF\xC2\x9B'";
+    const InputError e("bad.json", quoted);
+    EXPECT_STREQ(e.what(), "bad.json: last read: '\"\\xff\xC2\x9B'");  // U+009B is UTF-8: errorLine's to escape
+    EXPECT_EQ(errorLine(e.what()), "bad.json: last read: '\"\\xff\\xc2\\x9b'");
+    // Control characters stay for errorLine; only NUL and the bytes that are not UTF-8 change.
+    EXPECT_EQ(escapeForMessage("a\nb\x1b caf\xC3\xA9"), "a\nb\x1b caf\xC3\xA9");
+    // Negative control: the raw quote is no UTF-8, as the check above would see if the escape were gone.
+    EXPECT_EQ(utf8SequenceLength(quoted, quoted.find('\xFF')), 0u);
 }
 
 }  // namespace

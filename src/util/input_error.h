@@ -1,9 +1,10 @@
 // InputError: a problem with something the user gave us (a file, a flag), reported as one line.
 // Not for programmer errors; those are CHECKs (util/check.h).
 //
-// what() is a C string, so each of these writes a NUL from a user string as \x00 in its message (escapeNul,
-// util/error_line.h): "renderer: unknown value 'trace\x00x'" keeps what follows the NUL, in the terminal
-// and in Python alike. Printing escapes the rest (errorLine).
+// what() is a C string that Python reads as UTF-8, so each of these writes a NUL and any byte that is not
+// UTF-8 from a user string as \xNN in its message (escapeForMessage, util/error_line.h): "renderer: unknown
+// value 'trace\x00x'" keeps what follows the NUL, and a JSON parse error quoting a stray 0xFF byte reaches
+// Python as text. Printing escapes the control characters (errorLine).
 #pragma once
 
 #include "util/error_line.h"
@@ -17,7 +18,7 @@ namespace shadelab {
 class InputError : public std::runtime_error {
 public:
     InputError(const std::string& file, const std::string& place, const std::string& reason)
-        : std::runtime_error(escapeNul(format(file, place, reason))), file_(file) {}
+        : std::runtime_error(escapeForMessage(format(file, place, reason))), file_(file) {}
     InputError(const std::string& file, const std::string& reason) : InputError(file, "", reason) {}
 
     const std::string& file() const { return file_; }
@@ -34,7 +35,7 @@ private:
 // A usage error (bad flag or argument): exit code 2.
 class UsageError : public std::runtime_error {
 public:
-    explicit UsageError(const std::string& message) : std::runtime_error(escapeNul(message)) {}
+    explicit UsageError(const std::string& message) : std::runtime_error(escapeForMessage(message)) {}
 };
 
 // A setting out of its range, thrown by the libraries and named by its field as a render request names it
@@ -44,9 +45,9 @@ public:
 class SettingError : public std::invalid_argument {
 public:
     SettingError(const std::string& field, const std::string& reason)
-        : std::invalid_argument(escapeNul(field + ": " + reason)),
-          field_(escapeNul(field)),
-          reason_(escapeNul(reason)) {}
+        : std::invalid_argument(escapeForMessage(field + ": " + reason)),
+          field_(escapeForMessage(field)),
+          reason_(escapeForMessage(reason)) {}
 
     const std::string& field() const { return field_; }
     const std::string& reason() const { return reason_; }

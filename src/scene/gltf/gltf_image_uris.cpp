@@ -42,8 +42,8 @@ std::string undecodable(const std::string& uri) {
         if (valid >= 2) return {};
         if (uri.size() == n) return "its data: URI holds no data";
         const std::string start = uri.substr(n, 12);
-        return escapeNul("its data: URI is not base64 (the data begins \"" + start +
-                         (uri.size() > n + 12 ? "...\")" : "\")"));
+        return escapeForMessage("its data: URI is not base64 (the data begins \"" + start +
+                                (uri.size() > n + 12 ? "...\")" : "\")"));
     }
     return {};
 }

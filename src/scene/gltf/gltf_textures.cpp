@@ -178,8 +178,8 @@ std::shared_ptr<const Texture> TextureLoader::image(int index, bool srgb, const 
         } else if (!img.image.empty()) {
             bytes.assign(img.image.begin(), img.image.end());
         } else if (!img.uri.empty()) {
-            throw std::runtime_error(
-                escapeNul("cannot read \"" + img.uri + "\" (missing, outside the model's folder, or too large)"));
+            throw std::runtime_error(escapeForMessage("cannot read \"" + img.uri +
+                                                      "\" (missing, outside the model's folder, or too large)"));
         }
         // One bound on the encoded bytes wherever they come from: an external file's is also bounded as it is
         // read (gltf_file.cpp), but a data: URI or a buffer view would otherwise skip it.
