@@ -5,6 +5,7 @@
 #include "test_output.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -328,4 +330,161 @@ TEST(HostileInput, NegativeControlARegularBufferIsRead) {
     const Result r = run({"render", dir + "/model.gltf", "-o", dir + "/out.png", "--size", "32x24"});
     EXPECT_EQ(r.code, 0) << r.out;
     EXPECT_TRUE(fs::exists(dir + "/out.png"));
+}
+
+namespace {
+
+// RFC 4648 base64, with padding.
+std::string base64(const std::string& bytes) {
+    static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
+        if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
+        if (i + 2 < bytes.size()) v |= uint8_t(bytes[i + 2]);
+        for (size_t k = 0; k < 4; ++k) out += k <= bytes.size() - i ? alphabet[(v >> (18 - 6 * k)) & 63] : '=';
+    }
+    return out;
+}
+
+// A quad with TEXCOORD_0 whose material's base colour is texture 0 from image 0, whose JSON is `image`.
+std::string texturedQuadGltf(const std::string& image) {
+    std::string bytes;
+    const float positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};
+    const uint32_t indices[] = {0, 1, 2, 0, 2, 3};
+    bytes.append(reinterpret_cast<const char*>(positions), sizeof positions);
+    bytes.append(reinterpret_cast<const char*>(uvs), sizeof uvs);
+    bytes.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"indices":2,"material":0}]}],
+      "materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],
+      "textures":[{"source":0}],"images":[)" +
+           image + R"(],
+      "buffers":[{"byteLength":104,"uri":"data:application/octet-stream;base64,)" +
+           base64(bytes) + R"("}],
+      "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":32},
+                     {"buffer":0,"byteOffset":80,"byteLength":24}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+                   {"bufferView":1,"componentType":5126,"count":4,"type":"VEC2"},
+                   {"bufferView":2,"componentType":5125,"count":6,"type":"SCALAR"}]})";
+}
+
+// A grey 8 × 8 baseline JPEG (a few hundred bytes) whose frame header claims `side` × `side`; stb_image
+// decodes such a file to the size it claims, making up what the data lacks.
+std::string forgedJpegDataUri(uint16_t side) {
+    std::vector<uint8_t> jpeg = {0xFF, 0xD8,  // SOI, a quantisation table of ones, the frame, a Huffman table each
+                                 0xFF, 0xDB, 0x00, 0x43, 0x00};
+    jpeg.insert(jpeg.end(), 64, 1);
+    jpeg.insert(jpeg.end(), {0xFF, 0xC0, 0x00, 0x0B, 0x08, uint8_t(side >> 8), uint8_t(side), uint8_t(side >> 8),
+                             uint8_t(side), 0x01, 0x01, 0x11, 0x00});
+    // DC table 0: one code of length 1 for category 0; AC table 0: one code of length 1 for EOB (0x00).
+    for (uint8_t tc : {uint8_t(0x00), uint8_t(0x10)}) {
+        jpeg.insert(jpeg.end(), {0xFF, 0xC4, 0x00, 0x14, tc, 0x01});
+        jpeg.insert(jpeg.end(), 15, 0);
+        jpeg.push_back(0x00);
+    }
+    jpeg.insert(jpeg.end(), {0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x00, 0x3F, 0x00});  // SOS, one component
+    jpeg.insert(jpeg.end(), 8, 0x00);  // a few blocks of "DC 0, EOB"; the rest of the image is missing
+    jpeg.insert(jpeg.end(), {0xFF, 0xD9});
+    return R"({"uri":"data:image/jpeg;base64,)" + base64(std::string(jpeg.begin(), jpeg.end())) + R"("})";
+}
+
+// `path` as a copy of a good 16x8 PNG with `change` applied to its bytes.
+std::string pngChanged(const std::string& path, void (*change)(std::vector<uint8_t>&)) {
+    shadelab::Image8 img;
+    img.width = 16;
+    img.height = 8;
+    img.channels = 3;
+    for (int i = 0; i < 16 * 8 * 3; ++i) img.data.push_back(uint8_t(i * 37));
+    std::vector<uint8_t> bytes = shadelab::encodePng(img);
+    if (change) change(bytes);
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    return path;
+}
+
+// Whether `text` holds a byte a terminal could act on: a C0 control other than the line's end, DEL, a C1
+// control (U+0080..U+009F in UTF-8) or a byte that is not UTF-8 at all (checked coarsely: 0xC0, 0xC1, 0xF5..0xFF
+// or a continuation byte with no lead).
+bool hasRawControl(const std::string& text) {
+    for (size_t i = 0; i < text.size(); ++i) {
+        const auto u = static_cast<unsigned char>(text[i]);
+        if ((u < 0x20 && u != '\n') || u == 0x7F || u == 0xC0 || u == 0xC1 || u >= 0xF5) return true;
+        if (u == 0xC2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) <= 0x9F) return true;
+        if ((u & 0xC0) == 0x80 && (i == 0 || static_cast<unsigned char>(text[i - 1]) < 0x80)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+TEST(HostileInput, CompareRefusesBadChecksums) {
+    const std::string dir = folder("checksums");
+    const std::string good = pngChanged(dir + "/good.png", nullptr);
+    // IDAT starts at byte 33 (signature 8, IHDR 25); its CRC follows its data.
+    const std::string crc = pngChanged(dir + "/crc.png", [](std::vector<uint8_t>& b) {
+        const size_t len = size_t(b[33]) << 24 | size_t(b[34]) << 16 | size_t(b[35]) << 8 | b[36];
+        b[33 + 8 + len] ^= 0x01;
+    });
+    expectRefused(run({"compare", good, crc}), "crc.png: corrupt PNG: the IDAT chunk at byte 33 has a bad CRC", "", 2);
+    // The zlib stream's Adler-32 changed, and the chunk's CRC made to match it.
+    const std::string adler = pngChanged(dir + "/adler.png", [](std::vector<uint8_t>& b) {
+        const size_t len = size_t(b[33]) << 24 | size_t(b[34]) << 16 | size_t(b[35]) << 8 | b[36];
+        b[33 + 8 + len - 1] ^= 0x01;
+        const uint32_t c = uint32_t(crc32(0L, &b[37], uInt(len + 4)));
+        for (int k = 0; k < 4; ++k) b[33 + 8 + len + size_t(k)] = uint8_t(c >> (24 - 8 * k));
+    });
+    expectRefused(run({"compare", adler, good}), "adler.png: corrupt PNG: the IDAT chunk at byte 33", "Adler-32", 2);
+    // Negative control: the untouched file compares equal to itself.
+    const Result ok = run({"compare", good, pngChanged(dir + "/same.png", nullptr)});
+    EXPECT_EQ(ok.code, 0) << ok.out;
+}
+
+TEST(HostileInput, AForgedJpegIsRefusedByItsHeaderBeforeDecoding) {
+    // A few hundred bytes claiming 8000²: stb_image once decoded it to a gigabyte, with or without --strict.
+    const std::string dir = folder("jpeg");
+    writeText(dir + "/bomb.gltf", texturedQuadGltf(forgedJpegDataUri(8000)));
+    ASSERT_LT(fs::file_size(dir + "/bomb.gltf"), 2000u);
+    const std::vector<std::string> trace = {"-o", dir + "/out.png", "--renderer", "trace", "--size", "8x8"};
+    std::vector<std::string> strict = {"render", dir + "/bomb.gltf", "--strict"};
+    strict.insert(strict.end(), trace.begin(), trace.end());
+    expectRefused(run(strict), "bomb.gltf", "8000x8000 = 64000000 pixels, over the limit of 16777216 pixels");
+    // Without --strict, a warning and the factor alone, still within the bounds.
+    std::vector<std::string> lenient = {"render", dir + "/bomb.gltf"};
+    lenient.insert(lenient.end(), trace.begin(), trace.end());
+    const Result warned = run(lenient);
+    EXPECT_EQ(warned.code, 0) << warned.out;
+    EXPECT_NE(warned.out.find("warning: " + dir + "/bomb.gltf: images[0]"), std::string::npos) << warned.out;
+    EXPECT_LT(warned.peakMiB, kMaxPeakMiB) << warned.out;
+    // Negative control: the same forgery claiming 64² is a texture the limits allow, and decodes without a
+    // word: stb_image believes the header, so the header's size is what must be checked.
+    writeText(dir + "/small.gltf", texturedQuadGltf(forgedJpegDataUri(64)));
+    strict[1] = dir + "/small.gltf";
+    const Result ok = run(strict);
+    EXPECT_EQ(ok.code, 0) << ok.out;
+}
+
+TEST(HostileInput, MessagesAreOneLineOfPrintableUtf8) {
+    const std::string dir = folder("utf8");
+    // A C1 control (U+009B, the one-byte CSI) in a light type, and invalid UTF-8 quoted by a JSON parse error.
+    writeText(dir + "/c1.json", R"({"shadelab": 1, "lights": [{"type": "\u009b31mred", "position": [0,1,0]}]})");
+    const Result c1 = render(dir + "/c1.json", dir);
+    expectRefused(c1, "c1.json", "\\xc2\\x9b31mred");
+    EXPECT_FALSE(hasRawControl(c1.out)) << c1.out;
+    writeText(dir + "/bytes.json", "{\"shadelab\": 1, \"lights\": \"\xFF\xC2\x9B\"}");
+    const Result bytes = render(dir + "/bytes.json", dir);
+    expectRefused(bytes, "bytes.json", "\\xff");
+    EXPECT_FALSE(hasRawControl(bytes.out)) << bytes.out;
+    // Negative control: the checker sees the raw bytes the files hold.
+    std::ifstream in(dir + "/bytes.json", std::ios::binary);
+    EXPECT_TRUE(hasRawControl(std::string(std::istreambuf_iterator<char>(in), {})));
+    EXPECT_TRUE(hasRawControl("\xC2\x9B"));
+    EXPECT_FALSE(hasRawControl("caf\xC3\xA9 \xC2\xA0\n"));  // é and U+00A0 are text
+    // Newlines in an image URI ("%0A", or "\n" in JSON) stay inside the warning's one line.
+    writeText(dir + "/nl.gltf", texturedQuadGltf(R"({"uri":"x%0Ay\nz.png"})"));
+    const Result nl = run({"render", dir + "/nl.gltf", "-o", dir + "/out.png", "--renderer", "trace", "--size", "8x8"});
+    EXPECT_EQ(nl.code, 0) << nl.out;
+    EXPECT_EQ(std::count(nl.out.begin(), nl.out.end(), '\n'), 1) << nl.out;  // the split gave three lines
+    EXPECT_NE(nl.out.find("cannot read \"x%0Ay\\nz.png\""), std::string::npos) << nl.out;
 }

@@ -2,6 +2,7 @@
 // Writes 8-bit RGB/RGBA only; no interlacing, no ancillary chunks.
 #include "image/png.h"
 
+#include "image/png_integrity.h"
 #include "util/atomic_file.h"
 #include "util/check.h"
 #include "util/input_error.h"
@@ -215,6 +216,8 @@ PngFile readPngFile(const std::string& path) {
 Image8 decodePng(const PngFile& file) {
     const std::string& path = file.path;
     if (file.bytes.size() > size_t(0x7FFFFFFF)) throw InputError(path, "PNG file too large");
+    // stb_image checks neither the chunks' CRCs nor the zlib stream's Adler-32: a changed bit would decode.
+    checkPngIntegrity(path, file.bytes, uint32_t(file.width), uint32_t(file.height));
     const auto* bytes = reinterpret_cast<const stbi_uc*>(file.bytes.data());
     const int len = int(file.bytes.size());
     stbi_set_flip_vertically_on_load_thread(0);  // another module may have set the global flag

@@ -49,10 +49,13 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
         if (given)
             return problem(given, "is for the path tracer (renderer path), not " + std::string(toString(r.engine)));
     }
-    if (p.timeLimit && !(*p.timeLimit >= 0.0 && *p.timeLimit <= trace::kMaxTimeLimit)) {
+    // Not `>= 0`: a limit of 0 (or -0, or a denormal) would reach the path tracer as its "no limit".
+    if (p.timeLimit && !(*p.timeLimit >= kMinTimeLimit && *p.timeLimit <= trace::kMaxTimeLimit)) {
+        static_assert(kMinTimeLimit == 1e-3 && trace::kMaxTimeLimit == 1e7, "the message below names both");
         char got[32];
         std::snprintf(got, sizeof got, "%g", *p.timeLimit);
-        return problem("time_limit", "must be in [0, 1e7] seconds, got " + std::string(got));
+        return problem("time_limit",
+                       "must be in [0.001, 1e7] seconds (leave it out for no limit), got " + std::string(got));
     }
     return std::nullopt;
 }

@@ -38,10 +38,14 @@ inline const char* toString(Engine e) { return nameOf(kEngineNames, e); }
 inline constexpr int kMaxDepth = 64;
 inline constexpr int kMaxThreads = 1024;
 inline constexpr int kDefaultPathSamples = 16;
+// The shortest time limit a request may give, seconds. The path tracer reads a time limit of 0 as none, so
+// 0, -0 and 1e-300 would each silently mean "no limit"; a limit is absent or at least this.
+inline constexpr double kMinTimeLimit = 1e-3;
 
 // The path tracer's options; set only for Engine::Path (check() refuses them elsewhere).
 struct PathOptions {
-    std::optional<double> timeLimit;                // seconds; stop at the last whole pass begun in time
+    std::optional<double> timeLimit;                // seconds, kMinTimeLimit..kMaxTimeLimit; stop at the last
+                                                    // whole pass begun in time; unset: no limit
     std::optional<trace::PathEstimator> estimator;  // unset: mis
     std::optional<trace::PathPart> part;            // which light reaches the image; unset: all
 };

@@ -1,6 +1,13 @@
 // InputError: a problem with something the user gave us (a file, a flag), reported as one line.
 // Not for programmer errors; those are CHECKs (util/check.h).
+//
+// what() is a C string that Python reads as UTF-8, so each of these writes a NUL and any byte that is not
+// UTF-8 from a user string as \xNN in its message (escapeForMessage, util/error_line.h): "renderer: unknown
+// value 'trace\x00x'" keeps what follows the NUL, and a JSON parse error quoting a stray 0xFF byte reaches
+// Python as text. Printing escapes the control characters (errorLine).
 #pragma once
+
+#include "util/error_line.h"
 
 #include <stdexcept>
 #include <string>
@@ -11,7 +18,7 @@ namespace shadelab {
 class InputError : public std::runtime_error {
 public:
     InputError(const std::string& file, const std::string& place, const std::string& reason)
-        : std::runtime_error(format(file, place, reason)), file_(file) {}
+        : std::runtime_error(escapeForMessage(format(file, place, reason))), file_(file) {}
     InputError(const std::string& file, const std::string& reason) : InputError(file, "", reason) {}
 
     const std::string& file() const { return file_; }
@@ -28,7 +35,7 @@ private:
 // A usage error (bad flag or argument): exit code 2.
 class UsageError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit UsageError(const std::string& message) : std::runtime_error(escapeForMessage(message)) {}
 };
 
 // A setting out of its range, thrown by the libraries and named by its field as a render request names it
@@ -38,7 +45,9 @@ public:
 class SettingError : public std::invalid_argument {
 public:
     SettingError(const std::string& field, const std::string& reason)
-        : std::invalid_argument(field + ": " + reason), field_(field), reason_(reason) {}
+        : std::invalid_argument(escapeForMessage(field + ": " + reason)),
+          field_(escapeForMessage(field)),
+          reason_(escapeForMessage(reason)) {}
 
     const std::string& field() const { return field_; }
     const std::string& reason() const { return reason_; }

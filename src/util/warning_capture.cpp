@@ -1,5 +1,6 @@
 #include "util/warning_capture.h"
 
+#include "util/error_line.h"
 #include "util/messages.h"
 
 namespace shadelab {
@@ -15,7 +16,7 @@ WarningCapture::~WarningCapture() { g_active = outer_; }
 
 void WarningCapture::warn(const std::string& text) {
     printWarning(text);
-    if (g_active) g_active->lines_.push_back(text);
+    if (g_active) g_active->lines_.push_back(errorLine(text));  // the panel's line is the terminal's
 }
 
 }  // namespace shadelab

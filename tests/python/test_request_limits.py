@@ -55,3 +55,23 @@ def test_python_and_the_cli_give_the_same_field_and_reason(case, binary, out_dir
 def test_both_is_refused_with_the_way_to_compare():
     with pytest.raises(ValueError, match=r"^renderer: 'both' is the command line's side-by-side picture"):
         shadelab.render(str(SCENE), (8, 6), renderer="both")
+
+
+def test_a_nul_in_a_word_is_escaped_and_the_rest_kept():
+    # what() is a C string: the message once ended at the NUL, "renderer: unknown value 'trace".
+    with pytest.raises(ValueError) as raised:
+        shadelab.render(str(SCENE), (8, 6), renderer="trace\0 and more")
+    assert str(raised.value).startswith("renderer: unknown value 'trace\\x00 and more'; expected ")
+    # Negative control: the same call without the NUL is refused with the whole word too.
+    with pytest.raises(ValueError, match=r"^renderer: unknown value 'trace and more'; expected "):
+        shadelab.render(str(SCENE), (8, 6), renderer="trace and more")
+
+
+def test_a_message_quoting_bytes_that_are_not_utf8_reaches_python(out_dir):
+    # A JSON parse error quotes the stray byte; a what() that is not UTF-8 once reached Python as "".
+    scene = out_dir / "bytes.json"
+    scene.write_bytes(b'{"shadelab": 1, "lights": "\xff"}')
+    with pytest.raises(Exception) as raised:
+        shadelab.render(str(scene), (8, 6), renderer="trace")
+    message = str(raised.value)
+    assert "bytes.json" in message and "\\xff" in message, repr(message)

@@ -3,6 +3,7 @@
 // gltf_import.cpp.
 #include "scene/gltf/gltf_file.h"
 
+#include "scene/gltf/gltf_image_uris.h"
 #include "util/error_line.h"
 #include "util/input_error.h"
 #include "util/read_file.h"
@@ -95,21 +96,52 @@ bool readInsideFolder(std::vector<unsigned char>* out, std::string* err, const s
     }
 }
 
+// How each of tinygltf's warnings begins. tinygltf warns only about external images (buffers are required:
+// their problems fail the load), and ends each warning with a newline; the image's URI and name inside one
+// may hold newlines of their own ("%0A" in a URI, "\n" in a JSON string), so a line that begins no warning
+// continues the one before.
+constexpr const char* kTinygltfWarnings[] = {"File not found : ",
+                                             "File read error : ",
+                                             "File is empty : ",
+                                             "File size mismatch : ",
+                                             "Failed to load external 'uri' for image[",
+                                             "Image data is empty for image["};
+
+// tinygltf's warnings, one entry each, whatever newlines the user strings inside them hold (errorLine
+// escapes those when the warning is printed).
+std::vector<std::string> tinygltfWarnings(const std::string& text) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        bool begins = out.empty();
+        for (const char* prefix : kTinygltfWarnings) begins = begins || line.rfind(prefix, 0) == 0;
+        if (begins)
+            out.push_back(line);
+        else
+            out.back() += "\n" + line;
+        start = end + 1;
+    }
+    for (std::string& w : out) w = trim(w);
+    return out;
+}
+
 // tinygltf's own warnings about an external image it could not read ("File not found : ...", "File read
-// error : ...", "Failed to load external 'uri' for image[...]"). Only images warn this way (buffers are
-// required: they fail the load), and gltf_textures.cpp reports each image a material uses in one clear line
-// of its own, so these would only repeat it less clearly.
-bool isExternalImageNoise(const std::string& line) {
+// error : ...", "Failed to load external 'uri' for image[...]"). gltf_textures.cpp reports each image a
+// material uses in one clear line of its own, so these would only repeat it less clearly.
+bool isExternalImageNoise(const std::string& warning) {
     for (const char* prefix : {"File not found : ", "File read error : ", "Failed to load external 'uri' for image["})
-        if (line.rfind(prefix, 0) == 0) return true;
+        if (warning.rfind(prefix, 0) == 0) return true;
     return false;
 }
 
 // Parses glTF text (`binary` false) or GLB bytes. External buffers resolve through `guard` (which refuses
 // those outside the model's folder unless allowed); without a guard every external file is refused (the
 // fuzzer's setting). `name` is the file named in errors.
-tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
-                             std::vector<std::string>& warnings, const FolderGuard* guard) {
+LoadedModel parseGuarded(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
+                         std::vector<std::string>& warnings, const FolderGuard* guard) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keepEncoded, nullptr);
     if (guard) {
@@ -129,21 +161,37 @@ tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::s
         };
         loader.SetFsCallbacks(noFiles);
     }
-    tinygltf::Model model;
+    LoadedModel loaded;
+    tinygltf::Model& model = loaded.model;
     std::string err, warn;
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    bool ok = false;
     // tinygltf can throw from inside (a GLB whose buffer has byteLength 0 indexes an empty vector): name the
     // file and say what went wrong in words, not in the standard library's.
-    try {
-        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), baseDir)
-                    : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
-    } catch (const std::bad_alloc&) {
-        throw InputError(name, "out of memory while parsing the glTF");
-    } catch (const std::out_of_range&) {
-        throw InputError(name, "malformed glTF: the parser indexed past the end of an array (an empty buffer?)");
-    } catch (const std::exception& e) {
-        throw InputError(name, std::string("malformed glTF: the parser stopped (") + e.what() + ")");
+    const auto load = [&](const std::string& input) {
+        model = tinygltf::Model();
+        err.clear();
+        warn.clear();
+        const auto* data = reinterpret_cast<const unsigned char*>(input.data());
+        try {
+            return binary
+                       ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(input.size()), baseDir)
+                       : loader.LoadASCIIFromString(&model, &err, &warn, input.data(), unsigned(input.size()), baseDir);
+        } catch (const std::bad_alloc&) {
+            throw InputError(name, "out of memory while parsing the glTF");
+        } catch (const std::out_of_range&) {
+            throw InputError(name, "malformed glTF: the parser indexed past the end of an array (an empty buffer?)");
+        } catch (const std::exception& e) {
+            throw InputError(name, std::string("malformed glTF: the parser stopped (") + e.what() + ")");
+        }
+    };
+    bool ok = load(bytes);
+    // An image whose data: URI holds no base64 fails tinygltf's whole load, but a bad image is a warning
+    // (gltf_textures.h): parse again with a placeholder for each such image, which the texture loader reports.
+    if (!ok && isUndecodableImageUriError(err)) {
+        ImageUriRepair repair = replaceUndecodableImageUris(bytes, binary);
+        if (!repair.problems.empty()) {
+            ok = load(repair.bytes);
+            loaded.imageProblems = std::move(repair.problems);
+        }
     }
     if (!ok) {
         std::vector<std::string> lines;
@@ -154,23 +202,20 @@ tinygltf::Model parseGuarded(const std::string& bytes, bool binary, const std::s
         if (ours != std::string::npos) reason = reason.substr(ours);
         throw InputError(name, reason);
     }
-    std::vector<std::string> lines;
-    appendLines(warn, lines);
-    for (std::string& line : lines)
-        if (!isExternalImageNoise(line)) warnings.push_back(std::move(line));
+    for (std::string& w : tinygltfWarnings(warn))
+        if (!w.empty() && !isExternalImageNoise(w)) warnings.push_back(std::move(w));
     appendLines(err, warnings);  // tinygltf reports some recoverable schema problems in err and still succeeds
-    return model;
+    return loaded;
 }
 
 }  // namespace
 
-tinygltf::Model parseModel(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
-                           std::vector<std::string>& warnings) {
+LoadedModel parseModel(const std::string& bytes, bool binary, const std::string& name, const std::string& baseDir,
+                       std::vector<std::string>& warnings) {
     return parseGuarded(bytes, binary, name, baseDir, warnings, nullptr);
 }
 
-tinygltf::Model loadModel(const std::string& path, const GltfImportOptions& options,
-                          std::vector<std::string>& warnings) {
+LoadedModel loadModel(const std::string& path, const GltfImportOptions& options, std::vector<std::string>& warnings) {
     if (path.find('\0') != std::string::npos) throw InputError(errorLine(path), "file name contains a NUL character");
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such file");

@@ -44,17 +44,18 @@ std::string indexed(const char* array, size_t i) { return std::string(array) + "
 
 class Importer {
 public:
-    Importer(const tinygltf::Model& model, const std::string& file, GltfImport& out, const GltfLimits& limits,
+    Importer(const gltf::LoadedModel& loaded, const std::string& file, GltfImport& out, const GltfLimits& limits,
              uint64_t trianglesBefore = 0)
-        : model_(model),
+        : model_(loaded.model),
           file_(file),
           out_(out),
           limits_(limits),
           trianglesBefore_(trianglesBefore),
           triangles_(trianglesBefore),
-          onPath_(model.nodes.size(), 0),
-          seen_(model.nodes.size(), 0),
-          textures_(model, limits, [this](const std::string& line) { warnOnce(line); }) {
+          onPath_(loaded.model.nodes.size(), 0),
+          seen_(loaded.model.nodes.size(), 0),
+          textures_(loaded.model, loaded.imageProblems, limits, [this](const std::string& line) { warnOnce(line); }) {
+        const tinygltf::Model& model = loaded.model;
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
@@ -67,9 +68,19 @@ public:
             auto bind = [&](int index, int texCoord, const tinygltf::ExtensionMap& ext, bool srgb,
                             const std::string& where) {
                 const auto transform = ext.find("KHR_texture_transform");
-                return index < 0 ? TextureBinding{}
-                                 : textures_.binding(index, texCoord, srgb, place + where,
-                                                     transform == ext.end() ? nullptr : &transform->second);
+                if (index < 0) {
+                    // tinygltf writes -1 for a texture info that is absent, and also for "index": -1; the
+                    // parameter maps say which (pbrMetallicRoughness's keys in values, the rest in
+                    // additionalValues). A negative index given is out of range like any other.
+                    const std::string key = where.substr(where.rfind('.') + 1);
+                    const bool inPbr = where.rfind(".pbrMetallicRoughness.", 0) == 0;
+                    if (index < -1 || (inPbr ? gm.values : gm.additionalValues).count(key) > 0)
+                        warnOnce(place + where + ": texture " + std::to_string(index) + " out of range (" +
+                                 std::to_string(model.textures.size()) + " textures); using the factor alone");
+                    return TextureBinding{};
+                }
+                return textures_.binding(index, texCoord, srgb, place + where,
+                                         transform == ext.end() ? nullptr : &transform->second);
             };
             const auto& pbr = gm.pbrMetallicRoughness;
             m.baseColorTexture = bind(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
@@ -451,7 +462,7 @@ private:
 
 GltfImport importGltf(const std::string& path, const glm::mat4& transform, const GltfImportOptions& options) {
     GltfImport out;
-    const tinygltf::Model model = gltf::loadModel(path, options, out.warnings);
+    const gltf::LoadedModel model = gltf::loadModel(path, options, out.warnings);
     Importer(model, path, out, options.limits, options.trianglesBefore).run(glm::dmat4(transform));
     return out;
 }
@@ -459,7 +470,7 @@ GltfImport importGltf(const std::string& path, const glm::mat4& transform, const
 GltfImport importGltfBytes(const std::string& bytes, bool binary, const std::string& name, const GltfLimits& limits) {
     GltfImport out;
     checkDeclaredSizes(bytes, binary, name, limits);
-    const tinygltf::Model model = gltf::parseModel(bytes, binary, name, "", out.warnings);
+    const gltf::LoadedModel model = gltf::parseModel(bytes, binary, name, "", out.warnings);
     Importer(model, name, out, limits).run(glm::dmat4(1.0));
     return out;
 }

@@ -17,16 +17,6 @@ std::string over(const std::string& what, uint64_t size, uint64_t limit) {
     return what + " of " + std::to_string(size) + " bytes exceeds the limit of " + std::to_string(limit) + " bytes";
 }
 
-// The JSON chunk of a GLB (glTF 2.0 spec, "Binary glTF Layout"), or empty when the header is malformed.
-std::string glbJson(const std::string& bytes) {
-    if (bytes.size() < 20) return {};
-    uint32_t chunkLength = 0, chunkType = 0;
-    std::memcpy(&chunkLength, bytes.data() + 12, 4);
-    std::memcpy(&chunkType, bytes.data() + 16, 4);
-    if (chunkType != 0x4E4F534Au || uint64_t(chunkLength) > bytes.size() - 20) return {};
-    return bytes.substr(20, chunkLength);
-}
-
 uint64_t declaredLength(const nlohmann::json& j) {
     const auto it = j.find("byteLength");
     return it != j.end() && it->is_number_unsigned() ? it->get<uint64_t>() : 0;
@@ -42,6 +32,15 @@ void checkDataUri(const nlohmann::json& item, const std::string& file, const std
 }
 
 }  // namespace
+
+std::string glbJson(const std::string& bytes) {
+    if (bytes.size() < 20) return {};
+    uint32_t chunkLength = 0, chunkType = 0;
+    std::memcpy(&chunkLength, bytes.data() + 12, 4);
+    std::memcpy(&chunkType, bytes.data() + 16, 4);
+    if (chunkType != 0x4E4F534Au || uint64_t(chunkLength) > bytes.size() - 20) return {};
+    return bytes.substr(20, chunkLength);
+}
 
 uint64_t checkDeclaredSizes(const std::string& bytes, bool binary, const std::string& file, const GltfLimits& limits) {
     if (bytes.size() > limits.maxFileBytes) throw InputError(file, over("file", bytes.size(), limits.maxFileBytes));

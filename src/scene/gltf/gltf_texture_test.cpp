@@ -6,7 +6,9 @@
 
 #include "image/png.h"
 #include "scene/gltf/gltf_textures.h"
+#include "util/error_line.h"
 
+#include <stb_image_write.h>
 #include <glm/vec4.hpp>
 
 namespace shadelab::gltftest {
@@ -205,7 +207,7 @@ TEST(GltfTextures, HostileImagesFallBackToTheFactor) {
 
 TEST(GltfTextures, TheBombIsRefusedBeforeDecodingEvenWithoutTheSideLimit) {
     try {
-        gltf::decodeTexture(bombPng(), "bomb", true, uint64_t(1) << 20, uint64_t(1) << 30);
+        gltf::decodeTexture(bombPng(), "bomb", true, uint64_t(1) << 20, uint64_t(1) << 30, uint64_t(1) << 40);
         FAIL() << "decoded a 65536 x 65536 PNG";
     } catch (const std::runtime_error& e) {
         EXPECT_TRUE(contains(e.what(), "over the")) << e.what();
@@ -240,6 +242,147 @@ TEST(GltfTextures, TextureCountLimit) {
     const GltfImport g = importGltfBytes(texturedQuad(dataUri(pngBytes(checker4()))), false, "q.gltf", limits);
     EXPECT_FALSE(g.parts[0].material.baseColorTexture);
     EXPECT_TRUE(anyWarningContains(g, "over the limit of 0 textures per model"));
+}
+
+// A real 8 × 8 grey JPEG (stb_image_write) whose frame header then claims `w` × `h`: a file of a few hundred
+// bytes that stb_image decodes to whatever size it claims, filling what the data lacks.
+std::string forgedJpeg(uint16_t w, uint16_t h) {
+    std::string jpeg;
+    const std::vector<uint8_t> grey(64, 128);
+    stbi_write_jpg_to_func(
+        [](void* out, void* data, int size) {
+            static_cast<std::string*>(out)->append(static_cast<const char*>(data), size_t(size));
+        },
+        &jpeg, 8, 8, 1, grey.data(), 90);
+    const size_t sof = jpeg.find("\xFF\xC0");  // baseline frame header: FF C0, length, precision, height, width
+    EXPECT_NE(sof, std::string::npos);
+    jpeg[sof + 5] = char(h >> 8), jpeg[sof + 6] = char(h & 0xFF);
+    jpeg[sof + 7] = char(w >> 8), jpeg[sof + 8] = char(w & 0xFF);
+    return jpeg;
+}
+
+TEST(GltfTextures, AForgedJpegIsRefusedByItsHeadersPixelCount) {
+    const std::string bomb = forgedJpeg(8000, 8000);
+    ASSERT_LT(bomb.size(), 2000u);
+    // 8000² is within the side limit (8192) and the texture budget; the pixel limit refuses it unread.
+    expectFallback(texturedQuad(dataUri(bomb, "image/jpeg")),
+                   "8000x8000 = 64000000 pixels, over the limit of 16777216 pixels");
+    // Negative control: the same forgery at a size the limits allow decodes, from its few hundred bytes, to
+    // all the pixels it claims: only the header's size stands between the file and 8000² (a gigabyte).
+    const auto small = gltf::decodeTexture(forgedJpeg(300, 200), "forged", false, 8192, uint64_t(1) << 30);
+    EXPECT_EQ(small->width(), 300);
+    EXPECT_EQ(small->height(), 200);
+}
+
+TEST(GltfTextures, ThePixelLimitCountsEveryImage) {
+    const std::string png = pngBytes(checker4());  // 16 pixels
+    GltfLimits limits;
+    limits.maxTexturePixels = 15;
+    for (const std::string& gltf : {texturedQuad(dataUri(png)), texturedQuad(R"({"bufferView":4})", png)}) {
+        const GltfImport refused = importGltfBytes(gltf, false, "p.gltf", limits);
+        EXPECT_FALSE(refused.parts[0].material.baseColorTexture);
+        EXPECT_TRUE(anyWarningContains(refused, "4x4 = 16 pixels, over the limit of 15 pixels"));
+        // Negative control: at 16 pixels the same image decodes.
+        limits.maxTexturePixels = 16;
+        EXPECT_TRUE(importGltfBytes(gltf, false, "p.gltf", limits).parts[0].material.baseColorTexture);
+        limits.maxTexturePixels = 15;
+    }
+}
+
+TEST(GltfTextures, ADataUriImageCountsAgainstTheImageByteLimit) {
+    const std::string png = pngBytes(checker4());
+    GltfLimits limits;
+    limits.maxImageBytes = png.size() - 1;
+    const std::string over = "image of " + std::to_string(png.size()) + " bytes exceeds the limit of " +
+                             std::to_string(png.size() - 1) + " bytes";
+    // Before, a data: URI skipped the limit an external file meets; now it is the same warning.
+    const GltfImport refused = importGltfBytes(texturedQuad(dataUri(png)), false, "d.gltf", limits);
+    EXPECT_FALSE(refused.parts[0].material.baseColorTexture);
+    EXPECT_TRUE(anyWarningContains(refused, over));
+    // A buffer view declares its size in the JSON, where the limit refuses the file (docs/gltf-import.md).
+    EXPECT_THROW(importGltfBytes(texturedQuad(R"({"bufferView":4})", png), false, "d.gltf", limits), InputError);
+    // Negative control: a limit of exactly its size lets the data: URI image through.
+    limits.maxImageBytes = png.size();
+    EXPECT_TRUE(
+        importGltfBytes(texturedQuad(dataUri(png)), false, "d.gltf", limits).parts[0].material.baseColorTexture);
+}
+
+// `json` as a GLB: its JSON chunk, then a 4-byte BIN chunk that must come through the repair unchanged.
+std::string glbOf(std::string json) {
+    json.append((4 - json.size() % 4) % 4, ' ');
+    auto u32 = [](std::string& out, uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+    std::string glb;
+    u32(glb, 0x46546C67u);  // glTF
+    u32(glb, 2);
+    u32(glb, uint32_t(12 + 8 + json.size() + 8 + 4));
+    u32(glb, uint32_t(json.size()));
+    u32(glb, 0x4E4F534Au);  // JSON
+    glb += json;
+    u32(glb, 4);
+    u32(glb, 0x004E4942u);  // BIN
+    return glb + std::string(4, '\0');
+}
+
+TEST(GltfTextures, BadBase64InADataUriIsAWarning) {
+    // tinygltf refuses the whole file when an image's data: URI yields no byte; shadelab warns about the image.
+    expectFallback(texturedQuad(R"({"uri":"data:image/png;base64,!!!!"})"), "its data: URI is not base64");
+    expectFallback(texturedQuad(R"({"uri":"data:image/png;base64,"})"), "its data: URI holds no data");
+    // The NUL of a JSON "\u0000" stays in the reason as \x00 (the warning is a std::string, then a C string).
+    expectFallback(texturedQuad(R"({"uri":"data:image/png;base64,\u0000AAAA"})"), "begins \"\\x00AAAA\"");
+    const GltfImport glb = importGltfBytes(glbOf(texturedQuad(R"({"uri":"data:image/jpeg;base64,*"})")), true, "b.glb");
+    ASSERT_EQ(glb.parts.size(), 1u);
+    EXPECT_FALSE(glb.parts[0].material.baseColorTexture);
+    EXPECT_TRUE(anyWarningContains(glb,
+                                   "images[0] (used by materials[0].pbrMetallicRoughness.baseColorTexture): "
+                                   "its data: URI is not base64"));
+    // The other images are the file's own: the texture that uses image 1 decodes beside the broken image 0.
+    std::string two = texturedQuad(R"({"uri":"data:image/png;base64,!!"},)" + dataUri(pngBytes(checker4())));
+    two.replace(two.find("\"source\":0"), 10, "\"source\":1");
+    const GltfImport g = importGltfBytes(two, false, "two.gltf");
+    EXPECT_TRUE(g.parts[0].material.baseColorTexture);
+    EXPECT_TRUE(g.warnings.empty());
+    // Negative control: a buffer's bad base64 is still an error (a buffer is required, not a texture).
+    std::string badBuffer = texturedQuad(dataUri(pngBytes(checker4())));
+    badBuffer.replace(badBuffer.find("octet-stream;base64,") + 20, 0, "!");
+    EXPECT_THROW(importGltfBytes(badBuffer, false, "buffer.gltf"), InputError);
+}
+
+TEST(GltfTextures, ANegativeTextureIndexIsOutOfRange) {
+    const std::string png = dataUri(pngBytes(checker4()));
+    for (const std::string index : {"-1", "-7"}) {
+        std::string gltf = texturedQuad(png);
+        gltf.replace(gltf.find("\"baseColorTexture\":{\"index\":0}"), 30,
+                     "\"baseColorTexture\":{\"index\":" + index + "}");
+        const GltfImport g = importGltfBytes(gltf, false, "n.gltf");
+        EXPECT_FALSE(g.parts[0].material.baseColorTexture);
+        EXPECT_TRUE(anyWarningContains(g, "materials[0].pbrMetallicRoughness.baseColorTexture: texture " + index +
+                                              " out of range (1 textures); using the factor alone"))
+            << index;
+    }
+    // A material's own texture infos (normal, occlusion, emissive) are held to the same rule.
+    std::string normal = texturedQuad(png);
+    normal.replace(normal.find("\"pbrMetallicRoughness\""), 0, "\"normalTexture\":{\"index\":-1},");
+    EXPECT_TRUE(anyWarningContains(importGltfBytes(normal, false, "n.gltf"),
+                                   "materials[0].normalTexture: texture -1 out of range"));
+    // Negative control: a material without a texture info warns about none.
+    std::string none = texturedQuad(png);
+    none.replace(none.find(",\"baseColorTexture\":{\"index\":0}"), 31, "");
+    const GltfImport g = importGltfBytes(none, false, "n.gltf");
+    EXPECT_FALSE(g.parts[0].material.baseColorTexture);
+    EXPECT_FALSE(anyWarningContains(g, "out of range")) << (g.warnings.empty() ? "" : g.warnings[0]);
+}
+
+TEST(GltfTextures, NewlinesInAnImageUriStayInOneWarning) {
+    // tinygltf's "File not found : data:x\ny\nz" once became three warnings: "y" and "z" on lines of their own.
+    for (const char* uri : {"data:x\\ny\\nz", "data:x%0Ay%0Az"}) {
+        const GltfImport g = importGltfBytes(texturedQuad(std::string(R"({"uri":")") + uri + "\"}"), false, "nl.gltf");
+        std::string all;
+        for (const std::string& w : g.warnings) all += w + " | ";
+        ASSERT_EQ(g.warnings.size(), 1u) << all;  // the split made 3
+        EXPECT_TRUE(contains(g.warnings[0], "images[0]")) << all;
+        // The newlines are the URI's own and reach the terminal escaped, on the warning's one line.
+        EXPECT_EQ(errorLine(g.warnings[0]).find('\n'), std::string::npos);
+    }
 }
 
 }  // namespace

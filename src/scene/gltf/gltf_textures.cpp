@@ -3,6 +3,7 @@
 
 #include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf/gltf_values.h"
+#include "util/error_line.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
@@ -51,12 +52,17 @@ TextureSampler samplerFrom(const tinygltf::Sampler& s, const std::string& place,
     return out;
 }
 
-// Refuses an image by its header's size: a side over `maxSide`, or more texels than the budget left.
-void checkSize(uint64_t w, uint64_t h, uint64_t maxSide, uint64_t bytesLeft) {
+// Refuses an image by its header's size: a side over `maxSide`, more than `maxPixels` texels, or more texel
+// bytes than the budget left.
+void checkSize(uint64_t w, uint64_t h, uint64_t maxSide, uint64_t maxPixels, uint64_t bytesLeft) {
     if (w == 0 || h == 0) throw std::runtime_error("image has no pixels");
     if (w > maxSide || h > maxSide)
         throw std::runtime_error("image is " + std::to_string(w) + "x" + std::to_string(h) + ", over the limit of " +
                                  std::to_string(maxSide) + " texels a side");
+    if (w * h > maxPixels)  // both at most 2^32 - 1: no overflow
+        throw std::runtime_error("image is " + std::to_string(w) + "x" + std::to_string(h) + " = " +
+                                 std::to_string(w * h) + " pixels, over the limit of " + std::to_string(maxPixels) +
+                                 " pixels");
     const uint64_t need = textureBytesFor(int(std::min<uint64_t>(w, INT32_MAX)), int(std::min<uint64_t>(h, INT32_MAX)));
     if (need > bytesLeft)
         throw std::runtime_error("image needs " + std::to_string(need) + " bytes of texels, over the " +
@@ -70,7 +76,7 @@ struct StbFree {
 }  // namespace
 
 std::shared_ptr<const Texture> decodeTexture(const std::string& bytes, const std::string& name, bool srgb,
-                                             uint64_t maxSide, uint64_t bytesLeft) {
+                                             uint64_t maxSide, uint64_t bytesLeft, uint64_t maxPixels) {
     if (bytes.empty()) throw std::runtime_error("image has no bytes");
     if (!isPng(bytes) && !isJpeg(bytes)) throw std::runtime_error("not a PNG or JPEG image");
     if (bytes.size() > size_t(INT32_MAX)) throw std::runtime_error("image too large to decode");
@@ -84,11 +90,13 @@ std::shared_ptr<const Texture> decodeTexture(const std::string& bytes, const std
             return uint32_t(uint8_t(bytes[at])) << 24 | uint32_t(uint8_t(bytes[at + 1])) << 16 |
                    uint32_t(uint8_t(bytes[at + 2])) << 8 | uint32_t(uint8_t(bytes[at + 3]));
         };
-        checkSize(u32(16), u32(20), maxSide, bytesLeft);
+        checkSize(u32(16), u32(20), maxSide, maxPixels, bytesLeft);
     }
     if (!stbi_info_from_memory(data, length, &w, &h, &comp))
         throw std::runtime_error(std::string("cannot read the image header (") + stbi_failure_reason() + ")");
-    checkSize(uint64_t(std::max(w, 0)), uint64_t(std::max(h, 0)), maxSide, bytesLeft);
+    // Every image, PNG or JPEG, from a file, a data: URI or a buffer view: its header's size against the
+    // limits before a texel is decoded (stb_image would allocate for whatever the header claims).
+    checkSize(uint64_t(std::max(w, 0)), uint64_t(std::max(h, 0)), maxSide, maxPixels, bytesLeft);
     int w2 = 0, h2 = 0;
     std::unique_ptr<unsigned char, StbFree> pixels(stbi_load_from_memory(data, length, &w2, &h2, &comp, 4));
     if (!pixels) throw std::runtime_error(std::string("cannot decode the image (") + stbi_failure_reason() + ")");
@@ -170,16 +178,24 @@ std::shared_ptr<const Texture> TextureLoader::image(int index, bool srgb, const 
         if (count_ >= limits_.maxTextures)
             throw std::runtime_error("over the limit of " + std::to_string(limits_.maxTextures) +
                                      " textures per model");
+        const auto problem = imageProblems_.find(index);
+        if (problem != imageProblems_.end()) throw std::runtime_error(problem->second);
         std::string bytes;
         if (img.bufferView >= 0) {
             bytes = bufferViewBytes(model_, img.bufferView, "", "");
         } else if (!img.image.empty()) {
             bytes.assign(img.image.begin(), img.image.end());
         } else if (!img.uri.empty()) {
-            throw std::runtime_error("cannot read \"" + img.uri +
-                                     "\" (missing, outside the model's folder, or too large)");
+            throw std::runtime_error(escapeForMessage("cannot read \"" + img.uri +
+                                                      "\" (missing, outside the model's folder, or too large)"));
         }
-        slot = decodeTexture(bytes, name, srgb, limits_.maxTextureSide, limits_.maxTextureBytes - bytes_);
+        // One bound on the encoded bytes wherever they come from: an external file's is also bounded as it is
+        // read (gltf_file.cpp), but a data: URI or a buffer view would otherwise skip it.
+        if (bytes.size() > limits_.maxImageBytes)
+            throw std::runtime_error("image of " + std::to_string(bytes.size()) + " bytes exceeds the limit of " +
+                                     std::to_string(limits_.maxImageBytes) + " bytes");
+        slot = decodeTexture(bytes, name, srgb, limits_.maxTextureSide, limits_.maxTextureBytes - bytes_,
+                             limits_.maxTexturePixels);
         bytes_ += slot->texelBytes();
         ++count_;
     } catch (const std::exception& e) {
