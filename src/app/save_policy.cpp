@@ -1,5 +1,7 @@
 #include "app/save_policy.h"
 
+#include "util/input_files.h"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -14,6 +16,8 @@ std::string saveRefusal(const std::string& path) {
     if (ext != ".json") return "scene files end in .json; choose a .json name";
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return "is a folder";
+    // The rule of every output (util/input_files.h), said before the overwrite question is even asked.
+    if (openInputAt(path)) return "refusing to overwrite an input: the open scene reads this file; choose another name";
     return {};
 }
 

@@ -24,15 +24,17 @@ struct InputFiles::Registration {
 
 namespace {
 
+// Both live for the whole process and are never destroyed: a Scene held by a static or freed during the
+// interpreter's shutdown must still find them (no static destruction order to get wrong).
 std::mutex& registryMutex() {
-    static std::mutex m;
-    return m;
+    static std::mutex* m = new std::mutex;
+    return *m;
 }
 
 // Every live Registration; guarded by registryMutex().
 std::vector<const InputFiles::Registration*>& registry() {
-    static std::vector<const InputFiles::Registration*> r;
-    return r;
+    static auto* r = new std::vector<const InputFiles::Registration*>;
+    return *r;
 }
 
 thread_local InputRecorder* innermost = nullptr;
