@@ -216,7 +216,8 @@ TEST(HostileNumbers, NegativeControlNanFromTheRendererIsCountedAndSaid) {
     EXPECT_NE(r.out.find(kNoFiniteValue), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("raster: "), std::string::npos) << r.out;
     EXPECT_EQ(test::lineCount(r.out), 1) << r.out;
-    const test::Result strict = run("render " + dir + "/scene.json --strict --size 40x30 -o " + dir + "/strict.png", env);
+    const test::Result strict =
+        run("render " + dir + "/scene.json --strict --size 40x30 -o " + dir + "/strict.png", env);
     EXPECT_EQ(strict.code, 1) << strict.out;
     EXPECT_NE(strict.out.find("an error under --strict"), std::string::npos) << strict.out;
     EXPECT_FALSE(fs::exists(dir + "/strict.png"));
