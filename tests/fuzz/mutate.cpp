@@ -88,7 +88,7 @@ void mutateOnce(std::string& s, const std::vector<std::string>& others, Rng& rng
     // edits do; binary mostly gets byte edits.
     const size_t roll = rng.below(20);
     const bool text = looksLikeText(s);
-    const size_t kind = roll < (text ? 12u : 2u) ? 8 : roll < (text ? 13u : 3u) ? 7 : rng.below(7);
+    const size_t kind = roll < (text ? 14u : 2u) ? 8 : roll < (text ? 15u : 3u) ? 7 : rng.below(7);
     switch (kind) {
         case 0:  // flip one bit
             if (!s.empty()) s[rng.below(s.size())] ^= char(1u << rng.below(8));

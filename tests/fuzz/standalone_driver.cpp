@@ -208,14 +208,20 @@ std::string outcomeKind(const std::string& message) {
     std::string kind;
     int words = 0;
     bool inNumber = false, afterEquals = false;
-    for (const char c : s) {
+    for (size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
         if (c == ' ' && ++words == 3) break;
         if (c == ' ') afterEquals = false;
         if (afterEquals) continue;
         afterEquals = c == '=';
-        if (c == '\'' || c == '"' || c == '`') {  // the input's own text follows, quotes in it included
+        if (c == '\'' || c == '"' || c == '`') {
             kind += std::string(2, c);
-            break;
+            // A message that starts with a quoted name ("'byteLength' property is missing") goes on after it;
+            // elsewhere the input's own text follows, quotes in it included, and the kind ends.
+            const size_t end = s.find(c, i + 1);
+            if (i > 0 || end == std::string::npos) break;
+            i = end;
+            continue;
         }
         if (std::isdigit(static_cast<unsigned char>(c))) {
             if (!inNumber) kind += '#';
