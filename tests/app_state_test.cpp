@@ -9,6 +9,7 @@
 #include "app/viewer_state.h"
 #include "app_test_util.h"
 #include "scene/scene_json.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_load.h"
 #include "scene/white_furnace.h"
 #include "test_output.h"
@@ -260,6 +261,13 @@ TEST(AppState, OrbitCameraRoundTripAndMotions) {
     const float d = o.distance;
     orbitZoom(o, 1.0f);
     EXPECT_NEAR(o.distance, 0.85f * d, 1e-5f);
+    // A script's zoom far out stays finite (0.85^-1000 is past a float), a hundred steps are not held back.
+    OrbitCamera far = o;
+    orbitZoom(far, -100.0f);
+    EXPECT_NEAR(far.distance, o.distance * std::pow(0.85f, -100.0f), 1e-3f * far.distance);
+    orbitZoom(far, -1e30f);
+    EXPECT_EQ(far.distance, kMaxCoordinate);
+    EXPECT_TRUE(std::isfinite(cameraFromOrbit(far).position.x));
     const glm::vec3 t = o.target;
     orbitPan(o, 100.0f, 0.0f, 720.0f);
     EXPECT_GT(glm::length(o.target - t), 0.0f);

@@ -1,6 +1,8 @@
 // OrbitCamera conversions and the three mouse motions (rotate, pan, zoom).
 #include "app/orbit_camera.h"
 
+#include "scene/scene_limits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -69,6 +71,9 @@ void orbitPan(OrbitCamera& o, float dx, float dy, float viewportHeight) {
     o.target += (-dx * right + dy * camUp) * scale;
 }
 
-void orbitZoom(OrbitCamera& o, float steps) { o.distance = std::max(o.distance * std::pow(0.85f, steps), 1e-4f); }
+// Held within a scene's coordinate bound: thousands of steps out (a script's zoom) would reach infinity.
+void orbitZoom(OrbitCamera& o, float steps) {
+    o.distance = std::clamp(o.distance * std::pow(0.85f, steps), 1e-4f, kMaxCoordinate);
+}
 
 }  // namespace shadelab::app

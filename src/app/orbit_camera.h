@@ -28,7 +28,7 @@ void orbitRotate(OrbitCamera& orbit, float deltaYaw, float deltaPitch);
 // Moves the target in the view plane by a drag of (dx, dy) pixels (y down) on a viewport `viewportHeight`
 // pixels tall, so the point under the cursor follows it at the target's depth.
 void orbitPan(OrbitCamera& orbit, float dx, float dy, float viewportHeight);
-// Positive steps move closer; each step scales the distance by 0.85.
+// Positive steps move closer; each step scales the distance by 0.85, within [1e-4, kMaxCoordinate].
 void orbitZoom(OrbitCamera& orbit, float steps);
 
 }  // namespace shadelab::app

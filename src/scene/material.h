@@ -93,7 +93,7 @@ struct MaterialOverride {
         if (emission) m.emission = *emission;
         const bool phong = ma || md || ms || s, pbr = baseColor || metallic || roughness;
         if (phong && !pbr) {
-            if (md) m.baseColor = *md;
+            if (md) m.baseColor = glm::clamp(*md, 0.0f, 1.0f);  // md may exceed 1; a base colour may not
             if (s) m.roughness = roughnessFromShininess(*s);
         }
         if (pbr && !phong) {

@@ -119,6 +119,9 @@ glm::mat4 parseTransform(const JsonNode& n) {
             for (size_t i = 0; i < 3; ++i) nonZero((*f)[i]);  // vec3() has checked there are 3
         m = glm::scale(m, s);
     }
+    // Scales that are each non-zero can still make a singular matrix in floats (1e-38 cubed is 0): refused as a
+    // matrix is, so that the scene saves (as a matrix) into a file that loads.
+    if (glm::determinant(glm::mat3(m)) == 0.0f) n.fail("must be invertible (its 3x3 part has determinant 0)");
     return m;
 }
 

@@ -99,6 +99,7 @@ TEST(SceneJson, ErrorsNameThePathAndTheReason) {
          {"objects[0].matrix", "invertible"}},
         {mesh + R"("transform": {"scale": 0}}]})", {"objects[0].transform.scale", "must be non-zero"}},
         {mesh + R"("transform": {"scale": [1, 0, 1]}}]})", {"objects[0].transform.scale[1]", "must be non-zero"}},
+        {mesh + R"("transform": {"scale": 1e-38}}]})", {"objects[0].transform", "invertible"}},
         {mesh + R"("transform": {"rotate": [0, 90]}}]})", {"objects[0].transform.rotate", "expected 3 numbers, got 2"}},
         {mesh + R"("material": {"s": 1e5}}]})", {"objects[0].material.s", "must be in [0, 10000]"}},
         {R"({"materials": {"gold": {"s": -3}}})", {"materials.gold.s", "must be in [0, 10000]"}},

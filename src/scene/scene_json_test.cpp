@@ -393,6 +393,18 @@ TEST(SceneJson, NamedMaterialsResolveForEveryObjectType) {
     EXPECT_EQ(joined(d.fields), "");
 }
 
+TEST(SceneJson, BaseColorFollowingAnMdAboveOneIsHeldToOneAndSavesLoadably) {
+    // md may exceed 1 (an overbright teaching material); the base colour that follows it may not, or the saved
+    // scene would not load again.
+    const Scene s = parse(R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                                          "material": {"md": [1.5, 0.5, 0]}}]})");
+    EXPECT_EQ(s.spheres[0].material.md, glm::vec3(1.5f, 0.5f, 0.0f));
+    EXPECT_EQ(s.spheres[0].material.baseColor, glm::vec3(1.0f, 0.5f, 0.0f));
+    const Scene back = parse(sceneToJson(s));
+    EXPECT_EQ(back.spheres[0].material.baseColor, glm::vec3(1.0f, 0.5f, 0.0f));
+    EXPECT_EQ(back.spheres[0].material.md, glm::vec3(1.5f, 0.5f, 0.0f));
+}
+
 TEST(SceneJson, MeshTransformComposesTranslateRotateScale) {
     Scene s = parse(R"({"objects": [
         {"type": "mesh", "source": "a.glb", "transform": {"translate": [1, 2, 3], "rotate": [0, 90, 0], "scale": 2}},

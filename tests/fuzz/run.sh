@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang + ASan/UBSan in build-fuzz/ and runs each for SECONDS (default 600),
-# seeded with the repository's scenes and Debian's glTF test models. Crashes land in build-fuzz/artifacts/;
-# turn each into a regression test under tests/fuzz/regressions/.
+# Builds every libFuzzer target with clang + ASan/UBSan in build-fuzz/ and runs each for SECONDS (default 600),
+# as many at once as there are cores, then prints each one's executions and coverage (libFuzzer's final stats:
+# `cov:` edges, `ft:` features). Each starts from a copy of its seed corpus (tests/fuzz/README.md) in
+# build-fuzz/corpus/<target>/, where libFuzzer also keeps what it finds; the repository's seeds stay as they are.
+# Crashes land in build-fuzz/artifacts/; minimise one (`<target> -minimize_crash=1 -runs=10000 FILE`) and add it
+# to tests/fuzz/corpus/<target>/ as regression-<what>.
 # The whole-process structural fuzzer is separate and needs no clang:
 #   /usr/bin/python3 tests/fuzz/gltf_mutate.py build/shadelab --cases 3000
 # (mutated glTF/GLB structure through `shadelab render`: exit 0 or 1, one capped line, 10 s, 1 GiB).
@@ -9,26 +12,51 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-600}
+targets=(scene_json_fuzz gltf_fuzz hdr_fuzz gltf_texture_fuzz script_fuzz)
 scripts/install-deps.sh --with-fuzz
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADELAB_FUZZ=ON \
-  -DSHADELAB_SANITIZE=address,undefined -DSHADELAB_BUILD_TESTS=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target scene_json_fuzz gltf_fuzz
-mkdir -p build-fuzz/corpus/json build-fuzz/corpus/gltf build-fuzz/artifacts
-cp assets/scenes/*.json tests/fuzz/regressions/*.json build-fuzz/corpus/json/ 2>/dev/null || true
-find /usr/share/assimp/models/glTF2 -name '*.gltf' -size -200k -exec cp {} build-fuzz/corpus/gltf/ \; 2>/dev/null || true
-find /usr/share/assimp/models/glTF2 -name '*.glb' -size -200k -exec cp {} build-fuzz/corpus/gltf/ \; 2>/dev/null || true
-cp assets/models/*.gltf tests/fuzz/regressions/*.gl* build-fuzz/corpus/gltf/ 2>/dev/null || true
-# Both targets at once, one core each.
-for t in scene_json_fuzz:json gltf_fuzz:gltf; do
-  name=${t%%:*}; dir=${t##*:}
+  -DSHADELAB_SANITIZE=address,undefined -DSHADELAB_BUILD_TESTS=OFF -DSHADELAB_BUILD_PYTHON=OFF >/dev/null
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
+
+# Seeds: the repository's corpora, the shipped scenes, models and sky, and Debian's glTF sample models.
+seed() {  # seed TARGET FILES...
+  local dir=build-fuzz/corpus/$1
+  shift
+  mkdir -p "$dir"
+  cp "$@" "$dir/" 2>/dev/null || true
+}
+rm -rf build-fuzz/corpus
+mkdir -p build-fuzz/artifacts
+seed scene_json_fuzz assets/scenes/*.json
+seed gltf_fuzz assets/models/*.gltf assets/models/textures/*.gltf
+find /usr/share/assimp/models/glTF2 \( -name '*.gltf' -o -name '*.glb' \) -size -200k \
+  -exec cp {} build-fuzz/corpus/gltf_fuzz/ \; 2>/dev/null || true
+seed hdr_fuzz tests/fuzz/corpus/hdr_fuzz/* assets/environments/*.hdr
+seed gltf_texture_fuzz tests/fuzz/corpus/gltf_texture_fuzz/* assets/models/textures/*.gltf
+seed script_fuzz tests/fuzz/corpus/script_fuzz/*
+
+run_one() {
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-  build-fuzz/tests/fuzz/$name -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=262144 \
-    -artifact_prefix=build-fuzz/artifacts/$name- -print_final_stats=1 build-fuzz/corpus/$dir \
-    >build-fuzz/$name.log 2>&1 &
+  "build-fuzz/tests/fuzz/$1" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=262144 \
+    -artifact_prefix="build-fuzz/artifacts/$1-" -print_final_stats=1 "build-fuzz/corpus/$1" \
+    >"build-fuzz/$1.log" 2>&1 || true
+}
+cores=$(nproc)
+for t in "${targets[@]}"; do
+  while (($(jobs -rp | wc -l) >= cores)); do wait -n || true; done
+  run_one "$t" &
 done
 wait
-for name in scene_json_fuzz gltf_fuzz; do
-  echo "== $name (${seconds}s)"
-  grep -E '^#[0-9]+ +DONE|^stat::|ERROR|SUMMARY' build-fuzz/$name.log | tail -n 8
+
+printf '%-20s %12s %8s %8s  %s\n' target execs cov ft "last status"
+for t in "${targets[@]}"; do
+  log=build-fuzz/$t.log
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  # The last status line ("#N DONE cov: C ft: F corp: ..." or the last pulse) holds the final coverage.
+  status=$(grep -E '^#[0-9]+' "$log" | tail -n 1 || true)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$status")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$status")
+  printf '%-20s %12s %8s %8s  %s\n' "$t" "${execs:-?}" "${cov:-?}" "${ft:-?}" "$(cut -c1-60 <<<"$status")"
+  grep -E 'ERROR|SUMMARY' "$log" | head -n 4 || true
 done
 if ls build-fuzz/artifacts/* >/dev/null 2>&1; then echo "crashes found:"; ls build-fuzz/artifacts; exit 1; fi
