@@ -3,6 +3,7 @@
 
 #include "compare/comparison.h"
 #include "image/image.h"
+#include "render/memory_budget.h"
 #include "scene/sample_grid.h"
 #include "util/check.h"
 #include "util/input_error.h"
@@ -53,6 +54,13 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
         char got[32];
         std::snprintf(got, sizeof got, "%g", *p.timeLimit);
         return problem("time_limit", "must be in [0, 1e7] seconds, got " + std::string(got));
+    }
+    if (r.maxMemory) {
+        const uint64_t least = minimumRenderBytes(r);
+        if (*r.maxMemory < least)
+            return problem("max_memory", "must be at least " + memoryText(least, true) + " for a " +
+                                             sizeText(r.width, r.height) + " " + toString(r.engine) +
+                                             " render, whatever the scene; got " + memoryText(*r.maxMemory));
     }
     return std::nullopt;
 }

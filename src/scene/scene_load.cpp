@@ -131,7 +131,7 @@ void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImpor
     importMeshes(scene, baseDir, nullptr, gltf);
 }
 
-Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
+Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf, const MemoryLimit& memory) {
     // stat only: nothing is opened before readFile has refused FIFOs and devices.
     if (path.empty()) throw InputError("\"\"", "empty file name");
     std::error_code ec;
@@ -141,7 +141,7 @@ Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& g
     if (ext == ".json") {
         Scene scene = parseSceneJson(readFile(path, kMaxSceneFileBytes), path, warn);
         importMeshes(scene, fs::path(path).parent_path().string(), warn, gltf);
-        loadEnvironment(scene, fs::path(path).parent_path().string());
+        loadEnvironment(scene, fs::path(path).parent_path().string(), {}, memory);
         return scene;
     }
     if (ext != ".gltf" && ext != ".glb") throw InputError(path, "unknown scene type; expected .json, .gltf or .glb");
