@@ -17,6 +17,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -209,17 +210,140 @@ TEST(HostileInput, PngHeadersAreCheckedBeforeDecoding) {
 }
 
 TEST(HostileInput, RenderOverTheMemoryBudgetIsOneLine) {
-    // 16384² through both renderers: about 17 GB of images. Refused from the estimate, before any pixel.
+    // 16384² through both renderers: about 15 GB of images whatever the scene. A limit of 2G is refused as it
+    // is read (a usage error, exit 2), before the scene is loaded or a GL context made.
     const std::string dir = folder("memory");
     const std::string scene = shadelab::test::sourcePath("assets/scenes/default.json");
     const Result r = run(
         {"render", scene, "-o", dir + "/out.png", "--size", "16384x16384", "--renderer", "both", "--max-memory", "2G"});
-    expectRefused(r, "default.json", "over the limit of 2048 MiB (--max-memory)");
+    expectRefused(r, "--max-memory: must be at least ",
+                  " MiB for a 16384x16384 both render, whatever the scene; got 2048 MiB", 2);
+    // `--max-memory 1` (MiB) was accepted for a 64x48 raster render that peaks at about 108 MB.
+    expectRefused(run({"render", scene, "-o", dir + "/out.png", "--size", "64x48", "--max-memory", "1"}),
+                  "--max-memory: must be at least ", " MiB for a 64x48 raster render, whatever the scene; got 1 MiB",
+                  2);
     const Result bad = run({"render", scene, "-o", dir + "/out.png", "--max-memory", "lots"});
     EXPECT_EQ(bad.code, 2) << bad.out;
+    EXPECT_NE(bad.out.find("--max-memory: expected a size such as 512M or 2G, got 'lots'"), std::string::npos);
+    // What this scene adds, two 8192² shadow-map layers (512 MiB), is refused from the loaded scene's estimate
+    // (exit 1, naming the scene), within the limit: the GL context it made meanwhile is all it took.
+    const Result over = run({"render", scene, "-o", dir + "/out.png", "--size", "64x48", "--shadow-map-size", "8192",
+                             "--max-memory", "200M"});
+    EXPECT_EQ(over.code, 1) << over.out;
+    EXPECT_EQ(std::count(over.out.begin(), over.out.end(), '\n'), 1) << over.out;
+    EXPECT_NE(over.out.find("default.json: a 64x48 raster render of this scene needs about "), std::string::npos)
+        << over.out;
+    EXPECT_NE(over.out.find(" MiB, over the limit of 200 MiB (--max-memory)"), std::string::npos) << over.out;
+#if !defined(__SANITIZE_ADDRESS__)
+    EXPECT_LT(over.peakMiB, 200.0) << over.out;
+#endif
+    EXPECT_FALSE(fs::exists(dir + "/out.png"));
     // Negative control: the same scene at 64x48 fits in 2G.
     const Result ok = run({"render", scene, "-o", dir + "/ok.png", "--size", "64x48", "--max-memory", "2G"});
     EXPECT_EQ(ok.code, 0) << ok.out;
+}
+
+// The estimate of a render, read from the command line's own refusals: the least any render of the request
+// needs ("must be at least N MiB", from --max-memory 1), then, raised to each "needs about N MiB" it is
+// refused with (the environment map's load, then the render of this scene), the limit it is accepted under.
+double estimatedMiB(const std::vector<std::string>& render) {
+    const auto number = [](const std::string& text, const std::string& before) {
+        const size_t at = text.find(before);
+        return at == std::string::npos ? -1.0 : std::atof(text.c_str() + at + before.size());
+    };
+    std::vector<std::string> args = render;
+    args.insert(args.end(), {"--max-memory", "1"});
+    double limit = number(run(args).out, "must be at least ");
+    for (int tries = 0; limit > 0 && tries < 4; ++tries) {
+        args.back() = std::to_string(int(limit));
+        const Result r = run(args);
+        if (r.code == 0) return limit;
+        const double need = number(r.out, "needs about ");
+        limit = need > limit ? need : -1.0;
+    }
+    return -1.0;
+}
+
+TEST(HostileInput, RendersStayWithinTheirMemoryEstimate) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "ASan's shadow memory and quarantine are no part of a render's estimate";
+#endif
+    const std::string dir = folder("estimate");
+    const auto scene = [](const char* name) {
+        return shadelab::test::sourcePath(std::string("assets/scenes/") + name);
+    };
+    const Result probe = run({"render", scene("default.json"), "-o", dir + "/gl.png", "--size", "8x8", "--verbose"});
+    // The GL context's share is llvmpipe's, measured; a GPU driver's host memory is its own.
+    const bool llvmpipe = probe.out.find("GL_RENDERER llvmpipe") != std::string::npos;
+    std::vector<std::vector<std::string>> renders = {
+        {"--renderer", "trace", "--size", "1280x720"},
+        {"--renderer", "path", "--size", "320x180", "--spp", "1"},
+    };
+    std::vector<std::vector<std::string>> rasterRenders = {
+        {"--size", "64x48"},
+        {"--size", "1280x720"},
+        {"--size", "64x48", "--shadow-map-size", "4096"},
+        {"--renderer", "both", "--size", "320x180"},
+    };
+    if (llvmpipe) renders.insert(renders.end(), rasterRenders.begin(), rasterRenders.end());
+    for (const char* name : {"default.json", "pbr-sky.json", "torus.json"}) {
+        for (const std::vector<std::string>& flags : renders) {
+            std::vector<std::string> args = {"render", scene(name), "-o", dir + "/out.png"};
+            args.insert(args.end(), flags.begin(), flags.end());
+            std::string what = name;
+            for (const std::string& f : flags) what += " " + f;
+            const double estimate = estimatedMiB(args);
+            ASSERT_GT(estimate, 0) << what;
+            // Accepted under its own estimate, and its peak stays under it.
+            args.insert(args.end(), {"--max-memory", std::to_string(int(estimate))});
+            const Result r = run(args);
+            EXPECT_EQ(r.code, 0) << what << ": " << r.out;
+            EXPECT_LE(r.peakMiB, estimate) << what << ": peak " << r.peakMiB << " MiB, estimate " << estimate;
+        }
+    }
+    // The negative control: what the old estimate left out is real. A 64x48 raster render, which it put at
+    // 24 KiB (its pixels alone) and so let `--max-memory 1` through, peaks at tens of MiB for the GL context.
+    if (llvmpipe) {
+        const Result small = run({"render", scene("default.json"), "-o", dir + "/small.png", "--size", "64x48"});
+        EXPECT_EQ(small.code, 0) << small.out;
+        EXPECT_GT(small.peakMiB, 32.0) << small.out;
+    }
+}
+
+// A Radiance .hdr of `w` x `h` pixels of one colour, run-length encoded (about 264 bytes a scanline).
+std::string writeFlatHdr(const std::string& path, int w, int h) {
+    std::string s = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(h) + " +X " + std::to_string(w) + "\n";
+    std::string line = {char(2), char(2), char(w >> 8), char(w & 255)};
+    for (unsigned char v : {128, 140, 160, 129})
+        for (int x = 0; x < w; x += 127) {
+            line += char(128 + std::min(127, w - x));
+            line += char(v);
+        }
+    for (int y = 0; y < h; ++y) s += line;
+    writeText(path, s);
+    return path;
+}
+
+TEST(HostileInput, EnvironmentMapOverTheMemoryLimitIsRefusedFromItsHeader) {
+    // 16 Mpixels: 192 MiB of floats once decoded, in a file of 1 MiB. Under --max-memory 100M it is refused
+    // from its header, within the bounds of every hostile case (one line, under 1 s and 100 MiB).
+    const std::string dir = folder("environment");
+    writeFlatHdr(dir + "/big.hdr", 4096, 4096);
+    writeText(dir + "/big.json",
+              R"({"model": "pbr", "environment": {"hdr": "big.hdr"}, "lights": [],
+                  "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})");
+    for (const char* engine : {"trace", "path"}) {
+        const Result r = run({"render", dir + "/big.json", "-o", dir + "/out.png", "--size", "64x48", "--renderer",
+                              engine, "--spp", "1", "--max-memory", "100M"});
+        expectRefused(r, "big.hdr: a 4096x4096 environment map needs about ",
+                      " MiB to read and prefilter, over the limit of 100 MiB (--max-memory)");
+    }
+    // The negative control: with room for it, the same render decodes the map, and its peak is over the
+    // 100 MiB that the refusal kept it under.
+    const Result ok = run({"render", dir + "/big.json", "-o", dir + "/ok.png", "--size", "64x48", "--renderer", "trace",
+                           "--max-memory", "1G"});
+    EXPECT_EQ(ok.code, 0) << ok.out;
+    EXPECT_GT(ok.peakMiB, 192.0) << ok.out;
 }
 
 TEST(HostileInput, ControlCharactersAndHugeTextStayOnOneCappedLine) {

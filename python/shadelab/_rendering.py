@@ -11,12 +11,12 @@ from __future__ import annotations
 import _thread
 import atexit
 
-from . import _shadelab
+from . import _checks, _shadelab
 from ._warnings import warn
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
 if TYPE_CHECKING:
-    from ._types import EncodingName, EstimatorName, LightPathsName, RendererName, Size
+    from ._types import EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName, Size
 
 # The binary's default --size.
 DEFAULT_SIZE = (1280, 720)
@@ -32,23 +32,41 @@ def parse_size(size: Size) -> tuple[int, int]:
     try:
         width, height = size
         return int(width), int(height)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):  # OverflowError: an infinite float
         raise ValueError(f"size: expected (width, height) or 'WxH', got {size!r}") from None
+
+
+def memory_limit(max_memory: MemorySize | None) -> int:
+    """The bytes render(max_memory=...) means: None, the command line's default (half of physical memory, within
+    ulimit -v); an int, bytes; a string, as --max-memory reads it ("512M", "2G", a bare number of MiB)."""
+    return _shadelab._memory_limit(max_memory)
 
 
 def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Size, renderer: RendererName,
                   spp: int | None, encoding: EncodingName, depth: int | None, threads: int, coverage: bool,
-                  time_limit: float | None, estimator: EstimatorName | None,
-                  light_paths: LightPathsName | None) -> _shadelab.Image:
-    """Renders the scene behind `handle` with `core`; the arguments are Renderer.render's. The compiled renderer
-    holds them to the render request's limits, the command line's (docs/design.md §5)."""
+                  time_limit: float | None, estimator: EstimatorName | None, light_paths: LightPathsName | None,
+                  max_memory: int | None) -> _shadelab.Image:
+    """Renders the scene behind `handle` with `core`; the arguments are Renderer.render's, max_memory in bytes
+    (memory_limit()) or None for the default, as the command line without --max-memory. Their types are
+    checked here, each refused in one line naming it; the compiled renderer holds them to the render request's
+    limits, the command line's (docs/design.md §5), and the render to its memory budget (render/memory_budget.h)."""
     width, height = parse_size(size)
-    image = core.render(handle, width, height, renderer, spp, encoding, depth, threads, coverage, time_limit,
-                        estimator, light_paths)
+    clamp = _checks.Clamp()  # in the order the request checks them: size, spp, depth, threads
+    args = (handle, clamp(width), clamp(height), _checks.word("renderer", renderer),
+            _clamped(clamp, _checks.optional_whole("spp", spp)), _checks.word("encoding", encoding),
+            _clamped(clamp, _checks.optional_whole("depth", depth)), clamp(_checks.whole("threads", threads)),
+            _checks.flag("coverage", coverage), _checks.optional_real("time_limit", time_limit),
+            _checks.optional_word("estimator", estimator), _checks.optional_word("light_paths", light_paths),
+            max_memory)
+    image: _shadelab.Image = _checks.call(clamp, core.render, *args)
     if image.non_finite_pixels:
         # The command line's warning, in the same words: no image goes black in silence.
         warn([f"{renderer}: {image._non_finite_message}"], stacklevel=3)
     return image
+
+
+def _clamped(clamp: _checks.Clamp, value: int | None) -> int | None:
+    return None if value is None else clamp(value)
 
 
 _default: _shadelab._Renderer | None = None

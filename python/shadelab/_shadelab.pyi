@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._types import EncodingName, StrPath
+from ._types import EncodingName, MemorySize, StrPath
 
 class InputError(ValueError):
     """Bad input (a scene field, a file): the message names the file and the JSON path, as the binary's."""
@@ -68,17 +68,20 @@ class Image:
     def from_array(array: ArrayLike, encoding: EncodingName = "srgb") -> Image:
         """uint8 (H, W, 3|4): the pixels as they are; float (H, W, 3|4): linear RGB, encoded with `encoding`."""
     def __getstate__(self) -> tuple[int, int, int, bytes, bytes, str, str, bytes, float, float]: ...
-    def __setstate__(self, state: tuple[int, int, int, bytes, bytes, str, str, bytes, float, float], /) -> None: ...
+    def __setstate__(self, state: tuple[int, int, int, bytes, bytes, str, str, bytes, float, float], /) -> None:
+        """Checks every field (sizes 1..16384, 3 or 4 channels, each buffer's exact length, the encoding and
+        source words) and raises ValueError, one line, for a state no Image could have written."""
 
 class _Scene:
     """A scene as the compiled scene reader holds it (shadelab.Scene's handle)."""
 
     @staticmethod
-    def load(path: str, allow_external_paths: bool = False) -> tuple[_Scene, list[str]]:
-        """A scene file or glTF model, with the reader's warnings."""
+    def load(path: str, allow_external_paths: bool = False, max_memory: int = 0) -> tuple[_Scene, list[str]]:
+        """A scene file or glTF model, with the reader's warnings; max_memory (bytes, 0: none) holds its
+        environment map's load to render(max_memory=...)'s limit."""
     @staticmethod
-    def from_document(document: dict[str, Any], base_dir: str,
-                      allow_external_paths: bool = False) -> tuple[_Scene, list[str]]:
+    def from_document(document: dict[str, Any], base_dir: str, allow_external_paths: bool = False,
+                      max_memory: int = 0) -> tuple[_Scene, list[str]]:
         """A scene from a document in the scene file's schema, with the reader's warnings."""
     def replace(self, document: dict[str, Any], reject_unknown_fields: bool = False) -> tuple[bool, list[str]]:
         """Parses `document` as a scene file: (replaced, warnings); the scene is unchanged when it raises."""
@@ -99,14 +102,16 @@ class _Renderer:
     def __init__(self, backend: str = "auto") -> None: ...
     def render(self, scene: _Scene, width: int, height: int, renderer: str = "raster", spp: int | None = None,
                encoding: str = "srgb", depth: int | None = None, threads: int = 0, coverage: bool = False,
-               time_limit: float | None = None, estimator: str | None = None,
-               light_paths: str | None = None) -> Image: ...
+               time_limit: float | None = None, estimator: str | None = None, light_paths: str | None = None,
+               max_memory: int | None = None) -> Image: ...
     def context_info(self) -> dict[str, str]: ...
     def close(self) -> None: ...
     @property
     def busy(self) -> bool: ...
 
 def _probe(scene: _Scene, x: int, y: int, width: int, height: int) -> dict[str, Any]: ...
+def _memory_limit(max_memory: MemorySize | None) -> int:
+    """The limit in bytes that render(max_memory=...) means: None, the command line's default; bytes; "512M"."""
 def _compare(a: Image, b: Image, threshold: int = 3, max_fraction_over: float = 0.001, hard_max: int = 16,
              max_silhouette_fraction: float = 0.02, max_mean: float | None = None, gain: int = 16, name_a: str = "",
              name_b: str = "") -> tuple[dict[str, Any], str, Image, bool]: ...

@@ -14,6 +14,10 @@ StrPath = Union[str, os.PathLike[str]]
 # An image size: (width, height), two numbers int() takes, or the binary's "WxH" text ("640x360").
 Size = Union[str, Sequence[SupportsInt]]
 
+# render(max_memory=...): a number of bytes, or a size as the binary's --max-memory writes it ("512M", "2G";
+# a bare number in a string is MiB, as on the command line).
+MemorySize = Union[int, str]
+
 # render(renderer=...): the rasterizer (OpenGL), the Whitted ray tracer, the path tracer (the binary's --renderer).
 RendererName = Literal["raster", "trace", "path"]
 

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import os
 
-from . import _shadelab
+import math
+
+from . import _checks, _shadelab
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
 if TYPE_CHECKING:
@@ -16,6 +18,8 @@ if TYPE_CHECKING:
 
 # threshold, max_fraction_over, hard_max, max_silhouette_fraction, max_mean (None: no gate): the JSON's names.
 default_gates: dict[str, float | None] = dict(_shadelab.default_gates)
+# The gates in the order _compare takes them.
+_GATES = ("threshold", "max_fraction_over", "hard_max", "max_silhouette_fraction", "max_mean")
 
 
 class CompareReport:
@@ -77,10 +81,27 @@ def compare(a: ImageLike, b: ImageLike, gates: Mapping[str, float | None] | None
     unknown = sorted(set(gates) - set(default_gates))
     if unknown:
         raise ValueError(f"gates: unknown gate(s) {', '.join(unknown)}; expected {', '.join(default_gates)}")
-    merged: dict[str, Any] = {**default_gates, **gates}  # the compiled module checks each one's type
+    merged: dict[str, Any] = {**default_gates, **gates}
+    clamp = _checks.Clamp()  # the compiled module holds each gate to its range, as `shadelab compare` does
+    values = [_gate(clamp, name, merged[name]) for name in _GATES]
+    gain = clamp(_checks.whole("gain", gain))
     image_a, name_a = _image(a)
     image_b, name_b = _image(b)
-    report, summary, heat, _ = _shadelab._compare(image_a, image_b, merged["threshold"], merged["max_fraction_over"],
-                                                merged["hard_max"], merged["max_silhouette_fraction"],
-                                                merged["max_mean"], gain, name_a, name_b)
+    report, summary, heat, _ = _checks.call(clamp, _shadelab._compare, image_a, image_b, *values, gain, name_a,
+                                            name_b)
     return CompareReport(report, summary, heat)
+
+
+def _gate(clamp: _checks.Clamp, name: str, value: object) -> float | int | None:
+    """A gate's value as the compiled module takes it: threshold and hard_max whole numbers (an integral float
+    too), the others numbers (max_mean also None); NaN, a string or a bool is refused naming the gate."""
+    if value is None and name == "max_mean":
+        return None
+    number = _checks.real(f"gates: {name}", value)
+    if math.isnan(number):
+        raise ValueError(f"gates: {name} must be a number, got nan")
+    if name not in ("threshold", "hard_max"):
+        return number
+    if not hasattr(type(value), "__index__") and not number.is_integer():
+        raise ValueError(f"gates: {name} must be a whole number of 8-bit levels, got {value!r}")
+    return clamp(_checks.whole(f"gates: {name}", value) if hasattr(type(value), "__index__") else int(number))

@@ -7,8 +7,11 @@
 The baseline is <test file's folder>/baselines/default-320.png (ini option shadelab_baseline_dir). A check
 that fails writes its evidence, the render, the baseline, the heatmap and the JSON report, beside the test
 in shadelab-evidence/ (--shadelab-evidence-dir or ini shadelab_evidence_dir to move it), then fails the test
-with the binary's summary. Baselines are written only with --shadelab-update-baselines, never by a failing
-test; a baseline's sidecar <name>.json records the GL_RENDERER and version it was made with.
+with the binary's summary. A check's name is a plain file name, so that its files stay inside those folders:
+a name with '/' or '\\', or "." or "..", is refused with a ValueError. Before a check runs, the plugin deletes
+that check's own evidence from an earlier run, by the four exact names it writes, and nothing else.
+Baselines are written only with --shadelab-update-baselines, never by a failing test; a baseline's sidecar
+<name>.json records the GL_RENDERER and version it was made with.
 
 Loaded by the `pytest11` entry point once the package is pip-installed; from a build tree, pass
 -p shadelab.pytest_plugin (or list it in a conftest's pytest_plugins).
@@ -52,6 +55,22 @@ def _safe(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_")
 
 
+# The files a failing check leaves as evidence, <name>-<suffix>: the only files the plugin ever deletes.
+_EVIDENCE = ("render.png", "baseline.png", "heat.png", "report.json")
+
+
+def _check_name(name: object) -> str:
+    """`name` when it names a file inside the plugin's folders: a non-empty string with no path separator, no
+    NUL, and neither "." nor ".."; else one ValueError saying so (TypeError for a name that is no string)."""
+    if not isinstance(name, str):
+        raise TypeError(f"shadelab_regression.check: name must be a string, got {type(name).__name__}")
+    separators = {"/", "\\", os.sep, os.altsep or "/", "\0"}
+    if not name or name in (".", "..") or any(s in name for s in separators):
+        raise ValueError(f"shadelab_regression.check: name {name!r} must be a plain file name (no '/', '\\', "
+                         f"'..' or absolute path): baselines and evidence stay inside their folders")
+    return name
+
+
 def _write_json(path: Path, data: Any) -> None:
     tmp = path.with_name(path.name + ".tmp")
     tmp.write_text(json.dumps(data, indent=2) + "\n")
@@ -72,9 +91,9 @@ class ImageRegression:
         return bool(self._config.getoption(_UPDATE))
 
     def baseline_path(self, name: str) -> Path:
-        """The baseline PNG of the check `name`."""
+        """The baseline PNG of the check `name` (a plain file name: no path separator, not "." or "..")."""
         folder: str = self._config.getini("shadelab_baseline_dir")
-        return self._test_dir / folder / f"{name}.png"
+        return self._test_dir / folder / f"{_check_name(name)}.png"
 
     def evidence_dir(self) -> Path:
         """Where this test's failing checks leave their evidence."""
@@ -88,7 +107,7 @@ class ImageRegression:
         (default: the test's name) under `gates` (design.md §4's by default; a dict overrides some) and
         returns the CompareReport. Fails the test, leaving the evidence, when the gates are not met. With
         --shadelab-update-baselines it writes the baseline instead and returns None."""
-        name = name or _safe(self._request.node.name)
+        name = _safe(self._request.node.name) if name is None else _check_name(name)
         baseline = self.baseline_path(name)
         if not isinstance(image, shadelab.Image):
             image = _as_image(image)
@@ -97,8 +116,9 @@ class ImageRegression:
             return None
         evidence = self.evidence_dir()
         stem = evidence / name
-        if evidence.exists():
-            for old in evidence.glob(f"{name}-*"):
+        for suffix in _EVIDENCE:  # an earlier failure's evidence, by the exact names it was written under
+            old = Path(f"{stem}-{suffix}")
+            if old.is_file() or old.is_symlink():
                 old.unlink()
         if not baseline.exists():
             evidence.mkdir(parents=True, exist_ok=True)

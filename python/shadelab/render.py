@@ -13,26 +13,30 @@ from __future__ import annotations
 import _thread
 import os
 
-from . import _rendering, _shadelab
+from . import _checks, _rendering, _shadelab
 from ._rendering import DEFAULT_SIZE, parse_size
-from .scene import Scene
+from .scene import Scene, _plain
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
 if TYPE_CHECKING:
     from typing import Any, Sequence, SupportsInt
 
-    from ._types import BackendName, EncodingName, EstimatorName, LightPathsName, RendererName, Size
+    from ._types import BackendName, EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName, Size
     from .typing import SceneLike
 
 
-def _scene(scene: SceneLike) -> Scene:
+def _scene(scene: SceneLike, max_memory: int = 0) -> Scene:
+    """The Scene to render. A path or a dict is read here, its environment map's load held to `max_memory`
+    (bytes; 0: none), as `shadelab render --max-memory` holds it, refused from the .hdr's header."""
     if isinstance(scene, Scene):
         return scene
     if isinstance(scene, dict):
-        return Scene.from_dict(scene)
+        handle, lines = _shadelab._Scene.from_document(_plain(scene), os.getcwd(), False, max_memory)
+        return Scene._from_handle(handle, lines)
     if isinstance(scene, (str, os.PathLike)):
-        return Scene.load(scene)
-    raise TypeError(f"expected a shadelab.Scene, a scene file's path or a dict, got {type(scene).__name__}")
+        handle, lines = _shadelab._Scene.load(os.fspath(scene), False, max_memory)
+        return Scene._from_handle(handle, lines)
+    raise TypeError(f"scene: expected a shadelab.Scene, a scene file's path or a dict, got {type(scene).__name__}")
 
 
 class Renderer:
@@ -47,7 +51,7 @@ class Renderer:
     _core: _shadelab._Renderer
 
     def __init__(self, backend: BackendName = "auto") -> None:
-        self._core = _shadelab._Renderer(backend)
+        self._core = _shadelab._Renderer(_checks.word("backend", backend))
 
     @classmethod
     def _around(cls, core: _shadelab._Renderer) -> Renderer:
@@ -59,7 +63,7 @@ class Renderer:
     def render(self, scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
                spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-               light_paths: LightPathsName | None = None) -> _shadelab.Image:
+               light_paths: LightPathsName | None = None, max_memory: MemorySize | None = None) -> _shadelab.Image:
         """Renders `scene` to a shadelab.Image with this Renderer's GL context and programs.
 
         scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -86,12 +90,20 @@ class Renderer:
         light_paths: "path" only: which light reaches the image, "all", "direct" or "indirect" (what the ambient
             term stands in for); default None, "all". The binary's --light-paths. Given to another renderer,
             any of these three raises ValueError.
+        max_memory: the most memory the render may take: an int of bytes, or a string as the binary's
+            --max-memory reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's
+            default, half of physical memory (within ulimit -v). A render estimated to need more raises
+            shadelab.InputError before any pixel is drawn, as does the environment map of a scene given as a
+            path or a dict; a limit below what any render of this size and renderer needs raises ValueError.
 
         With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
-        raises ValueError naming the argument; an unknown keyword raises TypeError.
+        raises ValueError naming the argument, a value of the wrong type TypeError naming it; an unknown keyword
+        raises TypeError.
         """
-        return _rendering.render_handle(self._core, _scene(scene)._handle, size, renderer, spp, encoding, depth,
-                                        threads, coverage, time_limit, estimator, light_paths)
+        limit = _rendering.memory_limit(max_memory)  # the default too: a path's environment map is held to it
+        return _rendering.render_handle(self._core, _scene(scene, limit)._handle, size, renderer, spp, encoding,
+                                        depth, threads, coverage, time_limit, estimator, light_paths,
+                                        None if max_memory is None else limit)
 
     @property
     def info(self) -> dict[str, str]:
@@ -130,7 +142,7 @@ def default_renderer() -> Renderer:
 def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
            spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
            coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-           light_paths: LightPathsName | None = None) -> _shadelab.Image:
+           light_paths: LightPathsName | None = None, max_memory: MemorySize | None = None) -> _shadelab.Image:
     """Renders `scene` with the default Renderer (default_renderer()) to a shadelab.Image.
 
     scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -157,13 +169,19 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
     light_paths: "path" only: which light reaches the image, "all", "direct" or "indirect" (what the ambient
         term stands in for); default None, "all". The binary's --light-paths. Given to another renderer,
         any of these three raises ValueError.
+    max_memory: the most memory the render may take: an int of bytes, or a string as the binary's --max-memory
+        reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's default, half of
+        physical memory (within ulimit -v). A render estimated to need more raises shadelab.InputError before
+        any pixel is drawn, as does the environment map of a scene given as a path or a dict; a limit below
+        what any render of this size and renderer needs raises ValueError.
 
     With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
-    raises ValueError naming the argument; an unknown keyword raises TypeError.
+    raises ValueError naming the argument, a value of the wrong type TypeError naming it; an unknown keyword
+    raises TypeError.
     """
     return default_renderer().render(scene, size, renderer=renderer, spp=spp, encoding=encoding, depth=depth,
                                      threads=threads, coverage=coverage, time_limit=time_limit,
-                                     estimator=estimator, light_paths=light_paths)
+                                     estimator=estimator, light_paths=light_paths, max_memory=max_memory)
 
 
 def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_SIZE) -> dict[str, Any]:
@@ -172,5 +190,11 @@ def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_S
     probe report, docs/viewer.md). Asks the tracer; needs no GL context."""
     handle = _scene(scene)._handle
     width, height = parse_size(size)
-    x, y = pixel
-    return _shadelab._probe(handle, int(x), int(y), width, height)
+    try:
+        x, y = (int(v) for v in pixel)
+    except (TypeError, ValueError, OverflowError):
+        raise ValueError(f"pixel: expected (x, y), two numbers int() takes, got {pixel!r}") from None
+    clamp = _checks.Clamp()  # in the order the probe words them: size, then the pixel
+    width, height = clamp(width), clamp(height)
+    report: dict[str, Any] = _checks.call(clamp, _shadelab._probe, handle, clamp(x), clamp(y), width, height)
+    return report

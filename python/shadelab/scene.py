@@ -22,7 +22,7 @@ TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy tre
 if TYPE_CHECKING:
     from typing import Any, Callable, ClassVar, Iterable, Union
 
-    from ._types import EncodingName, EstimatorName, LightPathsName, RendererName, Size, StrPath
+    from ._types import EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName, Size, StrPath
 
     # Where a value sits in the document: field names and list indices from the top ("lights", 2, "color").
     _Path = tuple[Union[str, int], ...]
@@ -189,6 +189,23 @@ class _List(_ListBase):
         value = _plain(value)
         self._scene._edit(self._path, lambda items: items.insert(i, value))
 
+    # MutableSequence's pop, reverse and clear work through views by position, which an edit moves: its pop
+    # returned a view of the entry that slid into the removed one's place (or of none, for the last), and its
+    # reverse copied views it had already overwritten. These edit the list in one step instead.
+    def pop(self, index: int = -1) -> Any:
+        """Removes the entry at `index` (default: the last) and returns it as a dict: a copy that stays
+        valid, as to_dict() gives (append or insert it to put it back)."""
+        i = self._index(index)
+        removed = _deepcopy(self._value()[i])
+        self._scene._edit(self._path, lambda items: items.pop(i))
+        return removed
+
+    def reverse(self) -> None:
+        self._scene._edit(self._path, lambda items: items.reverse())
+
+    def clear(self) -> None:
+        self._scene._edit(self._path, lambda items: items.clear())
+
     def to_list(self) -> list[Any]:
         """A copy of the list."""
         return _deepcopy(self._value())  # type: ignore[no-any-return]
@@ -282,13 +299,15 @@ class Scene(_View):
     def render(self, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster", spp: int | None = None,
                encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-               light_paths: LightPathsName | None = None) -> _shadelab.Image:
+               light_paths: LightPathsName | None = None, max_memory: MemorySize | None = None) -> _shadelab.Image:
         """shadelab.render(self, size, ...): renders this scene with the default Renderer. The keywords, their
         ranges and defaults are shadelab.render's: renderer="raster" ("trace", "path"), spp=None (1; 16 for
         path), encoding="srgb" ("linear"), depth=None (the scene's maxDepth), threads=0 (every core),
-        coverage=False, and for path time_limit=None, estimator=None ("mis"), light_paths=None ("all")."""
+        coverage=False, for path time_limit=None, estimator=None ("mis"), light_paths=None ("all"), and
+        max_memory=None (the binary's --max-memory default; bytes, or "512M")."""
         return _rendering.render_handle(_rendering.default_core(), self._handle, size, renderer, spp, encoding,
-                                        depth, threads, coverage, time_limit, estimator, light_paths)
+                                        depth, threads, coverage, time_limit, estimator, light_paths,
+                                        None if max_memory is None else _rendering.memory_limit(max_memory))
 
     # -- the document and its edits -------------------------------------------------------------------------
 

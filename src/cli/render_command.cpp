@@ -3,7 +3,6 @@
 // --timings prints the per-stage breakdown.
 #include "cli/render_command.h"
 
-#include "cli/memory_budget.h"
 #include "cli/progress_bar.h"
 #include "cli/render_options.h"
 #include "cli/stage_timer.h"
@@ -15,6 +14,7 @@
 #include "image/encode.h"
 #include "image/png.h"
 #include "raster/offscreen.h"
+#include "render/memory_budget.h"
 #include "scene/scene_load.h"
 #include "trace/path/path_render.h"
 #include "trace/trace_image.h"
@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <future>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace shadelab::cli {
@@ -106,8 +107,10 @@ int render(const RenderOptions& o, std::string& doing) {
     // The scene loads on a worker thread while this one creates the GL context (both take tens of ms).
     GltfImportOptions gltf;
     gltf.allowExternalPaths = o.allowExternalPaths;
-    auto sceneFuture = std::async(std::launch::async,
-                                  [&] { return loadScene(o.input, o.strict ? failOnWarning : printWarning, gltf); });
+    // The environment map's load is held to --max-memory from its header, before its pixels are decoded.
+    const MemoryLimit memory{render::memoryLimit(request), "--max-memory"};
+    auto sceneFuture = std::async(
+        std::launch::async, [&] { return loadScene(o.input, o.strict ? failOnWarning : printWarning, gltf, memory); });
     std::unique_ptr<gl::HeadlessContext> context;
     if (needRaster) {
         try {
@@ -127,7 +130,8 @@ int render(const RenderOptions& o, std::string& doing) {
     o.raster.applyTo(scene.raster);
     if (needRaster && scene.lights.size() > size_t(kMaxLights))
         throw InputError(o.input, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
-    checkMemoryBudget(scene, o);
+    if (std::optional<std::string> over = render::memoryProblem(scene, request))
+        throw InputError(o.input, *over + " (--max-memory)");
 
     // A pixel with no finite value is said out loud (an error under --strict), before anything is written.
     auto report = [&](const char* renderer, const Rendered& r) {

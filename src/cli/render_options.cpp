@@ -2,8 +2,8 @@
 #include "cli/render_options.h"
 
 #include "cli/args.h"
-#include "cli/memory_budget.h"
 #include "cli/raster_flags.h"
+#include "render/memory_budget.h"
 #include "util/input_error.h"
 
 #include <algorithm>
@@ -51,8 +51,10 @@ const char* const kHelpTail =
     "  --allow-external-paths     let glTF buffer URIs point outside the model's folder (../, absolute)\n"
     "  --strict                   a warning about the input (an image that cannot be read or decoded, an\n"
     "                             unknown field, a skipped feature) is an error: exit 1, nothing written\n"
-    "  --max-memory SIZE          refuse a render estimated to need more, e.g. 512M or 4G\n"
-    "                             (default: half of physical memory, within ulimit -v)\n"
+    "  --max-memory SIZE          refuse a render (and an environment map's load) estimated to need\n"
+    "                             more, e.g. 512M or 4G, a bare number in MiB; less than any render of\n"
+    "                             the request needs is a usage error (default: half of physical memory,\n"
+    "                             within ulimit -v)\n"
     "  --timings                  print a per-stage timing and memory breakdown to stderr\n"
     "  --verbose                  log the GL backend, GL_RENDERER and GL_VERSION to stderr\n"
     "  -h, --help                 show this help\n"
@@ -112,7 +114,13 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (o.output.empty()) throw UsageError("render needs -o out.png");
     render::RenderRequest& r = o.request;
     if (auto v = args.value("--size")) std::tie(r.width, r.height) = parseSize(*v);
-    if (auto v = args.value("--max-memory")) o.maxMemory = parseMemorySize(*v);
+    if (auto v = args.value("--max-memory")) {
+        try {
+            r.maxMemory = render::parseMemorySize(*v);
+        } catch (const SettingError& e) {
+            throw UsageError(flagOf(e.field()) + ": " + e.reason());
+        }
+    }
     if (auto v = args.value("--model")) o.model = parseChoice("--model", *v, kShadingModelNames);
     if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
     if (auto v = args.value("--encoding")) r.encoding = parseChoice("--encoding", *v, kEncodingNames);

@@ -16,8 +16,9 @@ namespace shadelab::cli {
 struct RenderOptions {
     std::string input;   // scene.json, model.gltf or model.glb
     std::string output;  // PNG path
-    // --renderer, --size, --spp, --depth, --threads, --encoding and the path tracer's --time-limit, --estimator
-    // and --light-paths: the render itself, checked as every front end checks it (render/render_request.h).
+    // --renderer, --size, --spp, --depth, --threads, --encoding, the path tracer's --time-limit, --estimator
+    // and --light-paths, and --max-memory: the render itself, checked as every front end checks it
+    // (render/render_request.h).
     render::RenderRequest request;
     std::optional<ShadingModel> model;   // unset: the scene's
     std::optional<Terms> terms;          // unset: the scene's
@@ -25,7 +26,6 @@ struct RenderOptions {
     RasterOverride raster;               // --shadow-map-size, --pcf, ...: over the scene's "raster"
     gl::GlBackend backend = gl::GlBackend::Auto;
     bool allowExternalPaths = false;  // glTF buffers may live outside the model's folder
-    uint64_t maxMemory = 0;           // --max-memory, bytes; 0 = defaultMaxMemory() (memory_budget.h)
     bool verbose = false;
     bool timings = false;
     bool strict = false;  // a warning about the input is an error: exit 1, nothing written

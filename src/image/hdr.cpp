@@ -28,7 +28,7 @@ void rgbeToFloat(const unsigned char* p, float* out) {
 
 }  // namespace
 
-HdrImage parseHdr(const std::string& bytes, const std::string& name) {
+HdrHeader parseHdrHeader(const std::string& bytes, const std::string& name) {
     const auto fail = [&name](const std::string& reason) { return InputError(name, reason); };
     size_t pos = 0;
     const auto nextLine = [&](std::string& line) {
@@ -62,10 +62,18 @@ HdrImage parseHdr(const std::string& bytes, const std::string& name) {
     if (w < 1 || h < 1 || w > kMaxHdrSide || h > kMaxHdrSide || uint64_t(w) * uint64_t(h) > kMaxHdrPixels)
         throw fail("image of " + std::to_string(w) + "x" + std::to_string(h) + " pixels; at most " +
                    std::to_string(kMaxHdrSide) + " per side and " + std::to_string(kMaxHdrPixels >> 20) + " Mpixels");
+    return HdrHeader{int(w), int(h), pos};
+}
+
+HdrImage parseHdr(const std::string& bytes, const std::string& name) {
+    const auto fail = [&name](const std::string& reason) { return InputError(name, reason); };
+    const HdrHeader header = parseHdrHeader(bytes, name);
+    const long w = header.width;
+    size_t pos = header.dataOffset;
     HdrImage img;
-    img.width = int(w);
-    img.height = int(h);
-    img.rgb.resize(size_t(w) * size_t(h) * 3);
+    img.width = header.width;
+    img.height = header.height;
+    img.rgb.resize(size_t(header.width) * size_t(header.height) * 3);
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const size_t size = bytes.size();
     std::vector<unsigned char> scan(size_t(w) * 4);

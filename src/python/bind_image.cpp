@@ -8,11 +8,12 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <string>
 
 namespace py = pybind11;
 
@@ -92,11 +93,101 @@ py::bytes rawBytes(const std::vector<T>& v) {
 }
 
 template <typename T>
-std::vector<T> fromRaw(const py::bytes& b) {
-    const std::string s = b;
+std::vector<T> fromRaw(const std::string& s) {
     std::vector<T> v(s.size() / sizeof(T));
-    std::memcpy(v.data(), s.data(), v.size() * sizeof(T));
+    if (!v.empty()) std::memcpy(v.data(), s.data(), v.size() * sizeof(T));  // no coverage: no buffer at all
     return v;
+}
+
+// A pickle state that no Image could have written: one ValueError line.
+py::value_error badState(const std::string& reason) {
+    return py::value_error("shadelab.Image: bad pickle state: " + reason);
+}
+
+std::string typeName(const py::handle& h) { return py::str(py::type::of(h).attr("__name__")); }
+
+// A pickle state's bytes item, or the one-line refusal naming it.
+std::string stateBytes(const py::tuple& t, size_t i, const char* what) {
+    if (!py::isinstance<py::bytes>(t[i])) throw badState(std::string(what) + " must be bytes, got " + typeName(t[i]));
+    return t[i].cast<std::string>();
+}
+
+// A pickle state's number item (a float or an int), or the one-line refusal naming it.
+double stateNumber(const py::tuple& t, size_t i, const char* what) {
+    if (py::isinstance<py::bool_>(t[i]) || !(py::isinstance<py::float_>(t[i]) || py::isinstance<py::int_>(t[i])))
+        throw badState(std::string(what) + " must be a number, got " + typeName(t[i]));
+    return t[i].cast<double>();
+}
+
+// A path argument as Python gives it (str, bytes or os.PathLike), else one TypeError line naming it.
+std::filesystem::path pathArg(const char* name, const py::handle& v) {
+    if (py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v) || py::hasattr(v, "__fspath__")) {
+        const py::module_ os = py::module_::import("os");
+        return std::filesystem::path(os.attr("fsdecode")(os.attr("fspath")(v)).cast<std::string>());
+    }
+    throw py::type_error(std::string(name) + ": expected a path (str or os.PathLike), got " + typeName(v));
+}
+
+// An encoding's name as Python gives it, else one TypeError line; the word itself is encodingNamed's to check.
+Encoding encodingArg(const py::handle& v) {
+    if (!py::isinstance<py::str>(v)) throw py::type_error("encoding: expected a string, got " + typeName(v));
+    return encodingNamed(v.cast<std::string>());
+}
+
+// The inverse of __getstate__, for a state that may have been tampered with: every field is checked before any
+// pixel is touched, so that no later call (save, compare, np.asarray) meets sizes or lengths it cannot trust.
+ImagePtr fromPickleState(const py::object& state) {
+    if (!py::isinstance<py::tuple>(state)) throw badState("expected a tuple of 10 items, got " + typeName(state));
+    const py::tuple t = state;
+    if (t.size() != 10) throw badState("expected a tuple of 10 items, got " + std::to_string(t.size()));
+    if (!py::isinstance<py::int_>(t[0]) || !py::isinstance<py::int_>(t[1]) || !py::isinstance<py::int_>(t[2]) ||
+        py::isinstance<py::bool_>(t[0]) || py::isinstance<py::bool_>(t[1]) || py::isinstance<py::bool_>(t[2]))
+        throw badState("width, height and channels must be integers");
+    // Python ints of any size: compared as Python objects first, so that a huge one cannot wrap on the way in.
+    const auto side = [&](size_t i, const char* what) {
+        const py::int_ v = t[i];
+        if (v < py::int_(1) || v > py::int_(kMaxImageSide))
+            throw badState(std::string(what) + " must be 1.." + std::to_string(kMaxImageSide) + " pixels, got " +
+                           std::string(py::repr(v)));
+        return v.cast<int>();
+    };
+    const int width = side(0, "width"), height = side(1, "height");
+    const py::int_ channelsValue = t[2];
+    if (!(channelsValue.equal(py::int_(3)) || channelsValue.equal(py::int_(4))))
+        throw badState("channels must be 3 (RGB) or 4 (RGBA), got " + std::string(py::repr(channelsValue)));
+    const int channels = channelsValue.cast<int>();
+    // Sizes are at most kMaxImageSide² × 16 bytes (2^32): size_t holds every product below.
+    const size_t pixels = size_t(width) * size_t(height);
+    const auto bytesOf = [&](size_t i, const char* what, size_t expected, bool optional) {
+        const std::string b = stateBytes(t, i, what);
+        if (b.size() != expected && !(optional && b.empty()))
+            throw badState(std::string(what) + " must be " + std::to_string(expected) + " bytes for a " +
+                           std::to_string(width) + "x" + std::to_string(height) + " image, got " +
+                           std::to_string(b.size()));
+        return b;
+    };
+    const std::string data = bytesOf(3, "pixels", pixels * size_t(channels), false);
+    const std::string linear = bytesOf(4, "linear floats", pixels * 4 * sizeof(float), false);
+    const std::string coverage = bytesOf(7, "coverage", pixels * sizeof(uint32_t), true);
+    if (!py::isinstance<py::str>(t[5]) || !py::isinstance<py::str>(t[6]))
+        throw badState("encoding and source must be strings");
+    const std::string encoding = t[5].cast<std::string>(), source = t[6].cast<std::string>();
+    const std::optional<Encoding> e = parseEncoding(encoding);
+    if (!e) throw badState("unknown encoding '" + encoding.substr(0, 32) + "'");
+    if (source != "raster" && source != "trace" && source != "path" && source != "file" && source != "array")
+        throw badState("unknown source '" + source.substr(0, 32) + "'");
+    auto img = std::make_shared<ImageData>();
+    img->pixels.width = img->linear.width = width;
+    img->pixels.height = img->linear.height = height;
+    img->pixels.channels = channels;
+    img->pixels.data.assign(data.begin(), data.end());
+    img->linear.rgba = fromRaw<float>(linear);
+    img->coverage = fromRaw<uint32_t>(coverage);
+    img->encoding = *e;
+    img->source = source;
+    img->drawMs = stateNumber(t, 8, "draw_ms");
+    img->readMs = stateNumber(t, 9, "read_ms");
+    return img;
 }
 
 }  // namespace
@@ -158,7 +249,8 @@ In Jupyter an image shows itself.)")
         .def("_repr_png_", [](const ImageData& i) { return pngBytes(i); })
         .def(
             "save",
-            [](const ImageData& i, const std::filesystem::path& path) {
+            [](const ImageData& i, const py::object& pathObject) {
+                const std::filesystem::path path = pathArg("path", pathObject);
                 try {
                     writePng(path.string(), i.pixels);
                 } catch (const InputError& e) {
@@ -169,10 +261,11 @@ In Jupyter an image shows itself.)")
             py::arg("path"), "Writes the PNG atomically (the bytes `shadelab render -o` writes)")
         .def_static(
             "open",
-            [](const std::filesystem::path& path, const std::string& encoding) {
+            [](const py::object& path, const py::object& encoding) {
                 auto img = std::make_shared<ImageData>();
-                img->pixels = readPng(path.string());
-                img->encoding = encodingNamed(encoding);
+                const Encoding e = encodingArg(encoding);
+                img->pixels = readPng(pathArg("path", path).string());
+                img->encoding = e;
                 img->linear = decode(img->pixels, img->encoding);
                 img->source = "file";
                 return img;
@@ -181,8 +274,8 @@ In Jupyter an image shows itself.)")
             "Reads a PNG; np.asarray gives its pixels decoded with `encoding`'s curve")
         .def_static(
             "from_array",
-            [](py::array a, const std::string& encoding) {
-                const Encoding e = encodingNamed(encoding);
+            [](py::array a, const py::object& encoding) {
+                const Encoding e = encodingArg(encoding);
                 if (a.dtype().kind() == 'u' && a.dtype().itemsize() == 1) return fromUint8(a, e);
                 if (a.dtype().kind() == 'f') return fromFloat(a, e);
                 throw UsageError("from_array: expected a uint8 (levels) or float (linear) array, got dtype " +
@@ -196,30 +289,12 @@ In Jupyter an image shows itself.)")
                         " " + toString(i.encoding) + " from " + i.source + ">";
              })
         .def(py::pickle(
-            [](const ImageData& i) {
+            [](const ImageData& i) -> py::object {  // a tuple; typed as the state __setstate__ checks
                 return py::make_tuple(i.pixels.width, i.pixels.height, i.pixels.channels, rawBytes(i.pixels.data),
                                       rawBytes(i.linear.rgba), std::string(toString(i.encoding)), i.source,
                                       rawBytes(i.coverage), i.drawMs, i.readMs);
             },
-            [](const py::tuple& t) {
-                if (t.size() != 10) throw std::runtime_error("shadelab.Image: bad pickle state");
-                auto img = std::make_shared<ImageData>();
-                img->pixels.width = img->linear.width = t[0].cast<int>();
-                img->pixels.height = img->linear.height = t[1].cast<int>();
-                img->pixels.channels = t[2].cast<int>();
-                img->pixels.data = fromRaw<uint8_t>(t[3]);
-                img->linear.rgba = fromRaw<float>(t[4]);
-                img->encoding = encodingNamed(t[5].cast<std::string>());
-                img->source = t[6].cast<std::string>();
-                img->coverage = fromRaw<uint32_t>(t[7]);
-                img->drawMs = t[8].cast<double>();
-                img->readMs = t[9].cast<double>();
-                const size_t pixels = size_t(img->pixels.width) * size_t(img->pixels.height);
-                if (img->pixels.data.size() != pixels * size_t(img->pixels.channels) ||
-                    img->linear.rgba.size() != pixels * 4 || (!img->coverage.empty() && img->coverage.size() != pixels))
-                    throw std::runtime_error("shadelab.Image: bad pickle state");
-                return img;
-            }));
+            [](const py::object& state) { return fromPickleState(state); }));
 }
 
 }  // namespace shadelab::python

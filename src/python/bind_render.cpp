@@ -6,11 +6,13 @@
 #include "python/py_json.h"
 #include "python/renderer.h"
 #include "python/scene_handle.h"
+#include "render/memory_budget.h"
 #include "trace/trace_scene.h"
 #include "util/input_error.h"
 
 #include <pybind11/stl.h>
 
+#include <cstdint>
 #include <memory>
 
 namespace py = pybind11;
@@ -31,9 +33,37 @@ std::optional<E> namedIfGiven(const EnumName<E> (&table)[N], const std::optional
     return named(table, *word, argument);
 }
 
+// max_memory as Python gives it: None (the command line's default), a number of bytes, or a size as
+// --max-memory writes it ("512M", "2G"; a bare number in a string is MiB, as on the command line).
+uint64_t memoryLimitOf(const py::handle& v) {
+    if (v.is_none()) return render::defaultMaxMemory();
+    if (py::isinstance<py::str>(v)) {
+        try {
+            return render::parseMemorySize(v.cast<std::string>());
+        } catch (const SettingError& e) {
+            throw UsageError(e.what());  // "max_memory: expected a size such as 512M or 2G, got 'lots'"
+        }
+    }
+    if (!py::isinstance<py::bool_>(v) && PyIndex_Check(v.ptr())) {  // int, numpy integers
+        const py::int_ bytes = py::reinterpret_steal<py::int_>(PyNumber_Index(v.ptr()));
+        if (!bytes) throw py::error_already_set();
+        if (bytes < py::int_(1) || bytes > py::int_(uint64_t(1e18)))
+            throw UsageError("max_memory: expected a number of bytes from 1 to 1e18, or a size such as '512M', got " +
+                             std::string(py::repr(bytes)).substr(0, 40));
+        return bytes.cast<uint64_t>();
+    }
+    throw py::type_error("max_memory: expected a number of bytes, a size such as '512M' or None, got " +
+                         std::string(py::str(py::type::of(v).attr("__name__"))));
+}
+
 }  // namespace
 
 void bindRender(py::module_& m) {
+    m.def(
+        "_memory_limit", [](const py::object& maxMemory) { return memoryLimitOf(maxMemory); }, py::arg("max_memory"),
+        "The limit in bytes that render(max_memory=...) means: None, the command line's default (half of physical "
+        "memory, within ulimit -v); a number of bytes; or a size such as '512M' or '2G'");
+
     py::class_<Renderer>(m, "_Renderer")
         .def(py::init([](const std::string& backend) {
                  return std::make_unique<Renderer>(named(gl::kGlBackendNames, backend, "backend"));
@@ -44,7 +74,7 @@ void bindRender(py::module_& m) {
             [](Renderer& r, const SceneHandle& scene, int width, int height, const std::string& engine,
                std::optional<int> spp, const std::string& encoding, std::optional<int> depth, int threads,
                bool coverage, std::optional<double> timeLimit, const std::optional<std::string>& estimator,
-               const std::optional<std::string>& lightPaths) {
+               const std::optional<std::string>& lightPaths, std::optional<uint64_t> maxMemory) {
                 render::RenderRequest request;
                 request.width = width;
                 request.height = height;
@@ -57,6 +87,7 @@ void bindRender(py::module_& m) {
                 request.path.timeLimit = timeLimit;
                 request.path.estimator = namedIfGiven(trace::kPathEstimatorNames, estimator, "estimator");
                 request.path.part = namedIfGiven(trace::kPathPartNames, lightPaths, "light_paths");
+                request.maxMemory = maxMemory;
                 validate(request);
                 const Scene copy = scene.scene();  // O(objects); Python may edit the original meanwhile
                 auto image = std::make_shared<ImageData>();
@@ -69,7 +100,7 @@ void bindRender(py::module_& m) {
             py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("renderer") = "raster",
             py::arg("spp") = py::none(), py::arg("encoding") = "srgb", py::arg("depth") = py::none(),
             py::arg("threads") = 0, py::arg("coverage") = false, py::arg("time_limit") = py::none(),
-            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none())
+            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("max_memory") = py::none())
         .def("context_info",
              [](Renderer& r) {
                  gl::ContextInfo info;

@@ -1,5 +1,6 @@
 // _Scene: the compiled side of shadelab.Scene (python/shadelab/scene.py). Documents go in as Python values and come
 // back as scene-file text; every check, name table and message is the scene file's (scene/scene_json.h).
+// max_memory (bytes, 0: none) holds an environment map's load to render(max_memory=...)'s limit.
 #include "python/bindings.h"
 #include "python/py_json.h"
 #include "python/scene_handle.h"
@@ -7,6 +8,7 @@
 
 #include <pybind11/stl.h>
 
+#include <cstdint>
 #include <optional>
 
 namespace py = pybind11;
@@ -17,29 +19,30 @@ void bindScene(py::module_& m) {
     py::class_<SceneHandle>(m, "_Scene")
         .def_static(
             "load",
-            [](const std::string& path, bool allowExternalPaths) {
+            [](const std::string& path, bool allowExternalPaths, uint64_t maxMemory) {
                 std::vector<std::string> warnings;
                 std::optional<SceneHandle> h;
                 {
                     py::gil_scoped_release released;  // a large glTF takes a while; the handle is no one else's
-                    h = SceneHandle::load(path, allowExternalPaths, warnings);
+                    h = SceneHandle::load(path, allowExternalPaths, warnings, maxMemory);
                 }
                 return py::make_tuple(std::move(*h), warnings);
             },
-            py::arg("path"), py::arg("allow_external_paths") = false)
+            py::arg("path"), py::arg("allow_external_paths") = false, py::arg("max_memory") = 0)
         .def_static(
             "from_document",
-            [](py::handle doc, const std::string& baseDir, bool allowExternalPaths) {
+            [](py::handle doc, const std::string& baseDir, bool allowExternalPaths, uint64_t maxMemory) {
                 std::vector<std::string> warnings;
                 const nlohmann::json document = toJson(doc);
                 std::optional<SceneHandle> h;
                 {
                     py::gil_scoped_release released;
-                    h = SceneHandle::fromDocument(document, baseDir, allowExternalPaths, warnings);
+                    h = SceneHandle::fromDocument(document, baseDir, allowExternalPaths, warnings, maxMemory);
                 }
                 return py::make_tuple(std::move(*h), warnings);
             },
-            py::arg("document"), py::arg("base_dir"), py::arg("allow_external_paths") = false)
+            py::arg("document"), py::arg("base_dir"), py::arg("allow_external_paths") = false,
+            py::arg("max_memory") = 0)
         .def(
             "replace",
             [](SceneHandle& h, py::handle doc, bool rejectUnknownFields) {

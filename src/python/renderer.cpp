@@ -6,6 +6,7 @@
 #include "python/gl_session.h"
 #include "raster/offscreen.h"
 #include "raster/raster_renderer.h"
+#include "render/memory_budget.h"
 #include "trace/path/path_render.h"
 #include "trace/trace_image.h"
 #include "trace/trace_scene.h"
@@ -13,6 +14,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace shadelab::python {
@@ -91,6 +93,9 @@ gl::ContextInfo Renderer::contextInfo() {
 
 ImageData Renderer::render(const Scene& scene, const render::RenderRequest& request) {
     validate(request);
+    // Before any pixel, as the command line's --max-memory; Python keeps the linear floats (RenderOutput::Image).
+    if (std::optional<std::string> over = render::memoryProblem(scene, request, render::RenderOutput::Image))
+        throw InputError("", *over + " (max_memory)");
     std::lock_guard<std::mutex> lock(mutex_);
     BusyScope busy(busy_);
     try {

@@ -26,8 +26,8 @@ namespace shadelab::python {
 class GlSession;
 
 // The request's problem as Python words it: UsageError "<keyword>: <reason>" (the keyword is the request's
-// field: size, spp, depth, threads, time_limit, estimator, light_paths). Also refuses Engine::Both, which is
-// the command line's side-by-side picture; Python compares two renders with shadelab.compare.
+// field: size, spp, depth, threads, time_limit, estimator, light_paths, max_memory). Also refuses Engine::Both, which
+// is the command line's side-by-side picture; Python compares two renders with shadelab.compare.
 void validate(const render::RenderRequest& r);
 
 class Renderer {
@@ -37,7 +37,8 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Renders; the GL context is created by the first raster render. Throws InputError, UsageError,
+    // Renders; the GL context is created by the first raster render. Throws InputError (also for a render
+    // estimated to need more than the request's memory limit, render/memory_budget.h), UsageError,
     // gl::ContextError.
     ImageData render(const Scene& scene, const render::RenderRequest& request);
 

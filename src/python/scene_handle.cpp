@@ -44,21 +44,22 @@ std::string absoluteDir(const std::string& dir) {
 
 }  // namespace
 
-SceneHandle SceneHandle::load(const std::string& path, bool allowExternalPaths, std::vector<std::string>& warnings) {
+SceneHandle SceneHandle::load(const std::string& path, bool allowExternalPaths, std::vector<std::string>& warnings,
+                              uint64_t maxMemory) {
     WarningScope scope(warnings);
     SceneHandle h;
     h.gltf_.allowExternalPaths = allowExternalPaths;
-    h.scene_ = loadScene(path, collectWarning, h.gltf_);
+    h.scene_ = loadScene(path, collectWarning, h.gltf_, MemoryLimit{maxMemory, "max_memory"});
     h.baseDir_ = absoluteDir(fs::path(path).parent_path().string());
     return h;
 }
 
 SceneHandle SceneHandle::fromDocument(const nlohmann::json& doc, const std::string& baseDir, bool allowExternalPaths,
-                                      std::vector<std::string>& warnings) {
+                                      std::vector<std::string>& warnings, uint64_t maxMemory) {
     SceneHandle h;
     h.gltf_.allowExternalPaths = allowExternalPaths;
     h.baseDir_ = absoluteDir(baseDir);
-    h.scene_ = h.build(doc, warnings);
+    h.scene_ = h.build(doc, warnings, MemoryLimit{maxMemory, "max_memory"});
     return h;
 }
 
@@ -71,7 +72,7 @@ bool SceneHandle::replace(const nlohmann::json& doc, std::vector<std::string>& w
     return true;
 }
 
-Scene SceneHandle::build(const nlohmann::json& doc, std::vector<std::string>& warnings) {
+Scene SceneHandle::build(const nlohmann::json& doc, std::vector<std::string>& warnings, const MemoryLimit& memory) {
     const std::string file;  // errors name the JSON path only: the document is no file
     Scene next;
     // The new scene keeps protecting what the handle read before (parts and maps it reuses came from those
@@ -121,7 +122,7 @@ Scene SceneHandle::build(const nlohmann::json& doc, std::vector<std::string>& wa
         if (scene_.environment && scene_.environment->hdr == next.environment->hdr && scene_.environment->map)
             next.environment->map = scene_.environment->map;
         else
-            loadEnvironment(next, baseDir_);
+            loadEnvironment(next, baseDir_, {}, memory);
     }
     next.inputs = std::move(inputs);
     return next;

@@ -4,9 +4,11 @@
 // imported geometry. Pure C++: the bindings (bind_scene.cpp) convert Python values to documents (py_json.h).
 #pragma once
 
+#include "scene/environment_load.h"
 #include "scene/gltf/gltf_import.h"
 #include "scene/scene.h"
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -16,11 +18,14 @@ namespace shadelab::python {
 class SceneHandle {
 public:
     // loadScene(): a .json scene file, or a .gltf / .glb model framed and lit. Warnings are appended to `warnings`.
-    static SceneHandle load(const std::string& path, bool allowExternalPaths, std::vector<std::string>& warnings);
+    // maxMemory (bytes; 0: none) holds the environment map's load to it (scene/environment_load.h), as
+    // render(max_memory=...) names it.
+    static SceneHandle load(const std::string& path, bool allowExternalPaths, std::vector<std::string>& warnings,
+                            uint64_t maxMemory = 0);
     // A document in the scene file's schema; mesh sources are relative to `baseDir`. Errors name the JSON path
-    // (InputError with no file: "lights[2].color: expected 3 numbers, got 2").
+    // (InputError with no file: "lights[2].color: expected 3 numbers, got 2"). maxMemory as for load().
     static SceneHandle fromDocument(const nlohmann::json& doc, const std::string& baseDir, bool allowExternalPaths,
-                                    std::vector<std::string>& warnings);
+                                    std::vector<std::string>& warnings, uint64_t maxMemory = 0);
 
     // Replaces the scene by `doc`. On an InputError the scene is left as it was; so it is, returning false, when
     // `rejectUnknownFields` and the reader warned about an unknown field (an attribute edit with a misspelt name).
@@ -38,8 +43,9 @@ private:
         glm::mat4 transform{1.0f};
         std::vector<MeshPart> parts;
     };
-    // Parses `doc` and fills its meshes' parts from the current scene, the imports or the files.
-    Scene build(const nlohmann::json& doc, std::vector<std::string>& warnings);
+    // Parses `doc` and fills its meshes' parts from the current scene, the imports or the files, and its
+    // environment map, held to `memory`.
+    Scene build(const nlohmann::json& doc, std::vector<std::string>& warnings, const MemoryLimit& memory = {});
 
     Scene scene_;
     std::string baseDir_;  // absolute

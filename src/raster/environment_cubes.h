@@ -9,14 +9,13 @@
 
 #include "gl/objects.h"
 #include "raster/frame_block.h"
+#include "raster/raster_limits.h"
 #include "scene/scene.h"
 
 #include <glm/vec3.hpp>
 #include <vector>
 
 namespace shadelab::raster {
-
-inline constexpr int kMaxEnvironmentCubes = 8;  // reflective spheres and mesh parts beyond get no reflection
 
 // What a cube is rendered around: a sphere (index into scene.spheres) or a mesh part (into the renderer's
 // draw ranges), its centre and the near plane that keeps the object's own inside out of view.

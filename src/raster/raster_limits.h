@@ -26,4 +26,7 @@ inline constexpr int kMaxMirrorPlanes = 4;     // planes with kr > 0 that get a 
 inline constexpr size_t kMaxPartialIds = 8;    // objects a partial redraw may redo (partial_merge.frag u_ids)
 inline constexpr int kMaxShadowMapMiB = 2048;  // all layers together; a larger request is an error
 
+// Reflective spheres and mesh parts beyond these get no environment cube (raster/environment_cubes.h).
+inline constexpr int kMaxEnvironmentCubes = 8;
+
 }  // namespace shadelab::raster

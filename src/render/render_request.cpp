@@ -3,6 +3,7 @@
 
 #include "compare/comparison.h"
 #include "image/image.h"
+#include "render/memory_budget.h"
 #include "scene/sample_grid.h"
 #include "util/check.h"
 #include "util/input_error.h"
@@ -56,6 +57,13 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
         std::snprintf(got, sizeof got, "%g", *p.timeLimit);
         return problem("time_limit",
                        "must be in [0.001, 1e7] seconds (leave it out for no limit), got " + std::string(got));
+    }
+    if (r.maxMemory) {
+        const uint64_t least = minimumRenderBytes(r);
+        if (*r.maxMemory < least)
+            return problem("max_memory", "must be at least " + memoryText(least, true) + " for a " +
+                                             sizeText(r.width, r.height) + " " + toString(r.engine) +
+                                             " render, whatever the scene; got " + memoryText(*r.maxMemory));
     }
     return std::nullopt;
 }

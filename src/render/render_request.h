@@ -1,9 +1,10 @@
 // RenderRequest: one render, as every front end asks for it: the command line (`shadelab render`), Python
 // (`shadelab.render`), the viewer's background renderers and its scripts. It holds the engine, size, samples,
-// depth, threads, coverage, encoding and the path tracer's options; check() is the one place a request is held
-// to its limits, and the to*() conversions are the one place it becomes each renderer's settings. A problem is
-// named by its field ("spp", "size", ...); each front end words it its own way (`--spp: ...` in the CLI,
-// `spp: ...` in Python, `actions[3].spp: ...` in a script). Plain data: no GL, nothing rendered here.
+// depth, threads, coverage, encoding, the path tracer's options and the memory limit; check() is the one place
+// a request is held to its limits, and the to*() conversions are the one place it becomes each renderer's
+// settings. A problem is named by its field ("spp", "size", ...); each front end words it its own way (`--spp:
+// ...` in the CLI, `spp: ...` in Python, `actions[3].spp: ...` in a script). Plain data: no GL, nothing
+// rendered here; the memory estimate the limit is compared with is render/memory_budget.h.
 #pragma once
 
 #include "image/encoding.h"
@@ -13,6 +14,7 @@
 #include "trace/trace_settings.h"
 #include "util/name_table.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -59,13 +61,17 @@ struct RenderRequest {
     bool coverage = false;               // also the coverage ids of each pixel (Both always has them)
     Encoding encoding = Encoding::Srgb;  // how the linear image becomes 8-bit
     PathOptions path;
+    // The most memory the render may take, bytes (render/memory_budget.h: compared with its estimate before
+    // any pixel is drawn, and the environment map's load with it); unset: defaultMaxMemory(), half of
+    // physical memory. check() refuses a limit below what any render of this request needs.
+    std::optional<uint64_t> maxMemory;
 
     // The samples per pixel this request renders with: spp, or the engine's default.
     int samples() const;
 };
 
 // A request's field and why it cannot be rendered. Fields: "size", "spp", "depth", "threads",
-// "time_limit", "estimator", "light_paths".
+// "time_limit", "estimator", "light_paths", "max_memory".
 struct RequestProblem {
     std::string field;
     std::string reason;

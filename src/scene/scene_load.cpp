@@ -134,7 +134,7 @@ void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImpor
 namespace {
 
 // loadScene without the recording of its inputs.
-Scene loadSceneFiles(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
+Scene loadSceneFiles(const std::string& path, WarnFn warn, const GltfImportOptions& gltf, const MemoryLimit& memory) {
     // stat only: nothing is opened before readFile has refused FIFOs and devices.
     if (path.empty()) throw InputError("\"\"", "empty file name");
     std::error_code ec;
@@ -144,7 +144,7 @@ Scene loadSceneFiles(const std::string& path, WarnFn warn, const GltfImportOptio
     if (ext == ".json") {
         Scene scene = parseSceneJson(readFile(path, kMaxSceneFileBytes), path, warn);
         importMeshes(scene, fs::path(path).parent_path().string(), warn, gltf);
-        loadEnvironment(scene, fs::path(path).parent_path().string());
+        loadEnvironment(scene, fs::path(path).parent_path().string(), {}, memory);
         return scene;
     }
     if (ext != ".gltf" && ext != ".glb") throw InputError(path, "unknown scene type; expected .json, .gltf or .glb");
@@ -181,11 +181,11 @@ Scene loadSceneFiles(const std::string& path, WarnFn warn, const GltfImportOptio
 
 }  // namespace
 
-Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf) {
+Scene loadScene(const std::string& path, WarnFn warn, const GltfImportOptions& gltf, const MemoryLimit& memory) {
     // Every file read from here on is one of the scene's inputs.
     InputFiles inputs;
     InputRecorder recorder(inputs);
-    Scene scene = loadSceneFiles(path, warn, gltf);
+    Scene scene = loadSceneFiles(path, warn, gltf, memory);
     scene.inputs = std::move(inputs);
     return scene;
 }

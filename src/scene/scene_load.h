@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/bounds.h"
+#include "scene/environment_load.h"
 #include "scene/gltf/gltf_import.h"
 #include "scene/scene.h"
 
@@ -12,9 +13,10 @@
 
 namespace shadelab {
 
-// Throws InputError naming the file and problem. `gltf` applies to every model the scene loads.
+// Throws InputError naming the file and problem. `gltf` applies to every model the scene loads; `memory`, when
+// set, to the environment map (loadEnvironment, scene/environment_load.h: refused from its header).
 Scene loadScene(const std::string& path, void (*warn)(const std::string& line) = nullptr,
-                const GltfImportOptions& gltf = {});
+                const GltfImportOptions& gltf = {}, const MemoryLimit& memory = {});
 
 // Imports every mesh's glTF source (relative to `baseDir`) into its parts, applying the override.
 void importSceneMeshes(Scene& scene, const std::string& baseDir, const GltfImportOptions& gltf = {});

@@ -100,3 +100,146 @@ def test_scene_arguments(source_dir):
     assert by_path.to_png() == by_str.to_png() == by_dict.to_png()
     with pytest.raises(TypeError):
         shadelab.render(42, (8, 8))
+
+
+# -- a tampered pickle -------------------------------------------------------------------------------------------
+
+# Each tampered state runs in a child process that goes on to save, compare and read the image, so that a state
+# let through to a CHECK (SIGABRT) fails the test instead of ending it.
+CHILD = r"""
+import pickle, sys
+import numpy as np
+import shadelab
+
+image = shadelab.Image.from_array(np.full((6, 8, 3), 100, np.uint8))
+state = list(image.__getstate__())
+exec(sys.argv[1])  # tampers with `state`
+tampered = shadelab.Image.__new__(shadelab.Image)
+try:
+    tampered.__setstate__(tuple(state) if isinstance(state, list) else state)
+except ValueError as e:
+    print("refused:", e)
+    sys.exit(0)
+print("accepted:", tampered)
+tampered.save(sys.argv[2])
+shadelab.compare(tampered, tampered)
+np.asarray(tampered).sum()
+"""
+
+TAMPERED = [
+    ("state[0], state[1] = -8, -6", "width must be 1..16384 pixels, got -8"),  # -8 * -6 = 48, as the original
+    ("state[0] = 0", "width must be 1..16384 pixels, got 0"),
+    ("state[1] = 0", "height must be 1..16384 pixels, got 0"),
+    ("state[0], state[1] = 16385, 1", "width must be 1..16384 pixels, got 16385"),
+    ("state[0], state[1] = 2**64 + 8, 6", "width must be 1..16384 pixels, got 18446744073709551624"),
+    ("state[2] = 0", "channels must be 3 (RGB) or 4 (RGBA), got 0"),
+    ("state[2] = 1", "channels must be 3 (RGB) or 4 (RGBA), got 1"),
+    ("state[2] = 4", "pixels must be 192 bytes for a 8x6 image, got 144"),
+    ("state[3] = state[3][:-1]", "pixels must be 144 bytes for a 8x6 image, got 143"),
+    ("state[4] = state[4] + b'1234'", "linear floats must be 768 bytes for a 8x6 image, got 772"),
+    ("state[7] = b'1234'", "coverage must be 192 bytes for a 8x6 image, got 4"),
+    ("state[3] = 'text'", "pixels must be bytes, got str"),
+    ("state[0] = 8.0", "width, height and channels must be integers"),
+    ("state[5] = 'gamma'", "unknown encoding 'gamma'"),
+    ("state[6] = 'elsewhere'", "unknown source 'elsewhere'"),
+    ("state[8] = None", "draw_ms must be a number, got NoneType"),
+    ("state.append(1)", "expected a tuple of 10 items, got 11"),
+    ("state = state[0]", "expected a tuple of 10 items, got int"),
+]
+
+
+def _child(code, out_dir):
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-c", CHILD, code, str(out_dir / "tampered.png")], capture_output=True,
+                          text=True, timeout=60)
+
+
+@pytest.mark.parametrize("code,reason", TAMPERED, ids=[c for c, _ in TAMPERED])
+def test_a_tampered_pickle_is_one_value_error(code, reason, out_dir):
+    p = _child(code, out_dir)
+    assert p.returncode == 0, f"exit {p.returncode}: {p.stdout}{p.stderr}"
+    assert p.stdout == f"refused: shadelab.Image: bad pickle state: {reason}\n", p.stdout + p.stderr
+
+
+def test_the_tampered_pickle_check_sees_an_abort(out_dir):
+    # The negative controls: an untampered state round-trips and the child saves it; a child that aborts, as
+    # save() did on the 8x6 image pickled as -8x-6, fails the check above (a negative exit, no "refused").
+    ok = _child("pass", out_dir)
+    assert ok.returncode == 0 and ok.stdout.startswith("accepted: <shadelab.Image 8x6 srgb from array>"), ok.stderr
+    assert (out_dir / "tampered.png").exists()
+    aborted = _child("import os; os.abort()", out_dir)
+    assert aborted.returncode < 0 and "refused" not in aborted.stdout
+
+
+# -- argument types ----------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("kwargs,error,message", [
+    ({"spp": 2**31}, ValueError, "spp: expected a perfect square from 1 to 64"),
+    ({"spp": 2**31, "renderer": "path"}, ValueError,
+     "spp: the path tracer takes 1 to 1048576 samples per pixel, got 2147483648"),
+    ({"size": (2**40, 8)}, ValueError, "size: each side must be 1..16384 pixels, got 1099511627776x8"),
+    ({"threads": -2**40}, ValueError, "threads: must be in [0, 1024] (0 = every core), got -1099511627776"),
+    ({"depth": 2**63, "renderer": "trace"}, ValueError, "depth: must be in [0, 64], got 9223372036854775808"),
+    ({"spp": 2.5}, TypeError, "spp: expected a whole number, got float"),
+    ({"spp": True}, TypeError, "spp: expected a whole number, got bool"),
+    ({"threads": "4"}, TypeError, "threads: expected a whole number, got str"),
+    ({"coverage": "yes"}, TypeError, "coverage: expected True or False, got str"),
+    ({"coverage": None}, TypeError, "coverage: expected True or False, got NoneType"),
+    ({"renderer": 3}, TypeError, "renderer: expected a string, got int"),
+    ({"encoding": None}, TypeError, "encoding: expected a string, got NoneType"),
+    ({"renderer": "path", "time_limit": "1"}, TypeError, "time_limit: expected a number, got str"),
+    ({"renderer": "path", "time_limit": float("nan")}, ValueError, "time_limit: must be in [0, 1e7] seconds, got nan"),
+    ({"renderer": "path", "estimator": 1}, TypeError, "estimator: expected a string, got int"),
+    ({"size": (float("inf"), 8)}, ValueError, "size: expected (width, height) or 'WxH', got (inf, 8)"),
+    ({"max_memory": 1.5}, TypeError, "max_memory: expected a number of bytes, a size such as '512M' or None, got float"),
+])
+def test_a_bad_argument_is_one_line_naming_it(scene, kwargs, error, message):
+    kwargs = {"size": (8, 8), **kwargs}
+    with pytest.raises(error) as raised:
+        shadelab.render(scene, **kwargs)
+    assert type(raised.value) is error  # not a subclass: pybind11's TypeError is a TypeError too
+    text = str(raised.value)
+    assert "\n" not in text and text.startswith(message), text
+
+
+@pytest.mark.parametrize("call,error,message", [
+    (lambda a: shadelab.compare(a, a, {"threshold": float("nan")}), ValueError,
+     "gates: threshold must be a number, got nan"),
+    (lambda a: shadelab.compare(a, a, {"max_fraction_over": float("nan")}), ValueError,
+     "gates: max_fraction_over must be a number, got nan"),
+    (lambda a: shadelab.compare(a, a, {"max_mean": float("nan")}), ValueError, "gates: max_mean must be a number, got nan"),
+    (lambda a: shadelab.compare(a, a, {"hard_max": "16"}), TypeError, "gates: hard_max: expected a number, got str"),
+    (lambda a: shadelab.compare(a, a, {"threshold": 2.5}), ValueError,
+     "gates: threshold must be a whole number of 8-bit levels, got 2.5"),
+    (lambda a: shadelab.compare(a, a, {"threshold": 2**40}), ValueError,
+     "compare gates: threshold must be in [0, 255], got 1099511627776"),
+    (lambda a: shadelab.compare(a, a, gain=2**40), ValueError, "gain: must be in [1, 255], got 1099511627776"),
+    (lambda a: shadelab.compare(a, a, gain=1.5), TypeError, "gain: expected a whole number, got float"),
+    (lambda a: shadelab.Image.from_array(a).save(3), TypeError, "path: expected a path (str or os.PathLike), got int"),
+    (lambda a: shadelab.Image.open(None), TypeError, "path: expected a path (str or os.PathLike), got NoneType"),
+    (lambda a: shadelab.Image.from_array(a, encoding=1), TypeError, "encoding: expected a string, got int"),
+    (lambda a: shadelab.Renderer(backend=2), TypeError, "backend: expected a string, got int"),
+])
+def test_other_calls_refuse_bad_arguments_in_one_line(call, error, message):
+    a = np.zeros((4, 4, 3), np.uint8)
+    with pytest.raises(error) as raised:
+        call(a)
+    text = str(raised.value)
+    assert "\n" not in text and text == message, text
+
+
+def test_gates_of_whole_numbers_take_integral_floats():
+    a = np.zeros((4, 4, 3), np.uint8)
+    assert shadelab.compare(a, a, {"threshold": 4.0, "hard_max": np.int64(20)}).passed
+
+
+def test_the_one_line_check_sees_pybind11s_message(scene):
+    # The negative control: the compiled renderer called directly, as the package called it, still answers a
+    # bad type with pybind11's message of several lines, which the checks above would refuse.
+    from shadelab import _rendering
+
+    with pytest.raises(TypeError) as raised:
+        _rendering.default_core().render(scene._handle, 8, 8, "raster", 2**31)
+    assert "incompatible function arguments" in str(raised.value) and "\n" in str(raised.value)

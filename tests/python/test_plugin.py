@@ -85,3 +85,62 @@ def test_gates_can_be_loosened(pytester, source_dir):
         edit="scene.lights[0].color = [0.2, 0.9, 0.9]").replace(
             '"default-96")', '"default-96", gates={"hard_max": 255, "max_fraction_over": 1.0})'))
     run(pytester).assert_outcomes(passed=1)
+
+
+# -- names and clean-up: the plugin's files stay inside its folders -----------------------------------------------
+
+ARRAY_TEST = """
+import numpy as np
+import shadelab
+
+def test_render(shadelab_regression):
+    shadelab_regression.check(shadelab.Image.from_array(np.full((4, 6, 3), 100, np.uint8)), {name!r})
+"""
+
+BAD_NAMES = ["../../../outside/x", "../outside/x", "..", ".", "sub/x", "/tmp/x", "a\\b", "x\0y", ""]
+
+
+@pytest.mark.parametrize("name", BAD_NAMES)
+def test_a_name_that_leaves_the_folders_is_refused(pytester, name):
+    outside = pytester.path / "outside"
+    outside.mkdir()
+    (outside / "x-important.txt").write_text("not the plugin's")
+    pytester.makepyfile(test_inner=ARRAY_TEST.format(name=name))
+    for args in ((), ("--shadelab-update-baselines",)):
+        result = run(pytester, *args)
+        result.assert_outcomes(failed=1)
+        result.stdout.fnmatch_lines(["*ValueError: shadelab_regression.check: name * must be a plain file name*"])
+    assert (outside / "x-important.txt").read_text() == "not the plugin's"
+    written = {p.relative_to(pytester.path).as_posix() for p in pytester.path.rglob("*") if p.is_file()}
+    assert written == {"test_inner.py", "outside/x-important.txt"}, written
+
+
+def test_the_name_check_sees_an_escape(pytester, monkeypatch):
+    # The negative control: with the name check switched off for the inner session (it runs in this process),
+    # "../outside/x" writes its baseline into outside/, next to the unrelated file: the check above would see it.
+    import shadelab.pytest_plugin
+
+    outside = pytester.path / "outside"
+    outside.mkdir()
+    (outside / "x-important.txt").write_text("not the plugin's")
+    monkeypatch.setattr(shadelab.pytest_plugin, "_check_name", lambda name: name)
+    pytester.makepyfile(test_inner=ARRAY_TEST.format(name="../outside/x"))
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    assert (outside / "x.png").exists() and (outside / "x.json").exists()
+
+
+def test_clean_up_deletes_only_the_checks_own_evidence(pytester):
+    pytester.makepyfile(test_inner=ARRAY_TEST.format(name="x"))
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    evidence = pytester.path / "shadelab-evidence" / "test_render"
+    evidence.mkdir(parents=True)
+    own = [evidence / f"x-{suffix}" for suffix in ("render.png", "baseline.png", "heat.png", "report.json")]
+    others = [evidence / "x-b-render.png",  # check "x-b"'s evidence
+              evidence / "x-notes.txt", evidence / "x-*", evidence / "y-render.png"]
+    for path in own + others:
+        path.write_text("old")
+    # The negative control: the old clean-up, evidence.glob("x-*"), would have taken all but y's.
+    assert set(evidence.glob("x-*")) == set(own) | set(others[:3])
+    run(pytester).assert_outcomes(passed=1)
+    assert not any(path.exists() for path in own)
+    assert all(path.read_text() == "old" for path in others)

@@ -178,3 +178,51 @@ def test_load_errors_name_the_file(out_dir):
     bad.write_text('{"lights": [}')
     with pytest.raises(ValueError, match=r"bad\.json: line 1, column 13"):
         shadelab.Scene.load(bad)
+
+
+# -- the list views' pop, reverse and clear ----------------------------------------------------------------------
+
+# Every list view the package has (scene._CONTAINERS), each in a scene with three entries or more.
+@pytest.mark.parametrize("name,file", [("objects", "default.json"), ("lights", "three-lights.json")])
+def test_pop_returns_the_removed_entry_as_a_copy_that_stays_valid(source_dir, name, file):
+    scene = shadelab.Scene.load(source_dir / "assets" / "scenes" / file)
+    view = getattr(scene, name)
+    entries = view.to_list()
+    assert len(entries) >= 3
+    first = view.pop(0)
+    assert first == entries[0] and view.to_list() == entries[1:]
+    last = view.pop()
+    assert last == entries[-1] and view.to_list() == entries[1:-1]
+    view.pop(0)  # later edits leave the copies as they were
+    scene.model = "blinn-phong"
+    assert first == entries[0] and last == entries[-1]
+    view.insert(0, first)  # and they go back in as entries
+    assert view.to_list()[0] == entries[0]
+    with pytest.raises(IndexError, match=rf"^{name}\[99\]: there are"):
+        view.pop(99)
+
+
+def test_the_pop_check_sees_the_views_moving(source_dir):
+    # The negative control: MutableSequence's own pop, which the views inherited, returns a view by position:
+    # after the removal it shows the next object, and the last one's raises as soon as it is used.
+    from collections.abc import MutableSequence
+
+    scene = shadelab.Scene.load(source_dir / "assets" / "scenes" / "default.json")
+    entries = scene.objects.to_list()
+    moved = MutableSequence.pop(scene.objects, 0)
+    assert moved != entries[0] and moved == entries[1]
+    gone = MutableSequence.pop(scene.objects)
+    with pytest.raises(IndexError):
+        gone.to_dict()
+
+
+def test_reverse_and_clear_edit_the_list_in_one_step(source_dir):
+    scene = shadelab.Scene.load(source_dir / "assets" / "scenes" / "three-lights.json")
+    lights = scene.lights.to_list()
+    assert len(lights) == 3
+    scene.lights.reverse()  # MutableSequence's reverse copied views it had already overwritten: a, b, a
+    assert scene.lights.to_list() == lights[::-1]
+    # (Objects keep the reader's order, spheres, planes, meshes, whatever order they are given in.)
+    scene.lights.clear()
+    scene.objects.clear()
+    assert scene.lights.to_list() == [] and scene.objects.to_list() == []

@@ -21,7 +21,7 @@ STUB = PACKAGE / "_shadelab.pyi"
 SIZE = (24, 16)
 
 KEYWORDS = {"renderer": "raster", "spp": None, "encoding": "srgb", "depth": None, "threads": 0, "coverage": False,
-            "time_limit": None, "estimator": None, "light_paths": None}
+            "time_limit": None, "estimator": None, "light_paths": None, "max_memory": None}
 
 
 @pytest.fixture(scope="module")
@@ -267,7 +267,9 @@ _TYPES = {
     "numpy.ndarray[numpy.float32]": {"ArrayLike", "NDArray[np.float32]"},
     "shadelab._shadelab.Image": {"Image"}, "shadelab._shadelab._Scene": {"_Scene"},
     "tuple": {"tuple[...]"}, "dict": {"dict[...]"}, "handle": {"dict[...]"},
-    "object": {"dict[...]", "NDArray[np.uint32] | None"},  # what the binding returns as a py::object
+    # What the binding returns as a py::object, or takes as one to check its type itself (a one-line TypeError).
+    "object": {"dict[...]", "NDArray[np.uint32] | None", "StrPath", "EncodingName", "MemorySize | None",
+               "tuple[...]"},
 }
 
 

@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 import shadelab
 import shadelab.lighting
 import shadelab.plots
-from shadelab.typing import RendererName, SceneLike, Size
+from shadelab.typing import MemorySize, RendererName, SceneLike, Size
 
 
 def render_all(scenes: list[SceneLike], size: Size, renderer: RendererName) -> list[shadelab.Image]:
@@ -35,7 +35,10 @@ def main(scene_path: str, out_dir: Path) -> int:
     raster = shadelab.render(scene, (32, 24), coverage=True)
     traced = shadelab.render(scene, "32x24", renderer="trace", spp=4, encoding="srgb", depth=1, threads=2,
                              coverage=True)
-    path = scene.render((32, 24), renderer="path", spp=2, encoding="linear", depth=None, threads=0)
+    path = scene.render((32, 24), renderer="path", spp=2, encoding="linear", depth=None, threads=0,
+                        max_memory="1G")
+    limit: MemorySize = 1 << 30
+    assert shadelab.render(scene, (8, 6), renderer="trace", max_memory=limit).size == (8, 6)
     floats: NDArray[np.float32] = np.asarray(raster, dtype=np.float32)
     pixels: NDArray[np.uint8] = traced.to_uint8()
     width, height = raster.size

@@ -17,6 +17,7 @@ def mistakes(scene: shadelab.Scene, name: str) -> None:
     shadelab.render(42)  # error: arg-type
     scene.render((8, 8), depth="deep")  # error: arg-type
     shadelab.Renderer(backend="vulkan")  # error: arg-type
+    shadelab.render(scene, (64, 64), max_memory=1.5)  # error: arg-type
     width: str = shadelab.render(scene).width  # error: assignment
     shadelab.render(scene, coverage=True).coverage.max()  # error: union-attr
     scene.base_dir = "elsewhere"  # error: misc
