@@ -612,3 +612,23 @@ TEST(HostileInput, MessagesAreOneLineOfPrintableUtf8) {
     EXPECT_EQ(std::count(nl.out.begin(), nl.out.end(), '\n'), 1) << nl.out;  // the split gave three lines
     EXPECT_NE(nl.out.find("cannot read \"x%0Ay\\nz.png\""), std::string::npos) << nl.out;
 }
+
+TEST(HostileInput, ModelLoadIsHeldToTheMemoryBudgetBeforeExpanding) {
+    // 2^18 × 47 = 12,320,768 triangles: under the 16 M triangle limit, so it once loaded to 1.2 GB before
+    // --max-memory 512M refused the render; now the budget lowers the triangle limit and the load never starts.
+    const std::string dir = folder("dag_budget");
+    writeText(dir + "/dag.gltf", dagGltf(18));
+    const Result r =
+        run({"render", dir + "/dag.gltf", "-o", dir + "/out.png", "--size", "64x48", "--max-memory", "512M"});
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("12320768 triangles"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("the most 512 MiB (--max-memory) can load"), std::string::npos) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_LT(r.peakMiB, 200.0) << "refused from the accessor counts, before any vertex";
+    EXPECT_FALSE(fs::exists(dir + "/out.png"));
+    // Negative control: the same graph 8 levels deep renders under the same budget.
+    writeText(dir + "/small.gltf", dagGltf(8));
+    const Result ok =
+        run({"render", dir + "/small.gltf", "-o", dir + "/small.png", "--size", "64x48", "--max-memory", "512M"});
+    EXPECT_EQ(ok.code, 0) << ok.out;
+}

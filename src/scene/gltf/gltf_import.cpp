@@ -133,7 +133,8 @@ public:
                 "the model places " + std::to_string(planned) + " triangles once its node hierarchy is expanded" +
                     (trianglesBefore_ ? " (and the scene's other models " + std::to_string(trianglesBefore_) + ")"
                                       : std::string()) +
-                    ", which exceeds the limit of " + std::to_string(limits_.maxTriangles) + " triangles");
+                    ", which exceeds the limit of " + std::to_string(limits_.maxTriangles) + " triangles" +
+                    limits_.maxTrianglesWhy);
         for (int r : roots) visit(size_t(r), transform, 0);
 
         // KHR_lights_punctual intensities are candela (point) or lux (directional); the lighting contract has
@@ -364,7 +365,8 @@ private:
                   uint64_t(indexCount) * 3 * sizeof(uint32_t);
         if (triangles_ > limits_.maxTriangles)
             throw InputError(file_, where,
-                             "the model exceeds the limit of " + std::to_string(limits_.maxTriangles) + " triangles");
+                             "the model exceeds the limit of " + std::to_string(limits_.maxTriangles) + " triangles" +
+                                 limits_.maxTrianglesWhy);
         if (bytes_ > limits_.maxMeshBytes)
             throw InputError(file_, where,
                              "the model needs more than the limit of " + std::to_string(limits_.maxMeshBytes) +

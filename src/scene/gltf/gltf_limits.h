@@ -21,6 +21,7 @@ struct GltfLimits {
                                                      // its header before decoding: a 1.5 KB JPEG may claim 8000²
     uint64_t maxTextureBytes = uint64_t(512) << 20;  // decoded texels per model (8-bit RGBA, with mips)
     uint64_t maxTriangles = 16'000'000;              // triangles over every primitive instance, whole scene
+    std::string maxTrianglesWhy;                     // what lowered maxTriangles, for the message ("" = the default)
     uint64_t maxMeshBytes = uint64_t(4) << 30;       // vertex and index memory the import may allocate, bytes
 };
 

@@ -444,7 +444,10 @@ TEST(PathTimeLimit, StopsAtAWholeSampleCount) {
     const PathOutput out = pathTraceImage(std::make_shared<const TraceScene>(scene), s);
     EXPECT_GE(out.spp, 1);
     EXPECT_LT(out.spp, 100000);
-    EXPECT_GT(out.meanStandardError8, 0.0);
+    // The standard error needs two samples; a slow (sanitizer, loaded) machine may finish only one in time.
+    if (out.spp >= 2) {
+        EXPECT_GT(out.meanStandardError8, 0.0);
+    }
 }
 
 }  // namespace
