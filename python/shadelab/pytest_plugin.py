@@ -22,7 +22,6 @@ from __future__ import annotations
 import json
 import os
 import re
-import shutil
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Mapping
 
@@ -72,9 +71,8 @@ def _check_name(name: object) -> str:
 
 
 def _write_json(path: Path, data: Any) -> None:
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(data, indent=2) + "\n")
-    os.replace(tmp, path)
+    # The binary's atomic writer and its rules: never over a file a live scene reads, never a device.
+    shadelab._shadelab._write_file(os.fspath(path), (json.dumps(data, indent=2) + "\n").encode())
 
 
 class ImageRegression:
@@ -129,7 +127,7 @@ class ImageRegression:
         if not report.passed:
             evidence.mkdir(parents=True, exist_ok=True)
             image.save(f"{stem}-render.png")
-            shutil.copyfile(baseline, f"{stem}-baseline.png")
+            shadelab._shadelab._write_file(f"{stem}-baseline.png", Path(baseline).read_bytes())
             report.heatmap.save(f"{stem}-heat.png")
             _write_json(Path(f"{stem}-report.json"), report.report)
             pytest.fail(f"{name}: the render differs from {baseline}:\n{report.summary}"

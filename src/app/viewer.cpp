@@ -297,6 +297,12 @@ void Viewer::updateReference() {
     reference_->request(state_.scene, renderW_, renderH_, state_.referenceRevision,
                         comparing ? comparisonDepth(state_.scene) : -1);
     reference_->update();
+    // Once per finished reference: pixels with no finite value are said on the status line (no silent black).
+    if (reference_->complete() && reference_->revision() == state_.referenceRevision &&
+        finiteCheckedRevision_ != state_.referenceRevision) {
+        finiteCheckedRevision_ = state_.referenceRevision;
+        toPixels(reference_->image(), "traced image");
+    }
 }
 
 // A click probes its pixel and anchors the probe to the surface point it found; from then on the probe

@@ -148,6 +148,7 @@ private:
     std::optional<CompareResult> metrics_;
     std::string metricsWords_;  // where they differ, in plain words (compare/difference_sites.h)
     uint64_t metricsRevision_ = 0;
+    uint64_t finiteCheckedRevision_ = 0;  // the reference revision whose finished image was checked for NaN
 
     // Input.
     static constexpr float kMarkerPickRadius = 12.0f;  // window units at UI scale 1

@@ -206,20 +206,46 @@ In Jupyter an image shows itself.)")
                 {ssize_t(sizeof(float)) * 4 * f.width, ssize_t(sizeof(float)) * 4, ssize_t(sizeof(float))},
                 /*readonly=*/true);
         })
-        .def_property_readonly("width", [](const ImageData& i) { return i.pixels.width; })
-        .def_property_readonly("height", [](const ImageData& i) { return i.pixels.height; })
+        .def_property_readonly("width",
+                               [](const ImagePtr& held) {
+                                   const ImageData& i = *held;
+                                   return i.pixels.width;
+                               })
+        .def_property_readonly("height",
+                               [](const ImagePtr& held) {
+                                   const ImageData& i = *held;
+                                   return i.pixels.height;
+                               })
         .def_property_readonly(
-            "size", [](const ImageData& i) { return py::make_tuple(i.pixels.width, i.pixels.height); },
+            "size",
+            [](const ImagePtr& held) {
+                const ImageData& i = *held;
+                return py::make_tuple(i.pixels.width, i.pixels.height);
+            },
             "(width, height), as render(size=...) takes it")
         .def_property_readonly(
-            "shape", [](const ImageData& i) { return py::make_tuple(i.pixels.height, i.pixels.width, 3); },
+            "shape",
+            [](const ImagePtr& held) {
+                const ImageData& i = *held;
+                return py::make_tuple(i.pixels.height, i.pixels.width, 3);
+            },
             "(H, W, 3): the shape of np.asarray(image)")
-        .def_property_readonly("encoding", [](const ImageData& i) { return std::string(toString(i.encoding)); })
+        .def_property_readonly("encoding",
+                               [](const ImagePtr& held) {
+                                   const ImageData& i = *held;
+                                   return std::string(toString(i.encoding));
+                               })
         .def_property_readonly(
-            "source", [](const ImageData& i) { return i.source; }, "'raster', 'trace', 'path', 'file' or 'array'")
+            "source",
+            [](const ImagePtr& held) {
+                const ImageData& i = *held;
+                return i.source;
+            },
+            "'raster', 'trace', 'path', 'file' or 'array'")
         .def_property_readonly(
             "coverage",
-            [](const ImageData& i) -> py::object {
+            [](const ImagePtr& held) -> py::object {
+                const ImageData& i = *held;
                 if (i.coverage.empty()) return py::none();
                 py::array_t<uint32_t> out({size_t(i.pixels.height), size_t(i.pixels.width)});
                 std::memcpy(out.mutable_data(), i.coverage.data(), i.coverage.size() * sizeof(uint32_t));
@@ -228,7 +254,8 @@ In Jupyter an image shows itself.)")
             "Per-pixel object ids (uint32, (H, W); 0 = background) when rendered with coverage=True, else None")
         .def_property_readonly(
             "timings",
-            [](const ImageData& i) {
+            [](const ImagePtr& held) {
+                const ImageData& i = *held;
                 py::dict d;
                 d["draw_ms"] = i.drawMs;
                 d["read_ms"] = i.readMs;
@@ -236,17 +263,31 @@ In Jupyter an image shows itself.)")
             },
             "Milliseconds: raster draw (finished) and readback + conversion; trace: tracing and conversion")
         .def_property_readonly(
-            "non_finite_pixels", [](const ImageData& i) { return i.nonFinite; },
+            "non_finite_pixels",
+            [](const ImagePtr& held) {
+                const ImageData& i = *held;
+                return i.nonFinite;
+            },
             "Pixels whose linear value had a NaN or an infinity (written black or white); render warns when > 0")
         .def_property_readonly("_non_finite_message",
-                               [](const ImageData& i) {
+                               [](const ImagePtr& held) {
+                                   const ImageData& i = *held;
                                    return nonFiniteMessage(i.nonFinite,
                                                            uint64_t(i.pixels.width) * uint64_t(i.pixels.height));
                                })
         .def("to_uint8", &uint8Array, "The 8-bit pixels, shape (H, W, 3) (or 4 for an RGBA file), a new array")
         .def(
-            "to_png", [](const ImageData& i) { return pngBytes(i); }, "The PNG file's bytes")
-        .def("_repr_png_", [](const ImageData& i) { return pngBytes(i); })
+            "to_png",
+            [](const ImagePtr& held) {
+                const ImageData& i = *held;
+                return pngBytes(i);
+            },
+            "The PNG file's bytes")
+        .def("_repr_png_",
+             [](const ImagePtr& held) {
+                 const ImageData& i = *held;
+                 return pngBytes(i);
+             })
         .def(
             "save",
             [](const ImageData& i, const py::object& pathObject) {
@@ -284,12 +325,14 @@ In Jupyter an image shows itself.)")
             py::arg("array"), py::arg("encoding") = "srgb",
             "uint8 (H, W, 3|4): the pixels as they are; float (H, W, 3|4): linear RGB, encoded with `encoding`")
         .def("__repr__",
-             [](const ImageData& i) {
+             [](const ImagePtr& held) {
+                 const ImageData& i = *held;
                  return "<shadelab.Image " + std::to_string(i.pixels.width) + "x" + std::to_string(i.pixels.height) +
                         " " + toString(i.encoding) + " from " + i.source + ">";
              })
         .def(py::pickle(
-            [](const ImageData& i) -> py::object {  // a tuple; typed as the state __setstate__ checks
+            [](const ImagePtr& held) -> py::object {
+                const ImageData& i = *held;  // a tuple; typed as the state __setstate__ checks
                 return py::make_tuple(i.pixels.width, i.pixels.height, i.pixels.channels, rawBytes(i.pixels.data),
                                       rawBytes(i.linear.rgba), std::string(toString(i.encoding)), i.source,
                                       rawBytes(i.coverage), i.drawMs, i.readMs);

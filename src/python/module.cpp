@@ -4,6 +4,8 @@
 #include "python/bindings.h"
 #include "util/input_error.h"
 
+#include <string>
+
 namespace py = pybind11;
 
 PYBIND11_MODULE(_shadelab, m) {
@@ -22,6 +24,15 @@ PYBIND11_MODULE(_shadelab, m) {
             PyErr_SetString(PyExc_ValueError, e.what());
         } catch (const shadelab::gl::ContextError& e) {
             PyErr_SetString(contextError.ptr(), e.what());
+        } catch (const py::cast_error& e) {
+            // An object made by __new__ alone (a pickle whose state is None skips __setstate__) holds nothing:
+            // its methods take the holder, which pybind11 refuses to cast. Say so in one line.
+            const std::string what = e.what();
+            PyErr_SetString(PyExc_TypeError,
+                            what.find("non-held to held") != std::string::npos
+                                ? "this shadelab object was never initialised (made by __new__ without __init__ or "
+                                  "__setstate__)"
+                                : what.c_str());
         }
     });
 

@@ -190,7 +190,7 @@ def test_the_tampered_pickle_check_sees_an_abort(out_dir):
     ({"renderer": 3}, TypeError, "renderer: expected a string, got int"),
     ({"encoding": None}, TypeError, "encoding: expected a string, got NoneType"),
     ({"renderer": "path", "time_limit": "1"}, TypeError, "time_limit: expected a number, got str"),
-    ({"renderer": "path", "time_limit": float("nan")}, ValueError, "time_limit: must be in [0, 1e7] seconds, got nan"),
+    ({"renderer": "path", "time_limit": float("nan")}, ValueError, "time_limit: must be in [0.001, 1e7] seconds (leave it out for no limit), got nan"),
     ({"renderer": "path", "estimator": 1}, TypeError, "estimator: expected a string, got int"),
     ({"size": (float("inf"), 8)}, ValueError, "size: expected (width, height) or 'WxH', got (inf, 8)"),
     ({"max_memory": 1.5}, TypeError, "max_memory: expected a number of bytes, a size such as '512M' or None, got float"),
