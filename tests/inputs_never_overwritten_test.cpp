@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -121,17 +122,19 @@ TEST(InputsNeverOverwritten, ScriptActionsRefuseTheSceneItsFilesAndTheScript) {
     const std::string script = f.dir + "/script.json";
     std::vector<std::string> inputs = inputsOf(f);
     inputs.push_back(script);
-    for (const std::string& target : inputs) {
-        for (const char* action : {"screenshot", "windowScreenshot", "render", "probeReport"}) {
-            std::ofstream(script) << R"({"actions": [{"frame": 1, "action": "probe", "x": 32, "y": 24}, )"
-                                  << R"({"frame": 1, "action": ")" << action << R"(", "path": ")" << target
-                                  << R"("}]})";
-            const std::vector<std::string> before = snapshot(inputs);
-            const Result r = test::view(f.scene + " --size 64x48 --frames 3 --script " + script);
-            EXPECT_EQ(r.code, 1) << action << " onto " << target << ": " << r.out;
-            EXPECT_NE(r.out.find("refusing to overwrite an input"), std::string::npos) << action << ": " << r.out;
-            EXPECT_EQ(snapshot(inputs), before) << action << " onto " << target;
-        }
+    // Every input is a target and every writing action is tried, one viewer run each (a run ends at its first
+    // refusal): the actions rotate over the six inputs, so each meets at least one of them.
+    const char* actions[] = {"screenshot", "windowScreenshot", "render", "probeReport", "screenshot", "saveScene"};
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        const std::string& target = inputs[i];
+        const char* action = actions[i % std::size(actions)];
+        std::ofstream(script) << R"({"actions": [{"frame": 1, "action": "probe", "x": 32, "y": 24}, )"
+                              << R"({"frame": 1, "action": ")" << action << R"(", "path": ")" << target << R"("}]})";
+        const std::vector<std::string> before = snapshot(inputs);
+        const Result r = test::view(f.scene + " --size 64x48 --frames 3 --script " + script);
+        EXPECT_EQ(r.code, 1) << action << " onto " << target << ": " << r.out;
+        EXPECT_NE(r.out.find("refusing to overwrite an input"), std::string::npos) << action << ": " << r.out;
+        EXPECT_EQ(snapshot(inputs), before) << action << " onto " << target;
     }
     // Negative control: the same actions onto new files succeed.
     std::ofstream(script) << R"({"actions": [{"frame": 1, "action": "screenshot", "path": ")" << f.dir
