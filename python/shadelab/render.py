@@ -83,7 +83,7 @@ class Renderer:
             for any count; the rasterizer ignores it. The binary's --threads.
         coverage: also record per-pixel object ids (image.coverage, uint32, 0 = background), which compare()
             uses to mask silhouettes; default False.
-        time_limit: "path" only: stop after the last whole sample pass begun within this many seconds, 0..1e7;
+        time_limit: "path" only: stop after the last whole sample pass begun within this many seconds, 0.001..1e7;
             default None, no limit. The binary's --time-limit.
         estimator: "path" only: how emitters' light is sampled, "mis", "bsdf" or "light" (all converge to the
             same image, with different noise); default None, "mis". The binary's --estimator.
@@ -162,7 +162,7 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
         for any count; the rasterizer ignores it. The binary's --threads.
     coverage: also record per-pixel object ids (image.coverage, uint32, 0 = background), which compare()
         uses to mask silhouettes; default False.
-    time_limit: "path" only: stop after the last whole sample pass begun within this many seconds, 0..1e7;
+    time_limit: "path" only: stop after the last whole sample pass begun within this many seconds, 0.001..1e7;
         default None, no limit. The binary's --time-limit.
     estimator: "path" only: how emitters' light is sampled, "mis", "bsdf" or "light" (all converge to the
         same image, with different noise); default None, "mis". The binary's --estimator.
