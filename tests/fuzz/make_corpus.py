@@ -10,14 +10,23 @@ The seeds are small (a few KB) and valid, so that mutations start deep in each r
 bytes on every run (ctest's fuzz_corpus_reproducible compares them with tests/fuzz/corpus/). Regenerate with
     /usr/bin/python3 tests/fuzz/make_corpus.py --output tests/fuzz/corpus
 """
-import argparse, importlib.util, json, math, os, struct
+import argparse, importlib.util, json, os, struct
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-# The textured-asset generator's PNG writer, checker image, quad and glTF document builder.
-_spec = importlib.util.spec_from_file_location("make_texture_gltf",
-                                               os.path.join(HERE, "..", "..", "tools", "make_texture_gltf.py"))
-tex = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(tex)
+
+
+def _tool(name):
+    """One of tools/'s generators, as a module (they run as scripts; main() runs only from the command line)."""
+    spec = importlib.util.spec_from_file_location(name, os.path.join(HERE, "..", "..", "tools", name + ".py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+# The textured-asset generator's PNG writer, checker image, quad and glTF document builder; the sky generator's
+# RGBE packing and run-length encoding.
+tex = _tool("make_texture_gltf")
+sky = _tool("make_sky_hdr")
 
 
 def write(folder, name, data):
@@ -26,14 +35,7 @@ def write(folder, name, data):
 
 
 # .hdr ---------------------------------------------------------------------------------------------------
-def rgbe(r, g, b):
-    """Ward's float2rgbe (as tools/make_sky_hdr.py)."""
-    v = max(r, g, b)
-    if v < 1e-32:
-        return (0, 0, 0, 0)
-    m, e = math.frexp(v)
-    scale = m * 256.0 / v
-    return (int(r * scale), int(g * scale), int(b * scale), e + 128)
+rgbe = sky.rgbe
 
 
 def hdr_header(w, h, magic=b"#?RADIANCE", extra=b""):
@@ -48,26 +50,7 @@ def rle_scanline(pixels):
     """A new-style run-length scanline: 2, 2, width, then the R, G, B and E planes, each as runs (count > 128)
     of four or more equal bytes and literals (count <= 128) between them."""
     w = len(pixels)
-    out = bytearray((2, 2, w >> 8, w & 0xFF))
-    for c in range(4):
-        plane = [p[c] for p in pixels]
-        i = 0
-        while i < w:
-            run = 1
-            while i + run < w and run < 127 and plane[i + run] == plane[i]:
-                run += 1
-            if run >= 4:
-                out += bytes((128 + run, plane[i]))
-                i += run
-                continue
-            start = i
-            while i < w and i - start < 128:
-                if i + 3 < w and plane[i] == plane[i + 1] == plane[i + 2] == plane[i + 3]:
-                    break
-                i += 1
-            out.append(i - start)
-            out += bytes(plane[start:i])
-    return bytes(out)
+    return bytes((2, 2, w >> 8, w & 0xFF)) + b"".join(sky.rle_plane([p[c] for p in pixels]) for c in range(4))
 
 
 def hdr_seeds(folder):
