@@ -206,42 +206,17 @@ In Jupyter an image shows itself.)")
                 {ssize_t(sizeof(float)) * 4 * f.width, ssize_t(sizeof(float)) * 4, ssize_t(sizeof(float))},
                 /*readonly=*/true);
         })
-        .def_property_readonly("width",
-                               [](const ImagePtr& held) {
-                                   const ImageData& i = *held;
-                                   return i.pixels.width;
-                               })
-        .def_property_readonly("height",
-                               [](const ImagePtr& held) {
-                                   const ImageData& i = *held;
-                                   return i.pixels.height;
-                               })
+        .def_property_readonly("width", [](const ImagePtr& held) { return held->pixels.width; })
+        .def_property_readonly("height", [](const ImagePtr& held) { return held->pixels.height; })
         .def_property_readonly(
-            "size",
-            [](const ImagePtr& held) {
-                const ImageData& i = *held;
-                return py::make_tuple(i.pixels.width, i.pixels.height);
-            },
+            "size", [](const ImagePtr& held) { return py::make_tuple(held->pixels.width, held->pixels.height); },
             "(width, height), as render(size=...) takes it")
         .def_property_readonly(
-            "shape",
-            [](const ImagePtr& held) {
-                const ImageData& i = *held;
-                return py::make_tuple(i.pixels.height, i.pixels.width, 3);
-            },
+            "shape", [](const ImagePtr& held) { return py::make_tuple(held->pixels.height, held->pixels.width, 3); },
             "(H, W, 3): the shape of np.asarray(image)")
-        .def_property_readonly("encoding",
-                               [](const ImagePtr& held) {
-                                   const ImageData& i = *held;
-                                   return std::string(toString(i.encoding));
-                               })
+        .def_property_readonly("encoding", [](const ImagePtr& held) { return std::string(toString(held->encoding)); })
         .def_property_readonly(
-            "source",
-            [](const ImagePtr& held) {
-                const ImageData& i = *held;
-                return i.source;
-            },
-            "'raster', 'trace', 'path', 'file' or 'array'")
+            "source", [](const ImagePtr& held) { return held->source; }, "'raster', 'trace', 'path', 'file' or 'array'")
         .def_property_readonly(
             "coverage",
             [](const ImagePtr& held) -> py::object {
@@ -263,31 +238,17 @@ In Jupyter an image shows itself.)")
             },
             "Milliseconds: raster draw (finished) and readback + conversion; trace: tracing and conversion")
         .def_property_readonly(
-            "non_finite_pixels",
-            [](const ImagePtr& held) {
-                const ImageData& i = *held;
-                return i.nonFinite;
-            },
+            "non_finite_pixels", [](const ImagePtr& held) { return held->nonFinite; },
             "Pixels whose linear value had a NaN or an infinity (written black or white); render warns when > 0")
         .def_property_readonly("_non_finite_message",
                                [](const ImagePtr& held) {
-                                   const ImageData& i = *held;
-                                   return nonFiniteMessage(i.nonFinite,
-                                                           uint64_t(i.pixels.width) * uint64_t(i.pixels.height));
+                                   return nonFiniteMessage(
+                                       held->nonFinite, uint64_t(held->pixels.width) * uint64_t(held->pixels.height));
                                })
         .def("to_uint8", &uint8Array, "The 8-bit pixels, shape (H, W, 3) (or 4 for an RGBA file), a new array")
         .def(
-            "to_png",
-            [](const ImagePtr& held) {
-                const ImageData& i = *held;
-                return pngBytes(i);
-            },
-            "The PNG file's bytes")
-        .def("_repr_png_",
-             [](const ImagePtr& held) {
-                 const ImageData& i = *held;
-                 return pngBytes(i);
-             })
+            "to_png", [](const ImagePtr& held) { return pngBytes(*held); }, "The PNG file's bytes")
+        .def("_repr_png_", [](const ImagePtr& held) { return pngBytes(*held); })
         .def(
             "save",
             [](const ImageData& i, const py::object& pathObject) {
@@ -326,9 +287,9 @@ In Jupyter an image shows itself.)")
             "uint8 (H, W, 3|4): the pixels as they are; float (H, W, 3|4): linear RGB, encoded with `encoding`")
         .def("__repr__",
              [](const ImagePtr& held) {
-                 const ImageData& i = *held;
-                 return "<shadelab.Image " + std::to_string(i.pixels.width) + "x" + std::to_string(i.pixels.height) +
-                        " " + toString(i.encoding) + " from " + i.source + ">";
+                 return "<shadelab.Image " + std::to_string(held->pixels.width) + "x" +
+                        std::to_string(held->pixels.height) + " " + toString(held->encoding) + " from " + held->source +
+                        ">";
              })
         .def(py::pickle(
             [](const ImagePtr& held) -> py::object {
