@@ -110,10 +110,14 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
                 if (sc.terms.shadows && whitted_.visibility(s, l) <= 0.0f) continue;
                 add(beta * f * kPi * shading::lightIntensityAt(l.color, isPoint, l.attenuation, L), scattered + 1);
             }
-            // One sample of the emissive objects and the environment.
+            // One sample of the emissive objects and the environment, drawn from the shadow ray's own origin:
+            // a direction aimed from s.P but sent from `above` meets a nearby emitter early, obliquely, and
+            // the emitter then shadows itself (light sampling was half the irradiance 0.02 under a sphere
+            // lamp). From `above` the ray reaches the sampled point at the sampled distance, and the density
+            // is the one pdfHit gives the BSDF's rays, which start there too.
             if (!emitters_.empty() && settings_.estimator != PathEstimator::Bsdf) {
                 if (const std::optional<EmitterSample> e =
-                        emitters_.sample(s.P, rng.draw(uint32_t(bounce), kGroupEmitter))) {
+                        emitters_.sample(above, rng.draw(uint32_t(bounce), kGroupEmitter))) {
                     const glm::vec3 f = glm::dot(e->wi, s.Nf) > 0.0f ? bsdf.evalCos(e->wi) : glm::vec3(0.0f);
                     if (positive(f)) {
                         const float tMax = e->environment ? INFINITY : e->distance * (1.0f - 1e-3f) - eps;
