@@ -5,9 +5,9 @@
 
 #include "shading/dfg_lut.h"
 #include "shading/ibl_lookup.h"
+#include "util/parallel_for.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <thread>
 
@@ -82,19 +82,6 @@ glm::vec3 sampleSource(const SourceLevel& s, glm::vec3 d) {
         r[k] = top + (bottom - top) * ty;
     }
     return r;
-}
-
-// Runs body(task) for task in [0, count) on `threads` workers.
-template <typename F>
-void parallelFor(int count, int threads, F body) {
-    std::atomic<int> next{0};
-    const auto work = [&] {
-        for (int t = next++; t < count; t = next++) body(t);
-    };
-    std::vector<std::thread> pool;
-    for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
 }
 
 // A GGX sample of one rough level in the frame N = V = R = +z: L, its N·L weight and its source mip.

@@ -54,8 +54,8 @@ double sphereIrradiance(const glm::dvec3& P, const glm::dvec3& n, const glm::dve
     const double d = glm::length(toC);
     const glm::dvec3 a = toC / d;
     const double alpha = std::asin(radius / d);
-    const glm::dvec3 t = glm::normalize(std::abs(a.x) < 0.9 ? glm::cross(a, glm::dvec3(1, 0, 0))
-                                                            : glm::cross(a, glm::dvec3(0, 1, 0)));
+    const glm::dvec3 t =
+        glm::normalize(std::abs(a.x) < 0.9 ? glm::cross(a, glm::dvec3(1, 0, 0)) : glm::cross(a, glm::dvec3(0, 1, 0)));
     const glm::dvec3 b = glm::cross(a, t);
     const int nt = 800, np = 1600;
     double sum = 0.0;
@@ -102,8 +102,8 @@ Estimate renderPoint(const Scene& scene, PathEstimator estimator, int spp) {
 struct Receiver {
     std::string what;
     Scene scene;
-    double expected = 0.0;    // Lo of the floor point
-    int lightSamples = 1;     // times more samples for light sampling alone, where it is noisy
+    double expected = 0.0;  // Lo of the floor point
+    int lightSamples = 1;   // times more samples for light sampling alone, where it is noisy
 };
 
 // How many samples each estimator needs for about 0.5 % standard error here: BSDF sampling finds a small
@@ -119,7 +119,8 @@ std::vector<Receiver> sphereReceivers() {
     const float radius = 0.2f;
     const struct {
         float gap, h;
-    } cases[] = {{0.02f, 0.0f}, {0.02f, 0.1f}, {0.02f, 0.3f}, {0.1f, 0.2f}, {0.5f, 0.4f}, {-0.05f, 0.2f}, {-0.05f, 0.5f}};
+    } cases[] = {{0.02f, 0.0f}, {0.02f, 0.1f},  {0.02f, 0.3f}, {0.1f, 0.2f},
+                 {0.5f, 0.4f},  {-0.05f, 0.2f}, {-0.05f, 0.5f}};
     for (const auto& c : cases) {
         const glm::vec3 centre(0.0f, radius + c.gap, 0.0f), P(c.h, 0.0f, 0.0f);
         Receiver r;
@@ -158,8 +159,8 @@ std::vector<Receiver> squareReceivers() {
             lamp.parts[0].material = emitter();
             r.scene.meshes.push_back(lamp);
             r.expected = kAlbedo / kPiD *
-                         polygonIrradiance(P, glm::dvec3(0, 1, 0), {glm::dvec3(c[0]), glm::dvec3(c[1]),
-                                                                    glm::dvec3(c[2]), glm::dvec3(c[3])});
+                         polygonIrradiance(P, glm::dvec3(0, 1, 0),
+                                           {glm::dvec3(c[0]), glm::dvec3(c[1]), glm::dvec3(c[2]), glm::dvec3(c[3])});
             out.push_back(std::move(r));
         }
     return out;
@@ -172,12 +173,12 @@ void expectClosedForm(const std::vector<Receiver>& receivers, PathEstimator e) {
         const Estimate est = renderPoint(r.scene, e, samplesFor(e, r));
         const double z = (est.mean - r.expected) / est.se, zBright = (est.mean - 1.03 * r.expected) / est.se;
         std::printf("%-5s %-26s %.5f ± %.5f, closed form %.5f (%+.2f %%, z %+.2f; against +3 %%: z %+.2f)\n",
-                    toString(e), r.what.c_str(), est.mean, est.se, r.expected, 100.0 * (est.mean / r.expected - 1.0),
-                    z, zBright);
+                    toString(e), r.what.c_str(), est.mean, est.se, r.expected, 100.0 * (est.mean / r.expected - 1.0), z,
+                    zBright);
         EXPECT_LT(std::abs(z), 3.0) << toString(e) << ", " << r.what << ": " << est.mean << " ± " << est.se
                                     << " against " << r.expected;
-        EXPECT_GT(std::abs(zBright), 3.0) << toString(e) << ", " << r.what
-                                          << ": the control (3 % brighter) is not told apart";
+        EXPECT_GT(std::abs(zBright), 3.0)
+            << toString(e) << ", " << r.what << ": the control (3 % brighter) is not told apart";
     }
 }
 

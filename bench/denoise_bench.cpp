@@ -1,0 +1,90 @@
+// denoise_bench: the path tracer's denoised preview on the Cornell box (assets/scenes/cornell.json).
+// Renders it at WxH with S samples per pixel on 2 threads, then times the first-hit passes and the denoiser
+// (medians of R runs), and, with a reference of REF samples per pixel (0: none), prints the relative RMSE of
+// the raw and the denoised image against it, and how many samples the raw image needs for the denoised
+// one's error. T sets the denoiser's threads (2). Usage: denoise_bench [R] [W] [H] [S] [REF] [scene] [T]
+#include "bench_timing.h"
+#include "scene/scene_load.h"
+#include "trace/first_hit_passes.h"
+#include "trace/path/path_denoise.h"
+#include "trace/path/path_render.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace shadelab;
+using shadelab::bench::Clock;
+using shadelab::bench::median;
+using shadelab::bench::msSince;
+
+// sqrt(Σ |a − r|² / Σ |r|²) over RGB: the error relative to the reference's own level.
+double relativeRmse(const ImageF& a, const ImageF& ref) {
+    double num = 0.0, den = 0.0;
+    for (size_t i = 0; i < a.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const double d = double(a.rgba[i]) - double(ref.rgba[i]);
+        num += d * d;
+        den += double(ref.rgba[i]) * ref.rgba[i];
+    }
+    return std::sqrt(num / den);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+    const int runs = argc > 1 ? std::atoi(argv[1]) : 9;
+    const int w = argc > 2 ? std::atoi(argv[2]) : 1280, h = argc > 3 ? std::atoi(argv[3]) : 720;
+    const int spp = argc > 4 ? std::atoi(argv[4]) : 16, refSpp = argc > 5 ? std::atoi(argv[5]) : 0;
+    const std::string path =
+        argc > 6 && *argv[6] ? argv[6] : std::string(SHADELAB_SOURCE_DIR) + "/assets/scenes/cornell.json";
+    DenoiseSettings ds;
+    ds.threads = argc > 7 ? std::atoi(argv[7]) : 2;
+    const auto scene = std::make_shared<const trace::TraceScene>(loadScene(path));
+    trace::PathSettings ps;
+    ps.width = w;
+    ps.height = h;
+    ps.spp = spp;
+    ps.threads = 2;
+    Clock::time_point t0 = Clock::now();
+    trace::PathRender render(scene, ps);
+    render.addSamples(spp);
+    std::printf("%s at %dx%d, %d spp on 2 threads: traced in %.0f ms\n", path.c_str(), w, h, spp, msSince(t0));
+
+    std::vector<double> passMs, denoiseMs;
+    SurfacePasses passes;
+    ImageF denoised;
+    for (int r = 0; r < runs; ++r) {
+        t0 = Clock::now();
+        passes = trace::firstHitPasses(*scene, w, h, 2);
+        passMs.push_back(msSince(t0));
+        t0 = Clock::now();
+        denoised = trace::denoisedImage(render, passes, ds);
+        denoiseMs.push_back(msSince(t0));
+    }
+    std::printf("first-hit passes: median %.1f ms (2 threads); denoise: median %.1f ms (%d runs, %d threads)\n",
+                median(passMs), median(denoiseMs), runs, ds.threads);
+    if (refSpp > 0) {
+        trace::PathSettings rs = ps;
+        rs.spp = refSpp;
+        rs.seed = 1;  // independent of the image under test
+        trace::PathRender ref(scene, rs);
+        t0 = Clock::now();
+        ref.addSamples(refSpp);
+        const ImageF refImage = ref.image();
+        const double raw = relativeRmse(render.image(), refImage), den = relativeRmse(denoised, refImage);
+        std::printf(
+            "reference %d spp (%.0f s); relative RMSE: raw %.4f, denoised %.4f (%.2f of raw; the raw image "
+            "needs about %.0f spp for it)\n",
+            refSpp, msSince(t0) / 1000.0, raw, den, den / raw, spp * (raw / den) * (raw / den));
+    }
+    return 0;
+} catch (const std::exception& e) {
+    std::fprintf(stderr, "denoise_bench: %s\n", e.what());
+    return 1;
+}
