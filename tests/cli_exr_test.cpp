@@ -87,8 +87,8 @@ TEST(CliExr, CompareAnExrWithItselfPassesAndWithAChangedRenderFails) {
     const std::string a = dir + "/a.exr", b = dir + "/b.exr";
     ASSERT_EQ(run("render " + kScene + " -o " + a + " --size 64x48").code, 0);
     ASSERT_EQ(run("render " + kScene + " -o " + b + " --size 64x48 --model blinn-phong").code, 0);
-    const Result same = run("compare " + a + " " + a + " --diff " + dir + "/same_heat.png --json " + dir +
-                            "/same.json");
+    const Result same =
+        run("compare " + a + " " + a + " --diff " + dir + "/same_heat.png --json " + dir + "/same.json");
     EXPECT_EQ(same.code, 0) << same.out;
     EXPECT_NE(same.out.find("linear RGB (OpenEXR)"), std::string::npos) << same.out;
     EXPECT_NE(same.out.find("verdict: PASS"), std::string::npos) << same.out;
@@ -103,8 +103,7 @@ TEST(CliExr, CompareAnExrWithItselfPassesAndWithAChangedRenderFails) {
     EXPECT_GT(lit, 0u) << "the heatmap shows the difference: " << dir << "/heat.png";
     EXPECT_NE(readAll(dir + "/r.json").find("\"verdict\": \"fail\""), std::string::npos);
     // The gates are flags: a wide enough one passes the same pair.
-    EXPECT_EQ(run("compare " + a + " " + b + " --rel-threshold 1e6 --rel-hard-max 1e6 --max-rel-rmse 1e6 -q").code,
-              0);
+    EXPECT_EQ(run("compare " + a + " " + b + " --rel-threshold 1e6 --rel-hard-max 1e6 --max-rel-rmse 1e6 -q").code, 0);
 }
 
 TEST(CliExr, NamesKindsAndFlagsAreChecked) {

@@ -90,7 +90,8 @@ LinearCompareResult compareLinear(const ImageF& a, const ImageF& b, const Linear
             r.overHardMax += rel > gates.hardMax;
             for (int c = 0; c < 3; ++c) {
                 if (!std::isfinite(pa[c]) || !std::isfinite(pb[c])) continue;
-                const double d = double(pa[c]) - double(pb[c]), m = 0.5 * (std::fabs(double(pa[c])) + std::fabs(double(pb[c])));
+                const double d = double(pa[c]) - double(pb[c]),
+                             m = 0.5 * (std::fabs(double(pa[c])) + std::fabs(double(pb[c])));
                 sumSq += d * d;
                 sumLevel += m * m;
                 ++samples;
@@ -101,7 +102,8 @@ LinearCompareResult compareLinear(const ImageF& a, const ImageF& b, const Linear
         r.level = std::sqrt(sumLevel / double(samples));
     }
     r.relativeRmse = r.rmse / std::max(gates.floor, r.level);
-    if (!(gates.floor > 0.0) && r.level == 0.0) r.relativeRmse = r.rmse == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+    if (!(gates.floor > 0.0) && r.level == 0.0)
+        r.relativeRmse = r.rmse == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
     {
         std::vector<float> sorted = r.relative;
         const double q = 1.0 - gates.maxFractionOver;
@@ -117,7 +119,8 @@ LinearCompareResult compareLinear(const ImageF& a, const ImageF& b, const Linear
         r.reasons.push_back(buf);
     }
     if (r.overHardMax > 0) {
-        std::snprintf(buf, sizeof buf, "%lld pixel(s) differ by more than the hard maximum %s; the largest %s at (%d, %d) %c",
+        std::snprintf(buf, sizeof buf,
+                      "%lld pixel(s) differ by more than the hard maximum %s; the largest %s at (%d, %d) %c",
                       (long long)r.overHardMax, percent(gates.hardMax).c_str(), percent(r.maxRelative).c_str(), r.maxX,
                       r.maxY, "RGB"[std::max(0, r.maxChannel)]);
         r.reasons.push_back(buf);

@@ -28,15 +28,15 @@ struct LinearCompareResult {
     int width = 0, height = 0;
     LinearGates gates;
     int64_t pixels = 0;
-    double rmse = 0.0;          // radiance, over finite pixel pairs and R G B
-    double level = 0.0;         // RMS((|a| + |b|) / 2), the same samples
-    double relativeRmse = 0.0;  // rmse / max(floor, level)
-    double maxRelative = 0.0;   // the largest per-pixel relative difference (+infinity: a non-finite mismatch)
-    int maxX = -1, maxY = -1;   // its first pixel (row-major); -1 when 0
-    int maxChannel = -1;        // 0..2 = R G B; -1 when 0
-    double percentile = 0.0;    // the per-pixel relative difference at the (1 − maxFractionOver) quantile
-    int64_t overThreshold = 0;  // pixels with relative difference > threshold
-    int64_t overHardMax = 0;    // pixels with relative difference > hardMax
+    double rmse = 0.0;                // radiance, over finite pixel pairs and R G B
+    double level = 0.0;               // RMS((|a| + |b|) / 2), the same samples
+    double relativeRmse = 0.0;        // rmse / max(floor, level)
+    double maxRelative = 0.0;         // the largest per-pixel relative difference (+infinity: a non-finite mismatch)
+    int maxX = -1, maxY = -1;         // its first pixel (row-major); -1 when 0
+    int maxChannel = -1;              // 0..2 = R G B; -1 when 0
+    double percentile = 0.0;          // the per-pixel relative difference at the (1 − maxFractionOver) quantile
+    int64_t overThreshold = 0;        // pixels with relative difference > threshold
+    int64_t overHardMax = 0;          // pixels with relative difference > hardMax
     int64_t nonFiniteMismatches = 0;  // pixels where a channel is NaN or infinite in one image and not the same
                                       // in the other (their relative difference is +infinity)
     std::vector<float> relative;      // width·height per-pixel relative differences, row 0 at the top

@@ -8,6 +8,8 @@
 #include "util/input_error.h"
 #include "util/read_file.h"
 
+#include <IexBaseExc.h>
+#include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -15,8 +17,6 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfVersion.h>
-#include <IexBaseExc.h>
-#include <Imath/half.h>
 
 #include <algorithm>
 #include <cctype>
@@ -202,17 +202,17 @@ ExrImage parseExr(const std::string& bytes, const std::string& name) {
         const Imath::Box2i dw = header.dataWindow();
         const int64_t w = int64_t(dw.max.x) - int64_t(dw.min.x) + 1, h = int64_t(dw.max.y) - int64_t(dw.min.y) + 1;
         if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
-            throw fail("data window of " + std::to_string(w) + "x" + std::to_string(h) + " pixels; each side must be 1.." +
-                       std::to_string(kMaxImageSide));
+            throw fail("data window of " + std::to_string(w) + "x" + std::to_string(h) +
+                       " pixels; each side must be 1.." + std::to_string(kMaxImageSide));
         // Channels grouped into layers by the name before their last '.'.
         std::map<std::string, std::vector<std::string>> layers;
         int count = 0;
         for (Imf::ChannelList::ConstIterator it = header.channels().begin(); it != header.channels().end(); ++it) {
-            if (++count > kMaxExrChannels)
-                throw fail("more than " + std::to_string(kMaxExrChannels) + " channels");
+            if (++count > kMaxExrChannels) throw fail("more than " + std::to_string(kMaxExrChannels) + " channels");
             const std::string full = it.name();
             if (it.channel().xSampling != 1 || it.channel().ySampling != 1)
-                throw fail("channel '" + full.substr(0, 64) + "' is subsampled; only full-resolution channels are read");
+                throw fail("channel '" + full.substr(0, 64) +
+                           "' is subsampled; only full-resolution channels are read");
             const size_t dot = full.rfind('.');
             const std::string layer = dot == std::string::npos ? std::string() : full.substr(0, dot);
             const std::string channel = dot == std::string::npos ? full : full.substr(dot + 1);

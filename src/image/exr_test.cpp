@@ -13,11 +13,11 @@
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 
+#include <gtest/gtest.h>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <gtest/gtest.h>
 #include <limits>
 #include <string>
 #include <vector>
@@ -34,9 +34,7 @@ std::string dirFor(const std::string& name) {
     return dir.string();
 }
 
-void writeBytes(const std::string& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
+void writeBytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
 // A float image with values a PNG cannot hold: above 1, tiny, negative, and many distinct mantissas.
 ImageF pattern(int w, int h) {
@@ -113,8 +111,8 @@ TEST(Exr, HalfRoundTripIsWithinHalfPrecision) {
     size_t inexact = 0;
     for (size_t i = 0; i < img.rgba.size(); ++i) {
         const float a = img.rgba[i], b = back.rgba[i];
-        const float bound = std::fabs(a) >= std::ldexp(1.0f, -14) ? std::fabs(a) * std::ldexp(1.0f, -11)
-                                                                  : std::ldexp(1.0f, -25);
+        const float bound =
+            std::fabs(a) >= std::ldexp(1.0f, -14) ? std::fabs(a) * std::ldexp(1.0f, -11) : std::ldexp(1.0f, -25);
         EXPECT_LE(std::fabs(a - b), bound) << "sample " << i << ": " << a << " -> " << b;
         inexact += a != b;
     }
@@ -142,8 +140,8 @@ TEST(Exr, LayersAreNamedAsDocumentedAndReadBackByName) {
     for (const ExrLayer& l : back.layers) layerNames.push_back(l.name);
     EXPECT_EQ(layerNames, (std::vector<std::string>{"", "albedo", "depth", "normal", "variance"}));
     const std::string bytes = readFile(dir + "/passes.exr");
-    for (const char* name : {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "depth.Z",
-                             "variance.R"})
+    for (const char* name :
+         {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "depth.Z", "variance.R"})
         EXPECT_NE(bytes.find(std::string(name) + '\0'), std::string::npos) << name << " missing from the header";
 
     for (const ExrLayer& given : img.layers) {
@@ -239,8 +237,8 @@ TEST(Exr, HostileFilesAreRefusedInOneLine) {
         for (int c = 0; c < 500; ++c) {
             const std::string name = "c" + std::to_string(c);
             header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-            frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(zeros.data()), sizeof(float),
-                                          2 * sizeof(float)));
+            frame.insert(
+                name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(zeros.data()), sizeof(float), 2 * sizeof(float)));
         }
         Imf::OutputFile out((dir + "/many.exr").c_str(), header);
         out.setFrameBuffer(frame);
