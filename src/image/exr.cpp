@@ -80,6 +80,11 @@ void limitOpenExr() {
 
 bool validName(const std::string& s) { return !s.empty() && s.find('.') == std::string::npos; }
 
+// A layer's name may nest ("left.albedo"), as EXR's multi-view naming does, but holds no empty part.
+bool validLayerName(const std::string& s) {
+    return !s.empty() && s.front() != '.' && s.back() != '.' && s.find("..") == std::string::npos;
+}
+
 std::string channelName(const std::string& layer, const std::string& channel) {
     return layer.empty() ? channel : layer + "." + channel;
 }
@@ -149,7 +154,7 @@ std::string encodeExr(const ExrImage& image, ExrPrecision precision) {
     std::vector<std::vector<Imath::half>> halves(precision == ExrPrecision::Half ? image.layers.size() : 0);
     for (size_t li = 0; li < image.layers.size(); ++li) {
         const ExrLayer& l = image.layers[li];
-        SHADELAB_CHECK(l.name.empty() || validName(l.name));
+        SHADELAB_CHECK(l.name.empty() || validLayerName(l.name));
         SHADELAB_CHECK(!l.channels.empty());
         SHADELAB_CHECK_EQ(l.samples.size(), pixels * l.channels.size());
         const size_t n = l.channels.size();
@@ -216,7 +221,7 @@ ExrImage parseExr(const std::string& bytes, const std::string& name) {
             const size_t dot = full.rfind('.');
             const std::string layer = dot == std::string::npos ? std::string() : full.substr(0, dot);
             const std::string channel = dot == std::string::npos ? full : full.substr(dot + 1);
-            if (channel.empty() || (dot != std::string::npos && layer.empty()))
+            if (channel.empty() || (dot != std::string::npos && !validLayerName(layer)))
                 throw fail("channel '" + full.substr(0, 64) + "' has an empty layer or channel name");
             layers[layer].push_back(channel);
         }
@@ -229,7 +234,6 @@ ExrImage parseExr(const std::string& bytes, const std::string& name) {
         ExrImage img;
         img.width = int(w);
         img.height = int(h);
-        Imf::FrameBuffer frame;
         const size_t pixels = size_t(w) * size_t(h);
         img.layers.reserve(layers.size());
         for (auto& [layerName, channels] : layers) {  // std::map: the colour layer ("") first, then by name
@@ -240,19 +244,30 @@ ExrImage parseExr(const std::string& bytes, const std::string& name) {
             ExrLayer l;
             l.name = layerName;
             l.channels = channels;
-            l.samples.assign(pixels * channels.size(), 0.0f);
+            // Reserved, not filled: the pages of rows not yet read are never touched, so a small file that
+            // declares a large image and then lacks its pixels costs the rows it has, not the ones it claims.
+            l.samples.reserve(pixels * channels.size());
             img.layers.push_back(std::move(l));
         }
-        for (ExrLayer& l : img.layers) {
-            const size_t n = l.channels.size();
-            for (size_t c = 0; c < n; ++c)
-                // Slice::Make places the buffer's first sample at the data window's origin.
-                frame.insert(channelName(l.name, l.channels[c]),
-                             Imf::Slice::Make(Imf::FLOAT, l.samples.data() + c, dw, sizeof(float) * n,
-                                              sizeof(float) * n * size_t(w)));
+        // Bands of rows (whole tiles for a tiled file, so that none is decoded twice), each read into the rows
+        // the vectors have just grown by; their storage was reserved above, so no pointer moves.
+        const int64_t band =
+            header.hasTileDescription() ? std::max<int64_t>(64, int64_t(header.tileDescription().ySize)) : 64;
+        for (int64_t y0 = dw.min.y; y0 <= dw.max.y; y0 += band) {
+            const int64_t y1 = std::min<int64_t>(dw.max.y, y0 + band - 1);
+            Imf::FrameBuffer frame;
+            for (ExrLayer& l : img.layers) {
+                const size_t n = l.channels.size();
+                l.samples.resize(size_t(y1 - dw.min.y + 1) * size_t(w) * n);
+                for (size_t c = 0; c < n; ++c)
+                    // Slice::Make places the buffer's first sample at the data window's origin.
+                    frame.insert(channelName(l.name, l.channels[c]),
+                                 Imf::Slice::Make(Imf::FLOAT, l.samples.data() + c, dw, sizeof(float) * n,
+                                                  sizeof(float) * n * size_t(w)));
+            }
+            file.setFrameBuffer(frame);
+            file.readPixels(int(y0), int(y1));
         }
-        file.setFrameBuffer(frame);
-        file.readPixels(dw.min.y, dw.max.y);
         return img;
     } catch (const InputError&) {
         throw;

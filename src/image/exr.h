@@ -4,8 +4,10 @@
 // Naming (the standard EXR convention, "Interpreting OpenEXR Deep Pixels" / "Technical Introduction", channel
 // names): a layer's channels are "<layer>.<channel>"; the colour layer has the empty name and its channels are
 // plain "R", "G", "B" (and "A" when given), so every viewer shows it. A layer of colour-like data uses R G B
-// ("albedo.R"), a vector X Y Z ("normal.X"), a single value one channel ("depth.Z", "variance.Y"). Layer and
-// channel names are never empty, hold no '.', and are unique; a layer holds 1..kMaxExrChannels channels.
+// ("albedo.R"), a vector X Y Z ("normal.X"), a single value one channel ("depth.Z", "variance.Y"). Channel
+// names are never empty and hold no '.'; a layer's name may nest ("left.albedo", read from "left.albedo.R": a
+// layer is what comes before the last '.') but has no empty part; names are unique; a file holds
+// 1..kMaxExrChannels channels.
 //
 // Writing encodes into memory (an Imf::OStream over a buffer), losslessly (ZIP, 16 scanlines per block), then
 // writes through writeFileAtomic (util/atomic_file.h): atomic, and never over an input. Reading goes through

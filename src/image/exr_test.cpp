@@ -202,6 +202,12 @@ TEST(Exr, HostileFilesAreRefusedInOneLine) {
     const int32_t box[4] = {0, 0, 999999, 999999};
     std::memcpy(&huge[value], box, sizeof box);
     expectRefused(huge, "huge.exr", "data window");
+    // The largest window shadelab reads, declared by a 24x20 file: within the limits, so the pixels are looked
+    // for, and their absence is the refusal (the rows are reserved, not filled, so this costs no 3 GiB).
+    const int32_t largest[4] = {0, 0, kMaxImageSide - 1, kMaxImageSide - 1};
+    std::string claims = good;
+    std::memcpy(&claims[value], largest, sizeof largest);
+    expectRefused(claims, "claims.exr", "not a readable OpenEXR image");
     // The same file from disk, through readExr: the message names the path.
     writeBytes(dir + "/huge.exr", huge);
     try {
