@@ -16,6 +16,7 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfThreading.h>
 #include <ImfVersion.h>
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 #include <exception>
 #include <map>
 #include <mutex>
+#include <thread>
 
 namespace shadelab {
 namespace {
@@ -66,11 +68,19 @@ private:
     size_t pos_ = 0;
 };
 
+// Threads OpenEXR compresses and decompresses blocks of scanlines with (its global pool): the cores, at most 8,
+// as encodePng uses them.
+int exrThreads() {
+    static const int n = int(std::min(8u, std::max(1u, std::thread::hardware_concurrency())));
+    return n;
+}
+
 // OpenEXR's own header checks, once per process: a data window or tile larger than shadelab reads is refused
-// while the header is parsed, before the library sizes its line offset table from it.
+// while the header is parsed, before the library sizes its line offset table from it. And its thread pool.
 void limitOpenExr() {
     static std::once_flag once;
     std::call_once(once, [] {
+        Imf::setGlobalThreadCount(exrThreads());
         Imf::Header::setMaxImageSize(kMaxImageSide, kMaxImageSide);
         // Tiles are read into buffers of a tile's size before anything else is known: 512 x 512 bounds them
         // (64 MiB at 64 float channels); files in the wild use 32..256.
@@ -177,7 +187,7 @@ std::string encodeExr(const ExrImage& image, ExrPrecision precision) {
     }
     SHADELAB_CHECK(names.size() <= size_t(kMaxExrChannels));
     MemoryOStream out("memory");
-    Imf::OutputFile file(out, header);  // one thread: the CLI's work is the render, not the encode
+    Imf::OutputFile file(out, header, exrThreads());
     file.setFrameBuffer(frame);
     file.writePixels(image.height);
     return std::move(out.bytes());
@@ -202,7 +212,7 @@ ExrImage parseExr(const std::string& bytes, const std::string& name) {
     limitOpenExr();
     try {
         MemoryIStream in(bytes, name);
-        Imf::InputFile file(in, 1);
+        Imf::InputFile file(in, exrThreads());
         const Imf::Header& header = file.header();
         const Imath::Box2i dw = header.dataWindow();
         const int64_t w = int64_t(dw.max.x) - int64_t(dw.min.x) + 1, h = int64_t(dw.max.y) - int64_t(dw.min.y) + 1;
