@@ -3,10 +3,13 @@
 // whole range and clamps below 0) and encodePng (filters, zlib at its fast level, row bands compressed in
 // parallel) on a rendered frame, clean and with noise (as a path-traced image has), which is what zlib finds
 // hard. Both are stages of `shadelab render --timings` ("readback + conversion" and "PNG encode"). These were
-// the image tests' TimingFullHd cases, which timed without checking anything. Prints medians of N runs.
+// the image tests' TimingFullHd cases, which timed without checking anything. And the OpenEXR path that
+// `render -o x.exr` takes instead (encodeExr of the linear frame, float and half; "EXR encode" in --timings) and
+// its read (parseExr, what `compare a.exr b.exr` pays per file). Prints medians of N runs.
 // Usage: image_encode_bench [runs] [width] [height]
 #include "bench_timing.h"
 #include "image/encode.h"
+#include "image/exr.h"
 #include "image/png.h"
 
 #include <algorithm>
@@ -82,8 +85,10 @@ int main(int argc, char** argv) {
         std::printf("image_encode_bench: %dx%d, %u hardware threads, %d runs\n", width, height,
                     std::thread::hardware_concurrency(), runs);
 
-        std::vector<double> convert, clean, rough;
-        size_t cleanBytes = 0, roughBytes = 0;
+        const ImageF rendered = renderedFrame(width, height);
+        const ExrImage layers = exrFromImage(rendered);
+        std::vector<double> convert, clean, rough, exrFloat, exrHalf, exrRead;
+        size_t cleanBytes = 0, roughBytes = 0, floatBytes = 0, halfBytes = 0;
         for (int r = 0; r < runs; ++r) {
             auto t0 = Clock::now();
             const Image8 out = toImage8(linear, Encoding::Srgb, nullptr);
@@ -98,10 +103,27 @@ int main(int argc, char** argv) {
             t0 = Clock::now();
             roughBytes = encodePng(grainy).size();
             rough.push_back(msSince(t0));
+            t0 = Clock::now();
+            const std::string f = encodeExr(layers, ExrPrecision::Float);
+            exrFloat.push_back(msSince(t0));
+            floatBytes = f.size();
+            t0 = Clock::now();
+            halfBytes = encodeExr(layers, ExrPrecision::Half).size();
+            exrHalf.push_back(msSince(t0));
+            t0 = Clock::now();
+            const ExrImage back = parseExr(f, "bench.exr");
+            exrRead.push_back(msSince(t0));
+            if (back.layers.empty() || back.layers[0].samples != layers.layers[0].samples) {
+                std::fprintf(stderr, "image_encode_bench: the EXR did not round-trip\n");
+                return 1;
+            }
         }
         std::printf("toImage8 (RGBA32F -> RGB8, sRGB): median %.2f ms\n", median(convert));
         std::printf("encodePng, rendered frame: median %.2f ms, %zu bytes\n", median(clean), cleanBytes);
         std::printf("encodePng, rendered frame + noise: median %.2f ms, %zu bytes\n", median(rough), roughBytes);
+        std::printf("encodeExr, rendered frame, float: median %.2f ms, %zu bytes\n", median(exrFloat), floatBytes);
+        std::printf("encodeExr, rendered frame, half: median %.2f ms, %zu bytes\n", median(exrHalf), halfBytes);
+        std::printf("parseExr, rendered frame, float: median %.2f ms\n", median(exrRead));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "image_encode_bench: %s\n", e.what());
         return 1;

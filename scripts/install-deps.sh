@@ -13,6 +13,7 @@ packages=(
   libimgui-dev                                          # UI
   libtinygltf-dev libstb-dev                            # glTF and images
   zlib1g-dev                                            # PNG compression
+  libopenexr-dev                                        # OpenEXR images (render -o x.exr, compare)
   nlohmann-json3-dev                                    # JSON
   xvfb xauth assimp-testmodels valgrind                 # test tools and real glTF test data
   pybind11-dev python3-dev python3-numpy python3-pytest # the Python package (build/python) and its tests

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._types import EncodingName, MemorySize, StrPath
+from ._types import EncodingName, ExrPrecisionName, MemorySize, StrPath
 
 class InputError(ValueError):
     """Bad input (a scene field, a file): the message names the file and the JSON path, as the binary's."""
@@ -59,11 +59,13 @@ class Image:
         """The PNG file's bytes."""
     def _repr_png_(self) -> bytes: ...
     def __repr__(self) -> str: ...
-    def save(self, path: StrPath) -> None:
-        """Writes the PNG atomically (the bytes `shadelab render -o` writes); OSError naming the file."""
+    def save(self, path: StrPath, exr_precision: ExrPrecisionName | None = None) -> None:
+        """Writes atomically: a path ending in .exr the linear floats as OpenEXR (exr_precision "float", the
+        default, or "half"), any other the PNG (the bytes `shadelab render -o` writes); OSError naming the file."""
     @staticmethod
     def open(path: StrPath, encoding: EncodingName = "srgb") -> Image:
-        """Reads a PNG; np.asarray gives its pixels decoded with `encoding`'s curve."""
+        """Reads a PNG (np.asarray: its pixels decoded with `encoding`'s curve) or an OpenEXR file (.exr:
+        np.asarray its linear floats; the 8-bit pixels encoded with `encoding`)."""
     @staticmethod
     def from_array(array: ArrayLike, encoding: EncodingName = "srgb") -> Image:
         """uint8 (H, W, 3|4): the pixels as they are; float (H, W, 3|4): linear RGB, encoded with `encoding`."""

@@ -30,6 +30,9 @@ LightPathsName = Literal["all", "direct", "indirect"]
 # How the 8-bit pixels and the PNG encode the linear floats (the binary's --encoding).
 EncodingName = Literal["srgb", "linear"]
 
+# Image.save("x.exr", exr_precision=...): 32-bit float samples (exact) or 16-bit half (the binary's --exr-precision).
+ExrPrecisionName = Literal["half", "float"]
+
 # Renderer(backend=...): the headless GL context to make; "auto" tries them in this order, honouring
 # SHADELAB_GL_BACKEND (the binary's --gl-backend).
 BackendName = Literal["auto", "egl-device", "egl-surfaceless", "osmesa"]

@@ -14,8 +14,8 @@ from typing import Any, Dict, Union
 import numpy.typing as npt
 
 from ._shadelab import Image
-from ._types import (BackendName, EncodingName, EstimatorName, LightPathsName, MemorySize, ModelName, RendererName,
-                     Size, StrPath)
+from ._types import (BackendName, EncodingName, EstimatorName, ExrPrecisionName, LightPathsName, MemorySize, ModelName,
+                     RendererName, Size, StrPath)
 from .scene import Scene
 
 # What render(), Renderer.render() and probe() take as a scene: a Scene, a scene file's or glTF model's path,
@@ -26,5 +26,5 @@ SceneLike = Union[Scene, StrPath, Dict[str, Any]]
 # (uint8 levels as they are, floats as linear RGB).
 ImageLike = Union[Image, StrPath, npt.ArrayLike]
 
-__all__ = ["BackendName", "EncodingName", "EstimatorName", "ImageLike", "LightPathsName", "MemorySize", "ModelName",
-           "RendererName", "SceneLike", "Size", "StrPath"]
+__all__ = ["BackendName", "EncodingName", "EstimatorName", "ExrPrecisionName", "ImageLike", "LightPathsName",
+           "MemorySize", "ModelName", "RendererName", "SceneLike", "Size", "StrPath"]

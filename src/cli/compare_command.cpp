@@ -1,10 +1,13 @@
-// `shadelab compare a.png b.png`: metrics, gates and the evidence files. Exit codes differ from the other
+// `shadelab compare a.png b.png` (8-bit gates) or `a.exr b.exr` (linear-light gates): metrics, gates and the
+// evidence files. Exit codes differ from the other
 // commands so that scripts can gate on them: 0 within the gates, 1 outside them, 2 for any error (bad file, usage).
 #include "cli/compare_command.h"
 
 #include "cli/args.h"
 #include "compare/compare_report.h"
 #include "compare/image_compare.h"
+#include "compare/linear_compare.h"
+#include "image/exr.h"
 #include "image/png.h"
 #include "util/input_error.h"
 #include "util/messages.h"
@@ -21,19 +24,30 @@ namespace {
 
 const char* const kCompareHelp =
     "usage: shadelab compare a.png b.png [options]\n"
+    "       shadelab compare a.exr b.exr [options]\n"
     "\n"
     "Compares two images of the same size under the gates of design.md §4 and prints the metrics: mean,\n"
     "RMS and maximum difference (with its position and channel) and the fraction of pixels over the\n"
     "threshold. Differences are in 8-bit units. Without coverage data every pixel counts as interior.\n"
+    "Two OpenEXR files are compared in linear light instead, by relative differences: per pixel the largest\n"
+    "over R, G, B of |a-b| / (max(|a|,|b|) + floor), and the relative RMSE. A .png and an .exr cannot be\n"
+    "compared with each other.\n"
     "\n"
     "options:\n"
     "  --diff PATH              write a heatmap of |a-b| (amplified) as PNG; - for stdout\n"
     "  --json PATH              write the full report as JSON; - for stdout\n"
-    "  --threshold T            a pixel is over when any channel differs by more than T (default 3)\n"
     "  --max-fraction F         fraction of pixels allowed over the threshold (default 0.001)\n"
+    "  --gain G                 heatmap amplification (default 16)\n"
+    "PNG gates (8-bit units):\n"
+    "  --threshold T            a pixel is over when any channel differs by more than T (default 3)\n"
     "  --hard-max M             no channel may differ by more than M (default 16)\n"
     "  --max-mean X             also gate the mean absolute difference (8-bit units; default: no gate)\n"
-    "  --gain G                 heatmap amplification (default 16)\n"
+    "EXR gates (relative, linear light):\n"
+    "  --rel-threshold R        a pixel is over when its relative difference exceeds R (default 0.05)\n"
+    "  --rel-hard-max R         no pixel's relative difference may exceed R (default 0.25)\n"
+    "  --max-rel-rmse R         relative RMSE allowed: RMS(a-b) / RMS((|a|+|b|)/2) (default 0.01)\n"
+    "  --floor V                radiance added to each denominator, so near-black noise is measured\n"
+    "                           against V (default 0.01; 1 is display white)\n"
     "  -q, --quiet              print only the verdict line\n"
     "  -h, --help               show this help\n"
     "\n"
@@ -56,23 +70,45 @@ double parseDouble(const std::string& name, const std::string& v, double lo, dou
 int compareCommand(int argc, char** argv) {
     try {
         Args args(argc, argv, 2,
-                  {"--diff", "--json", "--threshold", "--max-fraction", "--hard-max", "--max-mean", "--gain"},
+                  {"--diff", "--json", "--threshold", "--max-fraction", "--hard-max", "--max-mean", "--gain",
+                   "--rel-threshold", "--rel-hard-max", "--max-rel-rmse", "--floor"},
                   {"-h", "--help", "-q", "--quiet"});
         if (args.flag("-h") || args.flag("--help")) {
             std::fputs(kCompareHelp, stdout);
             return 0;
         }
-        if (args.positionals().size() != 2) throw UsageError("compare takes two PNG files (see --help)");
+        if (args.positionals().size() != 2)
+            throw UsageError("compare takes two PNG files or two EXR files (see --help)");
+        const std::string& pathA = args.positionals()[0];
+        const std::string& pathB = args.positionals()[1];
+        // The kind of comparison is the files' extension: two .exr in linear light, else the 8-bit gates.
+        const bool exr = hasExrExtension(pathA);
+        if (exr != hasExrExtension(pathB))
+            throw UsageError("compare: " + (exr ? pathA : pathB) + " is an OpenEXR image and " + (exr ? pathB : pathA) +
+                             " is not; compare two .png files (8-bit gates) or two .exr files (linear light)");
+        for (const char* flag :
+             exr ? std::vector<const char*>{"--threshold", "--hard-max", "--max-mean"}
+                 : std::vector<const char*>{"--rel-threshold", "--rel-hard-max", "--max-rel-rmse", "--floor"})
+            if (args.value(flag))
+                throw UsageError(
+                    std::string(flag) + ": " +
+                    (exr ? "an 8-bit gate; two .exr files are compared in " + std::string("linear light (see --help)")
+                         : "a linear-light gate, only for two .exr files"));
         CompareGates gates;
         if (auto v = args.value("--threshold")) gates.threshold = parseInt("--threshold", *v, 0, 255);
         if (auto v = args.value("--max-fraction")) gates.maxFractionOver = parseDouble("--max-fraction", *v, 0, 1);
         if (auto v = args.value("--hard-max")) gates.hardMax = parseInt("--hard-max", *v, 0, 255);
         if (auto v = args.value("--max-mean")) gates.maxMean = parseDouble("--max-mean", *v, 0, 255);
+        LinearGates linearGates;
+        linearGates.maxFractionOver = gates.maxFractionOver;
+        if (auto v = args.value("--rel-threshold")) linearGates.threshold = parseDouble("--rel-threshold", *v, 0, 1e6);
+        if (auto v = args.value("--rel-hard-max")) linearGates.hardMax = parseDouble("--rel-hard-max", *v, 0, 1e6);
+        if (auto v = args.value("--max-rel-rmse"))
+            linearGates.maxRelativeRmse = parseDouble("--max-rel-rmse", *v, 0, 1e6);
+        if (auto v = args.value("--floor")) linearGates.floor = parseDouble("--floor", *v, 0, 1e6);
         int gain = 16;
         if (auto v = args.value("--gain")) gain = parseInt("--gain", *v, 1, 255);
 
-        const std::string& pathA = args.positionals()[0];
-        const std::string& pathB = args.positionals()[1];
         const std::optional<std::string> diffPath = args.value("--diff"), jsonPath = args.value("--json");
         if (diffPath && jsonPath && isStdout(*diffPath) && isStdout(*jsonPath))
             throw UsageError("--diff and --json cannot both write to stdout");
@@ -82,6 +118,28 @@ int compareCommand(int argc, char** argv) {
         // With an output on stdout, stdout carries only that output.
         FILE* summary = (diffPath && isStdout(*diffPath)) || (jsonPath && isStdout(*jsonPath)) ? stderr : stdout;
 
+        if (exr) {
+            const ExrImage ea = readExr(pathA);
+            const ExrImage eb = readExr(pathB);
+            if (ea.width != eb.width || ea.height != eb.height)
+                throw InputError(pathB, "image sizes differ: " + std::to_string(ea.width) + "x" +
+                                            std::to_string(ea.height) + " (" + pathA + ") vs " +
+                                            std::to_string(eb.width) + "x" + std::to_string(eb.height));
+            const LinearCompareResult r = compareLinear(colourOf(ea, pathA), colourOf(eb, pathB), linearGates);
+            if (diffPath) {
+                const std::vector<uint8_t> png = encodePng(linearHeatmap(r, gain));
+                writeOutput(*diffPath, png.data(), png.size());
+            }
+            if (jsonPath) {
+                const std::string json = linearReportJson(r, pathA, pathB);
+                writeOutput(*jsonPath, json.data(), json.size());
+            }
+            if (args.flag("-q") || args.flag("--quiet"))
+                std::fprintf(summary, "%s\n", r.pass ? "PASS" : "FAIL");
+            else
+                std::fputs(linearSummary(r).c_str(), summary);
+            return r.pass ? 0 : 1;
+        }
         // Both headers before either image is decoded: a mismatch or a decompression bomb costs nothing.
         const PngFile fileA = readPngFile(pathA), fileB = readPngFile(pathB);
         if (fileA.width != fileB.width || fileA.height != fileB.height)

@@ -1,6 +1,6 @@
 // `shadelab render`: load the scene (on a worker thread while the GL context starts), render it with the
-// rasterizer, the tracer or both, convert once to 8-bit, write the PNG atomically (or to stdout for `-o -`).
-// --timings prints the per-stage breakdown.
+// rasterizer, the tracer or both, convert once to 8-bit, write the PNG atomically (or to stdout for `-o -`), or
+// write the linear floats before that conversion as OpenEXR (`-o x.exr`). --timings prints the per-stage breakdown.
 #include "cli/render_command.h"
 
 #include "cli/progress_bar.h"
@@ -12,6 +12,7 @@
 #include "compare/image_compare.h"
 #include "gl/headless_context.h"
 #include "image/encode.h"
+#include "image/exr.h"
 #include "image/png.h"
 #include "raster/offscreen.h"
 #include "render/memory_budget.h"
@@ -45,18 +46,26 @@ std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageT
     return context;
 }
 
-Rendered rasterize(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+// One renderer's image: the 8-bit pixels (and coverage) and, for an EXR output, the linear floats they came from.
+struct Frame {
+    Rendered rendered;
+    ImageF linear;  // empty unless asked for
+};
+
+Frame rasterize(const Scene& scene, const render::RenderRequest& request, bool keepLinear, StageTimer& timer) {
     raster::RasterRenderer renderer;
     timer.stage("shader compile");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
-    raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, render::toOffscreen(request));
+    raster::OffscreenOptions options = render::toOffscreen(request);
+    options.keepLinear = keepLinear;
+    raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, options);
     timer.stageSplit("draw, " + std::to_string(r.bands) + " band(s) (incl. lazy shader compile)", r.drawMs,
                      "readback + conversion", r.readMs);
-    return {std::move(r.pixels), std::move(r.coverage), r.nonFinite};
+    return {{std::move(r.pixels), std::move(r.coverage), r.nonFinite}, std::move(r.linear)};
 }
 
-Rendered traceReference(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+Frame traceReference(const Scene& scene, const render::RenderRequest& request, bool keepLinear, StageTimer& timer) {
     const trace::TraceSettings settings = render::toTrace(request, scene);
     trace::TraceOutput out;
     {
@@ -64,16 +73,17 @@ Rendered traceReference(const Scene& scene, const render::RenderRequest& request
         out = trace::traceImage(scene, settings, [&bar](float f) { bar.update(f); });
     }
     timer.stage("trace");
-    Rendered r;
-    r.pixels = toImage8(out.color, request.encoding, &r.nonFinite);
-    r.coverage = std::move(out.coverage);
+    Frame f;
+    f.rendered.pixels = toImage8(out.color, request.encoding, &f.rendered.nonFinite);
+    f.rendered.coverage = std::move(out.coverage);
+    if (keepLinear) f.linear = std::move(out.color);
     timer.stage("conversion");
-    return r;
+    return f;
 }
 
 // The path tracer (design.md §8): settings from the request, a progress bar, and one line saying how many
 // samples it took and how noisy the image is.
-Rendered pathTrace(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+Frame pathTrace(const Scene& scene, const render::RenderRequest& request, bool keepLinear, StageTimer& timer) {
     const trace::PathSettings settings = render::toPath(request, scene);
     auto traced = std::make_shared<const trace::TraceScene>(scene);
     timer.stage("BVH build");
@@ -89,10 +99,11 @@ Rendered pathTrace(const Scene& scene, const render::RenderRequest& request, Sta
                  "standard error %.2f (8-bit sRGB units)\n",
                  out.spp, settings.timeLimit > 0.0 && out.spp < settings.spp ? " (time limit)" : "", out.seconds,
                  paths / std::max(out.seconds, 1e-9) * 1e-6, settings.maxDepth, out.meanStandardError8);
-    Rendered r;
-    r.pixels = toImage8(out.color, request.encoding, &r.nonFinite);
+    Frame f;
+    f.rendered.pixels = toImage8(out.color, request.encoding, &f.rendered.nonFinite);
+    if (keepLinear) f.linear = std::move(out.color);
     timer.stage("conversion");
-    return r;
+    return f;
 }
 
 // --strict: a warning about the input ends the render with that line as the error (exit 1), before anything
@@ -124,6 +135,9 @@ int render(const RenderOptions& o, std::string& doing) {
     doing = "rendering";
     timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
     refuseInputAsOutput(o.output, "-o", scene.inputs.paths());
+    // The format is the output's extension. Checked after the input refusals, so that an output naming an input
+    // (scene.json, a model's .bin) is reported as that, whatever its extension.
+    const OutputFormat format = outputFormat(o);
     if (o.camera) scene.camera = chooseCamera(scene, *o.camera, o.input);
     if (o.model) scene.model = *o.model;
     if (o.terms) scene.terms = *o.terms;
@@ -140,27 +154,50 @@ int render(const RenderOptions& o, std::string& doing) {
         (o.strict ? failOnWarning
                   : printWarning)(o.input + ": " + renderer + ": " + nonFiniteMessage(r.nonFinite, pixels));
     };
-    Image8 output;
+    const bool exr = format == OutputFormat::Exr;
+    Image8 output;    // the PNG's pixels
+    ExrImage linear;  // the EXR's layers: the colour before conversion (--renderer both: the raster's, and
+                      // the reference's as layer "trace")
+    auto keep = [&](Frame& f, const char* layer) {
+        if (!exr) return;
+        if (linear.layers.empty()) {
+            linear = exrFromImage(f.linear);
+        } else {
+            linear.layers.push_back(colourLayer(f.linear));
+            linear.layers.back().name = layer;
+        }
+        f.linear = ImageF();
+    };
     if (request.engine == render::Engine::Raster) {
-        Rendered r = rasterize(scene, request, timer);
-        report("raster", r);
-        output = std::move(r.pixels);
+        Frame f = rasterize(scene, request, exr, timer);
+        report("raster", f.rendered);
+        keep(f, "");
+        output = std::move(f.rendered.pixels);
     } else if (request.engine == render::Engine::Trace) {
-        Rendered r = traceReference(scene, request, timer);
-        report("trace", r);
-        output = std::move(r.pixels);
+        Frame f = traceReference(scene, request, exr, timer);
+        report("trace", f.rendered);
+        keep(f, "");
+        output = std::move(f.rendered.pixels);
     } else if (request.engine == render::Engine::Path) {
-        Rendered r = pathTrace(scene, request, timer);
-        report("path", r);
-        output = std::move(r.pixels);
+        Frame f = pathTrace(scene, request, exr, timer);
+        report("path", f.rendered);
+        keep(f, "");
+        output = std::move(f.rendered.pixels);
     } else {
-        Rendered a = rasterize(scene, request, timer);
-        Rendered b = traceReference(scene, request, timer);
+        Frame fa = rasterize(scene, request, exr, timer);
+        Frame fb = traceReference(scene, request, exr, timer);
+        const Rendered &a = fa.rendered, &b = fb.rendered;
         report("raster", a);
         report("trace", b);
+        keep(fa, "");
+        keep(fb, "trace");
         CompareResult cmp = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
-        Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
-        output = sideBySide({&a.pixels, &b.pixels, &heat});
+        if (!exr) {
+            Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
+            output = sideBySide({&a.pixels, &b.pixels, &heat});
+        } else {
+            output = a.pixels;
+        }
         timer.stage("compare + heatmap");
         std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
                      render::traceDepth(request, scene), compareSummary(cmp).c_str());
@@ -168,17 +205,31 @@ int render(const RenderOptions& o, std::string& doing) {
         const DifferenceSites sites = differenceSites(a.pixels, b.pixels, a.coverage, cmp);
         std::fprintf(stderr, "%s\n", describeDifference(scene, sites, cmp.gates.threshold).c_str());
     }
-    doing = "encoding the PNG";
-    std::vector<uint8_t> png = encodePng(output);
-    timer.stage("PNG encode");
-    writeOutput(o.output, png.data(), png.size());
+    size_t written = 0;
+    if (exr) {
+        doing = "encoding the EXR";
+        const std::string bytes = encodeExr(linear, o.exrPrecision.value_or(ExrPrecision::Float));
+        timer.stage("EXR encode");
+        writeOutput(o.output, bytes.data(), bytes.size());
+        written = bytes.size();
+    } else {
+        doing = "encoding the PNG";
+        std::vector<uint8_t> png = encodePng(output);
+        timer.stage("PNG encode");
+        writeOutput(o.output, png.data(), png.size());
+        written = png.size();
+    }
     timer.stage("write");
 
     if (o.timings) timer.print(stderr);
     if (o.verbose)
-        std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n",
-                     isStdout(o.output) ? "stdout" : o.output.c_str(), output.width, output.height,
-                     toString(request.encoding), png.size());
+        std::fprintf(
+            stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n", isStdout(o.output) ? "stdout" : o.output.c_str(),
+            output.width, output.height,
+            format == OutputFormat::Exr
+                ? (std::string("linear EXR, ") + toString(o.exrPrecision.value_or(ExrPrecision::Float))).c_str()
+                : toString(request.encoding),
+            written);
     return 0;
 }
 

@@ -5,8 +5,10 @@
 #include "cli/raster_flags.h"
 #include "render/memory_budget.h"
 #include "util/input_error.h"
+#include "util/output_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 namespace shadelab::cli {
@@ -14,14 +16,17 @@ namespace shadelab::cli {
 namespace {
 
 const char* const kHelpHead =
-    "usage: shadelab render <scene.json | model.gltf | model.glb> -o out.png [options]\n"
+    "usage: shadelab render <scene.json | model.gltf | model.glb> -o out.png|out.exr [options]\n"
     "\n"
     "Renders a scene headlessly and writes a PNG: with the OpenGL rasterizer (EGL or OSMesa, no X server),\n"
-    "the CPU ray-traced reference, or both side by side with their difference heatmap.\n"
+    "the CPU ray-traced reference, or both side by side with their difference heatmap. An .exr output holds\n"
+    "the linear floats instead (OpenEXR: no clamp, no sRGB curve, values above 1 kept).\n"
     "\n"
     "options:\n"
-    "  -o, --output PATH          PNG to write (required); written atomically; - for stdout. Refused when\n"
-    "                             it is the scene or a model it loads, or exists and is not a regular file\n"
+    "  -o, --output PATH          image to write (required): .png, or .exr for linear OpenEXR; written\n"
+    "                             atomically; - for a PNG on stdout. Refused when it is the scene or a file\n"
+    "                             the scene loads, or exists and is not a regular file\n"
+    "  --exr-precision NAME       .exr output: float (default, 32-bit, exact) | half (16-bit, 11 bits)\n"
     "  --size WxH                 image size in pixels, each side 1..16384 (default 1280x720)\n"
     "  --renderer NAME            raster (default) | trace | both (raster | traced | heatmap in one PNG) |\n"
     "                             path (the path tracer: global illumination, docs/lighting.md)\n"
@@ -70,6 +75,19 @@ std::string flagOf(const std::string& field) {
     return flag;
 }
 
+OutputFormat outputFormat(const RenderOptions& o) {
+    if (hasExrExtension(o.output) && !isStdout(o.output)) return OutputFormat::Exr;
+    const std::string& p = o.output;
+    std::string ext = p.size() >= 4 ? p.substr(p.size() - 4) : std::string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const bool png = isStdout(p) || ext == ".png";
+    if (!png)
+        throw UsageError("-o: '" + p + "' names no image format; expected a name ending in .png or .exr (- for " +
+                         "a PNG on stdout)");
+    if (o.exrPrecision) throw UsageError("--exr-precision: only for an .exr output (-o " + p + " writes a PNG)");
+    return OutputFormat::Png;
+}
+
 std::string renderHelp() { return std::string(kHelpHead) + kRasterFlagsHelp + kHelpTail; }
 
 Terms parseTerms(const std::string& list) {
@@ -91,10 +109,10 @@ CameraChoice parseCameraFlag(const std::string& value) {
 }
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
-    std::vector<std::string> valued = {"-o",         "--output",     "--size",       "--model",
-                                       "--terms",    "--encoding",   "--gl-backend", "--spp",
-                                       "--renderer", "--threads",    "--depth",      "--max-memory",
-                                       "--camera",   "--time-limit", "--estimator",  "--light-paths"};
+    std::vector<std::string> valued = {
+        "-o",           "--output",     "--size",      "--model",       "--terms",        "--encoding",
+        "--gl-backend", "--spp",        "--renderer",  "--threads",     "--depth",        "--max-memory",
+        "--camera",     "--time-limit", "--estimator", "--light-paths", "--exr-precision"};
     std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths", "--strict"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
@@ -136,6 +154,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     // The ranges are the request's, as every front end holds them; only the words are the command line's.
     if (std::optional<render::RequestProblem> p = render::check(r))
         throw UsageError(flagOf(p->field) + ": " + p->reason);
+    if (auto v = args.value("--exr-precision")) o.exrPrecision = parseChoice("--exr-precision", *v, kExrPrecisionNames);
     if (auto v = args.value("--gl-backend")) o.backend = parseChoice("--gl-backend", *v, gl::kGlBackendNames);
     o.raster = parseRasterFlags(args);
     o.allowExternalPaths = args.flag("--allow-external-paths");

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "gl/headless_context.h"
+#include "image/exr.h"
 #include "render/render_request.h"
 #include "scene/camera_choice.h"
 #include "scene/raster_override.h"
@@ -15,15 +16,16 @@ namespace shadelab::cli {
 
 struct RenderOptions {
     std::string input;   // scene.json, model.gltf or model.glb
-    std::string output;  // PNG path
+    std::string output;  // the image to write: .png, .exr (outputFormat), or - for a PNG on stdout
     // --renderer, --size, --spp, --depth, --threads, --encoding, the path tracer's --time-limit, --estimator
     // and --light-paths, and --max-memory: the render itself, checked as every front end checks it
     // (render/render_request.h).
     render::RenderRequest request;
-    std::optional<ShadingModel> model;   // unset: the scene's
-    std::optional<Terms> terms;          // unset: the scene's
-    std::optional<CameraChoice> camera;  // --camera; unset: the scene's own (a bare model: fit)
-    RasterOverride raster;               // --shadow-map-size, --pcf, ...: over the scene's "raster"
+    std::optional<ShadingModel> model;         // unset: the scene's
+    std::optional<Terms> terms;                // unset: the scene's
+    std::optional<CameraChoice> camera;        // --camera; unset: the scene's own (a bare model: fit)
+    RasterOverride raster;                     // --shadow-map-size, --pcf, ...: over the scene's "raster"
+    std::optional<ExrPrecision> exrPrecision;  // --exr-precision; unset: float (only with an .exr output)
     gl::GlBackend backend = gl::GlBackend::Auto;
     bool allowExternalPaths = false;  // glTF buffers may live outside the model's folder
     bool verbose = false;
@@ -31,6 +33,13 @@ struct RenderOptions {
     bool strict = false;  // a warning about the input is an error: exit 1, nothing written
     bool help = false;    // --help was given: print renderHelp() and do nothing else
 };
+
+// What `-o` writes: a PNG of the 8-bit pixels, or an OpenEXR file of the linear floats before conversion.
+enum class OutputFormat { Png, Exr };
+
+// The format `-o` names by its extension (".png" or ".exr", any case; stdout is PNG). Throws UsageError for any
+// other name ("-o: ... expected a name ending in .png or .exr"), and for --exr-precision with a PNG output.
+OutputFormat outputFormat(const RenderOptions& o);
 
 // The command line's name for a render request's field: "spp" -> "--spp", "time_limit" -> "--time-limit".
 std::string flagOf(const std::string& field);

@@ -1,6 +1,8 @@
 // shadelab.Image: np.asarray(image) is the linear float32 (H, W, 3) view, to_uint8() the 8-bit pixels the binary's
-// PNG holds, save() and _repr_png_ the PNG (image/png.h). Images also come from PNG files and numpy arrays.
+// PNG holds, save() and _repr_png_ the PNG (image/png.h), or save("x.exr") the linear floats (image/exr.h). Images
+// also come from PNG and EXR files and numpy arrays.
 #include "image/encode.h"
+#include "image/exr.h"
 #include "image/png.h"
 #include "python/bindings.h"
 #include "python/image_data.h"
@@ -251,29 +253,53 @@ In Jupyter an image shows itself.)")
         .def("_repr_png_", [](const ImagePtr& held) { return pngBytes(*held); })
         .def(
             "save",
-            [](const ImageData& i, const py::object& pathObject) {
+            [](const ImageData& i, const py::object& pathObject, const py::object& precisionObject) {
                 const std::filesystem::path path = pathArg("path", pathObject);
+                const bool exr = hasExrExtension(path.string());
+                std::optional<ExrPrecision> precision;
+                if (!precisionObject.is_none()) {
+                    if (!py::isinstance<py::str>(precisionObject))
+                        throw py::type_error("exr_precision: expected a string, got " + typeName(precisionObject));
+                    precision = lookupName(kExrPrecisionNames, precisionObject.cast<std::string>());
+                    if (!precision)
+                        throw UsageError("exr_precision: expected " + nameChoices(kExrPrecisionNames) + ", got '" +
+                                         precisionObject.cast<std::string>() + "'");
+                    if (!exr) throw UsageError("exr_precision: only for an .exr path (this one writes a PNG)");
+                }
                 try {
-                    writePng(path.string(), i.pixels);
+                    if (exr)
+                        writeExr(path.string(), exrFromImage(i.linear), precision.value_or(ExrPrecision::Float));
+                    else
+                        writePng(path.string(), i.pixels);
                 } catch (const InputError& e) {
                     PyErr_SetString(PyExc_OSError, e.what());  // the message names the file and the reason
                     throw py::error_already_set();
                 }
             },
-            py::arg("path"), "Writes the PNG atomically (the bytes `shadelab render -o` writes)")
+            py::arg("path"), py::arg("exr_precision") = py::none(),
+            "Writes atomically: a path ending in .exr the linear floats as OpenEXR (exr_precision 'float', the "
+            "default, or 'half'), any other the PNG (the bytes `shadelab render -o` writes)")
         .def_static(
             "open",
             [](const py::object& path, const py::object& encoding) {
                 auto img = std::make_shared<ImageData>();
                 const Encoding e = encodingArg(encoding);
-                img->pixels = readPng(pathArg("path", path).string());
+                const std::string p = pathArg("path", path).string();
                 img->encoding = e;
-                img->linear = decode(img->pixels, img->encoding);
+                if (hasExrExtension(p)) {
+                    // The file's linear floats as they are; the 8-bit pixels through the one conversion.
+                    img->linear = colourOf(readExr(p), p);
+                    img->pixels = toImage8(img->linear, e, &img->nonFinite);
+                } else {
+                    img->pixels = readPng(p);
+                    img->linear = decode(img->pixels, img->encoding);
+                }
                 img->source = "file";
                 return img;
             },
             py::arg("path"), py::arg("encoding") = "srgb",
-            "Reads a PNG; np.asarray gives its pixels decoded with `encoding`'s curve")
+            "Reads a PNG (np.asarray gives its pixels decoded with `encoding`'s curve) or an OpenEXR file (.exr: "
+            "np.asarray gives its linear floats, the 8-bit pixels are encoded with `encoding`)")
         .def_static(
             "from_array",
             [](py::array a, const py::object& encoding) {

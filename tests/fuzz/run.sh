@@ -12,11 +12,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-600}
-targets=(scene_json_fuzz gltf_fuzz hdr_fuzz gltf_texture_fuzz script_fuzz)
+targets=(scene_json_fuzz gltf_fuzz hdr_fuzz gltf_texture_fuzz script_fuzz exr_fuzz)
 scripts/install-deps.sh --with-fuzz
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADELAB_FUZZ=ON \
   -DSHADELAB_SANITIZE=address,undefined -DSHADELAB_BUILD_TESTS=OFF -DSHADELAB_BUILD_PYTHON=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" make_exr_seeds
 
 # Seeds: the repository's corpora, the shipped scenes, models and sky, and Debian's glTF sample models.
 seed() {  # seed TARGET FILES...
@@ -34,6 +34,7 @@ find /usr/share/assimp/models/glTF2 \( -name '*.gltf' -o -name '*.glb' \) -size 
 seed hdr_fuzz tests/fuzz/corpus/hdr_fuzz/* assets/environments/*.hdr
 seed gltf_texture_fuzz tests/fuzz/corpus/gltf_texture_fuzz/* assets/models/textures/*.gltf
 seed script_fuzz tests/fuzz/corpus/script_fuzz/*
+mkdir -p build-fuzz/corpus/exr_fuzz && build-fuzz/tests/fuzz/make_exr_seeds build-fuzz/corpus/exr_fuzz
 
 run_one() {
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \

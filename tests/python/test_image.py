@@ -49,6 +49,64 @@ def test_png_round_trip(scene, out_dir):
         image.save(out_dir / "no_such_dir" / "x.png")
 
 
+def test_exr_round_trip(scene, out_dir):
+    # .exr holds the linear floats: exact in float (values above 1 included), within half precision in half.
+    image = shadelab.render(scene, (64, 48), renderer="path", spp=2)
+    floats = np.asarray(image)
+    bright = shadelab.Image.from_array(np.concatenate([floats, floats * 40.0], axis=1))
+    assert np.asarray(bright).max() > 1.0
+    path = out_dir / "round.exr"
+    bright.save(path)
+    back = shadelab.Image.open(path)
+    assert back.source == "file" and back.size == (128, 48)
+    assert np.array_equal(np.asarray(back), np.asarray(bright))
+    assert np.array_equal(back.to_uint8(), bright.to_uint8()), "the 8-bit pixels through the one conversion"
+    assert shadelab.Image.open(path, encoding="linear").encoding == "linear"
+    half = out_dir / "half.exr"
+    bright.save(half, exr_precision="half")
+    h = np.asarray(shadelab.Image.open(half))
+    assert np.all(np.abs(h - np.asarray(bright)) <= np.abs(np.asarray(bright)) * 2.0**-11 + 6e-8)
+    assert not np.array_equal(h, np.asarray(bright)), "control: half is narrower than float"
+    # The PNG path is as before: 8-bit, clamped.
+    bright.save(out_dir / "bright.png")
+    assert np.asarray(shadelab.Image.open(out_dir / "bright.png")).max() <= 1.0
+
+
+def test_exr_refusals(source_dir, out_dir):
+    image = shadelab.Image.from_array(np.full((4, 5, 3), 2.5, dtype=np.float32))
+    with pytest.raises(ValueError, match="exr_precision: expected half or float, got 'double'"):
+        image.save(out_dir / "x.exr", exr_precision="double")
+    with pytest.raises(ValueError, match=r"exr_precision: only for an \.exr path"):
+        image.save(out_dir / "x.png", exr_precision="half")
+    with pytest.raises(TypeError, match="exr_precision: expected a string, got int"):
+        image.save(out_dir / "x.exr", exr_precision=16)
+    with pytest.raises(OSError, match="no_such_dir"):
+        image.save(out_dir / "no_such_dir" / "x.exr")
+    # Never over an input: the scene file a live Scene was read from, through a link named .exr.
+    source = out_dir / "src.json"
+    source.write_text((source_dir / "assets" / "scenes" / "default.json").read_text())
+    loaded = shadelab.Scene.load(source)
+    link = out_dir / "link.exr"
+    if link.exists() or link.is_symlink():
+        link.unlink()
+    link.symlink_to(source.name)
+    before = source.read_bytes()
+    with pytest.raises(OSError, match="refusing to overwrite an input"):
+        image.save(link)
+    assert source.read_bytes() == before
+    del loaded
+    # Hostile files: one line naming the file.
+    for name, content in [("text.exr", b"not an image"), ("cut.exr", None)]:
+        bad = out_dir / name
+        if content is None:
+            image.save(out_dir / "whole.exr")
+            content = (out_dir / "whole.exr").read_bytes()[:60]
+        bad.write_bytes(content)
+        with pytest.raises(shadelab.InputError, match=str(bad)) as caught:
+            shadelab.Image.open(bad)
+        assert "\n" not in str(caught.value)
+
+
 def test_from_array():
     pixels = np.zeros((4, 5, 3), dtype=np.uint8)
     pixels[1, 2] = (255, 128, 0)

@@ -269,7 +269,7 @@ _TYPES = {
     "tuple": {"tuple[...]"}, "dict": {"dict[...]"}, "handle": {"dict[...]"},
     # What the binding returns as a py::object, or takes as one to check its type itself (a one-line TypeError).
     "object": {"dict[...]", "NDArray[np.uint32] | None", "StrPath", "EncodingName", "MemorySize | None",
-               "tuple[...]"},
+               "ExrPrecisionName | None", "tuple[...]"},
 }
 
 
