@@ -179,3 +179,53 @@ TEST(CliExr, HostileExrIsRefusedInOneLineNamingTheFile) {
     }
     EXPECT_EQ(run("compare " + good + " " + good + " -q").code, 0) << "control";
 }
+
+// --passes adds the first hit's albedo, normal and depth for every renderer, the path tracer's variance, and
+// with --denoise the raw estimate; the layers hold what they say (unit normals, positive depth, the lamp's
+// albedo 1) and the denoised colour differs from the raw one.
+TEST(CliExr, PassesAndTheDenoisedPreview) {
+    const std::string dir = freshDir("passes");
+    const std::string cornell = test::sourcePath("assets/scenes/cornell.json");
+    for (const char* renderer : {"raster", "trace"}) {
+        const std::string exr = dir + "/" + renderer + ".exr";
+        const Result r = run("render " + cornell + " -o " + exr + " --size 40x30 --passes --renderer " + renderer);
+        ASSERT_EQ(r.code, 0) << r.out;
+        const ExrImage image = readExr(exr);
+        ASSERT_EQ(image.layers.size(), 4u) << renderer;
+        EXPECT_NE(image.layer("albedo"), nullptr);
+        EXPECT_NE(image.layer("depth"), nullptr);
+    }
+    const std::string exr = dir + "/path.exr";
+    const Result r =
+        run("render " + cornell + " -o " + exr + " --size 40x30 --spp 4 --renderer path --passes --denoise");
+    ASSERT_EQ(r.code, 0) << r.out;
+    const ExrImage image = readExr(exr);
+    for (const char* name : {"albedo", "normal", "depth", "variance", "raw"})
+        ASSERT_NE(image.layer(name), nullptr) << name << " missing from " << exr;
+    const ExrLayer& n = *image.layer("normal");
+    ASSERT_EQ(n.channels, (std::vector<std::string>{"X", "Y", "Z"}));
+    const ExrLayer& depth = *image.layer("depth");
+    for (size_t p = 0; p < depth.samples.size(); ++p) {
+        const float len = std::sqrt(n.samples[3 * p] * n.samples[3 * p] + n.samples[3 * p + 1] * n.samples[3 * p + 1] +
+                                    n.samples[3 * p + 2] * n.samples[3 * p + 2]);
+        ASSERT_NEAR(len, 1.0f, 1e-3f) << "pixel " << p << ": the closed box has a surface everywhere";
+        ASSERT_GT(depth.samples[p], 0.0f) << "pixel " << p;
+    }
+    float variance = 0.0f;
+    for (float v : image.layer("variance")->samples) variance = std::max(variance, v);
+    EXPECT_GT(variance, 0.0f) << "4 samples of a path-traced box are noisy";
+    EXPECT_NE(colourOf(image, exr).rgba.size(), 0u);
+    const ExrLayer& raw = *image.layer("raw");
+    const ExrLayer& colour = image.layers.front();
+    EXPECT_NE(raw.samples, colour.samples) << "the colour is the denoised preview, not the raw estimate";
+}
+
+TEST(CliExr, DenoiseAndPassesAreRefusedWhereTheyDoNotApply) {
+    const std::string dir = freshDir("passes_refused");
+    Result r = run("render " + kScene + " -o " + dir + "/a.png --size 16x16 --passes");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("--passes: only for an .exr output"), std::string::npos) << r.out;
+    r = run("render " + kScene + " -o " + dir + "/a.png --size 16x16 --denoise");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("--denoise: is for the path tracer (renderer path), not raster"), std::string::npos) << r.out;
+}

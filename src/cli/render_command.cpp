@@ -17,6 +17,7 @@
 #include "raster/offscreen.h"
 #include "render/memory_budget.h"
 #include "scene/scene_load.h"
+#include "trace/first_hit_passes.h"
 #include "trace/path/path_render.h"
 #include "trace/trace_image.h"
 #include "util/input_error.h"
@@ -49,8 +50,28 @@ std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageT
 // One renderer's image: the 8-bit pixels (and coverage) and, for an EXR output, the linear floats they came from.
 struct Frame {
     Rendered rendered;
-    ImageF linear;  // empty unless asked for
+    ImageF linear;                 // empty unless asked for
+    std::vector<ExrLayer> passes;  // --passes: what this renderer adds of its own (path: variance, raw)
+    SurfacePasses surface;         // path with --denoise: the first-hit passes it traced already
 };
+
+// One layer of `channels` floats per pixel from an interleaved buffer.
+ExrLayer layerOf(const std::string& name, std::vector<std::string> channels, std::vector<float> samples) {
+    ExrLayer l;
+    l.name = name;
+    l.channels = std::move(channels);
+    l.samples = std::move(samples);
+    return l;
+}
+
+// --passes: the first hit's albedo, normal and depth at each pixel centre (trace/first_hit_passes.h).
+std::vector<ExrLayer> surfaceLayers(SurfacePasses p) {
+    std::vector<ExrLayer> out;
+    out.push_back(layerOf("albedo", {"R", "G", "B"}, std::move(p.albedo)));
+    out.push_back(layerOf("normal", {"X", "Y", "Z"}, std::move(p.normal)));
+    out.push_back(layerOf("depth", {"Z"}, std::move(p.depth)));
+    return out;
+}
 
 Frame rasterize(const Scene& scene, const render::RenderRequest& request, bool keepLinear, StageTimer& timer) {
     raster::RasterRenderer renderer;
@@ -62,7 +83,7 @@ Frame rasterize(const Scene& scene, const render::RenderRequest& request, bool k
     raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, options);
     timer.stageSplit("draw, " + std::to_string(r.bands) + " band(s) (incl. lazy shader compile)", r.drawMs,
                      "readback + conversion", r.readMs);
-    return {{std::move(r.pixels), std::move(r.coverage), r.nonFinite}, std::move(r.linear)};
+    return {{std::move(r.pixels), std::move(r.coverage), r.nonFinite}, std::move(r.linear), {}, {}};
 }
 
 Frame traceReference(const Scene& scene, const render::RenderRequest& request, bool keepLinear, StageTimer& timer) {
@@ -100,6 +121,13 @@ Frame pathTrace(const Scene& scene, const render::RenderRequest& request, bool k
                  out.spp, settings.timeLimit > 0.0 && out.spp < settings.spp ? " (time limit)" : "", out.seconds,
                  paths / std::max(out.seconds, 1e-9) * 1e-6, settings.maxDepth, out.meanStandardError8);
     Frame f;
+    if (settings.denoise && keepLinear) {
+        // The passes that guided the denoiser serve --passes; the estimate before it is layer "raw".
+        f.surface = std::move(out.passes);
+        f.passes.push_back(colourLayer(out.raw));
+        f.passes.back().name = "raw";
+    }
+    if (keepLinear) f.passes.push_back(layerOf("variance", {"Y"}, std::move(out.variance)));
     f.rendered.pixels = toImage8(out.color, request.encoding, &f.rendered.nonFinite);
     if (keepLinear) f.linear = std::move(out.color);
     timer.stage("conversion");
@@ -167,6 +195,15 @@ int render(const RenderOptions& o, std::string& doing) {
             linear.layers.back().name = layer;
         }
         f.linear = ImageF();
+        // The surface passes once (--renderer both: its two images show the same surfaces).
+        if (!o.passes || *layer) return;
+        if (f.surface.width == 0) {
+            const trace::TraceScene traced(scene);
+            f.surface = trace::firstHitPasses(traced, request.width, request.height, request.threads);
+            timer.stage("surface passes");
+        }
+        for (ExrLayer& l : surfaceLayers(std::move(f.surface))) linear.layers.push_back(std::move(l));
+        for (ExrLayer& l : f.passes) linear.layers.push_back(std::move(l));
     };
     if (request.engine == render::Engine::Raster) {
         Frame f = rasterize(scene, request, exr, timer);

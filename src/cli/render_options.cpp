@@ -27,6 +27,9 @@ const char* const kHelpHead =
     "                             atomically; - for a PNG on stdout. Refused when it is the scene or a file\n"
     "                             the scene loads, or exists and is not a regular file\n"
     "  --exr-precision NAME       .exr output: float (default, 32-bit, exact) | half (16-bit, 11 bits)\n"
+    "  --passes                   .exr output: also the layers albedo (R G B), normal (X Y Z) and depth (Z)\n"
+    "                             of the first hit at each pixel centre; path: variance (Y) of each\n"
+    "                             pixel's luminance estimate, and with --denoise the raw estimate (raw)\n"
     "  --size WxH                 image size in pixels, each side 1..16384 (default 1280x720)\n"
     "  --renderer NAME            raster (default) | trace | both (raster | traced | heatmap in one PNG) |\n"
     "                             path (the path tracer: global illumination, docs/lighting.md)\n"
@@ -47,7 +50,9 @@ const char* const kHelpHead =
     "  --estimator NAME           path: mis (default) | bsdf | light: how emitters' light is sampled; all\n"
     "                             converge to the same image, with different noise\n"
     "  --light-paths NAME         path: all (default) | direct | indirect: indirect is the light scattered\n"
-    "                             twice or more, what the lecture's ambient term stands in for\n";
+    "                             twice or more, what the lecture's ambient term stands in for\n"
+    "  --denoise                  path: write the denoised preview (an edge-avoiding filter guided by the\n"
+    "                             first hit's albedo, normal and depth) instead of the raw estimate\n";
 
 const char* const kHelpTail =
     "  --encoding NAME            srgb (default) | linear: how linear colour becomes 8-bit\n"
@@ -85,6 +90,7 @@ OutputFormat outputFormat(const RenderOptions& o) {
         throw UsageError("-o: '" + p + "' names no image format; expected a name ending in .png or .exr (- for " +
                          "a PNG on stdout)");
     if (o.exrPrecision) throw UsageError("--exr-precision: only for an .exr output (-o " + p + " writes a PNG)");
+    if (o.passes) throw UsageError("--passes: only for an .exr output (-o " + p + " writes a PNG)");
     return OutputFormat::Png;
 }
 
@@ -113,7 +119,8 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         "-o",           "--output",     "--size",      "--model",       "--terms",        "--encoding",
         "--gl-backend", "--spp",        "--renderer",  "--threads",     "--depth",        "--max-memory",
         "--camera",     "--time-limit", "--estimator", "--light-paths", "--exr-precision"};
-    std::vector<std::string> flags = {"-h", "--help", "--verbose", "--timings", "--allow-external-paths", "--strict"};
+    std::vector<std::string> flags = {"-h",       "--help",   "--verbose", "--timings", "--allow-external-paths",
+                                      "--strict", "--passes", "--denoise"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
     Args args(argc, argv, 2, valued, flags);
@@ -149,6 +156,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--estimator"))
         r.path.estimator = parseChoice("--estimator", *v, trace::kPathEstimatorNames);
     if (auto v = args.value("--light-paths")) r.path.part = parseChoice("--light-paths", *v, trace::kPathPartNames);
+    r.path.denoise = args.flag("--denoise");
     if (auto v = args.value("--threads")) r.threads = parseWhole("--threads", *v);
     if (auto v = args.value("--depth")) r.depth = parseWhole("--depth", *v);
     // The ranges are the request's, as every front end holds them; only the words are the command line's.
@@ -161,6 +169,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     o.verbose = args.flag("--verbose");
     o.timings = args.flag("--timings");
     o.strict = args.flag("--strict");
+    o.passes = args.flag("--passes");
     return o;
 }
 

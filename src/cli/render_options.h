@@ -26,6 +26,7 @@ struct RenderOptions {
     std::optional<CameraChoice> camera;        // --camera; unset: the scene's own (a bare model: fit)
     RasterOverride raster;                     // --shadow-map-size, --pcf, ...: over the scene's "raster"
     std::optional<ExrPrecision> exrPrecision;  // --exr-precision; unset: float (only with an .exr output)
+    bool passes = false;                       // --passes: surface passes as EXR layers (only with an .exr output)
     gl::GlBackend backend = gl::GlBackend::Auto;
     bool allowExternalPaths = false;  // glTF buffers may live outside the model's folder
     bool verbose = false;

@@ -97,14 +97,20 @@ ImageF denoise(const ImageF& color, const std::vector<float>& variance, const Su
 
     Planes cur(color.width, color.height), next(color.width, color.height);
     std::vector<uint8_t> finite(n);
+    // The passes filter c / (1 + L), L the pixel's luminance (Reinhard's curve on luminance, as Karis 2014
+    // weights his samples): a value far above 1, which the display clips (a lamp, its reflection), weighs as
+    // the display shows it, so that it neither spreads its energy into its neighbours nor takes theirs. The
+    // variance follows to first order, var / (1 + L)⁴; the result is mapped back by c' / (1 − L').
     for (size_t i = 0; i < n; ++i) {
         const float* c = &color.rgba[4 * i];
         finite[i] = std::isfinite(c[0] + c[1] + c[2]) && std::isfinite(variance[i]) ? 1 : 0;
-        cur.r[i] = finite[i] ? c[0] : 0.0f;
-        cur.g[i] = finite[i] ? c[1] : 0.0f;
-        cur.b[i] = finite[i] ? c[2] : 0.0f;
+        const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
+        cur.r[i] = finite[i] ? c[0] * k : 0.0f;
+        cur.g[i] = finite[i] ? c[1] * k : 0.0f;
+        cur.b[i] = finite[i] ? c[2] * k : 0.0f;
         // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
-        cur.v[i] = finite[i] && variance[i] > 1e-20f ? variance[i] : 0.0f;
+        const float v = variance[i] * (k * k) * (k * k);
+        cur.v[i] = finite[i] && v > 1e-20f ? v : 0.0f;
     }
     const Guides g = guidesOf(guides, finite);
     const int threads = s.threads > 0 ? s.threads : std::max(1, int(std::thread::hardware_concurrency()));
@@ -123,9 +129,11 @@ ImageF denoise(const ImageF& color, const std::vector<float>& variance, const Su
     ImageF out = color;
     for (size_t i = 0; i < n; ++i) {
         if (!finite[i]) continue;
-        out.rgba[4 * i] = cur.r[i];
-        out.rgba[4 * i + 1] = cur.g[i];
-        out.rgba[4 * i + 2] = cur.b[i];
+        const float l = kLumR * cur.r[i] + kLumG * cur.g[i] + kLumB * cur.b[i];
+        const float k = 1.0f / std::max(1.0f - l, 1e-6f);
+        out.rgba[4 * i] = cur.r[i] * k;
+        out.rgba[4 * i + 1] = cur.g[i] * k;
+        out.rgba[4 * i + 2] = cur.b[i] * k;
     }
     return out;
 }

@@ -72,8 +72,10 @@ inline void filterRowIn(const Planes& in, const Guides& g, const std::vector<flo
         for (int x = c0; x < c1; ++x) {
             const size_t p = row + size_t(x);
             const int t = x - c0;
-            // A pixel without noise stops at any difference: 1e-6 of luminance is far below one 8-bit step.
-            invL[t] = 1.0f / (s.sigmaLuminance * std::sqrt(std::max(varBlur[p], 0.0f)) + 1e-6f);
+            // The noise to stop at: the blurred variance (a steadier estimate, SVGF), but never more than the
+            // pixel's own, so that a converged pixel beside a noisy one keeps its value. A pixel without noise
+            // stops at any difference: 1e-6 of luminance is far below one 8-bit step.
+            invL[t] = 1.0f / (s.sigmaLuminance * std::sqrt(std::max(std::min(varBlur[p], in.v[p]), 0.0f)) + 1e-6f);
             invZ[t] = 1.0f / (s.sigmaDepth * g.slope[p] * float(step) + 1e-3f * std::abs(g.z[p]) + 1e-6f);
             // The centre tap: its kernel weight (1/2 · 1/2) times e^0.
             const float k = kB3[1] * kB3[1] * g.valid[p];

@@ -4,6 +4,8 @@
 #include "image/encode.h"
 #include "scene/coverage.h"
 #include "shading/lighting.h"
+#include "trace/first_hit_passes.h"
+#include "trace/path/path_denoise.h"
 #include "trace/tile_renderer.h"
 
 #include <algorithm>
@@ -170,7 +172,7 @@ PathOutput pathTraceImage(std::shared_ptr<const TraceScene> scene, const PathSet
                           const std::function<void(float)>& progress) {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();
-    PathRender render(std::move(scene), settings);
+    PathRender render(scene, settings);
     if (settings.timeLimit <= 0.0) {
         render.addSamples(settings.spp, nullptr, progress);
     } else {
@@ -192,6 +194,14 @@ PathOutput pathTraceImage(std::shared_ptr<const TraceScene> scene, const PathSet
     out.coverage = render.coverage();
     out.spp = render.samples();
     out.meanStandardError8 = render.meanStandardError8(Encoding::Srgb);
+    out.variance = luminanceVariance(render);
+    if (settings.denoise) {
+        out.passes = firstHitPasses(*scene, render.width(), render.height(), render.settings().threads);
+        DenoiseSettings d;
+        d.threads = render.settings().threads;
+        out.raw = std::move(out.color);
+        out.color = denoise(out.raw, out.variance, out.passes, d);
+    }
     return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "image/encode.h"
 #include "image/image.h"
+#include "image/surface_passes.h"
 #include "scene/view.h"
 #include "trace/path/path_integrator.h"
 #include "trace/path/path_settings.h"
@@ -68,7 +69,10 @@ private:
 };
 
 struct PathOutput {
-    ImageF color;                     // linear RGB, alpha 1
+    ImageF color;                     // linear RGB, alpha 1: the estimate, denoised with settings.denoise
+    ImageF raw;                       // settings.denoise only: the estimate before denoising
+    SurfacePasses passes;             // settings.denoise only: the first-hit passes that guided it
+    std::vector<float> variance;      // per pixel, the variance of the luminance estimate (luminanceVariance)
     std::vector<uint32_t> coverage;   // settings.coverage only
     int spp = 0;                      // samples every pixel got (below settings.spp when the time limit hit)
     double seconds = 0.0;             // tracing time
@@ -76,7 +80,8 @@ struct PathOutput {
 };
 
 // The one-shot render: settings.spp samples, or fewer when settings.timeLimit ends it at a whole pass
-// (then passes of one sample each, so it stops at a whole sample count). `progress` gets the fraction done.
+// (then passes of one sample each, so it stops at a whole sample count), and with settings.denoise its
+// denoised preview (not counted in `seconds`). `progress` gets the fraction done.
 PathOutput pathTraceImage(std::shared_ptr<const TraceScene> scene, const PathSettings& settings,
                           const std::function<void(float)>& progress = {});
 

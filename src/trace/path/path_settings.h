@@ -54,6 +54,7 @@ struct PathSettings {
     bool coverage = false;           // also fill the coverage buffer (first hit of each pixel's centre)
     PathEstimator estimator = PathEstimator::Mis;
     PathPart part = PathPart::All;
+    bool denoise = false;  // pathTraceImage also makes a denoised preview (trace/path/path_denoise.h)
 };
 
 // Throws SettingError (a std::invalid_argument, util/input_error.h) naming the field, e.g. "spp: ...".

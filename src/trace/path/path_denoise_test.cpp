@@ -1,0 +1,138 @@
+// The denoised preview on the Cornell box (assets/scenes/cornell.json) at 16 samples per pixel: its error
+// against a 1,024-sample reference is at most half the raw image's, and (negative control) a plain blur of
+// the same footprint, which crosses every edge, is not. Also: every pixel of a render converged enough to show
+// no noise at 8 bits comes back within one 8-bit step, and the denoise flag reaches pathTraceImage's output.
+#include "trace/path/path_denoise.h"
+#include "image/encode.h"
+#include "scene/scene_load.h"
+#include "trace/first_hit_passes.h"
+#include "trace/path/path_render.h"
+#include "trace/trace_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace shadelab::trace {
+namespace {
+
+std::shared_ptr<const TraceScene> cornell() {
+    return std::make_shared<const TraceScene>(
+        loadScene(std::string(SHADELAB_SOURCE_DIR) + "/assets/scenes/cornell.json"));
+}
+
+PathSettings settings(int spp, uint32_t seed) {
+    PathSettings s;
+    s.width = 64;
+    s.height = 36;
+    s.spp = spp;
+    s.threads = 2;
+    s.seed = seed;
+    return s;
+}
+
+// sqrt(Σ (a − r)² / Σ r²) over RGB, the lamp (above 1 in the reference) left out: it is not noise.
+double relativeRmse(const ImageF& a, const ImageF& ref) {
+    double num = 0.0, den = 0.0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4) {
+        if (ref.rgba[i] > 1.0f) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double d = double(a.rgba[i + size_t(c)]) - ref.rgba[i + size_t(c)];
+            num += d * d;
+            den += double(ref.rgba[i + size_t(c)]) * ref.rgba[i + size_t(c)];
+        }
+    }
+    return std::sqrt(num / den);
+}
+
+TEST(PathDenoise, TheCornellBoxAt16SamplesHalvesItsErrorAndABlurDoesNot) {
+    const auto scene = cornell();
+    PathRender ref(scene, settings(1024, 1));
+    ref.addSamples(1024);
+    PathRender noisy(scene, settings(16, 0));
+    noisy.addSamples(16);
+    const SurfacePasses passes = firstHitPasses(*scene, 64, 36, 2);
+    const ImageF reference = ref.image(), raw = noisy.image(), denoised = denoisedImage(noisy, passes);
+    DenoiseSettings blur;
+    blur.sigmaLuminance = 1e6f;
+    blur.sigmaNormal = 0.0f;
+    blur.sigmaDepth = 1e6f;
+    blur.sigmaAlbedo = 1e6f;
+    const ImageF blurred = denoisedImage(noisy, passes, blur);
+    const double eRaw = relativeRmse(raw, reference), eDen = relativeRmse(denoised, reference),
+                 eBlur = relativeRmse(blurred, reference);
+    std::printf("relative RMSE against 1024 spp: raw %.4f, denoised %.4f (%.2f of raw), blur %.4f\n", eRaw, eDen,
+                eDen / eRaw, eBlur);
+    EXPECT_LT(eDen, 0.5 * eRaw);
+    EXPECT_GT(eBlur, 0.5 * eRaw) << "the negative control: a blur across edges must not pass";
+    if (::testing::Test::HasFailure()) {
+        test::writeEvidence("path_denoise_raw", raw);
+        test::writeEvidence("path_denoise_denoised", denoised);
+        test::writeEvidence("path_denoise_reference", reference);
+    }
+}
+
+TEST(PathDenoise, AnImageWithoutVisibleNoiseComesBackWithinOneStep) {
+    // The box's direct light only, its balls made matte (a mirror's tiny lamp reflection covers part of a
+    // pixel and stays noisy far longer), at 4096 samples: a standard error far below one 8-bit step.
+    Scene s = loadScene(std::string(SHADELAB_SOURCE_DIR) + "/assets/scenes/cornell.json");
+    s.maxDepth = 0;
+    for (Sphere& sphere : s.spheres) {
+        sphere.material.kr = sphere.material.kt = sphere.material.ms = glm::vec3(0.0f);
+        if (sphere.material.emission == glm::vec3(0.0f)) sphere.material.md = glm::vec3(0.6f);
+    }
+    const auto scene = std::make_shared<const TraceScene>(s);
+    PathSettings ps = settings(4096, 0);
+    ps.width = 32;
+    ps.height = 18;
+    PathRender r(scene, ps);
+    r.addSamples(ps.spp);
+    const ImageF raw = r.image(), denoised = denoisedImage(r, firstHitPasses(*scene, 32, 18, 2));
+    uint64_t bad = 0;
+    const Image8 a = toImage8(raw, Encoding::Srgb, &bad), b = toImage8(denoised, Encoding::Srgb, &bad);
+    // A pixel is converged when its own standard error, through the sRGB curve, is under a quarter of an 8-bit
+    // step (the shadows' darkest pixels, where the curve is steepest, may not be).
+    int worst = 0, converged = 0;
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const glm::vec3 m = r.mean(x, y), se = r.standardError(x, y);
+            float se8 = 0.0f;
+            for (int c = 0; c < 3; ++c)
+                se8 = std::max(
+                    se8, 255.0f * (linearToSrgb(std::min(1.0f, m[c] + se[c])) - linearToSrgb(std::min(1.0f, m[c]))));
+            if (se8 >= 0.25f) continue;
+            ++converged;
+            const size_t i = 3 * (size_t(y) * 32 + size_t(x));
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(int(a.data[i + size_t(c)]) - int(b.data[i + size_t(c)])));
+        }
+    std::printf("noise %.3f/255; %d of %d pixels converged; their largest change %d/255\n",
+                r.meanStandardError8(Encoding::Srgb), converged, 32 * 18, worst);
+    EXPECT_GT(converged, 32 * 18 * 2 / 3) << "the check must cover most of the image";
+    EXPECT_LE(worst, 1);
+    if (::testing::Test::HasFailure()) {
+        test::writeEvidence("path_denoise_converged_raw", raw);
+        test::writeEvidence("path_denoise_converged_denoised", denoised);
+    }
+}
+
+TEST(PathDenoise, TheFlagGivesTheDenoisedImageBesideTheRawOne) {
+    PathSettings s = settings(4, 0);
+    s.width = 32;
+    s.height = 18;
+    s.denoise = true;
+    const PathOutput out = pathTraceImage(cornell(), s);
+    ASSERT_EQ(out.raw.width, 32);
+    EXPECT_EQ(out.passes.width, 32);
+    EXPECT_EQ(out.variance.size(), size_t(32 * 18));
+    EXPECT_NE(out.raw.rgba, out.color.rgba);
+    s.denoise = false;
+    const PathOutput plain = pathTraceImage(cornell(), s);
+    EXPECT_EQ(plain.raw.width, 0);
+    EXPECT_EQ(plain.color.rgba, out.raw.rgba) << "the raw estimate is the image without denoise";
+}
+
+}  // namespace
+}  // namespace shadelab::trace
