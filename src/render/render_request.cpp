@@ -46,7 +46,11 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
                                       std::to_string(r.threads));
     const PathOptions& p = r.path;
     if (r.engine != Engine::Path) {
-        const char* given = p.timeLimit ? "time_limit" : p.estimator ? "estimator" : p.part ? "light_paths" : nullptr;
+        const char* given = p.timeLimit   ? "time_limit"
+                            : p.estimator ? "estimator"
+                            : p.part      ? "light_paths"
+                            : p.sampler   ? "sampler"
+                                          : nullptr;
         if (given)
             return problem(given, "is for the path tracer (renderer path), not " + std::string(toString(r.engine)));
     }
@@ -111,6 +115,7 @@ trace::PathSettings toPath(const RenderRequest& r, const Scene& scene) {
     s.timeLimit = r.path.timeLimit.value_or(0.0);
     s.estimator = r.path.estimator.value_or(trace::PathEstimator::Mis);
     s.part = r.path.part.value_or(trace::PathPart::All);
+    s.sampler = r.path.sampler.value_or(trace::PathSampler::Sobol);
     return s;
 }
 
