@@ -4,7 +4,8 @@
 //          independent and the Sobol sampler: the median over RUNS seeds of each;
 //   speed  paths per second of each sampler on assets/scenes/default.json (640x360, 16 spp, the scene's
 //          depth), runs alternating between the samplers: the median of RUNS.
-// Usage: path_sampler_bench [WxH of the error renders, default 128x72] [runs, default 5] [threads, default 2]
+// Usage: path_sampler_bench [WxH of the error renders, default 128x72 | speed: the speed part alone] [runs,
+// default 5] [threads, default 2]
 #include "bench_timing.h"
 #include "scene/scene_load.h"
 #include "trace/path/path_render.h"
@@ -43,8 +44,9 @@ double rmse(const ImageF& a, const ImageF& b) {
 int main(int argc, char** argv) {
     using namespace shadelab::bench;
     int width = 128, height = 72;
-    if (argc > 1 && std::sscanf(argv[1], "%dx%d", &width, &height) != 2) {
-        std::fprintf(stderr, "usage: path_sampler_bench [WxH] [runs] [threads]\n");
+    const bool speedOnly = argc > 1 && std::string(argv[1]) == "speed";
+    if (argc > 1 && !speedOnly && std::sscanf(argv[1], "%dx%d", &width, &height) != 2) {
+        std::fprintf(stderr, "usage: path_sampler_bench [WxH | speed] [runs] [threads]\n");
         return 2;
     }
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
@@ -52,6 +54,7 @@ int main(int argc, char** argv) {
     const trace::PathSampler samplers[] = {trace::PathSampler::Independent, trace::PathSampler::Sobol};
     try {
         for (const char* name : {"cornell", "local-vs-global"}) {
+            if (speedOnly) break;
             const std::string path = std::string(SHADELAB_SOURCE_DIR "/assets/scenes/") + name + ".json";
             const auto scene = std::make_shared<const trace::TraceScene>(loadScene(path));
             trace::PathSettings s;
@@ -63,6 +66,7 @@ int main(int argc, char** argv) {
             const Clock::time_point t0 = Clock::now();
             const ImageF reference = render(scene, s);
             std::printf("%s %dx%d: reference 4096 spp in %.1f s\n", name, width, height, msSince(t0) / 1000.0);
+            std::fflush(stdout);
             for (int spp : {4, 16, 64}) {
                 double med[2];
                 for (int k = 0; k < 2; ++k) {
