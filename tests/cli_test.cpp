@@ -77,7 +77,8 @@ TEST(CliPath, TimeLimitStopsAtAWholeSampleCountAndPathFlagsNeedThePathRenderer) 
     Result r = run("render " + scene + " -o " + out + " --size 64x36 --renderer path --spp 100000 --time-limit 0.5");
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("(time limit)"), std::string::npos) << r.out;
-    for (const char* flags : {"--time-limit 1", "--estimator bsdf", "--light-paths indirect"}) {
+    for (const char* flags :
+         {"--time-limit 1", "--estimator bsdf", "--light-paths indirect", "--sampler independent"}) {
         Result bad = run("render " + scene + " -o " + out + " --renderer trace " + flags);
         EXPECT_EQ(bad.code, 2) << flags << ": " << bad.out;
         const std::string flag = std::string(flags).substr(0, std::string(flags).find(' '));

@@ -36,6 +36,7 @@ render::RenderRequest requestOf(const json& c) {
         r.path.estimator = *lookupName(trace::kPathEstimatorNames, c["estimator"].get<std::string>());
     if (c.contains("light_paths"))
         r.path.part = *lookupName(trace::kPathPartNames, c["light_paths"].get<std::string>());
+    if (c.contains("sampler")) r.path.sampler = *lookupName(trace::kPathSamplerNames, c["sampler"].get<std::string>());
     return r;
 }
 

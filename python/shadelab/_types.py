@@ -27,6 +27,9 @@ EstimatorName = Literal["mis", "bsdf", "light"]
 # render(light_paths=...): which light the path tracer lets reach the image (the binary's --light-paths).
 LightPathsName = Literal["all", "direct", "indirect"]
 
+# render(sampler=...): where the path tracer's random numbers come from (the binary's --sampler).
+SamplerName = Literal["sobol", "independent"]
+
 # How the 8-bit pixels and the PNG encode the linear floats (the binary's --encoding).
 EncodingName = Literal["srgb", "linear"]
 

@@ -21,7 +21,8 @@ TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy tre
 if TYPE_CHECKING:
     from typing import Any, Sequence, SupportsInt
 
-    from ._types import BackendName, EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName, Size
+    from ._types import (BackendName, EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName,
+                         SamplerName, Size)
     from .typing import SceneLike
 
 
@@ -63,7 +64,8 @@ class Renderer:
     def render(self, scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
                spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-               light_paths: LightPathsName | None = None, max_memory: MemorySize | None = None) -> _shadelab.Image:
+               light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
+               max_memory: MemorySize | None = None) -> _shadelab.Image:
         """Renders `scene` to a shadelab.Image with this Renderer's GL context and programs.
 
         scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -88,8 +90,11 @@ class Renderer:
         estimator: "path" only: how emitters' light is sampled, "mis", "bsdf" or "light" (all converge to the
             same image, with different noise); default None, "mis". The binary's --estimator.
         light_paths: "path" only: which light reaches the image, "all", "direct" or "indirect" (what the ambient
-            term stands in for); default None, "all". The binary's --light-paths. Given to another renderer,
-            any of these three raises ValueError.
+            term stands in for); default None, "all". The binary's --light-paths.
+        sampler: "path" only: where the random numbers come from, "sobol" (Owen-scrambled Sobol points,
+            stratified in each pixel: less noise at equal samples) or "independent" (plain Monte Carlo); both
+            converge to the same image; default None, "sobol". The binary's --sampler. Given to another
+            renderer, any of these four raises ValueError.
         max_memory: the most memory the render may take: an int of bytes, or a string as the binary's
             --max-memory reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's
             default, half of physical memory (within ulimit -v). A render estimated to need more raises
@@ -102,7 +107,7 @@ class Renderer:
         """
         limit = _rendering.memory_limit(max_memory)  # the default too: a path's environment map is held to it
         return _rendering.render_handle(self._core, _scene(scene, limit)._handle, size, renderer, spp, encoding,
-                                        depth, threads, coverage, time_limit, estimator, light_paths,
+                                        depth, threads, coverage, time_limit, estimator, light_paths, sampler,
                                         None if max_memory is None else limit)
 
     @property
@@ -142,7 +147,8 @@ def default_renderer() -> Renderer:
 def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
            spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
            coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-           light_paths: LightPathsName | None = None, max_memory: MemorySize | None = None) -> _shadelab.Image:
+           light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
+               max_memory: MemorySize | None = None) -> _shadelab.Image:
     """Renders `scene` with the default Renderer (default_renderer()) to a shadelab.Image.
 
     scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -167,8 +173,11 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
     estimator: "path" only: how emitters' light is sampled, "mis", "bsdf" or "light" (all converge to the
         same image, with different noise); default None, "mis". The binary's --estimator.
     light_paths: "path" only: which light reaches the image, "all", "direct" or "indirect" (what the ambient
-        term stands in for); default None, "all". The binary's --light-paths. Given to another renderer,
-        any of these three raises ValueError.
+        term stands in for); default None, "all". The binary's --light-paths.
+    sampler: "path" only: where the random numbers come from, "sobol" (Owen-scrambled Sobol points,
+        stratified in each pixel: less noise at equal samples) or "independent" (plain Monte Carlo); both
+        converge to the same image; default None, "sobol". The binary's --sampler. Given to another renderer,
+        any of these four raises ValueError.
     max_memory: the most memory the render may take: an int of bytes, or a string as the binary's --max-memory
         reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's default, half of
         physical memory (within ulimit -v). A render estimated to need more raises shadelab.InputError before
@@ -181,7 +190,8 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
     """
     return default_renderer().render(scene, size, renderer=renderer, spp=spp, encoding=encoding, depth=depth,
                                      threads=threads, coverage=coverage, time_limit=time_limit,
-                                     estimator=estimator, light_paths=light_paths, max_memory=max_memory)
+                                     estimator=estimator, light_paths=light_paths, sampler=sampler,
+                                     max_memory=max_memory)
 
 
 def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_SIZE) -> dict[str, Any]:

@@ -69,6 +69,7 @@ Action renderAction(const JsonNode& a) {
     if (a.has("timeLimit")) q.path.timeLimit = a.child("timeLimit").number();
     if (a.has("estimator")) q.path.estimator = a.child("estimator").oneOf(trace::kPathEstimatorNames, "estimator");
     if (a.has("lightPaths")) q.path.part = a.child("lightPaths").oneOf(trace::kPathPartNames, "light paths");
+    if (a.has("sampler")) q.path.sampler = a.child("sampler").oneOf(trace::kPathSamplerNames, "sampler");
     // The ranges are the request's, as every front end holds them; only the names are the script's.
     if (std::optional<render::RequestProblem> p = render::check(q)) a.failAt(scriptField(p->field), p->reason);
     return r;
@@ -194,7 +195,7 @@ const ActionInfo kActions[] = {
          return SmoothScreenshot{a.child("path").string(), a.has("timeout") ? a.child("timeout").positive() : 60.0f};
      }},
     {"render",
-     {"path", "renderer", "size", "spp", "depth", "threads", "timeLimit", "estimator", "lightPaths"},
+     {"path", "renderer", "size", "spp", "depth", "threads", "timeLimit", "estimator", "lightPaths", "sampler"},
      renderAction},
     {"undo", {}, [](const JsonNode&) -> Action { return Undo{}; }},
     {"redo", {}, [](const JsonNode&) -> Action { return Redo{}; }},

@@ -37,7 +37,7 @@ const char* const kHelpHead =
     "  --terms LIST               comma-separated terms to switch on, the rest off:\n"
     "                             ambient,diffuse,specular,shadows,reflections or none (default: the scene's)\n"
     "  --spp N                    samples per pixel on a fixed k x k grid; N = 1, 4, 9, ..., 64 (default 1);\n"
-    "                             --renderer path: random samples, any N from 1 (default 16)\n"
+    "                             --renderer path: any N from 1 (default 16)\n"
     "  --camera fit|file|N        fit: frame the scene's bounds (default for a .gltf/.glb); file: the scene\n"
     "                             file's camera (default for a .json) or a model's first glTF camera; N: the\n"
     "                             model's glTF camera N, from 0\n"
@@ -52,7 +52,9 @@ const char* const kHelpHead =
     "  --light-paths NAME         path: all (default) | direct | indirect: indirect is the light scattered\n"
     "                             twice or more, what the lecture's ambient term stands in for\n"
     "  --denoise                  path: write the denoised preview (an edge-avoiding filter guided by the\n"
-    "                             first hit's albedo, normal and depth) instead of the raw estimate\n";
+    "                             first hit's albedo, normal and depth) instead of the raw estimate\n"
+    "  --sampler NAME             path: sobol (default) | independent: Owen-scrambled Sobol numbers,\n"
+    "                             stratified in each pixel, or independent random ones (more noise)\n";
 
 const char* const kHelpTail =
     "  --encoding NAME            srgb (default) | linear: how linear colour becomes 8-bit\n"
@@ -116,9 +118,9 @@ CameraChoice parseCameraFlag(const std::string& value) {
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
     std::vector<std::string> valued = {
-        "-o",           "--output",     "--size",      "--model",       "--terms",        "--encoding",
-        "--gl-backend", "--spp",        "--renderer",  "--threads",     "--depth",        "--max-memory",
-        "--camera",     "--time-limit", "--estimator", "--light-paths", "--exr-precision"};
+        "-o",           "--output",     "--size",      "--model",       "--terms",         "--encoding",
+        "--gl-backend", "--spp",        "--renderer",  "--threads",     "--depth",         "--max-memory",
+        "--camera",     "--time-limit", "--estimator", "--light-paths", "--exr-precision", "--sampler"};
     std::vector<std::string> flags = {"-h",       "--help",   "--verbose", "--timings", "--allow-external-paths",
                                       "--strict", "--passes", "--denoise"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
@@ -157,6 +159,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         r.path.estimator = parseChoice("--estimator", *v, trace::kPathEstimatorNames);
     if (auto v = args.value("--light-paths")) r.path.part = parseChoice("--light-paths", *v, trace::kPathPartNames);
     r.path.denoise = args.flag("--denoise");
+    if (auto v = args.value("--sampler")) r.path.sampler = parseChoice("--sampler", *v, trace::kPathSamplerNames);
     if (auto v = args.value("--threads")) r.threads = parseWhole("--threads", *v);
     if (auto v = args.value("--depth")) r.depth = parseWhole("--depth", *v);
     // The ranges are the request's, as every front end holds them; only the words are the command line's.

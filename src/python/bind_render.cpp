@@ -74,7 +74,8 @@ void bindRender(py::module_& m) {
             [](Renderer& r, const SceneHandle& scene, int width, int height, const std::string& engine,
                std::optional<int> spp, const std::string& encoding, std::optional<int> depth, int threads,
                bool coverage, std::optional<double> timeLimit, const std::optional<std::string>& estimator,
-               const std::optional<std::string>& lightPaths, std::optional<uint64_t> maxMemory) {
+               const std::optional<std::string>& lightPaths, const std::optional<std::string>& sampler,
+               std::optional<uint64_t> maxMemory) {
                 render::RenderRequest request;
                 request.width = width;
                 request.height = height;
@@ -87,6 +88,7 @@ void bindRender(py::module_& m) {
                 request.path.timeLimit = timeLimit;
                 request.path.estimator = namedIfGiven(trace::kPathEstimatorNames, estimator, "estimator");
                 request.path.part = namedIfGiven(trace::kPathPartNames, lightPaths, "light_paths");
+                request.path.sampler = namedIfGiven(trace::kPathSamplerNames, sampler, "sampler");
                 request.maxMemory = maxMemory;
                 validate(request);
                 const Scene copy = scene.scene();  // O(objects); Python may edit the original meanwhile
@@ -100,7 +102,8 @@ void bindRender(py::module_& m) {
             py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("renderer") = "raster",
             py::arg("spp") = py::none(), py::arg("encoding") = "srgb", py::arg("depth") = py::none(),
             py::arg("threads") = 0, py::arg("coverage") = false, py::arg("time_limit") = py::none(),
-            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("max_memory") = py::none())
+            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("sampler") = py::none(),
+            py::arg("max_memory") = py::none())
         .def("context_info",
              [](Renderer& r) {
                  gl::ContextInfo info;

@@ -26,8 +26,9 @@ namespace shadelab::python {
 class GlSession;
 
 // The request's problem as Python words it: UsageError "<keyword>: <reason>" (the keyword is the request's
-// field: size, spp, depth, threads, time_limit, estimator, light_paths, max_memory). Also refuses Engine::Both, which
-// is the command line's side-by-side picture; Python compares two renders with shadelab.compare.
+// field: size, spp, depth, threads, time_limit, estimator, light_paths, sampler, max_memory). Also refuses
+// Engine::Both, which is the command line's side-by-side picture; Python compares two renders with
+// shadelab.compare.
 void validate(const render::RenderRequest& r);
 
 class Renderer {

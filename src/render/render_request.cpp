@@ -50,6 +50,7 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
                             : p.estimator ? "estimator"
                             : p.part      ? "light_paths"
                             : p.denoise   ? "denoise"
+                            : p.sampler   ? "sampler"
                                           : nullptr;
         if (given)
             return problem(given, "is for the path tracer (renderer path), not " + std::string(toString(r.engine)));
@@ -116,6 +117,7 @@ trace::PathSettings toPath(const RenderRequest& r, const Scene& scene) {
     s.estimator = r.path.estimator.value_or(trace::PathEstimator::Mis);
     s.part = r.path.part.value_or(trace::PathPart::All);
     s.denoise = r.path.denoise;
+    s.sampler = r.path.sampler.value_or(trace::PathSampler::Sobol);
     return s;
 }
 

@@ -50,6 +50,7 @@ struct PathOptions {
                                                     // whole pass begun in time; unset: no limit
     std::optional<trace::PathEstimator> estimator;  // unset: mis
     std::optional<trace::PathPart> part;            // which light reaches the image; unset: all
+    std::optional<trace::PathSampler> sampler;      // where the random numbers come from; unset: sobol
     bool denoise = false;                           // show the denoised preview instead of the raw estimate
 };
 
@@ -72,7 +73,7 @@ struct RenderRequest {
 };
 
 // A request's field and why it cannot be rendered. Fields: "size", "spp", "depth", "threads",
-// "time_limit", "estimator", "light_paths", "denoise", "max_memory".
+// "time_limit", "estimator", "light_paths", "sampler", "denoise", "max_memory".
 struct RequestProblem {
     std::string field;
     std::string reason;

@@ -59,13 +59,15 @@ TEST(RenderRequest, EachLimitIsNamedByItsField) {
         {"time limit off path", [](RenderRequest& r) { r.path.timeLimit = 1.0; }, "time_limit"},
         {"estimator off path", [](RenderRequest& r) { r.path.estimator = trace::PathEstimator::Bsdf; }, "estimator"},
         {"light paths off path", [](RenderRequest& r) { r.path.part = trace::PathPart::Direct; }, "light_paths"},
+        {"sampler off path", [](RenderRequest& r) { r.path.sampler = trace::PathSampler::Independent; }, "sampler"},
         {"negative time limit", [](RenderRequest& r) { r.engine = Engine::Path, r.path.timeLimit = -1.0; },
          "time_limit"},
         {"NaN time limit", [](RenderRequest& r) { r.engine = Engine::Path, r.path.timeLimit = 0.0 / 0.0; },
          "time_limit"},
         {"path options on path",
          [](RenderRequest& r) {
-             r.engine = Engine::Path, r.path.timeLimit = 2.0, r.path.part = trace::PathPart::Indirect;
+             r.engine = Engine::Path, r.path.timeLimit = 2.0, r.path.part = trace::PathPart::Indirect,
+             r.path.sampler = trace::PathSampler::Independent;
          },
          ""},
     };
@@ -128,13 +130,16 @@ TEST(RenderRequest, ConversionsCarryEveryField) {
     r.path.timeLimit = 4.0;
     r.path.estimator = trace::PathEstimator::Light;
     r.path.part = trace::PathPart::Indirect;
+    r.path.sampler = trace::PathSampler::Independent;
     const trace::PathSettings p = render::toPath(r, scene);
     EXPECT_EQ(p.spp, 16);
     EXPECT_EQ(p.maxDepth, 2);
     EXPECT_EQ(p.timeLimit, 4.0);
     EXPECT_EQ(p.estimator, trace::PathEstimator::Light);
     EXPECT_EQ(p.part, trace::PathPart::Indirect);
+    EXPECT_EQ(p.sampler, trace::PathSampler::Independent);
     EXPECT_EQ(render::toPath(RenderRequest{}, scene).estimator, trace::PathEstimator::Mis);
+    EXPECT_EQ(render::toPath(RenderRequest{}, scene).sampler, trace::PathSampler::Sobol);
 }
 
 // Compared with the rasterizer, the reference is traced at the comparison's depth and both keep coverage.

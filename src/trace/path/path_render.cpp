@@ -59,6 +59,7 @@ void PathRender::renderPixel(int x, int y, int count) {
     SampleRng rng;
     rng.pixel = uint32_t(p);
     rng.seed = settings_.seed;
+    rng.sampler = settings_.sampler;
     for (int k = 0; k < count; ++k) {
         const uint32_t done = count_[p].load(std::memory_order_relaxed);
         rng.sample = done;

@@ -32,19 +32,31 @@ inline constexpr EnumName<PathPart> kPathPartNames[] = {
     {PathPart::Indirect, "indirect"},
 };
 
+// Where the path tracer's random numbers come from (sample_rng.h): Owen-scrambled Sobol points, stratified
+// within each pixel (less noise at equal samples), or independent hashed numbers (plain Monte Carlo, which
+// the tests keep as the reference). Both converge to the same image.
+enum class PathSampler { Sobol, Independent };
+
+inline constexpr EnumName<PathSampler> kPathSamplerNames[] = {
+    {PathSampler::Sobol, "sobol"},
+    {PathSampler::Independent, "independent"},
+};
+
 inline const char* toString(PathEstimator e) { return nameOf(kPathEstimatorNames, e); }
 inline const char* toString(PathPart p) { return nameOf(kPathPartNames, p); }
 inline std::optional<PathEstimator> parsePathEstimator(std::string_view s) {
     return lookupName(kPathEstimatorNames, s);
 }
 inline std::optional<PathPart> parsePathPart(std::string_view s) { return lookupName(kPathPartNames, s); }
+inline const char* toString(PathSampler s) { return nameOf(kPathSamplerNames, s); }
+inline std::optional<PathSampler> parsePathSampler(std::string_view s) { return lookupName(kPathSamplerNames, s); }
 
 inline constexpr int kMaxPathSamples = 1 << 20;  // samples per pixel
 inline constexpr double kMaxTimeLimit = 1e7;     // seconds
 
 struct PathSettings {
     int width = 1280, height = 720;  // pixels, >= 1
-    int spp = 16;                    // samples per pixel, >= 1 (any count: samples are random, not a grid)
+    int spp = 16;                    // samples per pixel, >= 1 (any count; Sobol stratifies best at powers of 2)
     int threads = 0;                 // worker threads; 0 = every core
     int maxDepth = -1;               // bounces after the camera hit, >= 0 (0: direct light only); -1 = the scene's
     int rouletteDepth = 3;           // bounces before Russian roulette may end a path, >= 0
@@ -54,6 +66,7 @@ struct PathSettings {
     bool coverage = false;           // also fill the coverage buffer (first hit of each pixel's centre)
     PathEstimator estimator = PathEstimator::Mis;
     PathPart part = PathPart::All;
+    PathSampler sampler = PathSampler::Sobol;
     bool denoise = false;  // pathTraceImage also makes a denoised preview (trace/path/path_denoise.h)
 };
 
