@@ -58,7 +58,7 @@ namespace {
 
 // Pixels of a row filtered together: their sums live in local arrays, which the compiler knows no plane
 // aliases, so that each tap's loop over them vectorises without run-time overlap checks.
-constexpr int kChunk = 64;
+constexpr int kChunk = 256;
 
 // One à-trous pass at `step` pixels over row y.
 inline void filterRowIn(const Planes& in, const Guides& g, const std::vector<float>& lum,
