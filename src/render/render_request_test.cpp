@@ -60,6 +60,7 @@ TEST(RenderRequest, EachLimitIsNamedByItsField) {
         {"estimator off path", [](RenderRequest& r) { r.path.estimator = trace::PathEstimator::Bsdf; }, "estimator"},
         {"light paths off path", [](RenderRequest& r) { r.path.part = trace::PathPart::Direct; }, "light_paths"},
         {"sampler off path", [](RenderRequest& r) { r.path.sampler = trace::PathSampler::Independent; }, "sampler"},
+        {"denoise off path", [](RenderRequest& r) { r.path.denoise = true; }, "denoise"},
         {"negative time limit", [](RenderRequest& r) { r.engine = Engine::Path, r.path.timeLimit = -1.0; },
          "time_limit"},
         {"NaN time limit", [](RenderRequest& r) { r.engine = Engine::Path, r.path.timeLimit = 0.0 / 0.0; },
@@ -131,6 +132,7 @@ TEST(RenderRequest, ConversionsCarryEveryField) {
     r.path.estimator = trace::PathEstimator::Light;
     r.path.part = trace::PathPart::Indirect;
     r.path.sampler = trace::PathSampler::Independent;
+    r.path.denoise = true;
     const trace::PathSettings p = render::toPath(r, scene);
     EXPECT_EQ(p.spp, 16);
     EXPECT_EQ(p.maxDepth, 2);
@@ -138,6 +140,8 @@ TEST(RenderRequest, ConversionsCarryEveryField) {
     EXPECT_EQ(p.estimator, trace::PathEstimator::Light);
     EXPECT_EQ(p.part, trace::PathPart::Indirect);
     EXPECT_EQ(p.sampler, trace::PathSampler::Independent);
+    EXPECT_TRUE(p.denoise);
+    EXPECT_FALSE(render::toPath(RenderRequest{}, scene).denoise);
     EXPECT_EQ(render::toPath(RenderRequest{}, scene).estimator, trace::PathEstimator::Mis);
     EXPECT_EQ(render::toPath(RenderRequest{}, scene).sampler, trace::PathSampler::Sobol);
 }
