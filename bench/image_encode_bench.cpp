@@ -66,7 +66,7 @@ Image8 noisy(const Image8& frame) {
     std::mt19937 rng(7);
     std::normal_distribution<float> noise(0.0f, 0.05f);
     for (size_t i = 0; i < f.rgba.size(); ++i) f.rgba[i] = frame.data[i / 4 * 3 + i % 4 % 3] / 255.0f + noise(rng);
-    return toImage8(f, Encoding::Linear, nullptr);
+    return toImage8(f, Encoding::Linear, DisplaySettings{}, nullptr);
 }
 
 }  // namespace
@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
     const int height = argc > 3 ? std::max(1, std::atoi(argv[3])) : 1080;
     try {
         const ImageF linear = gradient(width, height);
-        const Image8 frame = toImage8(renderedFrame(width, height), Encoding::Srgb, nullptr);  // also builds the tables
+        const Image8 frame = toImage8(renderedFrame(width, height), Encoding::Srgb, DisplaySettings{},
+                                      nullptr);  // also builds the tables
         const Image8 grainy = noisy(frame);
         std::printf("image_encode_bench: %dx%d, %u hardware threads, %d runs\n", width, height,
                     std::thread::hardware_concurrency(), runs);
@@ -86,7 +87,7 @@ int main(int argc, char** argv) {
         size_t cleanBytes = 0, roughBytes = 0;
         for (int r = 0; r < runs; ++r) {
             auto t0 = Clock::now();
-            const Image8 out = toImage8(linear, Encoding::Srgb, nullptr);
+            const Image8 out = toImage8(linear, Encoding::Srgb, DisplaySettings{}, nullptr);
             convert.push_back(msSince(t0));
             if (out.data.size() != size_t(width) * size_t(height) * 3) {
                 std::fprintf(stderr, "image_encode_bench: toImage8 returned %zu bytes\n", out.data.size());

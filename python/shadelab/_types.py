@@ -30,6 +30,10 @@ LightPathsName = Literal["all", "direct", "indirect"]
 # How the 8-bit pixels and the PNG encode the linear floats (the binary's --encoding).
 EncodingName = Literal["srgb", "linear"]
 
+# render(view_transform=...): how linear values map into [0, 1] before the encoding: "standard" clamps,
+# "filmic" is Narkowicz's ACES fit (the binary's --view-transform).
+ViewTransformName = Literal["standard", "filmic"]
+
 # Renderer(backend=...): the headless GL context to make; "auto" tries them in this order, honouring
 # SHADELAB_GL_BACKEND (the binary's --gl-backend).
 BackendName = Literal["auto", "egl-device", "egl-surfaceless", "osmesa"]

@@ -129,6 +129,18 @@ const ActionInfo kActions[] = {
     {"setEncoding",
      {"encoding"},
      [](const JsonNode& a) -> Action { return SetEncoding{a.child("encoding").oneOf(kEncodingNames, "encoding")}; }},
+    {"setDisplay",
+     {"exposure", "viewTransform"},
+     [](const JsonNode& a) -> Action {
+         SetDisplay d;
+         if (auto f = a.find("exposure")) {
+             const double stops = f->number();
+             if (std::optional<std::string> why = exposureProblem(stops)) f->fail(*why);
+             d.exposure = stops;
+         }
+         if (auto f = a.find("viewTransform")) d.transform = f->oneOf(kViewTransformNames, "view transform");
+         return d;
+     }},
     {"setSplit",
      {"position"},
      [](const JsonNode& a) -> Action { return SetSplit{a.child("position").inRange(0.0f, 1.0f, false, false)}; }},
@@ -248,6 +260,12 @@ struct StateApplier {
     void operator()(const SwitchModel& x) const { switchModelKeepingHighlights(state, x.model, x.allObjects); }
     void operator()(const SetMode& x) const { setMode(state, x.mode); }
     void operator()(const SetEncoding& x) const { setEncoding(state, x.encoding); }
+    void operator()(const SetDisplay& x) const {
+        DisplaySettings d = state.scene.display;
+        if (x.exposure) d.exposure = *x.exposure;
+        if (x.transform) d.transform = *x.transform;
+        setDisplay(state, d);
+    }
     void operator()(const SetSplit& x) const { setSplitPosition(state, x.position); }
     void operator()(const SetAmbient& x) const { setAmbient(state, x.Ia); }
     void operator()(const SetRaster& x) const {

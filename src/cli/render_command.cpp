@@ -45,18 +45,26 @@ std::unique_ptr<gl::HeadlessContext> startContext(const RenderOptions& o, StageT
     return context;
 }
 
-Rendered rasterize(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+// `display`: what the pixels are encoded with (render::displayOf, or Standard for a comparison); `linear`, when
+// given, receives the float image too.
+Rendered rasterize(const Scene& scene, const render::RenderRequest& request, const DisplaySettings& display,
+                   StageTimer& timer, ImageF* linear = nullptr) {
     raster::RasterRenderer renderer;
     timer.stage("shader compile");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
-    raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, render::toOffscreen(request));
+    raster::OffscreenOptions options = render::toOffscreen(request, scene);
+    options.display = display;
+    options.keepLinear = linear != nullptr;
+    raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, options);
     timer.stageSplit("draw, " + std::to_string(r.bands) + " band(s) (incl. lazy shader compile)", r.drawMs,
                      "readback + conversion", r.readMs);
+    if (linear) *linear = std::move(r.linear);
     return {std::move(r.pixels), std::move(r.coverage), r.nonFinite};
 }
 
-Rendered traceReference(const Scene& scene, const render::RenderRequest& request, StageTimer& timer) {
+Rendered traceReference(const Scene& scene, const render::RenderRequest& request, const DisplaySettings& display,
+                        StageTimer& timer, ImageF* linear = nullptr) {
     const trace::TraceSettings settings = render::toTrace(request, scene);
     trace::TraceOutput out;
     {
@@ -65,9 +73,10 @@ Rendered traceReference(const Scene& scene, const render::RenderRequest& request
     }
     timer.stage("trace");
     Rendered r;
-    r.pixels = toImage8(out.color, request.encoding, &r.nonFinite);
+    r.pixels = toImage8(out.color, request.encoding, display, &r.nonFinite);
     r.coverage = std::move(out.coverage);
     timer.stage("conversion");
+    if (linear) *linear = std::move(out.color);
     return r;
 }
 
@@ -90,7 +99,7 @@ Rendered pathTrace(const Scene& scene, const render::RenderRequest& request, Sta
                  out.spp, settings.timeLimit > 0.0 && out.spp < settings.spp ? " (time limit)" : "", out.seconds,
                  paths / std::max(out.seconds, 1e-9) * 1e-6, settings.maxDepth, out.meanStandardError8);
     Rendered r;
-    r.pixels = toImage8(out.color, request.encoding, &r.nonFinite);
+    r.pixels = toImage8(out.color, request.encoding, render::displayOf(request, scene), &r.nonFinite);
     timer.stage("conversion");
     return r;
 }
@@ -141,12 +150,13 @@ int render(const RenderOptions& o, std::string& doing) {
                   : printWarning)(o.input + ": " + renderer + ": " + nonFiniteMessage(r.nonFinite, pixels));
     };
     Image8 output;
+    const DisplaySettings display = render::displayOf(request, scene);
     if (request.engine == render::Engine::Raster) {
-        Rendered r = rasterize(scene, request, timer);
+        Rendered r = rasterize(scene, request, display, timer);
         report("raster", r);
         output = std::move(r.pixels);
     } else if (request.engine == render::Engine::Trace) {
-        Rendered r = traceReference(scene, request, timer);
+        Rendered r = traceReference(scene, request, display, timer);
         report("trace", r);
         output = std::move(r.pixels);
     } else if (request.engine == render::Engine::Path) {
@@ -154,19 +164,27 @@ int render(const RenderOptions& o, std::string& doing) {
         report("path", r);
         output = std::move(r.pixels);
     } else {
-        Rendered a = rasterize(scene, request, timer);
-        Rendered b = traceReference(scene, request, timer);
+        // The comparison and its heatmap read the Standard bytes, whatever the display: the numbers are the
+        // renderers', not the view's. The two images beside the heatmap are shown through the display.
+        const bool shown = !display.isStandard();
+        ImageF linearA, linearB;
+        Rendered a = rasterize(scene, request, DisplaySettings{}, timer, shown ? &linearA : nullptr);
+        Rendered b = traceReference(scene, request, DisplaySettings{}, timer, shown ? &linearB : nullptr);
         report("raster", a);
         report("trace", b);
         CompareResult cmp = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
         Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
-        output = sideBySide({&a.pixels, &b.pixels, &heat});
-        timer.stage("compare + heatmap");
         std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
                      render::traceDepth(request, scene), compareSummary(cmp).c_str());
         // The verdict is under the strict gates of design.md §4; say in words where the images differ and why.
         const DifferenceSites sites = differenceSites(a.pixels, b.pixels, a.coverage, cmp);
         std::fprintf(stderr, "%s\n", describeDifference(scene, sites, cmp.gates.threshold).c_str());
+        if (shown) {
+            a.pixels = toImage8(linearA, request.encoding, display, nullptr);
+            b.pixels = toImage8(linearB, request.encoding, display, nullptr);
+        }
+        output = sideBySide({&a.pixels, &b.pixels, &heat});
+        timer.stage("compare + heatmap");
     }
     doing = "encoding the PNG";
     std::vector<uint8_t> png = encodePng(output);
@@ -176,9 +194,10 @@ int render(const RenderOptions& o, std::string& doing) {
 
     if (o.timings) timer.print(stderr);
     if (o.verbose)
-        std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s, %zu bytes)\n",
+        std::fprintf(stderr, "shadelab: wrote %s (%dx%d, %s%s%s, %zu bytes)\n",
                      isStdout(o.output) ? "stdout" : o.output.c_str(), output.width, output.height,
-                     toString(request.encoding), png.size());
+                     toString(request.encoding), display.isStandard() ? "" : ", ", describe(display).c_str(),
+                     png.size());
     return 0;
 }
 

@@ -108,7 +108,7 @@ TEST(RenderRequest, ConversionsCarryEveryField) {
     r.spp = 9;
     r.threads = 3;
     r.encoding = Encoding::Linear;
-    const raster::OffscreenOptions o = render::toOffscreen(r);
+    const raster::OffscreenOptions o = render::toOffscreen(r, Scene{});
     EXPECT_EQ(o.width, 320);
     EXPECT_EQ(o.height, 200);
     EXPECT_EQ(o.spp, 9);
@@ -146,7 +146,7 @@ TEST(RenderRequest, BothTracesAtTheComparisonsDepth) {
     EXPECT_EQ(render::traceDepth(r, scene), comparisonDepth(scene));
     EXPECT_EQ(render::toTrace(r, scene).maxDepth, 1);
     EXPECT_TRUE(render::toTrace(r, scene).coverage);
-    EXPECT_TRUE(render::toOffscreen(r).coverage);
+    EXPECT_TRUE(render::toOffscreen(r, Scene{}).coverage);
     r.depth = 3;  // asked for: as asked
     EXPECT_EQ(render::toTrace(r, scene).maxDepth, 3);
     r.engine = Engine::Trace;  // control: alone, the scene's depth
