@@ -153,3 +153,28 @@ TEST(RenderRequest, BothTracesAtTheComparisonsDepth) {
     r.depth.reset();
     EXPECT_EQ(render::toTrace(r, scene).maxDepth, 5);
 }
+
+// The display: an exposure outside [-16, 16] (or NaN) is refused by its field; each unset field is the scene's,
+// and a set one overrides it; the raster conversion carries the result.
+TEST(RenderRequest, DisplayFieldsOverrideTheScenesAndExposureIsBounded) {
+    render::RenderRequest r;
+    for (double bad : {40.0, -16.01, std::nan("")}) {
+        r.exposure = bad;
+        const std::optional<render::RequestProblem> p = render::check(r);
+        ASSERT_TRUE(p) << bad;
+        EXPECT_EQ(p->field, "exposure");
+        EXPECT_EQ(p->reason.rfind("must be in [-16, 16] stops, got ", 0), 0u) << p->reason;
+    }
+    r.exposure = 16.0;
+    EXPECT_FALSE(render::check(r));
+    Scene scene;
+    scene.display = {-2.0, ViewTransform::Filmic};
+    r.exposure.reset();
+    EXPECT_EQ(render::displayOf(r, scene), scene.display);
+    r.exposure = 1.0;
+    EXPECT_EQ(render::displayOf(r, scene), (DisplaySettings{1.0, ViewTransform::Filmic}));
+    r.viewTransform = ViewTransform::Standard;
+    EXPECT_EQ(render::displayOf(r, scene), (DisplaySettings{1.0, ViewTransform::Standard}));
+    EXPECT_EQ(render::toOffscreen(r, scene).display, (DisplaySettings{1.0, ViewTransform::Standard}));
+    EXPECT_EQ(render::displayOf(render::RenderRequest{}, Scene{}), DisplaySettings{});
+}
