@@ -36,6 +36,9 @@ render::RenderRequest requestOf(const json& c) {
         r.path.estimator = *lookupName(trace::kPathEstimatorNames, c["estimator"].get<std::string>());
     if (c.contains("light_paths"))
         r.path.part = *lookupName(trace::kPathPartNames, c["light_paths"].get<std::string>());
+    if (c.contains("exposure")) r.exposure = c["exposure"].get<double>();
+    if (c.contains("view_transform"))
+        r.viewTransform = *lookupName(kViewTransformNames, c["view_transform"].get<std::string>());
     return r;
 }
 

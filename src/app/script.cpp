@@ -69,6 +69,9 @@ Action renderAction(const JsonNode& a) {
     if (a.has("timeLimit")) q.path.timeLimit = a.child("timeLimit").number();
     if (a.has("estimator")) q.path.estimator = a.child("estimator").oneOf(trace::kPathEstimatorNames, "estimator");
     if (a.has("lightPaths")) q.path.part = a.child("lightPaths").oneOf(trace::kPathPartNames, "light paths");
+    // Unset: the state's scene's display (what the window shows), as a request's unset fields always are.
+    if (a.has("exposure")) q.exposure = a.child("exposure").number();
+    if (a.has("viewTransform")) q.viewTransform = a.child("viewTransform").oneOf(kViewTransformNames, "view transform");
     // The ranges are the request's, as every front end holds them; only the names are the script's.
     if (std::optional<render::RequestProblem> p = render::check(q)) a.failAt(scriptField(p->field), p->reason);
     return r;
@@ -206,7 +209,8 @@ const ActionInfo kActions[] = {
          return SmoothScreenshot{a.child("path").string(), a.has("timeout") ? a.child("timeout").positive() : 60.0f};
      }},
     {"render",
-     {"path", "renderer", "size", "spp", "depth", "threads", "timeLimit", "estimator", "lightPaths"},
+     {"path", "renderer", "size", "spp", "depth", "threads", "timeLimit", "estimator", "lightPaths", "exposure",
+      "viewTransform"},
      renderAction},
     {"undo", {}, [](const JsonNode&) -> Action { return Undo{}; }},
     {"redo", {}, [](const JsonNode&) -> Action { return Redo{}; }},
