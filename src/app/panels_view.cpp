@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -125,7 +126,8 @@ void drawViewSection(PanelContext& ctx) {
     DisplaySettings display = s.scene.display;
     float stops = float(display.exposure);
     if (ImGui::SliderFloat("exposure (stops)", &stops, float(kMinExposure), float(kMaxExposure), "%+.1f")) {
-        display.exposure = double(stops);
+        // Hundredths of a stop, as a double: a saved scene reads "-3.2", not the float's -3.200000047683716.
+        display.exposure = std::round(double(stops) * 100.0) / 100.0;
         setDisplay(s, display);
     }
     int transform = display.transform == ViewTransform::Filmic ? 1 : 0;
@@ -134,10 +136,8 @@ void drawViewSection(PanelContext& ctx) {
         display.transform = transform == 1 ? ViewTransform::Filmic : ViewTransform::Standard;
         setDisplay(s, display);
     }
-    if (!display.isStandard()) {
-        ImGui::SameLine();
-        if (ImGui::SmallButton("reset")) setDisplay(s, DisplaySettings{});
-    }
+    if (!display.isStandard() && ImGui::SmallButton("standard display (0 stops, clamp)"))
+        setDisplay(s, DisplaySettings{});
     if (s.mode == ViewMode::Split) {
         float split = s.splitPosition;
         if (ImGui::SliderFloat("wipe", &split, 0.0f, 1.0f, "%.2f")) setSplitPosition(s, split);
