@@ -3,7 +3,9 @@
 // whole range and clamps below 0) and encodePng (filters, zlib at its fast level, row bands compressed in
 // parallel) on a rendered frame, clean and with noise (as a path-traced image has), which is what zlib finds
 // hard. Both are stages of `shadelab render --timings` ("readback + conversion" and "PNG encode"). These were
-// the image tests' TimingFullHd cases, which timed without checking anything. Prints medians of N runs.
+// the image tests' TimingFullHd cases, which timed without checking anything. Also the conversion through a
+// display that is not Standard (-1 stop, filmic: the view transform per channel before the tables). Prints
+// medians of N runs.
 // Usage: image_encode_bench [runs] [width] [height]
 #include "bench_timing.h"
 #include "image/encode.h"
@@ -83,7 +85,8 @@ int main(int argc, char** argv) {
         std::printf("image_encode_bench: %dx%d, %u hardware threads, %d runs\n", width, height,
                     std::thread::hardware_concurrency(), runs);
 
-        std::vector<double> convert, clean, rough;
+        std::vector<double> convert, filmic, clean, rough;
+        const DisplaySettings filmicDisplay{-1.0, ViewTransform::Filmic};
         size_t cleanBytes = 0, roughBytes = 0;
         for (int r = 0; r < runs; ++r) {
             auto t0 = Clock::now();
@@ -94,6 +97,10 @@ int main(int argc, char** argv) {
                 return 1;
             }
             t0 = Clock::now();
+            const Image8 tone = toImage8(linear, Encoding::Srgb, filmicDisplay, nullptr);
+            filmic.push_back(msSince(t0));
+            if (tone.data.size() != out.data.size()) return 1;
+            t0 = Clock::now();
             cleanBytes = encodePng(frame).size();
             clean.push_back(msSince(t0));
             t0 = Clock::now();
@@ -101,6 +108,7 @@ int main(int argc, char** argv) {
             rough.push_back(msSince(t0));
         }
         std::printf("toImage8 (RGBA32F -> RGB8, sRGB): median %.2f ms\n", median(convert));
+        std::printf("toImage8 (RGBA32F -> RGB8, -1 stop, filmic, sRGB): median %.2f ms\n", median(filmic));
         std::printf("encodePng, rendered frame: median %.2f ms, %zu bytes\n", median(clean), cleanBytes);
         std::printf("encodePng, rendered frame + noise: median %.2f ms, %zu bytes\n", median(rough), roughBytes);
     } catch (const std::exception& e) {
