@@ -5,7 +5,8 @@
 // hard. Both are stages of `shadelab render --timings` ("readback + conversion" and "PNG encode"). These were
 // the image tests' TimingFullHd cases, which timed without checking anything. And the OpenEXR path that
 // `render -o x.exr` takes instead (encodeExr of the linear frame, float and half; "EXR encode" in --timings) and
-// its read (parseExr, what `compare a.exr b.exr` pays per file). Prints medians of N runs.
+// its read (parseExr, what `compare a.exr b.exr` pays per file), and the conversion through a display that is
+// not Standard (-1 stop, filmic: the view transform per channel before the tables). Prints medians of N runs.
 // Usage: image_encode_bench [runs] [width] [height]
 #include "bench_timing.h"
 #include "image/encode.h"
@@ -69,7 +70,7 @@ Image8 noisy(const Image8& frame) {
     std::mt19937 rng(7);
     std::normal_distribution<float> noise(0.0f, 0.05f);
     for (size_t i = 0; i < f.rgba.size(); ++i) f.rgba[i] = frame.data[i / 4 * 3 + i % 4 % 3] / 255.0f + noise(rng);
-    return toImage8(f, Encoding::Linear, nullptr);
+    return toImage8(f, Encoding::Linear, DisplaySettings{}, nullptr);
 }
 
 }  // namespace
@@ -80,23 +81,29 @@ int main(int argc, char** argv) {
     const int height = argc > 3 ? std::max(1, std::atoi(argv[3])) : 1080;
     try {
         const ImageF linear = gradient(width, height);
-        const Image8 frame = toImage8(renderedFrame(width, height), Encoding::Srgb, nullptr);  // also builds the tables
+        const Image8 frame = toImage8(renderedFrame(width, height), Encoding::Srgb, DisplaySettings{},
+                                      nullptr);  // also builds the tables
         const Image8 grainy = noisy(frame);
         std::printf("image_encode_bench: %dx%d, %u hardware threads, %d runs\n", width, height,
                     std::thread::hardware_concurrency(), runs);
 
         const ImageF rendered = renderedFrame(width, height);
         const ExrImage layers = exrFromImage(rendered);
-        std::vector<double> convert, clean, rough, exrFloat, exrHalf, exrRead;
+        std::vector<double> convert, filmic, clean, rough, exrFloat, exrHalf, exrRead;
+        const DisplaySettings filmicDisplay{-1.0, ViewTransform::Filmic};
         size_t cleanBytes = 0, roughBytes = 0, floatBytes = 0, halfBytes = 0;
         for (int r = 0; r < runs; ++r) {
             auto t0 = Clock::now();
-            const Image8 out = toImage8(linear, Encoding::Srgb, nullptr);
+            const Image8 out = toImage8(linear, Encoding::Srgb, DisplaySettings{}, nullptr);
             convert.push_back(msSince(t0));
             if (out.data.size() != size_t(width) * size_t(height) * 3) {
                 std::fprintf(stderr, "image_encode_bench: toImage8 returned %zu bytes\n", out.data.size());
                 return 1;
             }
+            t0 = Clock::now();
+            const Image8 tone = toImage8(linear, Encoding::Srgb, filmicDisplay, nullptr);
+            filmic.push_back(msSince(t0));
+            if (tone.data.size() != out.data.size()) return 1;
             t0 = Clock::now();
             cleanBytes = encodePng(frame).size();
             clean.push_back(msSince(t0));
@@ -119,6 +126,7 @@ int main(int argc, char** argv) {
             }
         }
         std::printf("toImage8 (RGBA32F -> RGB8, sRGB): median %.2f ms\n", median(convert));
+        std::printf("toImage8 (RGBA32F -> RGB8, -1 stop, filmic, sRGB): median %.2f ms\n", median(filmic));
         std::printf("encodePng, rendered frame: median %.2f ms, %zu bytes\n", median(clean), cleanBytes);
         std::printf("encodePng, rendered frame + noise: median %.2f ms, %zu bytes\n", median(rough), roughBytes);
         std::printf("encodeExr, rendered frame, float: median %.2f ms, %zu bytes\n", median(exrFloat), floatBytes);

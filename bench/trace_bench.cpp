@@ -81,13 +81,13 @@ void benchSpheres(const Options& o) {
         const auto t1 = Clock::now();
         const trace::TraceOutput out = trace::traceImage(scene, s);
         const auto t2 = Clock::now();
-        const std::vector<uint8_t> png = encodePng(toImage8(out.color, Encoding::Srgb, nullptr));
+        const std::vector<uint8_t> png = encodePng(toImage8(out.color, Encoding::Srgb, DisplaySettings{}, nullptr));
         const auto t3 = Clock::now();
         traceTimes.push_back(seconds(t1, t2));
         totalTimes.push_back(seconds(t0, t3));
         std::printf("  run %d: trace %.3f s, load+trace+encode %.3f s (%zu PNG bytes)\n", r + 1, seconds(t1, t2),
                     seconds(t0, t3), png.size());
-        if (r == 0 && !o.png.empty()) writePng(o.png, toImage8(out.color, Encoding::Srgb, nullptr));
+        if (r == 0 && !o.png.empty()) writePng(o.png, toImage8(out.color, Encoding::Srgb, DisplaySettings{}, nullptr));
     }
     std::printf("spheres40 %dx%d, 1 spp, %d threads: median of %d: trace %.3f s, in-process end to end %.3f s\n",
                 o.width, o.height, o.threads, o.runs, median(traceTimes), median(totalTimes));

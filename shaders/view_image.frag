@@ -1,9 +1,14 @@
 // Viewer display pass (src/app/image_view.cpp): shows the raster image, the progressive reference, a wipe
 // between them, or an amplified difference, encoding linear colour with the sRGB curve (IEC 61966-2-1:
 // exact, as src/image/encode.cpp, where 8-bit values are compared; a close fit for display) or not at
-// all. Draws into the window; never into captures.
-// One program per VIEW_MODE (0 raster, 1 traced, 2 split, 3 difference) and SRGB (1 or 0): llvmpipe
-// runs every branch of a uniform `if`, and this pass covers the whole image every frame.
+// all. The images (not the difference, which compares the raw values) first go through the display's
+// exposure and view transform, view_transform.glsl, the text src/image/encode.cpp compiles for the PNGs.
+// Draws into the window; never into captures.
+// One program per VIEW_MODE (0 raster, 1 traced, 2 split, 3 difference), SRGB (1 or 0) and VIEW_TRANSFORM
+// (SL_VIEW_STANDARD or SL_VIEW_FILMIC): llvmpipe runs every branch of a uniform `if`, and this pass covers the
+// whole image every frame.
+#include "view_transform.glsl"
+
 uniform sampler2D t_raster;     // RGBA32F linear, GL row order
 uniform sampler2D t_traced;     // RGBA32F linear, GL row order
 uniform sampler2D t_tiles;      // R8, one texel per reference tile (row 0 = top tiles): 1 = rendered
@@ -13,6 +18,7 @@ uniform vec2 u_scale;           // image pixels per window pixel
 uniform float u_split;          // wipe position in window pixels from u_origin.x
 uniform float u_gain;           // difference amplification
 uniform float u_tileSize;       // reference tile edge, pixels
+uniform float u_exposure;       // 2^stops, DisplaySettings::scale() (1: no exposure)
 #if OUTLINE
 uniform usampler2D t_coverage;  // R32UI coverage ids of the raster image, GL row order
 uniform uint u_selected;        // the selected object's id
@@ -28,6 +34,12 @@ vec3 encodeExact(vec3 c) {
 #else
     return c;
 #endif
+}
+
+// The display's exposure and view transform, per channel, as toImage8 applies them.
+vec3 display(vec3 c) {
+    return vec3(viewChannel(c.r, u_exposure, VIEW_TRANSFORM), viewChannel(c.g, u_exposure, VIEW_TRANSFORM),
+                viewChannel(c.b, u_exposure, VIEW_TRANSFORM));
 }
 
 // For showing an image: c^(1/2.4) from three square roots (Ian Taylor's fit, chilliant.com), within
@@ -55,15 +67,15 @@ void main() {
     vec2 local = gl_FragCoord.xy - u_origin;
     ivec2 texel = ivec2(local * u_scale);
 #if VIEW_MODE == 0
-    vec3 c = encode(texelFetch(t_raster, texel, 0).rgb);
+    vec3 c = encode(display(texelFetch(t_raster, texel, 0).rgb));
 #elif VIEW_MODE == 1
     vec3 linear = tileDone(texel) ? texelFetch(t_traced, texel, 0).rgb : texelFetch(t_raster, texel, 0).rgb;
-    vec3 c = encode(linear);
+    vec3 c = encode(display(linear));
 #elif VIEW_MODE == 2
     // One fetch and one encode per pixel: pick the source first (llvmpipe evaluates both sides of a ?:).
     bool traced = local.x >= u_split && tileDone(texel);
     vec3 linear = traced ? texelFetch(t_traced, texel, 0).rgb : texelFetch(t_raster, texel, 0).rgb;
-    vec3 c = encode(linear);
+    vec3 c = encode(display(linear));
     if (abs(local.x - u_split) < 1.5f) c = vec3(1.0f, 0.85f, 0.2f);
 #else
     vec3 a = floor(encodeExact(texelFetch(t_raster, texel, 0).rgb) * 255.0f + 0.5f);

@@ -99,7 +99,8 @@ TEST_F(AnalyticPixelsTest, SphereUnderDirectionalLightMatchesEquations) {
             EXPECT_GE(c.checked, 160 * 120 - 200) << "too many rim pixels disagreed on coverage";
             EXPECT_EQ(c.failures, 0) << toString(model) << " s=" << s << ": worst error " << c.worst * 255.0f
                                      << "/255; image: " << test::outputPath(name);
-            if (c.failures) writePng(test::outputPath(name), toImage8(out.color, Encoding::Srgb, nullptr));
+            if (c.failures)
+                writePng(test::outputPath(name), toImage8(out.color, Encoding::Srgb, DisplaySettings{}, nullptr));
         }
     }
 }

@@ -158,6 +158,17 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
+    // A display that is not Standard is named at the end (not in Difference, which shows the raw values).
+    setMode(s, ViewMode::Raster);
+    const std::string plain = imageCaption(s);
+    EXPECT_EQ(plain.find("filmic"), std::string::npos);
+    setDisplay(s, DisplaySettings{1.5, ViewTransform::Filmic});
+    EXPECT_EQ(imageCaption(s), plain + "  \xc2\xb7  filmic, +1.5 stops");
+    setMode(s, ViewMode::Difference);
+    EXPECT_EQ(imageCaption(s).find("filmic"), std::string::npos);
+    setMode(s, ViewMode::Raster);
+    setDisplay(s, DisplaySettings{});
+    EXPECT_EQ(imageCaption(s), plain);
 }
 
 TEST(AppLightMarkers, DraggedLightLandsUnderThePointer) {

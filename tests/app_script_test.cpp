@@ -170,3 +170,36 @@ TEST(AppScript, ErrorsNameTheFileAndTheAction) {
     const Script rm = parse(R"([{"action": "removeLight", "index": 7}])");
     EXPECT_THROW(applyScriptAction(s, rm.actions[0], rm.file), InputError);
 }
+
+// setDisplay: each field given changes the scene's display and the rest stay; an edit undo steps over (not a
+// change a renderer sees); refused values name the action's field.
+TEST(AppScript, SetDisplayChangesOnlyTheFieldsGiven) {
+    const Script sc = parse(R"([{"action": "setDisplay", "viewTransform": "filmic"},
+                                {"action": "setDisplay", "exposure": -2.5},
+                                {"action": "setDisplay", "exposure": 0, "viewTransform": "standard"}])");
+    ASSERT_EQ(sc.actions.size(), 3u);
+    EXPECT_TRUE(isStateAction(sc.actions[0]));
+    ViewerState a = defaultState();
+    const uint64_t revision = a.revision, edits = a.editRevision;
+    applyScriptAction(a, sc.actions[0], sc.file);
+    EXPECT_EQ(a.scene.display, (DisplaySettings{0.0, ViewTransform::Filmic}));
+    applyScriptAction(a, sc.actions[1], sc.file);
+    EXPECT_EQ(a.scene.display, (DisplaySettings{-2.5, ViewTransform::Filmic}));
+    EXPECT_EQ(a.revision, revision) << "the display is not something a renderer redraws for";
+    EXPECT_EQ(a.editRevision, edits + 2) << "each change is an edit undo steps over";
+    EXPECT_NE(sceneToJson(a.scene).find("\"viewTransform\": \"filmic\""), std::string::npos) << "Save keeps it";
+    applyScriptAction(a, sc.actions[2], sc.file);
+    EXPECT_TRUE(a.scene.display.isStandard());
+    EXPECT_EQ(parseError(R"([{"action": "setDisplay", "exposure": 40}])"),
+              "actions.json: actions[0].exposure: must be in [-16, 16] stops, got 40");
+    EXPECT_EQ(parseError(R"([{"action": "setDisplay", "viewTransform": "aces"}])"),
+              "actions.json: actions[0].viewTransform: unknown view transform 'aces'; expected standard or filmic");
+    EXPECT_EQ(parseError(R"([{"action": "render", "path": "x.png", "exposure": -17}])"),
+              "actions.json: actions[0].exposure: must be in [-16, 16] stops, got -17");
+    // The panel's setter holds the exposure to its range (NaN: 0), as the slider does.
+    ViewerState b = defaultState();
+    setDisplay(b, DisplaySettings{99.0, ViewTransform::Standard});
+    EXPECT_EQ(b.scene.display.exposure, kMaxExposure);
+    setDisplay(b, DisplaySettings{std::nan(""), ViewTransform::Filmic});
+    EXPECT_EQ(b.scene.display, (DisplaySettings{0.0, ViewTransform::Filmic}));
+}

@@ -321,3 +321,38 @@ TEST(AppWindow, MovingPreviewOnlyWhileTheCameraMoves) {
     EXPECT_NE(out[0].find("half-size previews     0 of"), std::string::npos) << out[0];
     expectSameImage("moving_preview_exit", shot[1], shot[0]);
 }
+
+// The display in the window: --exposure/--view-transform and the setDisplay action give screenshots equal to
+// `shadelab render` with the same flags, and a render action inherits the display the window shows; each
+// differs from the Standard render (negative control).
+TEST(AppWindow, DisplayFlagsAndSetDisplayMatchHeadlessRenders) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string flagged = test::outputPath("display_view_flags.png");
+    const std::string scripted = test::outputPath("display_view_script.png");
+    const std::string rendered = test::outputPath("display_view_render_action.png");
+    fs::remove(rendered);
+    const std::string script = writeText("display_script.json", R"({"actions": [
+        {"frame": 5, "action": "screenshot", "path": ")" + flagged +
+                                                                    R"("},
+        {"frame": 6, "action": "setDisplay", "exposure": 1.5},
+        {"frame": 7, "action": "render", "renderer": "trace", "path": ")" +
+                                                                    rendered + R"("}
+    ]})");
+    Result v = view(scenePath + " --size " + kSize + " --frames 10 --exposure -1 --view-transform filmic --script " +
+                    script + " --screenshot " + scripted);
+    ASSERT_EQ(v.code, 0) << v.out;
+    const std::string expectFlagged = test::outputPath("display_render_flags.png");
+    const std::string expectScripted = test::outputPath("display_render_script.png");
+    const std::string expectRendered = test::outputPath("display_render_trace.png");
+    const std::string plain = test::outputPath("display_render_plain.png");
+    ASSERT_EQ(render(scenePath, expectFlagged, "--exposure -1 --view-transform filmic").code, 0);
+    ASSERT_EQ(render(scenePath, expectScripted, "--exposure 1.5 --view-transform filmic").code, 0);
+    ASSERT_EQ(render(scenePath, expectRendered, "--renderer trace --exposure 1.5 --view-transform filmic").code, 0);
+    ASSERT_EQ(render(scenePath, plain).code, 0);
+    expectSameImage("display_view_flags", flagged, expectFlagged);
+    expectSameImage("display_view_script", scripted, expectScripted);
+    EXPECT_TRUE(sameBytes(rendered, expectRendered)) << rendered << " vs " << expectRendered;
+    EXPECT_FALSE(sameBytes(flagged, plain)) << "--exposure/--view-transform did not reach the screenshot";
+    EXPECT_FALSE(sameBytes(scripted, flagged)) << "setDisplay did not change the screenshot";
+}

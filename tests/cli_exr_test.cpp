@@ -50,13 +50,13 @@ TEST(CliExr, RenderWritesTheFloatsBeforeEncodingForEveryRenderer) {
         ASSERT_EQ(image.height, 30);
         ASSERT_EQ(image.layers.size(), 1u) << renderer;
         const ImageF linear = colourOf(image, exr);
-        const Image8 converted = toImage8(linear, Encoding::Srgb, nullptr), written = readPng(png);
+        const Image8 converted = toImage8(linear, Encoding::Srgb, {}, nullptr), written = readPng(png);
         EXPECT_EQ(converted.data, written.data) << renderer << ": " << exr << " does not convert to " << png;
         float brightest = 0.0f;
         for (float v : linear.rgba) brightest = std::max(brightest, v);
         EXPECT_GT(brightest, 0.05f) << renderer << ": a lit scene";
         // Negative control: the other encoding's conversion differs from the PNG.
-        EXPECT_NE(toImage8(linear, Encoding::Linear, nullptr).data, written.data) << renderer;
+        EXPECT_NE(toImage8(linear, Encoding::Linear, {}, nullptr).data, written.data) << renderer;
     }
     // Both: the raster's colour, and the reference's as layer "trace" (equal to --renderer trace's floats).
     const std::string both = dir + "/both.exr";

@@ -463,3 +463,99 @@ TEST(CliShaders, BrokenOrMissingShaderNamesFileAndLine) {
                   .code,
               0);
 }
+
+// --exposure and --view-transform: refused values are usage errors naming the flag, in one line (exit 2); a
+// scene file's bad "display" is bad input naming the file and the field (exit 1); the flags override the
+// file's display field by field.
+TEST(CliDisplay, FlagsAndSceneFieldsRefuseBadValuesInOneLine) {
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    const std::pair<const char*, const char*> usage[] = {
+        {"--exposure 40", "shadelab: usage error: --exposure: must be in [-16, 16] stops, got 40"},
+        {"--exposure -16.5", "shadelab: usage error: --exposure: must be in [-16, 16] stops, got -16.5"},
+        {"--exposure nan", "shadelab: usage error: --exposure: must be in [-16, 16] stops, got nan"},
+        {"--exposure bright", "shadelab: usage error: --exposure: expected a number, got 'bright'"},
+        {"--view-transform aces", "shadelab: usage error: --view-transform: expected standard or filmic, got 'aces'"},
+    };
+    const std::string never = test::outputPath("display_never.png");
+    fs::remove(never);
+    for (const auto& [flags, message] : usage) {
+        Result r = run("render " + scene + " -o " + never + " " + flags);
+        EXPECT_EQ(r.code, 2) << flags;
+        EXPECT_EQ(r.out, std::string(message) + "\n") << flags;
+    }
+    const std::pair<const char*, const char*> files[] = {
+        {R"({"display": {"exposure": 40}})", "display.exposure: must be in [-16, 16] stops, got 40"},
+        {R"({"display": {"exposure": "x"}})", "display.exposure: expected a number, got string"},
+        {R"({"display": {"viewTransform": "aces"}})",
+         "display.viewTransform: unknown view transform 'aces'; expected standard or filmic"},
+    };
+    int i = 0;
+    for (const auto& [text, message] : files) {
+        const std::string bad = writeText("display_bad_" + std::to_string(i++) + ".json", text);
+        Result r = run("render " + bad + " -o " + never + " --size 16x12");
+        EXPECT_EQ(r.code, 1) << text;
+        EXPECT_EQ(r.out, "shadelab: error: " + bad + ": " + message + "\n") << text;
+    }
+    EXPECT_FALSE(fs::exists(never));
+    // Good values: the file's display is used, and a flag overrides its field (the bytes equal those of the
+    // same display given by flags alone).
+    std::string text = readAll(scene);
+    const size_t at = text.find('{');
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + 1, R"("display": {"exposure": -1.5, "viewTransform": "filmic"},)");
+    const std::string filmicScene = writeText("display_filmic_scene.json", text);
+    const std::string fromFile = test::outputPath("display_from_file.png"),
+                      fromFlags = test::outputPath("display_from_flags.png"),
+                      overridden = test::outputPath("display_overridden.png"),
+                      plain = test::outputPath("display_plain.png");
+    ASSERT_EQ(run("render " + filmicScene + " -o " + fromFile + " --size 96x54").code, 0);
+    ASSERT_EQ(
+        run("render " + scene + " -o " + fromFlags + " --size 96x54 --exposure -1.5 --view-transform filmic").code, 0);
+    ASSERT_EQ(run("render " + filmicScene + " -o " + overridden +
+                  " --size 96x54 --exposure 0 --view-transform "
+                  "standard")
+                  .code,
+              0);
+    ASSERT_EQ(run("render " + scene + " -o " + plain + " --size 96x54").code, 0);
+    EXPECT_EQ(readAll(fromFile), readAll(fromFlags));
+    EXPECT_EQ(readAll(overridden), readAll(plain));
+    EXPECT_NE(readAll(fromFile), readAll(plain)) << "negative control: the display changed nothing";
+}
+
+namespace {
+
+// Pixels whose three channels are all 255: clipped to white.
+int whitePixels(const Image8& img) {
+    int n = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const uint8_t* p = img.pixel(x, y);
+            n += p[0] == 255 && p[1] == 255 && p[2] == 255;
+        }
+    return n;
+}
+
+}  // namespace
+
+// The Cornell box's lamp (emission 40) and the ceiling around it clip to flat white under Standard. Under the
+// filmic curve the ceiling keeps its gradation; the lamp itself is far above the fit's saturation point
+// (x ~ 7.24), so it takes an exposure of -3 stops (lamp 5) to bring it below 255, where Standard at the same
+// exposure still clips it: filmic at -3 has no white pixel at all.
+TEST(CliDisplay, FilmicKeepsTheCornellLampFromClipping) {
+    const std::string scene = test::sourcePath("assets/scenes/cornell.json");
+    auto render = [&](const std::string& name, const std::string& flags) {
+        const std::string out = test::outputPath("cornell_display_" + name + ".png");
+        Result r = run("render " + scene + " -o " + out + " --size 96x72 --renderer path --spp 8 " + flags);
+        EXPECT_EQ(r.code, 0) << r.out;
+        return whitePixels(readPng(out));
+    };
+    const int standard = render("standard", ""), filmic = render("filmic", "--view-transform filmic");
+    const int standardDark = render("standard_m3", "--exposure -3"),
+              filmicDark = render("filmic_m3", "--exposure -3 --view-transform filmic");
+    std::printf("white pixels (of %d): standard %d, filmic %d, standard -3 stops %d, filmic -3 stops %d\n", 96 * 72,
+                standard, filmic, standardDark, filmicDark);
+    EXPECT_GT(standard, 2 * filmic) << "filmic should recover the ceiling around the lamp; images in "
+                                    << test::outputPath("");
+    EXPECT_GT(standardDark, 50) << "Standard at -3 stops still clips the lamp (the negative control)";
+    EXPECT_EQ(filmicDark, 0) << "filmic at -3 stops: no pixel should be clipped";
+}

@@ -32,7 +32,7 @@ Banded renderInBands(raster::RasterRenderer& r, const Scene& scene, int w, int h
     for (int top = 0; top < h; top += rows) {
         raster::Band band{top, std::min(rows, h - top)};
         r.draw(scene, w, h, true, band);
-        r.target().readColor8(out.pixels, top, Encoding::Srgb, nullptr);
+        r.target().readColor8(out.pixels, top, Encoding::Srgb, DisplaySettings{}, nullptr);
         std::vector<uint32_t> cov;
         r.target().readCoverage(cov);
         std::copy(cov.begin(), cov.end(), out.coverage.begin() + std::ptrdiff_t(size_t(top) * size_t(w)));
@@ -125,7 +125,7 @@ TEST_F(RasterBandsTest, SupersamplingIsBoxFilteredGrid) {
                     for (int a = 0; a < k; ++a) sum += big.pixel(x * k + a, y * k + b)[c];
                 small.pixel(x, y)[c] = sum / float(k * k);
             }
-    Image8 expected = toImage8(small, Encoding::Srgb, nullptr);
+    Image8 expected = toImage8(small, Encoding::Srgb, DisplaySettings{}, nullptr);
     EXPECT_EQ(countDifferentPixels(expected, ss.pixels), 0u);
     // Negative control: one sample per pixel is not the same image.
     o.spp = 1;
@@ -173,7 +173,7 @@ TEST_F(RasterBandsTest, AveragedJitteredSamplesEqualSupersampling) {
         for (size_t p = 0; p < sum.rgba.size(); ++p) sum.rgba[p] += one.rgba[p];
     }
     for (float& v : sum.rgba) v /= float(k * k);
-    const Image8 averaged = toImage8(sum, Encoding::Srgb, nullptr);
+    const Image8 averaged = toImage8(sum, Encoding::Srgb, DisplaySettings{}, nullptr);
     const CompareResult c = compareImages(averaged, supersampled);
     size_t differing = countDifferentPixels(averaged, supersampled);
     std::printf("jittered average vs --spp %d: %zu of %d pixels differ, max %d/255\n", k * k, differing, w * h,
@@ -187,7 +187,8 @@ TEST_F(RasterBandsTest, AveragedJitteredSamplesEqualSupersampling) {
     r.draw(scene, w, h, false, {}, raster::gridSampleOffset(1, 0));
     ImageF centre;
     r.target().readColor(centre);
-    EXPECT_GT(countDifferentPixels(toImage8(centre, Encoding::Srgb, nullptr), supersampled), size_t(w * h) / 50);
+    EXPECT_GT(countDifferentPixels(toImage8(centre, Encoding::Srgb, DisplaySettings{}, nullptr), supersampled),
+              size_t(w * h) / 50);
     EXPECT_EQ(raster::gridSampleOffset(1, 0), glm::vec2(0.0f));
     EXPECT_EQ(raster::gridSampleOffset(4, 0), glm::vec2(-0.375f, -0.375f));
     EXPECT_EQ(raster::gridSampleOffset(4, 15), glm::vec2(0.375f, 0.375f));

@@ -41,8 +41,9 @@ size_t differingPixels(const ImageF& a, const ImageF& b) {
 }
 
 void writeEvidence(const std::string& name, const Drawn& partial, const Drawn& full) {
-    writePng(test::outputPath(name + "_partial.png"), toImage8(partial.color, Encoding::Srgb, nullptr));
-    writePng(test::outputPath(name + "_full.png"), toImage8(full.color, Encoding::Srgb, nullptr));
+    writePng(test::outputPath(name + "_partial.png"),
+             toImage8(partial.color, Encoding::Srgb, DisplaySettings{}, nullptr));
+    writePng(test::outputPath(name + "_full.png"), toImage8(full.color, Encoding::Srgb, DisplaySettings{}, nullptr));
 }
 
 // The lecture scene plus a mesh of two icosphere parts, the first a mirror (its own environment cube).

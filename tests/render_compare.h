@@ -76,7 +76,7 @@ inline Rendered traceWithCoverage(const Scene& scene, int width, int height, int
     s.maxDepth = maxDepth;
     s.coverage = true;
     trace::TraceOutput out = trace::traceImage(scene, s);
-    return {toImage8(out.color, Encoding::Srgb, nullptr), std::move(out.coverage)};
+    return {toImage8(out.color, Encoding::Srgb, DisplaySettings{}, nullptr), std::move(out.coverage)};
 }
 
 // Compares raster `a` with reference `b`; on failure writes the evidence under `name` and prints its paths.

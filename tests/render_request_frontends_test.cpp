@@ -37,6 +37,9 @@ render::RenderRequest requestOf(const json& c) {
     if (c.contains("light_paths"))
         r.path.part = *lookupName(trace::kPathPartNames, c["light_paths"].get<std::string>());
     if (c.contains("sampler")) r.path.sampler = *lookupName(trace::kPathSamplerNames, c["sampler"].get<std::string>());
+    if (c.contains("exposure")) r.exposure = c["exposure"].get<double>();
+    if (c.contains("view_transform"))
+        r.viewTransform = *lookupName(kViewTransformNames, c["view_transform"].get<std::string>());
     return r;
 }
 

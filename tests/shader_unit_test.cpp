@@ -1,8 +1,10 @@
 // Shader-unit test: the GLSL lighting functions, run on the GPU over a sweep of N, L, V and s,
 // must equal the same functions compiled as C++ within 1e-4. This proves the two are one implementation.
-// The pbr BRDF has a sweep of its own over N, L, V, roughness and metallic, with its own negative control.
+// The pbr BRDF has a sweep of its own over N, L, V, roughness and metallic, with its own negative control; the
+// viewer's exposure and view transform one of theirs against the C++ of every PNG.
 #include "gl/program.h"
 #include "gl_fixture.h"
+#include "image/encode.h"
 #include "raster/render_target.h"
 #include "shading/lighting.h"
 #include "test_output.h"
@@ -237,4 +239,83 @@ TEST_F(ShaderUnitTest, GlslPbrEqualsCppOverSweep) {
     }
     EXPECT_GT(roughnessNoticed, int(cases.size()) / 10) << "a 10% roughness change went unnoticed";
     EXPECT_GT(metallicNoticed, int(cases.size()) / 10) << "flipping metallic went unnoticed";
+}
+
+namespace {
+
+// Runs view_transform_probe.frag over `values` (three per texel) with one display, and reads the results back.
+ImageF runViewProbe(const std::vector<glm::vec4>& values, const DisplaySettings& display) {
+    gl::Program program = gl::Program::build(gl::ShaderLibrary(), "fullscreen.vert", "view_transform_probe.frag");
+    gl::Texture input = floatTexture(values);
+    raster::RenderTarget target;
+    target.resize(kW, kH, false);
+    target.bind();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(program.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, input.id());
+    glUniform1i(program.uniform("t_in"), 0);
+    glUniform1f(program.uniform("u_exposure"), display.scale());  // as image_view.cpp sets it
+    glUniform1i(program.uniform("u_transform"), display.transform == ViewTransform::Filmic ? 1 : 0);
+    gl::VertexArray vao = gl::VertexArray::create();
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    ImageF result;
+    target.readColor(result);
+    return result;
+}
+
+}  // namespace
+
+// The viewer's exposure and view transform (shaders/view_transform.glsl in view_image.frag) equal the C++ that
+// every PNG goes through (displayValue, image/encode.h) within 1e-6, over linear values from 0 to 40 (the
+// Cornell lamp's radiance) and several exposures; a display 0.1 stops off, or the other transform, is noticed
+// (negative controls).
+TEST_F(ShaderUnitTest, GlslViewTransformEqualsCpp) {
+    std::mt19937 rng(20261202);
+    std::uniform_real_distribution<float> logValue(-4.0f, 1.6f);  // 1e-4 .. 40
+    std::vector<glm::vec4> values;
+    for (int i = 0; i < kW * kH; ++i)
+        values.emplace_back(std::pow(10.0f, logValue(rng)), float(i) / float(kW * kH), 7.0f + float(i % 64) * 0.01f,
+                            1.0f);
+    values[0] = glm::vec4(0.0f, 1.0f, 8.0f, 1.0f);
+    values[1] = glm::vec4(-0.5f, 7.24f, 1e6f, 1.0f);  // below 0, near the fit's crossing of 1, far above it
+    const DisplaySettings displays[] = {{0.0, ViewTransform::Filmic},
+                                        {1.0, ViewTransform::Filmic},
+                                        {-2.5, ViewTransform::Filmic},
+                                        {3.7, ViewTransform::Standard},
+                                        {0.0, ViewTransform::Standard}};
+    const float tol = 1e-6f;
+    std::ofstream report(test::outputPath("shader_unit_view_transform.csv"));
+    report << "display,index,channel,linear,gpu,cpu\n";
+    for (const DisplaySettings& d : displays) {
+        const ImageF result = runViewProbe(values, d);
+        float worst = 0.0f;
+        int failures = 0, offNoticed = 0, otherNoticed = 0;
+        const DisplaySettings off{d.exposure + 0.1, d.transform};
+        const DisplaySettings other{
+            d.exposure, d.transform == ViewTransform::Filmic ? ViewTransform::Standard : ViewTransform::Filmic};
+        for (size_t i = 0; i < values.size(); ++i) {
+            const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);  // readColor put GL's bottom row last
+            for (int c = 0; c < 3; ++c) {
+                const float linear = values[i][c], cpu = displayValue(linear, d);
+                const float err = std::abs(gpu[c] - cpu) / std::max(1.0f, std::abs(cpu));
+                worst = std::max(worst, err);
+                if (err > tol) {
+                    ++failures;
+                    report << describe(d) << ',' << i << ',' << c << ',' << linear << ',' << gpu[c] << ',' << cpu
+                           << '\n';
+                }
+                if (std::abs(gpu[c] - displayValue(linear, off)) > tol) ++offNoticed;
+                if (std::abs(gpu[c] - displayValue(linear, other)) > tol) ++otherNoticed;
+            }
+        }
+        const std::string name = describe(d).empty() ? "standard" : describe(d);
+        std::printf("view transform %s: max |GLSL - C++| / max(1, |C++|) = %.3g\n", name.c_str(), worst);
+        EXPECT_EQ(failures, 0) << name << ": max error " << worst << "; the failures are in "
+                               << test::outputPath("shader_unit_view_transform.csv");
+        EXPECT_GT(offNoticed, int(values.size())) << name << ": 0.1 stops more went unnoticed";
+        EXPECT_GT(otherNoticed, int(values.size()) / 2) << name << ": the other transform went unnoticed";
+    }
 }

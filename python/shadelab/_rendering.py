@@ -16,8 +16,8 @@ from ._warnings import warn
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
 if TYPE_CHECKING:
-    from ._types import (EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName, SamplerName,
-                         Size)
+    from ._types import (EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName, SamplerName, Size,
+                         ViewTransformName)
 
 # The binary's default --size.
 DEFAULT_SIZE = (1280, 720)
@@ -46,7 +46,8 @@ def memory_limit(max_memory: MemorySize | None) -> int:
 def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Size, renderer: RendererName,
                   spp: int | None, encoding: EncodingName, depth: int | None, threads: int, coverage: bool,
                   time_limit: float | None, estimator: EstimatorName | None, light_paths: LightPathsName | None,
-                  sampler: SamplerName | None, max_memory: int | None) -> _shadelab.Image:
+                  sampler: SamplerName | None, max_memory: int | None, exposure: float | None = None,
+                  view_transform: ViewTransformName | None = None) -> _shadelab.Image:
     """Renders the scene behind `handle` with `core`; the arguments are Renderer.render's, max_memory in bytes
     (memory_limit()) or None for the default, as the command line without --max-memory. Their types are
     checked here, each refused in one line naming it; the compiled renderer holds them to the render request's
@@ -58,7 +59,8 @@ def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Siz
             _clamped(clamp, _checks.optional_whole("depth", depth)), clamp(_checks.whole("threads", threads)),
             _checks.flag("coverage", coverage), _checks.optional_real("time_limit", time_limit),
             _checks.optional_word("estimator", estimator), _checks.optional_word("light_paths", light_paths),
-            _checks.optional_word("sampler", sampler), max_memory)
+            _checks.optional_word("sampler", sampler), max_memory, _checks.optional_real("exposure", exposure),
+            _checks.optional_word("view_transform", view_transform))
     image: _shadelab.Image = _checks.call(clamp, core.render, *args)
     if image.non_finite_pixels:
         # The command line's warning, in the same words: no image goes black in silence.

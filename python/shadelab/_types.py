@@ -35,6 +35,9 @@ EncodingName = Literal["srgb", "linear"]
 
 # Image.save("x.exr", exr_precision=...): 32-bit float samples (exact) or 16-bit half (the binary's --exr-precision).
 ExrPrecisionName = Literal["half", "float"]
+# render(view_transform=...): how linear values map into [0, 1] before the encoding: "standard" clamps,
+# "filmic" is Narkowicz's ACES fit (the binary's --view-transform).
+ViewTransformName = Literal["standard", "filmic"]
 
 # Renderer(backend=...): the headless GL context to make; "auto" tries them in this order, honouring
 # SHADELAB_GL_BACKEND (the binary's --gl-backend).

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from typing import Any, Sequence, SupportsInt
 
     from ._types import (BackendName, EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName,
-                         SamplerName, Size)
+                         SamplerName, Size, ViewTransformName)
     from .typing import SceneLike
 
 
@@ -65,7 +65,8 @@ class Renderer:
                spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
                light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
-               max_memory: MemorySize | None = None) -> _shadelab.Image:
+               max_memory: MemorySize | None = None, exposure: float | None = None,
+               view_transform: ViewTransformName | None = None) -> _shadelab.Image:
         """Renders `scene` to a shadelab.Image with this Renderer's GL context and programs.
 
         scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -100,6 +101,13 @@ class Renderer:
             default, half of physical memory (within ulimit -v). A render estimated to need more raises
             shadelab.InputError before any pixel is drawn, as does the environment map of a scene given as a
             path or a dict; a limit below what any render of this size and renderer needs raises ValueError.
+        exposure: stops, -16..16: the 8-bit pixels show the linear values times 2^exposure; default None, the
+            scene's display.exposure (0 when it has none). The binary's --exposure.
+        view_transform: "standard" (clamp to [0, 1]) or "filmic" (Narkowicz's ACES fit: highlights roll off
+            instead of clipping), applied after the exposure and before the encoding; default None, the scene's
+            display.viewTransform ("standard"). The binary's --view-transform. Both change only the 8-bit
+            pixels; np.asarray(image) and probe() read the linear floats, and compare() compares the 8-bit
+            pixels as they are, so compare renderers with the default display.
 
         With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
         raises ValueError naming the argument, a value of the wrong type TypeError naming it; an unknown keyword
@@ -108,7 +116,7 @@ class Renderer:
         limit = _rendering.memory_limit(max_memory)  # the default too: a path's environment map is held to it
         return _rendering.render_handle(self._core, _scene(scene, limit)._handle, size, renderer, spp, encoding,
                                         depth, threads, coverage, time_limit, estimator, light_paths, sampler,
-                                        None if max_memory is None else limit)
+                                        None if max_memory is None else limit, exposure, view_transform)
 
     @property
     def info(self) -> dict[str, str]:
@@ -148,7 +156,8 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
            spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
            coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
            light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
-               max_memory: MemorySize | None = None) -> _shadelab.Image:
+           max_memory: MemorySize | None = None, exposure: float | None = None,
+           view_transform: ViewTransformName | None = None) -> _shadelab.Image:
     """Renders `scene` with the default Renderer (default_renderer()) to a shadelab.Image.
 
     scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -183,6 +192,13 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
         physical memory (within ulimit -v). A render estimated to need more raises shadelab.InputError before
         any pixel is drawn, as does the environment map of a scene given as a path or a dict; a limit below
         what any render of this size and renderer needs raises ValueError.
+    exposure: stops, -16..16: the 8-bit pixels show the linear values times 2^exposure; default None, the scene's
+        display.exposure (0 when it has none). The binary's --exposure.
+    view_transform: "standard" (clamp to [0, 1]) or "filmic" (Narkowicz's ACES fit: highlights roll off instead
+        of clipping), applied after the exposure and before the encoding; default None, the scene's
+        display.viewTransform ("standard"). The binary's --view-transform. Both change only the 8-bit pixels;
+        np.asarray(image) and probe() read the linear floats, and compare() compares the 8-bit pixels as they
+        are, so compare renderers with the default display.
 
     With the same options the pixels equal `shadelab render`'s PNG, byte for byte. A value out of range
     raises ValueError naming the argument, a value of the wrong type TypeError naming it; an unknown keyword
@@ -191,7 +207,7 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
     return default_renderer().render(scene, size, renderer=renderer, spp=spp, encoding=encoding, depth=depth,
                                      threads=threads, coverage=coverage, time_limit=time_limit,
                                      estimator=estimator, light_paths=light_paths, sampler=sampler,
-                                     max_memory=max_memory)
+                                     max_memory=max_memory, exposure=exposure, view_transform=view_transform)
 
 
 def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_SIZE) -> dict[str, Any]:

@@ -23,7 +23,7 @@ if TYPE_CHECKING:
     from typing import Any, Callable, ClassVar, Iterable, Union
 
     from ._types import (EncodingName, EstimatorName, LightPathsName, MemorySize, RendererName, SamplerName, Size,
-                         StrPath)
+                         StrPath, ViewTransformName)
 
     # Where a value sits in the document: field names and list indices from the top ("lights", 2, "color").
     _Path = tuple[Union[str, int], ...]
@@ -301,15 +301,18 @@ class Scene(_View):
                encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
                light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
-               max_memory: MemorySize | None = None) -> _shadelab.Image:
+               max_memory: MemorySize | None = None, exposure: float | None = None,
+               view_transform: ViewTransformName | None = None) -> _shadelab.Image:
         """shadelab.render(self, size, ...): renders this scene with the default Renderer. The keywords, their
         ranges and defaults are shadelab.render's: renderer="raster" ("trace", "path"), spp=None (1; 16 for
         path), encoding="srgb" ("linear"), depth=None (the scene's maxDepth), threads=0 (every core),
         coverage=False, for path time_limit=None, estimator=None ("mis"), light_paths=None ("all"), sampler=None
-        ("sobol"), and max_memory=None (the binary's --max-memory default; bytes, or "512M")."""
+        ("sobol"), max_memory=None (the binary's --max-memory default; bytes, or "512M"), and exposure=None and
+        view_transform=None (the scene's display: -16..16 stops, "standard" or "filmic")."""
         return _rendering.render_handle(_rendering.default_core(), self._handle, size, renderer, spp, encoding,
                                         depth, threads, coverage, time_limit, estimator, light_paths, sampler,
-                                        None if max_memory is None else _rendering.memory_limit(max_memory))
+                                        None if max_memory is None else _rendering.memory_limit(max_memory),
+                                        exposure, view_transform)
 
     # -- the document and its edits -------------------------------------------------------------------------
 

@@ -15,7 +15,7 @@ import numpy.typing as npt
 
 from ._shadelab import Image
 from ._types import (BackendName, EncodingName, EstimatorName, ExrPrecisionName, LightPathsName, MemorySize, ModelName,
-                     RendererName, SamplerName, Size, StrPath)
+                     RendererName, SamplerName, Size, StrPath, ViewTransformName)
 from .scene import Scene
 
 # What render(), Renderer.render() and probe() take as a scene: a Scene, a scene file's or glTF model's path,
@@ -27,4 +27,4 @@ SceneLike = Union[Scene, StrPath, Dict[str, Any]]
 ImageLike = Union[Image, StrPath, npt.ArrayLike]
 
 __all__ = ["BackendName", "EncodingName", "EstimatorName", "ExrPrecisionName", "ImageLike", "LightPathsName",
-           "MemorySize", "ModelName", "RendererName", "SamplerName", "SceneLike", "Size", "StrPath"]
+           "MemorySize", "ModelName", "RendererName", "SamplerName", "SceneLike", "Size", "StrPath", "ViewTransformName"]

@@ -46,7 +46,12 @@ std::string imageCaption(const ViewerState& state) {
     // The path tracer leaves the ambient term out whatever its switch says (light bounces instead).
     Terms terms = state.scene.terms;
     if (state.mode == ViewMode::Global) terms.ambient = false;
-    return modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(terms) + "  \xc2\xb7  " + mode;
+    std::string caption = modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(terms) + "  \xc2\xb7  " + mode;
+    // A display that is not Standard says so: the picture is no longer the clamped values (the difference view
+    // never uses it).
+    if (!state.scene.display.isStandard() && state.mode != ViewMode::Difference)
+        caption += "  \xc2\xb7  " + describe(state.scene.display);
+    return caption;
 }
 
 }  // namespace shadelab::app

@@ -13,10 +13,12 @@ ImageView::ImageView(const gl::ShaderLibrary& shaders) {
     for (int mode = 0; mode < 4; ++mode)
         for (int srgb = 0; srgb < 2; ++srgb)
             for (int outline = 0; outline < 2; ++outline)
-                programs_[mode][srgb][outline] = gl::Program::build(
-                    shaders, "fullscreen.vert", "view_image.frag",
-                    "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " + std::to_string(srgb) +
-                        "\n#define OUTLINE " + std::to_string(outline) + "\n");
+                for (int filmic = 0; filmic < 2; ++filmic)
+                    programs_[mode][srgb][outline][filmic] =
+                        gl::Program::build(shaders, "fullscreen.vert", "view_image.frag",
+                                           "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " +
+                                               std::to_string(srgb) + "\n#define OUTLINE " + std::to_string(outline) +
+                                               "\n#define VIEW_TRANSFORM " + std::to_string(filmic) + "\n");
     vao_ = gl::VertexArray::create();
     // The heat ramp of the CLI's heatmaps, so the live difference view reads the same way.
     std::vector<uint8_t> ramp(256 * 3);
@@ -48,7 +50,9 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
                      : in.mode == ViewMode::Difference ? 3
                                                        : 0;
     const bool outline = in.selected != 0 && in.coverage != 0;
-    const gl::Program& program = programs_[mode][in.encoding == Encoding::Srgb ? 1 : 0][outline ? 1 : 0];
+    const bool filmic = in.display.transform == ViewTransform::Filmic;
+    const gl::Program& program =
+        programs_[mode][in.encoding == Encoding::Srgb ? 1 : 0][outline ? 1 : 0][filmic ? 1 : 0];
     glUseProgram(program.id());
     const GLuint textures[5] = {in.raster, in.traced ? in.traced : in.raster, in.tiles, ramp_.id(), in.coverage};
     const char* samplers[5] = {"t_raster", "t_traced", "t_tiles", "t_ramp", "t_coverage"};
@@ -62,6 +66,7 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
                 float(in.imageHeight) / float(rect.height));
     glUniform1f(program.uniform("u_split"), in.split * float(rect.width));
     glUniform1f(program.uniform("u_gain"), in.gain);
+    glUniform1f(program.uniform("u_exposure"), in.display.scale());
     glUniform1f(program.uniform("u_tileSize"), float(in.tileSize));
     glUniform1ui(program.uniform("u_selected"), in.selected);
     glBindVertexArray(vao_.id());

@@ -1,5 +1,6 @@
 // ImageView: draws the rendered image into a rectangle of the window (raster, reference, wipe or
-// difference), with the sRGB curve in shaders/view_image.frag, and the selected object's outline. Display only:
+// difference), with the display's exposure and view transform and the sRGB curve in shaders/view_image.frag,
+// and the selected object's outline. Display only:
 // captures read the renderers' float images, never the window.
 #pragma once
 
@@ -23,6 +24,7 @@ struct ImageViewInputs {
     int tileSize = 32;
     ViewMode mode = ViewMode::Raster;
     Encoding encoding = Encoding::Srgb;
+    DisplaySettings display;  // exposure and view transform of every mode but Difference
     float split = 0.5f;
     float gain = 16.0f;
     GLuint coverage = 0;    // R32UI coverage ids of the raster image, or 0
@@ -36,7 +38,7 @@ public:
     void draw(const ImageRect& rect, const ImageViewInputs& in) const;
 
 private:
-    gl::Program programs_[4][2][2];  // [mode][sRGB][selection outline]
+    gl::Program programs_[4][2][2][2];  // [mode][sRGB][selection outline][filmic]
     gl::VertexArray vao_;
     gl::Texture ramp_;
 };

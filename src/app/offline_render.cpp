@@ -16,7 +16,7 @@ Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const r
     render::require(request);
     switch (request.engine) {
         case render::Engine::Raster: {
-            raster::OffscreenResult r = raster::renderOffscreen(raster, scene, render::toOffscreen(request));
+            raster::OffscreenResult r = raster::renderOffscreen(raster, scene, render::toOffscreen(request, scene));
             raster.invalidate();  // its target now holds the offline bands, not the window's image
             if (nonFinite) *nonFinite += r.nonFinite;
             return std::move(r.pixels);
@@ -24,13 +24,13 @@ Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const r
         case render::Engine::Path: {
             const trace::PathOutput out =
                 trace::pathTraceImage(std::make_shared<const trace::TraceScene>(scene), render::toPath(request, scene));
-            return toImage8(out.color, request.encoding, nonFinite);
+            return toImage8(out.color, request.encoding, render::displayOf(request, scene), nonFinite);
         }
         case render::Engine::Trace:
         case render::Engine::Both: break;
     }
     const trace::TraceOutput out = trace::traceImage(scene, render::toTrace(request, scene));
-    return toImage8(out.color, request.encoding, nonFinite);
+    return toImage8(out.color, request.encoding, render::displayOf(request, scene), nonFinite);
 }
 
 }  // namespace shadelab::app

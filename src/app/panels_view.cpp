@@ -1,10 +1,12 @@
-// View panel: Raster / Traced / Split / Difference, the encoding, the reference's progress, and the
+// View panel: Raster / Traced / Split / Difference, the encoding, the display (exposure and view transform), the
+// reference's progress, and the
 // raster-vs-reference metrics (design.md §4 gates) once the reference is complete.
 #include "app/panels.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -119,6 +121,23 @@ void drawViewSection(PanelContext& ctx) {
     if (ImGui::RadioButton("sRGB", &encoding, 0)) setEncoding(s, Encoding::Srgb);
     ImGui::SameLine();
     if (ImGui::RadioButton("linear", &encoding, 1)) setEncoding(s, Encoding::Linear);
+    // The scene's display (image/view_transform.h): what the window and every screenshot show, never what is
+    // rendered; the difference view and the probe read the raw values.
+    DisplaySettings display = s.scene.display;
+    float stops = float(display.exposure);
+    if (ImGui::SliderFloat("exposure (stops)", &stops, float(kMinExposure), float(kMaxExposure), "%+.1f")) {
+        // Hundredths of a stop, as a double: a saved scene reads "-3.2", not the float's -3.200000047683716.
+        display.exposure = std::round(double(stops) * 100.0) / 100.0;
+        setDisplay(s, display);
+    }
+    int transform = display.transform == ViewTransform::Filmic ? 1 : 0;
+    const char* transforms[] = {"standard (clamp)", "filmic (ACES fit)"};
+    if (ImGui::Combo("view transform", &transform, transforms, 2)) {
+        display.transform = transform == 1 ? ViewTransform::Filmic : ViewTransform::Standard;
+        setDisplay(s, display);
+    }
+    if (!display.isStandard() && ImGui::SmallButton("standard display (0 stops, clamp)"))
+        setDisplay(s, DisplaySettings{});
     if (s.mode == ViewMode::Split) {
         float split = s.splitPosition;
         if (ImGui::SliderFloat("wipe", &split, 0.0f, 1.0f, "%.2f")) setSplitPosition(s, split);

@@ -70,6 +70,9 @@ Action renderAction(const JsonNode& a) {
     if (a.has("estimator")) q.path.estimator = a.child("estimator").oneOf(trace::kPathEstimatorNames, "estimator");
     if (a.has("lightPaths")) q.path.part = a.child("lightPaths").oneOf(trace::kPathPartNames, "light paths");
     if (a.has("sampler")) q.path.sampler = a.child("sampler").oneOf(trace::kPathSamplerNames, "sampler");
+    // Unset: the state's scene's display (what the window shows), as a request's unset fields always are.
+    if (a.has("exposure")) q.exposure = a.child("exposure").number();
+    if (a.has("viewTransform")) q.viewTransform = a.child("viewTransform").oneOf(kViewTransformNames, "view transform");
     // The ranges are the request's, as every front end holds them; only the names are the script's.
     if (std::optional<render::RequestProblem> p = render::check(q)) a.failAt(scriptField(p->field), p->reason);
     return r;
@@ -130,6 +133,18 @@ const ActionInfo kActions[] = {
     {"setEncoding",
      {"encoding"},
      [](const JsonNode& a) -> Action { return SetEncoding{a.child("encoding").oneOf(kEncodingNames, "encoding")}; }},
+    {"setDisplay",
+     {"exposure", "viewTransform"},
+     [](const JsonNode& a) -> Action {
+         SetDisplay d;
+         if (auto f = a.find("exposure")) {
+             const double stops = f->number();
+             if (std::optional<std::string> why = exposureProblem(stops)) f->fail(*why);
+             d.exposure = stops;
+         }
+         if (auto f = a.find("viewTransform")) d.transform = f->oneOf(kViewTransformNames, "view transform");
+         return d;
+     }},
     {"setSplit",
      {"position"},
      [](const JsonNode& a) -> Action { return SetSplit{a.child("position").inRange(0.0f, 1.0f, false, false)}; }},
@@ -195,7 +210,8 @@ const ActionInfo kActions[] = {
          return SmoothScreenshot{a.child("path").string(), a.has("timeout") ? a.child("timeout").positive() : 60.0f};
      }},
     {"render",
-     {"path", "renderer", "size", "spp", "depth", "threads", "timeLimit", "estimator", "lightPaths", "sampler"},
+     {"path", "renderer", "size", "spp", "depth", "threads", "timeLimit", "estimator", "lightPaths", "sampler",
+      "exposure", "viewTransform"},
      renderAction},
     {"undo", {}, [](const JsonNode&) -> Action { return Undo{}; }},
     {"redo", {}, [](const JsonNode&) -> Action { return Redo{}; }},
@@ -249,6 +265,12 @@ struct StateApplier {
     void operator()(const SwitchModel& x) const { switchModelKeepingHighlights(state, x.model, x.allObjects); }
     void operator()(const SetMode& x) const { setMode(state, x.mode); }
     void operator()(const SetEncoding& x) const { setEncoding(state, x.encoding); }
+    void operator()(const SetDisplay& x) const {
+        DisplaySettings d = state.scene.display;
+        if (x.exposure) d.exposure = *x.exposure;
+        if (x.transform) d.transform = *x.transform;
+        setDisplay(state, d);
+    }
     void operator()(const SetSplit& x) const { setSplitPosition(state, x.position); }
     void operator()(const SetAmbient& x) const { setAmbient(state, x.Ia); }
     void operator()(const SetRaster& x) const {

@@ -59,6 +59,11 @@ struct SetMode {
 struct SetEncoding {
     Encoding encoding = Encoding::Srgb;
 };
+// The scene's display (viewer_state.h setDisplay); a field left out keeps its current value.
+struct SetDisplay {
+    std::optional<double> exposure;  // stops, kMinExposure..kMaxExposure
+    std::optional<ViewTransform> transform;
+};
 struct SetSplit {
     float position = 0.5f;
 };  // fraction of the image width
@@ -151,12 +156,13 @@ struct Redo {};
 using Action =
     std::variant<actions::SetShininess, actions::SetMaterial, actions::Preset, actions::Select, actions::SetTerm,
                  actions::ToggleTerm, actions::Progression, actions::SetModel, actions::SwitchModel, actions::SetMode,
-                 actions::SetEncoding, actions::SetSplit, actions::SetAmbient, actions::SetRaster, actions::AddLight,
-                 actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom, actions::FrameAll,
-                 actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::WhiteFurnace, actions::Screenshot,
-                 actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene,
-                 actions::Open, actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag,
-                 actions::SmoothScreenshot, actions::Render, actions::Undo, actions::Redo>;
+                 actions::SetEncoding, actions::SetDisplay, actions::SetSplit, actions::SetAmbient, actions::SetRaster,
+                 actions::AddLight, actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom,
+                 actions::FrameAll, actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::WhiteFurnace,
+                 actions::Screenshot, actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport,
+                 actions::SaveScene, actions::Open, actions::ReloadShaders, actions::WaitReference,
+                 actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot, actions::Render, actions::Undo,
+                 actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

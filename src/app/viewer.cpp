@@ -371,6 +371,7 @@ void Viewer::compose() {
               : state_.mode == ViewMode::LocalGlobal ? ViewMode::Split
                                                      : state_.mode;
     in.encoding = state_.encoding;
+    in.display = state_.scene.display;
     in.split = state_.splitPosition;
     in.gain = float(state_.heatGain);
     in.coverage = raster_->target().coverageTexture();

@@ -32,13 +32,14 @@ namespace shadelab::app {
 namespace {
 
 // A whole float target as the 8-bit image a screenshot writes (the one shared conversion, toImage8).
-Image8 readTarget8(const raster::RenderTarget& target, Encoding encoding, uint64_t* nonFinite) {
+Image8 readTarget8(const raster::RenderTarget& target, Encoding encoding, const DisplaySettings& display,
+                   uint64_t* nonFinite) {
     Image8 img;
     img.width = target.width();
     img.height = target.height();
     img.channels = 3;
     img.data.resize(size_t(img.width) * size_t(img.height) * 3);
-    target.readColor8(img, 0, encoding, nonFinite);
+    target.readColor8(img, 0, encoding, display, nonFinite);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return img;
 }
@@ -51,7 +52,8 @@ void Viewer::runScript() {
         const auto& shot = std::get<actions::SmoothScreenshot>(smoothShot_->action);
         if (accumulation_->converged() && !accumulation_->restart(state_.revision, renderW_, renderH_)) {
             uint64_t nonFinite = 0;
-            const Image8 smooth = readTarget8(accumulation_->target(), state_.encoding, &nonFinite);
+            const Image8 smooth =
+                readTarget8(accumulation_->target(), state_.encoding, state_.scene.display, &nonFinite);
             warnNonFinite("smooth frame", nonFinite, smooth);
             writePng(shot.path, smooth);
             smoothShot_ = nullptr;
@@ -185,14 +187,14 @@ void Viewer::feedSyntheticMouse() {
 Image8 Viewer::captureRaster() {
     ensureRasterCurrent(false);
     uint64_t nonFinite = 0;
-    Image8 img = readTarget8(raster_->target(), state_.encoding, &nonFinite);
+    Image8 img = readTarget8(raster_->target(), state_.encoding, state_.scene.display, &nonFinite);
     warnNonFinite("raster image", nonFinite, img);
     return img;
 }
 
 Image8 Viewer::toPixels(const ImageF& image, const char* what) {
     uint64_t nonFinite = 0;
-    Image8 img = toImage8(image, state_.encoding, &nonFinite);
+    Image8 img = toImage8(image, state_.encoding, state_.scene.display, &nonFinite);
     warnNonFinite(what, nonFinite, img);
     return img;
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -288,6 +289,14 @@ void setMode(ViewerState& state, ViewMode mode) { state.mode = mode; }
 void setGlobalPart(ViewerState& state, trace::PathPart part) { state.globalPart = part; }
 
 void setEncoding(ViewerState& state, Encoding encoding) { state.encoding = encoding; }
+
+void setDisplay(ViewerState& state, const DisplaySettings& display) {
+    DisplaySettings d = display;
+    d.exposure = std::isnan(d.exposure) ? 0.0 : std::clamp(d.exposure, kMinExposure, kMaxExposure);
+    if (d == state.scene.display) return;
+    state.scene.display = d;
+    ++state.editRevision;
+}
 
 void setSplitPosition(ViewerState& state, float position) { state.splitPosition = std::clamp(position, 0.0f, 1.0f); }
 

@@ -125,6 +125,10 @@ void setStageOn(ViewerState& state, bool on);  // e.g. one of a model's glTF cam
 void setMode(ViewerState& state, ViewMode mode);
 void setGlobalPart(ViewerState& state, trace::PathPart part);
 void setEncoding(ViewerState& state, Encoding encoding);
+// The scene's display (exposure and view transform, image/view_transform.h): the window, screenshots and
+// renders show it, and a save keeps it. The exposure is brought into [kMinExposure, kMaxExposure] (NaN: 0).
+// An edit undo steps over; no renderer redraws for it.
+void setDisplay(ViewerState& state, const DisplaySettings& display);
 void setSplitPosition(ViewerState& state, float position);  // clamped to [0, 1]
 void setHeatGain(ViewerState& state, int gain);             // clamped to [1, 255]
 void setProbe(ViewerState& state, int x, int y);

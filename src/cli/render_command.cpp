@@ -73,12 +73,15 @@ std::vector<ExrLayer> surfaceLayers(SurfacePasses p) {
     return out;
 }
 
-Frame rasterize(const Scene& scene, const render::RenderRequest& request, bool keepLinear, StageTimer& timer) {
+// `display`: what the pixels are encoded with (render::displayOf, or Standard for a comparison).
+Frame rasterize(const Scene& scene, const render::RenderRequest& request, const DisplaySettings& display,
+                bool keepLinear, StageTimer& timer) {
     raster::RasterRenderer renderer;
     timer.stage("shader compile");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
-    raster::OffscreenOptions options = render::toOffscreen(request);
+    raster::OffscreenOptions options = render::toOffscreen(request, scene);
+    options.display = display;
     options.keepLinear = keepLinear;
     raster::OffscreenResult r = raster::renderOffscreen(renderer, scene, options);
     timer.stageSplit("draw, " + std::to_string(r.bands) + " band(s) (incl. lazy shader compile)", r.drawMs,
@@ -86,7 +89,8 @@ Frame rasterize(const Scene& scene, const render::RenderRequest& request, bool k
     return {{std::move(r.pixels), std::move(r.coverage), r.nonFinite}, std::move(r.linear), {}, {}};
 }
 
-Frame traceReference(const Scene& scene, const render::RenderRequest& request, bool keepLinear, StageTimer& timer) {
+Frame traceReference(const Scene& scene, const render::RenderRequest& request, const DisplaySettings& display,
+                     bool keepLinear, StageTimer& timer) {
     const trace::TraceSettings settings = render::toTrace(request, scene);
     trace::TraceOutput out;
     {
@@ -95,7 +99,7 @@ Frame traceReference(const Scene& scene, const render::RenderRequest& request, b
     }
     timer.stage("trace");
     Frame f;
-    f.rendered.pixels = toImage8(out.color, request.encoding, &f.rendered.nonFinite);
+    f.rendered.pixels = toImage8(out.color, request.encoding, display, &f.rendered.nonFinite);
     f.rendered.coverage = std::move(out.coverage);
     if (keepLinear) f.linear = std::move(out.color);
     timer.stage("conversion");
@@ -128,7 +132,7 @@ Frame pathTrace(const Scene& scene, const render::RenderRequest& request, bool k
         f.passes.back().name = "raw";
     }
     if (keepLinear) f.passes.push_back(layerOf("variance", {"Y"}, std::move(out.variance)));
-    f.rendered.pixels = toImage8(out.color, request.encoding, &f.rendered.nonFinite);
+    f.rendered.pixels = toImage8(out.color, request.encoding, render::displayOf(request, scene), &f.rendered.nonFinite);
     if (keepLinear) f.linear = std::move(out.color);
     timer.stage("conversion");
     return f;
@@ -183,6 +187,7 @@ int render(const RenderOptions& o, std::string& doing) {
                   : printWarning)(o.input + ": " + renderer + ": " + nonFiniteMessage(r.nonFinite, pixels));
     };
     const bool exr = format == OutputFormat::Exr;
+    const DisplaySettings display = render::displayOf(request, scene);
     Image8 output;    // the PNG's pixels
     ExrImage linear;  // the EXR's layers: the colour before conversion (--renderer both: the raster's, and
                       // the reference's as layer "trace")
@@ -206,12 +211,12 @@ int render(const RenderOptions& o, std::string& doing) {
         for (ExrLayer& l : f.passes) linear.layers.push_back(std::move(l));
     };
     if (request.engine == render::Engine::Raster) {
-        Frame f = rasterize(scene, request, exr, timer);
+        Frame f = rasterize(scene, request, display, exr, timer);
         report("raster", f.rendered);
         keep(f, "");
         output = std::move(f.rendered.pixels);
     } else if (request.engine == render::Engine::Trace) {
-        Frame f = traceReference(scene, request, exr, timer);
+        Frame f = traceReference(scene, request, display, exr, timer);
         report("trace", f.rendered);
         keep(f, "");
         output = std::move(f.rendered.pixels);
@@ -221,26 +226,33 @@ int render(const RenderOptions& o, std::string& doing) {
         keep(f, "");
         output = std::move(f.rendered.pixels);
     } else {
-        Frame fa = rasterize(scene, request, exr, timer);
-        Frame fb = traceReference(scene, request, exr, timer);
-        const Rendered &a = fa.rendered, &b = fb.rendered;
+        // The comparison and its heatmap read the Standard bytes, whatever the display: the numbers are the
+        // renderers', not the view's. The two images beside the heatmap are shown through the display.
+        const bool shown = !display.isStandard() && !exr;
+        Frame fa = rasterize(scene, request, DisplaySettings{}, exr || shown, timer);
+        Frame fb = traceReference(scene, request, DisplaySettings{}, exr || shown, timer);
+        Rendered &a = fa.rendered, &b = fb.rendered;
         report("raster", a);
         report("trace", b);
-        keep(fa, "");
-        keep(fb, "trace");
         CompareResult cmp = compareImages(a.pixels, b.pixels, a.coverage, b.coverage);
-        if (!exr) {
-            Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
-            output = sideBySide({&a.pixels, &b.pixels, &heat});
-        } else {
-            output = a.pixels;
-        }
-        timer.stage("compare + heatmap");
         std::fprintf(stderr, "shadelab: raster | traced (depth %d) | heatmap; raster vs reference:\n%s",
                      render::traceDepth(request, scene), compareSummary(cmp).c_str());
         // The verdict is under the strict gates of design.md §4; say in words where the images differ and why.
         const DifferenceSites sites = differenceSites(a.pixels, b.pixels, a.coverage, cmp);
         std::fprintf(stderr, "%s\n", describeDifference(scene, sites, cmp.gates.threshold).c_str());
+        if (!exr) {
+            Image8 heat = diffHeatmap(a.pixels, b.pixels, cmp.bandMask);
+            if (shown) {
+                a.pixels = toImage8(fa.linear, request.encoding, display, nullptr);
+                b.pixels = toImage8(fb.linear, request.encoding, display, nullptr);
+            }
+            output = sideBySide({&a.pixels, &b.pixels, &heat});
+        } else {
+            output = a.pixels;
+        }
+        keep(fa, "");
+        keep(fb, "trace");
+        timer.stage("compare + heatmap");
     }
     size_t written = 0;
     if (exr) {

@@ -58,6 +58,10 @@ const char* const kHelpHead =
 
 const char* const kHelpTail =
     "  --encoding NAME            srgb (default) | linear: how linear colour becomes 8-bit\n"
+    "  --exposure STOPS           multiply linear values by 2^STOPS before the view transform, -16..16\n"
+    "                             (default: the scene's display.exposure, else 0); the PNG only\n"
+    "  --view-transform NAME      standard (clamp to [0,1], the default) | filmic (Narkowicz's ACES fit:\n"
+    "                             highlights roll off instead of clipping); default: the scene's\n"
     "  --gl-backend NAME          auto | egl-device | egl-surfaceless | osmesa\n"
     "                             (default auto; also the SHADELAB_GL_BACKEND environment variable)\n"
     "  --allow-external-paths     let glTF buffer URIs point outside the model's folder (../, absolute)\n"
@@ -118,9 +122,10 @@ CameraChoice parseCameraFlag(const std::string& value) {
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
     std::vector<std::string> valued = {
-        "-o",           "--output",     "--size",      "--model",       "--terms",         "--encoding",
-        "--gl-backend", "--spp",        "--renderer",  "--threads",     "--depth",         "--max-memory",
-        "--camera",     "--time-limit", "--estimator", "--light-paths", "--exr-precision", "--sampler"};
+        "-o",           "--output",        "--size",      "--model",       "--terms",         "--encoding",
+        "--gl-backend", "--spp",           "--renderer",  "--threads",     "--depth",         "--max-memory",
+        "--camera",     "--time-limit",    "--estimator", "--light-paths", "--exr-precision", "--sampler",
+        "--exposure",   "--view-transform"};
     std::vector<std::string> flags = {"-h",       "--help",   "--verbose", "--timings", "--allow-external-paths",
                                       "--strict", "--passes", "--denoise"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
@@ -151,6 +156,9 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--model")) o.model = parseChoice("--model", *v, kShadingModelNames);
     if (auto v = args.value("--terms")) o.terms = parseTerms(*v);
     if (auto v = args.value("--encoding")) r.encoding = parseChoice("--encoding", *v, kEncodingNames);
+    if (auto v = args.value("--exposure")) r.exposure = parseReal("--exposure", *v);
+    if (auto v = args.value("--view-transform"))
+        r.viewTransform = parseChoice("--view-transform", *v, kViewTransformNames);
     if (auto v = args.value("--renderer")) r.engine = parseChoice("--renderer", *v, render::kEngineNames);
     if (auto v = args.value("--spp")) r.spp = parseWhole("--spp", *v);
     if (auto v = args.value("--camera")) o.camera = parseCameraFlag(*v);

@@ -40,6 +40,10 @@ const char* const kViewHelpHead =
     "  --script PATH              apply the actions in this JSON file between frames\n"
     "  --probe-report PATH        at exit, write the probe's numbers as JSON (set it with a 'probe' action)\n"
     "  --encoding NAME            srgb (default) | linear, for the display and the screenshots\n"
+    "  --exposure STOPS           -16..16: linear values times 2^STOPS on screen and in screenshots\n"
+    "                             (default: the scene's display.exposure, else 0)\n"
+    "  --view-transform NAME      standard (clamp, the default) | filmic (Narkowicz's ACES fit), on screen\n"
+    "                             and in screenshots (default: the scene's display.viewTransform)\n"
     "  --stats                    redraw the image every other frame; print median and 95th-percentile\n"
     "                             frame times with and without a redraw\n"
     "  --camera fit|file|N        the camera to open with, as for 'shadelab render' (default: a scene file's\n"
@@ -67,9 +71,9 @@ std::string defaultScenePath() {
 }  // namespace
 
 int viewCommand(int argc, char** argv) {
-    std::vector<std::string> valued = {"--size",   "--frames",       "--screenshot", "--window-screenshot",
-                                       "--script", "--probe-report", "--encoding",   "--ui-scale",
-                                       "--camera"};
+    std::vector<std::string> valued = {"--size",   "--frames",       "--screenshot",    "--window-screenshot",
+                                       "--script", "--probe-report", "--encoding",      "--ui-scale",
+                                       "--camera", "--exposure",     "--view-transform"};
     std::vector<std::string> flags = {"-h", "--help", "--stats", "--verbose", "--projector"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
     flags.insert(flags.end(), rasterSwitchFlags().begin(), rasterSwitchFlags().end());
@@ -98,6 +102,15 @@ int viewCommand(int argc, char** argv) {
     options.verbose = args.flag("--verbose");
     Encoding encoding = Encoding::Srgb;
     if (auto v = args.value("--encoding")) encoding = parseChoice("--encoding", *v, kEncodingNames);
+    // The display's fields given on the command line override the scene's, as for `render`.
+    std::optional<double> exposure;
+    std::optional<ViewTransform> viewTransform;
+    if (auto v = args.value("--exposure")) {
+        exposure = parseReal("--exposure", *v);
+        if (std::optional<std::string> why = exposureProblem(*exposure)) throw UsageError("--exposure: " + *why);
+    }
+    if (auto v = args.value("--view-transform"))
+        viewTransform = parseChoice("--view-transform", *v, kViewTransformNames);
     const RasterOverride raster = parseRasterFlags(args);
     std::optional<CameraChoice> camera;
     if (auto v = args.value("--camera")) camera = parseCameraFlag(*v);
@@ -134,6 +147,10 @@ int viewCommand(int argc, char** argv) {
     app::ViewerState state = app::makeViewerState(std::move(scene), path);
     state.loadWarnings = warnings.lines();
     app::setEncoding(state, encoding);
+    DisplaySettings shown = state.scene.display;
+    if (exposure) shown.exposure = *exposure;
+    if (viewTransform) shown.transform = *viewTransform;
+    app::setDisplay(state, shown);
     return app::runViewer(options, std::move(state), std::move(script));
 }
 

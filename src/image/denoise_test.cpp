@@ -45,7 +45,7 @@ void fill(ImageF& img, int x, int y, float v) {
 
 int largestByteDifference(const ImageF& a, const ImageF& b) {
     uint64_t bad = 0;
-    const Image8 ea = toImage8(a, Encoding::Srgb, &bad), eb = toImage8(b, Encoding::Srgb, &bad);
+    const Image8 ea = toImage8(a, Encoding::Srgb, {}, &bad), eb = toImage8(b, Encoding::Srgb, {}, &bad);
     int worst = 0;
     for (size_t i = 0; i < ea.data.size(); ++i) worst = std::max(worst, std::abs(int(ea.data[i]) - int(eb.data[i])));
     return worst;

@@ -1,5 +1,6 @@
 // Float → 8-bit conversion (design.md §2). encodeChannel is the exact reference; toImage8 gets the
-// same answer for every float through a table of the 256 decision thresholds, built from encodeChannel.
+// same answer for every float through a table of the 256 decision thresholds, built from encodeChannel, after
+// the display's exposure and view transform (the same float function for both, so the answer stays exact).
 #include "image/encode.h"
 
 #include "util/check.h"
@@ -14,6 +15,17 @@
 namespace shadelab {
 
 namespace {
+
+// The view transforms, the text shaders/view_image.frag includes (scalar float only, so no GLM is needed).
+namespace view {
+#define SL_FN inline
+#include "shaders/view_transform.glsl"
+#undef SL_FN
+}  // namespace view
+
+int transformCode(ViewTransform t) {
+    return t == ViewTransform::Filmic ? view::SL_VIEW_FILMIC : view::SL_VIEW_STANDARD;
+}
 
 // IEC 61966-2-1 sRGB transfer function, in double so the 8-bit rounding below is decided exactly.
 double srgbCurve(double x) { return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055; }
@@ -84,17 +96,31 @@ struct JoinAll {
 
 // Rows [y0, y1); the pixels whose RGB is not all finite are added to `nonFinite` (one sum catches them:
 // NaN or ±inf in any channel makes it NaN or ±inf).
-void encodeRows(const ImageF& img, const Thresholds& t, Image8& out, int y0, int y1, uint64_t& nonFinite) {
+// A display that is not Standard goes through displayValue first; Standard keeps the bare lookup (and its
+// speed). The non-finite count reads the raw values either way.
+void encodeRows(const ImageF& img, const Thresholds& t, const DisplaySettings& display, Image8& out, int y0, int y1,
+                uint64_t& nonFinite) {
     const size_t w = size_t(img.width);
+    const bool standard = display.isStandard();
+    const float scale = display.scale();
+    const int transform = transformCode(display.transform);
     uint64_t bad = 0;
     for (int y = y0; y < y1; ++y) {
         const float* src = img.rgba.data() + size_t(y) * w * 4;
         uint8_t* dst = out.data.data() + size_t(y) * w * 3;
-        for (size_t x = 0; x < w; ++x) {
-            dst[3 * x + 0] = t.code(src[4 * x + 0]);
-            dst[3 * x + 1] = t.code(src[4 * x + 1]);
-            dst[3 * x + 2] = t.code(src[4 * x + 2]);
-            bad += std::isfinite(src[4 * x + 0] + src[4 * x + 1] + src[4 * x + 2]) ? 0 : 1;
+        if (standard) {
+            for (size_t x = 0; x < w; ++x) {
+                dst[3 * x + 0] = t.code(src[4 * x + 0]);
+                dst[3 * x + 1] = t.code(src[4 * x + 1]);
+                dst[3 * x + 2] = t.code(src[4 * x + 2]);
+                bad += std::isfinite(src[4 * x + 0] + src[4 * x + 1] + src[4 * x + 2]) ? 0 : 1;
+            }
+        } else {
+            for (size_t x = 0; x < w; ++x) {
+                for (size_t c = 0; c < 3; ++c)
+                    dst[3 * x + c] = t.code(view::viewChannel(src[4 * x + c], scale, transform));
+                bad += std::isfinite(src[4 * x + 0] + src[4 * x + 1] + src[4 * x + 2]) ? 0 : 1;
+            }
         }
     }
     nonFinite += bad;
@@ -110,6 +136,14 @@ float srgbToLinear(float encoded) {
     return float(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
 }
 
+float displayValue(float linear, const DisplaySettings& display) {
+    return view::viewChannel(linear, display.scale(), transformCode(display.transform));
+}
+
+uint8_t encodeChannel(float linear, Encoding e, const DisplaySettings& display) {
+    return encodeChannel(displayValue(linear, display), e);
+}
+
 uint8_t encodeChannel(float linear, Encoding e) {
     double x = clamp01(linear);
     double v = e == Encoding::Srgb ? srgbCurve(x) : x;
@@ -117,7 +151,7 @@ uint8_t encodeChannel(float linear, Encoding e) {
     return uint8_t(std::min(255.0, std::max(0.0, code)));
 }
 
-Image8 toImage8(const ImageF& img, Encoding e, uint64_t* nonFinite) {
+Image8 toImage8(const ImageF& img, Encoding e, const DisplaySettings& display, uint64_t* nonFinite) {
     SHADELAB_CHECK_EQ(img.rgba.size(), size_t(img.width) * size_t(img.height) * 4);
     Image8 out;
     out.width = img.width;
@@ -133,16 +167,16 @@ Image8 toImage8(const ImageF& img, Encoding e, uint64_t* nonFinite) {
     threads = std::min(threads, std::max(1, img.height));
     std::vector<uint64_t> bad(size_t(threads), 0);  // one counter per thread: no sharing, no atomics
     if (threads <= 1) {
-        encodeRows(img, t, out, 0, img.height, bad[0]);
+        encodeRows(img, t, display, out, 0, img.height, bad[0]);
     } else {
         std::vector<std::thread> pool;
         JoinAll joinAll{pool};  // joins even if starting a thread throws
         for (int i = 1; i < threads; ++i) {
             int y0 = int(int64_t(img.height) * i / threads), y1 = int(int64_t(img.height) * (i + 1) / threads);
-            pool.emplace_back(encodeRows, std::cref(img), std::cref(t), std::ref(out), y0, y1,
+            pool.emplace_back(encodeRows, std::cref(img), std::cref(t), std::cref(display), std::ref(out), y0, y1,
                               std::ref(bad[size_t(i)]));
         }
-        encodeRows(img, t, out, 0, int(int64_t(img.height) / threads), bad[0]);
+        encodeRows(img, t, display, out, 0, int(int64_t(img.height) / threads), bad[0]);
     }
     if (nonFinite)
         for (uint64_t b : bad) *nonFinite += b;

@@ -1,9 +1,11 @@
-// The one conversion from float images to 8-bit pixels (design.md §2): clamp to [0,1], then the exact
-// sRGB curve (default) or no curve ("linear", lecture-style images). Both renderers go through it.
+// The one conversion from float images to 8-bit pixels (design.md §2): the display's exposure and view
+// transform (view_transform.h; Standard by default), clamp to [0,1], then the exact sRGB curve (default) or no
+// curve ("linear", lecture-style images). Every renderer and front end goes through it.
 #pragma once
 
 #include "image/encoding.h"
 #include "image/image.h"
+#include "image/view_transform.h"
 
 #include <cstdint>
 #include <string>
@@ -14,13 +16,22 @@ namespace shadelab {
 float linearToSrgb(float linear);
 float srgbToLinear(float encoded);
 
-// One channel: clamp, encode, round to nearest 8-bit value. NaN maps to 0.
-uint8_t encodeChannel(float linear, Encoding e);
+// One linear channel as the display shows it, before the clamp and the encoding: times 2^exposure, then the
+// view transform (shaders/view_transform.glsl, the text the viewer's shader runs). Standard at 0 stops
+// returns `linear` unchanged.
+float displayValue(float linear, const DisplaySettings& display);
 
-// RGB8 image (alpha dropped) from a float image. A pixel whose RGB holds a NaN or an infinity has no value
-// to show: NaN is written as 0 and +inf as 255, and the number of such pixels is added to *nonFinite, which
-// every front end passes and reports (nonFiniteMessage), so that no image goes black without a word.
-Image8 toImage8(const ImageF& img, Encoding e, uint64_t* nonFinite);
+// One channel: clamp, encode, round to nearest 8-bit value. NaN maps to 0. The raw linear value, as the probe
+// reports it; the three-argument form first applies the display (displayValue).
+uint8_t encodeChannel(float linear, Encoding e);
+uint8_t encodeChannel(float linear, Encoding e, const DisplaySettings& display);
+
+// RGB8 image (alpha dropped) from a float image, each channel exactly encodeChannel(v, e, display): every
+// caller passes the display it shows (DisplaySettings{} for Standard, today's bytes). A pixel whose RGB holds a NaN or
+// an infinity has no value to show: NaN is written as 0 and +inf as 255 (under either transform), and the number of
+// such pixels is added to *nonFinite, which every front end passes and reports (nonFiniteMessage), so that no image
+// goes black without a word.
+Image8 toImage8(const ImageF& img, Encoding e, const DisplaySettings& display, uint64_t* nonFinite);
 
 // "N of M pixels (P %) have no finite value (NaN or infinity) and are written black or white": the one
 // wording of that report, for the command line's warning, the viewer's status line and Python's warning.

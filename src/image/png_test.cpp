@@ -144,7 +144,7 @@ Image8 makeRenderedFrame(int w, int h) {
                 for (int c = 0; c < 3; ++c) p[c] = 0.02f + (c == s ? 0.8f : 0.1f) * NoL + spec;
             }
         }
-    return toImage8(f, Encoding::Srgb, nullptr);
+    return toImage8(f, Encoding::Srgb, DisplaySettings{}, nullptr);
 }
 
 void expectRoundTrip(const Image8& img, const std::string& name) {

@@ -71,7 +71,7 @@ ImagePtr fromFloat(py::array_t<float, py::array::c_style | py::array::forcecast>
         for (int k = 0; k < 3; ++k) img->linear.rgba[i * 4 + size_t(k)] = src[i * size_t(c) + size_t(k)];
         img->linear.rgba[i * 4 + 3] = c == 4 ? src[i * size_t(c) + 3] : 1.0f;
     }
-    img->pixels = toImage8(img->linear, e, &img->nonFinite);
+    img->pixels = toImage8(img->linear, e, DisplaySettings{}, &img->nonFinite);
     img->encoding = e;
     img->source = "array";
     return img;
@@ -289,7 +289,7 @@ In Jupyter an image shows itself.)")
                 if (hasExrExtension(p)) {
                     // The file's linear floats as they are; the 8-bit pixels through the one conversion.
                     img->linear = colourOf(readExr(p), p);
-                    img->pixels = toImage8(img->linear, e, &img->nonFinite);
+                    img->pixels = toImage8(img->linear, e, DisplaySettings{}, &img->nonFinite);
                 } else {
                     img->pixels = readPng(p);
                     img->linear = decode(img->pixels, img->encoding);

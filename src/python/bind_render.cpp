@@ -75,7 +75,8 @@ void bindRender(py::module_& m) {
                std::optional<int> spp, const std::string& encoding, std::optional<int> depth, int threads,
                bool coverage, std::optional<double> timeLimit, const std::optional<std::string>& estimator,
                const std::optional<std::string>& lightPaths, const std::optional<std::string>& sampler,
-               std::optional<uint64_t> maxMemory) {
+               std::optional<uint64_t> maxMemory, std::optional<double> exposure,
+               const std::optional<std::string>& viewTransform) {
                 render::RenderRequest request;
                 request.width = width;
                 request.height = height;
@@ -90,6 +91,8 @@ void bindRender(py::module_& m) {
                 request.path.part = namedIfGiven(trace::kPathPartNames, lightPaths, "light_paths");
                 request.path.sampler = namedIfGiven(trace::kPathSamplerNames, sampler, "sampler");
                 request.maxMemory = maxMemory;
+                request.exposure = exposure;  // unset: the scene's display
+                request.viewTransform = namedIfGiven(kViewTransformNames, viewTransform, "view_transform");
                 validate(request);
                 const Scene copy = scene.scene();  // O(objects); Python may edit the original meanwhile
                 auto image = std::make_shared<ImageData>();
@@ -103,7 +106,8 @@ void bindRender(py::module_& m) {
             py::arg("spp") = py::none(), py::arg("encoding") = "srgb", py::arg("depth") = py::none(),
             py::arg("threads") = 0, py::arg("coverage") = false, py::arg("time_limit") = py::none(),
             py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("sampler") = py::none(),
-            py::arg("max_memory") = py::none())
+            py::arg("max_memory") = py::none(), py::arg("exposure") = py::none(),
+            py::arg("view_transform") = py::none())
         .def("context_info",
              [](Renderer& r) {
                  gl::ContextInfo info;

@@ -36,12 +36,12 @@ std::vector<std::shared_ptr<const MeshGeometry>> geometryOf(const Scene& scene) 
 
 // A CPU tracer's linear image as an ImageData: the 8-bit conversion timed as the raster's readback is. `started`:
 // when tracing began (drawMs runs from it).
-ImageData fromTracer(ImageF color, std::vector<uint32_t> coverage, Encoding encoding, const char* source,
-                     Clock::time_point started) {
+ImageData fromTracer(ImageF color, std::vector<uint32_t> coverage, Encoding encoding, const DisplaySettings& display,
+                     const char* source, Clock::time_point started) {
     ImageData out;
     out.drawMs = msSince(started);
     const Clock::time_point t0 = Clock::now();
-    out.pixels = toImage8(color, encoding, &out.nonFinite);
+    out.pixels = toImage8(color, encoding, display, &out.nonFinite);
     out.readMs = msSince(t0);
     out.linear = std::move(color);
     out.coverage = std::move(coverage);
@@ -126,7 +126,7 @@ ImageData Renderer::rasterize(const Scene& scene, const render::RenderRequest& r
             raster_->uploadMeshes(scene);
             uploaded_ = std::move(geometry);
         }
-        raster::OffscreenOptions o = render::toOffscreen(request);
+        raster::OffscreenOptions o = render::toOffscreen(request, scene);
         o.keepLinear = true;
         raster::OffscreenResult r = raster::renderOffscreen(*raster_, scene, o);
         out.linear = std::move(r.linear);
@@ -146,7 +146,8 @@ ImageData Renderer::trace(const Scene& scene, const render::RenderRequest& reque
     const Clock::time_point t0 = Clock::now();
     const trace::TraceScene prepared(scene, bvh_.get(scene));
     trace::TraceOutput traced = trace::traceImage(prepared, s);
-    return fromTracer(std::move(traced.color), std::move(traced.coverage), request.encoding, "trace", t0);
+    return fromTracer(std::move(traced.color), std::move(traced.coverage), request.encoding,
+                      render::displayOf(request, scene), "trace", t0);
 }
 
 // The path tracer as `shadelab render --renderer path` runs it (same settings, same bytes).
@@ -155,7 +156,8 @@ ImageData Renderer::pathTrace(const Scene& scene, const render::RenderRequest& r
     const Clock::time_point t0 = Clock::now();
     trace::PathOutput traced =
         trace::pathTraceImage(std::make_shared<const trace::TraceScene>(scene, bvh_.get(scene)), s);
-    return fromTracer(std::move(traced.color), std::move(traced.coverage), request.encoding, "path", t0);
+    return fromTracer(std::move(traced.color), std::move(traced.coverage), request.encoding,
+                      render::displayOf(request, scene), "path", t0);
 }
 
 }  // namespace shadelab::python

@@ -74,7 +74,7 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
         ++r.bands;
         const RenderTarget& target = renderer.target();
         if (k == 1 && !o.keepLinear) {
-            target.readColor8(r.pixels, outTop, o.encoding, &r.nonFinite);
+            target.readColor8(r.pixels, outTop, o.encoding, o.display, &r.nonFinite);
         } else {
             // Strips of output rows (16 when supersampled): read k·16 sub-rows, average, convert.
             const int strip = k == 1 ? 64 : 16;
@@ -88,7 +88,7 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
                     target.readColorRows(row * k, rows * k, hiStrip);
                     boxDownsample(hiStrip, k, loStrip);
                 }
-                Image8 converted = toImage8(loStrip, o.encoding, &r.nonFinite);
+                Image8 converted = toImage8(loStrip, o.encoding, o.display, &r.nonFinite);
                 std::memcpy(&r.pixels.data[size_t(outTop + row) * size_t(o.width) * 3], converted.data.data(),
                             converted.data.size());
                 if (o.keepLinear) std::copy(loStrip.rgba.begin(), loStrip.rgba.end(), r.linear.pixel(0, outTop + row));

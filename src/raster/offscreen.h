@@ -18,7 +18,7 @@ namespace shadelab::raster {
 struct OffscreenResult {
     Image8 pixels;                   // RGB
     std::vector<uint32_t> coverage;  // width*height ids when asked, row 0 at the top
-    ImageF linear;                   // width x height, when keepLinear: pixels == toImage8(linear, encoding)
+    ImageF linear;                   // width x height, when keepLinear: pixels == toImage8(linear, encoding, display)
     uint64_t nonFinite = 0;          // pixels with a NaN or infinite channel (toImage8)
     int bands = 0;
     double drawMs = 0.0;  // GPU time, summed over bands (glFinish after each)

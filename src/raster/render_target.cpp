@@ -97,7 +97,8 @@ void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
     flipRows(out.data(), width_, height_, 1);
 }
 
-void RenderTarget::readColor8(Image8& out, int top, Encoding encoding, uint64_t* nonFinite) const {
+void RenderTarget::readColor8(Image8& out, int top, Encoding encoding, const DisplaySettings& display,
+                              uint64_t* nonFinite) const {
     constexpr int kStripRows = 64;
     if (out.width != width_ || out.channels != 3 || top < 0 || top + height_ > out.height)
         throw std::logic_error("RenderTarget::readColor8: destination does not fit the target");
@@ -106,7 +107,7 @@ void RenderTarget::readColor8(Image8& out, int top, Encoding encoding, uint64_t*
         int rows = std::min(kStripRows, height_ - row);
         if (strip.height != rows) strip = ImageF(width_, rows);
         readColorRows(row, rows, strip);
-        Image8 converted = toImage8(strip, encoding, nonFinite);
+        Image8 converted = toImage8(strip, encoding, display, nonFinite);
         std::memcpy(&out.data[size_t(top + row) * size_t(width_) * 3], converted.data.data(), converted.data.size());
     }
     gl::checkError("RenderTarget::readColor8");

@@ -32,8 +32,9 @@ public:
 
     // Reads colour a strip of rows at a time and converts each with toImage8 (the one shared conversion),
     // so no full float copy of the image is ever held on the CPU. The target's rows land in `out` from
-    // row `top` on; `out` must be RGB and as wide as the target. Non-finite pixels are added to *nonFinite.
-    void readColor8(Image8& out, int top, Encoding encoding, uint64_t* nonFinite) const;
+    // row `top` on, through `display` (image/view_transform.h); `out` must be RGB and as wide as the target. Non-finite
+    // pixels are added to *nonFinite.
+    void readColor8(Image8& out, int top, Encoding encoding, const DisplaySettings& display, uint64_t* nonFinite) const;
 
 private:
     int width_ = 0, height_ = 0;

@@ -63,6 +63,8 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
         return problem("time_limit",
                        "must be in [0.001, 1e7] seconds (leave it out for no limit), got " + std::string(got));
     }
+    if (r.exposure)
+        if (std::optional<std::string> why = exposureProblem(*r.exposure)) return problem("exposure", *why);
     if (r.maxMemory) {
         const uint64_t least = minimumRenderBytes(r);
         if (*r.maxMemory < least)
@@ -81,13 +83,21 @@ int traceDepth(const RenderRequest& r, const Scene& scene) {
     return r.engine == Engine::Both ? comparisonDepth(scene, r.depth) : r.depth.value_or(scene.maxDepth);
 }
 
-raster::OffscreenOptions toOffscreen(const RenderRequest& r) {
+DisplaySettings displayOf(const RenderRequest& r, const Scene& scene) {
+    DisplaySettings d = scene.display;
+    if (r.exposure) d.exposure = *r.exposure;
+    if (r.viewTransform) d.transform = *r.viewTransform;
+    return d;
+}
+
+raster::OffscreenOptions toOffscreen(const RenderRequest& r, const Scene& scene) {
     SHADELAB_DCHECK(!check(r));  // the front end refused a bad request before converting it
     raster::OffscreenOptions o;
     o.width = r.width;
     o.height = r.height;
     o.spp = r.samples();
     o.encoding = r.encoding;
+    o.display = displayOf(r, scene);
     o.coverage = r.coverage || r.engine == Engine::Both;
     return o;
 }

@@ -1,13 +1,15 @@
 // RenderRequest: one render, as every front end asks for it: the command line (`shadelab render`), Python
 // (`shadelab.render`), the viewer's background renderers and its scripts. It holds the engine, size, samples,
-// depth, threads, coverage, encoding, the path tracer's options and the memory limit; check() is the one place
-// a request is held to its limits, and the to*() conversions are the one place it becomes each renderer's
-// settings. A problem is named by its field ("spp", "size", ...); each front end words it its own way (`--spp:
+// depth, threads, coverage, encoding, the display (exposure and view transform), the path tracer's options and the
+// memory limit; check() is the one place a request is held to its limits, and the to*() conversions are the one place
+// it becomes each renderer's settings. A problem is named by its field ("spp", "size", ...); each front end words it
+// its own way (`--spp:
 // ...` in the CLI, `spp: ...` in Python, `actions[3].spp: ...` in a script). Plain data: no GL, nothing
 // rendered here; the memory estimate the limit is compared with is render/memory_budget.h.
 #pragma once
 
 #include "image/encoding.h"
+#include "image/view_transform.h"
 #include "raster/offscreen_options.h"
 #include "scene/scene.h"
 #include "trace/path/path_settings.h"
@@ -62,6 +64,10 @@ struct RenderRequest {
     int threads = 0;                     // tracer workers, 0..kMaxThreads; 0 = every core
     bool coverage = false;               // also the coverage ids of each pixel (Both always has them)
     Encoding encoding = Encoding::Srgb;  // how the linear image becomes 8-bit
+    // The display the 8-bit image is encoded with (image/view_transform.h); each unset field is the scene's
+    // (its "display"), so a front end sets only what its user gave: the CLI's flags override the file.
+    std::optional<double> exposure;  // stops, kMinExposure..kMaxExposure
+    std::optional<ViewTransform> viewTransform;
     PathOptions path;
     // The most memory the render may take, bytes (render/memory_budget.h: compared with its estimate before
     // any pixel is drawn, and the environment map's load with it); unset: defaultMaxMemory(), half of
@@ -73,7 +79,7 @@ struct RenderRequest {
 };
 
 // A request's field and why it cannot be rendered. Fields: "size", "spp", "depth", "threads",
-// "time_limit", "estimator", "light_paths", "sampler", "denoise", "max_memory".
+// "time_limit", "estimator", "light_paths", "sampler", "denoise", "max_memory", "exposure".
 struct RequestProblem {
     std::string field;
     std::string reason;
@@ -88,8 +94,12 @@ void require(const RenderRequest& request);
 // The Whitted tracer's depth: the request's, else the scene's; for Engine::Both, the comparison's.
 int traceDepth(const RenderRequest& request, const Scene& scene);
 
+// The display the request's pixels are encoded with: its exposure and view transform, each the scene's where
+// unset. Every 8-bit conversion of a request's image (toImage8) is given this.
+DisplaySettings displayOf(const RenderRequest& request, const Scene& scene);
+
 // The settings each renderer takes for this request (require() it first: they assume a valid request).
-raster::OffscreenOptions toOffscreen(const RenderRequest& request);
+raster::OffscreenOptions toOffscreen(const RenderRequest& request, const Scene& scene);
 trace::TraceSettings toTrace(const RenderRequest& request, const Scene& scene);
 trace::PathSettings toPath(const RenderRequest& request, const Scene& scene);
 

@@ -111,7 +111,7 @@ TEST(RenderRequest, ConversionsCarryEveryField) {
     r.spp = 9;
     r.threads = 3;
     r.encoding = Encoding::Linear;
-    const raster::OffscreenOptions o = render::toOffscreen(r);
+    const raster::OffscreenOptions o = render::toOffscreen(r, Scene{});
     EXPECT_EQ(o.width, 320);
     EXPECT_EQ(o.height, 200);
     EXPECT_EQ(o.spp, 9);
@@ -155,10 +155,35 @@ TEST(RenderRequest, BothTracesAtTheComparisonsDepth) {
     EXPECT_EQ(render::traceDepth(r, scene), comparisonDepth(scene));
     EXPECT_EQ(render::toTrace(r, scene).maxDepth, 1);
     EXPECT_TRUE(render::toTrace(r, scene).coverage);
-    EXPECT_TRUE(render::toOffscreen(r).coverage);
+    EXPECT_TRUE(render::toOffscreen(r, Scene{}).coverage);
     r.depth = 3;  // asked for: as asked
     EXPECT_EQ(render::toTrace(r, scene).maxDepth, 3);
     r.engine = Engine::Trace;  // control: alone, the scene's depth
     r.depth.reset();
     EXPECT_EQ(render::toTrace(r, scene).maxDepth, 5);
+}
+
+// The display: an exposure outside [-16, 16] (or NaN) is refused by its field; each unset field is the scene's,
+// and a set one overrides it; the raster conversion carries the result.
+TEST(RenderRequest, DisplayFieldsOverrideTheScenesAndExposureIsBounded) {
+    render::RenderRequest r;
+    for (double bad : {40.0, -16.01, std::nan("")}) {
+        r.exposure = bad;
+        const std::optional<render::RequestProblem> p = render::check(r);
+        ASSERT_TRUE(p) << bad;
+        EXPECT_EQ(p->field, "exposure");
+        EXPECT_EQ(p->reason.rfind("must be in [-16, 16] stops, got ", 0), 0u) << p->reason;
+    }
+    r.exposure = 16.0;
+    EXPECT_FALSE(render::check(r));
+    Scene scene;
+    scene.display = {-2.0, ViewTransform::Filmic};
+    r.exposure.reset();
+    EXPECT_EQ(render::displayOf(r, scene), scene.display);
+    r.exposure = 1.0;
+    EXPECT_EQ(render::displayOf(r, scene), (DisplaySettings{1.0, ViewTransform::Filmic}));
+    r.viewTransform = ViewTransform::Standard;
+    EXPECT_EQ(render::displayOf(r, scene), (DisplaySettings{1.0, ViewTransform::Standard}));
+    EXPECT_EQ(render::toOffscreen(r, scene).display, (DisplaySettings{1.0, ViewTransform::Standard}));
+    EXPECT_EQ(render::displayOf(render::RenderRequest{}, Scene{}), DisplaySettings{});
 }

@@ -2,6 +2,7 @@
 // Loading and saving live in scene_json.h; glTF import in gltf_import.h.
 #pragma once
 
+#include "image/view_transform.h"
 #include "scene/camera.h"
 #include "scene/environment.h"
 #include "scene/light.h"
@@ -28,6 +29,8 @@ struct Scene {
     glm::vec3 background{0.0f};  // colour of rays that leave the scene, linear RGB
     int maxDepth = 5;            // secondary-ray depth for the tracer, >= 0
     RasterSettings raster;       // the rasterizer's shadow-map and reflection settings
+    // How the images of this scene are shown and encoded (exposure, view transform); never what is rendered.
+    DisplaySettings display;
 
     // What escaping rays see and what lights pbr surfaces besides the lights (none: `background`),
     // and pbr's multiple-scattering compensation (Filament), for lights and the environment.

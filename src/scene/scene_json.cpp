@@ -240,7 +240,7 @@ Scene parseSceneJson(const std::string& text, const std::string& file, void (*wa
 Scene parseSceneDocument(const JsonNode& root) {
     root.requireObject().warnUnknownKeys({"shadelab", "title", "notes", "camera", "model", "normalized", "terms",
                                           "ambient", "background", "environment", "energyCompensation", "maxDepth",
-                                          "raster", "lights", "objects", "materials"});
+                                          "raster", "display", "lights", "objects", "materials"});
     Scene scene;
     if (auto f = root.find("shadelab")) {
         int version = f->integerIn(1, INT_MAX);
@@ -267,6 +267,17 @@ Scene parseSceneDocument(const JsonNode& root) {
         f->requireObject().warnUnknownKeys(
             {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize", "movingPreview"});
         parseRasterOverride(*f).applyTo(scene.raster);
+    }
+    // How the scene's images are shown and encoded (image/view_transform.h); never what is rendered.
+    if (auto f = root.find("display")) {
+        f->requireObject().warnUnknownKeys({"exposure", "viewTransform"});
+        if (auto g = f->find("exposure")) {
+            const double stops = g->number();
+            if (std::optional<std::string> why = exposureProblem(stops)) g->fail(*why);
+            scene.display.exposure = stops;
+        }
+        if (auto g = f->find("viewTransform"))
+            scene.display.transform = g->oneOf(kViewTransformNames, "view transform");
     }
 
     if (auto f = root.find("lights")) {
@@ -410,6 +421,9 @@ std::string sceneToJson(const Scene& scene) {
                      {"pcf", r.pcf},
                      {"reflectionCubeSize", r.reflectionCubeSize},
                      {"movingPreview", r.movingPreview}};
+    // Written only when it is not Standard, so that saving a scene that never had one adds nothing.
+    if (!scene.display.isStandard())
+        doc["display"] = {{"exposure", scene.display.exposure}, {"viewTransform", toString(scene.display.transform)}};
 
     OJson lights = OJson::array();
     for (const Light& l : scene.lights) {

@@ -87,6 +87,8 @@ std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
     }
     d.eq("energyCompensation", a.energyCompensation, b.energyCompensation);
     d.eq("maxDepth", a.maxDepth, b.maxDepth);
+    d.eq("display.exposure", a.display.exposure, b.display.exposure);
+    d.eq("display.viewTransform", int(a.display.transform), int(b.display.transform));
     d.eq("raster.shadowMapSize", a.raster.shadowMapSize, b.raster.shadowMapSize);
     d.f("raster.depthBias", a.raster.depthBias, b.raster.depthBias);
     d.f("raster.normalBias", a.raster.normalBias, b.raster.normalBias);
@@ -239,6 +241,7 @@ struct RandomSceneMaker {
         if (coin())
             s.environment = Environment{coin() ? "" : name() + ".hdr", in(0.0f, 10.0f), in(-360.0f, 360.0f), {}};
         s.energyCompensation = coin();
+        if (coin()) s.display = {in(-16.0f, 16.0f), coin() ? ViewTransform::Filmic : ViewTransform::Standard};
         if (coin()) {  // else the defaults
             s.raster.shadowMapSize = coin() ? 0 : (coin() ? kMaxShadowMapSize : kMinShadowMapSize + upTo(4000));
             s.raster.depthBias = coin() ? in(0.0f, kMaxShadowBias) : (coin() ? 0.0f : kMaxShadowBias);
@@ -512,3 +515,19 @@ TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
 
 }  // namespace
 }  // namespace shadelab
+
+// "display" is read, written back only when it is not Standard, and an unknown key in it warns.
+TEST(SceneJson, DisplayIsReadAndSavedOnlyWhenNotStandard) {
+    using namespace shadelab;
+    const Scene plain = parseSceneJson("{}", "plain.json");
+    EXPECT_TRUE(plain.display.isStandard());
+    EXPECT_EQ(sceneToJson(plain).find("\"display\""), std::string::npos);
+    const Scene filmic =
+        parseSceneJson(R"({"display": {"exposure": -1.25, "viewTransform": "filmic"}})", "filmic.json");
+    EXPECT_EQ(filmic.display, (DisplaySettings{-1.25, ViewTransform::Filmic}));
+    const std::string saved = sceneToJson(filmic);
+    EXPECT_NE(saved.find("\"display\""), std::string::npos) << saved;
+    EXPECT_EQ(parseSceneJson(saved, "saved.json").display, filmic.display);
+    EXPECT_EQ(parseSceneJson(R"({"display": {"exposure": 2}})", "e.json").display,
+              (DisplaySettings{2.0, ViewTransform::Standard}));
+}

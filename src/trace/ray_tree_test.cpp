@@ -142,7 +142,8 @@ Traced traceWithStats(const Scene& sc, int width, int height, const RayTreeLimit
 }
 
 int maxByteDifference(const ImageF& a, const ImageF& b) {
-    const Image8 a8 = toImage8(a, Encoding::Srgb, nullptr), b8 = toImage8(b, Encoding::Srgb, nullptr);
+    const Image8 a8 = toImage8(a, Encoding::Srgb, DisplaySettings{}, nullptr),
+                 b8 = toImage8(b, Encoding::Srgb, DisplaySettings{}, nullptr);
     int d = 0;
     for (size_t i = 0; i < a8.data.size(); ++i) d = std::max(d, std::abs(int(a8.data[i]) - int(b8.data[i])));
     return d;

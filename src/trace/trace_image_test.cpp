@@ -76,7 +76,8 @@ bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
 // (except for negative controls, which are meant to differ).
 ::testing::AssertionResult identical(const TraceOutput& a, const TraceOutput& b, const std::string& name,
                                      bool evidence = true) {
-    const Image8 a8 = toImage8(a.color, Encoding::Srgb, nullptr), b8 = toImage8(b.color, Encoding::Srgb, nullptr);
+    const Image8 a8 = toImage8(a.color, Encoding::Srgb, DisplaySettings{}, nullptr),
+                 b8 = toImage8(b.color, Encoding::Srgb, DisplaySettings{}, nullptr);
     const char* what = !sameBits(a.color.rgba, b.color.rgba) ? "float pixels"
                        : a.coverage != b.coverage            ? "coverage"
                        : a8.data != b8.data                  ? "8-bit pixels"

@@ -111,7 +111,7 @@ inline std::string writeEvidence(const std::string& name, const ImageF& img) {
     const std::filesystem::path dir(SHADELAB_TEST_OUTPUT_DIR);
     std::filesystem::create_directories(dir);
     const std::string path = (dir / (name + ".png")).string();
-    writePng(path, toImage8(img, Encoding::Srgb, nullptr));
+    writePng(path, toImage8(img, Encoding::Srgb, DisplaySettings{}, nullptr));
     std::printf("evidence: %s\n", path.c_str());
     return path;
 }

@@ -50,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     settings.coverage = false;
     const trace::TraceOutput out = trace::traceImage(scene, settings);
     uint64_t nonFinite = 0;
-    toImage8(out.color, Encoding::Srgb, &nonFinite);
+    toImage8(out.color, Encoding::Srgb, DisplaySettings{}, &nonFinite);
     if (nonFinite > 0) {
         std::fprintf(stderr, "gltf_texture_fuzz: %llu of %d pixels are NaN or infinite\n",
                      (unsigned long long)nonFinite, settings.width * settings.height);

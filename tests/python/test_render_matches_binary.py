@@ -1,6 +1,7 @@
 """shadelab.render is byte-identical to `shadelab render`'s PNG for every shipped scene, with both renderers, and
 after a from_dict(to_dict()) round trip; one Renderer and two Renderers sharing the context keep it so."""
 
+import numpy as np
 import pytest
 
 import shadelab
@@ -35,6 +36,40 @@ def test_options_equal_the_binary_flags(renderer, binary, out_dir, source_dir):
     if renderer == "trace":
         expected = binary_png(binary, out_dir, scene, renderer, "--depth", "1", "--threads", "2")
         assert shadelab.render(scene, SIZE, renderer=renderer, depth=1, threads=2).to_png() == expected
+
+
+@pytest.mark.parametrize("renderer", ["raster", "trace", "path"])
+def test_display_equals_the_binary_flags_and_the_scene_field(renderer, binary, out_dir, source_dir):
+    # exposure= and view_transform= are --exposure and --view-transform, byte for byte; a Scene's display is the
+    # file's "display" field; the keywords override it; the linear floats are the same whatever the display.
+    scene_path = source_dir / "assets" / "scenes" / "cornell.json"
+    flags = ("--exposure", "-1.5", "--view-transform", "filmic", "--spp", "4")
+    expected = binary_png(binary, out_dir, scene_path, renderer, *flags)
+    image = shadelab.render(scene_path, SIZE, renderer=renderer, spp=4, exposure=-1.5, view_transform="filmic")
+    image.save(out_dir / f"python-display-{renderer}.png")
+    assert image.to_png() == expected, f"see {out_dir}"
+    plain = shadelab.render(scene_path, SIZE, renderer=renderer, spp=4)
+    assert plain.to_png() != expected, "negative control: the display changed no byte"
+    assert (np.asarray(plain) == np.asarray(image)).all(), "the display must not touch the linear floats"
+    scene = shadelab.Scene.load(scene_path)
+    scene.display = {"exposure": -1.5, "viewTransform": "filmic"}
+    assert scene.display.viewTransform == "filmic"
+    assert shadelab.render(scene, SIZE, renderer=renderer, spp=4).to_png() == expected
+    assert (shadelab.render(scene, SIZE, renderer=renderer, spp=4, exposure=0, view_transform="standard").to_png()
+            == plain.to_png())
+
+
+def test_display_keywords_are_refused_in_one_line(source_dir):
+    scene = source_dir / "assets" / "scenes" / "default.json"
+    with pytest.raises(ValueError, match=r"^exposure: must be in \[-16, 16\] stops, got 40$"):
+        shadelab.render(scene, (8, 6), exposure=40)
+    with pytest.raises(ValueError, match=r"^view_transform: unknown value 'aces'"):
+        shadelab.render(scene, (8, 6), view_transform="aces")
+    with pytest.raises(TypeError, match=r"^exposure: "):
+        shadelab.render(scene, (8, 6), exposure="bright")
+    s = shadelab.Scene.load(scene)
+    with pytest.raises(shadelab.InputError, match=r"display.exposure: must be in \[-16, 16\] stops, got 99"):
+        s.display = {"exposure": 99}
 
 
 def test_path_tracer_equals_the_binary(binary, out_dir, source_dir):

@@ -91,7 +91,7 @@ TEST(PathDenoise, AnImageWithoutVisibleNoiseComesBackWithinOneStep) {
     r.addSamples(ps.spp);
     const ImageF raw = r.image(), denoised = denoisedImage(r, firstHitPasses(*scene, 32, 18, 2));
     uint64_t bad = 0;
-    const Image8 a = toImage8(raw, Encoding::Srgb, &bad), b = toImage8(denoised, Encoding::Srgb, &bad);
+    const Image8 a = toImage8(raw, Encoding::Srgb, {}, &bad), b = toImage8(denoised, Encoding::Srgb, {}, &bad);
     // A pixel is converged when its own standard error, through the sRGB curve, is under a quarter of an 8-bit
     // step (the shadows' darkest pixels, where the curve is steepest, may not be).
     int worst = 0, converged = 0;

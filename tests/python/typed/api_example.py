@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 import shadelab
 import shadelab.lighting
 import shadelab.plots
-from shadelab.typing import MemorySize, RendererName, SceneLike, Size
+from shadelab.typing import MemorySize, RendererName, SceneLike, Size, ViewTransformName
 
 
 def render_all(scenes: list[SceneLike], size: Size, renderer: RendererName) -> list[shadelab.Image]:
@@ -37,6 +37,9 @@ def main(scene_path: str, out_dir: Path) -> int:
                              coverage=True)
     path = scene.render((32, 24), renderer="path", spp=2, encoding="linear", depth=None, threads=0,
                         max_memory="1G")
+    transform: ViewTransformName = "filmic"
+    shown = shadelab.render(scene, (8, 6), exposure=-1.5, view_transform=transform)
+    assert scene.render((8, 6), exposure=2, view_transform="standard").size == shown.size
     limit: MemorySize = 1 << 30
     assert shadelab.render(scene, (8, 6), renderer="trace", max_memory=limit).size == (8, 6)
     floats: NDArray[np.float32] = np.asarray(raster, dtype=np.float32)

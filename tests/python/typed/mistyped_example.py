@@ -18,6 +18,8 @@ def mistakes(scene: shadelab.Scene, name: str) -> None:
     scene.render((8, 8), depth="deep")  # error: arg-type
     shadelab.Renderer(backend="vulkan")  # error: arg-type
     shadelab.render(scene, (64, 64), max_memory=1.5)  # error: arg-type
+    shadelab.render(scene, (64, 64), view_transform="aces")  # error: arg-type
+    shadelab.render(scene, (64, 64), exposure="bright")  # error: arg-type
     width: str = shadelab.render(scene).width  # error: assignment
     shadelab.render(scene, coverage=True).coverage.max()  # error: union-attr
     scene.base_dir = "elsewhere"  # error: misc
