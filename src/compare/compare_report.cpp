@@ -8,6 +8,8 @@
 #include "util/input_error.h"
 #include "util/output_file.h"
 
+#include "compare/report_verdict.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -20,7 +22,7 @@ namespace shadelab {
 
 namespace {
 
-using Json = nlohmann::ordered_json;  // keys in the order written: verdict first, for people reading it
+using compare_detail::Json;
 
 // Inferno-like control points (sRGB bytes) with rising Rec. 709 luminance (0, 20, 51, 91, 176, 255),
 // so linear interpolation between them keeps the ramp monotone in brightness.
@@ -147,20 +149,11 @@ std::string compareSummary(const CompareResult& r) {
     } else {
         s += "  no coverage: every pixel is interior\n";
     }
-    s += r.pass ? "verdict: PASS\n" : "verdict: FAIL\n";
-    for (const std::string& reason : r.reasons) s += "  - " + reason + "\n";
-    return s;
+    return s + compare_detail::verdictLines(r.pass, r.reasons);
 }
 
 std::string compareReportJson(const CompareResult& r, const std::string& imageA, const std::string& imageB) {
-    Json j;
-    j["verdict"] = r.pass ? "pass" : "fail";
-    j["pass"] = r.pass;
-    j["reasons"] = r.reasons;
-    if (!imageA.empty()) j["image_a"] = imageA;
-    if (!imageB.empty()) j["image_b"] = imageB;
-    j["width"] = r.width;
-    j["height"] = r.height;
+    Json j = compare_detail::verdictJson(r.pass, r.reasons, imageA, imageB, r.width, r.height);
     j["channels"] = r.channels;
     j["units"] = "8-bit levels (0-255)";
     j["gates"] = {{"threshold", r.gates.threshold},

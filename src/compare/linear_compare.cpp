@@ -8,6 +8,8 @@
 #include "util/check.h"
 #include "util/input_error.h"
 
+#include "compare/report_verdict.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -18,7 +20,7 @@
 namespace shadelab {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using compare_detail::Json;
 
 bool sameNonFinite(float a, float b) { return (std::isnan(a) && std::isnan(b)) || (std::isinf(a) && a == b); }
 
@@ -175,20 +177,11 @@ std::string linearSummary(const LinearCompareResult& r) {
     else
         std::snprintf(buf, sizeof buf, "  max 0 (identical samples)\n");
     s += buf;
-    s += r.pass ? "verdict: PASS\n" : "verdict: FAIL\n";
-    for (const std::string& reason : r.reasons) s += "  - " + reason + "\n";
-    return s;
+    return s + compare_detail::verdictLines(r.pass, r.reasons);
 }
 
 std::string linearReportJson(const LinearCompareResult& r, const std::string& imageA, const std::string& imageB) {
-    Json j;
-    j["verdict"] = r.pass ? "pass" : "fail";
-    j["pass"] = r.pass;
-    j["reasons"] = r.reasons;
-    if (!imageA.empty()) j["image_a"] = imageA;
-    if (!imageB.empty()) j["image_b"] = imageB;
-    j["width"] = r.width;
-    j["height"] = r.height;
+    Json j = compare_detail::verdictJson(r.pass, r.reasons, imageA, imageB, r.width, r.height);
     j["units"] = "linear light; relative differences |a-b| / (max(|a|,|b|) + floor)";
     j["gates"] = {{"floor", r.gates.floor},
                   {"threshold", r.gates.threshold},
