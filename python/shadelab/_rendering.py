@@ -46,7 +46,7 @@ def memory_limit(max_memory: MemorySize | None) -> int:
 def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Size, renderer: RendererName,
                   spp: int | None, encoding: EncodingName, depth: int | None, threads: int, coverage: bool,
                   time_limit: float | None, estimator: EstimatorName | None, light_paths: LightPathsName | None,
-                  sampler: SamplerName | None, max_memory: int | None, exposure: float | None = None,
+                  sampler: SamplerName | None, denoise: bool, max_memory: int | None, exposure: float | None = None,
                   view_transform: ViewTransformName | None = None) -> _shadelab.Image:
     """Renders the scene behind `handle` with `core`; the arguments are Renderer.render's, max_memory in bytes
     (memory_limit()) or None for the default, as the command line without --max-memory. Their types are
@@ -59,7 +59,8 @@ def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Siz
             _clamped(clamp, _checks.optional_whole("depth", depth)), clamp(_checks.whole("threads", threads)),
             _checks.flag("coverage", coverage), _checks.optional_real("time_limit", time_limit),
             _checks.optional_word("estimator", estimator), _checks.optional_word("light_paths", light_paths),
-            _checks.optional_word("sampler", sampler), max_memory, _checks.optional_real("exposure", exposure),
+            _checks.optional_word("sampler", sampler), _checks.flag("denoise", denoise), max_memory,
+            _checks.optional_real("exposure", exposure),
             _checks.optional_word("view_transform", view_transform))
     image: _shadelab.Image = _checks.call(clamp, core.render, *args)
     if image.non_finite_pixels:

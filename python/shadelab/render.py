@@ -64,7 +64,7 @@ class Renderer:
     def render(self, scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
                spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-               light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
+               light_paths: LightPathsName | None = None, sampler: SamplerName | None = None, denoise: bool = False,
                max_memory: MemorySize | None = None, exposure: float | None = None,
                view_transform: ViewTransformName | None = None) -> _shadelab.Image:
         """Renders `scene` to a shadelab.Image with this Renderer's GL context and programs.
@@ -94,8 +94,10 @@ class Renderer:
             term stands in for); default None, "all". The binary's --light-paths.
         sampler: "path" only: where the random numbers come from, "sobol" (Owen-scrambled Sobol points,
             stratified in each pixel: less noise at equal samples) or "independent" (plain Monte Carlo); both
-            converge to the same image; default None, "sobol". The binary's --sampler. Given to another
-            renderer, any of these four raises ValueError.
+            converge to the same image; default None, "sobol". The binary's --sampler.
+        denoise: "path" only: the denoised preview instead of the raw estimate (an edge-avoiding filter
+            guided by the first hit's albedo, normal and depth; the binary's --denoise); default False. Given to
+            another renderer, any of these five raises ValueError.
         max_memory: the most memory the render may take: an int of bytes, or a string as the binary's
             --max-memory reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's
             default, half of physical memory (within ulimit -v). A render estimated to need more raises
@@ -115,7 +117,7 @@ class Renderer:
         """
         limit = _rendering.memory_limit(max_memory)  # the default too: a path's environment map is held to it
         return _rendering.render_handle(self._core, _scene(scene, limit)._handle, size, renderer, spp, encoding,
-                                        depth, threads, coverage, time_limit, estimator, light_paths, sampler,
+                                        depth, threads, coverage, time_limit, estimator, light_paths, sampler, denoise,
                                         None if max_memory is None else limit, exposure, view_transform)
 
     @property
@@ -155,7 +157,7 @@ def default_renderer() -> Renderer:
 def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster",
            spp: int | None = None, encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
            coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-           light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
+           light_paths: LightPathsName | None = None, sampler: SamplerName | None = None, denoise: bool = False,
            max_memory: MemorySize | None = None, exposure: float | None = None,
            view_transform: ViewTransformName | None = None) -> _shadelab.Image:
     """Renders `scene` with the default Renderer (default_renderer()) to a shadelab.Image.
@@ -185,8 +187,10 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
         term stands in for); default None, "all". The binary's --light-paths.
     sampler: "path" only: where the random numbers come from, "sobol" (Owen-scrambled Sobol points,
         stratified in each pixel: less noise at equal samples) or "independent" (plain Monte Carlo); both
-        converge to the same image; default None, "sobol". The binary's --sampler. Given to another renderer,
-        any of these four raises ValueError.
+        converge to the same image; default None, "sobol". The binary's --sampler.
+    denoise: "path" only: the denoised preview instead of the raw estimate (an edge-avoiding filter guided by
+        the first hit's albedo, normal and depth; the binary's --denoise); default False. Given to another
+        renderer, any of these five raises ValueError.
     max_memory: the most memory the render may take: an int of bytes, or a string as the binary's --max-memory
         reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's default, half of
         physical memory (within ulimit -v). A render estimated to need more raises shadelab.InputError before
@@ -206,7 +210,7 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
     """
     return default_renderer().render(scene, size, renderer=renderer, spp=spp, encoding=encoding, depth=depth,
                                      threads=threads, coverage=coverage, time_limit=time_limit,
-                                     estimator=estimator, light_paths=light_paths, sampler=sampler,
+                                     estimator=estimator, light_paths=light_paths, sampler=sampler, denoise=denoise,
                                      max_memory=max_memory, exposure=exposure, view_transform=view_transform)
 
 

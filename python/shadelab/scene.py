@@ -300,17 +300,17 @@ class Scene(_View):
     def render(self, size: Size = DEFAULT_SIZE, *, renderer: RendererName = "raster", spp: int | None = None,
                encoding: EncodingName = "srgb", depth: int | None = None, threads: int = 0,
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
-               light_paths: LightPathsName | None = None, sampler: SamplerName | None = None,
+               light_paths: LightPathsName | None = None, sampler: SamplerName | None = None, denoise: bool = False,
                max_memory: MemorySize | None = None, exposure: float | None = None,
                view_transform: ViewTransformName | None = None) -> _shadelab.Image:
         """shadelab.render(self, size, ...): renders this scene with the default Renderer. The keywords, their
         ranges and defaults are shadelab.render's: renderer="raster" ("trace", "path"), spp=None (1; 16 for
         path), encoding="srgb" ("linear"), depth=None (the scene's maxDepth), threads=0 (every core),
         coverage=False, for path time_limit=None, estimator=None ("mis"), light_paths=None ("all"), sampler=None
-        ("sobol"), max_memory=None (the binary's --max-memory default; bytes, or "512M"), and exposure=None and
-        view_transform=None (the scene's display: -16..16 stops, "standard" or "filmic")."""
+        ("sobol") and denoise=False, max_memory=None (the binary's --max-memory default; bytes, or "512M"), and
+        exposure=None and view_transform=None (the scene's display: -16..16 stops, "standard" or "filmic")."""
         return _rendering.render_handle(_rendering.default_core(), self._handle, size, renderer, spp, encoding,
-                                        depth, threads, coverage, time_limit, estimator, light_paths, sampler,
+                                        depth, threads, coverage, time_limit, estimator, light_paths, sampler, denoise,
                                         None if max_memory is None else _rendering.memory_limit(max_memory),
                                         exposure, view_transform)
 

@@ -27,4 +27,5 @@ SceneLike = Union[Scene, StrPath, Dict[str, Any]]
 ImageLike = Union[Image, StrPath, npt.ArrayLike]
 
 __all__ = ["BackendName", "EncodingName", "EstimatorName", "ExrPrecisionName", "ImageLike", "LightPathsName",
-           "MemorySize", "ModelName", "RendererName", "SamplerName", "SceneLike", "Size", "StrPath", "ViewTransformName"]
+           "MemorySize", "ModelName", "RendererName", "SamplerName", "SceneLike", "Size", "StrPath",
+           "ViewTransformName"]

@@ -74,7 +74,7 @@ void bindRender(py::module_& m) {
             [](Renderer& r, const SceneHandle& scene, int width, int height, const std::string& engine,
                std::optional<int> spp, const std::string& encoding, std::optional<int> depth, int threads,
                bool coverage, std::optional<double> timeLimit, const std::optional<std::string>& estimator,
-               const std::optional<std::string>& lightPaths, const std::optional<std::string>& sampler,
+               const std::optional<std::string>& lightPaths, const std::optional<std::string>& sampler, bool denoise,
                std::optional<uint64_t> maxMemory, std::optional<double> exposure,
                const std::optional<std::string>& viewTransform) {
                 render::RenderRequest request;
@@ -90,6 +90,7 @@ void bindRender(py::module_& m) {
                 request.path.estimator = namedIfGiven(trace::kPathEstimatorNames, estimator, "estimator");
                 request.path.part = namedIfGiven(trace::kPathPartNames, lightPaths, "light_paths");
                 request.path.sampler = namedIfGiven(trace::kPathSamplerNames, sampler, "sampler");
+                request.path.denoise = denoise;
                 request.maxMemory = maxMemory;
                 request.exposure = exposure;  // unset: the scene's display
                 request.viewTransform = namedIfGiven(kViewTransformNames, viewTransform, "view_transform");
@@ -105,7 +106,7 @@ void bindRender(py::module_& m) {
             py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("renderer") = "raster",
             py::arg("spp") = py::none(), py::arg("encoding") = "srgb", py::arg("depth") = py::none(),
             py::arg("threads") = 0, py::arg("coverage") = false, py::arg("time_limit") = py::none(),
-            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("sampler") = py::none(),
+            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("sampler") = py::none(), py::arg("denoise") = false,
             py::arg("max_memory") = py::none(), py::arg("exposure") = py::none(),
             py::arg("view_transform") = py::none())
         .def("context_info",

@@ -103,3 +103,18 @@ def test_renderers_share_the_context_without_crosstalk(binary, out_dir):
     assert a.render(SCENES[1], SIZE).to_png() == expected[SCENES[1]]  # closed: starts again
     b.close()
     a.close()
+
+
+def test_denoise_equals_the_binary_flag(binary, out_dir, source_dir):
+    # denoise= is --denoise, byte for byte; the denoised floats differ from the raw estimate (negative control),
+    # and another renderer refuses it in the request's words.
+    scene = source_dir / "assets" / "scenes" / "cornell.json"
+    expected = binary_png(binary, out_dir, scene, "path", "--spp", "4", "--denoise")
+    image = shadelab.render(scene, SIZE, renderer="path", spp=4, denoise=True)
+    image.save(out_dir / "python-denoised.png")
+    assert image.to_png() == expected, f"see {out_dir}"
+    raw = shadelab.render(scene, SIZE, renderer="path", spp=4)
+    assert raw.to_png() != expected, "negative control: denoise changed no byte"
+    assert np.abs(np.asarray(raw) - np.asarray(image)).mean() > 1e-3
+    with pytest.raises(ValueError, match="denoise: is for the path tracer"):
+        shadelab.render(scene, SIZE, renderer="raster", denoise=True)

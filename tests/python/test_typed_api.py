@@ -21,8 +21,8 @@ STUB = PACKAGE / "_shadelab.pyi"
 SIZE = (24, 16)
 
 KEYWORDS = {"renderer": "raster", "spp": None, "encoding": "srgb", "depth": None, "threads": 0, "coverage": False,
-            "time_limit": None, "estimator": None, "light_paths": None, "sampler": None, "max_memory": None,
-            "exposure": None, "view_transform": None}
+            "time_limit": None, "estimator": None, "light_paths": None, "sampler": None, "denoise": False,
+            "max_memory": None, "exposure": None, "view_transform": None}
 
 
 @pytest.fixture(scope="module")
