@@ -106,8 +106,8 @@ void bindRender(py::module_& m) {
             py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("renderer") = "raster",
             py::arg("spp") = py::none(), py::arg("encoding") = "srgb", py::arg("depth") = py::none(),
             py::arg("threads") = 0, py::arg("coverage") = false, py::arg("time_limit") = py::none(),
-            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("sampler") = py::none(), py::arg("denoise") = false,
-            py::arg("max_memory") = py::none(), py::arg("exposure") = py::none(),
+            py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("sampler") = py::none(),
+            py::arg("denoise") = false, py::arg("max_memory") = py::none(), py::arg("exposure") = py::none(),
             py::arg("view_transform") = py::none())
         .def("context_info",
              [](Renderer& r) {
