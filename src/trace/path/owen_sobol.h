@@ -100,14 +100,8 @@ inline glm::uvec4 laineKarras(glm::uvec4 x, glm::uvec4 seed) {
     return x;
 }
 
-inline uint32_t laineKarras(uint32_t x, uint32_t seed) {
-    x += seed;
-    x ^= x * 0x6c50b47cu;
-    x ^= x * 0xb82f1e52u;
-    x ^= x * 0xc7afe638u;
-    x ^= x * 0x8d22f6e6u;
-    return x;
-}
+// The same on one lane.
+inline uint32_t laineKarras(uint32_t x, uint32_t seed) { return laineKarras(glm::uvec4(x), glm::uvec4(seed)).x; }
 
 inline glm::uvec4 reverseBits(glm::uvec4 x) {
     return {trace::reverseBits(x.x), trace::reverseBits(x.y), trace::reverseBits(x.z), trace::reverseBits(x.w)};
