@@ -2,7 +2,7 @@
 // and the NoL of the shared C++ shading and stays on the clicked point while the camera orbits; a broken
 // shader reload keeps the last good program; dragging a light marker moves the light and its shadow; undo
 // restores a removed light exactly; saving never writes over a model; a traced glass tree ends promptly after its
-// frames; projector scale keeps the window's shape; status messages never move the controls. Without xvfb-run the tests
+// frames; projector scale keeps the window's shape; status messages never move the controls. Without Xvfb the tests
 // report SKIPPED with the reason.
 #include "app_window_run.h"
 #include "image/png.h"

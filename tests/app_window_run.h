@@ -24,19 +24,20 @@ inline constexpr int kW = 320, kH = 180;
 
 inline std::string binary() { return SHADELAB_BINARY; }
 
-// The viewer in a fresh X server of its own. The screen is larger than any window the tests open.
+// The viewer in a fresh X server of its own (tests/with_xvfb.sh, which returns the viewer's own exit code). The
+// screen is larger than any window the tests open.
 inline Result view(const std::string& args, const std::string& env = "") {
-    return shell(env + "xvfb-run -a -s '-screen 0 1920x1200x24' " + binary() + " view " + args);
+    return shell(env + SHADELAB_WITH_XVFB " -s 1920x1200x24 " + binary() + " view " + args);
 }
 
 inline Result render(const std::string& scene, const std::string& out, const std::string& flags = "") {
     return shell(binary() + " render " + scene + " --size " + kSize + " -o " + out + " " + flags);
 }
 
-inline bool haveXvfb() { return shell("command -v xvfb-run").code == 0; }
+inline bool haveXvfb() { return shell("command -v Xvfb").code == 0; }
 
 #define REQUIRE_XVFB() \
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found: apt-get install xvfb xauth (scripts/install-deps.sh)"
+    if (!haveXvfb()) GTEST_SKIP() << "Xvfb not found: apt-get install xvfb (scripts/install-deps.sh)"
 
 // Exact equality expected (same renderer, same shared conversion), plus the design.md §4 gates; on
 // failure both images, the heatmap and the report stay in build/test-output.

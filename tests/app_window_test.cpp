@@ -2,7 +2,7 @@
 // equals `shadelab render` of the same scene and size; a scripted shininess change, the raster flags and the
 // setRaster action, the Global mode, the still frame's accumulation and the white furnace round trip give the
 // images the headless path gives for the same settings; resizing keeps them right. Every comparison has a
-// negative control. Without xvfb-run the tests report SKIPPED with the reason. What a user does with the
+// negative control. Without Xvfb the tests report SKIPPED with the reason. What a user does with the
 // window (probe, drag, undo, save) is app_window_interaction_test.cpp's.
 #include "app_window_run.h"
 #include "compare/image_compare.h"
