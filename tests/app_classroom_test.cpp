@@ -147,6 +147,10 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     EXPECT_EQ(imageCaption(s),
               "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
               "global illumination (path traced)");
+    // The denoised preview says so, in the Global modes only (the raster modes have nothing to denoise).
+    EXPECT_EQ(imageCaption(s, true),
+              "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
+              "global illumination (path traced)  \xc2\xb7  denoised");
     setGlobalPart(s, trace::PathPart::Indirect);
     EXPECT_NE(imageCaption(s).find("indirect light only"), std::string::npos);
     setMode(s, ViewMode::LocalGlobal);
@@ -156,10 +160,13 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
         setTerm(s, t, false);
     EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
+    EXPECT_NE(imageCaption(s, true).find("local (raster) | global (path traced)  \xc2\xb7  denoised"),
+              std::string::npos);
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
     // A display that is not Standard is named at the end (not in Difference, which shows the raw values).
     setMode(s, ViewMode::Raster);
+    EXPECT_EQ(imageCaption(s, true), imageCaption(s)) << "no denoised raster";
     const std::string plain = imageCaption(s);
     EXPECT_EQ(plain.find("filmic"), std::string::npos);
     setDisplay(s, DisplaySettings{1.5, ViewTransform::Filmic});

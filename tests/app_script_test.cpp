@@ -171,6 +171,35 @@ TEST(AppScript, ErrorsNameTheFileAndTheAction) {
     EXPECT_THROW(applyScriptAction(s, rm.actions[0], rm.file), InputError);
 }
 
+// setGlobal: the Global modes' light paths and denoised preview, each field given changing only itself; a view
+// choice, not an edit and nothing a renderer restarts for (the light paths restart the path tracer through
+// the request, not the revision).
+TEST(AppScript, SetGlobalChangesOnlyTheFieldsGiven) {
+    const Script sc = parse(R"([{"action": "setGlobal", "denoise": false},
+                                {"action": "setGlobal", "lightPaths": "indirect"},
+                                {"action": "setGlobal", "lightPaths": "all", "denoise": true}])");
+    ASSERT_EQ(sc.actions.size(), 3u);
+    EXPECT_TRUE(isStateAction(sc.actions[0]));
+    ViewerState a = defaultState();
+    EXPECT_TRUE(a.globalDenoise) << "the viewer shows the denoised preview by default";
+    const uint64_t revision = a.revision, edits = a.editRevision;
+    applyScriptAction(a, sc.actions[0], sc.file);
+    EXPECT_FALSE(a.globalDenoise);
+    EXPECT_EQ(a.globalPart, trace::PathPart::All);
+    applyScriptAction(a, sc.actions[1], sc.file);
+    EXPECT_FALSE(a.globalDenoise);
+    EXPECT_EQ(a.globalPart, trace::PathPart::Indirect);
+    applyScriptAction(a, sc.actions[2], sc.file);
+    EXPECT_TRUE(a.globalDenoise);
+    EXPECT_EQ(a.globalPart, trace::PathPart::All);
+    EXPECT_EQ(a.revision, revision);
+    EXPECT_EQ(a.editRevision, edits);
+    EXPECT_EQ(parseError(R"([{"action": "setGlobal", "denoise": 1}])"),
+              "actions.json: actions[0].denoise: expected true or false, got number");
+    EXPECT_EQ(parseError(R"([{"action": "setGlobal", "lightPaths": "some"}])"),
+              "actions.json: actions[0].lightPaths: unknown light paths 'some'; expected all, direct or indirect");
+}
+
 // setDisplay: each field given changes the scene's display and the rest stay; an edit undo steps over (not a
 // change a renderer sees); refused values name the action's field.
 TEST(AppScript, SetDisplayChangesOnlyTheFieldsGiven) {

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <utility>
 
 using namespace shadelab;
 using namespace shadelab::test;
@@ -203,31 +204,51 @@ TEST(AppWindow, ProgressiveReferenceCompletesWhileTheWindowRuns) {
 
 // Global mode: the path tracer in the window draws exactly what `shadelab render --renderer path` draws with
 // the same number of samples (it is deterministic for any thread count and split into passes).
+// The samples per pixel the viewer printed for a referenceScreenshot of `shot`, and whether it was denoised.
+static std::pair<int, bool> pathTracedSamples(const std::string& out, const std::string& shot) {
+    const std::string marker = shot + ": path traced, ";
+    const size_t at = out.find(marker);
+    if (at == std::string::npos) return {0, false};
+    const size_t end = out.find('\n', at);
+    const std::string line = out.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    return {std::atoi(line.c_str() + marker.size()), line.find(", denoised") != std::string::npos};
+}
+
+// Global mode shows the denoised preview by default and the raw estimate one switch away; each equals the
+// headless path tracer's PNG of as many samples, with and without --denoise.
 TEST(AppWindow, GlobalModeEqualsTheHeadlessPathTracer) {
     REQUIRE_XVFB();
     const std::string scenePath = test::sourcePath("assets/scenes/local-vs-global.json");
-    const std::string shot = test::outputPath("global_window.png");
+    const std::string denoisedShot = test::outputPath("global_window_denoised.png"),
+                      rawShot = test::outputPath("global_window.png");
     const std::string script = writeText("global_script.json", R"([
         {"frame": 1, "action": "setMode", "mode": "global"},
         {"action": "waitReference", "timeout": 120},
-        {"action": "referenceScreenshot", "path": ")" + shot + R"("}])");
+        {"action": "referenceScreenshot", "path": ")" + denoisedShot +
+                                                                   R"("},
+        {"action": "setGlobal", "denoise": false},
+        {"action": "referenceScreenshot", "path": ")" + rawShot + R"("}])");
     Result v = view(scenePath + " --size 160x90 --frames 3 --script " + script);
     ASSERT_EQ(v.code, 0) << v.out;
-    const std::string marker = "path traced, ";
-    const size_t at = v.out.find(marker);
-    ASSERT_NE(at, std::string::npos) << v.out;
-    const int spp = std::atoi(v.out.c_str() + at + marker.size());
+    const auto [denoisedSpp, denoised] = pathTracedSamples(v.out, denoisedShot);
+    const auto [spp, rawDenoised] = pathTracedSamples(v.out, rawShot);
+    ASSERT_GE(denoisedSpp, 1) << v.out;
     ASSERT_GE(spp, 1) << v.out;
-    const std::string headless = test::outputPath("global_headless.png");
-    Result r = shell(binary() + " render " + scenePath + " --size 160x90 --renderer path --spp " + std::to_string(spp) +
-                     " -o " + headless);
-    ASSERT_EQ(r.code, 0) << r.out;
-    EXPECT_TRUE(sameBytes(shot, headless)) << spp << " samples: " << shot << " vs " << headless;
-    // Negative control: one sample more is another image.
-    Result more = shell(binary() + " render " + scenePath + " --size 160x90 --renderer path --spp " +
-                        std::to_string(spp + 1) + " -o " + headless);
-    ASSERT_EQ(more.code, 0) << more.out;
-    EXPECT_FALSE(sameBytes(shot, headless));
+    EXPECT_TRUE(denoised) << "the preview is denoised by default: " << v.out;
+    EXPECT_FALSE(rawDenoised) << v.out;
+    const auto headless = [&](const std::string& name, int n, const std::string& flags) {
+        const std::string path = test::outputPath(name);
+        Result r = shell(binary() + " render " + scenePath + " --size 160x90 --renderer path --spp " +
+                         std::to_string(n) + " " + flags + " -o " + path);
+        EXPECT_EQ(r.code, 0) << r.out;
+        return path;
+    };
+    EXPECT_TRUE(sameBytes(rawShot, headless("global_headless.png", spp, ""))) << spp << " samples: " << rawShot;
+    EXPECT_TRUE(sameBytes(denoisedShot, headless("global_headless_denoised.png", denoisedSpp, "--denoise")))
+        << denoisedSpp << " samples, denoised: " << denoisedShot;
+    // Negative controls: one sample more is another image, and the denoised preview is not the raw estimate.
+    EXPECT_FALSE(sameBytes(rawShot, headless("global_headless_more.png", spp + 1, "")));
+    EXPECT_FALSE(sameBytes(denoisedShot, headless("global_headless_raw.png", denoisedSpp, "")));
 }
 
 TEST(AppWindow, StillFrameAccumulatesToTheSupersampledRender) {

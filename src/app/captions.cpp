@@ -33,7 +33,7 @@ std::string termsCaption(const Terms& terms) {
     return text.empty() ? "nothing" : text;
 }
 
-std::string imageCaption(const ViewerState& state) {
+std::string imageCaption(const ViewerState& state, bool denoised) {
     const char* mode = "";
     switch (state.mode) {
         case ViewMode::Raster: mode = "raster"; break;
@@ -47,6 +47,8 @@ std::string imageCaption(const ViewerState& state) {
     Terms terms = state.scene.terms;
     if (state.mode == ViewMode::Global) terms.ambient = false;
     std::string caption = modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(terms) + "  \xc2\xb7  " + mode;
+    // The preview is not the estimate: a class must know when the noise it does not see was filtered away.
+    if (denoised && isGlobal(state.mode)) caption += "  \xc2\xb7  denoised";
     // A display that is not Standard says so: the picture is no longer the clamped values (the difference view
     // never uses it).
     if (!state.scene.display.isStandard() && state.mode != ViewMode::Difference)

@@ -13,9 +13,10 @@ namespace shadelab::app {
 std::string modelCaption(const Scene& scene);
 // "ambient + diffuse + specular"; "nothing" when every term is off. Transmission rides with reflections.
 std::string termsCaption(const Terms& terms);
-// The top-left caption: "Blinn-Phong · ambient + diffuse + specular · raster", then the display when it is
-// not Standard ("· filmic, +1 stops"), except in Difference, which shows the raw values.
-std::string imageCaption(const ViewerState& state);
+// The top-left caption: "Blinn-Phong · ambient + diffuse + specular · raster", then "denoised" when the Global
+// modes show the path tracer's denoised preview (`denoised`), then the display when it is not Standard
+// ("· filmic, +1 stops"), except in Difference, which shows the raw values.
+std::string imageCaption(const ViewerState& state, bool denoised = false);
 // Split: the labels left and right of the wipe.
 inline const char* splitLeftCaption() { return "raster"; }
 inline const char* splitRightCaption() { return "reference (Whitted ray tracer)"; }

@@ -4,6 +4,8 @@
 #include "app/background_textures.h"
 #include "app/idle_priority.h"
 #include "image/encode.h"
+#include "trace/first_hit_passes.h"
+#include "trace/path/path_denoise.h"
 #include "trace/path/path_render.h"
 #include "trace/trace_scene.h"
 
@@ -31,7 +33,10 @@ GlobalRenderer::~GlobalRenderer() {
 void GlobalRenderer::controllerLoop() {
     lowerToIdlePriority();  // inherited by the pass workers
     std::unique_ptr<trace::PathRender> render;
+    std::shared_ptr<const trace::TraceScene> scene;
+    std::optional<SurfacePasses> guides;  // the denoiser's, computed after the first pass of each request
     uint64_t running = 0;
+    double tracing = 0.0, denoising = 0.0;  // seconds since the last denoised preview, and what it took
     for (;;) {
         std::optional<Job> job;
         const bool more = render && render->samples() < kMaxSamples;
@@ -48,10 +53,11 @@ void GlobalRenderer::controllerLoop() {
         }
         if (job) {
             try {
-                auto scene = std::make_shared<const trace::TraceScene>(job->scene, meshes_.get(job->scene));
+                scene = std::make_shared<const trace::TraceScene>(job->scene, meshes_.get(job->scene));
                 trace::PathSettings settings = render::toPath(job->request, job->scene);
                 settings.tileSize = kTileSize;
                 render = std::make_unique<trace::PathRender>(scene, settings);
+                guides.reset();
                 running = job->id;
             } catch (const std::exception& e) {
                 jobs_.fail(e.what());
@@ -61,7 +67,8 @@ void GlobalRenderer::controllerLoop() {
         }
         if (!render) continue;
         const bool first = render->samples() == 0;
-        double published = now();
+        const double passStart = now();
+        double published = passStart;
         const bool finished = render->addSamples(1, &cancel_, [&](float f) {
             // The first pass shows its finished tiles as they come (the pass reads only pixels it is done with
             // and the workers write only others: a tile is published once all its pixels have their sample).
@@ -76,6 +83,16 @@ void GlobalRenderer::controllerLoop() {
         });
         if (!finished) continue;  // a new request (or quit) arrived mid-pass
         Pass pass = snapshot(running, *render);
+        tracing += now() - passStart;
+        if (first || render->samples() >= kMaxSamples || denoising <= kDenoiseShare * tracing) {
+            const double start = now();
+            if (!guides) guides = trace::firstHitPasses(*scene, render->width(), render->height(), threads_);
+            DenoiseSettings d;
+            d.threads = threads_;
+            pass.denoised = trace::denoisedImage(*render, *guides, d);
+            denoising = now() - start;
+            tracing = 0.0;
+        }
         std::lock_guard<std::mutex> lock(arrivedMutex_);
         arrived_ = std::move(pass);
     }
@@ -118,6 +135,7 @@ void GlobalRenderer::request(const Scene& scene, int width, int height, uint64_t
         width_ = width;
         height_ = height;
         color_ = makeImageTexture(width, height);
+        denoised_ = makeImageTexture(width, height);
         done_ = makeTileTexture();
     }
     // Until the first tiles of this request arrive, the display shows the raster image (tile test 0).
@@ -127,6 +145,7 @@ void GlobalRenderer::request(const Scene& scene, int width, int height, uint64_t
     revision_ = revision;
     part_ = part;
     samples_ = 0;
+    denoisedSamples_ = 0;
     noise8_ = 0.0;
     job_ = nextJob_++;
     started_ = now();
@@ -148,6 +167,7 @@ void GlobalRenderer::pause() {
     if (job_ == 0) return;
     job_ = 0;
     samples_ = 0;
+    denoisedSamples_ = 0;
     cancel_ = true;
     {
         std::lock_guard<std::mutex> lock(arrivedMutex_);
@@ -170,6 +190,11 @@ bool GlobalRenderer::update() {
     // GL row order, as the raster target.
     uploadRowsFlipped(color_, 0, 0, width_, height_, height_, image_.rgba.data(), flipped_);
     uploadTiles(pass->tiles);
+    if (pass->denoised.width == width_ && pass->denoised.height == height_) {
+        denoisedSamples_ = samples_;
+        denoisedImage_ = std::move(pass->denoised);
+        uploadRowsFlipped(denoised_, 0, 0, width_, height_, height_, denoisedImage_.rgba.data(), flipped_);
+    }
     return true;
 }
 

@@ -72,6 +72,7 @@ struct GlobalInfo {
     double seconds = 0.0;
     int threads = 0;
     std::string error;
+    int denoisedSamples = 0;  // of the newest denoised preview; 0: none yet
 };
 
 struct PanelContext {

@@ -65,6 +65,12 @@ void drawGlobalStatus(PanelContext& ctx) {
         if (ImGui::RadioButton(parts[i], &part, i)) setGlobalPart(s, trace::PathPart(i));
     }
     const GlobalInfo& g = ctx.global;
+    bool denoise = s.globalDenoise;
+    if (ImGui::Checkbox("denoised preview (D)", &denoise)) setGlobalDenoise(s, denoise);
+    if (s.globalDenoise && g.denoisedSamples > 0) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("at %d samples; the probe reads the raw estimate", g.denoisedSamples);
+    }
     if (!g.error.empty()) {
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "path tracer: %s", g.error.c_str());
         return;
@@ -72,6 +78,8 @@ void drawGlobalStatus(PanelContext& ctx) {
     char overlay[96];
     if (g.samples == 0)
         std::snprintf(overlay, sizeof overlay, "first sample %.0f%%", 100.0 * g.passProgress);
+    else if (g.samples == 1)  // one sample per pixel measures no noise yet
+        std::snprintf(overlay, sizeof overlay, "1 sample, noise -, %.0f s", g.seconds);
     else
         std::snprintf(overlay, sizeof overlay, "%d samples, noise %.1f/255, %.0f s", g.samples, g.noise8, g.seconds);
     const float fraction = g.samples == 0 ? g.passProgress : std::min(1.0f, float(g.samples) / 256.0f);

@@ -145,6 +145,14 @@ const ActionInfo kActions[] = {
          if (auto f = a.find("viewTransform")) d.transform = f->oneOf(kViewTransformNames, "view transform");
          return d;
      }},
+    {"setGlobal",
+     {"lightPaths", "denoise"},
+     [](const JsonNode& a) -> Action {
+         SetGlobal g;
+         if (auto f = a.find("lightPaths")) g.part = f->oneOf(trace::kPathPartNames, "light paths");
+         if (auto f = a.find("denoise")) g.denoise = f->boolean();
+         return g;
+     }},
     {"setSplit",
      {"position"},
      [](const JsonNode& a) -> Action { return SetSplit{a.child("position").inRange(0.0f, 1.0f, false, false)}; }},
@@ -270,6 +278,10 @@ struct StateApplier {
         if (x.exposure) d.exposure = *x.exposure;
         if (x.transform) d.transform = *x.transform;
         setDisplay(state, d);
+    }
+    void operator()(const SetGlobal& x) const {
+        if (x.part) setGlobalPart(state, *x.part);
+        if (x.denoise) setGlobalDenoise(state, *x.denoise);
     }
     void operator()(const SetSplit& x) const { setSplitPosition(state, x.position); }
     void operator()(const SetAmbient& x) const { setAmbient(state, x.Ia); }

@@ -11,6 +11,7 @@
 #include "util/input_files.h"
 
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -63,6 +64,11 @@ struct SetEncoding {
 struct SetDisplay {
     std::optional<double> exposure;  // stops, kMinExposure..kMaxExposure
     std::optional<ViewTransform> transform;
+};
+// The Global modes' choices (viewer_state.h setGlobalPart, setGlobalDenoise); a field left out keeps its value.
+struct SetGlobal {
+    std::optional<trace::PathPart> part;
+    std::optional<bool> denoise;
 };
 struct SetSplit {
     float position = 0.5f;
@@ -156,13 +162,13 @@ struct Redo {};
 using Action =
     std::variant<actions::SetShininess, actions::SetMaterial, actions::Preset, actions::Select, actions::SetTerm,
                  actions::ToggleTerm, actions::Progression, actions::SetModel, actions::SwitchModel, actions::SetMode,
-                 actions::SetEncoding, actions::SetDisplay, actions::SetSplit, actions::SetAmbient, actions::SetRaster,
-                 actions::AddLight, actions::RemoveLight, actions::SetLight, actions::Orbit, actions::Zoom,
-                 actions::FrameAll, actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::WhiteFurnace,
-                 actions::Screenshot, actions::ReferenceScreenshot, actions::WindowScreenshot, actions::ProbeReport,
-                 actions::SaveScene, actions::Open, actions::ReloadShaders, actions::WaitReference,
-                 actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot, actions::Render, actions::Undo,
-                 actions::Redo>;
+                 actions::SetEncoding, actions::SetDisplay, actions::SetGlobal, actions::SetSplit, actions::SetAmbient,
+                 actions::SetRaster, actions::AddLight, actions::RemoveLight, actions::SetLight, actions::Orbit,
+                 actions::Zoom, actions::FrameAll, actions::ResetCamera, actions::Probe, actions::ClearProbe,
+                 actions::WhiteFurnace, actions::Screenshot, actions::ReferenceScreenshot, actions::WindowScreenshot,
+                 actions::ProbeReport, actions::SaveScene, actions::Open, actions::ReloadShaders,
+                 actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot,
+                 actions::Render, actions::Undo, actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

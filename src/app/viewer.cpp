@@ -110,6 +110,7 @@ bool Viewer::frame() {
                      reference_->seconds(), reference_->threads(),  reference_->error()};
     ctx.global = {global_->active(), global_->samples(), GlobalRenderer::kMaxSamples, global_->passProgress(),
                   global_->noise8(), global_->seconds(), global_->threads(),          global_->error()};
+    ctx.global.denoisedSamples = global_->denoisedSamples();
     if (probe_ && isGlobal(state_.mode)) ctx.probeGlobal = global_->estimate(probe_->x, probe_->y);
     ctx.metrics = metrics_ && metricsRevision_ == state_.revision ? &*metrics_ : nullptr;
     if (ctx.metrics) ctx.metricsWords = metricsWords_;
@@ -279,6 +280,8 @@ bool Viewer::accumulate() {
     return true;
 }
 
+bool Viewer::showsDenoised() const { return state_.globalDenoise && global_->denoisedSamples() > 0; }
+
 void Viewer::updateReference() {
     if (isGlobal(state_.mode)) {
         reference_->pause();
@@ -359,7 +362,7 @@ void Viewer::compose() {
     in.imageHeight = raster_->target().height();
     if (isGlobal(state_.mode) && global_->active()) {
         // The path tracer's image in the traced slot: Global shows it whole, Local | Global as the wipe's right.
-        in.traced = global_->texture();
+        in.traced = showsDenoised() ? global_->denoisedTexture() : global_->texture();
         in.tiles = global_->tileTexture();
         in.tileSize = global_->tileSize();
     } else if (reference_->active()) {
@@ -474,7 +477,7 @@ void Viewer::drawCaptions() {
         dl->AddText(font, textSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr, wrap);
         return extent.y + 2.0f * pad;
     };
-    const std::string caption = imageCaption(state_);
+    const std::string caption = imageCaption(state_, isGlobal(state_.mode) && showsDenoised());
     // Below the row where lights outside the frame put their markers (light_markers.h).
     const float top =
         imageY_ + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * imageH_ / float(renderH_) : 0.0f);

@@ -67,6 +67,8 @@ private:
     bool cameraMoved();  // whether the scene's camera changed since the last call (once per frame)
     bool accumulate();   // two more jittered samples while still; true when it drew
     void updateReference();
+    // Whether the Global modes show the path tracer's denoised preview now (asked for, and one has arrived).
+    bool showsDenoised() const;
     void updateProbe();
     void compose();
     void drawCaptions();

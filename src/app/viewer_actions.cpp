@@ -98,14 +98,18 @@ void Viewer::performAction(const ScriptAction& a) {
                 writePng(x.path, captureRaster());
             } else if constexpr (std::is_same_v<T, ReferenceScreenshot>) {
                 if (isGlobal(state_.mode)) {
-                    // The path tracer's image as it stands: the PNG `shadelab render --renderer path --spp N`
-                    // writes, N the samples so far (printed, so a script or a test can render the same).
+                    // The path tracer's image as shown: the PNG `shadelab render --renderer path --spp N`
+                    // writes (with --denoise when the denoised preview is shown), N the samples so far
+                    // (printed, so a script or a test can render the same).
                     if (global_->samples() == 0 || global_->revision() != state_.referenceRevision)
                         throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
                                          "the path tracer has no whole sample yet (use waitReference first)");
-                    writePng(x.path, toPixels(global_->image(), "path-traced image"));
-                    std::fprintf(stderr, "shadelab: %s: path traced, %d samples per pixel\n", x.path.c_str(),
-                                 global_->samples());
+                    const bool denoised = showsDenoised();
+                    writePng(x.path,
+                             toPixels(denoised ? global_->denoisedImage() : global_->image(), "path-traced image"));
+                    std::fprintf(stderr, "shadelab: %s: path traced, %d samples per pixel%s\n", x.path.c_str(),
+                                 denoised ? global_->denoisedSamples() : global_->samples(),
+                                 denoised ? ", denoised" : "");
                     return;
                 }
                 if (!reference_->complete() || reference_->revision() != state_.referenceRevision)

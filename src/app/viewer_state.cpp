@@ -288,6 +288,8 @@ void setMode(ViewerState& state, ViewMode mode) { state.mode = mode; }
 
 void setGlobalPart(ViewerState& state, trace::PathPart part) { state.globalPart = part; }
 
+void setGlobalDenoise(ViewerState& state, bool on) { state.globalDenoise = on; }
+
 void setEncoding(ViewerState& state, Encoding encoding) { state.encoding = encoding; }
 
 void setDisplay(ViewerState& state, const DisplaySettings& display) {

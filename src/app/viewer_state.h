@@ -36,6 +36,7 @@ struct ViewerState {
     OrbitCamera orbit;                      // scene.camera as orbit parameters; written back on every move
     ViewMode mode = ViewMode::Raster;
     trace::PathPart globalPart = trace::PathPart::All;  // what Global mode shows: all, direct or indirect light
+    bool globalDenoise = true;  // the Global modes show the denoised preview (key D: the raw estimate)
     Encoding encoding = Encoding::Srgb;
     uint32_t selected = 0;  // coverage id of the selected object (scene/coverage.h), 0 = none
     ProbeState probe;
@@ -124,6 +125,9 @@ void setStageOn(ViewerState& state, bool on);  // e.g. one of a model's glTF cam
 // --- view ---
 void setMode(ViewerState& state, ViewMode mode);
 void setGlobalPart(ViewerState& state, trace::PathPart part);
+// Whether the Global modes show the path tracer's denoised preview or its raw estimate. A view choice: the path
+// tracer keeps running, and the probe and the statistics always read the raw estimate.
+void setGlobalDenoise(ViewerState& state, bool on);
 void setEncoding(ViewerState& state, Encoding encoding);
 // The scene's display (exposure and view transform, image/view_transform.h): the window, screenshots and
 // renders show it, and a save keeps it. The exposure is brought into [kMinExposure, kMaxExposure] (NaN: 0).
