@@ -172,6 +172,22 @@ TEST(CliOutputs, RenderOntoItsSceneIsRefused) {
     EXPECT_EQ(run("render " + scene + " -o " + dir + "/other.png --size 32x18").code, 0);
 }
 
+// The README's first render, `-o out/phong.png` in a fresh clone, creates the folder; a folder under a file
+// is refused in one line, nothing written (the negative control).
+TEST(CliOutputs, RenderCreatesAMissingOutputFolder) {
+    const std::string dir = freshDir("missing_folder");
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    Result r = run("render " + scene + " -o " + dir + "/out/sub/phong.png --size 32x18");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(fs::is_regular_file(dir + "/out/sub/phong.png"));
+    std::ofstream(dir + "/file") << "keep";
+    r = run("render " + scene + " -o " + dir + "/file/phong.png --size 32x18");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_EQ(lineCount(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(dir + "/file/phong.png"), std::string::npos) << r.out;
+    EXPECT_EQ(readAll(dir + "/file"), "keep");
+}
+
 TEST(CliOutputs, RenderOntoItsModelIsRefused) {
     const std::string dir = freshDir("out_is_model");
     fs::create_directories(dir + "/models");

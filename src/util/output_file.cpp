@@ -10,6 +10,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 namespace shadelab {
 
@@ -32,6 +34,12 @@ void refuseInputAsOutput(const std::string& path, const std::string& flag, const
 void checkOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs) {
     if (isStdout(path)) return;
     refuseInputAsOutput(path, flag, inputs);
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::exists(folder, ec)) {
+        std::filesystem::create_directories(folder, ec);
+        if (ec) throw InputError(path, "cannot create its folder " + folder.string() + ": " + ec.message());
+    }
     checkWritableTarget(path);
 }
 

@@ -17,8 +17,10 @@ bool isStdout(const std::string& path);
 // that do not exist are skipped; their own read reports them.
 void refuseInputAsOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs);
 
-// refuseInputAsOutput, then checkWritableTarget (an existing non-regular file, a missing or read-only
-// folder), so a command fails before it renders. Nothing to check for stdout.
+// refuseInputAsOutput; then the output's folder is created with its parents when missing (so that
+// `render -o out/x.png` works in a fresh clone); then checkWritableTarget (an existing non-regular file, a
+// read-only folder), so a command fails before it renders. A path through an existing file is refused
+// ("cannot write: Not a directory"). Nothing to check for stdout.
 void checkOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs);
 
 // The name of an output derived from another (`<stem>_heat.png`, `<stem>_report.json`): stem + suffix, after

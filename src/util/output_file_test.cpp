@@ -71,6 +71,30 @@ TEST_F(OutputFileTest, NewOrDifferentFilesAreAccepted) {
     EXPECT_NO_THROW(checkOutput("-", "-o", {path("scene.json")}));
 }
 
+// A missing folder (and its parents) is created by the up-front check, so `-o out/x.png` works in a fresh
+// clone; a path through an existing file is still refused in one line, and the check alone of
+// checkWritableTarget (negative control) still refuses the missing folder.
+TEST_F(OutputFileTest, MissingFoldersAreCreatedButNotThroughAFile) {
+    const std::string nested = path("out/sub/x.png");
+    EXPECT_THROW(checkWritableTarget(nested), InputError);
+    checkOutput(nested, "-o", {});
+    EXPECT_TRUE(fs::is_directory(dir_ / "out" / "sub"));
+    EXPECT_FALSE(fs::exists(nested)) << "the check writes no file";
+    writeOutput(nested, "png", 3);
+    EXPECT_EQ(readFile(nested), "png");
+    writeOutput(path("file"), "keep", 4);
+    for (const char* under : {"file/x.png", "file/sub/x.png"}) {
+        try {
+            checkOutput(path(under), "-o", {});
+            ADD_FAILURE() << under << ": a folder under a file was accepted";
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.file(), path(under));
+            EXPECT_NE(std::string(e.what()).find("Not a directory"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_EQ(readFile(path("file")), "keep");
+}
+
 TEST_F(OutputFileTest, DashWritesToStdout) {
     // Send fd 1 to a file for the duration of the call; flush gtest's own output first so it stays out.
     std::fflush(stdout);
