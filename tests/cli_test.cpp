@@ -255,6 +255,28 @@ TEST(Cli, HelpListsEveryCommand) {
     }
 }
 
+// docs/cli.md documents every flag each command's --help lists, so the reference never falls behind the binary
+// (the viewer's only where this build has it).
+TEST(Cli, DocsCoverEveryFlagOfEveryCommand) {
+    const std::string docs = readAll(test::sourcePath("docs/cli.md"));
+    const std::regex flag(R"(--[a-z][a-z0-9-]*)");
+    for (const char* command : {"render", "compare", "view"}) {
+        Result r = run(std::string(command) + " --help");
+        if (r.code != 0 && std::string(command) == "view") continue;
+        ASSERT_EQ(r.code, 0) << command << ": " << r.out;
+        std::set<std::string> flags;
+        for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), flag); it != std::sregex_iterator(); ++it)
+            flags.insert(it->str());
+        EXPECT_GE(flags.size(), 3u) << command << " --help lists almost no flags (the check would be blind):\n"
+                                    << r.out;
+        for (const std::string& f : flags)
+            EXPECT_NE(docs.find("`" + f), std::string::npos) << command << " " << f << " is not in docs/cli.md";
+    }
+    // Negative control: the same check on the docs with one flag's entries spelt otherwise finds it missing.
+    const std::string edited = std::regex_replace(docs, std::regex("`--exposure"), "`--exp0sure");
+    EXPECT_EQ(edited.find("`--exposure"), std::string::npos);
+}
+
 // Hiding glvnd's EGL vendor files makes every EGL platform fail, as on a machine without Mesa's EGL.
 const std::string kNoEgl = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json ";
 
