@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -129,6 +130,56 @@ TEST(AppSave, NeverOverAModelOrAnotherKindOfFile) {
     const std::string dir = test::outputPath("save_policy_dir.json");
     std::filesystem::create_directories(dir);
     EXPECT_EQ(saveRefusal(dir), "is a folder");
+}
+
+// Each wipe keeps its own position, and one never moved sits in the middle of the visible image (so a wipe
+// never starts under the projector's panel).
+TEST(AppWipes, EachModeHasItsOwnWipeStartingAtTheVisibleCentre) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    setMode(s, ViewMode::Split);
+    EXPECT_FLOAT_EQ(wipePosition(s, 0.7f), 0.7f);
+    setSplitPosition(s, 0.25f);
+    EXPECT_FLOAT_EQ(wipePosition(s, 0.7f), 0.25f);
+    setMode(s, ViewMode::LocalGlobal);
+    EXPECT_FLOAT_EQ(wipePosition(s, 0.7f), 0.7f) << "Local | Global does not inherit Split's wipe";
+    setSplitPosition(s, 2.0f);
+    EXPECT_FLOAT_EQ(wipePosition(s, 0.7f), 1.0f);
+    setMode(s, ViewMode::Split);
+    EXPECT_FLOAT_EQ(wipePosition(s, 0.7f), 0.25f);
+    EXPECT_TRUE(hasWipe(ViewMode::Split) && hasWipe(ViewMode::LocalGlobal));
+    EXPECT_FALSE(hasWipe(ViewMode::Global) || hasWipe(ViewMode::Difference));
+}
+
+// Wherever the wipe is, its two labels never overlap and never leave the visible image; a label with no room
+// on its side is not drawn. Negative control: the old rule (each label clamped into the visible image) printed
+// "raster" over "reference" with the wipe near the panel's edge.
+TEST(AppWipes, LabelsNeverCollideWhereverTheWipeIs) {
+    EXPECT_STREQ(wipeCaptions(ViewMode::LocalGlobal).left, "local (raster)");
+    EXPECT_STREQ(wipeCaptions(ViewMode::LocalGlobal).right, "global (path traced)");
+    EXPECT_STREQ(wipeCaptions(ViewMode::Split).right, "reference (Whitted ray tracer)");
+    const float visibleLeft = 600.0f, right = 1900.0f, gap = 12.0f, wl = 140.0f, wr = 520.0f;
+    int both = 0, oldCollisions = 0;
+    for (float wipe = 0.0f; wipe <= 1920.0f; wipe += 5.0f) {
+        const WipeLabelPlacement p = placeWipeLabels(visibleLeft, right, wipe, gap, wl, wr);
+        if (p.leftShown) {
+            EXPECT_GE(p.leftX, visibleLeft) << wipe;
+            EXPECT_LE(p.leftX + wl, wipe) << wipe;
+        }
+        if (p.rightShown) {
+            EXPECT_GE(p.rightX, wipe) << wipe;
+            EXPECT_LE(p.rightX + wr, right) << wipe;
+        }
+        if (p.leftShown && p.rightShown) {
+            ++both;
+            EXPECT_LE(p.leftX + wl, p.rightX) << wipe;
+        }
+        // The old rule: each label clamped into [visibleLeft, right - width] on its own.
+        const float oldLeft = std::clamp(wipe - gap - wl, visibleLeft, right - wl);
+        const float oldRight = std::clamp(wipe + gap, visibleLeft, right - wr);
+        if (oldLeft + wl > oldRight && oldRight + wr > oldLeft) ++oldCollisions;
+    }
+    EXPECT_GT(both, 0) << "in the middle both labels show";
+    EXPECT_GT(oldCollisions, 0) << "negative control: the old clamping collides";
 }
 
 TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {

@@ -23,6 +23,22 @@ std::string modelCaption(const Scene& scene) {
     return toString(scene.model);
 }
 
+WipeCaptions wipeCaptions(ViewMode mode) {
+    if (mode == ViewMode::Split) return {"raster", "reference (Whitted ray tracer)"};
+    if (mode == ViewMode::LocalGlobal) return {"local (raster)", "global (path traced)"};
+    return {};
+}
+
+WipeLabelPlacement placeWipeLabels(float visibleLeft, float visibleRight, float wipe, float gap, float leftWidth,
+                                   float rightWidth) {
+    WipeLabelPlacement p;
+    p.leftX = wipe - gap - leftWidth;
+    p.rightX = wipe + gap;
+    p.leftShown = p.leftX >= visibleLeft && wipe - gap <= visibleRight;
+    p.rightShown = p.rightX >= visibleLeft && p.rightX + rightWidth <= visibleRight;
+    return p;
+}
+
 std::string termsCaption(const Terms& terms) {
     std::string text;
     for (const auto& entry : kTermNames) {

@@ -17,8 +17,23 @@ std::string termsCaption(const Terms& terms);
 // modes show the path tracer's denoised preview (`denoised`), then the display when it is not Standard
 // ("· filmic, +1 stops"), except in Difference, which shows the raw values.
 std::string imageCaption(const ViewerState& state, bool denoised = false);
-// Split: the labels left and right of the wipe.
-inline const char* splitLeftCaption() { return "raster"; }
-inline const char* splitRightCaption() { return "reference (Whitted ray tracer)"; }
+// The labels left and right of the wipe of Split ("raster" | "reference (Whitted ray tracer)") and of
+// Local | Global ("local (raster)" | "global (path traced)"); empty in the other modes.
+struct WipeCaptions {
+    const char* left = "";
+    const char* right = "";
+};
+WipeCaptions wipeCaptions(ViewMode mode);
+
+// Where the two wipe labels go, in window pixels: each kept to its own side of the wipe within the visible
+// image, so that they never meet and never leave it. The left one ends `gap` before the wipe, the right one
+// starts `gap` after it; a label its side has no room for is not drawn (the wipe dragged to an edge, or under
+// the panel).
+struct WipeLabelPlacement {
+    bool leftShown = false, rightShown = false;
+    float leftX = 0.0f, rightX = 0.0f;  // each label's left edge
+};
+WipeLabelPlacement placeWipeLabels(float visibleLeft, float visibleRight, float wipe, float gap, float leftWidth,
+                                   float rightWidth);
 
 }  // namespace shadelab::app

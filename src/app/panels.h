@@ -91,6 +91,7 @@ struct PanelContext {
     bool statusError = false;                   // the message is an error (drawn in red)
     double frameMs = 0.0;                       // median of the last frames
     int renderWidth = 0, renderHeight = 0;      // the rendered image, pixels
+    float wipe = 0.5f;                          // the current mode's wipe, as drawn (Viewer::wipeFraction)
     float uiScale = 1.0f;                 // --ui-scale; 2 for --projector; else the monitor's content scale, 1 to 3
     size_t undoSteps = 0, redoSteps = 0;  // how many steps Undo and Redo can take
 };

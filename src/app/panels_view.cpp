@@ -53,9 +53,9 @@ void metricsTable(const CompareResult& r) {
 void drawGlobalStatus(PanelContext& ctx) {
     ViewerState& s = ctx.state;
     if (s.mode == ViewMode::LocalGlobal) {
-        float split = s.splitPosition;
+        float split = ctx.wipe;
         if (ImGui::SliderFloat("wipe", &split, 0.0f, 1.0f, "%.2f")) setSplitPosition(s, split);
-        ImGui::TextDisabled("left local (raster), right global (path traced)");
+        ImGui::TextDisabled("left local (raster), right global (path traced); drag the line");
     }
     int part = int(s.globalPart);
     ImGui::TextDisabled("light");
@@ -147,7 +147,7 @@ void drawViewSection(PanelContext& ctx) {
     if (!display.isStandard() && ImGui::SmallButton("standard display (0 stops, clamp)"))
         setDisplay(s, DisplaySettings{});
     if (s.mode == ViewMode::Split) {
-        float split = s.splitPosition;
+        float split = ctx.wipe;
         if (ImGui::SliderFloat("wipe", &split, 0.0f, 1.0f, "%.2f")) setSplitPosition(s, split);
         ImGui::TextDisabled("left raster, right reference; drag the line");
     }

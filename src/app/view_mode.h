@@ -16,6 +16,8 @@ inline constexpr EnumName<ViewMode> kViewModeNames[] = {
 };
 
 inline bool isGlobal(ViewMode m) { return m == ViewMode::Global || m == ViewMode::LocalGlobal; }
+// The two modes with a wipe between two images, each with a position of its own (viewer_state.h).
+inline bool hasWipe(ViewMode m) { return m == ViewMode::Split || m == ViewMode::LocalGlobal; }
 
 inline const char* toString(ViewMode m) { return nameOf(kViewModeNames, m); }
 inline std::optional<ViewMode> parseViewMode(std::string_view name) { return lookupName(kViewModeNames, name); }

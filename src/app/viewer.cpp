@@ -123,6 +123,7 @@ bool Viewer::frame() {
     ctx.renderWidth = renderW_;
     ctx.renderHeight = renderH_;
     ctx.uiScale = uiScale_;
+    ctx.wipe = wipeFraction();
     ctx.undoSteps = history_.undoSteps();
     ctx.redoSteps = history_.redoSteps();
     if (showPanel_) drawSidePanel(ctx, panelWidth_, float(winH_), panelOverlays_);
@@ -375,7 +376,7 @@ void Viewer::compose() {
                                                      : state_.mode;
     in.encoding = state_.encoding;
     in.display = state_.scene.display;
-    in.split = state_.splitPosition;
+    in.split = wipeFraction();
     in.gain = float(state_.heatGain);
     in.coverage = raster_->target().coverageTexture();
     in.selected = state_.selected;
@@ -454,40 +455,60 @@ glm::vec2 Viewer::imagePixelF(float windowX, float windowY) const {
 float Viewer::visibleLeft() const { return panelOverlays_ ? std::max(imageX_, panelWidth_) : imageX_; }
 
 // Captions over the image, under every ImGui window (the background draw list): the model, the terms and
-// the mode at the top left, and in Split the two renderers' names either side of the wipe.
+// the mode at the top left, and in Split and Local | Global the two sides' names either side of the wipe.
+// One type size for all of them, whatever they say: a long caption wraps, it never shrinks, so it reads the
+// same from the back of the room.
 void Viewer::drawCaptions() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImFont* font = captionFont_ ? captionFont_ : ImGui::GetFont();
     const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
     const float pad = 4.0f * uiScale_, margin = 10.0f * uiScale_;
-    const float room = imageX_ + imageW_ - visibleLeft() - 2.0f * margin;
-    auto label = [&](ImVec2 at, const char* text, bool alignRight) {
-        // Shrunk to fit what the panel leaves of the image, down to the panel's own font size.
-        float textSize = size;
-        ImVec2 extent = font->CalcTextSizeA(textSize, 1e9f, 0.0f, text);
-        const float wrap = std::max(room - 2.0f * pad, 1.0f);  // and wrapped when it still does not fit
-        if (extent.x > wrap) {
-            textSize = std::max(size / 1.5f, size * wrap / extent.x);
-            extent = font->CalcTextSizeA(textSize, 1e9f, wrap, text);
-        }
-        if (alignRight) at.x -= extent.x + 2.0f * pad;
-        at.x = std::clamp(at.x, visibleLeft(), std::max(visibleLeft(), imageX_ + imageW_ - extent.x - 2.0f * pad));
+    const float left = visibleLeft(), right = imageX_ + imageW_;
+    auto extentOf = [&](const char* text, float wrap) { return font->CalcTextSizeA(size, 1e9f, wrap, text); };
+    auto box = [&](ImVec2 at, ImVec2 extent, const char* text, float wrap) {
         dl->AddRectFilled(at, ImVec2(at.x + extent.x + 2.0f * pad, at.y + extent.y + 2.0f * pad),
                           IM_COL32(0, 0, 0, 150), 3.0f * uiScale_);
-        dl->AddText(font, textSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr, wrap);
+        dl->AddText(font, size, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr, wrap);
         return extent.y + 2.0f * pad;
     };
     const std::string caption = imageCaption(state_, isGlobal(state_.mode) && showsDenoised());
     // Below the row where lights outside the frame put their markers (light_markers.h).
     const float top =
         imageY_ + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * imageH_ / float(renderH_) : 0.0f);
-    const float height = label(ImVec2(visibleLeft() + margin, top), caption.c_str(), false);
-    if (state_.mode == ViewMode::Split) {
-        const float wipe = imageX_ + state_.splitPosition * imageW_;
-        const float y = top + height + 6.0f * uiScale_;
-        label(ImVec2(wipe - 6.0f * uiScale_, y), splitLeftCaption(), true);
-        label(ImVec2(wipe + 6.0f * uiScale_, y), splitRightCaption(), false);
-    }
+    const float wrap = std::max(right - left - 2.0f * (margin + pad), 1.0f);
+    const float height = box(ImVec2(left + margin, top), extentOf(caption.c_str(), wrap), caption.c_str(), wrap);
+    const WipeCaptions sides = wipeCaptions(state_.mode);
+    if (!hasWipe(state_.mode)) return;
+    // Each label wraps to the room on its side of the wipe; one whose longest word does not fit is left out.
+    const float wipe = imageX_ + wipeFraction() * imageW_, gap = 6.0f * uiScale_;
+    const float leftWrap = std::max(wipe - gap - left - 2.0f * pad, 1.0f);
+    const float rightWrap = std::max(right - wipe - gap - 2.0f * pad, 1.0f);
+    const ImVec2 leftExtent = extentOf(sides.left, leftWrap), rightExtent = extentOf(sides.right, rightWrap);
+    // ImGui breaks a word wider than the wrap: such a label counts as wider than its side, so it is left out.
+    auto widthOn = [&](const char* text, float room, float extent) {
+        std::string word;
+        float widest = 0.0f;
+        for (const char* c = text;; ++c) {
+            if (*c != ' ' && *c != '\0') {
+                word += *c;
+                continue;
+            }
+            widest = std::max(widest, extentOf(word.c_str(), 0.0f).x);
+            word.clear();
+            if (*c == '\0') break;
+        }
+        return (widest > room ? 1e9f : extent) + 2.0f * pad;
+    };
+    const WipeLabelPlacement at = placeWipeLabels(left, right, wipe, gap, widthOn(sides.left, leftWrap, leftExtent.x),
+                                                  widthOn(sides.right, rightWrap, rightExtent.x));
+    const float y = top + height + gap;
+    if (at.leftShown) box(ImVec2(at.leftX, y), leftExtent, sides.left, leftWrap);
+    if (at.rightShown) box(ImVec2(at.rightX, y), rightExtent, sides.right, rightWrap);
+}
+
+float Viewer::wipeFraction() const {
+    const float centre = 0.5f * (visibleLeft() + imageX_ + imageW_);
+    return wipePosition(state_, imageW_ > 0.0f ? (centre - imageX_) / imageW_ : 0.5f);
 }
 
 }  // namespace shadelab::app

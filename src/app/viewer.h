@@ -77,6 +77,8 @@ private:
     glm::vec2 imagePixelF(float windowX, float windowY) const;
     float markerPickRadius() const;
     float visibleLeft() const;
+    // The current mode's wipe as a fraction of the image width: as set, else the middle of the visible image.
+    float wipeFraction() const;
     bool finished() const;
     // viewer_input.cpp
     void handleMouse();

@@ -84,8 +84,8 @@ void Viewer::handleMouse() {
             dragged_ = false;
             pressX_ = m.x;
             pressY_ = m.y;
-            const float wipe = imageX_ + state_.splitPosition * imageW_;
-            splitting_ = state_.mode == ViewMode::Split && std::fabs(m.x - wipe) < 8.0f * uiScale_;
+            const float wipe = imageX_ + wipeFraction() * imageW_;
+            splitting_ = hasWipe(state_.mode) && std::fabs(m.x - wipe) < 8.0f * uiScale_;
         }
         if (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)) panning_ = true;
         if (io.MouseWheel != 0.0f) {

@@ -300,7 +300,16 @@ void setDisplay(ViewerState& state, const DisplaySettings& display) {
     ++state.editRevision;
 }
 
-void setSplitPosition(ViewerState& state, float position) { state.splitPosition = std::clamp(position, 0.0f, 1.0f); }
+void setSplitPosition(ViewerState& state, float position) {
+    (state.mode == ViewMode::LocalGlobal ? state.globalSplitPosition : state.splitPosition) =
+        std::clamp(std::isnan(position) ? 0.5f : position, 0.0f, 1.0f);
+}
+
+float wipePosition(const ViewerState& state, float visibleCentre) {
+    const std::optional<float>& set =
+        state.mode == ViewMode::LocalGlobal ? state.globalSplitPosition : state.splitPosition;
+    return set.value_or(std::clamp(visibleCentre, 0.0f, 1.0f));
+}
 
 void setHeatGain(ViewerState& state, int gain) { state.heatGain = std::clamp(gain, 1, 255); }
 

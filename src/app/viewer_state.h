@@ -40,7 +40,9 @@ struct ViewerState {
     Encoding encoding = Encoding::Srgb;
     uint32_t selected = 0;  // coverage id of the selected object (scene/coverage.h), 0 = none
     ProbeState probe;
-    float splitPosition = 0.5f;          // Split mode wipe, fraction of the image width from the left
+    // The wipes of Split and of Local | Global, fractions of the image width from the left; unset until first
+    // moved, when a wipe sits in the middle of what the panel leaves visible (wipePosition).
+    std::optional<float> splitPosition, globalSplitPosition;
     int heatGain = 16;                   // Difference mode amplification (compare_report.h)
     uint64_t revision = 1;               // bumped by every change a renderer can see
     uint64_t referenceRevision = 1;      // bumped by every change the tracer can see (not scene.raster)
@@ -133,8 +135,11 @@ void setEncoding(ViewerState& state, Encoding encoding);
 // renders show it, and a save keeps it. The exposure is brought into [kMinExposure, kMaxExposure] (NaN: 0).
 // An edit undo steps over; no renderer redraws for it.
 void setDisplay(ViewerState& state, const DisplaySettings& display);
-void setSplitPosition(ViewerState& state, float position);  // clamped to [0, 1]
-void setHeatGain(ViewerState& state, int gain);             // clamped to [1, 255]
+// The wipe of the current mode (Local | Global's in that mode, else Split's), clamped to [0, 1].
+void setSplitPosition(ViewerState& state, float position);
+// The current mode's wipe: as set, else `visibleCentre` (the middle of the visible image, same units).
+float wipePosition(const ViewerState& state, float visibleCentre);
+void setHeatGain(ViewerState& state, int gain);  // clamped to [1, 255]
 void setProbe(ViewerState& state, int x, int y);
 void clearProbe(ViewerState& state);
 
