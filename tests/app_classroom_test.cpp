@@ -197,27 +197,31 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     setMode(s, ViewMode::Global);
     EXPECT_EQ(imageCaption(s),
               "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
-              "global illumination (path traced)");
-    // The denoised preview says so, in the Global modes only (the raster modes have nothing to denoise).
-    EXPECT_EQ(imageCaption(s, true),
+              "global illumination (path traced)  \xc2\xb7  first sample");
+    // The samples and the noise (none measured from one sample), and the denoised preview says so, in the
+    // Global modes only (the raster modes have nothing to denoise).
+    EXPECT_NE(imageCaption(s, GlobalCaption{1, 0.0, false}).find("\xc2\xb7  1 sample, noise -"), std::string::npos);
+    EXPECT_EQ(imageCaption(s, GlobalCaption{16, 2.14, true}),
               "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
-              "global illumination (path traced)  \xc2\xb7  denoised");
+              "global illumination (path traced)  \xc2\xb7  16 samples, noise 2.1/255  \xc2\xb7  denoised");
     setGlobalPart(s, trace::PathPart::Indirect);
     EXPECT_NE(imageCaption(s).find("indirect light only"), std::string::npos);
     setMode(s, ViewMode::LocalGlobal);
     EXPECT_EQ(imageCaption(s),
               "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular + shadows + reflections  "
-              "\xc2\xb7  local (raster) | global (path traced)");
+              "\xc2\xb7  local (raster) | global (path traced)  \xc2\xb7  first sample");
     for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
         setTerm(s, t, false);
     EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
-    EXPECT_NE(imageCaption(s, true).find("local (raster) | global (path traced)  \xc2\xb7  denoised"),
-              std::string::npos);
+    EXPECT_NE(
+        imageCaption(s, GlobalCaption{4, 3.0, true})
+            .find("local (raster) | global (path traced)  \xc2\xb7  4 samples, noise 3.0/255  \xc2\xb7  denoised"),
+        std::string::npos);
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
     // A display that is not Standard is named at the end (not in Difference, which shows the raw values).
     setMode(s, ViewMode::Raster);
-    EXPECT_EQ(imageCaption(s, true), imageCaption(s)) << "no denoised raster";
+    EXPECT_EQ(imageCaption(s, GlobalCaption{4, 3.0, true}), imageCaption(s)) << "no samples or denoising in Raster";
     const std::string plain = imageCaption(s);
     EXPECT_EQ(plain.find("filmic"), std::string::npos);
     setDisplay(s, DisplaySettings{1.5, ViewTransform::Filmic});

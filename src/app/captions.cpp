@@ -1,5 +1,7 @@
 #include "app/captions.h"
 
+#include <cstdio>
+
 namespace shadelab::app {
 namespace {
 
@@ -49,7 +51,7 @@ std::string termsCaption(const Terms& terms) {
     return text.empty() ? "nothing" : text;
 }
 
-std::string imageCaption(const ViewerState& state, bool denoised) {
+std::string imageCaption(const ViewerState& state, const GlobalCaption& global) {
     const char* mode = "";
     switch (state.mode) {
         case ViewMode::Raster: mode = "raster"; break;
@@ -63,8 +65,18 @@ std::string imageCaption(const ViewerState& state, bool denoised) {
     Terms terms = state.scene.terms;
     if (state.mode == ViewMode::Global) terms.ambient = false;
     std::string caption = modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(terms) + "  \xc2\xb7  " + mode;
-    // The preview is not the estimate: a class must know when the noise it does not see was filtered away.
-    if (denoised && isGlobal(state.mode)) caption += "  \xc2\xb7  denoised";
+    if (isGlobal(state.mode)) {
+        char progress[64];
+        if (global.samples == 0)
+            std::snprintf(progress, sizeof progress, "first sample");
+        else if (global.samples == 1)  // one sample per pixel measures no noise
+            std::snprintf(progress, sizeof progress, "1 sample, noise -");
+        else
+            std::snprintf(progress, sizeof progress, "%d samples, noise %.1f/255", global.samples, global.noise8);
+        caption += std::string("  \xc2\xb7  ") + progress;
+        // The preview is not the estimate: a class must know when the noise it does not see was filtered away.
+        if (global.denoised) caption += "  \xc2\xb7  denoised";
+    }
     // A display that is not Standard says so: the picture is no longer the clamped values (the difference view
     // never uses it).
     if (!state.scene.display.isStandard() && state.mode != ViewMode::Difference)

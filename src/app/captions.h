@@ -13,10 +13,17 @@ namespace shadelab::app {
 std::string modelCaption(const Scene& scene);
 // "ambient + diffuse + specular"; "nothing" when every term is off. Transmission rides with reflections.
 std::string termsCaption(const Terms& terms);
-// The top-left caption: "Blinn-Phong · ambient + diffuse + specular · raster", then "denoised" when the Global
-// modes show the path tracer's denoised preview (`denoised`), then the display when it is not Standard
-// ("· filmic, +1 stops"), except in Difference, which shows the raw values.
-std::string imageCaption(const ViewerState& state, bool denoised = false);
+// What the Global modes' caption says of the path tracer: how far it has got and what is shown.
+struct GlobalCaption {
+    int samples = 0;        // per pixel so far (0: the first pass is under way)
+    double noise8 = 0.0;    // the raw estimate's mean standard error, 8-bit sRGB units
+    bool denoised = false;  // the image shown is the denoised preview
+};
+// The top-left caption: "Blinn-Phong · ambient + diffuse + specular · raster"; in the Global modes then the
+// samples and the noise ("· 16 samples, noise 2.1/255", "noise -" until two samples measure it) and
+// "denoised" for the preview; then the display when it is not Standard ("· filmic, +1 stops"), except in
+// Difference, which shows the raw values.
+std::string imageCaption(const ViewerState& state, const GlobalCaption& global = {});
 // The labels left and right of the wipe of Split ("raster" | "reference (Whitted ray tracer)") and of
 // Local | Global ("local (raster)" | "global (path traced)"); empty in the other modes.
 struct WipeCaptions {

@@ -471,7 +471,8 @@ void Viewer::drawCaptions() {
         dl->AddText(font, size, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr, wrap);
         return extent.y + 2.0f * pad;
     };
-    const std::string caption = imageCaption(state_, isGlobal(state_.mode) && showsDenoised());
+    const std::string caption =
+        imageCaption(state_, GlobalCaption{global_->samples(), global_->noise8(), showsDenoised()});
     // Below the row where lights outside the frame put their markers (light_markers.h).
     const float top =
         imageY_ + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * imageH_ / float(renderH_) : 0.0f);
