@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -288,4 +289,41 @@ TEST(AppWindow, StatusMessagesNeverMoveTheControls) {
     EXPECT_EQ(panelRowsDiffer(a, b), 0) << "the controls moved when the message came";
     // Negative control: a real change in the panel (an object selected) is seen by the same comparison.
     EXPECT_GT(panelRowsDiffer(a, c), 0);
+}
+
+// At UI scale 2 the panel's status line can be out of view, so a status message also shows as a toast at the
+// bottom of the visible image. Two runs make the same image: one undoes a shininess change (status "undone"),
+// the other sets the shininess back by hand (no message, the negative control); their windows differ at the
+// bottom only where the toast is, right of the panel.
+TEST(AppWindow, StatusMessagesShowAsAToastOnTheImage) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const Scene scene = loadScene(scenePath);
+    const std::string s0 = std::to_string(scene.spheres.at(0).material.s);
+    auto window = [&](const std::string& name, const std::string& second) {
+        const std::string shot = test::outputPath(name + ".png");
+        const std::string script = writeText(name + ".json", R"([
+            {"frame": 1, "action": "setShininess", "object": "#1", "s": 300},
+            {"frame": 2, )" + second + R"(},
+            {"frame": 4, "action": "windowScreenshot", "path": ")" +
+                                                                 shot + R"("}])");
+        Result v = view(scenePath + " --projector --frames 6 --script " + script);
+        EXPECT_EQ(v.code, 0) << v.out;
+        return readPng(shot);
+    };
+    const Image8 toast = window("toast_undo", R"("action": "undo")");
+    const Image8 plain = window("toast_none", R"("action": "setShininess", "object": "#1", "s": )" + s0);
+    ASSERT_EQ(toast.width, plain.width);
+    ASSERT_EQ(toast.height, plain.height);
+    int differing = 0, leftmost = toast.width;
+    for (int y = toast.height * 2 / 3; y < toast.height; ++y)
+        for (int x = 0; x < toast.width; ++x) {
+            const uint8_t *a = toast.pixel(x, y), *b = plain.pixel(x, y);
+            const bool same = a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+            if (same) continue;
+            ++differing;
+            leftmost = std::min(leftmost, x);
+        }
+    EXPECT_GT(differing, 300) << "no toast at the bottom of the image";
+    EXPECT_GT(leftmost, toast.width * 35 / 100) << "the toast is not right of the panel, in the visible image";
 }

@@ -382,6 +382,7 @@ void Viewer::compose() {
     in.selected = state_.selected;
     imageView_->draw(fbRect_, in);
     if (fields_.captions) drawCaptions();
+    drawToast();
     if (fields_.lightMarkers) drawLightMarkers();  // over the captions: a light off the frame sits at its edge
     if (probe_ && probe_->hit) {
         const std::vector<ArrowLabel> labels =
@@ -505,6 +506,24 @@ void Viewer::drawCaptions() {
     const float y = top + height + gap;
     if (at.leftShown) box(ImVec2(at.leftX, y), leftExtent, sides.left, leftWrap);
     if (at.rightShown) box(ImVec2(at.rightX, y), rightExtent, sides.right, rightWrap);
+}
+
+// Over every window (the foreground list), centred at the bottom of what the panel leaves of the image: at UI
+// scale 2 the panel's own status line can be scrolled out of view, and a class must see a refused save.
+void Viewer::drawToast() {
+    if (status_.empty() || glfwGetTime() - statusTime_ >= kStatusSeconds) return;
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    ImFont* font = ImGui::GetFont();
+    const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
+    const float pad = 6.0f * uiScale_, margin = 12.0f * uiScale_;
+    const float left = visibleLeft(), right = imageX_ + imageW_;
+    const float wrap = std::max(right - left - 2.0f * (margin + pad), 1.0f);
+    const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, wrap, status_.c_str());
+    const float x = std::max(left + margin, 0.5f * (left + right) - 0.5f * extent.x - pad);
+    const float y = std::max(imageY_, imageY_ + imageH_ - margin - extent.y - 2.0f * pad);
+    dl->AddRectFilled(ImVec2(x, y), ImVec2(x + extent.x + 2.0f * pad, y + extent.y + 2.0f * pad),
+                      statusError_ ? IM_COL32(150, 30, 30, 230) : IM_COL32(25, 95, 45, 230), 4.0f * uiScale_);
+    dl->AddText(font, size, ImVec2(x + pad, y + pad), IM_COL32(255, 255, 255, 255), status_.c_str(), nullptr, wrap);
 }
 
 float Viewer::wipeFraction() const {

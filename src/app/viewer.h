@@ -72,6 +72,8 @@ private:
     void updateProbe();
     void compose();
     void drawCaptions();
+    // The status message (saved, refused, an error) over the bottom of the visible image while it is fresh.
+    void drawToast();
     void drawLightMarkers();
     ImVec2 windowPoint(glm::vec2 imagePixel) const;
     glm::vec2 imagePixelF(float windowX, float windowY) const;
