@@ -5,6 +5,7 @@
 #include "app/file_list.h"
 #include "app/light_markers.h"
 #include "app/probe_diagram.h"
+#include "app/probe_window_place.h"
 #include "app/save_policy.h"
 #include "app/undo_history.h"
 #include "app/viewer_state.h"
@@ -180,6 +181,58 @@ TEST(AppWipes, LabelsNeverCollideWhereverTheWipeIs) {
     }
     EXPECT_GT(both, 0) << "in the middle both labels show";
     EXPECT_GT(oldCollisions, 0) << "negative control: the old clamping collides";
+}
+
+// The probe window lies inside the visible image and clear of the probed point's square wherever the point is,
+// when it fits at all; it is placed beside the point on the side with room. Negative control: the old rule
+// (always at the top of the image, beside the point by the clearance) covered points near the top edge at a
+// projector's size.
+TEST(AppProbeWindow, InsideTheVisibleImageAndNeverOverThePoint) {
+    ProbeWindowSpace space;
+    space.visibleMin = {700.0f, 20.0f};  // the panel covers the left of a 1900x1060 image
+    space.visibleMax = {1880.0f, 1040.0f};
+    space.clearance = 120.0f;
+    const glm::vec2 size(700.0f, 380.0f);  // a projector's probe window
+    int placed = 0, oldCovers = 0;
+    for (float y = space.visibleMin.y; y <= space.visibleMax.y; y += 20.0f)
+        for (float x = space.visibleMin.x; x <= space.visibleMax.x; x += 20.0f) {
+            space.point = {x, y};
+            const ProbeWindowPlace p = placeProbeWindow(space, size);
+            ASSERT_TRUE(p.fits) << x << ", " << y << ": an image this size has room on some side";
+            ++placed;
+            EXPECT_GE(p.topLeft.x, space.visibleMin.x);
+            EXPECT_GE(p.topLeft.y, space.visibleMin.y);
+            EXPECT_LE(p.topLeft.x + size.x, space.visibleMax.x);
+            EXPECT_LE(p.topLeft.y + size.y, space.visibleMax.y);
+            const bool apartX = p.topLeft.x >= x + space.clearance || p.topLeft.x + size.x <= x - space.clearance;
+            const bool apartY = p.topLeft.y >= y + space.clearance || p.topLeft.y + size.y <= y - space.clearance;
+            EXPECT_TRUE(apartX || apartY) << "the window covers the point at " << x << ", " << y;
+            // The old rule: at the top, right of the point on the left half, left of it on the right half,
+            // pushed inside.
+            const bool onRight = x > 0.5f * (space.visibleMin.x + space.visibleMax.x);
+            const float oldX = onRight ? std::max(space.visibleMin.x, x - space.clearance - size.x)
+                                       : std::min(space.visibleMax.x - size.x, x + space.clearance);
+            const bool oldApartX = oldX >= x + space.clearance || oldX + size.x <= x - space.clearance;
+            const bool oldApartY =
+                space.visibleMin.y >= y + space.clearance || space.visibleMin.y + size.y <= y - space.clearance;
+            if (!oldApartX && !oldApartY) ++oldCovers;
+        }
+    EXPECT_GT(placed, 1000);
+    EXPECT_GT(oldCovers, 0) << "negative control: the old rule covers some points";
+    // Where the arrows' square leaves no side wide enough, the window keeps clear of the point alone.
+    space.minClearance = 10.0f;
+    space.clearance = 400.0f;
+    space.point = {1290.0f, 530.0f};
+    const ProbeWindowPlace near = placeProbeWindow(space, size);
+    EXPECT_TRUE(near.fits);
+    EXPECT_TRUE(near.topLeft.x >= 1300.0f || near.topLeft.x + size.x <= 1280.0f || near.topLeft.y >= 540.0f ||
+                near.topLeft.y + size.y <= 520.0f);
+    // A window larger than the image cannot fit: it says so, and still starts inside.
+    space.point = {1200.0f, 500.0f};
+    const ProbeWindowPlace huge = placeProbeWindow(space, {1500.0f, 1200.0f});
+    EXPECT_FALSE(huge.fits);
+    EXPECT_GE(huge.topLeft.x, space.visibleMin.x);
+    EXPECT_GE(huge.topLeft.y, space.visibleMin.y);
 }
 
 TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {

@@ -24,6 +24,9 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <iterator>
+#include <map>
+#include <sstream>
 
 using namespace shadelab;
 using namespace shadelab::test;
@@ -326,4 +329,50 @@ TEST(AppWindow, StatusMessagesShowAsAToastOnTheImage) {
         }
     EXPECT_GT(differing, 300) << "no toast at the bottom of the image";
     EXPECT_GT(leftmost, toast.width * 35 / 100) << "the toast is not right of the panel, in the visible image";
+}
+
+// In projector mode (UI scale 2) the probe window lies inside what the panel leaves of the image and never over
+// the probed point, for points across the image; where a side has no room it folds instead (the rule itself,
+// with its negative control, is AppProbeWindow.InsideTheVisibleImageAndNeverOverThePoint). Read from the
+// placements the viewer logs with --verbose.
+TEST(AppWindow, ProjectorProbeWindowStaysInsideTheImageAndOffThePoint) {
+    REQUIRE_XVFB();
+    std::string actions;
+    // Image pixels of the window-sized render (--projector opens about 1824x1026 on the tests' screen), right
+    // of the panel: corners, edges and the middle of what it leaves.
+    const int points[][2] = {{950, 120}, {1500, 120}, {1250, 500}, {1500, 850}, {1000, 850}};
+    int frame = 2;
+    for (const auto& p : points) {
+        actions += R"({"frame": )" + std::to_string(frame) + R"(, "action": "probe", "x": )" + std::to_string(p[0]) +
+                   R"(, "y": )" + std::to_string(p[1]) + "},";
+        frame += 4;
+    }
+    const std::string script = writeText("projector_probe.json", "[" + actions.substr(0, actions.size() - 1) + "]");
+    Result v = view(test::sourcePath("assets/scenes/default.json") + " --projector --verbose --frames " +
+                    std::to_string(frame + 2) + " --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    // The last placement logged for each point: once the window has its size.
+    std::map<std::pair<int, int>, std::string> last;
+    std::istringstream lines(v.out);
+    for (std::string line; std::getline(lines, line);) {
+        float x, y, w, h, px, py, c, l, t, r, b;
+        if (std::sscanf(line.c_str(), "shadelab: probe window %f %f %f %f point %f %f clearance %f visible %f %f %f %f",
+                        &x, &y, &w, &h, &px, &py, &c, &l, &t, &r, &b) == 11)
+            last[{int(px), int(py)}] = line;
+    }
+    ASSERT_EQ(last.size(), std::size(points)) << v.out;
+    int folded = 0;
+    for (const auto& [point, line] : last) {
+        float x, y, w, h, px, py, c, l, t, r, b;
+        std::sscanf(line.c_str(), "shadelab: probe window %f %f %f %f point %f %f clearance %f visible %f %f %f %f", &x,
+                    &y, &w, &h, &px, &py, &c, &l, &t, &r, &b);
+        EXPECT_GT(w, 100.0f) << line;
+        if (line.find("(no room)") != std::string::npos) {
+            ++folded;
+            continue;
+        }
+        EXPECT_TRUE(x >= l && y >= t && x + w <= r && y + h <= b) << "outside the visible image: " << line;
+        EXPECT_FALSE(x <= px && px <= x + w && y <= py && py <= y + h) << "over the probed point: " << line;
+    }
+    EXPECT_LT(folded, int(std::size(points))) << "every placement folded: the check would be blind";
 }

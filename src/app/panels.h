@@ -45,6 +45,8 @@ struct UiFields {
     bool lessonFolded = false;                // the lesson window was folded for the probe
     bool probeWindowMoved = false;            // the user dragged the probe window: it stays put until the probe goes
     float probeWindowWidth = 0.0f;            // window units, as last drawn (for placing it inside the image)
+    float probeWindowHeight = 0.0f;           // unfolded; its size folded is not what placing it needs
+    bool probeWindowHadRoom = true;           // the last placement fitted beside the point (else it folded)
     float lobeIncidence = 30.0f;              // degrees: the lobe plots' angle of incidence when no probe is set
     float lobeAxis = 90.0f;                   // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
     std::optional<AlbedoPlot> albedo;         // the albedo plot, recomputed when its settings change
@@ -110,8 +112,10 @@ void drawHelpSection();
 // Floating windows over the image area (x, y, width in window units).
 // The lesson (title and notes) sits at the bottom left; it folds to its title bar while a probe is shown.
 void drawLessonWindow(PanelContext& ctx, float x, float bottom, float width, bool folded);
-// With its right edge at `x` when the probed point is on the right half of the image, else its left edge.
-void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight);
+// With its top left corner at (x, y) (probe_window_place.h), until the user drags it elsewhere. When the
+// placement stops having room beside the point (`room`), the window folds to its title bar, and unfolds when
+// it has room again; in between a click on its arrow is the user's to make.
+void drawProbeWindow(PanelContext& ctx, float x, float y, bool room);
 // The lobe plots of a material (panels_lobe.cpp): its specular lobe under each model against the angle
 // between R and V and as a polar plot in the plane of incidence (with the probe's L, V, R), and the
 // directional albedo of each model. `phongExponent` is the material's s as a Phong exponent.

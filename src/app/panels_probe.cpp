@@ -184,12 +184,13 @@ void diagram(const ProbeResult& p, float uiScale) {
 
 }  // namespace
 
-void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
+void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
     const ProbeResult& p = *ctx.probe;
     // Beside the point, following it as the camera moves, until the user drags the window by its title bar
     // (then it stays where it was put, until the probe is cleared); the title bar's arrow folds it.
-    if (!ctx.fields.probeWindowMoved)
-        ImGui::SetNextWindowPos(ImVec2(x, top), ImGuiCond_Always, ImVec2(probeOnRight ? 1.0f : 0.0f, 0.0f));
+    if (!ctx.fields.probeWindowMoved) ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+    if (room != ctx.fields.probeWindowHadRoom) ImGui::SetNextWindowCollapsed(!room, ImGuiCond_Always);
+    ctx.fields.probeWindowHadRoom = room;
     ImGui::SetNextWindowBgAlpha(0.8f);
     const ImGuiWindowFlags flags =
         ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing;
@@ -200,6 +201,9 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
     if (ImGui::GetCurrentContext()->MovingWindow == ImGui::GetCurrentWindow()) ctx.fields.probeWindowMoved = true;
     ImGuiIO& io = ImGui::GetIO();
     if (io.Fonts->Fonts.Size > 1) ImGui::PushFont(io.Fonts->Fonts[1]);
+    // Compact on a projector (UI scale 1.5 and more): the key rows, the rest a click away, so that the window
+    // fits beside the point inside what the panel leaves of the image.
+    const bool compact = ctx.uiScale >= 1.5f;
     ImGui::Text("pixel (%d, %d): %s", p.x, p.y, p.hit ? p.label.c_str() : "background");
     if (p.hit) {
         ImGui::Text("P %+.3f %+.3f %+.3f", p.P.x, p.P.y, p.P.z);
@@ -212,13 +216,32 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
                         p.pbrDiffuseColor.b, p.pbrF0.r, p.pbrF0.g, p.pbrF0.b);
         else
             ImGui::Text("s %.1f   ms %.2f %.2f %.2f", p.material.s, p.material.ms.r, p.material.ms.g, p.material.ms.b);
-        if (ImGui::TreeNodeEx("plane of incidence", ImGuiTreeNodeFlags_DefaultOpen, "plane of incidence (light 1)")) {
+        const ImGuiTreeNodeFlags open = compact ? 0 : ImGuiTreeNodeFlags_DefaultOpen;
+        if (ImGui::TreeNodeEx("plane of incidence", open, "plane of incidence (light 1)")) {
             diagram(p, ctx.uiScale);
             ImGui::TreePop();
         }
         const bool shadows = ctx.state.scene.terms.shadows;
-        if (!p.lights.empty()) lightTable(p, shadows, pbr);
-        totalsTable(p, ctx.state.scene.model, ctx.state.encoding);
+        if (compact) {
+            // The key row always; the per-light and per-model tables a click away.
+            const ShadingModel m = ctx.state.scene.model;
+            const glm::vec3 total = m == ShadingModel::Pbr          ? p.totalPbr
+                                    : m == ShadingModel::BlinnPhong ? p.totalBlinn
+                                                                    : p.totalPhong;
+            ImGui::Text("N\xc2\xb7L %+.3f   total %.3f %.3f %.3f", p.lights.empty() ? 0.0f : p.lights[0].NoL, total.r,
+                        total.g, total.b);
+        }
+        // In compact form each table sits under a folded node.
+        auto folded = [&](const char* id, const char* label, const auto& draw) {
+            if (!compact) {
+                draw();
+            } else if (ImGui::TreeNodeEx(id, 0, "%s", label)) {
+                draw();
+                ImGui::TreePop();
+            }
+        };
+        if (!p.lights.empty()) folded("lights", "each light", [&] { lightTable(p, shadows, pbr); });
+        folded("totals", "terms, every model", [&] { totalsTable(p, ctx.state.scene.model, ctx.state.encoding); });
         if (ctx.probeGlobal && ctx.probeGlobal->samples > 0) {
             // The path tracer's estimate of the same pixel: what the local terms plus ambient approximate.
             const GlobalEstimate& g = *ctx.probeGlobal;
@@ -226,11 +249,14 @@ void drawProbeWindow(PanelContext& ctx, float x, float top, bool probeOnRight) {
             ImGui::TextDisabled("  \xc2\xb1 %.3f %.3f %.3f (standard error, %d samples)", g.standardError.r,
                                 g.standardError.g, g.standardError.b, g.samples);
         }
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 24.0f * ImGui::GetFontSize());
         ImGui::TextDisabled(shadows ? "visible: the reference's shadow ray; no reflections"
                                     : "local terms, as both renderers compute them");
+        ImGui::PopTextWrapPos();
     }
     if (io.Fonts->Fonts.Size > 1) ImGui::PopFont();
     ctx.fields.probeWindowWidth = ImGui::GetWindowWidth();
+    ctx.fields.probeWindowHeight = ImGui::GetWindowHeight();
     ImGui::End();
 }
 

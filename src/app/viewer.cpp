@@ -133,14 +133,19 @@ bool Viewer::frame() {
                      std::min(visibleW - 2.0f * margin, 760.0f * uiScale_), ctx.probe != nullptr);
     if (!ctx.probe) fields_.probeWindowMoved = false;
     if (ctx.probe) {
-        // Beside the probed point, on the side with more room, clear of its arrows.
-        const float px = imageX_ + (float(state_.probe.x) + 0.5f) / float(renderW_) * imageW_;
-        const float clearance = 0.22f * imageH_ + 20.0f * uiScale_;
-        const bool onRight = 2 * state_.probe.x > renderW_;
-        const float width = fields_.probeWindowWidth;  // as drawn last frame
-        const float anchor = onRight ? std::max(left + margin + width, px - clearance)
-                                     : std::min(imageX_ + imageW_ - margin - width, px + clearance);
-        drawProbeWindow(ctx, anchor, imageY_ + margin, onRight);
+        // Beside the probed point inside the visible image, clear of the point and its arrows, at the size
+        // it was drawn last frame.
+        ProbeWindowSpace space;
+        space.visibleMin = glm::vec2(left + margin, imageY_ + margin);
+        space.visibleMax = glm::vec2(imageX_ + imageW_ - margin, imageY_ + imageH_ - margin);
+        space.point = glm::vec2(imageX_ + (float(state_.probe.x) + 0.5f) / float(renderW_) * imageW_,
+                                imageY_ + (float(state_.probe.y) + 0.5f) / float(renderH_) * imageH_);
+        space.clearance = 0.22f * imageH_ + 20.0f * uiScale_;  // the arrows (arrow_overlay.h): ~0.2 of the height
+        space.minClearance = 20.0f * uiScale_;
+        const glm::vec2 size(fields_.probeWindowWidth, fields_.probeWindowHeight);
+        const ProbeWindowPlace place = placeProbeWindow(space, size);
+        drawProbeWindow(ctx, place.topLeft.x, place.topLeft.y, place.fits || fields_.probeWindowMoved);
+        if (options_.verbose && !fields_.probeWindowMoved) logProbeWindow(space, place, size);
     }
 
     // Edits become undo steps between gestures, so a slider drag or a mouse drag is one step.
@@ -524,6 +529,19 @@ void Viewer::drawToast() {
     dl->AddRectFilled(ImVec2(x, y), ImVec2(x + extent.x + 2.0f * pad, y + extent.y + 2.0f * pad),
                       statusError_ ? IM_COL32(150, 30, 30, 230) : IM_COL32(25, 95, 45, 230), 4.0f * uiScale_);
     dl->AddText(font, size, ImVec2(x + pad, y + pad), IM_COL32(255, 255, 255, 255), status_.c_str(), nullptr, wrap);
+}
+
+// --verbose: where the probe window went, once per change, so that a test can hold it to its rule.
+void Viewer::logProbeWindow(const ProbeWindowSpace& space, const ProbeWindowPlace& place, glm::vec2 size) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "probe window %.0f %.0f %.0f %.0f point %.0f %.0f clearance %.0f visible %.0f %.0f %.0f %.0f%s",
+                  place.topLeft.x, place.topLeft.y, size.x, size.y, space.point.x, space.point.y, space.clearance,
+                  space.visibleMin.x, space.visibleMin.y, space.visibleMax.x, space.visibleMax.y,
+                  place.fits ? "" : " (no room)");
+    if (line == lastProbeWindowLog_) return;
+    lastProbeWindowLog_ = line;
+    std::fprintf(stderr, "shadelab: %s\n", line);
 }
 
 float Viewer::wipeFraction() const {

@@ -13,6 +13,7 @@
 #include "app/global_renderer.h"
 #include "app/image_view.h"
 #include "app/panels.h"
+#include "app/probe_window_place.h"
 #include "app/reference_renderer.h"
 #include "app/script.h"
 #include "app/undo_history.h"
@@ -74,6 +75,7 @@ private:
     void drawCaptions();
     // The status message (saved, refused, an error) over the bottom of the visible image while it is fresh.
     void drawToast();
+    void logProbeWindow(const ProbeWindowSpace& space, const ProbeWindowPlace& place, glm::vec2 size);
     void drawLightMarkers();
     ImVec2 windowPoint(glm::vec2 imagePixel) const;
     glm::vec2 imagePixelF(float windowX, float windowY) const;
@@ -170,6 +172,7 @@ private:
     UiFields fields_;
     std::string shaderError_;
     std::string status_;
+    std::string lastProbeWindowLog_;
     bool statusError_ = false;
     double statusTime_ = 0.0;
     std::string pendingWindowShot_;
