@@ -28,7 +28,7 @@ Camera chooseCamera(const Scene& scene, const CameraChoice& choice, const std::s
             break;
     }
     const size_t n = scene.modelCameras.size();
-    throw InputError(file, "--camera " + std::to_string(choice.index) + ": " +
+    throw InputError(file, "camera " + std::to_string(choice.index) + ": " +
                                (n == 0 ? std::string("the scene has no glTF camera")
                                        : "the model has " + std::to_string(n) + " camera" + (n == 1 ? "" : "s") +
                                              " (0" + (n > 1 ? " to " + std::to_string(n - 1) : std::string()) + ")"));

@@ -70,7 +70,7 @@ TEST(SceneLoad, GlbKeepsItsOwnCameraAndLights) {
         chooseCamera(s, *parseCameraChoice("1"), file);
         FAIL() << "camera 1 does not exist";
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "2CylinderEngine.glb: --camera 1: the model has 1 camera (0)");
+        EXPECT_STREQ(e.what(), "2CylinderEngine.glb: camera 1: the model has 1 camera (0)");
     }
     EXPECT_EQ(s.lights.size(), 2u);
 
