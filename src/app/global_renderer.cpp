@@ -75,6 +75,11 @@ void GlobalRenderer::controllerLoop() {
             Pass partial;
             if (first && now() - published > 0.3) {
                 partial = snapshot(running, *render);
+                // Tiles only, even when the last pixel is done: the whole pass, with its denoised preview,
+                // follows, and only it may count as a sample (waitReference, screenshots).
+                partial.samples = 0;
+                partial.noise8 = 0.0;
+                partial.denoised = ImageF();
                 published = now();
             }
             passProgress_ = f;
