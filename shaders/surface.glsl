@@ -60,14 +60,15 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
 }
 #endif
 
-// One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint,
-// isAttenuated, kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
+// One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint (a point
+// or spot light), isAttenuated (attenuation, range or cone), kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
 // specialised lights, so their branches fold away.
 vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, int layer, vec3 P, vec3 N, vec3 V,
                vec3 md, vec3 specScale) {
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
-    // Attenuation (1, 0, 0) divides by exactly 1: skipped, bit for bit the same.
-    vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L) : u_lightColor[i].xyz;
+    // Attenuation (1, 0, 0), no range and no cone multiply by exactly 1: skipped, bit for bit the same.
+    vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i])
+                           : u_lightColor[i].xyz;
     vec3 c = shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
@@ -101,7 +102,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
     for (int i = SL_LIGHTS; i < u_flags.z; ++i) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
-        vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
+        vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i]);
         I += shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
     }
 #endif

@@ -28,7 +28,7 @@ SceneSphere sceneSphere(const Scene& scene) {
 }
 
 glm::vec3 anchorOf(const Light& light, const SceneSphere& sphere) {
-    if (light.type == LightType::Point) return light.position;
+    if (light.positional()) return light.position;
     return sphere.center - glm::normalize(light.direction) * (1.2f * sphere.radius);
 }
 
@@ -64,7 +64,7 @@ std::vector<LightMarker> lightMarkers(const Scene& scene, int width, int height)
             m.visible = true;
         }
         m.arrowTip = m.pixel;
-        if (light.type == LightType::Directional) {
+        if (light.type != LightType::Point) {  // directional and spot lights: an arrow along their light
             glm::vec2 tip;
             const glm::vec3 toward = m.anchor + glm::normalize(light.direction) * (0.35f * sphere.radius);
             if (project(v, toward, tip)) m.arrowTip = tip;
@@ -104,7 +104,7 @@ Light draggedLight(const Scene& scene, int width, int height, int index, glm::ve
     const float t = glm::dot(anchor - v.eye, v.forward) / along;
     if (!(t > 0.0f)) return light;
     const glm::vec3 moved = v.eye + t * dir;
-    if (light.type == LightType::Point) {
+    if (light.positional()) {  // a spot keeps its direction: dragging moves it, the Lights panel aims it
         light.position = moved;
         return light;
     }
