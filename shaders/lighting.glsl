@@ -167,6 +167,18 @@ SL_FN vec3 shadeEnvironment(vec3 diffuseColor, vec3 f0, vec3 irradiance, vec3 pr
     return I;
 }
 
+// The lecture's step 0, "no illumination" (docs/lighting.md): with none of the light terms on, a surface shows its
+// unlit colour instead of black.
+SL_FN bool noIllumination(bool ambientOn, bool diffuseOn, bool specularOn) {
+    return !ambientOn && !diffuseOn && !specularOn;
+}
+
+// That unlit colour: md under Phong and Blinn-Phong, the base colour under pbr (so a metal keeps its colour,
+// though it has no diffuse one); each as the surface has it at the point (textured, a checker's tile).
+SL_FN vec3 unlitColour(vec3 md, vec3 baseColor, int model) {
+    return model == SL_MODEL_PBR ? baseColor : md;
+}
+
 // Ambient term Ia ⊙ ma.
 SL_FN vec3 shadeAmbient(vec3 Ia, vec3 ma, bool ambientOn) {
     return ambientOn ? Ia * ma : vec3(0.0f);

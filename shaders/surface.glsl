@@ -23,6 +23,7 @@ uniform float u_s;
 vec3 surfaceMs() { return s_mapped ? s_ms : u_ms + u_msTex * (s_tex - 1.0f); }
 vec3 surfaceMa() { return s_mapped ? s_ma : u_ma * s_tex; }
 float surfaceS() { return s_mapped ? s_s : u_s; }
+uniform vec3 u_baseColor;  // the pbr base colour factor (mesh.frag's maps re-derive coefficients from it; unlitColour)
 uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
 // The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
 vec3 s_emissive = vec3(1.0f);
@@ -78,8 +79,11 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
 }
 
 // Ia·ma plus the sum over lights, as src/shading/local_illumination.h (the variant fixes model and terms).
-// A pbr surface in an environment (SL_IBL) gets the environment's light in place of Ia·ma.
-vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
+// A pbr surface in an environment (SL_IBL) gets the environment's light in place of Ia·ma. md is the diffuse
+// colour the fragment shades with, base its base colour (both textured); with no light term on, the surface
+// shows unlitColour() of them (WhittedIntegrator::local does the same).
+vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
+    if (noIllumination(SL_AMBIENT, SL_DIFFUSE, SL_SPECULAR)) return unlitColour(md, base, SL_MODEL) + u_emission * s_emissive;
 #if SL_IBL || SL_ENERGY_COMPENSATION
     vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(N, V), surfaceS());
 #endif

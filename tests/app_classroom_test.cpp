@@ -135,27 +135,33 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     ViewerState s = stateOf("assets/scenes/default.json");
     applyProgression(s, 3);
     setModel(s, ShadingModel::BlinnPhong);
-    EXPECT_EQ(imageCaption(s), "Blinn-Phong  \xc2\xb7  ambient + diffuse + specular  \xc2\xb7  raster");
+    EXPECT_EQ(imageCaption(s), "Blinn-Phong  \xc2\xb7  step 3: ambient + diffuse + specular  \xc2\xb7  raster");
     setNormalized(s, true);
     setMode(s, ViewMode::Split);
     EXPECT_EQ(imageCaption(s),
-              "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular  \xc2\xb7  raster | reference");
+              "normalised Blinn-Phong  \xc2\xb7  step 3: ambient + diffuse + specular  \xc2\xb7  raster | reference");
     applyProgression(s, 5);
-    EXPECT_EQ(termsCaption(s.scene.terms), "ambient + diffuse + specular + shadows + reflections");
+    EXPECT_EQ(termsCaption(s.scene.terms), "step 5: ambient + diffuse + specular + shadows + reflections");
     // Global: the path tracer has no ambient term, whatever its switch says; Local | Global's left side does.
     setMode(s, ViewMode::Global);
     EXPECT_EQ(imageCaption(s),
-              "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
+              "normalised Blinn-Phong  \xc2\xb7  step 5: diffuse + specular + shadows + reflections  \xc2\xb7  "
               "global illumination (path traced)");
     setGlobalPart(s, trace::PathPart::Indirect);
     EXPECT_NE(imageCaption(s).find("indirect light only"), std::string::npos);
     setMode(s, ViewMode::LocalGlobal);
     EXPECT_EQ(imageCaption(s),
-              "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular + shadows + reflections  "
+              "normalised Blinn-Phong  \xc2\xb7  step 5: ambient + diffuse + specular + shadows + reflections  "
               "\xc2\xb7  local (raster) | global (path traced)");
     for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
         setTerm(s, t, false);
-    EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
+    EXPECT_EQ(termsCaption(s.scene.terms), "step 0: no illumination");
+    setTerm(s, Term::Shadows, true);  // not a step, and still no light term on
+    EXPECT_EQ(termsCaption(s.scene.terms), "no illumination, shadows");
+    setTerm(s, Term::Shadows, false);
+    setTerm(s, Term::Diffuse, true);  // not a step either
+    EXPECT_EQ(termsCaption(s.scene.terms), "diffuse");
+    setTerm(s, Term::Diffuse, false);
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
     // A display that is not Standard is named at the end (not in Difference, which shows the raw values).

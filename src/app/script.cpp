@@ -117,7 +117,7 @@ const ActionInfo kActions[] = {
      [](const JsonNode& a) -> Action { return ToggleTerm{a.child("term").oneOf(kTermNames, "term")}; }},
     {"progression",
      {"step"},
-     [](const JsonNode& a) -> Action { return Progression{a.child("step").integerIn(1, kProgressionSteps)}; }},
+     [](const JsonNode& a) -> Action { return Progression{a.child("step").integerIn(0, kProgressionSteps)}; }},
     {"setModel",
      {"model"},
      [](const JsonNode& a) -> Action { return SetModel{a.child("model").oneOf(kShadingModelNames, "shading model")}; }},

@@ -155,8 +155,9 @@ void Viewer::handleKeys() {
             if (k.key == GLFW_KEY_Y) redo();
             continue;
         }
-        if (k.key >= GLFW_KEY_1 && k.key < GLFW_KEY_1 + kProgressionSteps) applyProgression(state_, k.key - GLFW_KEY_0);
-        if (k.key >= GLFW_KEY_KP_1 && k.key < GLFW_KEY_KP_1 + kProgressionSteps)
+        if (k.key >= GLFW_KEY_0 && k.key <= GLFW_KEY_0 + kProgressionSteps)
+            applyProgression(state_, k.key - GLFW_KEY_0);
+        if (k.key >= GLFW_KEY_KP_0 && k.key <= GLFW_KEY_KP_0 + kProgressionSteps)
             applyProgression(state_, k.key - GLFW_KEY_KP_0);
         switch (k.key) {
             case GLFW_KEY_F: frameAll(state_); break;

@@ -135,6 +135,9 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
 glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected) const {
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
+    // The lecture's step 0, as surface.glsl's shadeSurface: no light term on, the surface's unlit colour.
+    if (shading::noIllumination(sc.terms.ambient, sc.terms.diffuse, sc.terms.specular))
+        return shading::unlitColour(s.md, s.baseColor, model_) + m.emission * s.emissive;
     const glm::vec3 V = -ray.dir;
     glm::vec2 dfg(0.0f);
     const shading::SurfaceParams params = shadingParams(s, V, &dfg);

@@ -256,3 +256,14 @@ def test_reverse_and_clear_edit_the_list_in_one_step(source_dir):
     scene.lights.clear()
     scene.objects.clear()
     assert scene.lights.to_list() == [] and scene.objects.to_list() == []
+
+
+def test_no_illumination_shows_the_unlit_colours(scene):
+    for term in ("ambient", "diffuse", "specular", "shadows", "reflections"):
+        setattr(scene.terms, term, False)
+    raster = shadelab.render(scene, (96, 64), coverage=True)
+    traced = shadelab.render(scene, (96, 64), renderer="trace", depth=1, coverage=True)
+    report = shadelab.compare(raster, traced)
+    assert report.passed, report.summary
+    scene.terms.diffuse = True  # negative control: a lit render is not the unlit one
+    assert not shadelab.compare(raster, shadelab.render(scene, (96, 64), renderer="trace")).passed

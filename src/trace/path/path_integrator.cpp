@@ -96,6 +96,12 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
             const float w = prevPdf > 0.0f ? weightBsdf(prevPdf, emitters_.pdfHit(ray, *hit)) : 1.0f;
             add(beta * m.emission * s.emissive * w, scattered);  // s.emissive: the emissive texture, or 1
         }
+        // The lecture's step 0 (no light term on): no light to carry, so the camera ray's first hit shows its
+        // unlit colour, as in the Whitted tracer and the rasterizer, and the path ends there.
+        if (shading::noIllumination(sc.terms.ambient, sc.terms.diffuse, sc.terms.specular)) {
+            add(beta * shading::unlitColour(s.md, s.baseColor, model_), scattered);
+            break;
+        }
         if (bounce > settings_.maxDepth) break;
 
         const glm::vec3 V = -ray.dir;
