@@ -221,6 +221,33 @@ TEST(AppLightMarkers, DirectionalLightPointsFromItsMarkerToTheSceneCentre) {
     EXPECT_NEAR(after.pixel.x, m.pixel.x - 50.0f, 0.5f) << "the marker follows the pointer";
 }
 
+// A spot light added in the viewer aims at the scene's centre; its marker sits at its position with an arrow
+// along its axis, and dragging it moves the position under the pointer and keeps the aim.
+TEST(AppLightMarkers, SpotLightMarkerDragsItsPositionAndKeepsItsAim) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    s.scene.lights.clear();
+    const int i = addLight(s, LightType::Spot);
+    ASSERT_EQ(i, 0);
+    Light spot = s.scene.lights[0];
+    EXPECT_EQ(spot.type, LightType::Spot);
+    const Bounds b = sceneBounds(s.scene);
+    EXPECT_GT(glm::dot(spot.direction, glm::normalize(0.5f * (b.lo + b.hi) - spot.position)), 0.999f);
+    spot.position = glm::vec3(-2.0f, 2.5f, 2.0f);  // in the frame
+    ASSERT_TRUE(setLight(s, 0, spot));
+    const int w = 320, h = 180;
+    const LightMarker m = lightMarkers(s.scene, w, h)[0];
+    ASSERT_FALSE(m.clamped);
+    EXPECT_GT(glm::length(m.arrowTip - m.pixel), 1.0f) << "a spot's marker shows its axis";
+    const glm::vec2 target = m.pixel + glm::vec2(40.0f, 10.0f);
+    const Light moved = draggedLight(s.scene, w, h, 0, target);
+    EXPECT_EQ(moved.direction, spot.direction);
+    EXPECT_GT(glm::length(moved.position - spot.position), 0.1f);
+    ASSERT_TRUE(setLight(s, 0, moved));
+    const LightMarker after = lightMarkers(s.scene, w, h)[0];
+    EXPECT_NEAR(after.pixel.x, target.x, 1e-2f);
+    EXPECT_NEAR(after.pixel.y, target.y, 1e-2f);
+}
+
 TEST(AppProbeDiagram, EveryVectorIsDrawnFullLengthAtItsAngleFromN) {
     ProbeResult p;
     p.hit = true;
