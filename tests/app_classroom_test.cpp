@@ -222,7 +222,8 @@ TEST(AppLightMarkers, DirectionalLightPointsFromItsMarkerToTheSceneCentre) {
 }
 
 // A spot light added in the viewer aims at the scene's centre; its marker sits at its position with an arrow
-// along its axis, and dragging it moves the position under the pointer and keeps the aim.
+// along its axis; dragging the disc moves the position under the pointer and keeps the aim, dragging the arrow's
+// tip aims it.
 TEST(AppLightMarkers, SpotLightMarkerDragsItsPositionAndKeepsItsAim) {
     ViewerState s = stateOf("assets/scenes/default.json");
     s.scene.lights.clear();
@@ -246,6 +247,24 @@ TEST(AppLightMarkers, SpotLightMarkerDragsItsPositionAndKeepsItsAim) {
     const LightMarker after = lightMarkers(s.scene, w, h)[0];
     EXPECT_NEAR(after.pixel.x, target.x, 1e-2f);
     EXPECT_NEAR(after.pixel.y, target.y, 1e-2f);
+
+    // The arrow's tip is the aiming handle: dragged, the spot turns toward the pointer and stays where it is.
+    const std::vector<LightMarker> markers = lightMarkers(s.scene, w, h);
+    EXPECT_EQ(aimHandleAt(s.scene, markers, after.arrowTip + glm::vec2(1.0f, -1.0f), 8.0f), 0);
+    EXPECT_EQ(aimHandleAt(s.scene, markers, after.arrowTip + glm::vec2(30.0f, 0.0f), 8.0f), -1) << "too far";
+    const glm::vec2 aimAt = after.arrowTip + glm::vec2(-30.0f, 20.0f);
+    const Light aimed = aimedSpot(s.scene, w, h, 0, aimAt);
+    EXPECT_EQ(aimed.position, moved.position);
+    EXPECT_NEAR(glm::length(aimed.direction), 1.0f, 1e-5f);
+    EXPECT_GT(glm::length(aimed.direction - moved.direction), 0.05f);
+    ASSERT_TRUE(setLight(s, 0, aimed));
+    const LightMarker turned = lightMarkers(s.scene, w, h)[0];
+    // The arrow keeps its length in the world, so on screen it points from the disc toward the pointer.
+    const glm::vec2 arrow = glm::normalize(turned.arrowTip - turned.pixel);
+    EXPECT_GT(glm::dot(arrow, glm::normalize(aimAt - turned.pixel)), 0.9999f) << "the arrow points at the pointer";
+    // Negative control: a point light has no aiming handle.
+    s.scene.lights[0].type = LightType::Point;
+    EXPECT_EQ(aimHandleAt(s.scene, lightMarkers(s.scene, w, h), turned.arrowTip, 8.0f), -1);
 }
 
 TEST(AppProbeDiagram, EveryVectorIsDrawnFullLengthAtItsAngleFromN) {
