@@ -6,6 +6,7 @@
 #include "compare/compare_report.h"
 #include "gl_fixture.h"
 #include "render_compare.h"
+#include "scene/scene_load.h"
 #include "scene/view.h"
 #include "trace/path/path_render.h"
 #include "trace/trace_image.h"
@@ -136,4 +137,19 @@ TEST_F(UnlitRaster, NegativeControlAChangedColourFails) {
     pbrBase.spheres[0].material.baseColor += glm::vec3(0.0f, 0.05f, 0.0f);
     EXPECT_FALSE(
         test::compareWithReference(pbrBase, pbr, kWidth, kHeight, 1, CompareGates{}, "negative_unlit_pbr_base").pass);
+}
+
+// Textured: the base-colour texture multiplies md (Phong) and the base colour (pbr), a metallic-roughness map
+// gives Phong's diffuse colour, in both renderers alike.
+TEST_F(UnlitRaster, TexturedModelsMatchTheReference) {
+    for (const char* name : {"uv_checker", "metal_rough"}) {
+        for (ShadingModel model : {ShadingModel::Phong, ShadingModel::Pbr}) {
+            Scene scene = loadScene(test::sourcePath(std::string("assets/models/textures/") + name + ".gltf"));
+            scene.model = model;
+            scene.terms = Terms{false, false, false, false, false};
+            const std::string what = std::string("unlit_") + name + "_" + toString(model);
+            const CompareResult r = test::compareWithReference(scene, scene, kWidth, kHeight, 1, CompareGates{}, what);
+            EXPECT_TRUE(r.pass) << what << ": " << compareSummary(r);
+        }
+    }
 }
