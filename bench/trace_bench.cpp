@@ -115,7 +115,7 @@ bool shadowRay(const Scene& scene, glm::vec3 P, glm::vec3 Ng, glm::vec3 dir, flo
     if (!(len > 0.0f) || scene.lights.empty()) return false;
     out.origin = P + eps * (Ng / len);
     const Light& l = scene.lights[0];
-    if (l.type == LightType::Point) {
+    if (l.positional()) {
         const glm::vec3 toL = l.position - out.origin;
         tMax = glm::length(toL);
         out.dir = toL / tMax;

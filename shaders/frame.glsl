@@ -9,9 +9,11 @@ layout(std140) uniform Frame {
     vec4 u_ambient;                     // xyz: Ia
     ivec4 u_flags;                      // model, term bits (1 ambient, 2 diffuse, 4 specular), light count,
                                         // pass bits (1 shadows, 2 planar mirror lookups)
-    vec4 u_lightPos[SL_MAX_LIGHTS];     // xyz: position (w = 1) or direction of travel (w = 0)
+    vec4 u_lightPos[SL_MAX_LIGHTS];     // xyz: position (w = 1: point or spot) or direction of travel (w = 0)
     vec4 u_lightColor[SL_MAX_LIGHTS];   // xyz: Il
     vec4 u_lightAtten[SL_MAX_LIGHTS];   // xyz: kc, kl, kq
+    vec4 u_lightSpot[SL_MAX_LIGHTS];    // xyz: a spot light's direction of travel
+    vec4 u_lightCone[SL_MAX_LIGHTS];    // lightIntensityAt's cone: spot scale, offset, range (0: none), 1 for a spot
     vec4 u_clipPlane;                   // keep dot(xyz, P) + w >= 0; (0, 0, 0, 1) keeps all (mirror passes clip)
     vec4 u_iblParams;                   // environment: intensity, cos(rotation), sin(rotation)
     ivec4 u_iblInfo;                    // mode (0 none, 1 uniform, 2 map), cube size, levels, energy compensation

@@ -167,6 +167,18 @@ SL_FN vec3 shadeEnvironment(vec3 diffuseColor, vec3 f0, vec3 irradiance, vec3 pr
     return I;
 }
 
+// The lecture's step 0, "no illumination" (docs/lighting.md): with none of the light terms on, a surface shows its
+// unlit colour instead of black.
+SL_FN bool noIllumination(bool ambientOn, bool diffuseOn, bool specularOn) {
+    return !ambientOn && !diffuseOn && !specularOn;
+}
+
+// That unlit colour: md under Phong and Blinn-Phong, the base colour under pbr (so a metal keeps its colour,
+// though it has no diffuse one); each as the surface has it at the point (textured, a checker's tile).
+SL_FN vec3 unlitColour(vec3 md, vec3 baseColor, int model) {
+    return model == SL_MODEL_PBR ? baseColor : md;
+}
+
 // Ambient term Ia ⊙ ma.
 SL_FN vec3 shadeAmbient(vec3 Ia, vec3 ma, bool ambientOn) {
     return ambientOn ? Ia * ma : vec3(0.0f);
@@ -177,14 +189,49 @@ SL_FN float distanceAttenuation(vec3 k, float d) {
     return 1.0f / max(k.x + k.y * d + k.z * d * d, 1e-8f);
 }
 
-// Vector from P toward a light: point lights sit at posOrDir, directional lights travel along posOrDir.
-SL_FN vec3 lightVector(vec3 posOrDir, bool isPoint, vec3 P) {
-    return isPoint ? posOrDir - P : -posOrDir;
+// Vector from P toward a light: point and spot lights sit at posOrDir, directional lights travel along posOrDir.
+SL_FN vec3 lightVector(vec3 posOrDir, bool isPositional, vec3 P) {
+    return isPositional ? posOrDir - P : -posOrDir;
 }
 
-// Intensity arriving at the point: Il, attenuated by distance for point lights (L = lightVector()).
-SL_FN vec3 lightIntensityAt(vec3 Il, bool isPoint, vec3 attenuation, vec3 L) {
-    return isPoint ? Il * distanceAttenuation(attenuation, length(L)) : Il;
+// KHR_lights_punctual, "Inner and Outer Cone Angles", the reference code's two constants, computed once per
+// light on the CPU: x = lightAngleScale = 1 / max(0.001, cos(inner) − cos(outer)) and y = lightAngleOffset =
+// −cos(outer)·lightAngleScale. The 0.001 keeps inner = outer finite: a hard edge.
+SL_FN vec2 spotConeScaleOffset(float innerConeAngle, float outerConeAngle) {
+    float cosOuter = cos(outerConeAngle);
+    float scale = 1.0f / max(0.001f, cos(innerConeAngle) - cosOuter);
+    return vec2(scale, -cosOuter * scale);
+}
+
+// The same section's angular attenuation: cd = dot(spotDir, −L), the cosine of the angle between the spot's
+// axis (spotDir, the direction its light travels) and the way from the light to the point, then
+// saturate(cd·scale + offset)², 1 inside the inner cone, 0 outside the outer one.
+SL_FN float spotAttenuation(vec3 spotDir, vec3 L, vec2 cone) {
+    float cd = dot(normalize(spotDir), -normalize(L));
+    float a = clamp(cd * cone.x + cone.y, 0.0f, 1.0f);
+    return a * a;
+}
+
+// KHR_lights_punctual, "Range Property", the recommended window: max(min(1 − (d/range)⁴, 1), 0). The spec's
+// formula divides it by d²; here the inverse square is the light's own distanceAttenuation (kq), off by default
+// as in the lecture. range <= 0 is no range: 1 everywhere.
+SL_FN float rangeWindow(float d, float range) {
+    if (range <= 0.0f) return 1.0f;
+    float r = d / range;
+    float r2 = r * r;
+    return clamp(1.0f - r2 * r2, 0.0f, 1.0f);
+}
+
+// Intensity arriving at the point (L = lightVector()): Il, and for point and spot lights times the distance
+// attenuation and the range window, and for spot lights the cone. spotDir: a spot's direction of travel;
+// cone: x, y spotConeScaleOffset(), z the range (0: none), w 1 for a spot light, else 0. A point light with
+// no range multiplies by exactly 1 where the spot and range factors would be, bit for bit its old intensity.
+SL_FN vec3 lightIntensityAt(vec3 Il, bool isPositional, vec3 attenuation, vec3 L, vec3 spotDir, vec4 cone) {
+    if (!isPositional) return Il;
+    float d = length(L);
+    float a = distanceAttenuation(attenuation, d) * rangeWindow(d, cone.z);
+    if (cone.w != 0.0f) a = a * spotAttenuation(spotDir, L, vec2(cone.x, cone.y));
+    return Il * a;
 }
 
 // Two-sided lighting: N flipped to face the viewer.

@@ -6,6 +6,8 @@ uniform sampler2D t_N;        // xyz: N
 uniform sampler2D t_L;        // xyz: L
 uniform sampler2D t_V;        // xyz: V
 uniform sampler2D t_params;   // x: s (pbr: roughness), y: model (0 Phong, 1 Blinn-Phong, 2 pbr), z: metallic
+                              // y = 3: a spot light's intensity instead: N the spot's direction, L the light
+                              // vector, V its attenuation (kc, kl, kq), x, z its cone scale and offset, w its range
 uniform vec3 u_Il;
 uniform vec3 u_md;
 uniform vec3 u_ms;
@@ -19,6 +21,12 @@ void main() {
     vec3 V = texelFetch(t_V, p, 0).xyz;
     vec4 params = texelFetch(t_params, p, 0);
     int model = int(params.y + 0.5f);
+    if (model == 3) {
+        vec4 cone = vec4(params.x, params.z, params.w, 1.0f);
+        vec3 I = lightIntensityAt(u_Il, true, V, L, N, cone);
+        o_result = vec4(I, spotAttenuation(N, L, vec2(params.x, params.z)));
+        return;
+    }
     if (model == SL_MODEL_PBR) {
         // u_md is the base colour: the derived diffuse colour and F0 are part of what is proved equal.
         vec3 md = pbrDiffuseColor(u_md, params.z);

@@ -34,7 +34,6 @@ uniform sampler2D t_emissive;
 uniform ivec4 u_tex[5];
 uniform vec4 u_texMatrix[5];
 uniform vec4 u_texOffset[5];
-uniform vec3 u_baseColor;  // pbr base colour factor: the metallic-roughness map re-derives coefficients from it
 uniform vec4 u_mapFactors;  // x metallic, y roughness (factors), z 1 when Phong's ms is normalised
 uniform vec4 u_alpha;       // x the base colour factor's alpha, y the MASK cutoff, z alphaMode (0 opaque, 1 mask, 2 blend)
 // `map` is a literal at every call, so each branch folds away once the functions are inlined.
@@ -112,7 +111,11 @@ void main() {
     float alpha = 1.0f;
     vec3 md = u_md;
 #endif
-    vec3 I = shadeSurface(v2f_position, N, V, md);
+#ifdef SL_MATERIAL_MAPS
+    vec3 I = shadeSurface(v2f_position, N, V, md, u_baseColor * s_tex);
+#else
+    vec3 I = shadeSurface(v2f_position, N, V, md, u_baseColor);
+#endif
 #if SL_ENVIRONMENT
     I += environmentReflection(N, V);
 #endif

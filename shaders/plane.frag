@@ -6,6 +6,7 @@ uniform vec3 u_planeNormal;
 uniform float u_planeOffset;
 uniform int u_checker;          // 1 when the plane has a checker pattern
 uniform vec3 u_md2;
+uniform vec3 u_baseColor2;       // the checker's md2 itself: the second tiles' base colour under pbr
 uniform float u_checkerSize;
 uniform vec3 u_planeT;          // planeTangent(u_planeNormal), as plane.vert
 uniform vec3 u_planeB;          // planeBitangent(u_planeNormal)
@@ -25,8 +26,8 @@ void main() {
     vec3 V = -dir;
     vec3 N = faceForward(u_planeNormal, V);
     // The tangent basis as computed on the CPU (the tracer's own planeTangent/planeBitangent), once per plane.
-    vec3 md = (u_checker != 0 && checkerParityInBasis(P, u_planeT, u_planeB, u_checkerSize) == 1) ? u_md2 : u_md;
-    vec3 I = shadeSurface(P, N, V, md);
+    bool second = u_checker != 0 && checkerParityInBasis(P, u_planeT, u_planeB, u_checkerSize) == 1;
+    vec3 I = shadeSurface(P, N, V, second ? u_md2 : u_md, second ? u_baseColor2 : u_baseColor);
     // Planar reflection: the mirrored scene seen through this pixel is exactly I(reflected ray).
 #if SL_ENVIRONMENT
     I += u_kr * texelFetch(t_reflection, ivec2(gl_FragCoord.xy), 0).rgb;

@@ -17,7 +17,7 @@ void main() {
     vec3 V = -dir;
     vec3 N = faceForward((P - u_center) / u_radius, V);
     gl_FragDepth = depthOf(P);
-    vec3 I = shadeSurface(P, N, V, u_md);
+    vec3 I = shadeSurface(P, N, V, u_md, u_baseColor);
 #if SL_ENVIRONMENT
     I += environmentReflection(N, V);
 #endif

@@ -23,6 +23,7 @@ uniform float u_s;
 vec3 surfaceMs() { return s_mapped ? s_ms : u_ms + u_msTex * (s_tex - 1.0f); }
 vec3 surfaceMa() { return s_mapped ? s_ma : u_ma * s_tex; }
 float surfaceS() { return s_mapped ? s_s : u_s; }
+uniform vec3 u_baseColor;  // the pbr base colour factor (mesh.frag's maps re-derive coefficients from it; unlitColour)
 uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
 // The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
 vec3 s_emissive = vec3(1.0f);
@@ -60,14 +61,15 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
 }
 #endif
 
-// One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint,
-// isAttenuated, kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
+// One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint (a point
+// or spot light), isAttenuated (attenuation, range or cone), kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
 // specialised lights, so their branches fold away.
 vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, int layer, vec3 P, vec3 N, vec3 V,
                vec3 md, vec3 specScale) {
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
-    // Attenuation (1, 0, 0) divides by exactly 1: skipped, bit for bit the same.
-    vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L) : u_lightColor[i].xyz;
+    // Attenuation (1, 0, 0), no range and no cone multiply by exactly 1: skipped, bit for bit the same.
+    vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i])
+                           : u_lightColor[i].xyz;
     vec3 c = shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
@@ -77,8 +79,11 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
 }
 
 // Ia·ma plus the sum over lights, as src/shading/local_illumination.h (the variant fixes model and terms).
-// A pbr surface in an environment (SL_IBL) gets the environment's light in place of Ia·ma.
-vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
+// A pbr surface in an environment (SL_IBL) gets the environment's light in place of Ia·ma. md is the diffuse
+// colour the fragment shades with, base its base colour (both textured); with no light term on, the surface
+// shows unlitColour() of them (WhittedIntegrator::local does the same).
+vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
+    if (noIllumination(SL_AMBIENT, SL_DIFFUSE, SL_SPECULAR)) return unlitColour(md, base, SL_MODEL) + u_emission * s_emissive;
 #if SL_IBL || SL_ENERGY_COMPENSATION
     vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(N, V), surfaceS());
 #endif
@@ -101,7 +106,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md) {
     for (int i = SL_LIGHTS; i < u_flags.z; ++i) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
-        vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L);
+        vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i]);
         I += shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
     }
 #endif

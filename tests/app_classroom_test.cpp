@@ -239,37 +239,43 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     ViewerState s = stateOf("assets/scenes/default.json");
     applyProgression(s, 3);
     setModel(s, ShadingModel::BlinnPhong);
-    EXPECT_EQ(imageCaption(s), "Blinn-Phong  \xc2\xb7  ambient + diffuse + specular  \xc2\xb7  raster");
+    EXPECT_EQ(imageCaption(s), "Blinn-Phong  \xc2\xb7  step 3: ambient + diffuse + specular  \xc2\xb7  raster");
     setNormalized(s, true);
     setMode(s, ViewMode::Split);
     EXPECT_EQ(imageCaption(s),
-              "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular  \xc2\xb7  raster | reference");
+              "normalised Blinn-Phong  \xc2\xb7  step 3: ambient + diffuse + specular  \xc2\xb7  raster | reference");
     applyProgression(s, 5);
-    EXPECT_EQ(termsCaption(s.scene.terms), "ambient + diffuse + specular + shadows + reflections");
+    EXPECT_EQ(termsCaption(s.scene.terms), "step 5: ambient + diffuse + specular + shadows + reflections");
     // Global: the path tracer has no ambient term, whatever its switch says; Local | Global's left side does.
     setMode(s, ViewMode::Global);
     EXPECT_EQ(imageCaption(s),
-              "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
+              "normalised Blinn-Phong  \xc2\xb7  step 5: diffuse + specular + shadows + reflections  \xc2\xb7  "
               "global illumination (path traced)  \xc2\xb7  first sample");
     // The samples and the noise (none measured from one sample), and the denoised preview says so, in the
     // Global modes only (the raster modes have nothing to denoise).
     EXPECT_NE(imageCaption(s, GlobalCaption{1, 0.0, false}).find("\xc2\xb7  1 sample, noise -"), std::string::npos);
     EXPECT_EQ(imageCaption(s, GlobalCaption{16, 2.14, true}),
-              "normalised Blinn-Phong  \xc2\xb7  diffuse + specular + shadows + reflections  \xc2\xb7  "
+              "normalised Blinn-Phong  \xc2\xb7  step 5: diffuse + specular + shadows + reflections  \xc2\xb7  "
               "global illumination (path traced)  \xc2\xb7  16 samples, noise 2.1/255  \xc2\xb7  denoised");
     setGlobalPart(s, trace::PathPart::Indirect);
     EXPECT_NE(imageCaption(s).find("indirect light only"), std::string::npos);
     setMode(s, ViewMode::LocalGlobal);
     EXPECT_EQ(imageCaption(s),
-              "normalised Blinn-Phong  \xc2\xb7  ambient + diffuse + specular + shadows + reflections  "
+              "normalised Blinn-Phong  \xc2\xb7  step 5: ambient + diffuse + specular + shadows + reflections  "
               "\xc2\xb7  local (raster) | global (path traced)  \xc2\xb7  first sample");
-    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
-        setTerm(s, t, false);
-    EXPECT_EQ(termsCaption(s.scene.terms), "nothing");
     EXPECT_NE(
         imageCaption(s, GlobalCaption{4, 3.0, true})
             .find("local (raster) | global (path traced)  \xc2\xb7  4 samples, noise 3.0/255  \xc2\xb7  denoised"),
         std::string::npos);
+    for (Term t : {Term::Ambient, Term::Diffuse, Term::Specular, Term::Shadows, Term::Reflections})
+        setTerm(s, t, false);
+    EXPECT_EQ(termsCaption(s.scene.terms), "step 0: no illumination");
+    setTerm(s, Term::Shadows, true);  // not a step, and still no light term on
+    EXPECT_EQ(termsCaption(s.scene.terms), "no illumination, shadows");
+    setTerm(s, Term::Shadows, false);
+    setTerm(s, Term::Diffuse, true);  // not a step either
+    EXPECT_EQ(termsCaption(s.scene.terms), "diffuse");
+    setTerm(s, Term::Diffuse, false);
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
     // A display that is not Standard is named at the end (not in Difference, which shows the raw values).
@@ -328,6 +334,52 @@ TEST(AppLightMarkers, DirectionalLightPointsFromItsMarkerToTheSceneCentre) {
     s.scene.lights = {turned};
     const LightMarker after = lightMarkers(s.scene, w, h)[0];
     EXPECT_NEAR(after.pixel.x, m.pixel.x - 50.0f, 0.5f) << "the marker follows the pointer";
+}
+
+// A spot light added in the viewer aims at the scene's centre; its marker sits at its position with an arrow
+// along its axis; dragging the disc moves the position under the pointer and keeps the aim, dragging the arrow's
+// tip aims it.
+TEST(AppLightMarkers, SpotLightMarkerDragsItsPositionAndKeepsItsAim) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    s.scene.lights.clear();
+    const int i = addLight(s, LightType::Spot);
+    ASSERT_EQ(i, 0);
+    Light spot = s.scene.lights[0];
+    EXPECT_EQ(spot.type, LightType::Spot);
+    const Bounds b = sceneBounds(s.scene);
+    EXPECT_GT(glm::dot(spot.direction, glm::normalize(0.5f * (b.lo + b.hi) - spot.position)), 0.999f);
+    spot.position = glm::vec3(-2.0f, 2.5f, 2.0f);  // in the frame
+    ASSERT_TRUE(setLight(s, 0, spot));
+    const int w = 320, h = 180;
+    const LightMarker m = lightMarkers(s.scene, w, h)[0];
+    ASSERT_FALSE(m.clamped);
+    EXPECT_GT(glm::length(m.arrowTip - m.pixel), 1.0f) << "a spot's marker shows its axis";
+    const glm::vec2 target = m.pixel + glm::vec2(40.0f, 10.0f);
+    const Light moved = draggedLight(s.scene, w, h, 0, target);
+    EXPECT_EQ(moved.direction, spot.direction);
+    EXPECT_GT(glm::length(moved.position - spot.position), 0.1f);
+    ASSERT_TRUE(setLight(s, 0, moved));
+    const LightMarker after = lightMarkers(s.scene, w, h)[0];
+    EXPECT_NEAR(after.pixel.x, target.x, 1e-2f);
+    EXPECT_NEAR(after.pixel.y, target.y, 1e-2f);
+
+    // The arrow's tip is the aiming handle: dragged, the spot turns toward the pointer and stays where it is.
+    const std::vector<LightMarker> markers = lightMarkers(s.scene, w, h);
+    EXPECT_EQ(aimHandleAt(s.scene, markers, after.arrowTip + glm::vec2(1.0f, -1.0f), 8.0f), 0);
+    EXPECT_EQ(aimHandleAt(s.scene, markers, after.arrowTip + glm::vec2(30.0f, 0.0f), 8.0f), -1) << "too far";
+    const glm::vec2 aimAt = after.arrowTip + glm::vec2(-30.0f, 20.0f);
+    const Light aimed = aimedSpot(s.scene, w, h, 0, aimAt);
+    EXPECT_EQ(aimed.position, moved.position);
+    EXPECT_NEAR(glm::length(aimed.direction), 1.0f, 1e-5f);
+    EXPECT_GT(glm::length(aimed.direction - moved.direction), 0.05f);
+    ASSERT_TRUE(setLight(s, 0, aimed));
+    const LightMarker turned = lightMarkers(s.scene, w, h)[0];
+    // The arrow keeps its length in the world, so on screen it points from the disc toward the pointer.
+    const glm::vec2 arrow = glm::normalize(turned.arrowTip - turned.pixel);
+    EXPECT_GT(glm::dot(arrow, glm::normalize(aimAt - turned.pixel)), 0.9999f) << "the arrow points at the pointer";
+    // Negative control: a point light has no aiming handle.
+    s.scene.lights[0].type = LightType::Point;
+    EXPECT_EQ(aimHandleAt(s.scene, lightMarkers(s.scene, w, h), turned.arrowTip, 8.0f), -1);
 }
 
 TEST(AppProbeDiagram, EveryVectorIsDrawnFullLengthAtItsAngleFromN) {

@@ -104,8 +104,10 @@ TEST(AppScript, ActionsAreParsedOnceIntoTypedFields) {
               "global or local-global");
     EXPECT_EQ(parseError(R"([{"action": "setEncoding", "encoding": "gamma"}])"),
               "actions.json: actions[0].encoding: unknown encoding 'gamma'; expected srgb or linear");
-    EXPECT_EQ(parseError(R"([{"action": "addLight", "type": "spot"}])"),
-              "actions.json: actions[0].type: unknown light type 'spot'; expected point or directional");
+    EXPECT_EQ(parseError(R"([{"action": "addLight", "type": "area"}])"),
+              "actions.json: actions[0].type: unknown light type 'area'; expected point, directional or spot");
+    EXPECT_EQ(parseError(R"([{"action": "addLight", "type": "spot", "outerConeAngle": 2}])"),
+              "actions.json: actions[0].outerConeAngle: must be in [0, 1.5708], got 2");
 }
 
 TEST(AppScript, SetRasterChangesOnlyTheFieldsGiven) {
@@ -198,6 +200,41 @@ TEST(AppScript, SetGlobalChangesOnlyTheFieldsGiven) {
               "actions.json: actions[0].denoise: expected true or false, got number");
     EXPECT_EQ(parseError(R"([{"action": "setGlobal", "lightPaths": "some"}])"),
               "actions.json: actions[0].lightPaths: unknown light paths 'some'; expected all, direct or indirect");
+}
+
+// A spot light added and re-aimed by script, its cone and range read as the scene file reads them; an inner
+// angle past the outer one is refused at the action's field and leaves the lights as they were.
+TEST(AppScript, SpotLightsAreAddedAndEditedWithTheirCones) {
+    ViewerState s = defaultState();
+    const size_t before = s.scene.lights.size();
+    const Script sc = parse(R"([{"action": "addLight", "type": "spot", "position": [0, 4, 0],
+        "direction": [0, -1, 0], "innerConeAngle": 0.2, "outerConeAngle": 0.4, "range": 6},
+        {"action": "setLight", "index": 0, "outerConeAngle": 0.5},
+        {"action": "setLight", "index": 0, "innerConeAngle": 0.9},
+        {"action": "addLight", "type": "spot", "innerConeAngle": 1.0}])");
+    ASSERT_EQ(sc.actions.size(), 4u);
+    applyScriptAction(s, sc.actions[0], sc.file);
+    ASSERT_EQ(s.scene.lights.size(), before + 1);
+    const Light& spot = s.scene.lights.back();
+    EXPECT_EQ(spot.type, LightType::Spot);
+    EXPECT_EQ(spot.position, glm::vec3(0, 4, 0));
+    EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.2f);
+    EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.4f);
+    EXPECT_FLOAT_EQ(spot.range, 6.0f);
+    std::swap(s.scene.lights.front(), s.scene.lights.back());  // the spot is light 0 for the setLight actions
+    applyScriptAction(s, sc.actions[1], sc.file);
+    EXPECT_FLOAT_EQ(s.scene.lights[0].outerConeAngle, 0.5f);
+    try {
+        applyScriptAction(s, sc.actions[2], sc.file);
+        FAIL() << "an inner angle past the outer one was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("actions[2].innerConeAngle: must not exceed outerConeAngle"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_FLOAT_EQ(s.scene.lights[0].innerConeAngle, 0.2f);
+    EXPECT_THROW(applyScriptAction(s, sc.actions[3], sc.file), InputError);  // 1.0 past the default π/4
+    EXPECT_EQ(s.scene.lights.size(), before + 1) << "a refused addLight left a light behind";
 }
 
 // setDisplay: each field given changes the scene's display and the rest stay; an edit undo steps over (not a

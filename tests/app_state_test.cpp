@@ -64,19 +64,20 @@ TEST(AppState, TermsToggleOneAtATime) {
 
 TEST(AppState, ProgressionStepsAreTheLecturesOrder) {
     ViewerState s = defaultState();
-    const bool expected[5][5] = {{1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 1, 1, 0, 0}, {1, 1, 1, 1, 0}, {1, 1, 1, 1, 1}};
-    for (int step = 1; step <= 5; ++step) {
+    const bool expected[6][5] = {{0, 0, 0, 0, 0}, {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0},
+                                 {1, 1, 1, 0, 0}, {1, 1, 1, 1, 0}, {1, 1, 1, 1, 1}};
+    for (int step = 0; step <= 5; ++step) {
         applyProgression(s, step);
         const Terms& t = s.scene.terms;
-        EXPECT_EQ(t.ambient, expected[step - 1][0]);
-        EXPECT_EQ(t.diffuse, expected[step - 1][1]);
-        EXPECT_EQ(t.specular, expected[step - 1][2]);
-        EXPECT_EQ(t.shadows, expected[step - 1][3]);
-        EXPECT_EQ(t.reflections, expected[step - 1][4]);
+        EXPECT_EQ(t.ambient, expected[step][0]);
+        EXPECT_EQ(t.diffuse, expected[step][1]);
+        EXPECT_EQ(t.specular, expected[step][2]);
+        EXPECT_EQ(t.shadows, expected[step][3]);
+        EXPECT_EQ(t.reflections, expected[step][4]);
         EXPECT_EQ(progressionStep(t), step);
     }
     setTerm(s, Term::Ambient, false);  // all but ambient: not a step
-    EXPECT_EQ(progressionStep(s.scene.terms), 0);
+    EXPECT_EQ(progressionStep(s.scene.terms), -1);
 }
 
 TEST(AppState, ModelSwitchAndEquivalentExponentConversion) {

@@ -3,6 +3,7 @@
 // vis_l equal what the Whitted integrator computes for the same primary ray. The oracle below is the
 // tracer's own API, not the probe's code; a probe with its own intersector or shadow-ray origin fails it.
 #include "probe/probe.h"
+#include "scene/light_at.h"
 #include "scene/scene_load.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
@@ -45,8 +46,7 @@ Expected reference(const trace::TraceScene& ts, int x, int y) {
     e.id = ts.coverageId(*hit);
     e.P = s.P;
     for (const Light& l : scene.lights) {
-        const bool isPoint = l.type == LightType::Point;
-        const glm::vec3 L = shading::lightVector(isPoint ? l.position : l.direction, isPoint, s.P);
+        const glm::vec3 L = lightAt(l, s.P).L;
         e.visibility.push_back(glm::dot(s.N, L) > 0.0f ? integrator.visibility(s, l) : 1.0f);
     }
     return e;

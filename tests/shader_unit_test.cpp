@@ -45,6 +45,7 @@ struct Case {
     float s;  // pbr: roughness
     int model;
     float metallic = 0.0f;
+    float w = 0.0f;  // params.w: the spot kernel's range
 };
 
 // Random N and L; odd cases a random V, even ones V near the mirror direction, where the highlight is and
@@ -84,7 +85,7 @@ ImageF runProbe(const std::vector<Case>& cases, const glm::vec3& Il, const glm::
         n.emplace_back(c.N, 0.0f);
         l.emplace_back(c.L, 0.0f);
         v.emplace_back(c.V, 0.0f);
-        params.emplace_back(c.s, float(c.model), c.metallic, 0.0f);
+        params.emplace_back(c.s, float(c.model), c.metallic, c.w);
     }
     gl::Program program = gl::Program::build(gl::ShaderLibrary(), "fullscreen.vert", "lighting_probe.frag");
     gl::Texture tn = floatTexture(n), tl = floatTexture(l), tv = floatTexture(v), tp = floatTexture(params);
@@ -159,6 +160,92 @@ TEST_F(ShaderUnitTest, GlslLightingEqualsCppOverSweep) {
         if (std::abs(gpu[0] - cpu.x) > tol) ++noticed;
     }
     EXPECT_GT(noticed, int(cases.size()) / 10) << "a 10% shininess change went unnoticed: the test cannot fail";
+}
+
+namespace {
+
+// A spot light's arriving intensity (lightIntensityAt with a cone and a range), over directions inside, across
+// and outside cones of random angles, and distances inside and beyond random ranges. The case's N is the spot's
+// direction, V its attenuation; s and metallic carry the cone's scale and offset, model 3 selects the kernel.
+struct SpotCase {
+    glm::vec3 spotDir, L, attenuation;
+    glm::vec2 cone;
+    float range;
+};
+
+std::vector<SpotCase> makeSpotCases() {
+    std::mt19937 rng(20261202);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<SpotCase> cases;
+    for (int i = 0; i < kW * kH; ++i) {
+        SpotCase c{};
+        c.spotDir = randomDirection(rng);
+        const float outer = 1.5707963f * unit(rng);
+        const float inner = i % 7 == 0 ? outer : outer * unit(rng);  // every 7th a hard edge
+        c.cone = shading::spotConeScaleOffset(inner, outer);
+        // The way from the light to the point at an angle from the axis around the cone's edge.
+        const float angle = outer * 2.0f * unit(rng);
+        glm::vec3 side = glm::cross(glm::normalize(c.spotDir), randomDirection(rng));
+        side = glm::length(side) > 1e-4f ? glm::normalize(side) : glm::vec3(1, 0, 0);
+        const glm::vec3 toPoint = std::cos(angle) * glm::normalize(c.spotDir) + std::sin(angle) * side;
+        const float d = 0.1f + 10.0f * unit(rng);
+        c.L = -d * toPoint;
+        c.attenuation = i % 3 == 0 ? glm::vec3(1, 0, 0) : glm::vec3(1.0f, unit(rng), unit(rng));
+        c.range = i % 4 == 0 ? 0.0f : 12.0f * unit(rng) + 0.1f;
+        cases.push_back(c);
+    }
+    return cases;
+}
+
+}  // namespace
+
+TEST_F(ShaderUnitTest, GlslSpotIntensityEqualsCpp) {
+    const std::vector<SpotCase> spots = makeSpotCases();
+    std::vector<Case> cases;
+    for (const SpotCase& s : spots) {
+        cases.push_back(Case{s.spotDir, s.L, s.attenuation, s.cone.x, 3, s.cone.y, s.range});
+    }
+    const glm::vec3 Il(1.0f, 0.7f, 0.3f);
+    const ImageF result = runProbe(cases, Il, glm::vec3(0.0f), glm::vec3(0.0f));
+    const float tol = 1e-4f;
+    int failures = 0, inside = 0, edge = 0, outside = 0, noticed = 0;
+    float worst = 0.0f;
+    std::ofstream report(test::outputPath("shader_unit_spot.csv"));
+    report << "index,gpu_r,cpu_r,gpu_cone,cpu_cone,cone_scale\n";
+    for (size_t i = 0; i < spots.size(); ++i) {
+        const SpotCase& s = spots[i];
+        const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
+        const glm::vec4 cone(s.cone.x, s.cone.y, s.range, 1.0f);
+        const glm::vec3 cpu = shading::lightIntensityAt(Il, true, s.attenuation, s.L, s.spotDir, cone);
+        const float cpuCone = shading::spotAttenuation(s.spotDir, s.L, s.cone);
+        // The cone factor's slope in cd is 2·a·scale: the GPU's and the CPU's cd, each a dot of normalised
+        // vectors, differ by a few ulps (4 · 2^-24 allowed), which a narrow cone's large scale multiplies.
+        const float allowed = tol + 2.0f * s.cone.x * 4.0f * 5.96e-8f;
+        const float err = std::max(
+            {std::abs(gpu[0] - cpu.x), std::abs(gpu[1] - cpu.y), std::abs(gpu[2] - cpu.z), std::abs(gpu[3] - cpuCone)});
+        report << i << ',' << gpu[0] << ',' << cpu.x << ',' << gpu[3] << ',' << cpuCone << ',' << s.cone.x << '\n';
+        worst = std::max(worst, err / allowed);
+        if (err > allowed) ++failures;
+        (cpuCone >= 1.0f ? inside : cpuCone <= 0.0f ? outside : edge) += 1;
+        // Negative control: the outer angle widened by 0.05 rad must change the cone where it is not 0 or 1.
+        const float cosOuter = -s.cone.y / s.cone.x;
+        const float cosInner = cosOuter + 1.0f / s.cone.x;
+        const float outer = std::acos(std::clamp(cosOuter, -1.0f, 1.0f));
+        const float inner = std::acos(std::clamp(cosInner, -1.0f, 1.0f));
+        const float wider =
+            shading::spotAttenuation(s.spotDir, s.L, shading::spotConeScaleOffset(inner, outer + 0.05f));
+        if (std::abs(gpu[3] - wider) > tol) ++noticed;
+    }
+    std::printf(
+        "spot sweep: %zu cases (%d inside, %d across the edge, %d outside), worst |GLSL - C++| %.2f of "
+        "its allowance\n",
+        spots.size(), inside, edge, outside, worst);
+    EXPECT_EQ(failures, 0) << "worst error " << worst << " of its allowance; all values in "
+                           << test::outputPath("shader_unit_spot.csv");
+    EXPECT_GT(inside, 100);
+    EXPECT_GT(edge, 100);
+    EXPECT_GT(outside, 100);
+    EXPECT_GT(noticed, int(spots.size()) / 10) << "a wider outer cone went unnoticed: the test cannot fail";
 }
 
 namespace {

@@ -14,6 +14,22 @@ const char* globalCaption(trace::PathPart part) {
     return "global illumination (path traced)";
 }
 
+// The terms `shown` listed, named by the progression step and "no illumination" that the scene's own terms are.
+std::string stepCaption(const Terms& shown, const Terms& scene) {
+    std::string text;
+    for (const auto& entry : kTermNames) {
+        if (!termEnabled(shown, entry.value)) continue;
+        if (!text.empty()) text += " + ";
+        text += entry.name;
+    }
+    // No light term on: every surface shows its unlit colour (docs/lighting.md), whatever else is on.
+    if (!scene.ambient && !scene.diffuse && !scene.specular)
+        text = text.empty() ? "no illumination" : "no illumination, " + text;
+    if (text.empty()) text = "nothing";
+    const int step = progressionStep(scene);
+    return step >= 0 ? "step " + std::to_string(step) + ": " + text : text;
+}
+
 }  // namespace
 
 std::string modelCaption(const Scene& scene) {
@@ -41,15 +57,7 @@ WipeLabelPlacement placeWipeLabels(float visibleLeft, float visibleRight, float 
     return p;
 }
 
-std::string termsCaption(const Terms& terms) {
-    std::string text;
-    for (const auto& entry : kTermNames) {
-        if (!termEnabled(terms, entry.value)) continue;
-        if (!text.empty()) text += " + ";
-        text += entry.name;
-    }
-    return text.empty() ? "nothing" : text;
-}
+std::string termsCaption(const Terms& terms) { return stepCaption(terms, terms); }
 
 std::string imageCaption(const ViewerState& state, const GlobalCaption& global) {
     const char* mode = "";
@@ -64,7 +72,8 @@ std::string imageCaption(const ViewerState& state, const GlobalCaption& global) 
     // The path tracer leaves the ambient term out whatever its switch says (light bounces instead).
     Terms terms = state.scene.terms;
     if (state.mode == ViewMode::Global) terms.ambient = false;
-    std::string caption = modelCaption(state.scene) + "  \xc2\xb7  " + termsCaption(terms) + "  \xc2\xb7  " + mode;
+    std::string caption =
+        modelCaption(state.scene) + "  \xc2\xb7  " + stepCaption(terms, state.scene.terms) + "  \xc2\xb7  " + mode;
     if (isGlobal(state.mode)) {
         char progress[64];
         if (global.samples == 0)

@@ -28,7 +28,7 @@ SceneSphere sceneSphere(const Scene& scene) {
 }
 
 glm::vec3 anchorOf(const Light& light, const SceneSphere& sphere) {
-    if (light.type == LightType::Point) return light.position;
+    if (light.positional()) return light.position;
     return sphere.center - glm::normalize(light.direction) * (1.2f * sphere.radius);
 }
 
@@ -64,7 +64,7 @@ std::vector<LightMarker> lightMarkers(const Scene& scene, int width, int height)
             m.visible = true;
         }
         m.arrowTip = m.pixel;
-        if (light.type == LightType::Directional) {
+        if (light.type != LightType::Point) {  // directional and spot lights: an arrow along their light
             glm::vec2 tip;
             const glm::vec3 toward = m.anchor + glm::normalize(light.direction) * (0.35f * sphere.radius);
             if (project(v, toward, tip)) m.arrowTip = tip;
@@ -88,23 +88,58 @@ int markerAt(const std::vector<LightMarker>& markers, glm::vec2 pixel, float rad
     return best;
 }
 
+namespace {
+
+// The camera ray through the pixel (the renderers' own formula), met with the plane through `through` that
+// faces the camera; false when the ray runs parallel to it or meets it behind the eye.
+bool underPointer(const ViewSetup& v, int width, int height, glm::vec2 pixel, const glm::vec3& through, glm::vec3& dir,
+                  glm::vec3& point) {
+    const float aspect = float(width) / float(height);
+    const float x = (2.0f * pixel.x / float(width) - 1.0f) * v.tanHalfFovY * aspect;
+    const float y = (1.0f - 2.0f * pixel.y / float(height)) * v.tanHalfFovY;
+    dir = glm::normalize(v.forward + x * v.right + y * v.up);
+    const float along = glm::dot(dir, v.forward);
+    if (along <= 1e-4f) return false;
+    const float t = glm::dot(through - v.eye, v.forward) / along;
+    if (!(t > 0.0f)) return false;
+    point = v.eye + t * dir;
+    return true;
+}
+
+}  // namespace
+
+int aimHandleAt(const Scene& scene, const std::vector<LightMarker>& markers, glm::vec2 pixel, float radius) {
+    int best = -1;
+    float bestDistance = radius;
+    for (const LightMarker& m : markers) {
+        if (!m.visible || m.clamped || size_t(m.light) >= scene.lights.size()) continue;
+        if (scene.lights[size_t(m.light)].type != LightType::Spot) continue;
+        const float d = glm::length(m.arrowTip - pixel);
+        if (d <= bestDistance) best = m.light, bestDistance = d;
+    }
+    return best;
+}
+
+Light aimedSpot(const Scene& scene, int width, int height, int index, glm::vec2 pixel) {
+    Light light = scene.lights.at(size_t(index));
+    if (light.type != LightType::Spot) return light;
+    const ViewSetup v = makeViewSetup(scene, width, height);
+    const glm::vec3 tip = light.position + glm::normalize(light.direction) * (0.35f * sceneSphere(scene).radius);
+    glm::vec3 dir, point;
+    if (!underPointer(v, width, height, pixel, tip, dir, point)) return light;
+    const glm::vec3 d = point - light.position;
+    if (glm::length(d) > 1e-6f) light.direction = glm::normalize(d);
+    return light;
+}
+
 Light draggedLight(const Scene& scene, int width, int height, int index, glm::vec2 pixel) {
     Light light = scene.lights.at(size_t(index));
     const ViewSetup v = makeViewSetup(scene, width, height);
     const SceneSphere sphere = sceneSphere(scene);
     const glm::vec3 anchor = anchorOf(light, sphere);
-    // The camera ray through the pixel (the renderers' own formula), met with the plane through the anchor
-    // that faces the camera.
-    const float aspect = float(width) / float(height);
-    const float x = (2.0f * pixel.x / float(width) - 1.0f) * v.tanHalfFovY * aspect;
-    const float y = (1.0f - 2.0f * pixel.y / float(height)) * v.tanHalfFovY;
-    const glm::vec3 dir = glm::normalize(v.forward + x * v.right + y * v.up);
-    const float along = glm::dot(dir, v.forward);
-    if (along <= 1e-4f) return light;  // parallel to the plane: leave it
-    const float t = glm::dot(anchor - v.eye, v.forward) / along;
-    if (!(t > 0.0f)) return light;
-    const glm::vec3 moved = v.eye + t * dir;
-    if (light.type == LightType::Point) {
+    glm::vec3 dir, moved;
+    if (!underPointer(v, width, height, pixel, anchor, dir, moved)) return light;  // parallel, or behind: leave it
+    if (light.positional()) {  // a spot keeps its direction: dragging moves it, the Lights panel aims it
         light.position = moved;
         return light;
     }

@@ -22,7 +22,7 @@ struct LightMarker {
     bool visible = false;      // drawn: always, a light behind the camera at the edge toward it
     glm::vec3 anchor{0.0f};    // world point the marker stands for
     glm::vec2 pixel{0.0f};     // image pixels (x right, y down, pixel centres at .5)
-    glm::vec2 arrowTip{0.0f};  // directional lights: where the arrow points (image pixels)
+    glm::vec2 arrowTip{0.0f};  // directional and spot lights: where the arrow points (image pixels)
     // Where the marker is drawn and grabbed: `pixel`, or for a light outside the image (the default scene's
     // lights are above the frame), the nearest point kMarkerInset pixels inside the image's edge.
     glm::vec2 shown{0.0f};
@@ -36,5 +36,10 @@ std::vector<LightMarker> lightMarkers(const Scene& scene, int width, int height)
 int markerAt(const std::vector<LightMarker>& markers, glm::vec2 pixel, float radius);
 // Light `index` after its marker is dragged to `pixel` of a width x height image.
 Light draggedLight(const Scene& scene, int width, int height, int index, glm::vec2 pixel);
+// The spot light whose arrow tip (a marker in the frame) lies within `radius` pixels of `pixel`, the nearest; -1
+// when none. Grabbing the tip aims the spot, grabbing the disc moves it.
+int aimHandleAt(const Scene& scene, const std::vector<LightMarker>& markers, glm::vec2 pixel, float radius);
+// Spot light `index` aimed at the point under `pixel` in the plane through its arrow's tip that faces the camera.
+Light aimedSpot(const Scene& scene, int width, int height, int index, glm::vec2 pixel);
 
 }  // namespace shadelab::app

@@ -75,14 +75,14 @@ void drawLightingSection(PanelContext& ctx) {
     ImGui::TextWrapped("raster: shadow maps, mirror planes, environment cubes; transmission (kt): reference only");
     ImGui::PopStyleColor();
 
-    ImGui::TextDisabled("Progression (keys 1-5)");
-    const char* labels[] = {"1 ambient", "2 +diffuse", "3 +specular", "4 +shadows", "5 +reflections"};
+    ImGui::TextDisabled("Progression (keys 0-5)");
+    const char* labels[] = {"0 unlit", "1 ambient", "2 +diffuse", "3 +specular", "4 +shadows", "5 +reflections"};
     const int current = progressionStep(s.scene.terms);
-    for (int step = 1; step <= kProgressionSteps; ++step) {
-        if (step != 1 && step != 4) ImGui::SameLine();
+    for (int step = 0; step <= kProgressionSteps; ++step) {
+        if (step != 0 && step != 3) ImGui::SameLine();
         const bool active = step == current;
         if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(labels[step - 1])) applyProgression(s, step);
+        if (ImGui::Button(labels[step])) applyProgression(s, step);
         if (active) ImGui::PopStyleColor();
     }
 

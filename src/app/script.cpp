@@ -117,7 +117,7 @@ const ActionInfo kActions[] = {
      [](const JsonNode& a) -> Action { return ToggleTerm{a.child("term").oneOf(kTermNames, "term")}; }},
     {"progression",
      {"step"},
-     [](const JsonNode& a) -> Action { return Progression{a.child("step").integerIn(1, kProgressionSteps)}; }},
+     [](const JsonNode& a) -> Action { return Progression{a.child("step").integerIn(0, kProgressionSteps)}; }},
     {"setModel",
      {"model"},
      [](const JsonNode& a) -> Action { return SetModel{a.child("model").oneOf(kShadingModelNames, "shading model")}; }},
@@ -161,7 +161,7 @@ const ActionInfo kActions[] = {
      {"shadowMapSize", "depthBias", "normalBias", "pcf", "reflectionCubeSize", "movingPreview"},
      [](const JsonNode& a) -> Action { return SetRaster{parseRasterOverride(a)}; }},
     {"addLight",
-     {"type", "position", "direction", "color"},
+     {"type", "position", "direction", "color", "innerConeAngle", "outerConeAngle", "range"},
      [](const JsonNode& a) -> Action {
          const LightType type = a.has("type") ? a.child("type").oneOf(kLightTypeNames, "light type") : LightType::Point;
          return AddLight{type, parseLightOverride(a)};
@@ -170,7 +170,7 @@ const ActionInfo kActions[] = {
      {"index"},
      [](const JsonNode& a) -> Action { return RemoveLight{a.child("index").integerIn(0, kMaxLights - 1)}; }},
     {"setLight",
-     {"index", "position", "direction", "color"},
+     {"index", "position", "direction", "color", "innerConeAngle", "outerConeAngle", "range"},
      [](const JsonNode& a) -> Action {
          return SetLight{a.child("index").integerIn(0, kMaxLights - 1), parseLightOverride(a)};
      }},
@@ -291,6 +291,10 @@ struct StateApplier {
         setRasterSettings(state, r);
     }
     void operator()(const AddLight& x) const {
+        // A new light has the default cone: checked before it is added, so a refused action adds nothing.
+        const float outer = x.light.outerConeAngle.value_or(kDefaultOuterConeAngle);
+        if (x.light.innerConeAngle.value_or(kDefaultInnerConeAngle) > outer)
+            failAction(file, a, "innerConeAngle", "must not exceed outerConeAngle (" + std::to_string(outer) + ")");
         const int i = addLight(state, x.type);
         if (i < 0) failAction(file, a, "", "the scene already has " + std::to_string(kMaxLights) + " lights");
         Light l = state.scene.lights[size_t(i)];
@@ -305,6 +309,9 @@ struct StateApplier {
         requireLight(x.index);
         Light l = state.scene.lights[size_t(x.index)];
         x.light.applyTo(l);
+        if (l.innerConeAngle > l.outerConeAngle)
+            failAction(file, a, "innerConeAngle",
+                       "must not exceed outerConeAngle (" + std::to_string(l.outerConeAngle) + ")");
         setLight(state, x.index, l);
     }
     void operator()(const Orbit& x) const {

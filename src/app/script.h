@@ -46,7 +46,7 @@ struct ToggleTerm {
 };
 struct Progression {
     int step = 1;
-};  // 1..kProgressionSteps
+};  // 0..kProgressionSteps
 struct SetModel {
     ShadingModel model = ShadingModel::Phong;
 };

@@ -427,7 +427,7 @@ void Viewer::drawLightMarkers() {
             const ImVec2 base(at.x + d.x * (r + 2.0f * uiScale_), at.y + d.y * (r + 2.0f * uiScale_));
             dl->AddTriangleFilled(p0, ImVec2(base.x + side.x, base.y + side.y),
                                   ImVec2(base.x - side.x, base.y - side.y), IM_COL32(255, 255, 255, 220));
-        } else if (light.type == LightType::Directional) {
+        } else if (light.type != LightType::Point) {  // directional and spot: an arrow along the light
             const ImVec2 tip = windowPoint(m.arrowTip);
             dl->AddLine(at, tip, IM_COL32(0, 0, 0, 200), 4.0f * uiScale_);
             dl->AddLine(at, tip, fill, 2.0f * uiScale_);

@@ -161,6 +161,7 @@ private:
     // Input.
     static constexpr float kMarkerPickRadius = 12.0f;  // window units at UI scale 1
     int draggingLight_ = -1;                           // a light marker being dragged
+    bool aimingLight_ = false;                         // ... by a spot's arrow tip: the drag aims it
     bool leftDown_ = false, dragged_ = false, panning_ = false, splitting_ = false;
     float pressX_ = 0, pressY_ = 0;
     std::vector<std::string> drops_;

@@ -73,12 +73,18 @@ void Viewer::handleMouse() {
     const ImVec2 m = io.MousePos;
     const bool overImage = m.x >= imageX_ && m.x < imageX_ + imageW_ && m.y >= imageY_ && m.y < imageY_ + imageH_;
     if (!io.WantCaptureMouse && overImage) {
-        const int marker =
-            fields_.lightMarkers && ImGui::IsMouseClicked(0)
-                ? markerAt(lightMarkers(state_.scene, renderW_, renderH_), imagePixelF(m.x, m.y), markerPickRadius())
-                : -1;
+        int marker = -1;
+        if (fields_.lightMarkers && ImGui::IsMouseClicked(0)) {
+            // A spot's arrow tip aims it (unless its own disc is under the pointer too); elsewhere a light's
+            // marker moves the light, not the camera.
+            const std::vector<LightMarker> markers = lightMarkers(state_.scene, renderW_, renderH_);
+            const glm::vec2 at = imagePixelF(m.x, m.y);
+            marker = aimHandleAt(state_.scene, markers, at, markerPickRadius());
+            aimingLight_ = marker >= 0 && markerAt(markers, at, markerPickRadius()) != marker;
+            if (!aimingLight_) marker = markerAt(markers, at, markerPickRadius());
+        }
         if (marker >= 0) {
-            draggingLight_ = marker;  // a drag on a light's marker moves the light, not the camera
+            draggingLight_ = marker;
         } else if (ImGui::IsMouseClicked(0)) {
             leftDown_ = true;
             dragged_ = false;
@@ -98,8 +104,10 @@ void Viewer::handleMouse() {
         if (!ImGui::IsMouseDown(0) || size_t(draggingLight_) >= state_.scene.lights.size()) {
             draggingLight_ = -1;
         } else if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
+            const glm::vec2 at = imagePixelF(m.x, m.y);
             setLight(state_, draggingLight_,
-                     draggedLight(state_.scene, renderW_, renderH_, draggingLight_, imagePixelF(m.x, m.y)));
+                     aimingLight_ ? aimedSpot(state_.scene, renderW_, renderH_, draggingLight_, at)
+                                  : draggedLight(state_.scene, renderW_, renderH_, draggingLight_, at));
         }
     }
     if (leftDown_) {
@@ -155,8 +163,9 @@ void Viewer::handleKeys() {
             if (k.key == GLFW_KEY_Y) redo();
             continue;
         }
-        if (k.key >= GLFW_KEY_1 && k.key < GLFW_KEY_1 + kProgressionSteps) applyProgression(state_, k.key - GLFW_KEY_0);
-        if (k.key >= GLFW_KEY_KP_1 && k.key < GLFW_KEY_KP_1 + kProgressionSteps)
+        if (k.key >= GLFW_KEY_0 && k.key <= GLFW_KEY_0 + kProgressionSteps)
+            applyProgression(state_, k.key - GLFW_KEY_0);
+        if (k.key >= GLFW_KEY_KP_0 && k.key <= GLFW_KEY_KP_0 + kProgressionSteps)
             applyProgression(state_, k.key - GLFW_KEY_KP_0);
         switch (k.key) {
             case GLFW_KEY_F: frameAll(state_); break;

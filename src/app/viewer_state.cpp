@@ -127,8 +127,8 @@ void setTerm(ViewerState& state, Term t, bool on) {
 void toggleTerm(ViewerState& state, Term t) { setTerm(state, t, !termEnabled(state.scene.terms, t)); }
 
 Terms progressionTerms(int step) {
-    step = std::clamp(step, 1, kProgressionSteps);
-    return Terms{true, step >= 2, step >= 3, step >= 4, step >= 5};
+    step = std::clamp(step, 0, kProgressionSteps);
+    return Terms{step >= 1, step >= 2, step >= 3, step >= 4, step >= 5};
 }
 
 void applyProgression(ViewerState& state, int step) {
@@ -137,13 +137,13 @@ void applyProgression(ViewerState& state, int step) {
 }
 
 int progressionStep(const Terms& terms) {
-    for (int step = 1; step <= kProgressionSteps; ++step) {
+    for (int step = 0; step <= kProgressionSteps; ++step) {
         const Terms p = progressionTerms(step);
         if (p.ambient == terms.ambient && p.diffuse == terms.diffuse && p.specular == terms.specular &&
             p.shadows == terms.shadows && p.reflections == terms.reflections)
             return step;
     }
-    return 0;
+    return -1;
 }
 
 void setModel(ViewerState& state, ShadingModel model) {

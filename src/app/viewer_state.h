@@ -74,11 +74,12 @@ bool applyPreset(ViewerState& state, uint32_t id, const MaterialPreset& preset);
 // --- lighting model and terms (Term, termEnabled and the names: scene/terms.h) ---
 void setTerm(ViewerState& state, Term t, bool on);
 void toggleTerm(ViewerState& state, Term t);
-// The lecture's progression: step 1 ambient, 2 +diffuse, 3 +specular, 4 +shadows, 5 +reflections.
-inline constexpr int kProgressionSteps = 5;
-Terms progressionTerms(int step);  // step clamped to [1, 5]
+// The lecture's progression: step 0 no illumination (every term off: each object's unlit colour, docs/lighting.md),
+// 1 ambient, 2 +diffuse, 3 +specular, 4 +shadows, 5 +reflections.
+inline constexpr int kProgressionSteps = 5;  // the last step; the first is 0
+Terms progressionTerms(int step);            // step clamped to [0, 5]
 void applyProgression(ViewerState& state, int step);
-int progressionStep(const Terms& terms);  // 1..5 when the terms are exactly a step, else 0
+int progressionStep(const Terms& terms);  // 0..5 when the terms are exactly a step, else -1
 void setModel(ViewerState& state, ShadingModel model);
 // Energy-normalised Phong / Blinn-Phong lobes (design.md §7).
 void setNormalized(ViewerState& state, bool normalized);

@@ -2,6 +2,7 @@
 #include "probe/probe.h"
 
 #include "scene/coverage.h"
+#include "scene/light_at.h"
 #include "scene/ray_epsilon.h"
 #include "scene/view.h"
 #include "shading/local_illumination.h"
@@ -55,9 +56,9 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     // Each light: the same raw vectors the fragment shaders pass (surface.glsl), then shadeLight.
     std::vector<shading::LightSample> samples;
     for (const Light& light : scene.lights) {
-        const bool isPoint = light.type == LightType::Point;
-        const glm::vec3 Lraw = shading::lightVector(isPoint ? light.position : light.direction, isPoint, r.P);
-        const glm::vec3 Il = shading::lightIntensityAt(light.color, isPoint, light.attenuation, Lraw);
+        const LightAt at = lightAt(light, r.P);
+        const glm::vec3 Lraw = at.L;
+        const glm::vec3 Il = at.Il;
         const bool lit = glm::dot(s.N, Lraw) > 0.0f;  // the terms are 0 on the unlit side: no ray needed
         const float vis = scene.terms.shadows && lit ? integrator.visibility(s, light) : 1.0f;
         samples.push_back({Lraw, Il, vis});

@@ -2,6 +2,7 @@
 // jitter offset of the image.
 #include "raster/frame_block.h"
 
+#include "scene/light_at.h"
 #include "shading/lighting.h"
 
 #include <algorithm>
@@ -57,10 +58,11 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band, glm
     f.flags = glm::ivec4(model, terms, count, passes);
     for (int i = 0; i < count; ++i) {
         const Light& l = scene.lights[size_t(i)];
-        bool point = l.type == LightType::Point;
-        f.lightPos[i] = glm::vec4(point ? l.position : l.direction, point ? 1.0f : 0.0f);
+        f.lightPos[i] = glm::vec4(lightPosOrDir(l), l.positional() ? 1.0f : 0.0f);
         f.lightColor[i] = glm::vec4(l.color, 0.0f);
         f.lightAtten[i] = glm::vec4(l.attenuation, 0.0f);
+        f.lightSpot[i] = glm::vec4(l.direction, 0.0f);
+        f.lightCone[i] = lightCone(l);
     }
     // The environment, as src/trace/environment_light.cpp reads it.
     f.iblInfo.w = model == shading::SL_MODEL_PBR && scene.energyCompensation ? 1 : 0;

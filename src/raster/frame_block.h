@@ -26,6 +26,8 @@ struct FrameBlock {
     glm::vec4 lightPos[kMaxLights];
     glm::vec4 lightColor[kMaxLights];
     glm::vec4 lightAtten[kMaxLights];
+    glm::vec4 lightSpot[kMaxLights];              // a spot's direction of travel (xyz)
+    glm::vec4 lightCone[kMaxLights];              // lightCone(): spot scale, offset, range, spot flag
     glm::vec4 clipPlane{0.0f, 0.0f, 0.0f, 1.0f};  // mirror passes: keep dot(xyz, P) + w >= 0
     // The environment (shaders/ibl.glsl): Scene::environment and energyCompensation.
     glm::vec4 iblParams{1.0f, 1.0f, 0.0f, 0.0f};  // intensity, cos(rotation), sin(rotation), unused
@@ -40,10 +42,12 @@ static_assert(offsetof(FrameBlock, flags) == 160);
 static_assert(offsetof(FrameBlock, lightPos) == 176);
 static_assert(offsetof(FrameBlock, lightColor) == 176 + 16 * kMaxLights);
 static_assert(offsetof(FrameBlock, lightAtten) == 176 + 32 * kMaxLights);
-static_assert(offsetof(FrameBlock, clipPlane) == 176 + 48 * kMaxLights);
-static_assert(offsetof(FrameBlock, iblParams) == 192 + 48 * kMaxLights);
-static_assert(offsetof(FrameBlock, iblSH) == 240 + 48 * kMaxLights);
-static_assert(sizeof(FrameBlock) == 384 + 48 * kMaxLights);
+static_assert(offsetof(FrameBlock, lightSpot) == 176 + 48 * kMaxLights);
+static_assert(offsetof(FrameBlock, lightCone) == 176 + 64 * kMaxLights);
+static_assert(offsetof(FrameBlock, clipPlane) == 176 + 80 * kMaxLights);
+static_assert(offsetof(FrameBlock, iblParams) == 192 + 80 * kMaxLights);
+static_assert(offsetof(FrameBlock, iblSH) == 240 + 80 * kMaxLights);
+static_assert(sizeof(FrameBlock) == 384 + 80 * kMaxLights);
 
 // FrameBlock::iblInfo.x: what surrounds the scene.
 enum IblMode : int { kIblNone = 0, kIblUniform = 1, kIblMap = 2 };

@@ -35,6 +35,7 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     p.set("u_md", c.md);
     p.set("u_ms", c.ms);
     p.set("u_s", c.s);
+    p.set("u_baseColor", m.baseColor);  // pbr's unlit colour, and mesh.frag's metallic-roughness map
     p.set("u_emission", m.emission);
     p.set("u_objectId", objectId);
     p.set("u_kr", m.kr);  // planes' mirrors and objects' cubes
@@ -66,7 +67,6 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     p.set("u_tex", info, 5, gl::Program::Uniform::Required);
     p.set("u_texMatrix", matrix, 5);
     p.set("u_texOffset", offset, 5);
-    p.set("u_baseColor", m.baseColor);
     const glm::vec4 factors(m.metallic, m.roughness, normalized ? 1.0f : 0.0f, 0.0f);
     const glm::vec4 alpha(m.alpha, m.alphaCutoff, float(int(m.alphaMode)), 0.0f);
     p.set("u_mapFactors", factors);
@@ -210,6 +210,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         const glm::vec3 md2 =
             frame.flags.x == shading::SL_MODEL_PBR ? shading::pbrDiffuseColor(c.md2, p.material.metallic) : c.md2;
         planeProgram.set("u_md2", md2);
+        planeProgram.set("u_baseColor2", c.md2);
         planeProgram.set("u_checkerSize", c.size);
         glDrawArrays(GL_TRIANGLES, 0, 12);
     }

@@ -61,7 +61,11 @@ KeyBytes environmentSharedKey(const Scene& scene, const FrameBlock& frame) {
     key.add(frame.flags).add(scene.ambient).add(scene.background).add(scene.normalized);
     key.add(frame.iblParams).add(frame.iblInfo).add(frame.iblRadiance).add(frame.iblSH);
     for (int i = 0; i < frame.flags.z; ++i)
-        key.add(frame.lightPos[i]).add(frame.lightColor[i]).add(frame.lightAtten[i]);
+        key.add(frame.lightPos[i])
+            .add(frame.lightColor[i])
+            .add(frame.lightAtten[i])
+            .add(frame.lightSpot[i])
+            .add(frame.lightCone[i]);
     for (const Sphere& sp : scene.spheres) key.add(sp.center).add(sp.radius);
     for (const Plane& p : scene.planes) key.add(p.normal).add(p.offset);
     return key;

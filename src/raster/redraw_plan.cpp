@@ -60,7 +60,10 @@ KeyBytes sceneKeyWithoutMaterials(const Scene& scene) {
         k.addString(e.hdr).add(e.intensity).add(e.rotation).add(static_cast<const void*>(e.map.get()));
     }
     k.add(scene.lights.size());
-    for (const Light& l : scene.lights) k.add(l.type).add(l.position).add(l.direction).add(l.color).add(l.attenuation);
+    for (const Light& l : scene.lights) {
+        k.add(l.type).add(l.position).add(l.direction).add(l.color).add(l.attenuation);
+        k.add(l.innerConeAngle).add(l.outerConeAngle).add(l.range);
+    }
     k.add(scene.spheres.size());
     for (const Sphere& s : scene.spheres) k.add(s.center).add(s.radius);
     k.add(scene.planes.size());

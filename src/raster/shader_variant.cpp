@@ -54,7 +54,9 @@ ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shad
     v.moreLights = count > kMaxShadowedLights;
     for (int i = 0; i < v.lights; ++i) {
         v.point[size_t(i)] = frame.lightPos[i].w != 0.0f;
-        v.attenuated[size_t(i)] = v.point[size_t(i)] && glm::vec3(frame.lightAtten[i]) != glm::vec3(1.0f, 0.0f, 0.0f);
+        v.attenuated[size_t(i)] =
+            v.point[size_t(i)] && (glm::vec3(frame.lightAtten[i]) != glm::vec3(1.0f, 0.0f, 0.0f) ||
+                                   frame.lightCone[i].z != 0.0f || frame.lightCone[i].w != 0.0f);
     }
     const bool pbr = v.model == 2;  // shading::SL_MODEL_PBR
     v.ibl = pbr && (v.terms & kTermAmbient) ? frame.iblInfo.x : 0;

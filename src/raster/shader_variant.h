@@ -24,8 +24,8 @@ struct ShaderVariant {
     int terms = 0;         // TermBits
     int lights = 0;        // specialised lights: min(light count, kMaxShadowedLights)
     bool moreLights = false;
-    std::array<bool, kMaxShadowedLights> point{};       // point light (else directional)
-    std::array<bool, kMaxShadowedLights> attenuated{};  // a point light whose attenuation is not (1, 0, 0)
+    std::array<bool, kMaxShadowedLights> point{};       // point or spot light (else directional)
+    std::array<bool, kMaxShadowedLights> attenuated{};  // attenuation not (1, 0, 0), a range or a spot's cone
     std::array<int, kMaxShadowedLights> shadowKind{};   // ShadowKind of each light's map
     std::array<int, kMaxShadowedLights> planeMask{};    // planes (bits) that can block each light
     std::array<int, kMaxShadowedLights> firstLayer{};   // its first shadow-map layer

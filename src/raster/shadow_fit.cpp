@@ -20,7 +20,7 @@ glm::vec3 upFor(const glm::vec3& forward) {
 // Signed distance of a point from a plane, and the side of it a light shines from (0: in the plane).
 float side(const Plane& p, const glm::vec3& x) { return glm::dot(p.normal, x) - p.offset; }
 float lightSide(const Plane& p, const Light& l) {
-    return l.type == LightType::Point ? side(p, l.position) : -glm::dot(p.normal, l.direction);
+    return l.positional() ? side(p, l.position) : -glm::dot(p.normal, l.direction);
 }
 
 }  // namespace

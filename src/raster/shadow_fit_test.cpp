@@ -273,8 +273,7 @@ TEST(ShadowFit, CubeFaceOrderNegativeControl) {
 // plane k exactly when O and the light lie strictly on opposite sides of it.
 bool blockedByPlane(const Plane& p, const Light& l, const glm::vec3& O) {
     const float a = glm::dot(p.normal, O) - p.offset;
-    const float b =
-        l.type == LightType::Point ? glm::dot(p.normal, l.position) - p.offset : -glm::dot(p.normal, l.direction);
+    const float b = l.positional() ? glm::dot(p.normal, l.position) - p.offset : -glm::dot(p.normal, l.direction);
     return (a < 0.0f && b > 0.0f) || (a > 0.0f && b < 0.0f);
 }
 

@@ -78,14 +78,18 @@ Camera parseCamera(const JsonNode& n) {
 }
 
 Light parseLight(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys({"type", "name", "position", "direction", "color", "attenuation"});
+    n.requireObject().warnUnknownKeys(
+        {"type", "name", "position", "direction", "color", "attenuation", "innerConeAngle", "outerConeAngle", "range"});
     Light l;
     l.type = n.child("type").oneOf(kLightTypeNames, "light type");
     if (auto f = n.find("name")) l.name = f->string();
-    // Each type requires its own field (child() fails "missing required field"); the other type's is optional
+    // Each type requires its own fields (child() fails "missing required field"); the other types' are optional
     // and unused, but kept so that a saved scene loads back exactly.
-    n.child(l.type == LightType::Point ? "position" : "direction");
+    if (l.positional()) n.child("position");
+    if (l.type != LightType::Point) n.child("direction");
     parseLightOverride(n).applyTo(l);
+    if (l.innerConeAngle > l.outerConeAngle)
+        n.failAt("innerConeAngle", "must not exceed outerConeAngle (" + std::to_string(l.outerConeAngle) + ")");
     if (auto f = n.find("attenuation")) {
         f->vec3();  // shape and finiteness
         l.attenuation = {(*f)[0].nonNegative(), (*f)[1].nonNegative(), (*f)[2].nonNegative()};
@@ -214,6 +218,9 @@ LightOverride parseLightOverride(const JsonNode& n) {
     if (auto f = n.find("position")) l.position = f->vec3Within(kMaxCoordinate);
     if (auto f = n.find("direction")) l.direction = f->unitVec3();
     if (auto f = n.find("color")) l.color = f->rgbUpTo(kMaxRadiance);
+    if (auto f = n.find("innerConeAngle")) l.innerConeAngle = f->inRange(0.0f, kMaxConeAngle, false, false);
+    if (auto f = n.find("outerConeAngle")) l.outerConeAngle = f->inRange(0.0f, kMaxConeAngle, false, false);
+    if (auto f = n.find("range")) l.range = f->positive();
     return l;
 }
 
@@ -433,6 +440,14 @@ std::string sceneToJson(const Scene& scene) {
                           {"direction", vec(l.direction)},
                           {"color", vec(l.color)},
                           {"attenuation", vec(l.attenuation)}});
+        // The cone is written for a spot light, or where another type keeps one it was given; absent range: none.
+        OJson& saved = lights.back();
+        if (l.type == LightType::Spot || l.innerConeAngle != kDefaultInnerConeAngle ||
+            l.outerConeAngle != kDefaultOuterConeAngle) {
+            saved["innerConeAngle"] = exact(l.innerConeAngle);
+            saved["outerConeAngle"] = exact(l.outerConeAngle);
+        }
+        if (l.range > 0.0f) saved["range"] = exact(l.range);
     }
     doc["lights"] = lights;
 

@@ -22,7 +22,7 @@ Scene parseSceneDocument(const JsonNode& root);
 // both accept the same values and word errors alike (the "raster" reader is raster_override.h's). Each reads
 // whichever of its fields object `n` holds; other keys are the caller's to warn about or refuse.
 MaterialOverride parseMaterialOverride(const JsonNode& n);  // ma md ms s kr kt ior baseColor metallic roughness
-LightOverride parseLightOverride(const JsonNode& n);        // "position", "direction", "color"
+LightOverride parseLightOverride(const JsonNode& n);        // "position", "direction", "color", the cone, "range"
 
 // Serialises every described field (not imported geometry). parse(save(s)) == s, field by field.
 std::string sceneToJson(const Scene& scene);

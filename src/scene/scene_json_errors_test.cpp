@@ -33,6 +33,7 @@ TEST(SceneJson, ErrorsNameThePathAndTheReason) {
     const std::string mesh = R"({"objects": [{"type": "mesh", "source": "m.glb", )";
     const std::string ball = R"({"objects": [{"type": "sphere", )";
     const std::string light = R"({"lights": [{"type": "point", "position": [0, 1, 0], )";
+    const std::string spot = R"({"lights": [{"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], )";
     const std::string dirLight = R"({"lights": [{"type": "directional", "direction": [0, -1, 0], )";
     std::string threeLights = R"({"lights": [{"type": "point", "position": [0, 1, 0]},
         {"type": "directional", "direction": [0, -1, 0]}, {"type": "point", "position": [0, 1, 0], "color": [1, 1]}]})";
@@ -66,8 +67,20 @@ TEST(SceneJson, ErrorsNameThePathAndTheReason) {
         {R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})", {"camera.up", "parallel"}},
         {R"({"camera": {"up": [0, 0, 0]}})", {"camera.up", "must be non-zero"}},
         {R"({"camera": null})", {"camera", "expected an object, got null"}},
-        {R"({"lights": [{"type": "spot", "position": [0, 1, 0]}]})",
-         {"lights[0].type", "unknown light type 'spot'; expected point or directional"}},
+        {R"({"lights": [{"type": "area", "position": [0, 1, 0]}]})",
+         {"lights[0].type", "unknown light type 'area'; expected point, directional or spot"}},
+        {R"({"lights": [{"type": "spot", "position": [0, 1, 0]}]})", {"lights[0].direction", "missing required field"}},
+        {R"({"lights": [{"type": "spot", "direction": [0, -1, 0]}]})",
+         {"lights[0].position", "missing required field"}},
+        {spot + R"("innerConeAngle": 0.6, "outerConeAngle": 0.5}]})",
+         {"lights[0].innerConeAngle", "must not exceed outerConeAngle"}},
+        {spot + R"("innerConeAngle": 0.9}]})", {"lights[0].innerConeAngle", "must not exceed outerConeAngle"}},
+        {spot + R"("outerConeAngle": 1.6}]})", {"lights[0].outerConeAngle", "must be in [0, 1.5708]"}},
+        {spot + R"("innerConeAngle": -0.1}]})", {"lights[0].innerConeAngle", "must be in [0, 1.5708]"}},
+        {spot + R"("outerConeAngle": "wide"}]})", {"lights[0].outerConeAngle", "expected a number, got string"}},
+        {spot + R"("range": -1}]})", {"lights[0].range", "must be > 0"}},
+        {spot + R"("range": 0}]})", {"lights[0].range", "must be > 0"}},
+        {light + R"("range": -2}]})", {"lights[0].range", "must be > 0"}},
         {R"({"lights": [{"position": [0, 1, 0]}]})", {"lights[0].type", "missing required field"}},
         {R"({"lights": [{"type": "point"}]})", {"lights[0].position", "missing required field"}},
         {R"({"lights": [{"type": "directional"}]})", {"lights[0].direction", "missing required field"}},

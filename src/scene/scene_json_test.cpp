@@ -102,6 +102,8 @@ std::vector<std::string> diffScenes(const Scene& a, const Scene& b) {
         d.eq(p + ".type", x.type, y.type), d.eq(p + ".name", x.name, y.name);
         d.v(p + ".position", x.position, y.position), d.v(p + ".direction", x.direction, y.direction);
         d.v(p + ".color", x.color, y.color), d.v(p + ".attenuation", x.attenuation, y.attenuation);
+        d.f(p + ".innerConeAngle", x.innerConeAngle, y.innerConeAngle);
+        d.f(p + ".outerConeAngle", x.outerConeAngle, y.outerConeAngle), d.f(p + ".range", x.range, y.range);
     }
     d.eq("spheres.size", a.spheres.size(), b.spheres.size());
     for (size_t i = 0; i < std::min(a.spheres.size(), b.spheres.size()); ++i) {
@@ -253,9 +255,14 @@ struct RandomSceneMaker {
         }
         for (int i = upTo(kMaxLights); i > 0; --i) {
             Light l;
-            l.type = coin() ? LightType::Point : LightType::Directional;
+            l.type = coin() ? LightType::Point : (coin() ? LightType::Directional : LightType::Spot);
             l.name = name(), l.position = vec(), l.direction = unit(), l.color = rgb();
             l.attenuation = {positive(), nonNegative(), nonNegative()};
+            if (l.type == LightType::Spot) {
+                l.outerConeAngle = in(0.0f, kMaxConeAngle);
+                l.innerConeAngle = coin() ? in(0.0f, l.outerConeAngle) : l.outerConeAngle;
+            }
+            if (l.positional() && coin()) l.range = positive();
             s.lights.push_back(l);
         }
         for (int i = upTo(6); i > 0; --i) s.spheres.push_back({name(), vec(), positive(), material()});

@@ -36,7 +36,7 @@ TEST(SceneNames, ChoicesListTheCanonicalNamesOnly) {
     EXPECT_EQ(nameChoices(kShadingModelNames), "phong, blinn-phong or pbr");
     EXPECT_EQ(nameChoices(kTermNames), "ambient, diffuse, specular, shadows or reflections");
     EXPECT_EQ(nameChoices(kTermNames, "none"), "ambient, diffuse, specular, shadows, reflections or none");
-    EXPECT_EQ(nameChoices(kLightTypeNames), "point or directional");
+    EXPECT_EQ(nameChoices(kLightTypeNames), "point, directional or spot");
 }
 
 TEST(SceneNames, BlinnIsAnAliasInSceneFilesAsOnTheCommandLine) {

@@ -5,12 +5,16 @@
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace shadelab::shading {
 
 using glm::abs;
+using glm::clamp;
+using glm::cos;
 using glm::cross;
 using glm::dot;
 using glm::floor;
@@ -23,6 +27,7 @@ using glm::pow;
 using glm::sqrt;
 using glm::vec2;
 using glm::vec3;
+using glm::vec4;
 
 #define SL_FN inline
 #include "shaders/lighting.glsl"

@@ -3,6 +3,7 @@
 #include "trace/integrator.h"
 
 #include "scene/coverage.h"
+#include "scene/light_at.h"
 #include "shading/local_illumination.h"
 #include "shading/material_maps.h"
 #include "shading/texel_decode.h"
@@ -88,7 +89,7 @@ float WhittedIntegrator::visibility(const Surface& s, const Light& light) const 
     Ray shadow;
     shadow.origin = s.P + scene_.epsilon() * s.Nf;
     float tMax = INFINITY;
-    if (light.type == LightType::Point) {
+    if (light.positional()) {
         const glm::vec3 toLight = light.position - shadow.origin;
         tMax = glm::length(toLight);
         if (!(tMax > 0.0f)) return 1.0f;
@@ -134,6 +135,9 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
 glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected) const {
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
+    // The lecture's step 0, as surface.glsl's shadeSurface: no light term on, the surface's unlit colour.
+    if (shading::noIllumination(sc.terms.ambient, sc.terms.diffuse, sc.terms.specular))
+        return shading::unlitColour(s.md, s.baseColor, model_) + m.emission * s.emissive;
     const glm::vec3 V = -ray.dir;
     glm::vec2 dfg(0.0f);
     const shading::SurfaceParams params = shadingParams(s, V, &dfg);
@@ -156,12 +160,14 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         const size_t count = std::min(sc.lights.size() - first, size_t(kMaxLights));
         for (size_t k = 0; k < count; ++k) {
             const Light& l = sc.lights[first + k];
-            const bool isPoint = l.type == LightType::Point;
             shading::LightSample& ls = samples[k];
-            ls.L = shading::lightVector(isPoint ? l.position : l.direction, isPoint, s.P);
-            ls.Il = shading::lightIntensityAt(l.color, isPoint, l.attenuation, ls.L);
-            // Only a light that could contribute (N·L > 0) needs a shadow ray: otherwise its term is 0.
-            ls.visibility = sc.terms.shadows && lit && glm::dot(s.N, ls.L) > 0.0f ? visibility(s, l) : 1.0f;
+            const LightAt at = lightAt(l, s.P);
+            ls.L = at.L;
+            ls.Il = at.Il;
+            // Only a light that could contribute (N·L > 0, and inside a spot's cone and a light's range) needs a
+            // shadow ray: otherwise its term is 0.
+            const bool reaches = glm::dot(s.N, ls.L) > 0.0f && ls.Il != glm::vec3(0.0f);
+            ls.visibility = sc.terms.shadows && lit && reaches ? visibility(s, l) : 1.0f;
         }
         shading::TermFlags terms{ambientOn && first == 0, sc.terms.diffuse, sc.terms.specular};
         const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, model_, terms);

@@ -47,7 +47,16 @@ ERROR_CASES = [
     (_with(["lights", 2, "color"], [1, 1]), "lights[2].color: expected 3 numbers, got 2"),
     (_scene_dict(model="toon"), "model: unknown shading model 'toon'; expected phong, blinn-phong or pbr"),
     (_with(["objects", 0, "material", "s"], -1), "objects[0].material.s: must be in [0, 10000], got -1"),
-    (_with(["lights", 0, "type"], "spot"), "lights[0].type: unknown light type 'spot'; expected point or directional"),
+    (_with(["lights", 0, "type"], "area"),
+     "lights[0].type: unknown light type 'area'; expected point, directional or spot"),
+    (_with(["lights", 0, "type"], "spot"), "lights[0].direction: missing required field"),
+    (_with(["lights", 0], {"type": "spot", "position": [0, 4, 2], "direction": [0, -1, 0], "innerConeAngle": 0.6,
+                          "outerConeAngle": 0.5}),
+     "lights[0].innerConeAngle: must not exceed outerConeAngle (0.500000)"),
+    (_with(["lights", 0], {"type": "spot", "position": [0, 4, 2], "direction": [0, -1, 0], "outerConeAngle": 2}),
+     "lights[0].outerConeAngle: must be in [0, 1.5708], got 2"),
+    (_with(["lights", 0], {"type": "spot", "position": [0, 4, 2], "direction": [0, -1, 0], "range": -1}),
+     "lights[0].range: must be > 0, got -1"),
     (_with(["objects", 0, "radius"], 0), "objects[0].radius: must be > 0, got 0"),
     (_with(["camera", "fovY"], 180), "camera.fovY: must be in (0, 180), got 180"),
     (_scene_dict(terms={"shadows": 1}), "terms.shadows: expected true or false, got number"),
@@ -112,6 +121,27 @@ def test_attribute_edits(scene):
     assert scene.lights[0].direction == (0.0, 0.0, -1.0)  # normalised as on load
 
 
+def test_spot_lights_edit_and_render_as_in_a_file(scene):
+    scene.lights.clear()
+    scene.lights.append({"type": "spot", "position": [0, 4, 1], "direction": [0, -1, 0], "innerConeAngle": 0.2,
+                         "outerConeAngle": 0.4, "range": 9})
+    spot = scene.lights[0]
+    assert spot.type == "spot" and spot.innerConeAngle == pytest.approx(0.2) and spot.range == 9.0
+    scene.terms.shadows = False
+    scene.terms.reflections = False
+    narrow = shadelab.render(scene, (96, 64), renderer="trace")
+    spot.outerConeAngle = 0.8
+    assert scene.to_dict()["lights"][0]["outerConeAngle"] == pytest.approx(0.8)
+    wide = shadelab.render(scene, (96, 64), renderer="trace")
+    assert not shadelab.compare(narrow, wide).passed  # a wider cone lights more of the scene
+    report = shadelab.compare(shadelab.render(scene, (96, 64), coverage=True),
+                              shadelab.render(scene, (96, 64), renderer="trace", depth=1, coverage=True))
+    assert report.passed, report.summary
+    with pytest.raises(ValueError, match=r"^lights\[0\]\.innerConeAngle: must not exceed outerConeAngle"):
+        spot.innerConeAngle = 1.0
+    assert spot.innerConeAngle == pytest.approx(0.2)  # a rejected edit leaves the scene as it was
+
+
 def test_numpy_values_are_accepted(scene):
     np = pytest.importorskip("numpy")
     scene.objects[0].material.md = np.array([0.5, 0.25, 0.125])
@@ -126,8 +156,8 @@ def test_rejected_edits_leave_the_scene_unchanged(scene):
         scene.lights[1].color = [1, 2]
     with pytest.raises(ValueError, match=r"^model: unknown shading model 'toon'"):
         scene.model = "toon"
-    with pytest.raises(ValueError, match=r"^lights\[2\]\.type: unknown light type 'spot'"):
-        scene.lights.append({"type": "spot"})
+    with pytest.raises(ValueError, match=r"^lights\[2\]\.type: unknown light type 'area'"):
+        scene.lights.append({"type": "area"})
     with pytest.raises(AttributeError, match=r"^objects\[0\]\.material: unknown field 'shininess'$"):
         scene.objects[0].material.shininess = 3
     with pytest.raises(AttributeError, match=r"objects\[0\]\.material has no field 's2'"):
@@ -226,3 +256,14 @@ def test_reverse_and_clear_edit_the_list_in_one_step(source_dir):
     scene.lights.clear()
     scene.objects.clear()
     assert scene.lights.to_list() == [] and scene.objects.to_list() == []
+
+
+def test_no_illumination_shows_the_unlit_colours(scene):
+    for term in ("ambient", "diffuse", "specular", "shadows", "reflections"):
+        setattr(scene.terms, term, False)
+    raster = shadelab.render(scene, (96, 64), coverage=True)
+    traced = shadelab.render(scene, (96, 64), renderer="trace", depth=1, coverage=True)
+    report = shadelab.compare(raster, traced)
+    assert report.passed, report.summary
+    scene.terms.diffuse = True  # negative control: a lit render is not the unlit one
+    assert not shadelab.compare(raster, shadelab.render(scene, (96, 64), renderer="trace")).passed

@@ -417,20 +417,48 @@ private:
             l.type = LightType::Directional;
             l.direction = direction(linear * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, -1.0f, 0.0f));
         } else if (gl.type == "point" || gl.type == "spot") {
-            if (gl.type == "spot") warnOnce(lightPlace + ": spot light imported as a point light (no cone)");
-            l.type = LightType::Point;
+            l.type = gl.type == "spot" ? LightType::Spot : LightType::Point;
             l.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+            // A spot shines along its node's −Z, as a directional light does; scale leaves the cone alone.
+            if (l.type == LightType::Spot) {
+                l.direction = direction(linear * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, -1.0f, 0.0f));
+                addCone(gl.spot, lightPlace, l);
+            }
+            // range: > 0 where given (the spec's "Must be > 0"), absent is infinite; anything else is dropped.
+            if (std::isfinite(gl.range) && gl.range > 0.0) {
+                l.range = float(std::min(gl.range, double(kMaxCoordinate)));
+            } else if (gl.range != 0.0) {
+                warnOnce(lightPlace + ": range " + std::to_string(gl.range) + " is not > 0; the light has no range");
+            }
         } else {
             warnOnce(lightPlace + ": unknown light type \"" + gl.type + "\" skipped");
             return;
         }
-        if (gl.range > 0.0) warnOnce(lightPlace + ": range is ignored");
         l.color = gl.color.size() >= 3 ? glm::vec3(finiteClamp(gl.color[0], 0.0f, kMaxRadiance, 1.0f),
                                                    finiteClamp(gl.color[1], 0.0f, kMaxRadiance, 1.0f),
                                                    finiteClamp(gl.color[2], 0.0f, kMaxRadiance, 1.0f))
                                        : glm::vec3(1.0f);
         lightIntensities_.push_back(finiteClamp(gl.intensity, 0.0f, 1e30f, 1.0f));
         out_.lights.push_back(std::move(l));
+    }
+
+    // KHR_lights_punctual's cone: 0 <= innerConeAngle < outerConeAngle <= π/2 (defaults 0 and π/4). A value
+    // outside [0, π/2] is clamped into it, and an inner angle past the outer one is lowered to it, with a warning.
+    void addCone(const tinygltf::SpotLight& spot, const std::string& lightPlace, Light& l) {
+        const auto angle = [&](double a, float fallback, const char* name) {
+            if (std::isfinite(a) && a >= 0.0 && a <= double(kMaxConeAngle)) return float(a);
+            const float clamped = std::isfinite(a) ? float(std::clamp(a, 0.0, double(kMaxConeAngle))) : fallback;
+            warnOnce(lightPlace + ".spot." + name + ": " + std::to_string(a) + " outside [0, pi/2]; using " +
+                     std::to_string(clamped));
+            return clamped;
+        };
+        l.innerConeAngle = angle(spot.innerConeAngle, kDefaultInnerConeAngle, "innerConeAngle");
+        l.outerConeAngle = angle(spot.outerConeAngle, kDefaultOuterConeAngle, "outerConeAngle");
+        if (l.innerConeAngle > l.outerConeAngle) {
+            warnOnce(lightPlace + ".spot.innerConeAngle: " + std::to_string(l.innerConeAngle) +
+                     " exceeds outerConeAngle; using " + std::to_string(l.outerConeAngle));
+            l.innerConeAngle = l.outerConeAngle;
+        }
     }
 
     static glm::vec3 direction(const glm::dvec3& d, const glm::vec3& fallback) {

@@ -295,6 +295,65 @@ TEST(GltfImport, PunctualLightsAndCamera) {
     EXPECT_NEAR(g.cameras[0].fovY, glm::degrees(0.8f), 1e-4f);
 }
 
+// A spot light keeps its cone and range (KHR_lights_punctual "Spot", "Range Property"): node 1 at (0, 4, 1) rotated
+// −90° about x shines down; node 2's "spot" object is empty, so the spec's defaults 0 and π/4 apply (tinygltf
+// refuses a spot light with no "spot" object at all, which the spec allows); node 3 has a
+// cone out of [0, π/2] and inner past outer, clamped with warnings, and a negative range, dropped with one.
+TEST(GltfImport, SpotLightsKeepTheirConesAndRange) {
+    const float h = std::sqrt(0.5f);
+    const std::string down = "\"rotation\":[" + std::to_string(-h) + ",0,0," + std::to_string(h) + "]";
+    const std::string nodes = "[{\"mesh\":0},{\"translation\":[0,4,1]," + down +
+                              ",\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}}},"
+                              "{\"extensions\":{\"KHR_lights_punctual\":{\"light\":1}}},"
+                              "{\"extensions\":{\"KHR_lights_punctual\":{\"light\":2}}}]";
+    const std::string extra =
+        ",\"extensionsUsed\":[\"KHR_lights_punctual\"],"
+        "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":["
+        "{\"type\":\"spot\",\"name\":\"stage\",\"range\":7.5,"
+        "\"spot\":{\"innerConeAngle\":0.3,\"outerConeAngle\":0.6}},"
+        "{\"type\":\"spot\",\"name\":\"plain\",\"spot\":{}},"
+        "{\"type\":\"spot\",\"name\":\"bad\",\"range\":-2,"
+        "\"spot\":{\"innerConeAngle\":1.4,\"outerConeAngle\":2.5}}]}}";
+    const std::string path = writeGltf("spot_lights.gltf", quad(), nodes, "[0,1,2,3]", extra);
+    const GltfImport g = importGltf(path);
+    ASSERT_EQ(g.lights.size(), 3u);
+    const Light& stage = g.lights[0];
+    EXPECT_EQ(stage.type, LightType::Spot);
+    expectNear(stage.position, {0, 4, 1});
+    expectNear(stage.direction, {0, -1, 0});
+    EXPECT_FLOAT_EQ(stage.innerConeAngle, 0.3f);
+    EXPECT_FLOAT_EQ(stage.outerConeAngle, 0.6f);
+    EXPECT_FLOAT_EQ(stage.range, 7.5f);
+    EXPECT_EQ(g.lights[1].type, LightType::Spot);
+    expectNear(g.lights[1].direction, {0, 0, -1});  // an unrotated node's −Z
+    EXPECT_FLOAT_EQ(g.lights[1].innerConeAngle, 0.0f);
+    EXPECT_FLOAT_EQ(g.lights[1].outerConeAngle, 0.785398163f);
+    EXPECT_EQ(g.lights[1].range, 0.0f);  // no range
+    const Light& bad = g.lights[2];
+    EXPECT_FLOAT_EQ(bad.outerConeAngle, kMaxConeAngle);
+    EXPECT_FLOAT_EQ(bad.innerConeAngle, 1.4f);
+    EXPECT_EQ(bad.range, 0.0f);
+    std::string all;
+    for (const std::string& w : g.warnings) all += w + " | ";
+    EXPECT_NE(all.find("lights[2].spot.outerConeAngle"), std::string::npos) << all;
+    EXPECT_NE(all.find("lights[2]: range"), std::string::npos) << all;
+    EXPECT_EQ(all.find("lights[0]"), std::string::npos) << "a valid spot light warned: " << all;
+    EXPECT_EQ(all.find("point light"), std::string::npos) << all;
+
+    // Negative control: the same file with the outer angle changed does not read back 0.6.
+    std::string text;
+    {
+        std::ifstream in(path);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string outer = "\"outerConeAngle\":0.6";
+    ASSERT_NE(text.find(outer), std::string::npos);
+    text.replace(text.find(outer), outer.size(), "\"outerConeAngle\":0.7");
+    const std::string changed = path.substr(0, path.size() - 5) + "_changed.gltf";
+    std::ofstream(changed) << text;
+    EXPECT_NE(importGltf(changed).lights[0].outerConeAngle, 0.6f);
+}
+
 // ---- Scene loading ---------------------------------------------------------------------------------------------
 
 // Every corner of `b` lies in front of `c` and inside its frustum at the given aspect.

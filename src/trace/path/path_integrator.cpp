@@ -2,6 +2,7 @@
 #include "trace/path/path_integrator.h"
 
 #include "scene/coverage.h"
+#include "scene/light_at.h"
 #include "shading/lighting.h"
 #include "trace/luminance.h"
 #include "trace/path/path_bsdf.h"
@@ -95,20 +96,26 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
             const float w = prevPdf > 0.0f ? weightBsdf(prevPdf, emitters_.pdfHit(ray, *hit)) : 1.0f;
             add(beta * m.emission * s.emissive * w, scattered);  // s.emissive: the emissive texture, or 1
         }
+        // The lecture's step 0 (no light term on): no light to carry, so the camera ray's first hit shows its
+        // unlit colour, as in the Whitted tracer and the rasterizer, and the path ends there.
+        if (shading::noIllumination(sc.terms.ambient, sc.terms.diffuse, sc.terms.specular)) {
+            add(beta * shading::unlitColour(s.md, s.baseColor, model_), scattered);
+            break;
+        }
         if (bounce > settings_.maxDepth) break;
 
         const glm::vec3 V = -ray.dir;
         const PathBsdf bsdf(s, whitted_.shadingParams(s, V), V, model_, terms);
         const glm::vec3 above = s.P + eps * s.Nf;
         if (bsdf.hasSmooth()) {
-            // Point and directional lights: the Whitted tracer's terms, π·f·N·L·Il·vis (design.md §7, §8).
+            // Point, spot and directional lights: the Whitted tracer's terms, π·f·N·L·Il·vis (design.md §7, §8).
             for (const Light& l : sc.lights) {
-                const bool isPoint = l.type == LightType::Point;
-                const glm::vec3 L = shading::lightVector(isPoint ? l.position : l.direction, isPoint, s.P);
-                const glm::vec3 f = bsdf.evalCos(glm::normalize(L));
+                const LightAt at = lightAt(l, s.P);
+                if (!positive(at.Il)) continue;  // outside a spot's cone or a light's range: no shadow ray
+                const glm::vec3 f = bsdf.evalCos(glm::normalize(at.L));
                 if (!positive(f)) continue;
                 if (sc.terms.shadows && whitted_.visibility(s, l) <= 0.0f) continue;
-                add(beta * f * kPi * shading::lightIntensityAt(l.color, isPoint, l.attenuation, L), scattered + 1);
+                add(beta * f * kPi * at.Il, scattered + 1);
             }
             // One sample of the emissive objects and the environment, drawn from the shadow ray's own origin:
             // a direction aimed from s.P but sent from `above` meets a nearby emitter early, obliquely, and

@@ -368,6 +368,36 @@ TEST(PathDirect, OneMirrorBounceEqualsTheWhittedTracer) {
     EXPECT_LT(d.badPixels, 0.03);
 }
 
+// Spot lights under next-event estimation: the default scene lit by one spot whose cone edge crosses the spheres,
+// with shadows, equals the Whitted tracer's local model; the outer angle changed in one renderer does not.
+Scene spotLitDefault() {
+    Scene scene = loadScene(SHADELAB_SOURCE_DIR "/assets/scenes/default.json");
+    scene.background = glm::vec3(0.0f);
+    for (Sphere& s : scene.spheres) s.material.kr = glm::vec3(0.0f);
+    const glm::vec3 target = scene.camera.target;
+    Light l;
+    l.type = LightType::Spot;
+    l.position = target + glm::vec3(-1.0f, 5.0f, 2.0f);
+    l.direction = glm::normalize(target - l.position);
+    l.innerConeAngle = 0.2f;
+    l.outerConeAngle = 0.45f;
+    l.range = 12.0f;
+    scene.lights = {l};
+    scene.terms.shadows = true;
+    return scene;
+}
+
+TEST(PathDirect, SpotLightEqualsTheWhittedTracer) {
+    const Scene scene = spotLitDefault();
+    const DirectCheck d = compareWithWhitted(scene, withoutAmbient(scene), 0);
+    EXPECT_LT(d.z, 3.0);
+    EXPECT_LT(d.badPixels, 0.03);
+    Scene wider = withoutAmbient(scene);
+    wider.lights[0].outerConeAngle = 0.6f;
+    const DirectCheck n = compareWithWhitted(scene, wider, 0);
+    EXPECT_GT(n.badPixels, 0.03) << "an outer angle of 0.6 rad against 0.45 went unnoticed";
+}
+
 TEST(PathDirect, NegativeControlWhittedWithItsAmbientTermDiffers) {
     Scene scene = loadScene(SHADELAB_SOURCE_DIR "/assets/scenes/default.json");
     scene.background = glm::vec3(0.0f);
