@@ -9,10 +9,11 @@
 // counts only the last denoise (`render --time-limit T --denoise`, which traces then denoises once).
 // Times are wall and process CPU time (all threads); on a shared machine CPU time is the steadier figure.
 //
-// The reference (path_reference.h) has --ref-spp samples (1024) of the independent sampler and is cached;
+// The reference (path_reference.h) has --ref-spp samples in all (256), by --ref-method (split-halves: two
+// Sobol renders of half each, seeds 1 and 2; or sample-variance: the independent sampler), and is cached;
 // its own noise is removed from the error (image_error.h), so it need not have 4096 spp.
-// --check measures that correction: at --size (320x180 by default there) images of 4..256 spp against a
-// 4096-spp reference and against a 256-spp one, with and without the correction.
+// --check measures that correction: at --size (160x90 by default there) images of 1..1024 spp against a
+// 4096-spp reference and against 256- and 64-spp ones, with and without the correction.
 // `class_ready_bench error TEST.exr REF_A.exr REF_B.exr` prints TEST's relative RMSE against (A + B) / 2,
 // corrected by the two halves' difference (another renderer's reference, which has no variance: Cycles).
 //
@@ -196,25 +197,28 @@ int timeMode(const Options& o) {
 }
 
 // The correction's check: errors against a "true" 4096-spp reference (split halves, so that even its small
-// noise is removed) and against two 256-spp ones, one of each method, with and without the correction.
+// noise is removed) and against low-spp ones, with and without the correction: 256 spp by sample variance,
+// and 256 and 64 spp by split halves.
 int checkMode(Options o) {
-    if (!o.sizeGiven) o.width = 320, o.height = 180;
+    if (!o.sizeGiven) o.width = 160, o.height = 90;
     const auto scene = std::make_shared<const trace::TraceScene>(loadScene(o.scene));
     trace::PathSettings rs;
     rs.width = o.width;
     rs.height = o.height;
     rs.threads = o.threads;
-    rs.spp = 4096;
-    rs.seed = 1;
-    const PathReference high = cachedReference(o.scene, scene, rs, ReferenceMethod::SplitHalves, o.cache);
-    rs.spp = 256;
-    rs.seed = 3;
-    const PathReference lowVar = cachedReference(o.scene, scene, rs, ReferenceMethod::SampleVariance, o.cache);
-    rs.seed = 4;
-    const PathReference lowSplit = cachedReference(o.scene, scene, rs, ReferenceMethod::SplitHalves, o.cache);
+    auto reference = [&](int spp, uint32_t seed, ReferenceMethod method) {
+        rs.spp = spp;
+        rs.seed = seed;
+        return cachedReference(o.scene, scene, rs, method, o.cache);
+    };
+    const PathReference high = reference(4096, 1, ReferenceMethod::SplitHalves);
+    const PathReference lows[] = {reference(256, 3, ReferenceMethod::SampleVariance),
+                                  reference(256, 4, ReferenceMethod::SplitHalves),
+                                  reference(64, 6, ReferenceMethod::SplitHalves)};
     std::printf(
-        "%s at %dx%d: relative RMSE against 4096 spp (corrected; uncorrected), 256 spp sample-variance and 256 spp "
-        "split-halves (corrected; uncorrected), and corrected / 4096\n",
+        "%s at %dx%d: relative RMSE against 4096 spp split-halves, corrected (uncorrected); then against "
+        "256 spp sample-variance, 256 spp split-halves and 64 spp split-halves: corrected (uncorrected) "
+        "corrected / 4096's\n",
         o.scene.c_str(), o.width, o.height);
     trace::PathSettings ps = rs;
     ps.sampler = trace::PathSampler::Sobol;
@@ -229,13 +233,13 @@ int checkMode(Options o) {
         const ImageF images[2] = {render.image(), trace::denoisedImage(render, surface, ds)};
         for (int k = 0; k < 2; ++k) {
             const ImageF& a = images[k];
-            const double h = relativeRmse(a, high.image, &high.variance), hu = relativeRmse(a, high.image);
-            const double v = relativeRmse(a, lowVar.image, &lowVar.variance), vu = relativeRmse(a, lowVar.image);
-            const double sp = relativeRmse(a, lowSplit.image, &lowSplit.variance), su = relativeRmse(a, lowSplit.image);
-            std::printf(
-                "  %4d spp %-8s  4096: %.4f (%.4f)  sample-variance: %.4f (%.4f) %.3f  split-halves: %.4f "
-                "(%.4f) %.3f\n",
-                spp, k ? "denoised" : "raw", h, hu, v, vu, v / h, sp, su, sp / h);
+            const double h = relativeRmse(a, high.image, &high.variance);
+            std::printf("  %4d spp %-8s  %.4f (%.4f)", spp, k ? "denoised" : "raw", h, relativeRmse(a, high.image));
+            for (const PathReference& low : lows) {
+                const double l = relativeRmse(a, low.image, &low.variance);
+                std::printf("  %.4f (%.4f) %.3f", l, relativeRmse(a, low.image), l / h);
+            }
+            std::printf("\n");
         }
         std::fflush(stdout);
     }

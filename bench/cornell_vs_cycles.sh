@@ -56,17 +56,8 @@ blender_version=$(blender --version 2> /dev/null | head -1)
 echo "blender: $blender_version"
 echo "scene: $scene, $size, Cycles $spp spp, $bounces bounces, $threads threads; references 2 x $ref_spp spp"
 
-TIMEFORMAT='%3R %3U %3S'  # bash's time: wall, user, system
-median() {
-    sort -g | awk '{v[NR] = $1} END {if (NR % 2) print v[(NR + 1) / 2]; else printf "%.3f\n", (v[NR / 2] + v[NR / 2 + 1]) / 2}'
-}
-timed() {  # time_file log_file command...: runs the command, writes "wall cpu" (cpu = user + system)
-    local tfile=$1 log=$2 wall user sys
-    shift 2
-    { time "$@" > "$log" 2>&1; } 2> "$tfile" || return 1
-    read -r wall user sys < "$tfile"
-    awk -v w="$wall" -v u="$user" -v s="$sys" 'BEGIN {printf "%.3f %.3f\n", w, u + s}' > "$tfile"
-}
+# shellcheck source=bench/timing.sh
+source bench/timing.sh
 cycles() {  # output.exr spp seed log
     blender -b --factory-startup --python-exit-code 1 --python bench/cycles_default.py -- "$scene" "$1" "$2" \
         "$threads" --size "$size" --bounces "$bounces" --seed "$3" --unbiased > "$4" 2>&1 ||
