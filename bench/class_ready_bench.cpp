@@ -98,21 +98,21 @@ RunResult timeToTarget(const std::shared_ptr<const trace::TraceScene>& scene, co
     DenoiseSettings ds;
     ds.threads = o.threads;
     RunResult r;
-    Stopwatch trace, passes, denoiseAll;
-    auto render = trace.time([&] { return std::make_unique<trace::PathRender>(scene, ps); });
+    Stopwatch tracing, passes, denoiseAll;
+    auto render = tracing.time([&] { return std::make_unique<trace::PathRender>(scene, ps); });
     SurfacePasses surface;
     if (o.denoise) surface = passes.time([&] { return trace::firstHitPasses(*scene, o.width, o.height, o.threads); });
     bool rawDone = !raw, denDone = !o.denoise;
     for (int n = 0; !(rawDone && denDone);) {
         const int step = denDone ? std::max(1, n / 32) : 1;
         if (n + step > o.maxSpp) break;
-        trace.time([&] { return render->addSamples(step); });
+        tracing.time([&] { return render->addSamples(step); });
         n += step;
         double eRaw = -1.0, eDen = -1.0;
         if (!rawDone) {
             eRaw = relativeRmse(render->image(), ref.image, &ref.variance);
             if (eRaw < o.target) {
-                r.raw = {n, trace.wall, trace.cpu, eRaw};
+                r.raw = {n, tracing.wall, tracing.cpu, eRaw};
                 rawDone = true;
             }
         }
@@ -123,14 +123,14 @@ RunResult timeToTarget(const std::shared_ptr<const trace::TraceScene>& scene, co
             denoiseAll.cpu += last.cpu;
             eDen = relativeRmse(den, ref.image, &ref.variance);
             if (eDen < o.target) {
-                r.denoised = {n, trace.wall + passes.wall + denoiseAll.wall, trace.cpu + passes.cpu + denoiseAll.cpu,
-                              eDen};
-                r.denoisedOnce = {n, trace.wall + passes.wall + last.wall, trace.cpu + passes.cpu + last.cpu, eDen};
+                r.denoised = {n, tracing.wall + passes.wall + denoiseAll.wall,
+                              tracing.cpu + passes.cpu + denoiseAll.cpu, eDen};
+                r.denoisedOnce = {n, tracing.wall + passes.wall + last.wall, tracing.cpu + passes.cpu + last.cpu, eDen};
                 denDone = true;
             }
         }
         if (verbose && (n & (n - 1)) == 0) {
-            std::printf("  %5d spp: traced %.2f s", n, trace.wall);
+            std::printf("  %5d spp: traced %.2f s", n, tracing.wall);
             if (eRaw >= 0.0) std::printf(", raw %.4f", eRaw);
             if (eDen >= 0.0) std::printf(", denoised %.4f", eDen);
             std::printf("\n");
