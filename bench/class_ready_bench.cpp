@@ -103,6 +103,7 @@ RunResult timeToTarget(const std::shared_ptr<const trace::TraceScene>& scene, co
     SurfacePasses surface;
     if (o.denoise) surface = passes.time([&] { return trace::firstHitPasses(*scene, o.width, o.height, o.threads); });
     bool rawDone = !raw, denDone = !o.denoise;
+    int nextPrint = 1;
     for (int n = 0; !(rawDone && denDone);) {
         const int step = denDone ? std::max(1, n / 32) : 1;
         if (n + step > o.maxSpp) break;
@@ -129,8 +130,9 @@ RunResult timeToTarget(const std::shared_ptr<const trace::TraceScene>& scene, co
                 denDone = true;
             }
         }
-        if (verbose && (n & (n - 1)) == 0) {
-            std::printf("  %5d spp: traced %.2f s", n, tracing.wall);
+        if (verbose && n >= nextPrint) {  // the first pass at or past each power of two
+            nextPrint *= 2;
+            std::printf("  %5d spp: traced %.2f s (CPU %.2f s)", n, tracing.wall, tracing.cpu);
             if (eRaw >= 0.0) std::printf(", raw %.4f", eRaw);
             if (eDen >= 0.0) std::printf(", denoised %.4f", eDen);
             std::printf("\n");
