@@ -3,12 +3,18 @@
 Run it through Blender, never as part of shadelab (Blender is a benchmark baseline only):
 
     blender -b --factory-startup --python-exit-code 1 --python bench/cycles_default.py -- \
-        SCENE.json OUT.png [SPP [THREADS]] [--size WxH] [--bounces N] [--spheres points|mesh] \
-        [--falloff quadratic|constant]
+        SCENE.json OUT.png|OUT.exr [SPP [THREADS]] [--size WxH] [--bounces N] [--spheres points|mesh] \
+        [--falloff quadratic|constant] [--seed N] [--unbiased]
 
 Defaults: 16 spp, 2 threads, 1280x720, 5 bounces (every bounce type), analytic spheres (a point cloud),
 inverse-square point lights calibrated at the camera target. Cycles runs on the CPU with no denoising and
-no adaptive sampling; everything else (light sampling, caustics, filter, tiles) is left at Cycles' defaults.
+no adaptive sampling; everything else (light sampling, caustics, filter, tiles) is left at Cycles' defaults,
+unless --unbiased turns off what biases Cycles' estimate or correlates its pixels, so that its error can be
+set beside shadelab's (the global-illumination benchmark, bench/cornell_vs_cycles.sh): no sample clamping
+(Cycles clamps indirect samples at 10 by default), no Filter Glossy, no light threshold, and a 1-pixel box
+pixel filter like shadelab's jitter (Cycles' default is a 1.5-pixel Blackman-Harris, which blurs noise into
+neighbouring pixels). --seed sets Cycles' seed (0), for independent references. An OUT ending in .exr is
+written as linear 32-bit float RGB OpenEXR (no view transform), as `shadelab render -o x.exr` does.
 
 It prints, on one line each:
     cycles: render time X.XXX s (Cycles' own), render call Y.YYY s, Z.ZZZ Mpaths/s
@@ -20,12 +26,15 @@ The scene translation (docs/scene-format.md), approximate by design:
 - shadelab is +y up, Blender +z up: a shadelab point (x, y, z) is Blender's (x, -z, y).
 - camera: eye/target/up/fovY (vertical field of view, aspect from the image size).
 - spheres: one point of a point cloud each (Cycles renders points as true spheres), or with
-  --spheres mesh a smooth UV sphere of 128 x 64 segments.
+  --spheres mesh a smooth UV sphere of 128 x 64 segments. An emissive sphere is always the mesh: Cycles 3.4
+  samples emissive triangles as lights, never points.
 - planes: a 20,000-unit square quad centred under the camera target (the horizon gap is under a pixel);
   its checker is laid out in shadelab's tangent basis (shaders/lighting.glsl, planeTangent) through a UV map.
 - materials: Diffuse BSDF (md) + Glossy GGX (roughness (2/(s+2))^(1/4), the Walter mapping of
   docs/scene-format.md, colour ms * min(1, 8/(s+2)) so that its highlight peak under a point light equals
-  Phong's ms * Il) + a sharp Glossy for kr + a Glass BSDF for kt (ior), added like the lecture's terms. pbr-only
+  Phong's ms * Il) + a sharp Glossy for kr + a Glass BSDF for kt (ior), added like the lecture's terms;
+  `emission` adds an Emission shader of that colour at strength 1 (radiance = emission, as shadelab's; both
+  emit from both sides). pbr-only
   materials are mapped to md/ms/s as the scene loader does. ma and the ambient term are ignored: light
   transport replaces them.
 - lights: shadelab's point light of colour Il gives irradiance pi*Il*N.L at any distance (no
@@ -68,6 +77,8 @@ def script_args():
     p.add_argument("--bounces", type=int, default=5)
     p.add_argument("--spheres", choices=["points", "mesh"], default="points")
     p.add_argument("--falloff", choices=["quadratic", "constant"], default="quadratic")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--unbiased", action="store_true")
     a = p.parse_args(argv)
     m = re.fullmatch(r"(\d+)x(\d+)", a.size)
     if not m or not (1 <= int(m[1]) <= 16384 and 1 <= int(m[2]) <= 16384):
@@ -164,7 +175,7 @@ def material_params(m):
         ms = tuple(0.04 * (1 - metallic) + c * metallic for c in base)
         s = min(max(2 / max(rough, 1e-4) ** 4 - 2, 1), 10000)
     return {"md": md, "ms": ms, "s": s, "kr": rgb(m.get("kr"), (0, 0, 0)), "kt": rgb(m.get("kt"), (0, 0, 0)),
-            "ior": float(m.get("ior", 1.5))}
+            "ior": float(m.get("ior", 1.5)), "emission": rgb(m.get("emission"), (0, 0, 0))}
 
 
 def resolve_material(scene, ref, where):
@@ -230,6 +241,11 @@ def make_material(name, p, checker=None):
         t.inputs["Color"].default_value = (*p["kt"], 1)
         t.inputs["IOR"].default_value = p["ior"]
         closures.append(t)
+    if nonzero(p["emission"]):
+        e = nt.nodes.new("ShaderNodeEmission")
+        e.inputs["Color"].default_value = (*p["emission"], 1)
+        e.inputs["Strength"].default_value = 1.0
+        closures.append(e)
     if not closures:
         closures.append(nt.nodes.new("ShaderNodeBsdfTransparent"))
         closures[0].inputs["Color"].default_value = (0, 0, 0, 1)  # black
@@ -377,7 +393,8 @@ def build_scene(sl, args):
         name = o.get("name") or f"object{i}"
         params = material_params(resolve_material(sl, o.get("material"), where))
         if kind == "sphere":
-            add_sphere(name, vec3(o["center"]), float(o["radius"]), make_material(name, params), args.spheres)
+            mode = "mesh" if nonzero(params["emission"]) else args.spheres
+            add_sphere(name, vec3(o["center"]), float(o["radius"]), make_material(name, params), mode)
         elif kind == "plane":
             normal = vec3(o.get("normal"), (0, 1, 0))
             if "point" in o:
@@ -424,7 +441,14 @@ def configure(args):
     c.transmission_bounces = args.bounces
     c.volume_bounces = args.bounces
     c.transparent_max_bounces = args.bounces
-    c.seed = 0
+    c.seed = args.seed
+    if args.unbiased:
+        c.sample_clamp_direct = 0.0
+        c.sample_clamp_indirect = 0.0
+        c.blur_glossy = 0.0
+        c.light_sampling_threshold = 0.0
+        c.pixel_filter_type = "BOX"
+        c.filter_width = 1.0
     scene.render.threads_mode = "FIXED"
     scene.render.threads = args.threads
     scene.render.resolution_x = args.width
@@ -439,10 +463,16 @@ def configure(args):
     scene.view_settings.gamma = 1.0
     scene.display_settings.display_device = "sRGB"
     img = scene.render.image_settings
-    img.file_format = "PNG"
-    img.color_mode = "RGB"
-    img.color_depth = "8"
-    img.compression = 15
+    if args.output.lower().endswith(".exr"):
+        img.file_format = "OPEN_EXR"
+        img.color_mode = "RGB"
+        img.color_depth = "32"
+        img.exr_codec = "ZIP"
+    else:
+        img.file_format = "PNG"
+        img.color_mode = "RGB"
+        img.color_depth = "8"
+        img.compression = 15
 
 
 def main():
@@ -494,7 +524,8 @@ def main():
         print("\n".join(lines), flush=True)
 
     out = os.path.abspath(args.output)
-    tmp = os.path.join(os.path.dirname(out), f".{os.path.basename(out)}.{os.getpid()}.tmp.png")
+    ext = os.path.splitext(out)[1] or ".png"
+    tmp = os.path.join(os.path.dirname(out), f".{os.path.basename(out)}.{os.getpid()}.tmp{ext}")
     bpy.data.images["Render Result"].save_render(tmp)
     os.replace(tmp, out)
 

@@ -4,12 +4,12 @@
 // the raw and the denoised image against it, and how many samples the raw image needs for the denoised
 // one's error. T sets the denoiser's threads (2). Usage: denoise_bench [R] [W] [H] [S] [REF] [scene] [T]
 #include "bench_timing.h"
+#include "image_error.h"
 #include "scene/scene_load.h"
 #include "trace/first_hit_passes.h"
 #include "trace/path/path_denoise.h"
 #include "trace/path/path_render.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -22,21 +22,7 @@ using namespace shadelab;
 using shadelab::bench::Clock;
 using shadelab::bench::median;
 using shadelab::bench::msSince;
-
-// sqrt(Σ |a − r|² / Σ |r|²) over RGB: the error relative to the reference's own level, pixels above 1 in the
-// reference (the lamp, which is not noise and would dominate both sums) left out, as path_denoise_test does.
-double relativeRmse(const ImageF& a, const ImageF& ref) {
-    double num = 0.0, den = 0.0;
-    for (size_t i = 0; i < a.rgba.size(); i += 4) {
-        if (ref.rgba[i] > 1.0f) continue;
-        for (size_t c = 0; c < 3; ++c) {
-            const double d = double(a.rgba[i + c]) - double(ref.rgba[i + c]);
-            num += d * d;
-            den += double(ref.rgba[i + c]) * ref.rgba[i + c];
-        }
-    }
-    return std::sqrt(num / den);
-}
+using shadelab::bench::relativeRmse;
 
 }  // namespace
 

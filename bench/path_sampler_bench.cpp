@@ -7,10 +7,10 @@
 // Usage: path_sampler_bench [WxH of the error renders, default 128x72 | speed: the speed part alone] [runs,
 // default 5] [threads, default 2]
 #include "bench_timing.h"
+#include "image_error.h"
 #include "scene/scene_load.h"
 #include "trace/path/path_render.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -26,17 +26,6 @@ ImageF render(const std::shared_ptr<const trace::TraceScene>& scene, trace::Path
     trace::PathRender r(scene, s);
     r.addSamples(s.spp);
     return r.image();
-}
-
-double rmse(const ImageF& a, const ImageF& b) {
-    double sum = 0.0;
-    for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x)
-            for (int c = 0; c < 3; ++c) {
-                const double d = double(a.pixel(x, y)[c]) - double(b.pixel(x, y)[c]);
-                sum += d * d;
-            }
-    return std::sqrt(sum / (3.0 * a.width * a.height));
 }
 
 }  // namespace

@@ -62,19 +62,10 @@ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -
 echo "scene: $scene, $size, $spp spp, $bounces bounces, $threads threads: $paths paths per image"
 if ((have_blender)); then echo "blender: $(blender --version 2> /dev/null | head -1)"; fi
 
-TIMEFORMAT='%3R %3U %3S'  # bash's time: wall, user, system
-median() {
-    sort -g | awk '{v[NR] = $1} END {if (NR % 2) print v[(NR + 1) / 2]; else printf "%.3f\n", (v[NR / 2] + v[NR / 2 + 1]) / 2}'
-}
+# shellcheck source=bench/timing.sh
+source bench/timing.sh
 mps() { awk -v p="$paths" -v t="$1" 'BEGIN {printf "%.3f", p / t / 1e6}'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", b / a}'; }  # paths/s ratio = inverse time ratio
-timed() {  # time_file log_file command...: runs the command, writes "wall cpu" (cpu = user + system)
-    local tfile=$1 log=$2 wall user sys
-    shift 2
-    { time "$@" > "$log" 2>&1; } 2> "$tfile" || return 1
-    read -r wall user sys < "$tfile"
-    awk -v w="$wall" -v u="$user" -v s="$sys" 'BEGIN {printf "%.3f %.3f\n", w, u + s}' > "$tfile"
-}
 
 blender_wall=() blender_render=() blender_cpu=() shadelab_wall=() shadelab_cpu=()
 for ((i = 1; i <= runs; i++)); do
