@@ -1,12 +1,12 @@
-// The denoiser's row pass built for AVX2 and FMA (see src/image/CMakeLists.txt); denoise.cpp calls it only on
-// CPUs that have both.
-#include "image/denoise_row.h"
+// The denoiser (image/denoise_kernel.h) built for AVX2 and FMA, eight lanes (see src/image/CMakeLists.txt);
+// denoise.cpp calls it only on CPUs that have both.
+#include "image/denoise_kernel.h"
 
 namespace shadelab::denoise_detail {
 
-void filterRowAvx2(const Planes& in, const Guides& g, const std::vector<float>& lum, const std::vector<float>& varBlur,
-                   const DenoiseSettings& s, int step, int y, Planes& out) {
-    filterRowIn(in, g, lum, varBlur, s, step, y, out);
+ImageF denoiseAvx2(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
+                   const DenoiseSettings& s, int threads) {
+    return denoiseLanes<8>(color, variance, guides, s, threads);
 }
 
 }  // namespace shadelab::denoise_detail
