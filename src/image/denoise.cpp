@@ -1,8 +1,8 @@
-// denoise: checks its input and runs the filter (image/denoise_kernel.h) built for this CPU: eight lanes with
-// AVX2 and FMA where the CPU has both (denoise_avx2.cpp), else the x86-64 baseline's four, which give the same
-// bits.
+// denoise: checks its input and runs the widest build of the filter this CPU has (image/denoise_builds.h);
+// the x86-64 baseline's is built here.
 #include "image/denoise.h"
 
+#include "image/denoise_builds.h"
 #include "image/denoise_kernel.h"
 
 #include <algorithm>
@@ -14,8 +14,25 @@ namespace shadelab {
 
 namespace denoise_detail {
 
-ImageF denoiseBaseline(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
-                       const DenoiseSettings& s, int threads) {
+std::vector<DenoiseIsa> denoiseIsas() {
+    std::vector<DenoiseIsa> isas{DenoiseIsa::Baseline};
+#if defined(SHADELAB_DENOISE_X86_BUILDS)
+    __builtin_cpu_init();
+    const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    if (avx2) isas.push_back(DenoiseIsa::Avx2);
+    if (avx2 && __builtin_cpu_supports("avx512f")) isas.push_back(DenoiseIsa::Avx512);
+#endif
+    return isas;
+}
+
+ImageF denoiseWith(DenoiseIsa isa, const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
+                   const DenoiseSettings& s, int threads) {
+#if defined(SHADELAB_DENOISE_X86_BUILDS)
+    if (isa == DenoiseIsa::Avx512) return denoiseAvx512(color, variance, guides, s, threads);
+    if (isa == DenoiseIsa::Avx2) return denoiseAvx2(color, variance, guides, s, threads);
+#else
+    (void)isa;
+#endif
     return denoiseLanes<4>(color, variance, guides, s, threads);
 }
 
@@ -34,11 +51,8 @@ ImageF denoise(const ImageF& color, const std::vector<float>& variance, const Su
         throw std::invalid_argument("denoise: the edge-stopping widths must be positive");
     if (n == 0) return color;
     const int threads = s.threads > 0 ? s.threads : std::max(1, int(std::thread::hardware_concurrency()));
-#if defined(SHADELAB_DENOISE_AVX2)
-    static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    if (avx2) return denoise_detail::denoiseAvx2(color, variance, guides, s, threads);
-#endif
-    return denoise_detail::denoiseBaseline(color, variance, guides, s, threads);
+    static const denoise_detail::DenoiseIsa widest = denoise_detail::denoiseIsas().back();
+    return denoise_detail::denoiseWith(widest, color, variance, guides, s, threads);
 }
 
 }  // namespace shadelab

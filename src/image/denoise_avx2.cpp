@@ -1,5 +1,6 @@
-// The denoiser (image/denoise_kernel.h) built for AVX2 and FMA, eight lanes (see src/image/CMakeLists.txt);
+// The denoiser (image/denoise_kernel.h) built for AVX2 and FMA, 8 lanes (see src/image/CMakeLists.txt);
 // denoise.cpp calls it only on CPUs that have both.
+#include "image/denoise_builds.h"
 #include "image/denoise_kernel.h"
 
 namespace shadelab::denoise_detail {

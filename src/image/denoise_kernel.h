@@ -1,8 +1,7 @@
-// The denoiser of image/denoise.h, N lanes wide (denoise_lanes.h) over a DenoiseLayout: built once for the
-// x86-64 baseline (denoise.cpp, N = 4) and once for AVX2 (denoise_avx2.cpp, N = 8), which give the same bits;
-// denoise.cpp checks the input and picks one at run time. Every stage works on whole rows, handed out to the
-// threads a few at a time, and a row's result depends on nothing but the rows it reads: the same for any
-// thread count. Internal linkage apart from the two entry points; not for other files.
+// The denoiser of image/denoise.h, N lanes wide (denoise_lanes.h) over a DenoiseLayout, instantiated once per
+// instruction set (denoise_builds.h). Every stage works on whole rows: the preparation a few rows at a time
+// on every thread, the passes in one strip of rows per thread. A row's result depends on nothing but the
+// rows it reads, the same for any thread count. Internal linkage; not for other files.
 #pragma once
 
 #include "image/denoise.h"
@@ -13,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <utility>
+#include <cstdint>
 #include <vector>
 
 namespace shadelab::denoise_detail {
@@ -21,30 +20,22 @@ namespace shadelab::denoise_detail {
 constexpr float kLumR = 0.2126f, kLumG = 0.7152f, kLumB = 0.0722f;  // ITU-R BT.709, as trace/luminance.h
 constexpr float kB3[3] = {0.25f, 0.5f, 0.25f};                      // the 3-tap B-spline kernel
 
-// The whole filter, for input denoise() has checked (sizes agree, settings in range, at least one pixel) and
-// threads >= 1. The AVX2 build exists on x86-64 only, and may run only where the CPU has AVX2 and FMA.
-ImageF denoiseBaseline(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
-                       const DenoiseSettings& s, int threads);
-#if defined(SHADELAB_DENOISE_AVX2)
-ImageF denoiseAvx2(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
-                   const DenoiseSettings& s, int threads);
-#endif
-
 namespace {
 
-// Rows per task: enough tasks to balance two to sixteen threads, and the threads' rows close together, so that
-// the rows a tap reads above and below are still in the shared cache for the other thread.
+// Rows per task of the preparation: enough tasks to balance, the threads' rows close together.
 constexpr int kRowsPerTask = 4;
+// The fewest rows a strip has: each strip also filters, for its neighbours' sake, up to 2^iterations rows of
+// each pass beyond its edges (filterStrip), which should stay small beside its own.
+constexpr int kMinStripRows = 64;
 
-// Row y of every plane: the colour c / (1 + L) (see denoise()), the guides, and the padding of both colour
-// sets, which the passes never write.
-inline void prepareRow(DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+// Row y of the prepared image: the colour c / (1 + L) (see denoise()) and the guides, padding included.
+inline void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
                        const SurfacePasses& g, const DenoiseSettings& s, int y) {
     const int w = layout.width(), h = layout.height(), pad = layout.pad(), end = layout.stride() - pad;
-    float* p[kPlaneCount];
-    for (int k = 0; k < kPlaneCount; ++k) p[k] = layout.row(k, y);
+    float* p[kImagePlanes];
+    for (int k = 0; k < kImagePlanes; ++k) p[k] = layout.image(k, y);
     const auto fillOutside = [&](int x) {
-        for (int k = kColourA; k < kNx; ++k) p[k][x] = 0.0f;
+        for (int k = kColour; k < kColour + kColourPlanes; ++k) p[k][x] = 0.0f;
         p[kNx][x] = p[kNy][x] = p[kNz][x] = p[kDepth][x] = p[kSlope][x] = 0.0f;
         p[kAlbedoR][x] = p[kAlbedoG][x] = p[kAlbedoB][x] = INFINITY;
     };
@@ -67,12 +58,12 @@ inline void prepareRow(DenoiseLayout& layout, const ImageF& color, const std::ve
         const float* c = &color.rgba[4 * i];
         const bool finite = std::isfinite(c[0] + c[1] + c[2]) && std::isfinite(variance[i]);
         const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
-        p[kColourA][x] = finite ? c[0] * k : 0.0f;
-        p[kColourA + 1][x] = finite ? c[1] * k : 0.0f;
-        p[kColourA + 2][x] = finite ? c[2] * k : 0.0f;
+        p[kColour][x] = finite ? c[0] * k : 0.0f;
+        p[kColour + 1][x] = finite ? c[1] * k : 0.0f;
+        p[kColour + 2][x] = finite ? c[2] * k : 0.0f;
         // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
         const float v = variance[i] * (k * k) * (k * k);
-        p[kColourA + 3][x] = finite && v > 1e-20f ? v : 0.0f;
+        p[kColour + 3][x] = finite && v > 1e-20f ? v : 0.0f;
         p[kNx][x] = g.normal[3 * i];
         p[kNy][x] = g.normal[3 * i + 1];
         p[kNz][x] = g.normal[3 * i + 2];
@@ -87,45 +78,41 @@ inline void prepareRow(DenoiseLayout& layout, const ImageF& color, const std::ve
     }
 }
 
-// One à-trous pass at `step` pixels over row y, from the colour set at plane `src` into the one at `dst`.
+// One à-trous pass at `step` pixels over row y. `in[j + 1]` is the red plane of the pass's input at row
+// y + j·step (null outside the image), `blur[j + 1]` the variance plane at row y + j (null outside); the
+// planes of a row lie `stride` apart, in the input as in `out`.
 template <int N>
-void filterRow(DenoiseLayout& layout, int src, int dst, const DenoiseSettings& s, int step, int y) {
+void filterRow(const DenoiseLayout& layout, const float* const in[3], const float* const blur[3], float* out,
+               const DenoiseSettings& s, int step, int y) {
     using V = Lanes<N>;
     using F = typename V::F;
-    const int w = layout.width(), h = layout.height(), stride = layout.stride();
-    const float* in[4];
-    float* out[4];
-    for (int c = 0; c < 4; ++c) {
-        in[c] = layout.row(src + c, y);
-        out[c] = layout.row(dst + c, y);
-    }
-    const float *nx = layout.row(kNx, y), *ny = layout.row(kNy, y), *nz = layout.row(kNz, y);
-    const float *z = layout.row(kDepth, y), *ar = layout.row(kAlbedoR, y), *ag = layout.row(kAlbedoG, y),
-                *ab = layout.row(kAlbedoB, y);
-    const float* slope = layout.row(kSlope, y);
+    const int w = layout.width(), stride = layout.stride();
+    const float *r = in[1], *g = r + stride, *b = g + stride, *v = b + stride;
+    const float *nx = layout.image(kNx, y), *ny = nx + stride, *nz = ny + stride, *z = nz + stride, *ar = z + stride,
+                *ag = ar + stride, *ab = ag + stride, *slope = ab + stride;
 
     // The rows of the variance's blur (SVGF: a steadier estimate of the noise to stop at), the 3x3 B-spline at
     // step 1 normalised over the pixels inside the image.
     const float* blurRow[3];
     float blurWeight[3], blurRowSum = 0.0f;
     int blurRows = 0;
-    for (int j = -1; j <= 1; ++j)
-        if (y + j >= 0 && y + j < h) {
-            blurRow[blurRows] = layout.row(src + 3, y + j);
-            blurWeight[blurRows++] = kB3[j + 1];
-            blurRowSum += kB3[j + 1];
+    for (int j = 0; j < 3; ++j)
+        if (blur[j]) {
+            blurRow[blurRows] = blur[j];
+            blurWeight[blurRows++] = kB3[j];
+            blurRowSum += kB3[j];
         }
-    // The taps other than the centre, as offsets from it: rows outside the image have none, columns outside
-    // it are the padding, which weighs 0.
-    ptrdiff_t tapOffset[8];
+    // The taps other than the centre, as offsets from it in the colour and in the guides: rows outside the
+    // image have none, columns outside it are the padding, which weighs 0.
+    ptrdiff_t colourOffset[8], guideOffset[8];
     float tapWeight[8], tapInvDist[8];
     int taps = 0;
     for (int j = -1; j <= 1; ++j) {
-        const int qy = y + j * step;
-        if (qy < 0 || qy >= h) continue;
+        if (!in[j + 1]) continue;
         for (int i = -1; i <= 1; ++i) {
             if (i == 0 && j == 0) continue;
-            tapOffset[taps] = ptrdiff_t(qy - y) * stride + ptrdiff_t(i * step);
+            colourOffset[taps] = (in[j + 1] - r) + ptrdiff_t(i * step);
+            guideOffset[taps] = ptrdiff_t(j * step) * kImagePlanes * stride + ptrdiff_t(i * step);
             tapWeight[taps] = kB3[i + 1] * kB3[j + 1];
             tapInvDist[taps++] = 1.0f / std::sqrt(float(i * i + j * j));
         }
@@ -138,21 +125,21 @@ void filterRow(DenoiseLayout& layout, int src, int dst, const DenoiseSettings& s
         // The noise to stop at: the blurred variance, but never more than the pixel's own, so that a converged
         // pixel beside a noisy one keeps its value. A pixel without noise stops at any difference: 1e-6 of
         // luminance is far below one 8-bit step.
-        F blur = F{};
-        for (int r = 0; r < blurRows; ++r) {
-            const float* v = blurRow[r] + x;
-            blur += blurWeight[r] * (0.25f * V::load(v - 1) + 0.5f * V::load(v) + 0.25f * V::load(v + 1));
+        F blurred = F{};
+        for (int k = 0; k < blurRows; ++k) {
+            const float* q = blurRow[k] + x;
+            blurred += blurWeight[k] * (0.25f * V::load(q - 1) + 0.5f * V::load(q) + 0.25f * V::load(q + 1));
         }
         const F column = V::splat(float(x)) + lane;
         const F columnSum =
             1.0f - (column == 0.0f ? V::splat(0.25f) : F{}) - (column == float(w - 1) ? V::splat(0.25f) : F{});
-        const F vp = V::load(in[3] + x);
-        const F noise = V::sqrt(V::max(V::min(blur / (blurRowSum * columnSum), vp), F{}));
+        const F vp = V::load(v + x);
+        const F noise = V::sqrt(V::max(V::min(blurred / (blurRowSum * columnSum), vp), F{}));
         const F invL = 1.0f / (s.sigmaLuminance * noise + 1e-6f);
         const F zp = V::load(z + x);
         const F invZ = 1.0f / (V::load(slope + x) * float(step) + 1e-3f * V::abs(zp) + 1e-6f);
 
-        const F rp = V::load(in[0] + x), gp = V::load(in[1] + x), bp = V::load(in[2] + x);
+        const F rp = V::load(r + x), gp = V::load(g + x), bp = V::load(b + x);
         const F lp = kLumR * rp + kLumG * gp + kLumB * bp;
         const F nxp = V::load(nx + x), nyp = V::load(ny + x), nzp = V::load(nz + x);
         const F arp = V::load(ar + x), agp = V::load(ag + x), abp = V::load(ab + x);
@@ -160,48 +147,109 @@ void filterRow(DenoiseLayout& layout, int src, int dst, const DenoiseSettings& s
         constexpr float k0 = kB3[1] * kB3[1];
         F sw = V::splat(k0), sr = k0 * rp, sg = k0 * gp, sb = k0 * bp, sv = (k0 * k0) * vp;
         for (int t = 0; t < taps; ++t) {
-            const ptrdiff_t q = ptrdiff_t(x) + tapOffset[t];
-            const F rq = V::load(in[0] + q), gq = V::load(in[1] + q), bq = V::load(in[2] + q);
+            const ptrdiff_t c = ptrdiff_t(x) + colourOffset[t], q = ptrdiff_t(x) + guideOffset[t];
+            const F rq = V::load(r + c), gq = V::load(g + c), bq = V::load(b + c);
             const F lq = kLumR * rq + kLumG * gq + kLumB * bq;
             const F dn = 1.0f - (nxp * V::load(nx + q) + nyp * V::load(ny + q) + nzp * V::load(nz + q));
-            const F e = V::abs(lp - lq) * invL + sn * V::max(dn, F{}) +
-                        V::abs(zp - V::load(z + q)) * (invZ * tapInvDist[t]) +
-                        (V::abs(arp - V::load(ar + q)) + V::abs(agp - V::load(ag + q)) + V::abs(abp - V::load(ab + q)));
+            // Summed as a tree: the sum is on the path from the loads to the weight, which bounds the loop.
+            const F e = (V::abs(lp - lq) * invL + sn * V::max(dn, F{})) +
+                        ((V::abs(zp - V::load(z + q)) * (invZ * tapInvDist[t]) + V::abs(arp - V::load(ar + q))) +
+                         (V::abs(agp - V::load(ag + q)) + V::abs(abp - V::load(ab + q))));
             const F wq = tapWeight[t] * V::expNeg(e);
             sw += wq;
             sr += wq * rq;
             sg += wq * gq;
             sb += wq * bq;
-            sv += wq * wq * V::load(in[3] + q);
+            sv += wq * wq * V::load(v + c);
         }
         // A pixel that takes no part keeps its value (the padding its zeros): its albedo guide is not finite.
         const F inv = 1.0f / sw;
         const auto keep = arp < INFINITY;
-        V::store(out[0] + x, keep ? sr * inv : rp);
-        V::store(out[1] + x, keep ? sg * inv : gp);
-        V::store(out[2] + x, keep ? sb * inv : bp);
-        V::store(out[3] + x, keep ? sv * inv * inv : vp);
+        V::store(out + x, keep ? sr * inv : rp);
+        V::store(out + stride + x, keep ? sg * inv : gp);
+        V::store(out + 2 * stride + x, keep ? sb * inv : bp);
+        V::store(out + 3 * stride + x, keep ? sv * inv * inv : vp);
     }
 }
 
-// Row y of the result from the colour set at plane `src`: c' / (1 − L') (denoise()), alpha kept; a pixel
-// whose colour or variance is not finite is its input.
-inline void finishRow(const DenoiseLayout& layout, int src, const ImageF& color, const std::vector<float>& variance,
-                      ImageF& out, int y) {
-    const float *r = layout.row(src, y), *g = layout.row(src + 1, y), *b = layout.row(src + 2, y);
+// Row y of the result from the last pass's output row `c` (red plane; the others `stride` apart):
+// c' / (1 − L') (denoise()), alpha kept; a pixel whose colour or variance is not finite is its input.
+inline void finishRow(const DenoiseLayout& layout, const float* c, const ImageF& color,
+                      const std::vector<float>& variance, ImageF& out, int y) {
+    const int stride = layout.stride();
     const size_t row = size_t(y) * size_t(layout.width());
     for (int x = 0; x < layout.width(); ++x) {
-        const float* c = &color.rgba[4 * (row + size_t(x))];
+        const float* in = &color.rgba[4 * (row + size_t(x))];
         float* o = &out.rgba[4 * (row + size_t(x))];
-        if (!(std::isfinite(c[0] + c[1] + c[2]) && std::isfinite(variance[row + size_t(x)]))) {
-            for (int k = 0; k < 4; ++k) o[k] = c[k];
+        if (!(std::isfinite(in[0] + in[1] + in[2]) && std::isfinite(variance[row + size_t(x)]))) {
+            for (int k = 0; k < 4; ++k) o[k] = in[k];
             continue;
         }
-        const float k = 1.0f / std::max(1.0f - (kLumR * r[x] + kLumG * g[x] + kLumB * b[x]), 1e-6f);
-        o[0] = r[x] * k;
-        o[1] = g[x] * k;
-        o[2] = b[x] * k;
-        o[3] = c[3];
+        const float r = c[x], g = c[stride + x], b = c[2 * stride + x];
+        const float k = 1.0f / std::max(1.0f - (kLumR * r + kLumG * g + kLumB * b), 1e-6f);
+        o[0] = r * k;
+        o[1] = g * k;
+        o[2] = b * k;
+        o[3] = in[3];
+    }
+}
+
+// Every pass over rows y0 .. y1 − 1 of the result, in strip `strip`'s rings: the passes run together down
+// the strip, each a few rows behind the one before it (its taps' reach), so that a pass reads rows the one
+// before wrote a moment ago. Pass k filters its rows within H_k = 2^(k+1) + ... + 2^(iterations−1) of
+// the strip too (what the later passes read), as the neighbouring strip does: a row's values are the same in
+// every strip that filters it, so the result does not depend on where the strips end.
+template <int N>
+void filterStrip(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                 const DenoiseSettings& s, int strip, int y0, int y1, ImageF& out) {
+    const int h = layout.height(), passes = layout.iterations(), stride = layout.stride();
+    const int pad = layout.pad(), tail = (layout.width() + N - 1) / N * N, end = stride - pad;
+    int next[8], hi[8];
+    for (int k = 0; k < passes; ++k) {
+        const int halo = (1 << passes) - (2 << k);  // 2^(k+1) + ... + 2^(passes−1)
+        next[k] = std::max(0, y0 - halo);
+        hi[k] = std::min(h, y1 + halo);
+    }
+    // The rings' padding, which no pass writes: zero, as the image's.
+    for (int k = 0; k < passes; ++k) {
+        const int rows = k + 1 < passes ? DenoiseLayout::ringRows(k) : 1;
+        for (int row = 0; row < rows; ++row) {
+            float* red = layout.output(strip, k, row);
+            for (int c = 0; c < kColourPlanes; ++c) {
+                std::fill(red + c * stride - pad, red + c * stride, 0.0f);
+                std::fill(red + c * stride + tail, red + c * stride + end, 0.0f);
+            }
+        }
+    }
+    // The red plane of pass k's input at row y: the prepared image for the first pass, else the ring of the
+    // pass before; null outside the image.
+    const auto input = [&](int k, int y) -> const float* {
+        if (y < 0 || y >= h) return nullptr;
+        return k == 0 ? layout.image(kColour, y) : layout.output(strip, k - 1, y);
+    };
+    const auto run = [&](int k) {
+        const int y = next[k]++, step = 1 << k;
+        const float* in[3] = {input(k, y - step), input(k, y), input(k, y + step)};
+        const float* blur[3];
+        for (int j = 0; j < 3; ++j) {
+            const float* row = input(k, y + j - 1);
+            blur[j] = row ? row + 3 * stride : nullptr;
+        }
+        float* dst = layout.output(strip, k, y);
+        filterRow<N>(layout, in, blur, dst, s, step, y);
+        if (k + 1 == passes) finishRow(layout, dst, color, variance, out, y);
+    };
+    // Pass k may filter its next row y once the pass before has filtered every row it reads, up to y + 2^k.
+    // The latest pass that may goes first: then a pass runs at most 2^(k+1) + 1 rows ahead of the one that
+    // reads it, which its ring holds (DenoiseLayout::ringRows).
+    const auto ready = [&](int k) {
+        return next[k] < hi[k] && (k == 0 || next[k - 1] >= std::min(h, next[k] + (1 << k) + 1));
+    };
+    for (;;) {
+        int k = passes - 1;
+        while (k >= 0 && !ready(k)) --k;
+        if (k < 0) break;
+        run(k);
     }
 }
 
@@ -209,20 +257,17 @@ template <int N>
 ImageF denoiseLanes(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
                     const DenoiseSettings& s, int threads) {
     const int h = color.height;
-    DenoiseLayout layout(color.width, h, 1 << (s.iterations - 1));
-    const auto eachRow = [&](auto&& body) {
-        parallelFor((h + kRowsPerTask - 1) / kRowsPerTask, threads, [&](int task) {
-            for (int y = task * kRowsPerTask; y < std::min(h, (task + 1) * kRowsPerTask); ++y) body(y);
-        });
-    };
-    eachRow([&](int y) { prepareRow(layout, color, variance, guides, s, y); });
-    int src = kColourA, dst = kColourB;
-    for (int k = 0; k < s.iterations; ++k) {
-        eachRow([&](int y) { filterRow<N>(layout, src, dst, s, 1 << k, y); });
-        std::swap(src, dst);
-    }
+    const int strips = std::max(1, std::min(threads, h / kMinStripRows));
+    const DenoiseLayout layout(color.width, h, s.iterations, strips);
+    parallelFor((h + kRowsPerTask - 1) / kRowsPerTask, threads, [&](int task) {
+        for (int y = task * kRowsPerTask; y < std::min(h, (task + 1) * kRowsPerTask); ++y)
+            prepareRow(layout, color, variance, guides, s, y);
+    });
     ImageF out(color.width, h);
-    eachRow([&](int y) { finishRow(layout, src, color, variance, out, y); });
+    parallelFor(strips, threads, [&](int strip) {
+        filterStrip<N>(layout, color, variance, s, strip, int(int64_t(h) * strip / strips),
+                       int(int64_t(h) * (strip + 1) / strips), out);
+    });
     return out;
 }
 
