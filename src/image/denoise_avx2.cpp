@@ -1,13 +1,13 @@
-// The denoiser (image/denoise_kernel.h) built for AVX2 and FMA, 8 lanes (see src/image/CMakeLists.txt);
-// denoise.cpp calls it only on CPUs that have both.
+// The denoiser's passes (image/denoise_kernel.h) built for AVX2 and FMA, 8 lanes (see src/image/CMakeLists.txt);
+// denoise.cpp calls them only on CPUs that have them.
 #include "image/denoise_builds.h"
 #include "image/denoise_kernel.h"
 
 namespace shadelab::denoise_detail {
 
-ImageF denoiseAvx2(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
-                   const DenoiseSettings& s, int threads) {
-    return denoiseLanes<8>(color, variance, guides, s, threads);
+void filterStripAvx2(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                     const DenoiseSettings& s, int strip, int y0, int y1, ImageF& out) {
+    filterStrip<8>(layout, color, variance, s, strip, y0, y1, out);
 }
 
 }  // namespace shadelab::denoise_detail

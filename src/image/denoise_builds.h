@@ -1,10 +1,11 @@
-// The denoiser's builds, one per instruction set: image/denoise_kernel.h instantiated 4 lanes wide for the
-// x86-64 baseline (denoise.cpp), 8 for AVX2 + FMA (denoise_avx2.cpp) and 16 for AVX-512 (denoise_avx512.cpp).
-// They differ only in rounding where FMA fuses a multiply and an add. denoise() runs the widest this CPU has;
-// the tests run each. Not for other files.
+// The denoiser's builds, one per instruction set: the passes (image/denoise_kernel.h, filterStrip) 4 lanes
+// wide for the x86-64 baseline (denoise.cpp), 8 for AVX2 + FMA (denoise_avx2.cpp) and 16 for AVX-512
+// (denoise_avx512.cpp). They differ only in rounding where FMA fuses a multiply and an add. denoise() runs
+// the widest this CPU has; the tests run each. Not for other files.
 #pragma once
 
 #include "image/denoise.h"
+#include "image/denoise_layout.h"
 
 #include <vector>
 
@@ -20,10 +21,13 @@ std::vector<DenoiseIsa> denoiseIsas();
 ImageF denoiseWith(DenoiseIsa isa, const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
                    const DenoiseSettings& s, int threads);
 
-// The entry points of the builds other than the baseline (denoise_avx2.cpp, denoise_avx512.cpp).
-ImageF denoiseAvx2(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
-                   const DenoiseSettings& s, int threads);
-ImageF denoiseAvx512(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
-                     const DenoiseSettings& s, int threads);
+// Every pass over rows y0 .. y1 − 1 of `out`, in strip `strip` of the layout (denoise_kernel.h, filterStrip),
+// as each build compiles it; the AVX2 and AVX-512 ones exist on x86-64 only.
+using StripFilter = void (*)(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                             const DenoiseSettings& s, int strip, int y0, int y1, ImageF& out);
+void filterStripAvx2(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                     const DenoiseSettings& s, int strip, int y0, int y1, ImageF& out);
+void filterStripAvx512(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                       const DenoiseSettings& s, int strip, int y0, int y1, ImageF& out);
 
 }  // namespace shadelab::denoise_detail

@@ -1,13 +1,12 @@
-// The denoiser of image/denoise.h, N lanes wide (denoise_lanes.h) over a DenoiseLayout, instantiated once per
-// instruction set (denoise_builds.h). Every stage works on whole rows: the preparation a few rows at a time
-// on every thread, the passes in one strip of rows per thread. A row's result depends on nothing but the
-// rows it reads, the same for any thread count. Internal linkage; not for other files.
+// The denoiser of image/denoise.h over a DenoiseLayout, its passes N lanes wide (denoise_lanes.h): the row
+// functions of every build (denoise_builds.h). Internal linkage, and nothing else from outside but what
+// inlines (no thread, no allocation): a build's file then holds no function that the linker could take for
+// another build's, which the CPU may not run. Not for other files.
 #pragma once
 
 #include "image/denoise.h"
 #include "image/denoise_lanes.h"
 #include "image/denoise_layout.h"
-#include "util/parallel_for.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,62 +20,6 @@ constexpr float kLumR = 0.2126f, kLumG = 0.7152f, kLumB = 0.0722f;  // ITU-R BT.
 constexpr float kB3[3] = {0.25f, 0.5f, 0.25f};                      // the 3-tap B-spline kernel
 
 namespace {
-
-// Rows per task of the preparation: enough tasks to balance, the threads' rows close together.
-constexpr int kRowsPerTask = 4;
-// The fewest rows a strip has: each strip also filters, for its neighbours' sake, up to 2^iterations rows of
-// each pass beyond its edges (filterStrip), which should stay small beside its own.
-constexpr int kMinStripRows = 64;
-
-// Row y of the prepared image: the colour c / (1 + L) (see denoise()) and the guides, padding included.
-inline void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
-                       const SurfacePasses& g, const DenoiseSettings& s, int y) {
-    const int w = layout.width(), h = layout.height(), pad = layout.pad(), end = layout.stride() - pad;
-    float* p[kImagePlanes];
-    for (int k = 0; k < kImagePlanes; ++k) p[k] = layout.image(k, y);
-    const auto fillOutside = [&](int x) {
-        for (int k = kColour; k < kColour + kColourPlanes; ++k) p[k][x] = 0.0f;
-        p[kNx][x] = p[kNy][x] = p[kNz][x] = p[kDepth][x] = p[kSlope][x] = 0.0f;
-        p[kAlbedoR][x] = p[kAlbedoG][x] = p[kAlbedoB][x] = INFINITY;
-    };
-    for (int x = -pad; x < 0; ++x) fillOutside(x);
-    for (int x = w; x < end; ++x) fillOutside(x);
-
-    const size_t row = size_t(y) * size_t(w);
-    const float invA = 1.0f / s.sigmaAlbedo;
-    const float* z = &g.depth[row];
-    // The depth change per pixel step along one axis: the smaller of the two one-sided differences, so that a
-    // silhouette (a jump on one side only) does not count as slope; 0 where the image has no neighbour.
-    const auto along = [](float centre, const float* before, const float* after) {
-        float best = INFINITY;
-        if (before) best = std::min(best, std::abs(*before - centre));
-        if (after) best = std::min(best, std::abs(*after - centre));
-        return std::isfinite(best) ? best : 0.0f;
-    };
-    for (int x = 0; x < w; ++x) {
-        const size_t i = row + size_t(x);
-        const float* c = &color.rgba[4 * i];
-        const bool finite = std::isfinite(c[0] + c[1] + c[2]) && std::isfinite(variance[i]);
-        const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
-        p[kColour][x] = finite ? c[0] * k : 0.0f;
-        p[kColour + 1][x] = finite ? c[1] * k : 0.0f;
-        p[kColour + 2][x] = finite ? c[2] * k : 0.0f;
-        // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
-        const float v = variance[i] * (k * k) * (k * k);
-        p[kColour + 3][x] = finite && v > 1e-20f ? v : 0.0f;
-        p[kNx][x] = g.normal[3 * i];
-        p[kNy][x] = g.normal[3 * i + 1];
-        p[kNz][x] = g.normal[3 * i + 2];
-        p[kDepth][x] = z[x];
-        // A pixel whose colour is not finite lends nothing: its albedo guide is that of the padding.
-        p[kAlbedoR][x] = finite ? g.albedo[3 * i] * invA : INFINITY;
-        p[kAlbedoG][x] = finite ? g.albedo[3 * i + 1] * invA : INFINITY;
-        p[kAlbedoB][x] = finite ? g.albedo[3 * i + 2] * invA : INFINITY;
-        const float slopeX = along(z[x], x > 0 ? &z[x - 1] : nullptr, x + 1 < w ? &z[x + 1] : nullptr);
-        const float slopeY = along(z[x], y > 0 ? &z[x] - w : nullptr, y + 1 < h ? &z[x] + w : nullptr);
-        p[kSlope][x] = s.sigmaDepth * std::max(slopeX, slopeY);
-    }
-}
 
 // One à-trous pass at `step` pixels over row y. `in[j + 1]` is the red plane of the pass's input at row
 // y + j·step (null outside the image), `blur[j + 1]` the variance plane at row y + j (null outside); the
@@ -251,24 +194,6 @@ void filterStrip(const DenoiseLayout& layout, const ImageF& color, const std::ve
         if (k < 0) break;
         run(k);
     }
-}
-
-template <int N>
-ImageF denoiseLanes(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
-                    const DenoiseSettings& s, int threads) {
-    const int h = color.height;
-    const int strips = std::max(1, std::min(threads, h / kMinStripRows));
-    const DenoiseLayout layout(color.width, h, s.iterations, strips);
-    parallelFor((h + kRowsPerTask - 1) / kRowsPerTask, threads, [&](int task) {
-        for (int y = task * kRowsPerTask; y < std::min(h, (task + 1) * kRowsPerTask); ++y)
-            prepareRow(layout, color, variance, guides, s, y);
-    });
-    ImageF out(color.width, h);
-    parallelFor(strips, threads, [&](int strip) {
-        filterStrip<N>(layout, color, variance, s, strip, int(int64_t(h) * strip / strips),
-                       int(int64_t(h) * (strip + 1) / strips), out);
-    });
-    return out;
 }
 
 }  // namespace

@@ -7,7 +7,8 @@
 // pixels, so that a tap reads the N pixels beside N others with one load and no bounds check in x. A padding
 // pixel looks like a pixel outside the image: its albedo guide is infinite, which no stop lets through (its
 // weight is exactly 0), and its colour and variance are 0; so does a pixel whose colour is not finite, which
-// lends nothing and keeps its value. Rows start 64-byte aligned. Not for other files.
+// lends nothing and keeps its value. Rows start 64-byte aligned. Its functions always inline: every build
+// (denoise_builds.h) reads it, and none may lend another a function built for its own CPU. Not for other files.
 #pragma once
 
 #include "image/denoise_memory.h"
@@ -49,30 +50,30 @@ public:
         base_ = memory_.data() + (misalign ? 16 - misalign : 0);
     }
 
-    int width() const { return width_; }
-    int height() const { return height_; }
-    int iterations() const { return iterations_; }
-    int pad() const { return pad_; }
-    int stride() const { return stride_; }  // from one plane of a row to the next, in floats
+    [[gnu::always_inline]] int width() const { return width_; }
+    [[gnu::always_inline]] int height() const { return height_; }
+    [[gnu::always_inline]] int iterations() const { return iterations_; }
+    [[gnu::always_inline]] int pad() const { return pad_; }
+    [[gnu::always_inline]] int stride() const { return stride_; }  // from one plane of a row to the next, in floats
 
     // Pixel (0, y) of a plane of the prepared image.
-    float* image(int plane, int y) const {
+    [[gnu::always_inline]] float* image(int plane, int y) const {
         return base_ + (size_t(y) * kImagePlanes + size_t(plane)) * size_t(stride_) + size_t(pad_);
     }
     // Pixel (0, y) of the red plane of pass `pass`'s output in strip `strip` (the rest follow, stride apart):
     // a ring for every pass but the last, whose rows are written one at a time into one row.
-    float* output(int strip, int pass, int y) const {
+    [[gnu::always_inline]] float* output(int strip, int pass, int y) const {
         const int row = pass + 1 < iterations_ ? ringRowsBefore(pass) + y % ringRows(pass) : ringRowsBefore(pass);
         return base_ + size_t(height_) * kImagePlanes * size_t(stride_) + size_t(strip) * stripFloats_ +
                size_t(row) * kColourPlanes * size_t(stride_) + size_t(pad_);
     }
     // The rows of pass k's ring: its next pass reads 2^(k + 1) rows either side, and runs 2^(k + 1) + 1 rows
     // behind it (denoise_kernel.h, filterStrip), so a row is overwritten only once every reader is done.
-    static int ringRows(int pass) { return (4 << pass) + 2; }
+    [[gnu::always_inline]] static int ringRows(int pass) { return (4 << pass) + 2; }
 
 private:
-    static int roundUp16(int v) { return (v + 15) / 16 * 16; }
-    static int ringRowsBefore(int pass) {
+    [[gnu::always_inline]] static int roundUp16(int v) { return (v + 15) / 16 * 16; }
+    [[gnu::always_inline]] static int ringRowsBefore(int pass) {
         int rows = 0;
         for (int k = 0; k < pass; ++k) rows += ringRows(k);
         return rows;
