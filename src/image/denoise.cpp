@@ -7,6 +7,7 @@
 #include "util/parallel_for.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -23,9 +24,62 @@ constexpr int kRowsPerTask = 4;
 // each pass beyond its edges (filterStrip), which should stay few beside its own.
 constexpr int kMinStripRows = 64;
 
-// Row y of the prepared image: the colour c / (1 + L) (see denoise()) and the guides, padding included.
-inline void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
-                       const SurfacePasses& g, const DenoiseSettings& s, int y) {
+// The colour c / (1 + L) (see denoise()) of n pixels, their variance, and their albedo over σ_a; loops over
+// pointers that alias nothing, which the compiler vectorises.
+void prepareColour(int n, const float* __restrict rgba, const float* __restrict variance,
+                   const float* __restrict albedo, float invA, float* __restrict r, float* __restrict g,
+                   float* __restrict b, float* __restrict v, float* __restrict ar, float* __restrict ag,
+                   float* __restrict ab) {
+    for (int x = 0; x < n; ++x) {
+        const float* c = rgba + 4 * x;
+        // std::isfinite, written so that it vectorises (no branch): not a number and infinity both fail.
+        const bool finite = (std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & (std::abs(variance[x]) <= FLT_MAX);
+        const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
+        r[x] = finite ? c[0] * k : 0.0f;
+        g[x] = finite ? c[1] * k : 0.0f;
+        b[x] = finite ? c[2] * k : 0.0f;
+        // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
+        const float vk = variance[x] * (k * k) * (k * k);
+        v[x] = finite & (vk > 1e-20f) ? vk : 0.0f;
+        // A pixel whose colour is not finite lends nothing: its albedo guide is infinite, as the padding's.
+        // (Added rather than chosen, once for three: GCC 12 vectorises the loop only so.)
+        const float outside = finite ? 0.0f : INFINITY;
+        ar[x] = albedo[3 * x] * invA + outside;
+        ag[x] = albedo[3 * x + 1] * invA + outside;
+        ab[x] = albedo[3 * x + 2] * invA + outside;
+    }
+}
+
+void prepareNormal(int n, const float* __restrict normal, float* __restrict nx, float* __restrict ny,
+                   float* __restrict nz) {
+    for (int x = 0; x < n; ++x) {
+        nx[x] = normal[3 * x];
+        ny[x] = normal[3 * x + 1];
+        nz[x] = normal[3 * x + 2];
+    }
+}
+
+// The depth change per pixel step along one axis: the smaller of the two one-sided differences, so that a
+// silhouette (a jump on one side only) does not count as slope; 0 where the image has no neighbour. A
+// missing neighbour's difference is infinite (`up` is then the row itself, `upMissing` infinite).
+float alongOf(float before, float after) { return std::min(before, after) <= FLT_MAX ? std::min(before, after) : 0.0f; }
+
+void prepareDepth(int w, const float* __restrict z, const float* __restrict up, float upMissing,
+                  const float* __restrict down, float downMissing, float sigmaDepth, float* __restrict depth,
+                  float* __restrict slope) {
+    const auto at = [&](int x, float left, float right) {
+        const float vertical = alongOf(std::abs(up[x] - z[x]) + upMissing, std::abs(down[x] - z[x]) + downMissing);
+        depth[x] = z[x];
+        slope[x] = sigmaDepth * std::max(alongOf(left, right), vertical);
+    };
+    at(0, INFINITY, w > 1 ? std::abs(z[1] - z[0]) : INFINITY);
+    for (int x = 1; x + 1 < w; ++x) at(x, std::abs(z[x - 1] - z[x]), std::abs(z[x + 1] - z[x]));
+    if (w > 1) at(w - 1, std::abs(z[w - 2] - z[w - 1]), INFINITY);
+}
+
+// Row y of the prepared image: the colour and the guides, padding included.
+void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                const SurfacePasses& g, const DenoiseSettings& s, int y) {
     const int w = layout.width(), h = layout.height(), pad = layout.pad(), end = layout.stride() - pad;
     float* p[kImagePlanes];
     for (int k = 0; k < kImagePlanes; ++k) p[k] = layout.image(k, y);
@@ -38,39 +92,12 @@ inline void prepareRow(const DenoiseLayout& layout, const ImageF& color, const s
     for (int x = w; x < end; ++x) fillOutside(x);
 
     const size_t row = size_t(y) * size_t(w);
-    const float invA = 1.0f / s.sigmaAlbedo;
+    prepareColour(w, &color.rgba[4 * row], &variance[row], &g.albedo[3 * row], 1.0f / s.sigmaAlbedo, p[kColour],
+                  p[kColour + 1], p[kColour + 2], p[kColour + 3], p[kAlbedoR], p[kAlbedoG], p[kAlbedoB]);
+    prepareNormal(w, &g.normal[3 * row], p[kNx], p[kNy], p[kNz]);
     const float* z = &g.depth[row];
-    // The depth change per pixel step along one axis: the smaller of the two one-sided differences, so that a
-    // silhouette (a jump on one side only) does not count as slope; 0 where the image has no neighbour.
-    const auto along = [](float centre, const float* before, const float* after) {
-        float best = INFINITY;
-        if (before) best = std::min(best, std::abs(*before - centre));
-        if (after) best = std::min(best, std::abs(*after - centre));
-        return std::isfinite(best) ? best : 0.0f;
-    };
-    for (int x = 0; x < w; ++x) {
-        const size_t i = row + size_t(x);
-        const float* c = &color.rgba[4 * i];
-        const bool finite = std::isfinite(c[0] + c[1] + c[2]) && std::isfinite(variance[i]);
-        const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
-        p[kColour][x] = finite ? c[0] * k : 0.0f;
-        p[kColour + 1][x] = finite ? c[1] * k : 0.0f;
-        p[kColour + 2][x] = finite ? c[2] * k : 0.0f;
-        // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
-        const float v = variance[i] * (k * k) * (k * k);
-        p[kColour + 3][x] = finite && v > 1e-20f ? v : 0.0f;
-        p[kNx][x] = g.normal[3 * i];
-        p[kNy][x] = g.normal[3 * i + 1];
-        p[kNz][x] = g.normal[3 * i + 2];
-        p[kDepth][x] = z[x];
-        // A pixel whose colour is not finite lends nothing: its albedo guide is that of the padding.
-        p[kAlbedoR][x] = finite ? g.albedo[3 * i] * invA : INFINITY;
-        p[kAlbedoG][x] = finite ? g.albedo[3 * i + 1] * invA : INFINITY;
-        p[kAlbedoB][x] = finite ? g.albedo[3 * i + 2] * invA : INFINITY;
-        const float slopeX = along(z[x], x > 0 ? &z[x - 1] : nullptr, x + 1 < w ? &z[x + 1] : nullptr);
-        const float slopeY = along(z[x], y > 0 ? &z[x] - w : nullptr, y + 1 < h ? &z[x] + w : nullptr);
-        p[kSlope][x] = s.sigmaDepth * std::max(slopeX, slopeY);
-    }
+    prepareDepth(w, z, y > 0 ? z - w : z, y > 0 ? 0.0f : INFINITY, y + 1 < h ? z + w : z, y + 1 < h ? 0.0f : INFINITY,
+                 s.sigmaDepth, p[kDepth], p[kSlope]);
 }
 
 void filterStripBaseline(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
