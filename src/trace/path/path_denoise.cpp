@@ -25,8 +25,10 @@ std::vector<float> luminanceVariance(const PathRender& render) {
     const int w = render.width(), h = render.height();
     std::vector<float> v(size_t(w) * size_t(h), 0.0f), rowLargest(size_t(h), 0.0f);
     eachRow(render, [&](int y) {
+        std::vector<float> row(3 * size_t(w));
+        render.standardErrorRow(y, row.data());
         for (int x = 0; x < w; ++x) {
-            const float se = luminance(render.standardError(x, y));
+            const float se = luminance(glm::vec3(row[3 * size_t(x)], row[3 * size_t(x) + 1], row[3 * size_t(x) + 2]));
             v[size_t(y) * size_t(w) + size_t(x)] = se * se;
             rowLargest[size_t(y)] = std::max(rowLargest[size_t(y)], se * se);
         }
