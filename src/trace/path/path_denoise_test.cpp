@@ -118,8 +118,8 @@ TEST(PathDenoise, AnImageWithoutVisibleNoiseComesBackWithinOneStep) {
     }
 }
 
-TEST(PathDenoise, TheRowsStandardErrorsAreEachPixelsBitForBit) {
-    // standardErrorRow feeds the denoiser's variance; it must be standardError(x, y), row at a time.
+TEST(PathDenoise, TheRowsStatisticsAreEachPixelsBitForBit) {
+    // standardErrorRow and image() feed the denoiser; they must be standardError(x, y) and mean(x, y).
     for (const int spp : {1, 3}) {
         PathSettings s = settings(spp, 0);
         s.width = 37;
@@ -130,6 +130,10 @@ TEST(PathDenoise, TheRowsStandardErrorsAreEachPixelsBitForBit) {
         other.seed = 9;
         PathRender control(cornell(), other);
         control.addSamples(spp);
+        const ImageF image = r.image();
+        for (int y = 0; y < 5; ++y)
+            for (int x = 0; x < 37; ++x)
+                for (int c = 0; c < 3; ++c) ASSERT_EQ(image.pixel(x, y)[c], r.mean(x, y)[c]) << x << "," << y;
         std::vector<float> row(3 * 37), controlRow(3 * 37);
         bool controlDiffers = false;
         for (int y = 0; y < 5; ++y) {

@@ -7,7 +7,6 @@
 #include "trace/first_hit_passes.h"
 #include "trace/path/path_denoise.h"
 #include "trace/tile_renderer.h"
-#include "util/parallel_for.h"
 
 #include <algorithm>
 #include <chrono>
@@ -127,24 +126,6 @@ glm::vec3 PathRender::mean(int x, int y) const {
     if (count == 0) return glm::vec3(0.0f);
     const double n = double(count);
     return {float(sum_[3 * p] / n), float(sum_[3 * p + 1] / n), float(sum_[3 * p + 2] / n)};
-}
-
-ImageF PathRender::image() const {
-    ImageF img(settings_.width, settings_.height);
-    // Rows in parallel, a few at a time: at 720p this is milliseconds, which a denoised preview pays each frame.
-    constexpr int kRows = 8;
-    parallelFor((settings_.height + kRows - 1) / kRows, settings_.threads, [&](int task) {
-        for (int y = task * kRows; y < std::min(settings_.height, (task + 1) * kRows); ++y)
-            for (int x = 0; x < settings_.width; ++x) {
-                const glm::vec3 m = mean(x, y);
-                float* px = img.pixel(x, y);
-                px[0] = m.x;
-                px[1] = m.y;
-                px[2] = m.z;
-                px[3] = 1.0f;
-            }
-    });
-    return img;
 }
 
 double PathRender::meanStandardError8(Encoding encoding) const {
