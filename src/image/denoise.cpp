@@ -1,86 +1,148 @@
-// denoise: the passes run over planes of floats (one per channel), each row's 3x3 taps one tap at a time
-// across the row (image/denoise_row.h), so that the inner loops are straight-line arithmetic the compiler
-// vectorises; on x86-64 CPUs with AVX2 and FMA the row pass built for them runs (denoise_avx2.cpp).
+// denoise: checks its input, prepares the planes the passes read (image/denoise_layout.h) and runs the passes
+// in the widest build this CPU has (image/denoise_builds.h); the x86-64 baseline's is built here.
 #include "image/denoise.h"
 
-#include "image/denoise_row.h"
+#include "image/denoise_builds.h"
+#include "image/denoise_kernel.h"
 #include "util/parallel_for.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
 namespace shadelab {
+
+namespace denoise_detail {
 namespace {
 
-using namespace denoise_detail;
+// Rows per task of the preparation: enough tasks to balance, the threads' rows close together.
+constexpr int kRowsPerTask = 4;
+// The fewest rows a strip has: each strip also filters, for its neighbours' sake, up to 2^iterations rows of
+// each pass beyond its edges (filterStrip), which should stay few beside its own.
+constexpr int kMinStripRows = 64;
 
-// The row pass for this CPU.
-void filterRow(const Planes& in, const Guides& g, const std::vector<float>& lum, const std::vector<float>& varBlur,
-               const DenoiseSettings& s, int step, int y, Planes& out) {
-#if defined(SHADELAB_DENOISE_AVX2)
-    static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    if (avx2) return filterRowAvx2(in, g, lum, varBlur, s, step, y, out);
-#endif
-    filterRowIn(in, g, lum, varBlur, s, step, y, out);
-}
-
-Guides guidesOf(const SurfacePasses& s, const std::vector<uint8_t>& finite) {
-    const size_t n = size_t(s.width) * size_t(s.height);
-    Guides g;
-    for (auto* p : {&g.nx, &g.ny, &g.nz, &g.z, &g.slope, &g.ar, &g.ag, &g.ab, &g.valid}) p->resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        g.nx[i] = s.normal[3 * i];
-        g.ny[i] = s.normal[3 * i + 1];
-        g.nz[i] = s.normal[3 * i + 2];
-        g.z[i] = s.depth[i];
-        g.ar[i] = s.albedo[3 * i];
-        g.ag[i] = s.albedo[3 * i + 1];
-        g.ab[i] = s.albedo[3 * i + 2];
-        g.valid[i] = finite[i] ? 1.0f : 0.0f;
+// The colour c / (1 + L) (see denoise()) of n pixels, their variance, and their albedo over σ_a; loops over
+// pointers that alias nothing, which the compiler vectorises.
+void prepareColour(int n, const float* __restrict rgba, const float* __restrict variance,
+                   const float* __restrict albedo, float invA, float* __restrict r, float* __restrict g,
+                   float* __restrict b, float* __restrict v, float* __restrict ar, float* __restrict ag,
+                   float* __restrict ab) {
+    for (int x = 0; x < n; ++x) {
+        const float* c = rgba + 4 * x;
+        // std::isfinite, written so that it vectorises (no branch): not a number and infinity both fail.
+        const bool finite = (std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & (std::abs(variance[x]) <= FLT_MAX);
+        const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
+        r[x] = finite ? c[0] * k : 0.0f;
+        g[x] = finite ? c[1] * k : 0.0f;
+        b[x] = finite ? c[2] * k : 0.0f;
+        // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
+        const float vk = variance[x] * (k * k) * (k * k);
+        v[x] = finite & (vk > 1e-20f) ? vk : 0.0f;
+        // A pixel whose colour is not finite lends nothing: its albedo guide is infinite, as the padding's.
+        // (Added rather than chosen, once for three: GCC 12 vectorises the loop only so.)
+        const float outside = finite ? 0.0f : INFINITY;
+        ar[x] = albedo[3 * x] * invA + outside;
+        ag[x] = albedo[3 * x + 1] * invA + outside;
+        ab[x] = albedo[3 * x + 2] * invA + outside;
     }
-    // The depth change per pixel step here: the larger of the one-sided differences' smaller halves, so that
-    // a silhouette (a jump on one side only) does not count as slope.
-    for (int y = 0; y < s.height; ++y)
-        for (int x = 0; x < s.width; ++x) {
-            const size_t i = size_t(y) * size_t(s.width) + size_t(x);
-            auto along = [&](int dx, int dy) {
-                float best = INFINITY;
-                for (int sgn : {-1, 1}) {
-                    const int qx = x + sgn * dx, qy = y + sgn * dy;
-                    if (qx < 0 || qy < 0 || qx >= s.width || qy >= s.height) continue;
-                    best = std::min(best, std::abs(g.z[size_t(qy) * size_t(s.width) + size_t(qx)] - g.z[i]));
-                }
-                return std::isfinite(best) ? best : 0.0f;
-            };
-            g.slope[i] = std::max(along(1, 0), along(0, 1));
-        }
-    return g;
 }
 
-// The variance blurred by the 3x3 B-spline at step 1 (SVGF: a steadier estimate of the noise to stop at).
-std::vector<float> blurredVariance(const Planes& p) {
-    std::vector<float> out(p.v.size());
-    for (int y = 0; y < p.h; ++y)
-        for (int x = 0; x < p.w; ++x) {
-            float sum = 0.0f, wsum = 0.0f;
-            for (int j = -1; j <= 1; ++j)
-                for (int i = -1; i <= 1; ++i) {
-                    const int qx = x + i, qy = y + j;
-                    if (qx < 0 || qy < 0 || qx >= p.w || qy >= p.h) continue;
-                    const float k = kB3[i + 1] * kB3[j + 1];
-                    sum += k * p.v[size_t(qy) * size_t(p.w) + size_t(qx)];
-                    wsum += k;
-                }
-            out[size_t(y) * size_t(p.w) + size_t(x)] = sum / wsum;
-        }
-    return out;
+void prepareNormal(int n, const float* __restrict normal, float* __restrict nx, float* __restrict ny,
+                   float* __restrict nz) {
+    for (int x = 0; x < n; ++x) {
+        nx[x] = normal[3 * x];
+        ny[x] = normal[3 * x + 1];
+        nz[x] = normal[3 * x + 2];
+    }
+}
+
+// The depth change per pixel step along one axis: the smaller of the two one-sided differences, so that a
+// silhouette (a jump on one side only) does not count as slope; 0 where the image has no neighbour. A
+// missing neighbour's difference is infinite (`up` is then the row itself, `upMissing` infinite).
+float alongOf(float before, float after) { return std::min(before, after) <= FLT_MAX ? std::min(before, after) : 0.0f; }
+
+void prepareDepth(int w, const float* __restrict z, const float* __restrict up, float upMissing,
+                  const float* __restrict down, float downMissing, float sigmaDepth, float* __restrict depth,
+                  float* __restrict slope) {
+    const auto at = [&](int x, float left, float right) {
+        const float vertical = alongOf(std::abs(up[x] - z[x]) + upMissing, std::abs(down[x] - z[x]) + downMissing);
+        depth[x] = z[x];
+        slope[x] = sigmaDepth * std::max(alongOf(left, right), vertical);
+    };
+    at(0, INFINITY, w > 1 ? std::abs(z[1] - z[0]) : INFINITY);
+    for (int x = 1; x + 1 < w; ++x) at(x, std::abs(z[x - 1] - z[x]), std::abs(z[x + 1] - z[x]));
+    if (w > 1) at(w - 1, std::abs(z[w - 2] - z[w - 1]), INFINITY);
+}
+
+// Row y of the prepared image: the colour and the guides, padding included.
+void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                const SurfacePasses& g, const DenoiseSettings& s, int y) {
+    const int w = layout.width(), h = layout.height(), pad = layout.pad(), end = layout.stride() - pad;
+    float* p[kImagePlanes];
+    for (int k = 0; k < kImagePlanes; ++k) p[k] = layout.image(k, y);
+    const auto fillOutside = [&](int x) {
+        for (int k = kColour; k < kColour + kColourPlanes; ++k) p[k][x] = 0.0f;
+        p[kNx][x] = p[kNy][x] = p[kNz][x] = p[kDepth][x] = p[kSlope][x] = 0.0f;
+        p[kAlbedoR][x] = p[kAlbedoG][x] = p[kAlbedoB][x] = INFINITY;
+    };
+    for (int x = -pad; x < 0; ++x) fillOutside(x);
+    for (int x = w; x < end; ++x) fillOutside(x);
+
+    const size_t row = size_t(y) * size_t(w);
+    prepareColour(w, &color.rgba[4 * row], &variance[row], &g.albedo[3 * row], 1.0f / s.sigmaAlbedo, p[kColour],
+                  p[kColour + 1], p[kColour + 2], p[kColour + 3], p[kAlbedoR], p[kAlbedoG], p[kAlbedoB]);
+    prepareNormal(w, &g.normal[3 * row], p[kNx], p[kNy], p[kNz]);
+    const float* z = &g.depth[row];
+    prepareDepth(w, z, y > 0 ? z - w : z, y > 0 ? 0.0f : INFINITY, y + 1 < h ? z + w : z, y + 1 < h ? 0.0f : INFINITY,
+                 s.sigmaDepth, p[kDepth], p[kSlope]);
+}
+
+void filterStripBaseline(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                         const DenoiseSettings& s, int strip, int y0, int y1, ImageF& out) {
+    filterStrip<4>(layout, color, variance, s, strip, y0, y1, out);
 }
 
 }  // namespace
+
+std::vector<DenoiseIsa> denoiseIsas() {
+    std::vector<DenoiseIsa> isas{DenoiseIsa::Baseline};
+#if defined(SHADELAB_DENOISE_X86_BUILDS)
+    __builtin_cpu_init();
+    const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    if (avx2) isas.push_back(DenoiseIsa::Avx2);
+    if (avx2 && __builtin_cpu_supports("avx512f")) isas.push_back(DenoiseIsa::Avx512);
+#endif
+    return isas;
+}
+
+ImageF denoiseWith(DenoiseIsa isa, const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
+                   const DenoiseSettings& s, int threads) {
+    StripFilter filter = filterStripBaseline;
+#if defined(SHADELAB_DENOISE_X86_BUILDS)
+    if (isa == DenoiseIsa::Avx2) filter = filterStripAvx2;
+    if (isa == DenoiseIsa::Avx512) filter = filterStripAvx512;
+#else
+    (void)isa;
+#endif
+    const int h = color.height;
+    const int strips = std::max(1, std::min(threads, h / kMinStripRows));
+    const DenoiseLayout layout(color.width, h, s.iterations, strips);
+    parallelFor((h + kRowsPerTask - 1) / kRowsPerTask, threads, [&](int task) {
+        for (int y = task * kRowsPerTask; y < std::min(h, (task + 1) * kRowsPerTask); ++y)
+            prepareRow(layout, color, variance, guides, s, y);
+    });
+    ImageF out(color.width, h);
+    parallelFor(strips, threads, [&](int strip) {
+        filter(layout, color, variance, s, strip, int(int64_t(h) * strip / strips),
+               int(int64_t(h) * (strip + 1) / strips), out);
+    });
+    return out;
+}
+
+}  // namespace denoise_detail
 
 ImageF denoise(const ImageF& color, const std::vector<float>& variance, const SurfacePasses& guides,
                const DenoiseSettings& s) {
@@ -94,48 +156,9 @@ ImageF denoise(const ImageF& color, const std::vector<float>& variance, const Su
     if (!(s.sigmaLuminance > 0.0f) || !(s.sigmaNormal >= 0.0f) || !(s.sigmaDepth > 0.0f) || !(s.sigmaAlbedo > 0.0f))
         throw std::invalid_argument("denoise: the edge-stopping widths must be positive");
     if (n == 0) return color;
-
-    Planes cur(color.width, color.height), next(color.width, color.height);
-    std::vector<uint8_t> finite(n);
-    // The passes filter c / (1 + L), L the pixel's luminance (Reinhard's curve on luminance, as Karis 2014
-    // weights his samples): a value far above 1, which the display clips (a lamp, its reflection), weighs as
-    // the display shows it, so that it neither spreads its energy into its neighbours nor takes theirs. The
-    // variance follows to first order, var / (1 + L)⁴; the result is mapped back by c' / (1 − L').
-    for (size_t i = 0; i < n; ++i) {
-        const float* c = &color.rgba[4 * i];
-        finite[i] = std::isfinite(c[0] + c[1] + c[2]) && std::isfinite(variance[i]) ? 1 : 0;
-        const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
-        cur.r[i] = finite[i] ? c[0] * k : 0.0f;
-        cur.g[i] = finite[i] ? c[1] * k : 0.0f;
-        cur.b[i] = finite[i] ? c[2] * k : 0.0f;
-        // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
-        const float v = variance[i] * (k * k) * (k * k);
-        cur.v[i] = finite[i] && v > 1e-20f ? v : 0.0f;
-    }
-    const Guides g = guidesOf(guides, finite);
     const int threads = s.threads > 0 ? s.threads : std::max(1, int(std::thread::hardware_concurrency()));
-    std::vector<float> lum(n);
-    for (int k = 0; k < s.iterations; ++k) {
-        for (size_t i = 0; i < n; ++i) lum[i] = kLumR * cur.r[i] + kLumG * cur.g[i] + kLumB * cur.b[i];
-        const std::vector<float> varBlur = blurredVariance(cur);
-        // Rows in blocks of 8: enough tasks to balance, few enough that handing them out costs nothing.
-        const int blocks = (color.height + 7) / 8;
-        parallelFor(blocks, threads, [&](int block) {
-            for (int y = 8 * block; y < std::min(color.height, 8 * block + 8); ++y)
-                filterRow(cur, g, lum, varBlur, s, 1 << k, y, next);
-        });
-        std::swap(cur, next);
-    }
-    ImageF out = color;
-    for (size_t i = 0; i < n; ++i) {
-        if (!finite[i]) continue;
-        const float l = kLumR * cur.r[i] + kLumG * cur.g[i] + kLumB * cur.b[i];
-        const float k = 1.0f / std::max(1.0f - l, 1e-6f);
-        out.rgba[4 * i] = cur.r[i] * k;
-        out.rgba[4 * i + 1] = cur.g[i] * k;
-        out.rgba[4 * i + 2] = cur.b[i] * k;
-    }
-    return out;
+    static const denoise_detail::DenoiseIsa widest = denoise_detail::denoiseIsas().back();
+    return denoise_detail::denoiseWith(widest, color, variance, guides, s, threads);
 }
 
 }  // namespace shadelab

@@ -1,12 +1,13 @@
-// The denoiser's row pass built for AVX2 and FMA (see src/image/CMakeLists.txt); denoise.cpp calls it only on
-// CPUs that have both.
-#include "image/denoise_row.h"
+// The denoiser's passes (image/denoise_kernel.h) built for AVX2 and FMA, 8 lanes (see src/image/CMakeLists.txt);
+// denoise.cpp calls them only on CPUs that have them.
+#include "image/denoise_builds.h"
+#include "image/denoise_kernel.h"
 
 namespace shadelab::denoise_detail {
 
-void filterRowAvx2(const Planes& in, const Guides& g, const std::vector<float>& lum, const std::vector<float>& varBlur,
-                   const DenoiseSettings& s, int step, int y, Planes& out) {
-    filterRowIn(in, g, lum, varBlur, s, step, y, out);
+void filterStripAvx2(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
+                     const DenoiseSettings& s, int strip, int y0, int y1, ImageF& out) {
+    filterStrip<8>(layout, color, variance, s, strip, y0, y1, out);
 }
 
 }  // namespace shadelab::denoise_detail

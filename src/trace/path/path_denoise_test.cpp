@@ -118,6 +118,42 @@ TEST(PathDenoise, AnImageWithoutVisibleNoiseComesBackWithinOneStep) {
     }
 }
 
+TEST(PathDenoise, TheRowsStatisticsAreEachPixelsBitForBit) {
+    // standardErrorRow and image() feed the denoiser; they must be standardError(x, y) and mean(x, y).
+    for (const int spp : {1, 3}) {
+        PathSettings s = settings(spp, 0);
+        s.width = 37;
+        s.height = 5;
+        PathRender r(cornell(), s);
+        r.addSamples(spp);
+        PathSettings other = s;
+        other.seed = 9;
+        PathRender control(cornell(), other);
+        control.addSamples(spp);
+        const ImageF image = r.image();
+        for (int y = 0; y < 5; ++y)
+            for (int x = 0; x < 37; ++x)
+                for (int c = 0; c < 3; ++c) ASSERT_EQ(image.pixel(x, y)[c], r.mean(x, y)[c]) << x << "," << y;
+        std::vector<float> row(3 * 37), controlRow(3 * 37);
+        bool controlDiffers = false;
+        for (int y = 0; y < 5; ++y) {
+            r.standardErrorRow(y, row.data());
+            control.standardErrorRow(y, controlRow.data());
+            for (int x = 0; x < 37; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const size_t i = 3 * size_t(x) + size_t(c);
+                    const float expected = r.standardError(x, y)[c];
+                    ASSERT_EQ(row[i], expected) << spp << " spp, pixel " << x << "," << y;
+                    controlDiffers = controlDiffers || controlRow[i] != row[i];
+                }
+        }
+        // The negative control: another seed's errors differ, so equal bits mean something (with 3 samples).
+        if (spp > 1) {
+            EXPECT_TRUE(controlDiffers);
+        }
+    }
+}
+
 TEST(PathDenoise, TheFlagGivesTheDenoisedImageBesideTheRawOne) {
     PathSettings s = settings(4, 0);
     s.width = 32;

@@ -128,33 +128,6 @@ glm::vec3 PathRender::mean(int x, int y) const {
     return {float(sum_[3 * p] / n), float(sum_[3 * p + 1] / n), float(sum_[3 * p + 2] / n)};
 }
 
-glm::vec3 PathRender::standardError(int x, int y) const {
-    const size_t p = size_t(y) * size_t(settings_.width) + size_t(x);
-    const double n = double(count_[p].load(std::memory_order_acquire));
-    if (n < 2.0) return glm::vec3(0.0f);
-    glm::vec3 se;
-    for (int ch = 0; ch < 3; ++ch) {
-        const double m = sum_[3 * p + size_t(ch)] / n;
-        const double var = std::max(0.0, (sumSq_[3 * p + size_t(ch)] / n - m * m) * n / (n - 1.0));
-        se[ch] = float(std::sqrt(var / n));
-    }
-    return se;
-}
-
-ImageF PathRender::image() const {
-    ImageF img(settings_.width, settings_.height);
-    for (int y = 0; y < settings_.height; ++y)
-        for (int x = 0; x < settings_.width; ++x) {
-            const glm::vec3 m = mean(x, y);
-            float* px = img.pixel(x, y);
-            px[0] = m.x;
-            px[1] = m.y;
-            px[2] = m.z;
-            px[3] = 1.0f;
-        }
-    return img;
-}
-
 double PathRender::meanStandardError8(Encoding encoding) const {
     auto encode = [encoding](float v) {
         v = std::clamp(v, 0.0f, 1.0f);

@@ -50,6 +50,10 @@ public:
     // The pixel's mean and the standard error of that mean, per channel (0 with fewer than 2 samples).
     glm::vec3 mean(int x, int y) const;
     glm::vec3 standardError(int x, int y) const;
+    // standardError(x, y) for every pixel of row y, bit for bit, three floats per pixel into `out`: a row at a
+    // time, in loops the compiler vectorises, for the denoiser's variance (trace/path/path_denoise.h), which
+    // a preview computes every frame.
+    void standardErrorRow(int y, float* out) const;
     // The standard error averaged over pixels and channels in 8-bit units of `encoding` (through the
     // encoding's slope at each pixel's mean): the noise a reader of the PNG sees.
     double meanStandardError8(Encoding encoding) const;
