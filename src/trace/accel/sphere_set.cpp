@@ -1,5 +1,5 @@
-// SphereSet: BVH over padded sphere boxes and its traversals. The padding keeps the box test
-// conservative, so culling never changes which sphere intersectSphere reports.
+// SphereSet: the flat pass for small sets; for larger ones a BVH over padded sphere boxes and its traversals.
+// The padding keeps the box test conservative, so culling never changes which sphere intersectSphere reports.
 #include "trace/accel/sphere_set.h"
 
 #include "shading/lighting.h"
@@ -11,7 +11,7 @@
 
 namespace shadelab::trace {
 
-SphereSet::SphereSet(const std::vector<Sphere>& spheres) {
+SphereSet::SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit) : count_(spheres.size()) {
     std::vector<Bounds> boxes;
     boxes.reserve(spheres.size());
     for (const Sphere& s : spheres) {
@@ -24,6 +24,10 @@ SphereSet::SphereSet(const std::vector<Sphere>& spheres) {
         b.hi = s.center + glm::vec3(r);
         boxes.push_back(b);
         bounds_.extend(b);
+    }
+    if (spheres.size() <= flatLimit) {
+        flat_ = SphereList(spheres);
+        return;
     }
     BvhBuildOptions options;
     options.maxLeafSize = 2;
