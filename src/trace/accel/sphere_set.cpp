@@ -38,7 +38,7 @@ SphereSet::SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit) : cou
     }
 }
 
-std::optional<SphereHit> SphereSet::closestHitInTree(const Ray& ray, float tMin, float tMax) const {
+bool SphereSet::closestHitInTree(const Ray& ray, float tMin, float tMax, SphereHit& out) const {
     SphereHit best{tMax, UINT32_MAX};
     traverseClosest(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
         for (uint32_t s = first, end = first + count; s < end; ++s) {
@@ -50,7 +50,9 @@ std::optional<SphereHit> SphereSet::closestHitInTree(const Ray& ray, float tMin,
         }
         return best.t;
     });
-    return best.index == UINT32_MAX ? std::nullopt : std::optional<SphereHit>(best);
+    if (best.index == UINT32_MAX) return false;
+    out = best;
+    return true;
 }
 
 bool SphereSet::anyHitInTree(const Ray& ray, float tMin, float tMax) const {

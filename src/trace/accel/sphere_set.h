@@ -29,10 +29,19 @@ public:
     // The nearest intersectSphere(origin, dir, centre, radius, tMin) result below tMax; an exact tie goes
     // to the lower sphere index, as a loop over the spheres in scene order gives.
     std::optional<SphereHit> closestHit(const Ray& ray, float tMin, float tMax) const {
+        SphereHit h;
+        return closestHit(ray, tMin, tMax, h) ? std::optional<SphereHit>(h) : std::nullopt;
+    }
+    // The same into `out` (left alone without a hit): the per-ray path TraceScene takes. An optional returned
+    // here was assembled on the stack from a byte store and read back wider, a store-forwarding stall per ray.
+    bool closestHit(const Ray& ray, float tMin, float tMax, SphereHit& out) const {
         // Inline, so scenes without spheres pay no call per ray.
-        if (!flat_.empty()) return flat_.closestHit(ray, tMin, tMax);
-        if (bvh_.empty()) return std::nullopt;
-        return closestHitInTree(ray, tMin, tMax);
+        if (!flat_.empty()) {
+            const std::optional<SphereHit> h = flat_.closestHit(ray, tMin, tMax);
+            if (h) out = *h;
+            return h.has_value();
+        }
+        return !bvh_.empty() && closestHitInTree(ray, tMin, tMax, out);
     }
     // Whether some sphere is hit at tMin < t < tMax (shadow rays).
     bool anyHit(const Ray& ray, float tMin, float tMax) const {
@@ -45,7 +54,7 @@ public:
     Bounds bounds() const { return bounds_; }
 
 private:
-    std::optional<SphereHit> closestHitInTree(const Ray& ray, float tMin, float tMax) const;
+    bool closestHitInTree(const Ray& ray, float tMin, float tMax, SphereHit& out) const;
     bool anyHitInTree(const Ray& ray, float tMin, float tMax) const;
 
     SphereList flat_;  // every sphere when there are at most flatLimit of them, else empty
