@@ -13,7 +13,10 @@
 
 namespace shadelab::trace {
 
-SurfaceSetup::SurfaceSetup(const TraceScene& scene) : scene_(scene), model_(modelIndex(scene.scene().model)) {}
+SurfaceSetup::SurfaceSetup(const TraceScene& scene) : scene_(scene), model_(modelIndex(scene.scene().model)) {
+    for (const Mesh& m : scene.scene().meshes)
+        for (const MeshPart& p : m.parts) masks_ = masks_ || p.material.alphaMode == AlphaMode::Mask;
+}
 
 glm::vec4 SurfaceSetup::mapTexel(const Ray& ray, const Hit& hit, int depth, const TextureBinding& b) const {
     const Texture& tex = *b.texture;
@@ -72,7 +75,7 @@ glm::vec4 SurfaceSetup::mapTexel(const Ray& ray, const Hit& hit, int depth, cons
                             b.sampler.minLinear, b.sampler.mipmaps, b.sampler.mipLinear, uv, lod);
 }
 
-std::optional<Hit> SurfaceSetup::visibleHit(const Ray& ray, float after, int depth) const {
+std::optional<Hit> SurfaceSetup::visibleHitMasked(const Ray& ray, float after, int depth) const {
     // A masked-out texel is not there (mesh.frag discards it): continue past it along the same line, up to 64
     // surfaces, and measure t along `ray` so that shading and the footprint see the original ray.
     float start = after;

@@ -53,15 +53,21 @@ public:
     // (docs/textures-status.md).
     Surface at(const Ray& ray, const Hit& hit, int depth = 0) const;
     // The first hit along `ray` beyond t = `after` that an alpha mask does not cut away (Hit::t along `ray`).
-    std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const;
+    // Inline: a scene with no alpha-masked part (decided once, in the constructor) asks the scene directly.
+    std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const {
+        if (!masks_ && !(after > 0.0f)) return scene_.intersect(ray);
+        return visibleHitMasked(ray, after, depth);
+    }
     void setPixelFootprint(const PixelFootprint& f) { footprint_ = f; }
 
 private:
     // A material map's filtered linear texel at a triangle hit, as mesh.frag's sampleMap.
+    std::optional<Hit> visibleHitMasked(const Ray& ray, float after, int depth) const;
     glm::vec4 mapTexel(const Ray& ray, const Hit& hit, int depth, const TextureBinding& b) const;
 
     const TraceScene& scene_;
     int model_;
+    bool masks_ = false;  // some mesh part has alphaMode MASK
     PixelFootprint footprint_;
 };
 

@@ -36,16 +36,16 @@ void TraceScene::prepare() {
 
 std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
     // Once per ray: only the kinds of object the scene has are asked, and the meshes answer through an
-    // out-parameter (an optional built and copied there stalled on a partial store).
+    // out-parameter, the spheres too (an optional built and copied there stalled on a partial store).
     Hit best;
     best.t = INFINITY;
     bool found = false;
-    if (spheres_->size() != 0)
-        if (const std::optional<SphereHit> s = spheres_->closestHit(ray, 0.0f, INFINITY)) {
-            best.t = s->t;
-            best.index = s->index;
-            found = true;
-        }
+    SphereHit s;
+    if (spheres_->size() != 0 && spheres_->closestHit(ray, 0.0f, INFINITY, s)) {
+        best.t = s.t;
+        best.index = s.index;
+        found = true;
+    }
     for (size_t i = 0; i < scene_.planes.size(); ++i) {
         const Plane& p = scene_.planes[i];
         const float t = shading::intersectPlane(ray.origin, ray.dir, p.normal, p.offset, 0.0f);

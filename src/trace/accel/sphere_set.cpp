@@ -1,5 +1,5 @@
-// SphereSet: BVH over padded sphere boxes and its traversals. The padding keeps the box test
-// conservative, so culling never changes which sphere intersectSphere reports.
+// SphereSet: the flat pass for small sets; for larger ones a BVH over padded sphere boxes and its traversals.
+// The padding keeps the box test conservative, so culling never changes which sphere intersectSphere reports.
 #include "trace/accel/sphere_set.h"
 
 #include "shading/lighting.h"
@@ -11,7 +11,7 @@
 
 namespace shadelab::trace {
 
-SphereSet::SphereSet(const std::vector<Sphere>& spheres) {
+SphereSet::SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit) : count_(spheres.size()) {
     std::vector<Bounds> boxes;
     boxes.reserve(spheres.size());
     for (const Sphere& s : spheres) {
@@ -25,6 +25,10 @@ SphereSet::SphereSet(const std::vector<Sphere>& spheres) {
         boxes.push_back(b);
         bounds_.extend(b);
     }
+    if (spheres.size() <= flatLimit) {
+        flat_ = SphereList(spheres);
+        return;
+    }
     BvhBuildOptions options;
     options.maxLeafSize = 2;
     bvh_ = buildBvh(boxes, options);
@@ -34,7 +38,7 @@ SphereSet::SphereSet(const std::vector<Sphere>& spheres) {
     }
 }
 
-std::optional<SphereHit> SphereSet::closestHitInTree(const Ray& ray, float tMin, float tMax) const {
+bool SphereSet::closestHitInTree(const Ray& ray, float tMin, float tMax, SphereHit& out) const {
     SphereHit best{tMax, UINT32_MAX};
     traverseClosest(bvh_, makeBoxRay(ray), tMax, [&](uint32_t first, uint32_t count) {
         for (uint32_t s = first, end = first + count; s < end; ++s) {
@@ -46,7 +50,9 @@ std::optional<SphereHit> SphereSet::closestHitInTree(const Ray& ray, float tMin,
         }
         return best.t;
     });
-    return best.index == UINT32_MAX ? std::nullopt : std::optional<SphereHit>(best);
+    if (best.index == UINT32_MAX) return false;
+    out = best;
+    return true;
 }
 
 bool SphereSet::anyHitInTree(const Ray& ray, float tMin, float tMax) const {

@@ -1,11 +1,14 @@
-// SphereSet: a scene's spheres behind a small BVH, so a ray tests only the spheres whose boxes it
-// crosses. The hit itself is shading::intersectSphere, the function the rasterizer's impostors run.
+// SphereSet: a scene's spheres, tested in one flat pass when they are few (SphereList) and behind a small BVH
+// when they are many, so a ray tests only the spheres whose boxes it crosses. Both find the hits of
+// shading::intersectSphere, the function the rasterizer's impostors run, bit for bit.
 #pragma once
 
 #include "scene/objects.h"
 #include "trace/accel/bvh.h"
+#include "trace/accel/sphere_list.h"
 #include "trace/ray.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec4.hpp>
 #include <optional>
@@ -13,34 +16,53 @@
 
 namespace shadelab::trace {
 
-struct SphereHit {
-    float t;         // ray parameter
-    uint32_t index;  // into Scene::spheres
-};
+// Up to this many spheres a flat pass over all of them beats the BVH walk; from about 24 on the walk culls
+// enough to win, and on spheres40.json (40) the flat pass took 2.7 times the walk's instructions
+// (bench/README.md, "Spheres: a flat pass or the tree", measured with sphere_bench).
+inline constexpr size_t kFlatSphereLimit = 16;
 
 class SphereSet {
 public:
-    explicit SphereSet(const std::vector<Sphere>& spheres);
+    // `flatLimit`: the largest set tested flat (the tests compare both ways on one set).
+    explicit SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit = kFlatSphereLimit);
 
     // The nearest intersectSphere(origin, dir, centre, radius, tMin) result below tMax; an exact tie goes
     // to the lower sphere index, as a loop over the spheres in scene order gives.
     std::optional<SphereHit> closestHit(const Ray& ray, float tMin, float tMax) const {
-        if (bvh_.empty()) return std::nullopt;  // inline, so scenes without spheres pay no call per ray
-        return closestHitInTree(ray, tMin, tMax);
+        SphereHit h;
+        return closestHit(ray, tMin, tMax, h) ? std::optional<SphereHit>(h) : std::nullopt;
+    }
+    // The same into `out` (left alone without a hit): the per-ray path TraceScene takes. An optional returned
+    // here was assembled on the stack from a byte store and read back wider, a store-forwarding stall per ray.
+    bool closestHit(const Ray& ray, float tMin, float tMax, SphereHit& out) const {
+        // Inline, so scenes without spheres pay no call per ray.
+        if (!flat_.empty()) {
+            const std::optional<SphereHit> h = flat_.closestHit(ray, tMin, tMax);
+            if (h) out = *h;
+            return h.has_value();
+        }
+        return !bvh_.empty() && closestHitInTree(ray, tMin, tMax, out);
     }
     // Whether some sphere is hit at tMin < t < tMax (shadow rays).
-    bool anyHit(const Ray& ray, float tMin, float tMax) const { return !bvh_.empty() && anyHitInTree(ray, tMin, tMax); }
+    bool anyHit(const Ray& ray, float tMin, float tMax) const {
+        if (!flat_.empty()) return flat_.anyHit(ray, tMin, tMax);
+        return !bvh_.empty() && anyHitInTree(ray, tMin, tMax);
+    }
 
-    size_t size() const { return spheres_.size(); }
+    size_t size() const { return count_; }
+    bool flat() const { return !flat_.empty(); }
     Bounds bounds() const { return bounds_; }
 
 private:
-    std::optional<SphereHit> closestHitInTree(const Ray& ray, float tMin, float tMax) const;
+    bool closestHitInTree(const Ray& ray, float tMin, float tMax, SphereHit& out) const;
     bool anyHitInTree(const Ray& ray, float tMin, float tMax) const;
 
+    SphereList flat_;  // every sphere when there are at most flatLimit of them, else empty
+    // The tree, for larger sets (else empty):
     Bvh bvh_;
     std::vector<glm::vec4> spheres_;  // centre and radius, in BVH order
     std::vector<uint32_t> index_;     // scene index, in BVH order
+    size_t count_ = 0;
     Bounds bounds_;
 };
 
