@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 import shadelab
+import shadelab.data
 import shadelab.lighting
 import shadelab.plots
 from shadelab.typing import MemorySize, RendererName, SceneLike, Size, ViewTransformName
@@ -31,6 +32,9 @@ def main(scene_path: str, out_dir: Path) -> int:
     first_light: dict[str, object] = scene.lights[0].to_dict()
     edited = shadelab.Scene.from_dict(scene.to_dict(), base_dir=scene.base_dir)
     assert edited == scene and edited.triangle_count == scene.triangle_count and "color" in first_light
+    names: list[str] = shadelab.data.scenes()
+    shipped: shadelab.Scene = shadelab.data.scene(names[0])
+    assert shadelab.data.path(names[0]).is_file() and shadelab.data.folder().is_dir() and len(shipped.objects) > 0
 
     raster = shadelab.render(scene, (32, 24), coverage=True)
     traced = shadelab.render(scene, "32x24", renderer="trace", spp=4, encoding="srgb", depth=1, threads=2,
