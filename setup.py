@@ -17,8 +17,20 @@ from pathlib import Path
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+from setuptools.command.build_py import build_py
 
 ROOT = Path(__file__).resolve().parent
+
+# The package data behind shadelab.data: assets/ files copied into the package as shadelab/assets/, in the
+# repository's layout, so that the scenes' relative paths to their models and sky hold. src/python/CMakeLists.txt
+# copies the same files into the build tree's package.
+ASSET_PATTERNS = ("scenes/*.json", "models/**/*.gltf", "environments/*.hdr")
+
+
+def asset_files():
+    """The assets/ files the package ships, relative to assets/, sorted."""
+    assets = ROOT / "assets"
+    return sorted({p.relative_to(assets) for pattern in ASSET_PATTERNS for p in assets.glob(pattern) if p.is_file()})
 
 
 def cmake_project_version():
@@ -48,10 +60,19 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built, target)
 
 
+class BuildPyWithAssets(build_py):
+    def run(self):
+        super().run()
+        for relative in asset_files():
+            target = Path(self.build_lib) / "shadelab" / "assets" / relative
+            target.parent.mkdir(parents=True, exist_ok=True)
+            self.copy_file(str(ROOT / "assets" / relative), str(target))
+
+
 setup(
     version=cmake_project_version(),
     ext_modules=[Extension("shadelab._shadelab", sources=[])],
-    cmdclass={"build_ext": CMakeBuild},
+    cmdclass={"build_ext": CMakeBuild, "build_py": BuildPyWithAssets},
     # Out of build/, which is the CMake build folder of a checkout.
     options={"build": {"build_base": "build-pip"}, "egg_info": {"egg_base": "build-pip"}},
 )

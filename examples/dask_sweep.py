@@ -9,8 +9,9 @@ its own shadelab Renderer (its GL context and compiled programs) for all the tas
 
 Rendering is a pure function (design.md §10), so Dask only has to hand out tasks: shadelab has no scheduler of
 its own. On a real cluster every worker needs the shadelab package (`pip install .` from this repository) and
-the files the scene names (glTF meshes) at the same paths. Workers render through their process's default
-Renderer: EGL on a GPU node, llvmpipe elsewhere, as the binary would.
+the files the scene names (glTF meshes) at the same paths; the scenes shadelab ships (--scene torus) come with
+the package, so for them a package installed at the same path is enough. Workers render through their
+process's default Renderer: EGL on a GPU node, llvmpipe elsewhere, as the binary would.
 """
 
 import argparse
@@ -19,9 +20,6 @@ import os
 import sys
 import time
 from pathlib import Path
-
-REPO = Path(__file__).resolve().parents[1]
-
 
 def material_grid(count, base_scene):
     """`count` scene dicts: the base scene with its first object's shininess and colour (md = ma) swept over a
@@ -74,7 +72,9 @@ def main(argv=None):
     parser.add_argument("--scheduler", help="a Dask scheduler's address (default: start a LocalCluster)")
     parser.add_argument("--workers", type=int, default=2, help="LocalCluster worker processes (default 2)")
     parser.add_argument("--materials", type=int, default=64, help="grid size (default 64)")
-    parser.add_argument("--scene", default=str(REPO / "assets" / "scenes" / "default.json"))
+    parser.add_argument("--scene", default="default",
+                        help="a scene file, or the name of a scene shadelab ships (shadelab.data.scenes(); "
+                             "default: default)")
     parser.add_argument("--size", default="160x90", help="WxH (default 160x90)")
     parser.add_argument("--renderer", default="raster", choices=["raster", "trace"])
     parser.add_argument("--out", help="folder for the PNGs (default: render only)")
@@ -85,7 +85,9 @@ def main(argv=None):
     import shadelab
 
     w, h = (int(v) for v in args.size.lower().split("x"))
-    base = shadelab.Scene.load(args.scene)
+    # A shipped scene by name runs from any folder; anything else is a scene file's path.
+    shipped = args.scene in shadelab.data.scenes()
+    base = shadelab.data.scene(args.scene) if shipped else shadelab.Scene.load(args.scene)
     scenes = material_grid(args.materials, base)
     cluster = None if args.scheduler else local_cluster(args.workers)
     with Client(args.scheduler or cluster) as client:

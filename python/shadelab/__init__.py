@@ -5,7 +5,7 @@ A thin package over the compiled module ``shadelab._shadelab``, which links the 
 file's. It holds no rendering code of its own (design.md §5). See docs/python.md.
 
     import shadelab
-    scene = shadelab.Scene.load("assets/scenes/default.json")
+    scene = shadelab.data.scene("default")      # a shipped scene; Scene.load(path) reads your own
     scene.objects[0].material.s = 64
     image = shadelab.render(scene, size=(640, 360))
     image.save("out.png")
@@ -37,6 +37,7 @@ __all__ = [
     "ShadelabWarning",
     "build_info",
     "compare",
+    "data",
     "default_gates",
     "default_renderer",
     "lighting",
@@ -52,10 +53,10 @@ if TYPE_CHECKING:
 
 
 def __getattr__(name: str) -> ModuleType:
-    # shadelab.lighting and shadelab.plots import numpy, shadelab.typing imports typing: each is loaded on
-    # first use, so `import shadelab` stays light. (shadelab.typing stays out of __all__: a star import would
-    # shadow the standard library's typing.)
-    if name in ("lighting", "plots", "typing"):
+    # shadelab.lighting and shadelab.plots import numpy, shadelab.typing imports typing, shadelab.data lists
+    # the shipped scenes: each is loaded on first use, so `import shadelab` stays light. (shadelab.typing stays
+    # out of __all__: a star import would shadow the standard library's typing.)
+    if name in ("data", "lighting", "plots", "typing"):
         import importlib
 
         return importlib.import_module("." + name, __name__)

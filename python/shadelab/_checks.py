@@ -16,6 +16,7 @@ if TYPE_CHECKING:
     from typing import Any, NoReturn
 
 _INT_MIN, _INT_MAX = -(2**31), 2**31 - 1
+_INT64_MIN, _INT64_MAX = -(2**63), 2**63 - 1
 
 
 def _refuse(name: str, expected: str, value: object) -> NoReturn:
@@ -64,6 +65,15 @@ def word(name: str, value: object) -> str:
     return value
 
 
+def path(name: str, value: object) -> str:
+    """A path as a string: a str, bytes or os.PathLike (os.fspath), anything else a TypeError naming `name`."""
+    import os  # already loaded by the interpreter at start-up: costs nothing
+
+    if not isinstance(value, (str, bytes)) and not hasattr(type(value), "__fspath__"):
+        _refuse(name, "a path (str or os.PathLike)", value)
+    return os.fsdecode(os.fspath(value))  # type: ignore[call-overload]  # checked above
+
+
 def optional_word(name: str, value: object) -> str | None:
     """None, or a string."""
     return None if value is None else word(name, value)
@@ -77,7 +87,15 @@ class Clamp:
         self._wide: list[tuple[int, int]] = []
 
     def __call__(self, value: int) -> int:
-        clamped = min(max(value, _INT_MIN), _INT_MAX)
+        return self._clamp(value, _INT_MIN, _INT_MAX)
+
+    def int64(self, value: int | None) -> int | None:
+        """None, or `value` clamped into a 64-bit integer, for the arguments the compiled module takes as one
+        (seed: its range is all 32-bit unsigned numbers, beyond a C int)."""
+        return None if value is None else self._clamp(value, _INT64_MIN, _INT64_MAX)
+
+    def _clamp(self, value: int, low: int, high: int) -> int:
+        clamped = min(max(value, low), high)
         if clamped != value:
             self._wide.append((clamped, value))
         return clamped

@@ -32,9 +32,10 @@ def parse_size(size: Size) -> tuple[int, int]:
         return int(w), int(h)
     try:
         width, height = size
-        return int(width), int(height)
-    except (TypeError, ValueError, OverflowError):  # OverflowError: an infinite float
+    except (TypeError, ValueError):
         raise ValueError(f"size: expected (width, height) or 'WxH', got {size!r}") from None
+    # Whole numbers only (ints, numpy integers): int() would make 32.5 a silent 32, and True a 1.
+    return _checks.whole("size: width", width), _checks.whole("size: height", height)
 
 
 def memory_limit(max_memory: MemorySize | None) -> int:
@@ -47,7 +48,7 @@ def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Siz
                   spp: int | None, encoding: EncodingName, depth: int | None, threads: int, coverage: bool,
                   time_limit: float | None, estimator: EstimatorName | None, light_paths: LightPathsName | None,
                   sampler: SamplerName | None, denoise: bool, max_memory: int | None, exposure: float | None = None,
-                  view_transform: ViewTransformName | None = None) -> _shadelab.Image:
+                  view_transform: ViewTransformName | None = None, seed: int | None = None) -> _shadelab.Image:
     """Renders the scene behind `handle` with `core`; the arguments are Renderer.render's, max_memory in bytes
     (memory_limit()) or None for the default, as the command line without --max-memory. Their types are
     checked here, each refused in one line naming it; the compiled renderer holds them to the render request's
@@ -61,7 +62,8 @@ def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Siz
             _checks.optional_word("estimator", estimator), _checks.optional_word("light_paths", light_paths),
             _checks.optional_word("sampler", sampler), _checks.flag("denoise", denoise), max_memory,
             _checks.optional_real("exposure", exposure),
-            _checks.optional_word("view_transform", view_transform))
+            _checks.optional_word("view_transform", view_transform),
+            clamp.int64(_checks.optional_whole("seed", seed)))
     image: _shadelab.Image = _checks.call(clamp, core.render, *args)
     if image.non_finite_pixels:
         # The command line's warning, in the same words: no image goes black in silence.

@@ -53,8 +53,17 @@ class Image:
         """Pixels whose linear value had a NaN or an infinity (written black or white); render warns when > 0."""
     @property
     def _non_finite_message(self) -> str: ...
+    @property
+    def exposure(self) -> float:
+        """Stops the 8-bit pixels were exposed by (the render's exposure, else the scene's; 0 for a file)."""
+    @property
+    def view_transform(self) -> str:
+        """The view transform the 8-bit pixels were made with: 'standard' or 'filmic'."""
     def to_uint8(self) -> NDArray[np.uint8]:
         """The 8-bit pixels, shape (H, W, 3) (or 4 for an RGBA file), a new array."""
+    def to_srgb(self) -> NDArray[np.float32]:
+        """Display-ready sRGB floats in [0, 1], float32 (H, W, 3), a new array: the linear floats through the
+        image's exposure and view transform, the clamp and the sRGB curve, the PNG's steps before rounding."""
     def to_png(self) -> bytes:
         """The PNG file's bytes."""
     def _repr_png_(self) -> bytes: ...
@@ -69,10 +78,12 @@ class Image:
     @staticmethod
     def from_array(array: ArrayLike, encoding: EncodingName = "srgb") -> Image:
         """uint8 (H, W, 3|4): the pixels as they are; float (H, W, 3|4): linear RGB, encoded with `encoding`."""
-    def __getstate__(self) -> tuple[int, int, int, bytes, bytes, str, str, bytes, float, float]: ...
-    def __setstate__(self, state: tuple[int, int, int, bytes, bytes, str, str, bytes, float, float], /) -> None:
-        """Checks every field (sizes 1..16384, 3 or 4 channels, each buffer's exact length, the encoding and
-        source words) and raises ValueError, one line, for a state no Image could have written."""
+    def __getstate__(self) -> tuple[int, int, int, bytes, bytes, str, str, bytes, float, float, float, str]: ...
+    def __setstate__(self, state: tuple[int, int, int, bytes, bytes, str, str, bytes, float, float, float, str], /
+                     ) -> None:
+        """Checks every field (sizes 1..16384, 3 or 4 channels, each buffer's exact length, the encoding,
+        source and view transform words, the exposure's range) and raises ValueError, one line, for a state no
+        Image could have written. A 10-item state (without the display) is read as Standard."""
 
 class _Scene:
     """A scene as the compiled scene reader holds it (shadelab.Scene's handle)."""
@@ -106,7 +117,7 @@ class _Renderer:
                encoding: str = "srgb", depth: int | None = None, threads: int = 0, coverage: bool = False,
                time_limit: float | None = None, estimator: str | None = None, light_paths: str | None = None,
                sampler: str | None = None, denoise: bool = False, max_memory: int | None = None,
-               exposure: float | None = None, view_transform: str | None = None) -> Image: ...
+               exposure: float | None = None, view_transform: str | None = None, seed: int | None = None) -> Image: ...
     def context_info(self) -> dict[str, str]: ...
     def close(self) -> None: ...
     @property

@@ -1,17 +1,21 @@
 """shadelab's pytest plugin: screenshot tests against baseline PNGs under the gates of design.md §4.
 
     def test_default_scene(shadelab_regression):
-        image = shadelab.render("assets/scenes/default.json", size=(320, 180))
+        image = shadelab.render(shadelab.data.scene("default"), size=(320, 180))
         shadelab_regression.check(image, "default-320")
 
 The baseline is <test file's folder>/baselines/default-320.png (ini option shadelab_baseline_dir). A check
-that fails writes its evidence, the render, the baseline, the heatmap and the JSON report, beside the test
-in shadelab-evidence/ (--shadelab-evidence-dir or ini shadelab_evidence_dir to move it), then fails the test
-with the binary's summary. A check's name is a plain file name, so that its files stay inside those folders:
-a name with '/' or '\\', or "." or "..", is refused with a ValueError. Before a check runs, the plugin deletes
-that check's own evidence from an earlier run, by the four exact names it writes, and nothing else.
-Baselines are written only with --shadelab-update-baselines, never by a failing test; a baseline's sidecar
-<name>.json records the GL_RENDERER and version it was made with.
+that fails, a render of another size than its baseline included, writes its evidence (the render, the
+baseline, the heatmap and the JSON report) beside the test in shadelab-evidence/, a folder the plugin keeps
+out of git with a .gitignore of "*" (--shadelab-evidence-dir or ini shadelab_evidence_dir to move it), then
+fails the test in plain words. A check's name is a plain file name, so that its files stay inside those
+folders: a name with '/' or '\\', or "." or "..", is refused with a ValueError. Before a check runs, the plugin
+deletes that check's own evidence from an earlier run, by the four exact names it writes, and nothing else.
+
+Baselines are written only with --shadelab-update-baselines (every check's) or
+--shadelab-update-baselines=failed (only those that fail), never by a failing test, and never when the new
+PNG is byte for byte the old one. A baseline's sidecar <name>.json records the GL_RENDERER and version it was
+made with; a raster render from another GL_RENDERER checked against it raises a ShadelabWarning.
 
 Loaded by the `pytest11` entry point once the package is pip-installed; from a build tree, pass
 -p shadelab.pytest_plugin (or list it in a conftest's pytest_plugins).
@@ -22,6 +26,7 @@ from __future__ import annotations
 import json
 import os
 import re
+import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Mapping
 
@@ -37,17 +42,34 @@ if TYPE_CHECKING:
     from .typing import ImageLike
 
 _UPDATE = "--shadelab-update-baselines"
+_MODES = ("all", "failed")  # what --shadelab-update-baselines[=MODE] rewrites: every check's baseline, or the failing
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("shadelab", "shadelab screenshot tests")
-    group.addoption(_UPDATE, action="store_true", default=False,
-                    help="write the renders of shadelab_regression checks as their baselines (on purpose only)")
+    # No `choices`: pytest's early, partial parses would reject a test path that follows the bare flag; the bare
+    # flag becomes "=all" in pytest_load_initial_conftests, and pytest_configure checks the word.
+    group.addoption(_UPDATE, nargs="?", const="all", default=None, metavar="all|failed",
+                    help="write the renders of shadelab_regression checks as their baselines (on purpose only): "
+                         "all of them, or =failed for only the checks that fail. A byte-identical baseline is "
+                         "never rewritten")
     group.addoption("--shadelab-evidence-dir", default=None,
                     help="folder for failing checks' evidence (default: shadelab-evidence/ beside each test)")
     parser.addini("shadelab_baseline_dir", "baseline folder, relative to each test file's folder", default="baselines")
     parser.addini("shadelab_evidence_dir", "evidence folder for failing checks (default: beside each test)",
                   default="")
+
+
+def pytest_load_initial_conftests(early_config: pytest.Config, parser: pytest.Parser, args: list[str]) -> None:
+    # The bare flag takes no value: spelt "=all" here, before pytest's full parse, a test path after it stays a
+    # test path instead of being read as the flag's value.
+    args[:] = [f"{_UPDATE}=all" if arg == _UPDATE else arg for arg in args]
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    mode = config.getoption(_UPDATE)
+    if mode is not None and mode not in _MODES:
+        raise pytest.UsageError(f"{_UPDATE}: expected all or failed (or no value, for all), got {mode!r}")
 
 
 def _safe(text: str) -> str:
@@ -56,6 +78,7 @@ def _safe(text: str) -> str:
 
 # The files a failing check leaves as evidence, <name>-<suffix>: the only files the plugin ever deletes.
 _EVIDENCE = ("render.png", "baseline.png", "heat.png", "report.json")
+_EVIDENCE_FOLDER = "shadelab-evidence"
 
 
 def _check_name(name: object) -> str:
@@ -75,6 +98,30 @@ def _write_json(path: Path, data: Any) -> None:
     shadelab._shadelab._write_file(os.fspath(path), (json.dumps(data, indent=2) + "\n").encode())
 
 
+def _size_text(size: tuple[int, int] | list[int]) -> str:
+    return f"{size[0]}x{size[1]}"
+
+
+def _plain_reasons(report: dict[str, Any]) -> list[str]:
+    """The failed gates in plain words. A baseline PNG has no object ids (coverage), so every pixel is compared
+    under the gates: what the binary's report calls the "interior" region is here the whole image."""
+    region, gates = report["regions"]["interior"], report["gates"]
+    lines = []
+    allowed = int(gates["max_fraction_over"] * region["pixels"] + 1e-9)
+    if region["over_threshold"] > allowed:
+        lines.append(f"{region['over_threshold']} of {region['pixels']} pixels "
+                     f"({100 * region['fraction_over_threshold']:.2f}%) differ by more than {gates['threshold']}/255 "
+                     f"in a colour channel; at most {allowed} ({100 * gates['max_fraction_over']:.2f}%) may")
+    if region["over_hard_max"] > 0:
+        lines.append(f"{region['over_hard_max']} pixels differ by more than {gates['hard_max']}/255, which no pixel "
+                     f"may; the largest difference is {region['max']}/255 in {region['max_channel']} at pixel "
+                     f"(x={region['max_x']}, y={region['max_y']}) from the top left")
+    if gates["max_mean"] is not None and region["mean"] > gates["max_mean"]:
+        lines.append(f"the pixels differ by {region['mean']:.3f}/255 on average; at most {gates['max_mean']}/255 "
+                     f"is allowed")
+    return lines or list(report["reasons"])  # any other gate in the binary's words
+
+
 class ImageRegression:
     """The shadelab_regression fixture: check(image, name) against <baselines>/<name>.png."""
 
@@ -84,67 +131,137 @@ class ImageRegression:
         self._test_dir = Path(request.node.path).parent
 
     @property
+    def update_mode(self) -> str | None:
+        """"all" or "failed" under --shadelab-update-baselines[=failed] (check() writes baselines), else None."""
+        mode: str | None = self._config.getoption(_UPDATE)
+        return mode
+
+    @property
     def updating(self) -> bool:
-        """True when pytest runs with --shadelab-update-baselines: check() writes baselines instead."""
-        return bool(self._config.getoption(_UPDATE))
+        """True when pytest runs with --shadelab-update-baselines (either mode): check() may write baselines."""
+        return self.update_mode is not None
 
     def baseline_path(self, name: str) -> Path:
         """The baseline PNG of the check `name` (a plain file name: no path separator, not "." or "..")."""
         folder: str = self._config.getini("shadelab_baseline_dir")
         return self._test_dir / folder / f"{_check_name(name)}.png"
 
+    def _evidence_root(self) -> tuple[Path, bool]:
+        """The evidence folder for every test, and whether it is the plugin's own (the default)."""
+        chosen = self._config.getoption("--shadelab-evidence-dir") or self._config.getini("shadelab_evidence_dir")
+        return (Path(chosen), False) if chosen else (self._test_dir / _EVIDENCE_FOLDER, True)
+
     def evidence_dir(self) -> Path:
         """Where this test's failing checks leave their evidence."""
-        chosen = self._config.getoption("--shadelab-evidence-dir") or self._config.getini("shadelab_evidence_dir")
-        root = Path(chosen) if chosen else self._test_dir / "shadelab-evidence"
-        return root / _safe(self._request.node.nodeid.split("::", 1)[-1])
+        return self._evidence_root()[0] / _safe(self._request.node.nodeid.split("::", 1)[-1])
+
+    def _make_evidence_dir(self) -> Path:
+        # A .gitignore of "*" keeps the evidence out of git: in the default folder always, in a chosen one when
+        # the plugin creates it (a folder of yours keeps its own rules).
+        root, own = self._evidence_root()
+        own = own or not root.exists()
+        evidence = self.evidence_dir()
+        evidence.mkdir(parents=True, exist_ok=True)
+        ignore = root / ".gitignore"
+        if own and not ignore.exists():
+            shadelab._shadelab._write_file(os.fspath(ignore), b"# shadelab's pytest plugin: test evidence\n*\n")
+        return evidence
 
     def check(self, image: ImageLike, name: str | None = None, *,
-              gates: Mapping[str, float | None] | None = None) -> shadelab.CompareReport | None:
+              gates: Mapping[str, float | None] | None = None) -> shadelab.CompareReport:
         """Compares `image` (a shadelab.Image, or anything shadelab.compare takes) with the baseline `name`
         (default: the test's name) under `gates` (design.md §4's by default; a dict overrides some) and
-        returns the CompareReport. Fails the test, leaving the evidence, when the gates are not met. With
-        --shadelab-update-baselines it writes the baseline instead and returns None."""
+        returns the CompareReport. Fails the test, leaving the evidence, when the gates are not met or the sizes
+        differ. With --shadelab-update-baselines it first rewrites the baseline (=failed: only when the check
+        would fail; never when the PNG is byte for byte the same); the report is then against the baseline as
+        it stands."""
         name = _safe(self._request.node.name) if name is None else _check_name(name)
         baseline = self.baseline_path(name)
         if not isinstance(image, shadelab.Image):
             image = _as_image(image)
-        if self.updating:
-            self._write_baseline(image, baseline)
-            return None
-        evidence = self.evidence_dir()
-        stem = evidence / name
+        stem = self.evidence_dir() / name
         for suffix in _EVIDENCE:  # an earlier failure's evidence, by the exact names it was written under
             old = Path(f"{stem}-{suffix}")
             if old.is_file() or old.is_symlink():
                 old.unlink()
+        if self.updating:
+            self._update(image, baseline, gates)
         if not baseline.exists():
-            evidence.mkdir(parents=True, exist_ok=True)
+            self._make_evidence_dir()
             image.save(f"{stem}-render.png")
-            pytest.fail(f"no baseline {baseline}; the render is {stem}-render.png. Run pytest with {_UPDATE} to "
-                        f"make it the baseline.", pytrace=False)
-        report = shadelab.compare(image, str(baseline), gates)
-        if not report.passed:
-            evidence.mkdir(parents=True, exist_ok=True)
+            pytest.fail(f"{name}: there is no baseline {baseline} yet; the render is {stem}-render.png. Run pytest "
+                        f"with {_UPDATE} to make it the baseline.", pytrace=False)
+        self._warn_if_other_renderer(image, baseline, name)
+        outcome = self._compare(image, baseline, gates)
+        if isinstance(outcome, str) or not outcome.passed:
+            evidence = self._make_evidence_dir()
             image.save(f"{stem}-render.png")
-            shadelab._shadelab._write_file(f"{stem}-baseline.png", Path(baseline).read_bytes())
-            report.heatmap.save(f"{stem}-heat.png")
-            _write_json(Path(f"{stem}-report.json"), report.report)
-            pytest.fail(f"{name}: the render differs from {baseline}:\n{report.summary}"
-                        f"evidence: {stem}-render.png, -baseline.png, -heat.png, -report.json\n"
-                        f"(if the change is intended, rewrite it with {_UPDATE})", pytrace=False)
-        return report
+            shadelab._shadelab._write_file(f"{stem}-baseline.png", baseline.read_bytes())
+            files = f"{name}-render.png, -baseline.png"
+            if isinstance(outcome, str):
+                _write_json(Path(f"{stem}-report.json"), {"verdict": "fail", "pass": False, "reasons": [outcome],
+                                                           "image_b": str(baseline)})
+                files += ", -report.json"
+                why = f"{outcome}.\n"
+            else:
+                outcome.heatmap.save(f"{stem}-heat.png")
+                _write_json(Path(f"{stem}-report.json"), outcome.report)
+                files += ", -heat.png (where they differ), -report.json (the numbers)"
+                lines = "".join(f"  - {line}\n" for line in _plain_reasons(outcome.report))
+                why = f"the render differs from the baseline {baseline}:\n{lines}"
+            pytest.fail(f"{name}: {why}evidence in {evidence}: {files}\n"
+                        f"If the change is intended, rewrite the baseline with {_UPDATE}=failed.", pytrace=False)
+        return outcome
 
-    def _write_baseline(self, image: shadelab.Image, baseline: Path) -> None:
+    def _compare(self, image: shadelab.Image, baseline: Path,
+                 gates: Mapping[str, float | None] | None) -> shadelab.CompareReport | str:
+        """The comparison, or in words why there can be none: a baseline of another size, or no PNG."""
+        try:
+            expected = shadelab.Image.open(str(baseline))
+        except shadelab.InputError as e:
+            return f"the baseline cannot be read ({e})"
+        if expected.size != image.size:
+            return (f"the render is {_size_text(image.size)} pixels but the baseline {baseline} is "
+                    f"{_size_text(expected.size)}, so they cannot be compared pixel by pixel; render at "
+                    f"size={tuple(expected.size)}, or rewrite the baseline if the new size is intended")
+        return shadelab.compare(image, str(baseline), gates)
+
+    def _update(self, image: shadelab.Image, baseline: Path, gates: Mapping[str, float | None] | None) -> None:
+        png = image.to_png()
+        if baseline.is_file():
+            if baseline.read_bytes() == png:
+                if not baseline.with_suffix(".json").exists():
+                    self._write_sidecar(image, baseline)
+                return  # byte for byte the same: never rewritten
+            if self.update_mode == "failed":
+                outcome = self._compare(image, baseline, gates)
+                if not isinstance(outcome, str) and outcome.passed:
+                    return
         baseline.parent.mkdir(parents=True, exist_ok=True)
-        image.save(str(baseline))
+        shadelab._shadelab._write_file(os.fspath(baseline), png)
+        self._write_sidecar(image, baseline)
+        rewritten: list[str] = self._config.stash.setdefault(_rewritten_key, [])
+        rewritten.append(str(baseline))
+
+    def _write_sidecar(self, image: shadelab.Image, baseline: Path) -> None:
         meta = {"shadelab": shadelab.__version__, "size": list(image.size), "encoding": image.encoding,
                 "source": image.source}
         if image.source == "raster":
             meta.update(shadelab.default_renderer().info)  # one GL context per process: the one that rendered
         _write_json(baseline.with_suffix(".json"), meta)
-        rewritten: list[str] = self._config.stash.setdefault(_rewritten_key, [])
-        rewritten.append(str(baseline))
+
+    def _warn_if_other_renderer(self, image: shadelab.Image, baseline: Path, name: str) -> None:
+        if image.source != "raster":
+            return  # the tracers' pixels do not depend on the GL driver
+        try:
+            made_with = json.loads(baseline.with_suffix(".json").read_text()).get("gl_renderer")
+        except (OSError, ValueError, AttributeError):
+            return  # no sidecar, or not one of ours: nothing recorded to compare with
+        current = shadelab.default_renderer().info.get("gl_renderer")
+        if made_with and current and made_with != current:
+            warnings.warn(f"{name}: the baseline {baseline} was made with GL_RENDERER {made_with!r}, this render "
+                          f"with {current!r}; differences may come from the GPU or driver rather than your change",
+                          shadelab.ShadelabWarning, stacklevel=3)
 
 
 def _as_image(x: StrPath | ArrayLike) -> shadelab.Image:

@@ -66,7 +66,7 @@ class Renderer:
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
                light_paths: LightPathsName | None = None, sampler: SamplerName | None = None, denoise: bool = False,
                max_memory: MemorySize | None = None, exposure: float | None = None,
-               view_transform: ViewTransformName | None = None) -> _shadelab.Image:
+               view_transform: ViewTransformName | None = None, seed: int | None = None) -> _shadelab.Image:
         """Renders `scene` to a shadelab.Image with this Renderer's GL context and programs.
 
         scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -96,8 +96,10 @@ class Renderer:
             stratified in each pixel: less noise at equal samples) or "independent" (plain Monte Carlo); both
             converge to the same image; default None, "sobol". The binary's --sampler.
         denoise: "path" only: the denoised preview instead of the raw estimate (an edge-avoiding filter
-            guided by the first hit's albedo, normal and depth; the binary's --denoise); default False. Given to
-            another renderer, any of these five raises ValueError.
+            guided by the first hit's albedo, normal and depth; the binary's --denoise); default False.
+        seed: "path" only: the random numbers' variation, a whole number 0..4294967295: the same seed gives the
+            same image byte for byte, another seed another noise; default None, 0 (the image without a seed).
+            The binary's --seed. Given to another renderer, any of these six raises ValueError.
         max_memory: the most memory the render may take: an int of bytes, or a string as the binary's
             --max-memory reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's
             default, half of physical memory (within ulimit -v). A render estimated to need more raises
@@ -118,7 +120,7 @@ class Renderer:
         limit = _rendering.memory_limit(max_memory)  # the default too: a path's environment map is held to it
         return _rendering.render_handle(self._core, _scene(scene, limit)._handle, size, renderer, spp, encoding,
                                         depth, threads, coverage, time_limit, estimator, light_paths, sampler, denoise,
-                                        None if max_memory is None else limit, exposure, view_transform)
+                                        None if max_memory is None else limit, exposure, view_transform, seed)
 
     @property
     def info(self) -> dict[str, str]:
@@ -159,7 +161,7 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
            coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
            light_paths: LightPathsName | None = None, sampler: SamplerName | None = None, denoise: bool = False,
            max_memory: MemorySize | None = None, exposure: float | None = None,
-           view_transform: ViewTransformName | None = None) -> _shadelab.Image:
+           view_transform: ViewTransformName | None = None, seed: int | None = None) -> _shadelab.Image:
     """Renders `scene` with the default Renderer (default_renderer()) to a shadelab.Image.
 
     scene: a Scene, a scene file's path (.json, or a .gltf / .glb model framed and lit as the binary does)
@@ -189,8 +191,10 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
         stratified in each pixel: less noise at equal samples) or "independent" (plain Monte Carlo); both
         converge to the same image; default None, "sobol". The binary's --sampler.
     denoise: "path" only: the denoised preview instead of the raw estimate (an edge-avoiding filter guided by
-        the first hit's albedo, normal and depth; the binary's --denoise); default False. Given to another
-        renderer, any of these five raises ValueError.
+        the first hit's albedo, normal and depth; the binary's --denoise); default False.
+    seed: "path" only: the random numbers' variation, a whole number 0..4294967295: the same seed gives the
+        same image byte for byte, another seed another noise; default None, 0 (the image without a seed). The
+        binary's --seed. Given to another renderer, any of these six raises ValueError.
     max_memory: the most memory the render may take: an int of bytes, or a string as the binary's --max-memory
         reads it ("512M", "2G"; a bare number in a string is MiB); default None, the binary's default, half of
         physical memory (within ulimit -v). A render estimated to need more raises shadelab.InputError before
@@ -211,7 +215,8 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
     return default_renderer().render(scene, size, renderer=renderer, spp=spp, encoding=encoding, depth=depth,
                                      threads=threads, coverage=coverage, time_limit=time_limit,
                                      estimator=estimator, light_paths=light_paths, sampler=sampler, denoise=denoise,
-                                     max_memory=max_memory, exposure=exposure, view_transform=view_transform)
+                                     max_memory=max_memory, exposure=exposure, view_transform=view_transform,
+                                     seed=seed)
 
 
 def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_SIZE) -> dict[str, Any]:

@@ -15,7 +15,7 @@ from __future__ import annotations
 import os
 from collections.abc import MutableSequence
 
-from . import _rendering, _shadelab, _warnings
+from . import _checks, _rendering, _shadelab, _warnings
 from ._rendering import DEFAULT_SIZE
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing; mypy treats the name as True
@@ -255,7 +255,8 @@ class Scene(_View):
         """Reads a scene file (.json) or a glTF model (.gltf, .glb: framed and lit, as the binary does).
         allow_external_paths: let glTF buffer URIs point outside the model's folder (the binary's
         --allow-external-paths; default False, so that a model from elsewhere cannot read arbitrary files)."""
-        handle, lines = _shadelab._Scene.load(os.fspath(path), allow_external_paths)
+        handle, lines = _shadelab._Scene.load(_checks.path("path", path),
+                                              _checks.flag("allow_external_paths", allow_external_paths))
         return cls._from_handle(handle, lines)
 
     @classmethod
@@ -263,8 +264,9 @@ class Scene(_View):
                   allow_external_paths: bool = False) -> Scene:
         """A scene from a dict in the scene file's schema. Mesh sources are relative to `base_dir` (default:
         the current folder). Raises ValueError naming the JSON path, as the scene file's errors do."""
-        base = os.fspath(base_dir) if base_dir is not None else os.getcwd()
-        handle, lines = _shadelab._Scene.from_document(_plain(document), base, allow_external_paths)
+        base = _checks.path("base_dir", base_dir) if base_dir is not None else os.getcwd()
+        handle, lines = _shadelab._Scene.from_document(_plain(document), base,
+                                                       _checks.flag("allow_external_paths", allow_external_paths))
         return cls._from_handle(handle, lines)
 
     def to_dict(self) -> dict[str, Any]:
@@ -302,17 +304,17 @@ class Scene(_View):
                coverage: bool = False, time_limit: float | None = None, estimator: EstimatorName | None = None,
                light_paths: LightPathsName | None = None, sampler: SamplerName | None = None, denoise: bool = False,
                max_memory: MemorySize | None = None, exposure: float | None = None,
-               view_transform: ViewTransformName | None = None) -> _shadelab.Image:
+               view_transform: ViewTransformName | None = None, seed: int | None = None) -> _shadelab.Image:
         """shadelab.render(self, size, ...): renders this scene with the default Renderer. The keywords, their
         ranges and defaults are shadelab.render's: renderer="raster" ("trace", "path"), spp=None (1; 16 for
         path), encoding="srgb" ("linear"), depth=None (the scene's maxDepth), threads=0 (every core),
         coverage=False, for path time_limit=None, estimator=None ("mis"), light_paths=None ("all"), sampler=None
-        ("sobol") and denoise=False, max_memory=None (the binary's --max-memory default; bytes, or "512M"), and
+        ("sobol"), denoise=False and seed=None (0), max_memory=None (the binary's --max-memory default; bytes, or "512M"), and
         exposure=None and view_transform=None (the scene's display: -16..16 stops, "standard" or "filmic")."""
         return _rendering.render_handle(_rendering.default_core(), self._handle, size, renderer, spp, encoding,
                                         depth, threads, coverage, time_limit, estimator, light_paths, sampler, denoise,
                                         None if max_memory is None else _rendering.memory_limit(max_memory),
-                                        exposure, view_transform)
+                                        exposure, view_transform, seed)
 
     # -- the document and its edits -------------------------------------------------------------------------
 

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <sstream>
 
 namespace shadelab::cli {
@@ -54,7 +55,9 @@ const char* const kHelpHead =
     "  --denoise                  path: write the denoised preview (an edge-avoiding filter guided by the\n"
     "                             first hit's albedo, normal and depth) instead of the raw estimate\n"
     "  --sampler NAME             path: sobol (default) | independent: Owen-scrambled Sobol numbers,\n"
-    "                             stratified in each pixel, or independent random ones (more noise)\n";
+    "                             stratified in each pixel, or independent random ones (more noise)\n"
+    "  --seed N                   path: the random numbers' variation, 0..4294967295 (default 0): the same\n"
+    "                             seed gives the same bytes, another seed another noise\n";
 
 const char* const kHelpTail =
     "  --encoding NAME            srgb (default) | linear: how linear colour becomes 8-bit\n"
@@ -120,12 +123,25 @@ CameraChoice parseCameraFlag(const std::string& value) {
     throw UsageError("--camera: expected fit, file or a camera number 0..999, got '" + value + "'");
 }
 
+namespace {
+
+// --seed: digits only; up to 18 of them fit an int64_t, and the request's range check words the rest.
+int64_t parseSeed(const std::string& value) {
+    if (value.empty() || value.size() > 18 || value.find_first_not_of("0123456789") != std::string::npos)
+        throw UsageError("--seed: expected a whole number from 0 to " + std::to_string(render::kMaxSeed) + ", got '" +
+                         value + "'");
+    return std::stoll(value);
+}
+
+}  // namespace
+
 RenderOptions parseRenderOptions(int argc, char** argv) {
     std::vector<std::string> valued = {
         "-o",           "--output",        "--size",      "--model",       "--terms",         "--encoding",
         "--gl-backend", "--spp",           "--renderer",  "--threads",     "--depth",         "--max-memory",
         "--camera",     "--time-limit",    "--estimator", "--light-paths", "--exr-precision", "--sampler",
         "--exposure",   "--view-transform"};
+    valued.emplace_back("--seed");
     std::vector<std::string> flags = {"-h",       "--help",   "--verbose", "--timings", "--allow-external-paths",
                                       "--strict", "--passes", "--denoise"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
@@ -168,6 +184,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--light-paths")) r.path.part = parseChoice("--light-paths", *v, trace::kPathPartNames);
     r.path.denoise = args.flag("--denoise");
     if (auto v = args.value("--sampler")) r.path.sampler = parseChoice("--sampler", *v, trace::kPathSamplerNames);
+    if (auto v = args.value("--seed")) r.path.seed = parseSeed(*v);
     if (auto v = args.value("--threads")) r.threads = parseWhole("--threads", *v);
     if (auto v = args.value("--depth")) r.depth = parseWhole("--depth", *v);
     // The ranges are the request's, as every front end holds them; only the words are the command line's.

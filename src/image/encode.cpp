@@ -144,6 +144,11 @@ uint8_t encodeChannel(float linear, Encoding e, const DisplaySettings& display) 
     return encodeChannel(displayValue(linear, display), e);
 }
 
+float displayEncoded(float linear, Encoding e, const DisplaySettings& display) {
+    const double x = clamp01(displayValue(linear, display));
+    return float(e == Encoding::Srgb ? srgbCurve(x) : x);
+}
+
 uint8_t encodeChannel(float linear, Encoding e) {
     double x = clamp01(linear);
     double v = e == Encoding::Srgb ? srgbCurve(x) : x;

@@ -26,6 +26,10 @@ float displayValue(float linear, const DisplaySettings& display);
 uint8_t encodeChannel(float linear, Encoding e);
 uint8_t encodeChannel(float linear, Encoding e, const DisplaySettings& display);
 
+// One channel as the 8-bit conversion has it just before rounding, in [0, 1]: the display (displayValue), the
+// clamp (NaN → 0), then the encoding's curve. encodeChannel(linear, e, display) rounds this value times 255.
+float displayEncoded(float linear, Encoding e, const DisplaySettings& display);
+
 // RGB8 image (alpha dropped) from a float image, each channel exactly encodeChannel(v, e, display): every
 // caller passes the display it shows (DisplaySettings{} for Standard, today's bytes). A pixel whose RGB holds a NaN or
 // an infinity has no value to show: NaN is written as 0 and +inf as 255 (under either transform), and the number of

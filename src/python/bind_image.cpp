@@ -84,6 +84,18 @@ py::array uint8Array(const ImagePtr& img) {
     return std::move(out);
 }
 
+// The linear floats through the 8-bit conversion's steps but the rounding (image/encode.h displayEncoded): the
+// image's exposure and view transform, the clamp, the sRGB curve; float32 (H, W, 3) in [0, 1].
+py::array_t<float> srgbArray(const ImagePtr& img) {
+    const ImageF& f = img->linear;
+    py::array_t<float> out({size_t(f.height), size_t(f.width), size_t(3)});
+    float* dst = out.mutable_data();
+    const size_t n = size_t(f.width) * size_t(f.height);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t c = 0; c < 3; ++c) dst[3 * i + c] = displayEncoded(f.rgba[4 * i + c], Encoding::Srgb, img->display);
+    return out;
+}
+
 py::bytes pngBytes(const ImageData& img) {
     const std::vector<uint8_t> png = encodePng(img.pixels);
     return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
@@ -139,9 +151,11 @@ Encoding encodingArg(const py::handle& v) {
 // The inverse of __getstate__, for a state that may have been tampered with: every field is checked before any
 // pixel is touched, so that no later call (save, compare, np.asarray) meets sizes or lengths it cannot trust.
 ImagePtr fromPickleState(const py::object& state) {
-    if (!py::isinstance<py::tuple>(state)) throw badState("expected a tuple of 10 items, got " + typeName(state));
+    // 12 items; 10 from a release before images kept their display (Standard).
+    if (!py::isinstance<py::tuple>(state)) throw badState("expected a tuple of 12 items, got " + typeName(state));
     const py::tuple t = state;
-    if (t.size() != 10) throw badState("expected a tuple of 10 items, got " + std::to_string(t.size()));
+    if (t.size() != 12 && t.size() != 10)
+        throw badState("expected a tuple of 12 items, got " + std::to_string(t.size()));
     if (!py::isinstance<py::int_>(t[0]) || !py::isinstance<py::int_>(t[1]) || !py::isinstance<py::int_>(t[2]) ||
         py::isinstance<py::bool_>(t[0]) || py::isinstance<py::bool_>(t[1]) || py::isinstance<py::bool_>(t[2]))
         throw badState("width, height and channels must be integers");
@@ -189,6 +203,15 @@ ImagePtr fromPickleState(const py::object& state) {
     img->source = source;
     img->drawMs = stateNumber(t, 8, "draw_ms");
     img->readMs = stateNumber(t, 9, "read_ms");
+    if (t.size() == 12) {
+        img->display.exposure = stateNumber(t, 10, "exposure");
+        if (std::optional<std::string> why = exposureProblem(img->display.exposure)) throw badState("exposure " + *why);
+        if (!py::isinstance<py::str>(t[11])) throw badState("view transform must be a string");
+        const std::string transform = t[11].cast<std::string>();
+        const std::optional<ViewTransform> v = parseViewTransform(transform);
+        if (!v) throw badState("unknown view transform '" + transform.substr(0, 32) + "'");
+        img->display.transform = *v;
+    }
     return img;
 }
 
@@ -248,6 +271,15 @@ In Jupyter an image shows itself.)")
                                        held->nonFinite, uint64_t(held->pixels.width) * uint64_t(held->pixels.height));
                                })
         .def("to_uint8", &uint8Array, "The 8-bit pixels, shape (H, W, 3) (or 4 for an RGBA file), a new array")
+        .def("to_srgb", &srgbArray,
+             "Display-ready sRGB floats in [0, 1], float32 (H, W, 3), a new array: the linear floats through the "
+             "image's exposure and view transform, the clamp and the sRGB curve, the PNG's steps before rounding")
+        .def_property_readonly(
+            "exposure", [](const ImagePtr& held) { return held->display.exposure; },
+            "Stops the 8-bit pixels were exposed by (the render's exposure, else the scene's; 0 for a file)")
+        .def_property_readonly(
+            "view_transform", [](const ImagePtr& held) { return std::string(toString(held->display.transform)); },
+            "The view transform the 8-bit pixels were made with: 'standard' or 'filmic'")
         .def(
             "to_png", [](const ImagePtr& held) { return pngBytes(*held); }, "The PNG file's bytes")
         .def("_repr_png_", [](const ImagePtr& held) { return pngBytes(*held); })
@@ -302,7 +334,15 @@ In Jupyter an image shows itself.)")
             "np.asarray gives its linear floats, the 8-bit pixels are encoded with `encoding`)")
         .def_static(
             "from_array",
-            [](py::array a, const py::object& encoding) {
+            [](const py::object& array, const py::object& encoding) {
+                // Anything numpy makes an array of (a list of lists too); else one TypeError line, not
+                // pybind11's list of signatures.
+                py::array a = py::array::ensure(array);
+                if (!a) {
+                    PyErr_Clear();
+                    throw py::type_error("from_array: expected a numpy array (H, W, 3 or 4) of uint8 or float, got " +
+                                         typeName(array));
+                }
                 const Encoding e = encodingArg(encoding);
                 if (a.dtype().kind() == 'u' && a.dtype().itemsize() == 1) return fromUint8(a, e);
                 if (a.dtype().kind() == 'f') return fromFloat(a, e);
@@ -322,7 +362,8 @@ In Jupyter an image shows itself.)")
                 const ImageData& i = *held;  // a tuple; typed as the state __setstate__ checks
                 return py::make_tuple(i.pixels.width, i.pixels.height, i.pixels.channels, rawBytes(i.pixels.data),
                                       rawBytes(i.linear.rgba), std::string(toString(i.encoding)), i.source,
-                                      rawBytes(i.coverage), i.drawMs, i.readMs);
+                                      rawBytes(i.coverage), i.drawMs, i.readMs, i.display.exposure,
+                                      std::string(toString(i.display.transform)));
             },
             [](const py::object& state) { return fromPickleState(state); }));
 }

@@ -76,7 +76,7 @@ void bindRender(py::module_& m) {
                bool coverage, std::optional<double> timeLimit, const std::optional<std::string>& estimator,
                const std::optional<std::string>& lightPaths, const std::optional<std::string>& sampler, bool denoise,
                std::optional<uint64_t> maxMemory, std::optional<double> exposure,
-               const std::optional<std::string>& viewTransform) {
+               const std::optional<std::string>& viewTransform, std::optional<int64_t> seed) {
                 render::RenderRequest request;
                 request.width = width;
                 request.height = height;
@@ -91,6 +91,7 @@ void bindRender(py::module_& m) {
                 request.path.part = namedIfGiven(trace::kPathPartNames, lightPaths, "light_paths");
                 request.path.sampler = namedIfGiven(trace::kPathSamplerNames, sampler, "sampler");
                 request.path.denoise = denoise;
+                request.path.seed = seed;
                 request.maxMemory = maxMemory;
                 request.exposure = exposure;  // unset: the scene's display
                 request.viewTransform = namedIfGiven(kViewTransformNames, viewTransform, "view_transform");
@@ -108,7 +109,7 @@ void bindRender(py::module_& m) {
             py::arg("threads") = 0, py::arg("coverage") = false, py::arg("time_limit") = py::none(),
             py::arg("estimator") = py::none(), py::arg("light_paths") = py::none(), py::arg("sampler") = py::none(),
             py::arg("denoise") = false, py::arg("max_memory") = py::none(), py::arg("exposure") = py::none(),
-            py::arg("view_transform") = py::none())
+            py::arg("view_transform") = py::none(), py::arg("seed") = py::none())
         .def("context_info",
              [](Renderer& r) {
                  gl::ContextInfo info;

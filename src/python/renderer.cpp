@@ -46,6 +46,7 @@ ImageData fromTracer(ImageF color, std::vector<uint32_t> coverage, Encoding enco
     out.linear = std::move(color);
     out.coverage = std::move(coverage);
     out.encoding = encoding;
+    out.display = display;
     out.source = source;
     return out;
 }
@@ -137,6 +138,7 @@ ImageData Renderer::rasterize(const Scene& scene, const render::RenderRequest& r
         out.readMs = r.readMs;
     });
     out.encoding = request.encoding;
+    out.display = render::displayOf(request, scene);
     out.source = "raster";
     return out;
 }

@@ -51,6 +51,7 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
                             : p.part      ? "light_paths"
                             : p.denoise   ? "denoise"
                             : p.sampler   ? "sampler"
+                            : p.seed      ? "seed"
                                           : nullptr;
         if (given)
             return problem(given, "is for the path tracer (renderer path), not " + std::string(toString(r.engine)));
@@ -63,6 +64,9 @@ std::optional<RequestProblem> check(const RenderRequest& r) {
         return problem("time_limit",
                        "must be in [0.001, 1e7] seconds (leave it out for no limit), got " + std::string(got));
     }
+    if (p.seed && (*p.seed < 0 || *p.seed > kMaxSeed))
+        return problem("seed", "must be a whole number from 0 to " + std::to_string(kMaxSeed) + ", got " +
+                                   std::to_string(*p.seed));
     if (r.exposure)
         if (std::optional<std::string> why = exposureProblem(*r.exposure)) return problem("exposure", *why);
     if (r.maxMemory) {
@@ -128,6 +132,7 @@ trace::PathSettings toPath(const RenderRequest& r, const Scene& scene) {
     s.part = r.path.part.value_or(trace::PathPart::All);
     s.denoise = r.path.denoise;
     s.sampler = r.path.sampler.value_or(trace::PathSampler::Sobol);
+    s.seed = uint32_t(r.path.seed.value_or(0));
     return s;
 }
 

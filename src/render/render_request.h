@@ -45,6 +45,9 @@ inline constexpr int kDefaultPathSamples = 16;
 // The shortest time limit a request may give, seconds. The path tracer reads a time limit of 0 as none, so
 // 0, -0 and 1e-300 would each silently mean "no limit"; a limit is absent or at least this.
 inline constexpr double kMinTimeLimit = 1e-3;
+// The path tracer's seeds: every 32-bit value (trace::SampleRng keys its numbers by it). 0, the default, is the
+// image every earlier release rendered.
+inline constexpr int64_t kMaxSeed = 4294967295;
 
 // The path tracer's options; set only for Engine::Path (check() refuses them elsewhere).
 struct PathOptions {
@@ -53,6 +56,7 @@ struct PathOptions {
     std::optional<trace::PathEstimator> estimator;  // unset: mis
     std::optional<trace::PathPart> part;            // which light reaches the image; unset: all
     std::optional<trace::PathSampler> sampler;      // where the random numbers come from; unset: sobol
+    std::optional<int64_t> seed;                    // the random numbers' variation, 0..kMaxSeed; unset: 0
     bool denoise = false;                           // show the denoised preview instead of the raw estimate
 };
 
@@ -79,7 +83,7 @@ struct RenderRequest {
 };
 
 // A request's field and why it cannot be rendered. Fields: "size", "spp", "depth", "threads",
-// "time_limit", "estimator", "light_paths", "sampler", "denoise", "max_memory", "exposure".
+// "time_limit", "estimator", "light_paths", "sampler", "seed", "denoise", "max_memory", "exposure".
 struct RequestProblem {
     std::string field;
     std::string reason;

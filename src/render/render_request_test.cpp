@@ -61,6 +61,11 @@ TEST(RenderRequest, EachLimitIsNamedByItsField) {
         {"light paths off path", [](RenderRequest& r) { r.path.part = trace::PathPart::Direct; }, "light_paths"},
         {"sampler off path", [](RenderRequest& r) { r.path.sampler = trace::PathSampler::Independent; }, "sampler"},
         {"denoise off path", [](RenderRequest& r) { r.path.denoise = true; }, "denoise"},
+        {"seed off path", [](RenderRequest& r) { r.path.seed = 7; }, "seed"},
+        {"seed -1", [](RenderRequest& r) { r.engine = Engine::Path, r.path.seed = -1; }, "seed"},
+        {"seed over", [](RenderRequest& r) { r.engine = Engine::Path, r.path.seed = render::kMaxSeed + 1; }, "seed"},
+        {"seed 0 and the largest", [](RenderRequest& r) { r.engine = Engine::Path, r.path.seed = render::kMaxSeed; },
+         ""},
         {"negative time limit", [](RenderRequest& r) { r.engine = Engine::Path, r.path.timeLimit = -1.0; },
          "time_limit"},
         {"NaN time limit", [](RenderRequest& r) { r.engine = Engine::Path, r.path.timeLimit = 0.0 / 0.0; },
@@ -133,6 +138,7 @@ TEST(RenderRequest, ConversionsCarryEveryField) {
     r.path.part = trace::PathPart::Indirect;
     r.path.sampler = trace::PathSampler::Independent;
     r.path.denoise = true;
+    r.path.seed = render::kMaxSeed;
     const trace::PathSettings p = render::toPath(r, scene);
     EXPECT_EQ(p.spp, 16);
     EXPECT_EQ(p.maxDepth, 2);
@@ -141,6 +147,8 @@ TEST(RenderRequest, ConversionsCarryEveryField) {
     EXPECT_EQ(p.part, trace::PathPart::Indirect);
     EXPECT_EQ(p.sampler, trace::PathSampler::Independent);
     EXPECT_TRUE(p.denoise);
+    EXPECT_EQ(p.seed, 4294967295u);
+    EXPECT_EQ(render::toPath(RenderRequest{}, scene).seed, 0u);  // unset: today's image
     EXPECT_FALSE(render::toPath(RenderRequest{}, scene).denoise);
     EXPECT_EQ(render::toPath(RenderRequest{}, scene).estimator, trace::PathEstimator::Mis);
     EXPECT_EQ(render::toPath(RenderRequest{}, scene).sampler, trace::PathSampler::Sobol);

@@ -37,6 +37,40 @@ def test_floats_and_pixels(scene, renderer):
     assert np.abs(np.floor(np.clip(floats, 0, 1) * 255 + 0.5) - linear.to_uint8()).max() <= 1
 
 
+def codes_of(srgb_floats):
+    """The 8-bit codes of display-ready floats, rounded half up as the PNG's conversion rounds."""
+    return np.floor(srgb_floats.astype(np.float64) * 255 + 0.5).astype(np.int32)
+
+
+@pytest.mark.parametrize("display", [{}, {"exposure": 1.5, "view_transform": "filmic"}, {"exposure": -2},
+                                     {"view_transform": "filmic"}])
+def test_to_srgb_is_the_pngs_conversion_before_rounding(scene, display, out_dir):
+    image = shadelab.render(scene, (96, 64), renderer="trace", **display)
+    assert image.exposure == display.get("exposure", 0) and image.view_transform == display.get("view_transform",
+                                                                                                "standard")
+    srgb_floats = image.to_srgb()
+    assert srgb_floats.shape == (64, 96, 3) and srgb_floats.dtype == np.float32
+    assert srgb_floats.flags.writeable and srgb_floats.min() >= 0 and srgb_floats.max() <= 1  # a new array
+    off = codes_of(srgb_floats) != image.to_uint8()
+    # Equal but where float32 rounding of the curve crosses a half level: at most one level, almost nowhere.
+    assert np.abs(codes_of(srgb_floats) - image.to_uint8()).max() <= 1 and off.mean() <= 1e-3, off.mean()
+    # A pickled image keeps its display, and so the same floats.
+    assert np.array_equal(pickle.loads(pickle.dumps(image)).to_srgb(), srgb_floats)
+    # The negative control: the same render's floats without its display give other codes, which the check
+    # above would see (the Standard case has no display to leave out).
+    if display:
+        plain = shadelab.render(scene, (96, 64), renderer="trace").to_srgb()
+        assert (codes_of(plain) != image.to_uint8()).mean() > 0.05
+
+
+def test_to_srgb_is_srgb_whatever_the_encoding(scene):
+    # encoding="linear" writes levels without the curve; to_srgb() is display-ready sRGB either way.
+    srgb_image = shadelab.render(scene, (32, 24), renderer="trace")
+    linear_image = shadelab.render(scene, (32, 24), renderer="trace", encoding="linear")
+    assert np.array_equal(srgb_image.to_srgb(), linear_image.to_srgb())
+    assert not np.array_equal(codes_of(linear_image.to_srgb()), linear_image.to_uint8())  # the curve is there
+
+
 def test_png_round_trip(scene, out_dir):
     image = shadelab.render(scene, (64, 48))
     path = out_dir / "round.png"
@@ -201,8 +235,13 @@ TAMPERED = [
     ("state[5] = 'gamma'", "unknown encoding 'gamma'"),
     ("state[6] = 'elsewhere'", "unknown source 'elsewhere'"),
     ("state[8] = None", "draw_ms must be a number, got NoneType"),
-    ("state.append(1)", "expected a tuple of 10 items, got 11"),
-    ("state = state[0]", "expected a tuple of 10 items, got int"),
+    ("state[10] = 40.0", "exposure must be in [-16, 16] stops, got 40"),
+    ("state[10] = 'x'", "exposure must be a number, got str"),
+    ("state[11] = 'sepia'", "unknown view transform 'sepia'"),
+    ("state[11] = 3", "view transform must be a string"),
+    ("state.append(1)", "expected a tuple of 12 items, got 13"),
+    ("state = state[:11]", "expected a tuple of 12 items, got 11"),
+    ("state = state[0]", "expected a tuple of 12 items, got int"),
 ]
 
 
@@ -250,7 +289,20 @@ def test_the_tampered_pickle_check_sees_an_abort(out_dir):
     ({"renderer": "path", "time_limit": "1"}, TypeError, "time_limit: expected a number, got str"),
     ({"renderer": "path", "time_limit": float("nan")}, ValueError, "time_limit: must be in [0.001, 1e7] seconds (leave it out for no limit), got nan"),
     ({"renderer": "path", "estimator": 1}, TypeError, "estimator: expected a string, got int"),
-    ({"size": (float("inf"), 8)}, ValueError, "size: expected (width, height) or 'WxH', got (inf, 8)"),
+    ({"size": (float("inf"), 8)}, TypeError, "size: width: expected a whole number, got float"),
+    ({"size": (32.5, 32)}, TypeError, "size: width: expected a whole number, got float"),
+    ({"size": (32, 32.0)}, TypeError, "size: height: expected a whole number, got float"),
+    ({"size": (8, "8")}, TypeError, "size: height: expected a whole number, got str"),
+    ({"size": (True, 8)}, TypeError, "size: width: expected a whole number, got bool"),
+    ({"size": (8,)}, ValueError, "size: expected (width, height) or 'WxH', got (8,)"),
+    ({"renderer": "path", "seed": "3"}, TypeError, "seed: expected a whole number, got str"),
+    ({"renderer": "path", "seed": 1.0}, TypeError, "seed: expected a whole number, got float"),
+    ({"renderer": "path", "seed": -1}, ValueError, "seed: must be a whole number from 0 to 4294967295, got -1"),
+    ({"renderer": "path", "seed": 2**32}, ValueError,
+     "seed: must be a whole number from 0 to 4294967295, got 4294967296"),
+    ({"renderer": "path", "seed": 2**70}, ValueError,
+     "seed: must be a whole number from 0 to 4294967295, got 1180591620717411303424"),
+    ({"seed": 3}, ValueError, "seed: is for the path tracer (renderer path), not raster"),
     ({"max_memory": 1.5}, TypeError, "max_memory: expected a number of bytes, a size such as '512M' or None, got float"),
 ])
 def test_a_bad_argument_is_one_line_naming_it(scene, kwargs, error, message):
@@ -279,6 +331,13 @@ def test_a_bad_argument_is_one_line_naming_it(scene, kwargs, error, message):
     (lambda a: shadelab.Image.open(None), TypeError, "path: expected a path (str or os.PathLike), got NoneType"),
     (lambda a: shadelab.Image.from_array(a, encoding=1), TypeError, "encoding: expected a string, got int"),
     (lambda a: shadelab.Renderer(backend=2), TypeError, "backend: expected a string, got int"),
+    (lambda a: shadelab.Scene.load(3), TypeError, "path: expected a path (str or os.PathLike), got int"),
+    (lambda a: shadelab.Scene.load(shadelab.data.path("default"), allow_external_paths="yes"), TypeError,
+     "allow_external_paths: expected True or False, got str"),
+    (lambda a: shadelab.Scene.from_dict({}, base_dir=3), TypeError,
+     "base_dir: expected a path (str or os.PathLike), got int"),
+    (lambda a: shadelab.Image.from_array("x"), ValueError,
+     "from_array: expected a uint8 (levels) or float (linear) array, got dtype <U1"),
 ])
 def test_other_calls_refuse_bad_arguments_in_one_line(call, error, message):
     a = np.zeros((4, 4, 3), np.uint8)
@@ -286,6 +345,12 @@ def test_other_calls_refuse_bad_arguments_in_one_line(call, error, message):
         call(a)
     text = str(raised.value)
     assert "\n" not in text and text == message, text
+
+
+def test_whole_number_sizes_and_seeds_of_any_integer_type_are_taken(scene):
+    # The negative control of the size and seed refusals above: ints and numpy integers pass.
+    assert shadelab.render(scene, (np.int64(8), np.uint16(6))).size == (8, 6)
+    assert shadelab.render(scene, (8, 6), renderer="path", spp=1, seed=np.uint32(2**32 - 1)).size == (8, 6)
 
 
 def test_gates_of_whole_numbers_take_integral_floats():

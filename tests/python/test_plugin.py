@@ -1,8 +1,12 @@
 """The pytest plugin's shadelab_regression fixture, run on inner test sessions (pytester): it passes on an
-unchanged render, fails on a changed one (the negative control) leaving its evidence, and writes baselines only
-with --shadelab-update-baselines."""
+unchanged render, fails on a changed one (the negative control) leaving its evidence in a folder git ignores,
+fails in plain words on a render of another size, writes baselines only with --shadelab-update-baselines
+(=failed: only the failing ones; never a byte-identical one), returns a report in every mode and warns when the
+GL_RENDERER differs from the baseline's."""
 
 import json
+import shutil
+import subprocess
 
 import pytest
 
@@ -32,7 +36,7 @@ def test_baselines_are_written_only_on_purpose(pytester, source_dir):
     baseline = pytester.path / "baselines" / "default-96.png"
     result = run(pytester)
     result.assert_outcomes(failed=1)
-    result.stdout.fnmatch_lines(["*no baseline*--shadelab-update-baselines*"])
+    result.stdout.fnmatch_lines(["*there is no baseline*--shadelab-update-baselines*"])
     assert not baseline.exists()
     assert (pytester.path / "shadelab-evidence" / "test_render" / "default-96-render.png").exists()
 
@@ -59,7 +63,10 @@ def test_unchanged_passes_changed_fails_with_evidence(pytester, source_dir):
     write_test(pytester, source_dir, edit="scene.lights[0].color = [0.2, 0.9, 0.9]")
     result = run(pytester)
     result.assert_outcomes(failed=1)
-    result.stdout.fnmatch_lines(["*the render differs from*", "*FAIL*", "*--shadelab-update-baselines*"])
+    result.stdout.fnmatch_lines(["*default-96: the render differs from the baseline*default-96.png:",
+                                 "*  - * of 6144 pixels (*%) differ by more than 3/255 in a colour channel; at most 6*",
+                                 "*evidence in *test_render: default-96-render.png, -baseline.png, -heat.png*",
+                                 "*rewrite the baseline with --shadelab-update-baselines=failed*"])
     for suffix in ("render.png", "baseline.png", "heat.png", "report.json"):
         assert (evidence / f"default-96-{suffix}").exists(), suffix
     report = json.loads((evidence / "default-96-report.json").read_text())
@@ -144,3 +151,186 @@ def test_clean_up_deletes_only_the_checks_own_evidence(pytester):
     run(pytester).assert_outcomes(passed=1)
     assert not any(path.exists() for path in own)
     assert all(path.read_text() == "old" for path in others)
+
+
+# -- sizes, modes, reports, evidence out of git, renderer warnings, plain words -------------------------------------
+
+SIZED = """
+import shadelab
+
+def test_render(shadelab_regression):
+    scene = shadelab.data.scene("default")
+    {edit}
+    report = shadelab_regression.check(shadelab.render(scene, size={size}), "default", gates={gates})
+    assert isinstance(report, shadelab.CompareReport) and report.passed
+    with open("report-max.txt", "w") as f:
+        f.write(str(report.report["regions"]["interior"]["max"]))
+"""
+
+
+def write_sized(pytester, size=(96, 64), edit="pass", gates=None, name="test_inner"):
+    pytester.makepyfile(**{name: SIZED.format(size=size, edit=edit, gates=gates)})
+
+
+def test_a_size_mismatch_is_an_ordinary_failure_with_evidence(pytester):
+    write_sized(pytester)
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    run(pytester).assert_outcomes(passed=1)  # the negative control: the same size passes
+    write_sized(pytester, size=(80, 64))
+    result = run(pytester)
+    result.assert_outcomes(failed=1)
+    result.stdout.fnmatch_lines(["*default: the render is 80x64 pixels but the baseline *default.png is 96x64, so "
+                                 "they cannot be compared pixel by pixel; render at size=(96, 64), or rewrite the "
+                                 "baseline if the new size is intended.",
+                                 "*evidence in *: default-render.png, -baseline.png, -report.json",
+                                 "*--shadelab-update-baselines=failed*"])
+    assert "InputError" not in result.stdout.str() and "Traceback" not in result.stdout.str()
+    evidence = pytester.path / "shadelab-evidence" / "test_render"
+    assert shadelab_image_size(evidence / "default-render.png") == (80, 64)
+    assert shadelab_image_size(evidence / "default-baseline.png") == (96, 64)
+    report = json.loads((evidence / "default-report.json").read_text())
+    assert report["verdict"] == "fail" and "cannot be compared" in report["reasons"][0]
+    # With =failed the new size is a failing check, so its baseline is rewritten.
+    run(pytester, "--shadelab-update-baselines=failed").assert_outcomes(passed=1)
+    assert shadelab_image_size(pytester.path / "baselines" / "default.png") == (80, 64)
+
+
+def shadelab_image_size(path):
+    import shadelab
+
+    return tuple(shadelab.Image.open(str(path)).size)
+
+
+def test_check_returns_a_report_in_every_mode(pytester):
+    write_sized(pytester)
+    report_max = pytester.path / "report-max.txt"
+    for args in (("--shadelab-update-baselines",), ("--shadelab-update-baselines=failed",), ()):
+        report_max.unlink(missing_ok=True)
+        run(pytester, *args).assert_outcomes(passed=1)
+        assert report_max.read_text() == "0", args  # the same render as the baseline: no pixel differs
+    # The negative control: a changed render within loosened gates. =failed keeps the baseline (the check passes),
+    # and the report is the real comparison with it: it sees the difference.
+    write_sized(pytester, edit="scene.lights[0].color = [0.8, 0.8, 0.7]",
+                gates={"hard_max": 255, "max_fraction_over": 1.0})
+    run(pytester, "--shadelab-update-baselines=failed").assert_outcomes(passed=1)
+    assert int(report_max.read_text()) > 0
+
+
+def test_failed_mode_rewrites_only_failing_baselines(pytester):
+    pytester.makepyfile(test_inner="""
+import shadelab
+
+def test_both(shadelab_regression):
+    scene = shadelab.data.scene("default")
+    shadelab_regression.check(shadelab.render(scene, size=(64, 48)), "same")
+    scene.lights[0].color = {color}
+    shadelab_regression.check(shadelab.render(scene, size=(64, 48)), "changed")
+""".format(color=None).replace("scene.lights[0].color = None", "pass"))
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    baselines = pytester.path / "baselines"
+    before = {p.name: (p.stat().st_mtime_ns, p.read_bytes()) for p in baselines.iterdir()}
+    assert set(before) == {"same.png", "same.json", "changed.png", "changed.json"}
+    pytester.makepyfile(test_inner=(pytester.path / "test_inner.py").read_text().replace(
+        "    pass\n", "    scene.lights[0].color = [0.2, 0.9, 0.9]\n"))
+    run(pytester).assert_outcomes(failed=1)  # the negative control: "changed" fails without an update
+    result = run(pytester, "--shadelab-update-baselines=failed")
+    result.assert_outcomes(passed=1)
+    result.stdout.fnmatch_lines(["*shadelab: 1 baseline(s) rewritten*", "*changed.png"])
+    after = {p.name: (p.stat().st_mtime_ns, p.read_bytes()) for p in baselines.iterdir()}
+    assert after["same.png"] == before["same.png"] and after["same.json"] == before["same.json"]
+    assert after["changed.png"][1] != before["changed.png"][1]
+    run(pytester).assert_outcomes(passed=1)
+
+
+def test_an_unchanged_baseline_is_never_rewritten(pytester):
+    write_sized(pytester)
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    baseline = pytester.path / "baselines" / "default.png"
+    sidecar = baseline.with_suffix(".json")
+    stamps = (baseline.stat().st_mtime_ns, baseline.stat().st_ino, sidecar.stat().st_mtime_ns)
+    # The bare flag followed by a test path: the path stays a path.
+    result = run(pytester, "--shadelab-update-baselines", "test_inner.py")
+    result.assert_outcomes(passed=1)
+    assert "baseline(s) rewritten" not in result.stdout.str()
+    assert (baseline.stat().st_mtime_ns, baseline.stat().st_ino, sidecar.stat().st_mtime_ns) == stamps
+    # The negative control: a changed render is rewritten (the atomic writer makes a new file).
+    write_sized(pytester, edit="scene.lights[0].color = [0.2, 0.9, 0.9]")
+    run(pytester, "--shadelab-update-baselines").stdout.fnmatch_lines(["*1 baseline(s) rewritten*"])
+    assert (baseline.stat().st_mtime_ns, baseline.stat().st_ino) != stamps[:2]
+
+
+def test_an_unknown_update_mode_is_a_usage_error(pytester):
+    write_sized(pytester)
+    result = run(pytester, "--shadelab-update-baselines=some")
+    assert result.ret == pytest.ExitCode.USAGE_ERROR
+    result.stderr.fnmatch_lines(["*--shadelab-update-baselines: expected all or failed (or no value, for all), "
+                                 "got 'some'"])
+    assert not (pytester.path / "baselines").exists()
+    run(pytester, "--shadelab-update-baselines=all").assert_outcomes(passed=1)  # the negative control
+
+
+def git_untracked(folder):
+    out = subprocess.run(["git", "status", "--porcelain", "--untracked-files=all"], cwd=folder, check=True,
+                         capture_output=True, text=True).stdout
+    return sorted(line[3:] for line in out.splitlines())
+
+
+def test_evidence_stays_out_of_git(pytester):
+    if not shutil.which("git"):
+        pytest.skip("git is not installed")
+    subprocess.run(["git", "init", "-q"], cwd=pytester.path, check=True)
+    write_sized(pytester)
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    write_sized(pytester, edit="scene.lights[0].color = [0.2, 0.9, 0.9]")
+    run(pytester).assert_outcomes(failed=1)
+    evidence = pytester.path / "shadelab-evidence"
+    assert (evidence / ".gitignore").read_text().splitlines()[-1] == "*"
+    assert (evidence / "test_render" / "default-heat.png").exists()
+    untracked = git_untracked(pytester.path)
+    assert not [p for p in untracked if p.startswith("shadelab-evidence")], untracked
+    assert "baselines/default.png" in untracked  # baselines are meant to be committed
+    # The negative control: without the plugin's .gitignore, git would list the evidence.
+    (evidence / ".gitignore").unlink()
+    assert "shadelab-evidence/test_render/default-heat.png" in git_untracked(pytester.path)
+
+    # A chosen folder the plugin creates is ignored too; one that exists already keeps its own rules.
+    made = pytester.path / "made-by-plugin"
+    run(pytester, f"--shadelab-evidence-dir={made}").assert_outcomes(failed=1)
+    assert (made / ".gitignore").exists()
+    yours = pytester.path / "yours"
+    yours.mkdir()
+    run(pytester, f"--shadelab-evidence-dir={yours}").assert_outcomes(failed=1)
+    assert not (yours / ".gitignore").exists() and (yours / "test_render" / "default-heat.png").exists()
+
+
+def test_a_baseline_from_another_gl_renderer_warns(pytester):
+    write_sized(pytester)
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    result = run(pytester, "-W", "always")
+    result.assert_outcomes(passed=1, warnings=0)
+    assert "GL_RENDERER" not in result.stdout.str()  # the negative control: the same renderer, no warning
+    sidecar = pytester.path / "baselines" / "default.json"
+    meta = json.loads(sidecar.read_text())
+    real = meta["gl_renderer"]
+    meta["gl_renderer"] = "Another GPU 9000"
+    sidecar.write_text(json.dumps(meta))
+    result = run(pytester, "-W", "always")
+    result.assert_outcomes(passed=1, warnings=1)
+    result.stdout.fnmatch_lines([f"*ShadelabWarning: default: the baseline *default.png was made with GL_RENDERER "
+                                 f"'Another GPU 9000', this render with {real!r}; differences may come from the GPU "
+                                 f"or driver rather than your change"])
+
+
+def test_failure_messages_are_in_plain_words(pytester):
+    write_sized(pytester)
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    write_sized(pytester, edit="scene.lights[0].color = [0.2, 0.9, 0.9]")
+    result = run(pytester)
+    result.assert_outcomes(failed=1)
+    failure = result.stdout.str()
+    for jargon in ("interior", "coverage", "band"):
+        assert jargon not in failure, jargon
+    assert "pixels differ by more than 16/255, which no pixel may; the largest difference is" in failure
+    # The negative control: the binary's own words, in the evidence's report, do use them.
+    report = (pytester.path / "shadelab-evidence" / "test_render" / "default-report.json").read_text()
+    assert "interior" in report and "coverage" in report

@@ -22,7 +22,7 @@ SIZE = (24, 16)
 
 KEYWORDS = {"renderer": "raster", "spp": None, "encoding": "srgb", "depth": None, "threads": 0, "coverage": False,
             "time_limit": None, "estimator": None, "light_paths": None, "sampler": None, "denoise": False,
-            "max_memory": None, "exposure": None, "view_transform": None}
+            "max_memory": None, "exposure": None, "view_transform": None, "seed": None}
 
 
 @pytest.fixture(scope="module")
@@ -270,7 +270,7 @@ _TYPES = {
     "tuple": {"tuple[...]"}, "dict": {"dict[...]"}, "handle": {"dict[...]"},
     # What the binding returns as a py::object, or takes as one to check its type itself (a one-line TypeError).
     "object": {"dict[...]", "NDArray[np.uint32] | None", "StrPath", "EncodingName", "MemorySize | None",
-               "ExrPrecisionName | None", "tuple[...]"},
+               "ExrPrecisionName | None", "tuple[...]", "ArrayLike"},
 }
 
 

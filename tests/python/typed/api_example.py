@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 import shadelab
+import shadelab.data
 import shadelab.lighting
 import shadelab.plots
 from shadelab.typing import MemorySize, RendererName, SceneLike, Size, ViewTransformName
@@ -31,12 +32,15 @@ def main(scene_path: str, out_dir: Path) -> int:
     first_light: dict[str, object] = scene.lights[0].to_dict()
     edited = shadelab.Scene.from_dict(scene.to_dict(), base_dir=scene.base_dir)
     assert edited == scene and edited.triangle_count == scene.triangle_count and "color" in first_light
+    names: list[str] = shadelab.data.scenes()
+    shipped: shadelab.Scene = shadelab.data.scene(names[0])
+    assert shadelab.data.path(names[0]).is_file() and shadelab.data.folder().is_dir() and len(shipped.objects) > 0
 
     raster = shadelab.render(scene, (32, 24), coverage=True)
     traced = shadelab.render(scene, "32x24", renderer="trace", spp=4, encoding="srgb", depth=1, threads=2,
                              coverage=True)
     path = scene.render((32, 24), renderer="path", spp=2, encoding="linear", depth=None, threads=0,
-                        max_memory="1G")
+                        max_memory="1G", seed=3)
     transform: ViewTransformName = "filmic"
     shown = shadelab.render(scene, (8, 6), exposure=-1.5, view_transform=transform)
     assert scene.render((8, 6), exposure=2, view_transform="standard").size == shown.size
@@ -44,6 +48,8 @@ def main(scene_path: str, out_dir: Path) -> int:
     assert shadelab.render(scene, (8, 6), renderer="trace", max_memory=limit).size == (8, 6)
     floats: NDArray[np.float32] = np.asarray(raster, dtype=np.float32)
     pixels: NDArray[np.uint8] = traced.to_uint8()
+    display_ready: NDArray[np.float32] = shown.to_srgb()
+    assert display_ready.shape == shown.shape and shown.exposure == -1.5 and shown.view_transform == "filmic"
     width, height = raster.size
     assert floats.shape == (height, width, 3) and pixels.shape == traced.shape and path.encoding == "linear"
     ids = raster.coverage
