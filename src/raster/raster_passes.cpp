@@ -181,7 +181,8 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     }
     glDisable(GL_CULL_FACE);
 
-    // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
+    // Planes last, over the whole viewport: plane.frag casts the ray and writes the exact hit's depth, as the
+    // spheres' shader does.
     glBindVertexArray(emptyVao_.id());
     const glm::vec3 eye(frame.eye);
     for (size_t i = 0; i < scene.planes.size(); ++i) {
@@ -196,10 +197,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             glActiveTexture(GL_TEXTURE0);
         }
         setMaterial(planeProgram, p.material, planeCoverageId(scene, i), frame.flags.x, scene.normalized);
-        const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
-        const glm::vec3 centre = eye - eyeHeight * p.normal;
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
-        planeProgram.set("u_planeCenter", centre, gl::Program::Uniform::Required);
         planeProgram.set("u_planeT", t, gl::Program::Uniform::Required);
         planeProgram.set("u_planeB", b, gl::Program::Uniform::Required);
         planeProgram.set("u_planeNormal", p.normal, gl::Program::Uniform::Required);
@@ -212,7 +210,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         planeProgram.set("u_md2", md2);
         planeProgram.set("u_baseColor2", c.md2);
         planeProgram.set("u_checkerSize", c.size);
-        glDrawArrays(GL_TRIANGLES, 0, 12);
+        glDrawArrays(GL_TRIANGLES, 0, 3);  // the viewport (plane.vert); plane.frag finds the hit
     }
 
     // alphaMode BLEND (docs/gltf-import.md): over everything opaque, farthest part first by its bounds'
