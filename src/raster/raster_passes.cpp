@@ -81,8 +81,7 @@ int RasterRenderer::materialMaps(const Material& m) {
 const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant, int materialMaps) {
     // mesh.frag's texture code (SL_MATERIAL_MAPS, the maps the scene's parts use) only where a part needs it:
     // all of it triples the mesh programs' compile time, which every untextured render would otherwise pay.
-    const std::string defines =
-        variant.defines() + (materialMaps ? "#define SL_MATERIAL_MAPS " + std::to_string(materialMaps) + "\n" : "");
+    const std::string defines = colorProgramDefines(variant.defines(), materialMaps, false);
     if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
     ColorPrograms set;
     set.shaders = &shaders_;
@@ -94,7 +93,7 @@ const gl::Program& RasterRenderer::ColorPrograms::get(Kind kind) const {
     gl::Program& p = built[size_t(kind)];
     if (p) return p;
     const bool environment = kind == MeshEnvironment || kind == SphereEnvironment || kind == PlaneMirror;
-    const std::string text = environment ? defines + "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n" : defines;
+    const std::string text = colorProgramDefines(defines, 0, environment);
     const char* stem = kind == Mesh || kind == MeshEnvironment       ? "mesh"
                        : kind == Sphere || kind == SphereEnvironment ? "sphere"
                                                                      : "plane";
