@@ -1,4 +1,11 @@
 // Per-frame uniform block shared by every raster pass. Mirrored by src/raster/frame_block.h (std140).
+
+// 1 where the vertex stage can write gl_ClipDistance (desktop GLSL); GLSL ES 3.00 has no clip distances, and
+// its prelude sets 0 (src/gl/shader_dialect.h): mesh fragments behind a mirror plane are discarded instead.
+#ifndef SL_CLIP_DISTANCE
+#define SL_CLIP_DISTANCE 1
+#endif
+
 layout(std140) uniform Frame {
     mat4 u_viewProj;
     vec4 u_eye;                         // xyz: camera position

@@ -67,6 +67,11 @@ vec4 sampleMap(int map) {
 #endif
 
 void main() {
+#if !SL_CLIP_DISTANCE
+    // The same plane gl_ClipDistance clips against, tested per fragment (u_clipPlane keeps all outside
+    // mirror passes).
+    if (clippedByMirror(v2f_position)) discard;
+#endif
     vec3 N = gl_FrontFacing ? v2f_normal : -v2f_normal;
     vec3 V = u_eye.xyz - v2f_position;
 #ifdef SL_MATERIAL_MAPS

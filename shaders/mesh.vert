@@ -21,5 +21,7 @@ void main() {
     v2f_texcoord1 = a_texcoord1;
     v2f_tangent = a_tangent;
     gl_Position = u_viewProj * vec4(a_position, 1.0f);
+#if SL_CLIP_DISTANCE
     gl_ClipDistance[0] = dot(u_clipPlane.xyz, a_position) + u_clipPlane.w;   // enabled in mirror passes only
+#endif
 }

@@ -1,5 +1,6 @@
 // EGL headless contexts: the device platform (EGL_EXT_platform_device) and Mesa's surfaceless
-// platform. Contexts are made current with no surface (EGL_KHR_surfaceless_context).
+// platform, OpenGL 3.3 core, or OpenGL ES 3 for checking the ES dialect. Contexts are made current with no
+// surface (EGL_KHR_surfaceless_context).
 #include "gl/headless_context.h"
 
 #include <EGL/egl.h>
@@ -46,29 +47,34 @@ public:
         info_.device = device;
     }
 
-    // Initialises the display, creates a 3.3 core context and makes it current. Throws on failure; the
-    // destructor then releases whatever was made.
-    void init() {
+    // Initialises the display, creates a 3.3 core context (`es`: an OpenGL ES 3.0 or later one) and makes it
+    // current. Throws on failure; the destructor then releases whatever was made.
+    void init(bool es = false) {
         EGLint major = 0, minor = 0;
         if (!eglInitialize(display_, &major, &minor))
             throw std::runtime_error("eglInitialize failed: " + eglErrorName(eglGetError()));
         initialized_ = true;
-        if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("eglBindAPI(EGL_OPENGL_API) failed");
+        const char* api = es ? "OpenGL ES 3" : "OpenGL 3.3 core";
+        if (!eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API))
+            throw std::runtime_error(std::string("eglBindAPI for ") + api + " failed");
 
         EGLConfig config = nullptr;
         EGLint count = 0;
-        const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
+        const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
+                                        0, EGL_NONE};
         if (!eglChooseConfig(display_, configAttribs, &config, 1, &count) || count == 0) {
             if (!hasExtension(eglQueryString(display_, EGL_EXTENSIONS), "EGL_KHR_no_config_context"))
-                throw std::runtime_error("no EGL config supports desktop OpenGL");
+                throw std::runtime_error(std::string("no EGL config supports ") + api);
             config = EGL_NO_CONFIG_KHR;
         }
-        const EGLint contextAttribs[] = {
+        const EGLint coreAttribs[] = {
             EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
             EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttribs);
+        const EGLint esAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
+        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, es ? esAttribs : coreAttribs);
         if (context_ == EGL_NO_CONTEXT)
-            throw std::runtime_error("eglCreateContext (OpenGL 3.3 core) failed: " + eglErrorName(eglGetError()));
+            throw std::runtime_error(std::string("eglCreateContext (") + api +
+                                     ") failed: " + eglErrorName(eglGetError()));
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
             throw std::runtime_error("eglMakeCurrent without a surface failed: " + eglErrorName(eglGetError()));
         finishContextInfo(info_, [](const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); });
@@ -144,6 +150,15 @@ std::unique_ptr<HeadlessContext> createEglDeviceContext() {
         }
     }
     throw std::runtime_error(failures.empty() ? "no usable EGL device" : failures.substr(0, failures.size() - 2));
+}
+
+std::unique_ptr<HeadlessContext> createEglEsContext() {
+    auto getPlatformDisplay = platformDisplayFn("EGL_MESA_platform_surfaceless");
+    EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (display == EGL_NO_DISPLAY) throw std::runtime_error("no surfaceless display");
+    auto ctx = std::make_unique<EglContext>(display, GlBackend::EglSurfaceless, "EGL surfaceless display, OpenGL ES");
+    ctx->init(true);
+    return ctx;
 }
 
 std::unique_ptr<HeadlessContext> createEglSurfacelessContext() {

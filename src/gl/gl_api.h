@@ -91,7 +91,6 @@ void checkError(const char* what);
 #define glGetProgramInfoLog shadelab_glGetProgramInfoLog
 #define glDeleteProgram shadelab_glDeleteProgram
 #define glUseProgram shadelab_glUseProgram
-#define glBindFragDataLocation shadelab_glBindFragDataLocation
 #define glBindAttribLocation shadelab_glBindAttribLocation
 #define glGetUniformLocation shadelab_glGetUniformLocation
 #define glGetUniformiv shadelab_glGetUniformiv

@@ -4,6 +4,7 @@
 
 #include "gl/debug_output.h"
 #include "gl/gl_api.h"
+#include "gl/shader_dialect.h"
 #include "util/input_error.h"
 
 #include <cstdlib>
@@ -23,8 +24,11 @@ void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*)) {
     GLint major = 0, minor = 0;
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major * 10 + minor < 33)
+    if (dialectForVersion(info.version) == ShaderDialect::Essl300) {
+        if (major < 3) throw std::runtime_error(info.version + " is older than the OpenGL ES 3.0 shadelab needs");
+    } else if (major * 10 + minor < 33) {
         throw std::runtime_error("OpenGL " + info.version + " is older than the 3.3 core profile shadelab needs");
+    }
     installDebugOutput(getProc);  // Debug and sanitizer builds only; Release leaves the context as it is
 }
 

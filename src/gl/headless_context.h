@@ -1,4 +1,5 @@
-// A current OpenGL 3.3+ core context with no window and no X server (design.md §3). Tries the EGL device
+// A current OpenGL 3.3+ core context with no window and no X server (design.md §3), and for tests an
+// OpenGL ES 3 one. Tries the EGL device
 // platform (hardware first, then Mesa's software device), EGL surfaceless, then OSMesa.
 // Rendering goes into the renderer's own framebuffer objects; these contexts have no default surface.
 #pragma once
@@ -66,6 +67,11 @@ std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced = GlBack
 std::unique_ptr<HeadlessContext> createEglDeviceContext();
 std::unique_ptr<HeadlessContext> createEglSurfacelessContext();
 std::unique_ptr<HeadlessContext> createOSMesaContext();
+
+// An OpenGL ES 3.0 or later context on Mesa's EGL surfaceless platform: what a web build's WebGL2 gives, on
+// this machine, so the GLSL ES dialect (gl/shader_dialect.h) is tested natively. Not a --gl-backend: every
+// native render uses OpenGL 3.3 core.
+std::unique_ptr<HeadlessContext> createEglEsContext();
 
 // Loads GL entry points and fills renderer/version after a backend made its context current.
 void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*));

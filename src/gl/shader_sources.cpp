@@ -9,9 +9,15 @@
 
 namespace shadelab::gl {
 
-ShaderLibrary::ShaderLibrary(std::string dir) : dir_(std::move(dir)) {
+ShaderLibrary::ShaderLibrary(std::string dir, ShaderDialect dialect) : dir_(std::move(dir)), dialect_(dialect) {
     if (dir_.empty())
         if (const char* env = std::getenv(kShaderDirEnv)) dir_ = env;
+}
+
+ShaderLibrary ShaderLibrary::withDialect(ShaderDialect dialect) const {
+    ShaderLibrary copy = *this;
+    copy.dialect_ = dialect;
+    return copy;
 }
 
 std::string ShaderLibrary::readRaw(const std::string& name) const {
@@ -47,8 +53,9 @@ void ShaderLibrary::expand(const std::string& name, ShaderSource& out, int depth
 
 ShaderSource ShaderLibrary::load(const std::string& name, const std::string& defines) const {
     ShaderSource out;
-    // SL_FN marks functions shared with C++ (shaders/lighting.glsl), where it means `inline`.
-    out.text = "#version 330 core\n#define SL_FN\n" + defines;
+    // The prelude defines SL_FN, which marks functions shared with C++ (shaders/lighting.glsl), where it
+    // means `inline`.
+    out.text = std::string(shaderPrelude(dialect_)) + defines;
     if (!defines.empty() && defines.back() != '\n') out.text += '\n';
     expand(name, out, 0);
     return out;

@@ -3,6 +3,8 @@
 // to file names, so compile errors name the file and line.
 #pragma once
 
+#include "gl/shader_dialect.h"
+
 #include <string>
 #include <vector>
 
@@ -25,10 +27,14 @@ struct ShaderSource {
 class ShaderLibrary {
 public:
     // Empty `dir`: SHADELAB_SHADER_DIR if set, else the embedded copies.
-    explicit ShaderLibrary(std::string dir = "");
+    explicit ShaderLibrary(std::string dir = "", ShaderDialect dialect = ShaderDialect::Glsl330);
+
+    // The same files in another dialect (a renderer picks the one of its context: currentContextDialect()).
+    ShaderLibrary withDialect(ShaderDialect dialect) const;
+    ShaderDialect dialect() const { return dialect_; }
 
     // Reads `name` and everything it includes. Throws InputError naming the file on a missing file or
-    // include. `defines` lines are added after the prelude, e.g. "#define SHADOWS 1".
+    // include. `defines` lines are added after the dialect's prelude (shaderPrelude), e.g. "#define SHADOWS 1".
     ShaderSource load(const std::string& name, const std::string& defines = "") const;
 
     // Where files come from, for messages: a folder path, or "embedded".
@@ -38,6 +44,7 @@ private:
     std::string readRaw(const std::string& name) const;
     void expand(const std::string& name, ShaderSource& out, int depth) const;
     std::string dir_;
+    ShaderDialect dialect_ = ShaderDialect::Glsl330;
 };
 
 }  // namespace shadelab::gl

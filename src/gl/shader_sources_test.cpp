@@ -125,6 +125,38 @@ TEST(EmbeddedShaders, MatchTheSourceTree) {
               std::vector<std::string>{});
 }
 
+// The ES dialect changes the prelude only: #version 300 es, every precision the shaders need, clip distances
+// off; the defines and files follow as in the desktop dialect, and every line still maps back to its file.
+TEST(ShaderDialects, EsPreludeThenTheSameText) {
+    const fs::path shaders = fs::path(SHADELAB_SOURCE_DIR) / "shaders";
+    const ShaderLibrary desktop(shaders.string());
+    const ShaderLibrary es = desktop.withDialect(ShaderDialect::Essl300);
+    EXPECT_EQ(desktop.dialect(), ShaderDialect::Glsl330);
+    EXPECT_EQ(es.dialect(), ShaderDialect::Essl300);
+    const ShaderSource a = desktop.load("mesh.frag", "#define X 1");
+    const ShaderSource b = es.load("mesh.frag", "#define X 1");
+    const std::string prelude(shaderPrelude(ShaderDialect::Essl300));
+    EXPECT_EQ(b.text.rfind("#version 300 es\n", 0), 0u) << b.text.substr(0, 200);
+    EXPECT_EQ(b.text.rfind(prelude + "#define X 1\n#line 1 0\n", 0), 0u) << b.text.substr(0, 600);
+    for (const char* line : {"precision highp float;", "precision highp int;", "precision highp sampler2DArray;",
+                             "precision highp usampler2D;", "#define SL_CLIP_DISTANCE 0", "#define SL_FN"})
+        EXPECT_NE(prelude.find(line), std::string::npos) << line;
+    // After the prelude the two texts are the same.
+    const std::string desktopPrelude(shaderPrelude(ShaderDialect::Glsl330));
+    EXPECT_EQ(desktopPrelude, "#version 330 core\n#define SL_FN\n");
+    EXPECT_EQ(a.text.substr(desktopPrelude.size()), b.text.substr(prelude.size()));
+    EXPECT_EQ(a.files, b.files);
+    EXPECT_EQ(misplacedLines(b, [&](const std::string& f) { return readText(shaders / f); }),
+              std::vector<std::string>{});
+    // GL_VERSION strings: ES contexts say so first; desktop ones start with the number.
+    EXPECT_EQ(dialectForVersion("OpenGL ES 3.2 Mesa 22.3.6"), ShaderDialect::Essl300);
+    EXPECT_EQ(dialectForVersion("OpenGL ES 3.0 (WebGL 2.0 (OpenGL ES 3.0 Chromium))"), ShaderDialect::Essl300);
+    EXPECT_EQ(dialectForVersion("4.5 (Core Profile) Mesa 22.3.6"), ShaderDialect::Glsl330);
+    EXPECT_EQ(dialectForVersion("3.3.0 NVIDIA 535.54"), ShaderDialect::Glsl330);
+    // Negative control: a text that only mentions ES later is desktop GL.
+    EXPECT_EQ(dialectForVersion("4.6 OpenGL ES compatible"), ShaderDialect::Glsl330);
+}
+
 TEST(FirstLogError, MesaAndNvidiaLogsNameFileAndLine) {
     ShaderSource src;
     src.files = {"mesh.frag", "surface.glsl", "shadow.glsl"};

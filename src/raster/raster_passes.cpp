@@ -81,8 +81,7 @@ int RasterRenderer::materialMaps(const Material& m) {
 const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant, int materialMaps) {
     // mesh.frag's texture code (SL_MATERIAL_MAPS, the maps the scene's parts use) only where a part needs it:
     // all of it triples the mesh programs' compile time, which every untextured render would otherwise pay.
-    const std::string defines =
-        variant.defines() + (materialMaps ? "#define SL_MATERIAL_MAPS " + std::to_string(materialMaps) + "\n" : "");
+    const std::string defines = colorProgramDefines(variant.defines(), materialMaps, false);
     if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
     ColorPrograms set;
     set.shaders = &shaders_;
@@ -94,7 +93,7 @@ const gl::Program& RasterRenderer::ColorPrograms::get(Kind kind) const {
     gl::Program& p = built[size_t(kind)];
     if (p) return p;
     const bool environment = kind == MeshEnvironment || kind == SphereEnvironment || kind == PlaneMirror;
-    const std::string text = environment ? defines + "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n" : defines;
+    const std::string text = colorProgramDefines(defines, 0, environment);
     const char* stem = kind == Mesh || kind == MeshEnvironment       ? "mesh"
                        : kind == Sphere || kind == SphereEnvironment ? "sphere"
                                                                      : "plane";
@@ -181,7 +180,8 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     }
     glDisable(GL_CULL_FACE);
 
-    // Planes last, drawn to infinity with ordinary depth: what meshes and spheres cover is rejected early.
+    // Planes last, over the whole viewport: plane.frag casts the ray and writes the exact hit's depth, as the
+    // spheres' shader does.
     glBindVertexArray(emptyVao_.id());
     const glm::vec3 eye(frame.eye);
     for (size_t i = 0; i < scene.planes.size(); ++i) {
@@ -196,10 +196,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             glActiveTexture(GL_TEXTURE0);
         }
         setMaterial(planeProgram, p.material, planeCoverageId(scene, i), frame.flags.x, scene.normalized);
-        const float eyeHeight = glm::dot(p.normal, eye) - p.offset;
-        const glm::vec3 centre = eye - eyeHeight * p.normal;
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
-        planeProgram.set("u_planeCenter", centre, gl::Program::Uniform::Required);
         planeProgram.set("u_planeT", t, gl::Program::Uniform::Required);
         planeProgram.set("u_planeB", b, gl::Program::Uniform::Required);
         planeProgram.set("u_planeNormal", p.normal, gl::Program::Uniform::Required);
@@ -212,7 +209,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         planeProgram.set("u_md2", md2);
         planeProgram.set("u_baseColor2", c.md2);
         planeProgram.set("u_checkerSize", c.size);
-        glDrawArrays(GL_TRIANGLES, 0, 12);
+        glDrawArrays(GL_TRIANGLES, 0, 3);  // the viewport (plane.vert); plane.frag finds the hit
     }
 
     // alphaMode BLEND (docs/gltf-import.md): over everything opaque, farthest part first by its bounds'

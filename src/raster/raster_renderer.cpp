@@ -73,7 +73,8 @@ KeyBytes environmentSharedKey(const Scene& scene, const FrameBlock& frame) {
 
 }  // namespace
 
-RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shaders), shadows_(shaders) {
+RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
+    : shaders_(shaders.withDialect(gl::currentContextDialect())), shadows_(shaders_) {
     // Compile errors surface here, not at a later draw: every variant is the same source with different
     // constants, so these two (without shadows; with every optional block) check all of it. llvmpipe
     // generates code lazily at the first draw, so variants a scene never uses cost little.
@@ -89,8 +90,9 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders) : shaders_(shad
         for (int k = 0; k < ColorPrograms::kKinds; ++k) set.get(ColorPrograms::Kind(k));
     }
     glUseProgram(0);
-    // Environment cubes are sampled bilinearly across face edges (core profile leaves this off).
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    // Environment cubes are sampled bilinearly across face edges: desktop core profiles leave this off, ES 3.0
+    // and WebGL2 always filter across edges and have no such switch.
+    if (shaders_.dialect() == gl::ShaderDialect::Glsl330) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
     frameUbo_ = gl::Buffer::create();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUbo_.id());
@@ -300,9 +302,12 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
         glClearBufferfv(GL_DEPTH, 0, &farDepth);
         uploadFrame(*mirrored);
         drawBackdrop(*mirrored);
-        glEnable(GL_CLIP_DISTANCE0);
+        // Meshes are clipped at the mirror plane by gl_ClipDistance where the dialect has it, else by a discard
+        // in mesh.frag (SL_CLIP_DISTANCE); impostors test their own hit.
+        const bool clipDistance = shaders_.dialect() == gl::ShaderDialect::Glsl330;
+        if (clipDistance) glEnable(GL_CLIP_DISTANCE0);
         drawPasses(scene, *mirrored, programs, PassOptions{int(i), -1, -1, true, false});
-        glDisable(GL_CLIP_DISTANCE0);
+        if (clipDistance) glDisable(GL_CLIP_DISTANCE0);
         mirrorOfPlane_[i] = int(mirrors++);
     }
 

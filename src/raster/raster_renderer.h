@@ -32,7 +32,9 @@ struct FrameBlock;
 
 class RasterRenderer {
 public:
-    // Compiles the programs; needs a current GL 3.3 core context. Throws InputError on shader errors.
+    // Compiles the programs; needs a current GL 3.3 core or OpenGL ES 3.0 context, whose dialect
+    // (gl::currentContextDialect) the programs are compiled in, whatever `shaders` says. Throws InputError on
+    // shader errors.
     explicit RasterRenderer(const gl::ShaderLibrary& shaders = gl::ShaderLibrary());
     RasterRenderer(const RasterRenderer&) = delete;  // its program sets point at shaders_
     RasterRenderer& operator=(const RasterRenderer&) = delete;

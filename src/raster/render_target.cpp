@@ -1,6 +1,8 @@
 // RenderTarget allocation and readback.
 #include "raster/render_target.h"
 
+#include "gl/shader_dialect.h"
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -33,6 +35,17 @@ void flipRows(T* data, int width, int height, int channels) {
     }
 }
 
+// Whether glReadPixels may read the bound R32UI buffer as GL_RED_INTEGER. Desktop GL converts to any format;
+// OpenGL ES 3.0 (§4.3.1) and WebGL2 take only GL_RGBA_INTEGER for an unsigned integer buffer, or the one
+// pair the implementation names for it.
+bool readsRedInteger() {
+    if (gl::currentContextDialect() == gl::ShaderDialect::Glsl330) return true;
+    GLint format = 0, type = 0;
+    glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT, &format);
+    glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE, &type);
+    return format == GL_RED_INTEGER && type == GL_UNSIGNED_INT;
+}
+
 }  // namespace
 
 void RenderTarget::resize(int width, int height, bool withCoverage) {
@@ -54,9 +67,11 @@ void RenderTarget::resize(int width, int height, bool withCoverage) {
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GLenum(coverage_ ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
     glDrawBuffers(2, buffers);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    // OpenGL ES 3.0 renders into RGBA32F only with EXT_color_buffer_float (WebGL2: the extension of that name).
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("raster framebuffer incomplete (status 0x" + std::to_string(status) + ") at " +
-                                 std::to_string(width) + "x" + std::to_string(height));
+                                 std::to_string(width) + "x" + std::to_string(height) +
+                                 "; an OpenGL ES context needs EXT_color_buffer_float");
     gl::checkError("RenderTarget::resize");
 }
 
@@ -92,7 +107,13 @@ void RenderTarget::readCoverage(std::vector<uint32_t>& out) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, out.data());
+    if (readsRedInteger()) {
+        glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, out.data());
+    } else {
+        std::vector<uint32_t> rgba(out.size() * 4);
+        glReadPixels(0, 0, width_, height_, GL_RGBA_INTEGER, GL_UNSIGNED_INT, rgba.data());
+        for (size_t i = 0; i < out.size(); ++i) out[i] = rgba[4 * i];
+    }
     gl::checkError("RenderTarget::readCoverage");
     flipRows(out.data(), width_, height_, 1);
 }

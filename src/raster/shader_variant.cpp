@@ -45,6 +45,13 @@ std::string ShaderVariant::defines() const {
     return s;
 }
 
+std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment) {
+    std::string s = variantDefines;
+    if (materialMaps) s += "#define SL_MATERIAL_MAPS " + std::to_string(materialMaps) + "\n";
+    if (environment) s += "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n";
+    return s;
+}
+
 ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows) {
     ShaderVariant v;
     v.model = frame.flags.x;

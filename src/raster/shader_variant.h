@@ -39,6 +39,11 @@ struct ShaderVariant {
     std::string defines() const;
 };
 
+// The text RasterRenderer puts after the prelude of one colour program: `variantDefines`, then mesh.frag's
+// SL_MATERIAL_MAPS (`materialMaps` bits, none for 0), then, for the environment and plane-mirror programs,
+// SL_ENVIRONMENT 1. Tests compile exactly these.
+std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment);
+
 // The variant for one draw. `shadows` is null when the frame has no shadow pass.
 ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows);
 
