@@ -19,8 +19,8 @@ OUTPUT_ROOT = Path(os.environ.get("SHADELAB_TEST_OUTPUT", SOURCE_DIR / "build" /
 
 
 def evidence_folder(name):
-    """An empty folder for one test's (or one module's) files: <test output>/<name>/."""
-    path = OUTPUT_ROOT / re.sub(r"[^A-Za-z0-9_.-]+", "_", name)
+    """An empty folder for one test's (or one module's) files: <test output>/<name>/ ('/' nests folders)."""
+    path = OUTPUT_ROOT.joinpath(*(re.sub(r"[^A-Za-z0-9_.-]+", "_", part) for part in name.split("/")))
     shutil.rmtree(path, ignore_errors=True)
     path.mkdir(parents=True)
     return path

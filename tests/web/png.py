@@ -52,8 +52,10 @@ def decode(data, name="image"):
         elif kind == 3:
             cur = _unfilter_left(line, channels, lambda left, i: (left + int(prev[i])) >> 1)
         elif kind == 4:
-            cur = _unfilter_left(line, channels, lambda left, i: _paeth(left, int(prev[i]),
-                                                                         int(prev[i - channels]) if i >= channels else 0))
+            def paeth(left, i):
+                return _paeth(left, int(prev[i]), int(prev[i - channels]) if i >= channels else 0)
+
+            cur = _unfilter_left(line, channels, paeth)
         else:
             raise ValueError(f"{name}: PNG row {y} has filter type {kind}")
         out[y] = cur

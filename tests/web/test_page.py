@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import cdp
 import png
 from conftest import SOURCE_DIR, evidence_folder
 from serve import Server
@@ -62,7 +63,7 @@ def native_render(binary, scene, renderer, out, size=SIZE):
     scene = Path(scene)
     key = (scene.read_bytes(), str(scene.parent), renderer, size)
     if key not in _native_cache:
-        folder = evidence_folder(f"native-{len(_native_cache)}")
+        folder = evidence_folder(f"native-renders/{len(_native_cache)}")
         target = folder / f"{scene.stem}-{renderer}.png"
         args = [str(binary), "render", str(scene), "--renderer", renderer, "--size", f"{size[0]}x{size[1]}", "-o",
                 str(target)]
@@ -194,11 +195,18 @@ def test_scene_matches_native(app, binary, evidence, scene):
     assert trace_ok, f"{scene}: the page's reference differs from the native trace: {trace_summary}"
 
 
+def material_of(scene, obj):
+    """An object's material: inline, or named in the scene's "materials" (scene-format.md)."""
+    material = obj.get("material", {})
+    return scene.get("materials", {}).get(material, {}) if isinstance(material, str) else material
+
+
 def edited_shininess(before, after):
-    """[(object index, s before, s after)] for every object whose material's s the page changed."""
+    """[(object index, s before, s after)] for every object whose material's s the page changed (32 when
+    the file leaves it out, scene-format.md)."""
     changed = []
     for i, (a, b) in enumerate(zip(before["objects"], after["objects"])):
-        sa, sb = a.get("material", {}).get("s"), b.get("material", {}).get("s")
+        sa, sb = material_of(before, a).get("s", 32), material_of(after, b).get("s", 32)
         if sa != sb:
             changed.append((i, sa, sb))
     return changed
@@ -347,3 +355,22 @@ def test_hostile_file_is_one_line_and_the_page_renders_on(app, binary, evidence,
                            evidence / "native-raster.png")
     passed, summary = compare_gates(binary, page_raster, native, evidence, "raster")
     assert passed, f"after {name} the page's picture is outside the gates: {summary}"
+
+
+# ---- the views ----
+
+
+@pytest.mark.parametrize("mode", ["raster", "reference", "split", "difference", "global"])
+def test_view_mode_is_accepted(app, evidence, mode):
+    """Each view shows without an error (a screenshot of it is left behind); the raster view is restored."""
+    app.load_scene("default.json")
+    app.js(f"shadelab.setView({json.dumps(mode)})")
+    app.page.screenshot(evidence / f"view-{mode}.png")
+    assert app.message() == ""
+    app.js("shadelab.setView('raster')")
+
+
+def test_unknown_view_mode_throws(app):
+    """The views' control: a mode the page does not have is refused, not ignored."""
+    with pytest.raises(cdp.JsError):
+        app.js("shadelab.setView('no-such-view')")
