@@ -146,6 +146,11 @@ def app(browser, page_dir):
     with Server(page_dir) as server:
         page = browser.new_page()
         page.navigate(server.url("index.html"), timeout=60)
+        try:
+            page.wait_for("window.shadelab && window.shadelab.ready && true", timeout=60)
+        except cdp.CdpTimeout:
+            pytest.fail(f"{page_dir}/index.html: no window.shadelab.ready within 60 s of loading "
+                        f"(console: {page.console[-5:]})", pytrace=False)
         page.evaluate("shadelab.ready.then(() => true)", timeout=READY_TIMEOUT)
         yield App(page)
 
@@ -319,12 +324,16 @@ def hostile_files(folder):
     }
 
 
-def open_file(app, path):
-    """Opens a file through #open-file and waits until the page has taken it (a message, or a new scene)."""
+def open_file(app, path, refused):
+    """Opens a file through #open-file and waits until the page has taken it: for a file to be refused (or
+    warned about), until message() says something; for a good one, until the exported scene changes."""
     app.js("window.__sceneBefore = shadelab.exportScene(), true")
     app.page.set_file_input("#open-file", [path])
-    app.page.wait_for("shadelab.message() !== '' || shadelab.exportScene() !== window.__sceneBefore",
-                      timeout=RENDER_TIMEOUT)
+    if refused:
+        app.page.wait_for("shadelab.message() !== ''", timeout=RENDER_TIMEOUT)
+    else:
+        app.page.wait_for("shadelab.message() !== '' || shadelab.exportScene() !== window.__sceneBefore",
+                          timeout=RENDER_TIMEOUT)
 
 
 def test_whole_glb_opens(app, binary, evidence):
@@ -334,7 +343,7 @@ def test_whole_glb_opens(app, binary, evidence):
                              str(evidence / "whole-native.png")], capture_output=True, text=True, timeout=60)
     assert native.returncode == 0, f"the control GLB does not render natively: {native.stderr}"
     app.load_scene("default.json")
-    open_file(app, evidence / "whole.glb")
+    open_file(app, evidence / "whole.glb", refused=False)
     assert app.message() == ""
 
 
@@ -343,7 +352,7 @@ def test_hostile_file_is_one_line_and_the_page_renders_on(app, binary, evidence,
     path = evidence / name
     path.write_bytes(hostile_files(evidence)[name])
     app.load_scene("default.json")
-    open_file(app, path)
+    open_file(app, path, refused=True)
     message = app.message()
     (evidence / "message.txt").write_text(message)
     assert message and "\n" not in message and name in message, f"message() for {name}: {message!r}"
