@@ -181,12 +181,19 @@ class Browser:
         self.event_count += 1
         del self._events[:-1000]  # only recent events can still be waited for
 
+    def _check_alive(self, session):
+        for page in self.pages:
+            if page.session == session and page.crashed:
+                raise CdpError(f"the page {page.crashed}")
+
     def call(self, method, params=None, session=None, timeout=None):
-        """Sends one command and returns its result; an error reply raises CdpError."""
+        """Sends one command and returns its result; an error reply, or the page crashing, raises CdpError."""
         deadline = time.monotonic() + (timeout or self.timeout)
+        self._check_alive(session)
         wanted = self._send(method, params or {}, session)
         while True:
             message = self._receive(deadline, method)
+            self._check_alive(session)
             if message.get("id") == wanted:
                 if "error" in message:
                     raise CdpError(f"{method}: {message['error'].get('message')} {message['error'].get('data', '')}")
@@ -195,11 +202,13 @@ class Browser:
     def wait_event(self, method, session=None, predicate=lambda p: True, timeout=None, since=0):
         """Waits for an event (received as number `since` or later, or arriving) and returns its params."""
         deadline = time.monotonic() + (timeout or self.timeout)
+        self._check_alive(session)
         for n, s, m, p in self._events:
             if n >= since and s == session and m == method and predicate(p):
                 return p
         while True:
             message = self._receive(deadline, method)
+            self._check_alive(session)
             if message.get("method") == method and message.get("sessionId") == session and predicate(
                     message.get("params", {})):
                 return message["params"]
@@ -234,18 +243,24 @@ class Page:
         self.session = session
         self.console = []  # every console message: (type, text)
         self.errors = []  # console errors and uncaught exceptions, as one line each
+        self.crashed = None  # what ended the page's renderer, once it has
 
     def call(self, method, params=None, timeout=None):
         return self.browser.call(method, params, session=self.session, timeout=timeout)
 
     def _enable(self):
-        for domain in ("Page", "Runtime", "Log", "DOM"):
+        for domain in ("Inspector", "Page", "Runtime", "Log", "DOM"):
             self.call(f"{domain}.enable")
         self.call("Emulation.setDeviceMetricsOverride", {
             "width": self.browser.width, "height": self.browser.height, "deviceScaleFactor": 1, "mobile": False})
 
     def _on_event(self, method, params):
-        if method == "Runtime.consoleAPICalled":
+        if method == "Inspector.targetCrashed":
+            self.crashed = "crashed (its renderer process died: out of memory, or killed)"
+            self.errors.append("the page crashed")
+        elif method == "Inspector.detached":
+            self.crashed = f"was detached ({params.get('reason')})"
+        elif method == "Runtime.consoleAPICalled":
             text = " ".join(_remote_text(a) for a in params.get("args", []))
             self.console.append((params.get("type"), text))
             if params.get("type") in ("error", "assert"):

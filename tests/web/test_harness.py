@@ -2,6 +2,7 @@
 and console errors are caught; with negative controls (no WebGL2, a wrong colour, a wait that never ends)."""
 
 import json
+import time
 from pathlib import Path
 
 import pytest
@@ -120,6 +121,21 @@ def test_waits_end_at_their_timeout(page):
         page.wait_for("false", timeout=0.5)
     # The browser still answers after an abandoned wait.
     assert page.evaluate("6 * 7") == 42
+
+
+def test_a_crashed_page_fails_at_once(browser, server):
+    page = browser.new_page()
+    page.navigate(server.url("webgl2.html"))
+    try:
+        page.call("Page.crash", timeout=2)
+    except cdp.CdpError:
+        pass  # the reply may never come: the renderer is gone
+    started = time.monotonic()
+    with pytest.raises(cdp.CdpError, match="crashed"):
+        page.evaluate("new Promise(() => {})", timeout=20)
+    assert time.monotonic() - started < 10
+    # The browser and its other pages go on.
+    assert browser.new_page().evaluate("1 + 1") == 2
 
 
 def test_served_mime_types(server, tmp_path):
