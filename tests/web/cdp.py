@@ -6,6 +6,7 @@ bounded by a timeout. Chromium always dies with the context manager, also on fai
 <evidence>/chromium.log and what the page printed to its console in <evidence>/console.log."""
 
 import base64
+import ctypes
 import json
 import os
 import shutil
@@ -97,9 +98,10 @@ class Browser:
             *self.extra_flags,
             "about:blank",
         ]
-        # A session of its own, so that close() can end Chromium's helper processes with it.
+        # A session of its own, so that close() can end Chromium's helper processes with it; and killed by
+        # the kernel if this process dies first (a test runner's timeout), which the helpers then follow.
         self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=self._log, stderr=subprocess.STDOUT,
-                                     start_new_session=True)
+                                     start_new_session=True, preexec_fn=_die_with_parent)
         port_file = Path(self._profile) / "DevToolsActivePort"
         deadline = time.monotonic() + self.timeout
         while True:
@@ -278,6 +280,7 @@ class Page:
     def write_console_log(self):
         path = self.browser.evidence_dir / "console.log"
         with open(path, "a") as f:
+            f.write(f"--- page {self.target}\n")
             for kind, text in self.console:
                 f.write(f"{kind}: {text}\n")
 
@@ -408,6 +411,14 @@ class Page:
         data = base64.b64decode(self.call("Page.captureScreenshot", params)["data"])
         Path(path).write_bytes(data)
         return data
+
+
+def _die_with_parent():
+    """In the child before exec: SIGKILL when the parent dies (Linux prctl PR_SET_PDEATHSIG)."""
+    try:
+        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL, 0, 0, 0)
+    except OSError:
+        pass
 
 
 def _remote_text(obj):

@@ -178,3 +178,25 @@ def test_browser_is_killed_on_failure(evidence):
             raise RuntimeError("a test failing inside the browser's block")
     assert living_processes_in_group(group) == []
     assert (evidence / "chromium.log").stat().st_size > 0
+
+
+def test_browser_dies_with_the_test_process(evidence):
+    """A test runner that kills pytest (ctest's timeout) leaves no Chromium behind."""
+    import signal
+    import subprocess
+    import sys
+
+    here = Path(__file__).resolve().parent
+    script = (f"import sys, time; sys.path.insert(0, {str(here)!r}); import cdp\n"
+              f"b = cdp.Browser({str(evidence)!r}).__enter__(); print(b.proc.pid, flush=True); time.sleep(60)")
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    try:
+        group = int(child.stdout.readline())
+        assert living_processes_in_group(group), "the control: Chromium runs while its parent does"
+    finally:
+        child.send_signal(signal.SIGKILL)
+        child.wait()
+    deadline = time.monotonic() + 10
+    while living_processes_in_group(group) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert living_processes_in_group(group) == []
