@@ -1,0 +1,385 @@
+"""The web page against the native binary, in headless Chromium: every shipped scene's raster image within
+design.md §4's gates and its Whitted reference pixel for pixel, the controls, hostile files, and no console
+errors. The page's test API and DOM ids are in tests/web/README.md; one browser serves the whole module.
+
+Sections: locating the page and the binary · native renders and comparisons · the page · a. scenes ·
+b. controls · c. hostile files."""
+
+import base64
+import json
+import math
+import os
+import shutil
+import struct
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import cdp
+import png
+from conftest import SOURCE_DIR, evidence_folder
+from serve import Server
+
+SIZE = (320, 180)
+SCENES = sorted(p.name for p in (SOURCE_DIR / "assets" / "scenes").glob("*.json"))
+READY_TIMEOUT = 180  # s: the first picture, wasm compiled and shaders linked on SwiftShader
+RENDER_TIMEOUT = 120  # s: one image from the page, the Whitted reference included
+
+# ---- locating the page and the binary ----
+
+
+def _path_from_env(name, default):
+    value = os.environ.get(name)
+    return Path(value) if value else SOURCE_DIR / default
+
+
+@pytest.fixture(scope="module")
+def binary():
+    path = _path_from_env("SHADELAB_BIN", "build/shadelab")
+    if not path.is_file():
+        pytest.fail(f"{path}: no shadelab binary (build it: cmake --build build --target shadelab; "
+                    "or set SHADELAB_BIN)", pytrace=False)
+    return path
+
+
+@pytest.fixture(scope="module")
+def page_dir():
+    path = _path_from_env("SHADELAB_WEB_PAGE", "build-web/page")
+    if not (path / "index.html").is_file():
+        pytest.fail(f"{path}: no web page (no index.html); build it with scripts/web.sh --build-only, "
+                    "or set SHADELAB_WEB_PAGE", pytrace=False)
+    return path
+
+
+# ---- native renders and comparisons ----
+
+_native_cache = {}
+
+
+def native_render(binary, scene, renderer, out, size=SIZE):
+    """`shadelab render SCENE --renderer R --size WxH -o out`, once per scene file content and renderer."""
+    scene = Path(scene)
+    key = (scene.read_bytes(), str(scene.parent), renderer, size)
+    if key not in _native_cache:
+        folder = evidence_folder(f"native-renders/{len(_native_cache)}")
+        target = folder / f"{scene.stem}-{renderer}.png"
+        args = [str(binary), "render", str(scene), "--renderer", renderer, "--size", f"{size[0]}x{size[1]}", "-o",
+                str(target)]
+        p = subprocess.run(args, capture_output=True, text=True, timeout=300)
+        (folder / "command.txt").write_text(" ".join(args) + f"\nexit {p.returncode}\n{p.stdout}{p.stderr}")
+        assert p.returncode == 0, f"{' '.join(args)} exited {p.returncode}: {p.stderr}"
+        _native_cache[key] = target
+    shutil.copyfile(_native_cache[key], out)
+    return Path(out)
+
+
+def compare_gates(binary, a, b, evidence, name):
+    """`shadelab compare a b` under the default gates of design.md §4; returns (passed, summary). Leaves the
+    heatmap and the JSON report in the evidence folder."""
+    args = [str(binary), "compare", str(a), str(b), "--diff", str(evidence / f"{name}-heat.png"), "--json",
+            str(evidence / f"{name}-report.json")]
+    p = subprocess.run(args, capture_output=True, text=True, timeout=60)
+    summary = (p.stdout + p.stderr).strip()
+    (evidence / f"{name}-compare.txt").write_text(" ".join(args) + f"\nexit {p.returncode}\n{summary}\n")
+    assert p.returncode in (0, 1), f"compare failed to run (exit {p.returncode}): {summary}"
+    return p.returncode == 0, summary
+
+
+def compare_exact(a, b, evidence, name):
+    """Pixel for pixel (RGB and alpha, as decoded); returns (equal, summary) and leaves the numbers."""
+    pa, pb = png.read(a), png.read(b)
+    if pa.shape != pb.shape:
+        summary = f"sizes differ: {pa.shape[1]}x{pa.shape[0]} against {pb.shape[1]}x{pb.shape[0]}"
+        equal = False
+    else:
+        diff = np.abs(pa.astype(int) - pb.astype(int)).max(axis=2)
+        count = int((diff > 0).sum())
+        equal = count == 0
+        summary = f"{count} of {diff.size} pixels differ, by at most {int(diff.max())}/255"
+        if not equal:
+            y, x = np.unravel_index(int(diff.argmax()), diff.shape)
+            summary += f", the most at ({x}, {y}): {pa[y, x].tolist()} against {pb[y, x].tolist()}"
+    (evidence / f"{name}-exact.txt").write_text(f"{a}\n{b}\n{summary}\n")
+    return equal, summary
+
+
+# ---- the page ----
+
+
+class App:
+    """The page's test API (README.md) over one CDP page."""
+
+    def __init__(self, page):
+        self.page = page
+
+    def js(self, expression, timeout=RENDER_TIMEOUT):
+        return self.page.evaluate(expression, timeout=timeout)
+
+    def load_scene(self, name, size=SIZE):
+        self.js(f"shadelab.loadScene({json.dumps(name)})")
+        self.js(f"shadelab.setSize({size[0]}, {size[1]})")
+
+    def image(self, which, path):
+        url = self.js(f"shadelab.imageDataUrl({json.dumps(which)})")
+        prefix = "data:image/png;base64,"
+        assert isinstance(url, str) and url.startswith(prefix), f"imageDataUrl('{which}') gave {str(url)[:60]!r}"
+        Path(path).write_bytes(base64.b64decode(url[len(prefix):]))
+        return Path(path)
+
+    def export(self, path):
+        text = self.js("shadelab.exportScene()")
+        Path(path).write_text(text)
+        return json.loads(text)
+
+    def message(self):
+        return self.js("shadelab.message()")
+
+    def blur(self):
+        """Takes keyboard focus off any control, so that a key goes to the page, not to a <select>."""
+        self.js("document.activeElement && document.activeElement.blur(), true")
+
+
+@pytest.fixture(scope="module")
+def app(browser, page_dir):
+    with Server(page_dir) as server:
+        page = browser.new_page()
+        page.navigate(server.url("index.html"), timeout=60)
+        try:
+            page.wait_for("window.shadelab && window.shadelab.ready && true", timeout=60)
+        except cdp.CdpTimeout:
+            pytest.fail(f"{page_dir}/index.html: no window.shadelab.ready within 60 s of loading "
+                        f"(console: {page.console[-5:]})", pytrace=False)
+        page.evaluate("shadelab.ready.then(() => true)", timeout=READY_TIMEOUT)
+        yield App(page)
+
+
+@pytest.fixture(autouse=True)
+def no_console_errors(request, evidence):
+    """d. No uncaught exception or console error during any test (checked after it, into errors.txt)."""
+    yield
+    if "app" not in request.fixturenames:
+        return
+    errors = request.getfixturevalue("app").page.take_errors()
+    (evidence / "errors.txt").write_text("".join(e + "\n" for e in errors))
+    assert errors == [], f"the page logged {len(errors)} error(s) during the test: {errors}"
+
+
+def test_controls_exist(app):
+    """The DOM the tests drive: the scene list holds every shipped scene."""
+    dom = app.js("""({
+        scenes: [...document.querySelectorAll('#scene option')].map(o => o.value),
+        steps: [...document.querySelectorAll('[data-step]')].map(b => b.dataset.step),
+        models: [...document.querySelectorAll('#model option')].map(o => o.value),
+        shininess: (e => e && [e.type, e.min, e.max])(document.querySelector('#shininess')),
+        file: (e => e && e.type)(document.querySelector('#open-file')),
+    })""")
+    assert set(SCENES) <= set(dom["scenes"]), dom
+    assert sorted(dom["steps"]) == list("012345"), dom
+    assert set(dom["models"]) >= {"phong", "blinn-phong", "pbr"}, dom
+    assert dom["shininess"] == ["range", "0", "11"], dom
+    assert dom["file"] == "file", dom
+
+
+# ---- a. every shipped scene against the native binary ----
+
+
+@pytest.mark.parametrize("scene", SCENES)
+def test_scene_matches_native(app, binary, evidence, scene):
+    app.load_scene(scene)
+    assert app.message() == "", f"loading {scene}: {app.message()}"
+    page_raster = app.image("raster", evidence / "page-raster.png")
+    page_reference = app.image("reference", evidence / "page-reference.png")
+    path = SOURCE_DIR / "assets" / "scenes" / scene
+    native_raster = native_render(binary, path, "raster", evidence / "native-raster.png")
+    native_trace = native_render(binary, path, "trace", evidence / "native-trace.png")
+    raster_ok, raster_summary = compare_gates(binary, page_raster, native_raster, evidence, "raster")
+    trace_ok, trace_summary = compare_exact(page_reference, native_trace, evidence, "reference")
+    assert raster_ok, f"{scene}: the page's raster image is outside the gates of the native one: {raster_summary}"
+    assert trace_ok, f"{scene}: the page's reference differs from the native trace: {trace_summary}"
+
+
+def material_of(scene, obj):
+    """An object's material: inline, or named in the scene's "materials" (scene-format.md)."""
+    material = obj.get("material", {})
+    return scene.get("materials", {}).get(material, {}) if isinstance(material, str) else material
+
+
+def edited_shininess(before, after):
+    """[(object index, s before, s after)] for every object whose material's s the page changed (32 when
+    the file leaves it out, scene-format.md)."""
+    changed = []
+    for i, (a, b) in enumerate(zip(before["objects"], after["objects"])):
+        sa, sb = material_of(before, a).get("s", 32), material_of(after, b).get("s", 32)
+        if sa != sb:
+            changed.append((i, sa, sb))
+    return changed
+
+
+def move_shininess(app, factor):
+    """Moves the shininess slider so that s is multiplied by `factor`; returns the new slider value."""
+    value = float(app.js("document.querySelector('#shininess').value"))
+    return float(app.page.set_range("#shininess", value + math.log2(factor)))
+
+
+def test_shininess_10_percent_fails_the_gate(app, binary, evidence):
+    """a's negative control: s changed by 10 % in the page must fail the gate the scenes pass."""
+    app.load_scene("default.json")
+    before = app.export(evidence / "before.json")
+    move_shininess(app, 1.1)
+    after = app.export(evidence / "after.json")
+    changed = edited_shininess(before, after)
+    (evidence / "shininess.json").write_text(json.dumps(changed))
+    assert len(changed) == 1 and changed[0][2] == pytest.approx(changed[0][1] * 1.1, rel=0.01), (
+        f"the slider should change one object's s by 10 %: {changed}")
+    page_raster = app.image("raster", evidence / "page-raster.png")
+    native = native_render(binary, SOURCE_DIR / "assets" / "scenes" / "default.json", "raster",
+                           evidence / "native-raster.png")
+    passed, summary = compare_gates(binary, page_raster, native, evidence, "raster")
+    assert not passed, f"s x 1.1 passed the gates, so they cannot tell a 10 % shininess change: {summary}"
+
+
+# ---- b. the controls drive the picture ----
+
+
+def check_control_drives_picture(app, binary, evidence, change):
+    """Before and after `change`: the page's new picture is the native render of the scene it exports,
+    and the picture from before fails against that render."""
+    app.load_scene("default.json")
+    old = app.image("raster", evidence / "page-before.png")
+    before = app.export(evidence / "scene-before.json")
+    change()
+    after = app.export(evidence / "scene-after.json")
+    assert after != before, "the control changed nothing in the exported scene"
+    new = app.image("raster", evidence / "page-after.png")
+    native = native_render(binary, evidence / "scene-after.json", "raster", evidence / "native-after.png")
+    passed, summary = compare_gates(binary, new, native, evidence, "after")
+    assert passed, f"the page's picture after the change is outside the gates of the exported scene's: {summary}"
+    passed, summary = compare_gates(binary, old, native, evidence, "before")
+    assert not passed, f"the picture from before the change passes too, so the change shows nothing: {summary}"
+    return before, after
+
+
+def test_shininess_slider_drives_the_picture(app, binary, evidence):
+    before, after = check_control_drives_picture(app, binary, evidence, lambda: move_shininess(app, 4.0))
+    changed = edited_shininess(before, after)
+    assert len(changed) == 1 and changed[0][2] == pytest.approx(changed[0][1] * 4, rel=0.01), changed
+
+
+def test_key_3_drives_the_picture(app, binary, evidence):
+    def press():
+        app.blur()
+        app.page.press_key("3")
+
+    _, after = check_control_drives_picture(app, binary, evidence, press)
+    terms = {"ambient": True, "diffuse": True, "specular": True, "shadows": False, "reflections": False}
+    assert {k: after.get("terms", {}).get(k, True) for k in terms} == terms, after.get("terms")
+
+
+def test_blinn_phong_drives_the_picture(app, binary, evidence):
+    _, after = check_control_drives_picture(app, binary, evidence,
+                                            lambda: app.page.select_option("#model", "blinn-phong"))
+    assert after["model"] == "blinn-phong"
+
+
+# ---- c. hostile files through the file input ----
+
+
+def _glb(gltf_path):
+    """A GLB of a glTF whose one buffer is a data: URI: the JSON chunk, then the buffer as the BIN chunk."""
+    gltf = json.loads(Path(gltf_path).read_text())
+    (buffer,) = gltf["buffers"]
+    data = base64.b64decode(buffer.pop("uri").split(",", 1)[1])
+    text = json.dumps(gltf, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    data += b"\0" * (-len(data) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(data), b"BIN\0") + data
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+def _png_claiming(width, height):
+    """A real 8x8 PNG whose IHDR then claims width x height (the CRC left stale: nothing may decode it)."""
+    checker = SOURCE_DIR / "assets" / "models" / "textures" / "uv_checker.gltf"
+    uri = json.loads(checker.read_text())["images"][0]["uri"]
+    data = bytearray(base64.b64decode(uri.split(",", 1)[1]))
+    data[16:24] = struct.pack(">II", width, height)
+    return bytes(data)
+
+
+def hostile_files(folder):
+    """name -> bytes: each one a file the page must refuse, or warn about, in one line naming it."""
+    textures = SOURCE_DIR / "assets" / "models" / "textures"
+    glb = _glb(textures / "uv_checker.gltf")
+    (folder / "whole.glb").write_bytes(glb)  # the control: the same file untruncated loads
+    scene = (SOURCE_DIR / "assets" / "scenes" / "default.json").read_bytes()
+    cut = scene.index(b'"title": "') + len(b'"title": "')
+    big = json.loads((textures / "uv_checker.gltf").read_text())
+    # 16384 x 16384 RGBA: a gigabyte once decoded.
+    big["images"][0]["uri"] = "data:image/png;base64," + base64.b64encode(_png_claiming(16384, 16384)).decode()
+    return {
+        "truncated.glb": glb[:len(glb) // 2],
+        "nul.json": scene[:cut] + b"\0" + scene[cut:],
+        "gigabyte-image.gltf": json.dumps(big).encode(),
+    }
+
+
+def open_file(app, path, refused):
+    """Opens a file through #open-file and waits until the page has taken it: for a file to be refused (or
+    warned about), until message() says something; for a good one, until the exported scene changes."""
+    app.js("window.__sceneBefore = shadelab.exportScene(), true")
+    app.page.set_file_input("#open-file", [path])
+    if refused:
+        app.page.wait_for("shadelab.message() !== ''", timeout=RENDER_TIMEOUT)
+    else:
+        app.page.wait_for("shadelab.message() !== '' || shadelab.exportScene() !== window.__sceneBefore",
+                          timeout=RENDER_TIMEOUT)
+
+
+def test_whole_glb_opens(app, binary, evidence):
+    """c's control: the GLB the truncated one is cut from opens without a message."""
+    hostile_files(evidence)
+    native = subprocess.run([str(binary), "render", str(evidence / "whole.glb"), "--size", "32x18", "-o",
+                             str(evidence / "whole-native.png")], capture_output=True, text=True, timeout=60)
+    assert native.returncode == 0, f"the control GLB does not render natively: {native.stderr}"
+    app.load_scene("default.json")
+    open_file(app, evidence / "whole.glb", refused=False)
+    assert app.message() == ""
+
+
+@pytest.mark.parametrize("name", ["truncated.glb", "nul.json", "gigabyte-image.gltf"])
+def test_hostile_file_is_one_line_and_the_page_renders_on(app, binary, evidence, name):
+    path = evidence / name
+    path.write_bytes(hostile_files(evidence)[name])
+    app.load_scene("default.json")
+    open_file(app, path, refused=True)
+    message = app.message()
+    (evidence / "message.txt").write_text(message)
+    assert message and "\n" not in message and name in message, f"message() for {name}: {message!r}"
+    # The page renders on: a shipped scene loads, clears the message and matches the native render.
+    app.load_scene("default.json")
+    assert app.message() == ""
+    page_raster = app.image("raster", evidence / "page-raster.png")
+    native = native_render(binary, SOURCE_DIR / "assets" / "scenes" / "default.json", "raster",
+                           evidence / "native-raster.png")
+    passed, summary = compare_gates(binary, page_raster, native, evidence, "raster")
+    assert passed, f"after {name} the page's picture is outside the gates: {summary}"
+
+
+# ---- the views ----
+
+
+@pytest.mark.parametrize("mode", ["raster", "reference", "split", "difference", "global"])
+def test_view_mode_is_accepted(app, evidence, mode):
+    """Each view shows without an error (a screenshot of it is left behind); the raster view is restored."""
+    app.load_scene("default.json")
+    app.js(f"shadelab.setView({json.dumps(mode)})")
+    app.page.screenshot(evidence / f"view-{mode}.png")
+    assert app.message() == ""
+    app.js("shadelab.setView('raster')")
+
+
+def test_unknown_view_mode_throws(app):
+    """The views' control: a mode the page does not have is refused, not ignored."""
+    with pytest.raises(cdp.JsError):
+        app.js("shadelab.setView('no-such-view')")
