@@ -12,6 +12,12 @@ foreach(entry glm nlohmann tiny_gltf.h stb)
   endif()
   file(CREATE_LINK /usr/include/${entry} ${SHADELAB_WEB_INCLUDE}/${entry} SYMBOLIC)
 endforeach()
+# The GL enums gl/gl_api.h names (Mesa's header); its KHR/khrplatform.h is emscripten's own.
+if(NOT EXISTS /usr/include/GL/glcorearb.h)
+  message(FATAL_ERROR "web build: /usr/include/GL/glcorearb.h is missing; run scripts/install-deps.sh --with-web")
+endif()
+file(MAKE_DIRECTORY ${SHADELAB_WEB_INCLUDE}/GL)
+file(CREATE_LINK /usr/include/GL/glcorearb.h ${SHADELAB_WEB_INCLUDE}/GL/glcorearb.h SYMBOLIC)
 
 add_library(glm::glm INTERFACE IMPORTED)
 target_include_directories(glm::glm SYSTEM INTERFACE ${SHADELAB_WEB_INCLUDE})

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages shadelab needs, skipping those already present (design.md §6).
-# Usage: scripts/install-deps.sh [--with-embree] [--with-fuzz]   (needs root or sudo when something is missing)
+# Usage: scripts/install-deps.sh [--with-embree] [--with-fuzz] [--with-web]   (needs root or sudo when something is missing)
 set -euo pipefail
 
 packages=(
@@ -21,11 +21,13 @@ packages=(
   jupyter-nbconvert python3-ipykernel python3-ipywidgets # the notebook, executed by the tests
   python3-distributed                                   # Dask: the batch-sweep example and its test
   python3-mypy                                          # the package's type checks (mypy --strict, stubtest)
+  chromium python3-websocket                            # the web tests: headless Chromium over DevTools (tests/web)
 )
 for arg in "$@"; do
   case "$arg" in
     --with-embree) packages+=(libembree-dev) ;;            # benchmark baseline only
     --with-fuzz) packages+=(clang libclang-rt-14-dev) ;;   # libFuzzer and sanitizers (tests/fuzz/run.sh)
+    --with-web) packages+=(emscripten) ;;                  # the web page's build (web/, docs/web.md)
     *) echo "install-deps: unknown option $arg" >&2; exit 2 ;;
   esac
 done

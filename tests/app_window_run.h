@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cli_run.h"
+#include "compare/compare_evidence.h"
 #include "compare/compare_report.h"
 #include "compare/image_compare.h"
 #include "image/png.h"

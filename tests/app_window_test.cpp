@@ -5,6 +5,7 @@
 // negative control. Without Xvfb the tests report SKIPPED with the reason. What a user does with the
 // window (probe, drag, undo, save) is app_window_interaction_test.cpp's.
 #include "app_window_run.h"
+#include "compare/compare_evidence.h"
 #include "compare/image_compare.h"
 #include "image/png.h"
 #include "scene/scene_json.h"

@@ -3,6 +3,7 @@
 // report behind. Shared by the matrix, shadow and reflection tests; the gates are the caller's.
 #pragma once
 
+#include "compare/compare_evidence.h"
 #include "compare/compare_report.h"
 #include "compare/comparison.h"
 #include "compare/image_compare.h"

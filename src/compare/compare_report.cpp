@@ -2,11 +2,8 @@
 // inside this file; the header exposes strings only.
 #include "compare/compare_report.h"
 
-#include "image/png.h"
-#include "util/atomic_file.h"
 #include "util/check.h"
 #include "util/input_error.h"
-#include "util/output_file.h"
 
 #include "compare/report_verdict.h"
 
@@ -168,18 +165,6 @@ std::string compareReportJson(const CompareResult& r, const std::string& imageA,
                      {"mismatches_outside_band", r.mismatchesOutsideBand},
                      {"mismatch_fraction_of_band", r.mismatchFractionOfBand()}};
     return j.dump(2) + "\n";
-}
-
-std::vector<std::string> writeCompareEvidence(const std::string& stem, const Image8& a, const Image8& b,
-                                              const CompareResult& r) {
-    std::vector<std::string> paths;
-    for (const char* suffix : {"_a.png", "_b.png", "_heat.png", "_report.json"})
-        paths.push_back(derivedOutput(stem, suffix));
-    writePng(paths[0], a);
-    writePng(paths[1], b);
-    writePng(paths[2], diffHeatmap(a, b, r.bandMask));
-    writeFileAtomic(paths[3], compareReportJson(r, paths[0], paths[1]));
-    return paths;
 }
 
 }  // namespace shadelab

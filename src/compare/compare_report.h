@@ -1,5 +1,5 @@
 // What a comparison leaves behind (design.md §4 "Report"): the |a-b| heatmap, side-by-side strips, a
-// short human summary, the JSON report, and the evidence files a failing test writes. No metrics here.
+// short human summary and the JSON report. No metrics here; the files a failing test writes are compare_evidence.h.
 #pragma once
 
 #include "compare/image_compare.h"
@@ -33,10 +33,5 @@ std::string compareSummary(const CompareResult& r);
 // Machine-readable report: gates, per-region metrics, coverage counts, verdict and reasons, with
 // snake_case keys and numbers as numbers. imageA/imageB, when given, are recorded as "image_a"/"image_b".
 std::string compareReportJson(const CompareResult& r, const std::string& imageA = {}, const std::string& imageB = {});
-
-// Writes <stem>_a.png, <stem>_b.png, <stem>_heat.png and <stem>_report.json (atomically) and returns
-// their paths in that order, for tests that fail and the CLI's --diff/--json.
-std::vector<std::string> writeCompareEvidence(const std::string& stem, const Image8& a, const Image8& b,
-                                              const CompareResult& r);
 
 }  // namespace shadelab

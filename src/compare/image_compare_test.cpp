@@ -2,6 +2,7 @@
 // "over" rule, every gate with a negative control, silhouette bands against brute force, and the report.
 #include "compare/image_compare.h"
 
+#include "compare/compare_evidence.h"
 #include "compare/compare_report.h"
 #include "image/png.h"
 #include "util/input_error.h"

@@ -32,15 +32,17 @@ void prepareColour(int n, const float* __restrict rgba, const float* __restrict 
                    float* __restrict ab) {
     for (int x = 0; x < n; ++x) {
         const float* c = rgba + 4 * x;
-        // std::isfinite, written so that it vectorises (no branch): not a number and infinity both fail.
-        const bool finite = (std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & (std::abs(variance[x]) <= FLT_MAX);
+        // std::isfinite, written so that it vectorises (no branch): not a number and infinity both fail. The
+        // bitwise & of two bools is deliberate (clang's -Wbitwise-instead-of-logical would have &&).
+        const bool finite =
+            bool(unsigned(std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & unsigned(std::abs(variance[x]) <= FLT_MAX));
         const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
         r[x] = finite ? c[0] * k : 0.0f;
         g[x] = finite ? c[1] * k : 0.0f;
         b[x] = finite ? c[2] * k : 0.0f;
         // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
         const float vk = variance[x] * (k * k) * (k * k);
-        v[x] = finite & (vk > 1e-20f) ? vk : 0.0f;
+        v[x] = (finite & (vk > 1e-20f)) ? vk : 0.0f;
         // A pixel whose colour is not finite lends nothing: its albedo guide is infinite, as the padding's.
         // (Added rather than chosen, once for three: GCC 12 vectorises the loop only so.)
         const float outside = finite ? 0.0f : INFINITY;

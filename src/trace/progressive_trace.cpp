@@ -1,9 +1,7 @@
 // ProgressiveTrace: the job shared by the workers, the worker loop, and tile delivery.
 #include "trace/progressive_trace.h"
 
-#include "scene/view.h"
-#include "trace/integrator.h"
-#include "trace/tile_renderer.h"
+#include "trace/trace_job.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -12,22 +10,10 @@
 
 namespace shadelab::trace {
 struct ProgressiveTrace::Job {
-    Job(std::shared_ptr<const TraceScene> s, const TraceSettings& st)
-        : scene(std::move(s)),
-          settings(st),
-          k(samplesPerAxis(st)),
-          sampleView(makeViewSetup(scene->scene(), k * st.width, k * st.height)),
-          integrator(*scene, st.maxDepth >= 0 ? st.maxDepth : scene->scene().maxDepth, st.rayTree),
-          tiles(makeTiles(st.width, st.height, st.tileSize)) {
-        integrator.setPixelFootprint(pixelFootprint(sampleView));
-    }
+    Job(std::shared_ptr<const TraceScene> s, const TraceSettings& st) : scene(std::move(s)), trace(*scene, st) {}
 
     std::shared_ptr<const TraceScene> scene;
-    TraceSettings settings;
-    int k;
-    ViewSetup sampleView;
-    WhittedIntegrator integrator;
-    std::vector<Tile> tiles;
+    TraceJob trace;
 
     std::atomic<int> next{0};       // next tile to hand to a worker
     std::atomic<int> rendered{0};   // tiles finished
@@ -42,7 +28,7 @@ void ProgressiveTrace::start(std::shared_ptr<const TraceScene> scene, const Trac
     validate(settings);
     cancel();
     job_ = std::make_shared<Job>(std::move(scene), settings);
-    const int n = std::min(resolveThreads(settings), int(job_->tiles.size()));
+    const int n = std::min(resolveThreads(settings), int(job_->trace.tiles.size()));
     for (int t = 0; t < n; ++t) workers_.emplace_back([job = job_] { work(job); });
 }
 
@@ -50,12 +36,9 @@ void ProgressiveTrace::work(const std::shared_ptr<Job>& job) {
     for (;;) {
         if (job->cancelled.load(std::memory_order_relaxed)) return;
         const int index = job->next.fetch_add(1, std::memory_order_relaxed);
-        if (index >= int(job->tiles.size())) return;
+        if (index >= int(job->trace.tiles.size())) return;
         TileResult result;
-        result.index = index;
-        if (!renderTile(job->integrator, job->sampleView, job->k, job->settings.coverage, job->tiles[size_t(index)],
-                        result, &job->cancelled))
-            return;
+        if (!job->trace.render(index, result, &job->cancelled)) return;
         {
             std::lock_guard<std::mutex> lock(job->mutex);
             job->queue.push_back(std::move(result));
@@ -79,7 +62,7 @@ size_t ProgressiveTrace::wait(std::vector<TileResult>& out, std::chrono::millise
     if (!job_) return 0;
     {
         std::unique_lock<std::mutex> lock(job_->mutex);
-        const int total = int(job_->tiles.size());
+        const int total = int(job_->trace.tiles.size());
         job_->ready.wait_for(lock, timeout, [&] {
             return !job_->queue.empty() || job_->cancelled.load() ||
                    job_->delivered.load(std::memory_order_relaxed) >= total;
@@ -96,14 +79,14 @@ void ProgressiveTrace::cancel() {
 }
 
 bool ProgressiveTrace::done() const {
-    return job_ && job_->delivered.load(std::memory_order_relaxed) == int(job_->tiles.size());
+    return job_ && job_->delivered.load(std::memory_order_relaxed) == int(job_->trace.tiles.size());
 }
 
 float ProgressiveTrace::progress() const {
-    if (!job_ || job_->tiles.empty()) return job_ ? 1.0f : 0.0f;
-    return float(job_->rendered.load(std::memory_order_acquire)) / float(job_->tiles.size());
+    if (!job_ || job_->trace.tiles.empty()) return job_ ? 1.0f : 0.0f;
+    return float(job_->rendered.load(std::memory_order_acquire)) / float(job_->trace.tiles.size());
 }
 
-int ProgressiveTrace::tileCount() const { return job_ ? int(job_->tiles.size()) : 0; }
+int ProgressiveTrace::tileCount() const { return job_ ? int(job_->trace.tiles.size()) : 0; }
 
 }  // namespace shadelab::trace

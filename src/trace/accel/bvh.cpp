@@ -411,7 +411,9 @@ private:
         size_t total = top.size();
         for (const Queued& q : queue_) total += q.nodes.size();
         top.reserve(total);
+#ifdef __GLIBC__
         size_t freed = 0;
+#endif
         for (Queued& q : queue_) {
             const uint32_t offset = uint32_t(top.size());
             for (BvhNode node : q.nodes) {
@@ -421,7 +423,9 @@ private:
             }
             top[q.parent].child[q.slot] = offset;
             depth_ = std::max(depth_, q.depth);
+#ifdef __GLIBC__
             freed += q.nodes.size() * sizeof(BvhNode);
+#endif
             NodeArray().swap(q.nodes);
 #ifdef __GLIBC__
             // The subtrees were allocated by the worker threads, in their own malloc arenas, which keep freed

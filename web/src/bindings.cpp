@@ -1,0 +1,138 @@
+// The page's JavaScript view of PageLab and WorkerTracer (embind). Images cross as typed-array views of the
+// C++ buffers (valid until the next call that rewrites them; the page copies them into ImageData at once);
+// everything else as strings and numbers. Errors come back as strings, never as exceptions, so the page's
+// message line shows them and the page keeps working.
+#include "page_lab.h"
+#include "worker_tracer.h"
+
+#include "util/error_line.h"
+
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+namespace shadelab::web {
+namespace {
+
+using emscripten::val;
+
+template <typename T>
+val view(const std::vector<T>& data) {
+    return val(emscripten::typed_memory_view(data.size(), data.data()));
+}
+
+template <typename T>
+std::vector<T> copyArray(const val& array) {
+    return emscripten::convertJSArrayToNumberVector<T>(array);
+}
+
+// Why the last createLab or createTracer returned null: the page shows the line (no WebGL2, a scene the
+// worker could not rebuild).
+std::string lastCreateError;
+
+// A PageLab owned by the page's script (freed with .delete()), or null with lastCreateError set.
+PageLab* createLab(const std::string& canvas) {
+    try {
+        lastCreateError.clear();
+        return new PageLab(canvas);
+    } catch (const std::exception& e) {
+        lastCreateError = errorLine(e.what());
+        return nullptr;
+    }
+}
+
+val renderRaster(PageLab& lab, int width, int height) {
+    try {
+        return view(lab.renderRaster(width, height));
+    } catch (const std::exception& e) {
+        return val(errorLine(e.what()));
+    }
+}
+
+val setReference(PageLab& lab, const val& rgba, const val& coverage, int width, int height) {
+    try {
+        return view(lab.setReference(copyArray<float>(rgba), copyArray<uint32_t>(coverage), width, height));
+    } catch (const std::exception& e) {
+        return val(errorLine(e.what()));
+    }
+}
+
+val encodeGlobal(PageLab& lab, const val& rgba, int width, int height) {
+    try {
+        return view(lab.encodeGlobal(copyArray<float>(rgba), width, height));
+    } catch (const std::exception& e) {
+        return val(errorLine(e.what()));
+    }
+}
+
+val differenceImage(PageLab& lab) { return view(lab.differenceImage()); }
+
+// A worker's tracer, or null with lastCreateError set.
+WorkerTracer* createTracer(const std::string& sceneJson, const std::string& baseDir) {
+    try {
+        lastCreateError.clear();
+        return new WorkerTracer(sceneJson, baseDir);
+    } catch (const std::exception& e) {
+        lastCreateError = errorLine(e.what());
+        return nullptr;
+    }
+}
+
+std::string createError() { return lastCreateError; }
+
+// {x0, y0, width, height, rgba: Float32Array, coverage: Uint32Array}, copies the worker can transfer.
+val traceTile(const WorkerTracer& tracer, int index) {
+    const trace::TileResult r = tracer.traceTile(index);
+    val out = val::object();
+    out.set("x0", r.tile.x0);
+    out.set("y0", r.tile.y0);
+    out.set("width", r.tile.width);
+    out.set("height", r.tile.height);
+    out.set("rgba", val::global("Float32Array").new_(view(r.rgba)));
+    out.set("coverage", val::global("Uint32Array").new_(view(r.coverage)));
+    return out;
+}
+
+val globalImage(const WorkerTracer& tracer) {
+    const ImageF image = tracer.globalImage();
+    const size_t n = size_t(image.width) * size_t(image.height) * 4;
+    return val::global("Float32Array")
+        .new_(val(emscripten::typed_memory_view(n, image.width ? image.pixel(0, 0) : nullptr)));
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(shadelab) {
+    emscripten::function("createLab", &createLab, emscripten::allow_raw_pointers());
+    emscripten::function("createError", &createError);
+    emscripten::class_<PageLab>("Lab")
+        .function("open", &PageLab::open)
+        .function("act", &PageLab::act)
+        .function("orbit", &PageLab::orbit)
+        .function("pan", &PageLab::pan)
+        .function("zoom", &PageLab::zoom)
+        .function("stateJson", &PageLab::stateJson)
+        .function("sceneJson", &PageLab::sceneJson)
+        .function("sceneDir", &PageLab::sceneDir)
+        .function("referenceRevision", &PageLab::referenceRevision)
+        .function("revision", &PageLab::revision)
+        .function("renderRaster", &renderRaster)
+        .function("objectAt", &PageLab::objectAt)
+        .function("setReference", &setReference)
+        .function("encodeGlobal", &encodeGlobal)
+        .function("differenceImage", &differenceImage)
+        .function("differenceText", &PageLab::differenceText)
+        .function("probe", &PageLab::probe)
+        .function("lobePlotJson", &PageLab::lobePlotJson)
+        .function("albedoPlotJson", &PageLab::albedoPlotJson)
+        .function("glRenderer", &PageLab::glRenderer);
+    emscripten::function("createTracer", &createTracer, emscripten::allow_raw_pointers());
+    emscripten::class_<WorkerTracer>("Tracer")
+        .function("startReference", &WorkerTracer::startReference)
+        .function("traceTile", &traceTile)
+        .function("startGlobal", &WorkerTracer::startGlobal)
+        .function("addGlobalSamples", &WorkerTracer::addGlobalSamples)
+        .function("globalSamples", &WorkerTracer::globalSamples)
+        .function("globalImage", &globalImage);
+}
+
+}  // namespace shadelab::web

@@ -1,0 +1,64 @@
+// WorkerTracer: the scene rebuilt from JSON, then the same render request as the native front ends.
+#include "worker_tracer.h"
+
+#include "render/render_request.h"
+#include "scene/scene_load.h"
+#include "util/atomic_file.h"
+
+#include <stdexcept>
+
+namespace shadelab::web {
+namespace {
+
+// The worker's copy of the page's scene: its JSON written beside the file it came from, in this worker's own
+// in-memory file system, and loaded as any scene file is (models, environment map, limits), so that relative
+// paths resolve as they did in the page.
+Scene sceneFrom(const std::string& sceneJson, const std::string& baseDir) {
+    const std::string path = (baseDir.empty() ? std::string(".") : baseDir) + "/.page-scene.json";
+    writeFileAtomic(path, sceneJson);
+    return loadScene(path);
+}
+
+render::RenderRequest requestOf(render::Engine engine, int width, int height) {
+    render::RenderRequest request;
+    request.engine = engine;
+    request.width = width;
+    request.height = height;
+    request.threads = 1;  // this worker; the page runs several
+    request.coverage = engine == render::Engine::Trace;
+    render::require(request);
+    return request;
+}
+
+}  // namespace
+
+WorkerTracer::WorkerTracer(const std::string& sceneJson, const std::string& baseDir)
+    : scene_(std::make_shared<const trace::TraceScene>(sceneFrom(sceneJson, baseDir))) {}
+
+int WorkerTracer::startReference(int width, int height) {
+    const trace::TraceSettings settings =
+        render::toTrace(requestOf(render::Engine::Trace, width, height), scene_->scene());
+    trace::validate(settings);
+    job_ = std::make_unique<trace::TraceJob>(*scene_, settings);
+    return int(job_->tiles.size());
+}
+
+trace::TileResult WorkerTracer::traceTile(int index) const {
+    if (!job_ || index < 0 || index >= int(job_->tiles.size())) throw std::out_of_range("no such tile");
+    trace::TileResult out;
+    job_->render(index, out);
+    return out;
+}
+
+void WorkerTracer::startGlobal(int width, int height) {
+    path_ = std::make_unique<trace::PathRender>(
+        scene_, render::toPath(requestOf(render::Engine::Path, width, height), scene_->scene()));
+}
+
+void WorkerTracer::addGlobalSamples(int count) {
+    if (path_) path_->addSamples(count);
+}
+
+ImageF WorkerTracer::globalImage() const { return path_ ? path_->image() : ImageF(); }
+
+}  // namespace shadelab::web

@@ -1,0 +1,45 @@
+// WorkerTracer: what one of the page's Web Workers traces. The page has no threads (they would need
+// SharedArrayBuffer, and so COOP/COEP headers a plain static server does not send), so the tracers run in
+// workers, each with its own copy of the module: a worker rebuilds the page's scene from its saved JSON (parse
+// of save is the same scene, field by field) and renders the tiles it is handed. Every worker builds the same
+// TraceJob from the same request, so the assembled image is the bytes `shadelab render --renderer trace`
+// writes. The Global view's path tracer runs here too, a pass of samples at a time.
+#pragma once
+
+#include "trace/path/path_render.h"
+#include "trace/tile_renderer.h"
+#include "trace/trace_job.h"
+#include "trace/trace_scene.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace shadelab::web {
+
+class WorkerTracer {
+public:
+    // `sceneJson` as PageLab::sceneJson() writes it; `baseDir` the folder its models' relative paths start
+    // from. Throws InputError naming the scene and the problem.
+    WorkerTracer(const std::string& sceneJson, const std::string& baseDir);
+
+    // The Whitted reference of a width x height request (render::RenderRequest, Engine::Trace, with coverage):
+    // sets up the job and returns how many tiles it has.
+    int startReference(int width, int height);
+    // Renders tile `index` of the job.
+    trace::TileResult traceTile(int index) const;
+
+    // The path tracer's progressive image at width x height (the scene's depth, the request's defaults);
+    // addSamples adds `count` samples to every pixel, image() is the running mean, linear RGBA.
+    void startGlobal(int width, int height);
+    void addGlobalSamples(int count);
+    int globalSamples() const { return path_ ? path_->samples() : 0; }
+    ImageF globalImage() const;
+
+private:
+    std::shared_ptr<const trace::TraceScene> scene_;
+    std::unique_ptr<trace::TraceJob> job_;
+    std::unique_ptr<trace::PathRender> path_;
+};
+
+}  // namespace shadelab::web
