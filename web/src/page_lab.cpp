@@ -72,9 +72,9 @@ std::string PageLab::open(const std::string& path) {
             loadScene(path, WarningCapture::warn, GltfImportOptions{}, MemoryLimit{kPageLoadBytes, "the page"});
         if (scene.lights.size() > size_t(kMaxLights))
             throw InputError(path, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");
-        const app::ViewMode mode = state_.mode;
-        state_ = app::makeViewerState(std::move(scene), path);
-        state_.mode = mode;
+        // As the viewer's Open: camera, selection and probe reset, the view mode kept, the geometry revision
+        // bumped (so the rasterizer uploads the new meshes).
+        app::openScene(state_, std::move(scene), path);
         state_.loadWarnings = warnings.lines();
         if (objectCount(state_.scene) > 0) app::select(state_, 1);
         return "";

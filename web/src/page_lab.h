@@ -41,9 +41,10 @@ public:
     // what a worker needs to rebuild the same scene.
     std::string sceneJson() const;
     std::string sceneDir() const;
-    // The edit counter the reference depends on: a worker's tiles for an older revision are dropped.
-    uint64_t referenceRevision() const { return state_.referenceRevision; }
-    uint64_t revision() const { return state_.revision; }
+    // The edit counter the reference depends on: a reference traced at another revision is stale. A double
+    // for JavaScript (embind has no 64-bit integers here), exact to 2^53 edits.
+    double referenceRevision() const { return double(state_.referenceRevision); }
+    double revision() const { return double(state_.revision); }
 
     // The rasterizer's picture at width x height: `shadelab render --renderer raster` of the same scene, as RGBA
     // bytes (alpha 255), row 0 at the top. Its coverage ids are kept for picking and for the comparison.
