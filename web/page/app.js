@@ -16,6 +16,7 @@
   let globalJob = null;         // {workers, image, samples}
   let workers = [];
   let job = 0;
+  const uploads = new Map();    // path -> bytes of the files opened from disk, which the workers need too
 
   function setMessage(line) { message = line || ''; $('message').textContent = message; }
   function state() { return JSON.parse(lab.stateJson()); }
@@ -32,6 +33,11 @@
     rasterImage = imageOf(bytes);
   }
 
+  // What a worker needs to rebuild the scene: its JSON, its folder, and the files opened from disk.
+  function sceneMessage() {
+    return { sceneJson: lab.sceneJson(), sceneDir: lab.sceneDir(), files: [...uploads].map(([path, bytes]) => ({ path, bytes })) };
+  }
+
   function stopWorkers() { workers.forEach((w) => w.terminate()); workers = []; }
 
   // The Whitted reference of the scene as it is now, traced by the workers over tiles.
@@ -39,7 +45,7 @@
     stopWorkers();
     const id = ++job, w = width, h = height;
     const rgba = new Float32Array(w * h * 4), coverage = new Uint32Array(w * h);
-    const msg = { kind: 'reference', job: id, sceneJson: lab.sceneJson(), sceneDir: lab.sceneDir(), width: w, height: h };
+    const msg = { kind: 'reference', job: id, ...sceneMessage(), width: w, height: h };
     let count = -1, arrived = 0;
     const r = { revision: lab.referenceRevision(), width: w, height: h, image: null };
     r.done = new Promise((resolve, reject) => {
@@ -91,7 +97,7 @@
       $('progress').textContent = `path traced: ${m.samples} samples per pixel`;
       show();
     };
-    worker.postMessage({ kind: 'global', job: id, sceneJson: lab.sceneJson(), sceneDir: lab.sceneDir(), width: w, height: h, samples: 4096 });
+    worker.postMessage({ kind: 'global', job: id, ...sceneMessage(), width: w, height: h, samples: 4096 });
     workers.push(worker);
   }
 
@@ -187,6 +193,8 @@
     try { M.FS.mkdir(dir); } catch (e) { /* exists */ }
     const path = dir + '/' + file.name.replace(/[\/\0]/g, '_');
     M.FS.writeFile(path, bytes);
+    uploads.set(path, bytes);
+    $('scene').value = '';  // no shipped scene is shown now
     const error = lab.open(path);
     setMessage(error || warningLine());
     reference = null;

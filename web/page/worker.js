@@ -5,6 +5,11 @@ importScripts('shadelab.js');
 const modulePromise = createShadelab();
 
 function withTracer(M, msg) {
+  // The files the user opened in the page, at the same paths in this worker's file system.
+  for (const f of msg.files || []) {
+    try { M.FS.mkdir(f.path.slice(0, f.path.lastIndexOf('/'))); } catch (e) { /* exists */ }
+    M.FS.writeFile(f.path, f.bytes);
+  }
   const tracer = M.createTracer(msg.sceneJson, msg.sceneDir);
   if (!tracer) throw new Error(M.createError());
   return tracer;
