@@ -197,8 +197,10 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         }
         setMaterial(planeProgram, p.material, planeCoverageId(scene, i), frame.flags.x, scene.normalized);
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
-        planeProgram.set("u_planeT", t, gl::Program::Uniform::Required);
-        planeProgram.set("u_planeB", b, gl::Program::Uniform::Required);
+        // The tangent basis picks the checker's tiles only: where the shaded colour does not depend on the tile
+        // (a variant that ignores md and the base colour), the compiler removes both, so they are optional.
+        planeProgram.set("u_planeT", t);
+        planeProgram.set("u_planeB", b);
         planeProgram.set("u_planeNormal", p.normal, gl::Program::Uniform::Required);
         planeProgram.set("u_planeOffset", p.offset, gl::Program::Uniform::Required);
         planeProgram.set("u_checker", p.checker ? 1 : 0);
