@@ -12,6 +12,7 @@
   let M = null, lab = null;
   let width = 960, height = 540, mode = 'raster', message = '', split = 0.5;
   let rasterImage = null;       // ImageData of the last raster picture
+  let rasterRevision = -1;      // lab.revision() it was drawn at
   let reference = null;         // {revision, width, height, image, done: Promise}
   let globalJob = null;         // {workers, image, samples}
   let workers = [];
@@ -139,8 +140,14 @@
     if (pending) return pending;
     pending = new Promise((resolve) => requestAnimationFrame(() => {
       pending = null;
-      globalJob = null;
-      renderRaster();
+      // Only a change a renderer sees (lab.revision(), which every edit, camera move and load bumps) or a new
+      // size draws again and restarts the path tracer; asking for the picture again draws nothing.
+      const revision = lab.revision();
+      if (!rasterImage || revision !== rasterRevision || rasterImage.width !== width || rasterImage.height !== height) {
+        globalJob = null;
+        renderRaster();
+        rasterRevision = revision;
+      }
       show();
       updateControls();
       resolve();
