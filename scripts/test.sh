@@ -7,16 +7,18 @@
 #   2. a headless build of the shadelab binary alone with SHADELAB_BUILD_VIEWER=OFF (build-headless/): it must
 #      render, must say it has no viewer, and must link neither GLFW nor Dear ImGui (ldd, and nm for the static
 #      libimgui.a), checked against build/shadelab, which must show both, so that the check cannot go blind;
-#   3. the Release build in build/, last, so the run ends in ctest's summary line.
-# SHADELAB_SKIP_SANITIZERS=1 skips step 1 for a quicker local run; CI always runs all three.
+#   3. the web page (scripts/web.sh --build-only: emscripten into build-web/page/), which the Release suite's
+#      web_page test drives in headless Chromium;
+#   4. the Release build in build/, last, so the run ends in ctest's summary line.
+# SHADELAB_SKIP_SANITIZERS=1 skips step 1 for a quicker local run; CI always runs all four.
 # Every build here is configured with SHADELAB_WERROR=ON: a warning in shadelab's own code fails the run (third-party
 # headers are SYSTEM includes and do not count). scripts/build.sh alone leaves it off for users' builds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
-scripts/install-deps.sh
+scripts/install-deps.sh --with-web
 scripts/check-format.sh  # before any build, so that a formatting slip fails in seconds
-scripts/build.sh -DSHADELAB_WERROR=ON
+scripts/build.sh -DSHADELAB_WERROR=ON -DSHADELAB_WEB_TESTS=ON
 
 # What of GLFW and Dear ImGui binary $1 carries: shared libraries (ldd) and linked-in symbols (nm).
 viewer_libs() {
@@ -61,6 +63,9 @@ if [[ $view_code != 1 ]] || ! grep -q "this build has no viewer" "$headless_tmp/
 fi
 echo "headless build: renders, 'view' says it has none, links neither GLFW nor ImGui:"
 ldd build-headless/shadelab | sed 's/^/  /'
+
+echo "== the web page (build-web/page/)"
+scripts/web.sh --build-only -DSHADELAB_WERROR=ON
 
 echo "== test suite (build/)"
 cd build

@@ -452,6 +452,66 @@ TEST(CliCompare, ErrorsExitTwo) {
     EXPECT_EQ(run("compare " + a + " " + a + " --threshold 300").code, 2);
 }
 
+// render --coverage writes the ids beside the image; compare --coverage-a/-b then puts silhouette pixels in the
+// band. A picture spoiled only on silhouettes passes with coverage and fails without it; spoiled on one
+// interior pixel, it fails with coverage too (the negative control).
+TEST(CliCompare, CoverageFilesMakeSilhouettesTheBand) {
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    const std::string a = test::outputPath("cov_a.png"), ca = test::outputPath("cov_a-coverage.png");
+    ASSERT_EQ(run("render " + scene + " -o " + a + " --size 160x90 --coverage " + ca).code, 0);
+    const Image8 image = readPng(a), ids = readPng(ca);
+    ASSERT_EQ(ids.width, 160);
+    auto id = [&](int x, int y) {
+        const uint8_t* p = ids.pixel(std::clamp(x, 0, 159), std::clamp(y, 0, 89));
+        return p[0] | p[1] << 8 | p[2] << 16;
+    };
+    Image8 edges = image, inside = image;
+    int silhouettes = 0;
+    bool spoiledInside = false;
+    for (int y = 0; y < 90; ++y)
+        for (int x = 0; x < 160; ++x) {
+            bool edge = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) edge |= id(x + dx, y + dy) != id(x, y);
+            uint8_t* p = &(edge ? edges : inside).data[(size_t(y) * 160 + size_t(x)) * size_t(image.channels)];
+            if (edge && (x + y) % 4 == 0) {
+                p[0] = uint8_t(255 - p[0]);
+                ++silhouettes;
+            } else if (!edge && !spoiledInside && id(x, y) != 0 && x > 80) {
+                p[0] = uint8_t(255 - p[0]);
+                spoiledInside = true;
+            }
+        }
+    ASSERT_GT(silhouettes, 50);
+    ASSERT_TRUE(spoiledInside);
+    const std::string b = test::outputPath("cov_b.png"), c = test::outputPath("cov_c.png");
+    writePng(b, edges);
+    writePng(c, inside);
+    const std::string coverage = " --coverage-a " + ca + " --coverage-b " + ca;
+    Result banded = run("compare " + a + " " + b + coverage);
+    EXPECT_EQ(banded.code, 0) << banded.out;
+    EXPECT_NE(banded.out.find("band"), std::string::npos) << banded.out;
+    Result plain = run("compare " + a + " " + b);
+    EXPECT_EQ(plain.code, 1) << "without coverage the silhouettes are interior pixels: " << plain.out;
+    Result interior = run("compare " + a + " " + c + coverage);
+    EXPECT_EQ(interior.code, 1) << interior.out;
+
+    // Usage and input errors: one coverage alone, a coverage of the wrong size, --coverage where none is kept.
+    Result alone = run("compare " + a + " " + b + " --coverage-a " + ca);
+    EXPECT_EQ(alone.code, 2) << alone.out;
+    EXPECT_NE(alone.out.find("--coverage-a: needs --coverage-b"), std::string::npos) << alone.out;
+    const std::string small = test::outputPath("cov_small.png");
+    ASSERT_EQ(
+        run("render " + scene + " -o " + test::outputPath("cov_s.png") + " --size 80x45 --coverage " + small).code, 0);
+    Result sized = run("compare " + a + " " + b + " --coverage-a " + ca + " --coverage-b " + small);
+    EXPECT_EQ(sized.code, 2) << sized.out;
+    EXPECT_NE(sized.out.find("coverage is 80x45"), std::string::npos) << sized.out;
+    Result path = run("render " + scene + " -o " + c + " --renderer path --coverage " + small);
+    EXPECT_EQ(path.code, 2) << path.out;
+    Result self = run("render " + scene + " -o " + a + " --coverage " + a);
+    EXPECT_EQ(self.code, 2) << self.out;
+}
+
 // A broken or missing shader: one line that names the shader file (and line for a compile error).
 TEST(CliShaders, BrokenOrMissingShaderNamesFileAndLine) {
     std::string dir = test::outputPath("shaders_broken");

@@ -5,6 +5,7 @@
 
 #include "cli/args.h"
 #include "compare/compare_report.h"
+#include "compare/coverage_image.h"
 #include "compare/image_compare.h"
 #include "compare/linear_compare.h"
 #include "image/exr.h"
@@ -28,7 +29,9 @@ const char* const kCompareHelp =
     "\n"
     "Compares two images of the same size under the gates of design.md §4 and prints the metrics: mean,\n"
     "RMS and maximum difference (with its position and channel) and the fraction of pixels over the\n"
-    "threshold. Differences are in 8-bit units. Without coverage data every pixel counts as interior.\n"
+    "threshold. Differences are in 8-bit units. Without coverage data every pixel counts as interior; with\n"
+    "the two images' coverage (`shadelab render --coverage`), pixels on a silhouette form the band, which\n"
+    "only the coverage gate judges, as the renderers' own comparisons do.\n"
     "Two OpenEXR files are compared in linear light instead, by relative differences: per pixel the largest\n"
     "over R, G, B of |a-b| / (max(|a|,|b|) + floor), and the relative RMSE. A .png and an .exr cannot be\n"
     "compared with each other.\n"
@@ -38,6 +41,8 @@ const char* const kCompareHelp =
     "  --json PATH              write the full report as JSON; - for stdout\n"
     "  --max-fraction F         fraction of pixels allowed over the threshold (default 0.001)\n"
     "  --gain G                 heatmap amplification (default 16)\n"
+    "  --coverage-a PATH        a.png's coverage ids (PNG from `shadelab render --coverage`); needs\n"
+    "  --coverage-b PATH        both, each the size of its image; PNG comparisons only\n"
     "PNG gates (8-bit units):\n"
     "  --threshold T            a pixel is over when any channel differs by more than T (default 3)\n"
     "  --hard-max M             no channel may differ by more than M (default 16)\n"
@@ -65,13 +70,23 @@ double parseDouble(const std::string& name, const std::string& v, double lo, dou
     return d;
 }
 
+// A coverage PNG, its header checked against its image's size before it is decoded.
+std::vector<uint32_t> readCoverage(const std::string& path, const PngFile& image) {
+    const PngFile file = readPngFile(path);
+    if (file.width != image.width || file.height != image.height)
+        throw InputError(path, "coverage is " + std::to_string(file.width) + "x" + std::to_string(file.height) +
+                                   ", its image " + image.path + " is " + std::to_string(image.width) + "x" +
+                                   std::to_string(image.height));
+    return coverageFromImage(decodePng(file), path);
+}
+
 }  // namespace
 
 int compareCommand(int argc, char** argv) {
     try {
         Args args(argc, argv, 2,
                   {"--diff", "--json", "--threshold", "--max-fraction", "--hard-max", "--max-mean", "--gain",
-                   "--rel-threshold", "--rel-hard-max", "--max-rel-rmse", "--floor"},
+                   "--rel-threshold", "--rel-hard-max", "--max-rel-rmse", "--floor", "--coverage-a", "--coverage-b"},
                   {"-h", "--help", "-q", "--quiet"});
         if (args.flag("-h") || args.flag("--help")) {
             std::fputs(kCompareHelp, stdout);
@@ -94,6 +109,12 @@ int compareCommand(int argc, char** argv) {
                     std::string(flag) + ": " +
                     (exr ? "an 8-bit gate; two .exr files are compared in " + std::string("linear light (see --help)")
                          : "a linear-light gate, only for two .exr files"));
+        const std::optional<std::string> coverageA = args.value("--coverage-a"), coverageB = args.value("--coverage-b");
+        if (coverageA.has_value() != coverageB.has_value())
+            throw UsageError(std::string(coverageA ? "--coverage-a" : "--coverage-b") + ": needs " +
+                             (coverageA ? "--coverage-b" : "--coverage-a") +
+                             " too (the band is both images' silhouettes)");
+        if (coverageA && exr) throw UsageError("--coverage-a: only for two .png files");
         CompareGates gates;
         if (auto v = args.value("--threshold")) gates.threshold = parseInt("--threshold", *v, 0, 255);
         if (auto v = args.value("--max-fraction")) gates.maxFractionOver = parseDouble("--max-fraction", *v, 0, 1);
@@ -113,8 +134,10 @@ int compareCommand(int argc, char** argv) {
         if (diffPath && jsonPath && isStdout(*diffPath) && isStdout(*jsonPath))
             throw UsageError("--diff and --json cannot both write to stdout");
         // Before reading anything: an output must not replace either image (nor be a device, a FIFO, ...).
-        if (diffPath) checkOutput(*diffPath, "--diff", {pathA, pathB});
-        if (jsonPath) checkOutput(*jsonPath, "--json", {pathA, pathB});
+        std::vector<std::string> inputs = {pathA, pathB};
+        if (coverageA) inputs.insert(inputs.end(), {*coverageA, *coverageB});
+        if (diffPath) checkOutput(*diffPath, "--diff", inputs);
+        if (jsonPath) checkOutput(*jsonPath, "--json", inputs);
         // With an output on stdout, stdout carries only that output.
         FILE* summary = (diffPath && isStdout(*diffPath)) || (jsonPath && isStdout(*jsonPath)) ? stderr : stdout;
 
@@ -147,9 +170,15 @@ int compareCommand(int argc, char** argv) {
                                         std::to_string(fileA.height) + " (" + pathA + ") vs " +
                                         std::to_string(fileB.width) + "x" + std::to_string(fileB.height));
         Image8 a = decodePng(fileA), b = decodePng(fileB);
-        CompareResult r = compareImages(a, b, gates);
+        std::vector<uint32_t> idsA, idsB;
+        if (coverageA) {
+            idsA = readCoverage(*coverageA, fileA);
+            idsB = readCoverage(*coverageB, fileB);
+        }
+        CompareResult r = coverageA ? compareImages(a, b, idsA, idsB, gates) : compareImages(a, b, gates);
         if (diffPath) {
-            const std::vector<uint8_t> png = encodePng(diffHeatmap(a, b, gain));
+            const std::vector<uint8_t> png =
+                encodePng(coverageA ? diffHeatmap(a, b, r.bandMask, gain) : diffHeatmap(a, b, gain));
             writeOutput(*diffPath, png.data(), png.size());
         }
         if (jsonPath) {

@@ -8,6 +8,7 @@
 #include "cli/stage_timer.h"
 #include "compare/compare_report.h"
 #include "compare/comparison.h"
+#include "compare/coverage_image.h"
 #include "compare/difference_sites.h"
 #include "compare/image_compare.h"
 #include "gl/headless_context.h"
@@ -167,6 +168,7 @@ int render(const RenderOptions& o, std::string& doing) {
     doing = "rendering";
     timer.stage(needRaster ? "scene load (beyond context creation)" : "scene load");
     refuseInputAsOutput(o.output, "-o", scene.inputs.paths());
+    if (!o.coverage.empty()) refuseInputAsOutput(o.coverage, "--coverage", scene.inputs.paths());
     // The format is the output's extension. Checked after the input refusals, so that an output naming an input
     // (scene.json, a model's .bin) is reported as that, whatever its extension.
     const OutputFormat format = outputFormat(o);
@@ -189,6 +191,7 @@ int render(const RenderOptions& o, std::string& doing) {
     const bool exr = format == OutputFormat::Exr;
     const DisplaySettings display = render::displayOf(request, scene);
     Image8 output;    // the PNG's pixels
+    Image8 coverage;  // --coverage: the ids as pixels
     ExrImage linear;  // the EXR's layers: the colour before conversion (--renderer both: the raster's, and
                       // the reference's as layer "trace")
     auto keep = [&](Frame& f, const char* layer) {
@@ -215,11 +218,13 @@ int render(const RenderOptions& o, std::string& doing) {
         report("raster", f.rendered);
         keep(f, "");
         output = std::move(f.rendered.pixels);
+        if (!o.coverage.empty()) coverage = coverageToImage(f.rendered.coverage, output.width, output.height);
     } else if (request.engine == render::Engine::Trace) {
         Frame f = traceReference(scene, request, display, exr, timer);
         report("trace", f.rendered);
         keep(f, "");
         output = std::move(f.rendered.pixels);
+        if (!o.coverage.empty()) coverage = coverageToImage(f.rendered.coverage, output.width, output.height);
     } else if (request.engine == render::Engine::Path) {
         Frame f = pathTrace(scene, request, exr, timer);
         report("path", f.rendered);
@@ -268,6 +273,11 @@ int render(const RenderOptions& o, std::string& doing) {
         writeOutput(o.output, png.data(), png.size());
         written = png.size();
     }
+    if (!o.coverage.empty()) {
+        doing = "encoding the coverage PNG";
+        const std::vector<uint8_t> png = encodePng(coverage);
+        writeOutput(o.coverage, png.data(), png.size());
+    }
     timer.stage("write");
 
     if (o.timings) timer.print(stderr);
@@ -292,6 +302,7 @@ int renderCommand(int argc, char** argv) {
     }
     // Before any work: a render that cannot be written, or would replace its own scene, is refused now.
     checkOutput(o.output, "-o", {o.input});
+    if (!o.coverage.empty()) checkOutput(o.coverage, "--coverage", {o.input});
 
     // std::bad_alloc names no file and no stage; say both (an allocation the budget did not foresee).
     std::string doing = "loading the scene";

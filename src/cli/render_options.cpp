@@ -27,6 +27,9 @@ const char* const kHelpHead =
     "  -o, --output PATH          image to write (required): .png, or .exr for linear OpenEXR; written\n"
     "                             atomically; - for a PNG on stdout. Refused when it is the scene or a file\n"
     "                             the scene loads, or exists and is not a regular file\n"
+    "  --coverage PATH            also write which object each pixel shows (design.md §4) as a PNG: the id\n"
+    "                             in R + 256 G + 65536 B, 0 the background; raster or trace only. `shadelab\n"
+    "                             compare --coverage-a/--coverage-b` then gates silhouettes as the tests do\n"
     "  --exr-precision NAME       .exr output: float (default, 32-bit, exact) | half (16-bit, 11 bits)\n"
     "  --passes                   .exr output: also the layers albedo (R G B), normal (X Y Z) and depth (Z)\n"
     "                             of the first hit at each pixel centre; path: variance (Y) of each\n"
@@ -142,6 +145,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         "--camera",     "--time-limit",    "--estimator", "--light-paths", "--exr-precision", "--sampler",
         "--exposure",   "--view-transform"};
     valued.emplace_back("--seed");
+    valued.emplace_back("--coverage");
     std::vector<std::string> flags = {"-h",       "--help",   "--verbose", "--timings", "--allow-external-paths",
                                       "--strict", "--passes", "--denoise"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
@@ -160,6 +164,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("-o")) o.output = *v;
     if (auto v = args.value("--output")) o.output = *v;
     if (o.output.empty()) throw UsageError("render needs -o out.png");
+    if (auto v = args.value("--coverage")) o.coverage = *v;
     render::RenderRequest& r = o.request;
     if (auto v = args.value("--size")) std::tie(r.width, r.height) = parseSize(*v);
     if (auto v = args.value("--max-memory")) {
@@ -187,6 +192,15 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (auto v = args.value("--seed")) r.path.seed = parseSeed(*v);
     if (auto v = args.value("--threads")) r.threads = parseWhole("--threads", *v);
     if (auto v = args.value("--depth")) r.depth = parseWhole("--depth", *v);
+    if (!o.coverage.empty()) {
+        if (r.engine != render::Engine::Raster && r.engine != render::Engine::Trace)
+            throw UsageError(
+                "--coverage: only with --renderer raster or trace (the path tracer keeps no coverage, "
+                "and both would write two)");
+        if (isStdout(o.coverage)) throw UsageError("--coverage: needs a file name (stdout carries the image)");
+        if (o.coverage == o.output) throw UsageError("--coverage: '" + o.coverage + "' is also the -o image");
+        r.coverage = true;
+    }
     // The ranges are the request's, as every front end holds them; only the words are the command line's.
     if (std::optional<render::RequestProblem> p = render::check(r))
         throw UsageError(flagOf(p->field) + ": " + p->reason);

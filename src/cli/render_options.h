@@ -15,8 +15,9 @@
 namespace shadelab::cli {
 
 struct RenderOptions {
-    std::string input;   // scene.json, model.gltf or model.glb
-    std::string output;  // the image to write: .png, .exr (outputFormat), or - for a PNG on stdout
+    std::string input;     // scene.json, model.gltf or model.glb
+    std::string output;    // the image to write: .png, .exr (outputFormat), or - for a PNG on stdout
+    std::string coverage;  // --coverage: the coverage ids as a PNG (compare/coverage_image.h); "" for none
     // --renderer, --size, --spp, --depth, --threads, --encoding, the path tracer's --time-limit, --estimator
     // and --light-paths, and --max-memory: the render itself, checked as every front end checks it
     // (render/render_request.h).

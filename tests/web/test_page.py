@@ -58,27 +58,39 @@ def page_dir():
 _native_cache = {}
 
 
+def coverage_of(image):
+    """Where an image's coverage ids are kept (compare/coverage_image.h): beside it, `<stem>-coverage.png`."""
+    image = Path(image)
+    return image.with_name(image.stem + "-coverage.png")
+
+
 def native_render(binary, scene, renderer, out, size=SIZE):
-    """`shadelab render SCENE --renderer R --size WxH -o out`, once per scene file content and renderer."""
+    """`shadelab render SCENE --renderer R --size WxH -o out --coverage`, once per scene file content and
+    renderer; the coverage ids go to coverage_of(out)."""
     scene = Path(scene)
     key = (scene.read_bytes(), str(scene.parent), renderer, size)
     if key not in _native_cache:
         folder = evidence_folder(f"native-renders/{len(_native_cache)}")
         target = folder / f"{scene.stem}-{renderer}.png"
         args = [str(binary), "render", str(scene), "--renderer", renderer, "--size", f"{size[0]}x{size[1]}", "-o",
-                str(target)]
+                str(target), "--coverage", str(coverage_of(target))]
         p = subprocess.run(args, capture_output=True, text=True, timeout=300)
         (folder / "command.txt").write_text(" ".join(args) + f"\nexit {p.returncode}\n{p.stdout}{p.stderr}")
         assert p.returncode == 0, f"{' '.join(args)} exited {p.returncode}: {p.stderr}"
         _native_cache[key] = target
     shutil.copyfile(_native_cache[key], out)
+    shutil.copyfile(coverage_of(_native_cache[key]), coverage_of(out))
     return Path(out)
 
 
 def compare_gates(binary, a, b, evidence, name):
-    """`shadelab compare a b` under the default gates of design.md §4; returns (passed, summary). Leaves the
-    heatmap and the JSON report in the evidence folder."""
-    args = [str(binary), "compare", str(a), str(b), "--diff", str(evidence / f"{name}-heat.png"), "--json",
+    """`shadelab compare a b` under the default gates of design.md §4, with both images' coverage ids
+    (coverage_of), so silhouette pixels form the band as in the renderers' own comparisons; returns (passed,
+    summary). Leaves the heatmap and the JSON report in the evidence folder."""
+    for image in (a, b):
+        assert coverage_of(image).is_file(), f"{image}: no coverage beside it ({coverage_of(image).name})"
+    args = [str(binary), "compare", str(a), str(b), "--coverage-a", str(coverage_of(a)), "--coverage-b",
+            str(coverage_of(b)), "--diff", str(evidence / f"{name}-heat.png"), "--json",
             str(evidence / f"{name}-report.json")]
     p = subprocess.run(args, capture_output=True, text=True, timeout=60)
     summary = (p.stdout + p.stderr).strip()
@@ -121,11 +133,18 @@ class App:
         self.js(f"shadelab.loadScene({json.dumps(name)})")
         self.js(f"shadelab.setSize({size[0]}, {size[1]})")
 
-    def image(self, which, path):
-        url = self.js(f"shadelab.imageDataUrl({json.dumps(which)})")
+    def _png(self, call, path):
+        url = self.js(call)
         prefix = "data:image/png;base64,"
-        assert isinstance(url, str) and url.startswith(prefix), f"imageDataUrl('{which}') gave {str(url)[:60]!r}"
+        assert isinstance(url, str) and url.startswith(prefix), f"{call} gave {str(url)[:60]!r}"
         Path(path).write_bytes(base64.b64decode(url[len(prefix):]))
+        return Path(path)
+
+    def image(self, which, path):
+        """The page's picture; for the raster, its coverage ids too, at coverage_of(path)."""
+        self._png(f"shadelab.imageDataUrl({json.dumps(which)})", path)
+        if which == "raster":
+            self._png("shadelab.coverageDataUrl('raster')", coverage_of(path))
         return Path(path)
 
     def export(self, path):

@@ -14,9 +14,8 @@
   let rasterImage = null;       // ImageData of the last raster picture
   let rasterRevision = -1;      // lab.revision() it was drawn at
   let reference = null;         // {revision, width, height, image, done: Promise}
-  let globalJob = null;         // {workers, image, samples}
-  let workers = [];
-  let job = 0;
+  let globalJob = null;         // {image, samples}
+  let pool = null;              // the tracers' workers (tracer_pool.js)
   const uploads = new Map();    // path -> bytes of the files opened from disk, which the workers need too
 
   function setMessage(line) { message = line || ''; $('message').textContent = message; }
@@ -28,10 +27,17 @@
   }
 
   // --- pictures -------------------------------------------------------------------------------------------
+  // What the benchmarks read (bench/web_page.py): milliseconds since navigation to the first picture, of the
+  // last raster frame (draw, readback, ImageData) and of the last complete reference (scene sent to the workers,
+  // tiles traced and assembled, encoded).
+  const timings = { firstPictureMs: null, rasterMs: null, referenceMs: null };
+
   function renderRaster() {
+    const t0 = performance.now();
     const bytes = lab.renderRaster(width, height);
     if (typeof bytes === 'string') { setMessage(bytes); return; }
     rasterImage = imageOf(bytes);
+    timings.rasterMs = performance.now() - t0;
   }
 
   // What a worker needs to rebuild the scene: its JSON, its folder, and the files opened from disk.
@@ -39,67 +45,39 @@
     return { sceneJson: lab.sceneJson(), sceneDir: lab.sceneDir(), files: [...uploads].map(([path, bytes]) => ({ path, bytes })) };
   }
 
-  function stopWorkers() { workers.forEach((w) => w.terminate()); workers = []; }
-
-  // The Whitted reference of the scene as it is now, traced by the workers over tiles.
+  // The Whitted reference of the scene as it is now, traced by the pool's workers over tiles.
   function startReference() {
-    stopWorkers();
-    const id = ++job, w = width, h = height;
-    const rgba = new Float32Array(w * h * 4), coverage = new Uint32Array(w * h);
-    const msg = { kind: 'reference', job: id, ...sceneMessage(), width: w, height: h };
-    let count = -1, arrived = 0;
+    const w = width, h = height, t0 = performance.now();
     const r = { revision: lab.referenceRevision(), width: w, height: h, image: null };
-    r.done = new Promise((resolve, reject) => {
-      for (let k = 0; k < WORKERS; ++k) {
-        const worker = new Worker('worker.js');
-        worker.onmessage = (e) => {
-          const m = e.data;
-          if (m.job !== id) return;
-          if (m.kind === 'error') { setMessage(m.error); reject(new Error(m.error)); return; }
-          if (m.kind === 'count') { count = m.count; return; }
-          const t = m.tile;
-          for (let y = 0; y < t.height; ++y) {
-            rgba.set(t.rgba.subarray(y * t.width * 4, (y + 1) * t.width * 4), ((t.y0 + y) * w + t.x0) * 4);
-            coverage.set(t.coverage.subarray(y * t.width, (y + 1) * t.width), (t.y0 + y) * w + t.x0);
-          }
-          ++arrived;
-          $('progress').textContent = `reference ${Math.round(100 * arrived / count)} %`;
-          if (arrived === count) {
-            const bytes = lab.setReference(rgba, coverage, w, h);
-            if (typeof bytes === 'string') { setMessage(bytes); reject(new Error(bytes)); return; }
-            r.image = imageOf(bytes);
-            $('progress').textContent = '';
-            stopWorkers();
-            resolve(r.image);
-            show();
-          }
-        };
-        worker.postMessage({ ...msg, first: k, step: WORKERS });
-        workers.push(worker);
-      }
+    r.done = pool.reference(sceneMessage(), w, h, (f) => { $('progress').textContent = `reference ${Math.round(100 * f)} %`; })
+      .then(({ rgba, coverage }) => {
+        $('progress').textContent = '';
+        const bytes = lab.setReference(rgba, coverage, w, h);
+        if (typeof bytes === 'string') throw new Error(bytes);
+        r.image = imageOf(bytes);
+        timings.referenceMs = performance.now() - t0;
+        if (reference === r) show();
+        return r.image;
+      });
+    r.done.catch((e) => {
+      if (reference === r) reference = null;  // traced again when next shown
+      if (e.message !== 'cancelled') setMessage(e.message);
     });
-    r.done.catch(() => {});
     reference = r;
   }
 
   function startGlobal() {
-    stopWorkers();
-    const id = ++job, w = width, h = height;
-    const worker = new Worker('worker.js');
-    globalJob = { image: null, samples: 0 };
-    worker.onmessage = (e) => {
-      const m = e.data;
-      if (m.job !== id) return;
-      if (m.kind === 'error') { setMessage(m.error); return; }
+    const w = width, h = height;
+    const job = { image: null, samples: 0 };
+    globalJob = job;
+    pool.global(sceneMessage(), w, h, (m) => {
       const bytes = lab.encodeGlobal(m.rgba, w, h);
       if (typeof bytes === 'string') { setMessage(bytes); return; }
-      globalJob.image = imageOf(bytes);
-      globalJob.samples = m.samples;
+      job.image = imageOf(bytes);
+      job.samples = m.samples;
       $('progress').textContent = `path traced: ${m.samples} samples per pixel`;
-      show();
-    };
-    worker.postMessage({ kind: 'global', job: id, ...sceneMessage(), width: w, height: h, samples: 4096 });
-    workers.push(worker);
+      if (globalJob === job) show();
+    }, (e) => setMessage(e.message));
   }
 
   function referenceCurrent() {
@@ -110,6 +88,7 @@
   function show() {
     if (!rasterImage) return;
     $('difference-text').textContent = '';
+    if (mode !== 'global' && pool.running() === 'global') { pool.stop(); globalJob = null; }  // nobody watches it
     if (mode === 'raster') { ctx2d.putImageData(rasterImage, 0, 0); return; }
     if (mode === 'global') {
       if (!globalJob) startGlobal();
@@ -297,17 +276,32 @@
       if (!referenceCurrent()) startReference();
       return pngOf(await reference.done);
     },
+    async coverageDataUrl(which) {
+      if (which !== 'raster') throw new Error(`coverageDataUrl: "${which}" is not raster`);
+      await redraw();
+      return pngOf(imageOf(lab.rasterCoverageImage()));
+    },
     exportScene() { return lab.sceneJson(); },
+    timings() { return { ...timings }; },
     message() { return message; },
   };
   window.shadelab = api;
 
   api.ready = (async () => {
-    M = await createShadelab();
+    // The wasm is compiled once here and handed to the workers, which would otherwise compile it again each.
+    const wasm = await WebAssembly.compileStreaming(fetch('shadelab.wasm'));
+    M = await createShadelab({
+      instantiateWasm(imports, success) {
+        WebAssembly.instantiate(wasm, imports).then((instance) => success(instance, wasm));
+        return {};
+      },
+    });
+    pool = new TracerPool(WORKERS, wasm);
     lab = M.createLab('#gl');
     if (!lab) { const e = M.createError(); setMessage(e); throw new Error(e); }
     wire();
     await loadScene('default.json');
+    timings.firstPictureMs = performance.now();  // performance.now() counts from navigation
   })();
   api.ready.catch((e) => setMessage(String(e.message || e)));
 })();

@@ -1,8 +1,22 @@
-// One of the page's tracers: a copy of the lab's module in a Web Worker, tracing the tiles it is given of the
-// scene the page sends (its saved JSON). No lighting here: the C++ (web/src/worker_tracer.h) does all of it.
+// One of the page's tracers (tracer_pool.js): a copy of the lab's module in a Web Worker, instantiated once
+// from the wasm the page compiled, tracing the tiles it is handed of the scene the page sends (its saved JSON).
+// No lighting here: the C++ (web/src/worker_tracer.h) does all of it.
 'use strict';
 importScripts('shadelab.js');
-const modulePromise = createShadelab();
+let modulePromise = null;
+let current = null;  // {job, tracer}: the job this worker has set up, the only one it works for
+
+// The module, from the page's compiled wasm when it sent one (else this worker compiles its own).
+function start(wasmModule) {
+  const options = {};
+  if (wasmModule) {
+    options.instantiateWasm = (imports, success) => {
+      WebAssembly.instantiate(wasmModule, imports).then((instance) => success(instance, wasmModule));
+      return {};
+    };
+  }
+  modulePromise = createShadelab(options);
+}
 
 function withTracer(M, msg) {
   // The files the user opened in the page, at the same paths in this worker's file system.
@@ -15,31 +29,40 @@ function withTracer(M, msg) {
   return tracer;
 }
 
+function drop() {
+  if (current) current.tracer.delete();
+  current = null;
+}
+
 onmessage = async (event) => {
   const msg = event.data;
+  if (msg.kind === 'init') { start(msg.module); return; }
+  if (!modulePromise) start(null);
   const M = await modulePromise;
   try {
-    if (msg.kind === 'reference') {
-      // Tiles first, first + step, ... of the job: the page's workers share the tiles between them.
-      const tracer = withTracer(M, msg);
-      const count = tracer.startReference(msg.width, msg.height);
-      postMessage({ kind: 'count', job: msg.job, count });
-      for (let i = msg.first; i < count; i += msg.step) {
-        const t = tracer.traceTile(i);
-        postMessage({ kind: 'tile', job: msg.job, index: i, tile: t }, [t.rgba.buffer, t.coverage.buffer]);
-      }
-      tracer.delete();
+    if (msg.kind === 'stop') {
+      drop();
+    } else if (msg.kind === 'reference') {
+      drop();
+      current = { job: msg.job, tracer: withTracer(M, msg) };
+      postMessage({ kind: 'count', job: msg.job, count: current.tracer.startReference(msg.width, msg.height) });
+    } else if (msg.kind === 'tile') {
+      if (!current || current.job !== msg.job) return;  // a tile of a job that was replaced
+      const t = current.tracer.traceTile(msg.index);
+      postMessage({ kind: 'tile', job: msg.job, index: msg.index, tile: t }, [t.rgba.buffer, t.coverage.buffer]);
     } else if (msg.kind === 'global') {
-      // The path tracer, one sample per pixel a pass, the running mean after each; the page ends it.
-      const tracer = withTracer(M, msg);
-      tracer.startGlobal(msg.width, msg.height);
-      for (let pass = 0; pass < msg.samples; ++pass) {
-        tracer.addGlobalSamples(1);
-        const rgba = tracer.globalImage();
-        postMessage({ kind: 'global', job: msg.job, samples: tracer.globalSamples(), rgba }, [rgba.buffer]);
-        await new Promise((r) => setTimeout(r, 0));  // lets a terminate() in
+      // The path tracer, one sample per pixel a pass, the running mean after each, until another job comes.
+      drop();
+      const mine = { job: msg.job, tracer: withTracer(M, msg) };
+      current = mine;
+      mine.tracer.startGlobal(msg.width, msg.height);
+      for (let pass = 0; pass < msg.samples && current === mine; ++pass) {
+        mine.tracer.addGlobalSamples(1);
+        const rgba = mine.tracer.globalImage();
+        postMessage({ kind: 'global', job: msg.job, samples: mine.tracer.globalSamples(), rgba }, [rgba.buffer]);
+        await new Promise((r) => setTimeout(r, 0));  // lets the next message (a stop, a new job) in
       }
-      tracer.delete();
+      if (current === mine) drop();
     }
   } catch (e) {
     postMessage({ kind: 'error', job: msg.job, error: String(e.message || e) });

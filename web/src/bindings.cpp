@@ -65,6 +65,7 @@ val encodeGlobal(PageLab& lab, const val& rgba, int width, int height) {
 }
 
 val differenceImage(PageLab& lab) { return view(lab.differenceImage()); }
+val rasterCoverageImage(PageLab& lab) { return view(lab.rasterCoverageImage()); }
 
 // A worker's tracer, or null with lastCreateError set.
 WorkerTracer* createTracer(const std::string& sceneJson, const std::string& baseDir) {
@@ -117,6 +118,7 @@ EMSCRIPTEN_BINDINGS(shadelab) {
         .function("revision", &PageLab::revision)
         .function("renderRaster", &renderRaster)
         .function("objectAt", &PageLab::objectAt)
+        .function("rasterCoverageImage", &rasterCoverageImage)
         .function("setReference", &setReference)
         .function("encodeGlobal", &encodeGlobal)
         .function("differenceImage", &differenceImage)

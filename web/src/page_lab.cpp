@@ -6,6 +6,7 @@
 #include "app/script.h"
 #include "app/specular_lobe.h"
 #include "compare/compare_report.h"
+#include "compare/coverage_image.h"
 #include "compare/difference_sites.h"
 #include "compare/image_compare.h"
 #include "image/encode.h"
@@ -182,6 +183,11 @@ const std::vector<uint8_t>& PageLab::renderRaster(int width, int height) {
 uint32_t PageLab::objectAt(int x, int y) const {
     if (x < 0 || y < 0 || x >= raster_.width || y >= raster_.height || rasterCoverage_.empty()) return 0;
     return rasterCoverage_[size_t(y) * size_t(raster_.width) + size_t(x)];
+}
+
+const std::vector<uint8_t>& PageLab::rasterCoverageImage() {
+    toRgba(coverageToImage(rasterCoverage_, raster_.width, raster_.height), coverageRgba_);
+    return coverageRgba_;
 }
 
 const std::vector<uint8_t>& PageLab::setReference(const std::vector<float>& rgba, const std::vector<uint32_t>& coverage,

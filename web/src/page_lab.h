@@ -51,6 +51,9 @@ public:
     const std::vector<uint8_t>& renderRaster(int width, int height);
     // The coverage id under pixel (x, y) of the last raster picture; 0 for the background or outside.
     uint32_t objectAt(int x, int y) const;
+    // The last raster picture's coverage ids as RGBA bytes (compare/coverage_image.h), what
+    // `shadelab render --coverage` writes for the same render.
+    const std::vector<uint8_t>& rasterCoverageImage();
 
     // The reference the workers traced (linear RGBA floats and coverage ids, width x height), encoded as
     // `shadelab render --renderer trace` encodes it; returns the RGBA bytes.
@@ -83,7 +86,7 @@ private:
     uint64_t uploadedGeometry_ = 0;
     Image8 raster_, reference_;  // RGB, the images compared
     std::vector<uint32_t> rasterCoverage_, referenceCoverage_;
-    std::vector<uint8_t> rasterRgba_, referenceRgba_, globalRgba_, heatRgba_;
+    std::vector<uint8_t> rasterRgba_, referenceRgba_, globalRgba_, heatRgba_, coverageRgba_;
     std::string differenceText_;
 };
 
