@@ -24,16 +24,16 @@ Image8 coverageToImage(const std::vector<uint32_t>& ids, int width, int height) 
 
 std::vector<uint32_t> coverageFromImage(const Image8& image, const std::string& path) {
     if (image.channels != 3 && image.channels != 4)
-        throw InputError(path, "a coverage image is RGB or RGBA, this one has " + std::to_string(image.channels) +
-                                   " channels");
+        throw InputError(
+            path, "a coverage image is RGB or RGBA, this one has " + std::to_string(image.channels) + " channels");
     const size_t n = size_t(image.width) * size_t(image.height), c = size_t(image.channels);
     std::vector<uint32_t> ids(n);
     for (size_t i = 0; i < n; ++i) {
         const uint8_t* p = &image.data[i * c];
         if (c == 4 && p[3] != 255)
             throw InputError(path, "not a coverage image: pixel (" + std::to_string(i % size_t(image.width)) + ", " +
-                                       std::to_string(i / size_t(image.width)) + ") has alpha " +
-                                       std::to_string(p[3]) + " (coverage ids have alpha 255)");
+                                       std::to_string(i / size_t(image.width)) + ") has alpha " + std::to_string(p[3]) +
+                                       " (coverage ids have alpha 255)");
         ids[i] = uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16;
     }
     return ids;

@@ -277,6 +277,13 @@ class Page:
             if entry.get("level") == "error":
                 self.errors.append(f"{entry.get('source')} error: {entry.get('text')} {entry.get('url', '')}".strip())
 
+    def close(self):
+        """Closes the tab (its console log is kept)."""
+        self.write_console_log()
+        self.browser.call("Target.closeTarget", {"targetId": self.target})
+        if self in self.browser.pages:
+            self.browser.pages.remove(self)
+
     def write_console_log(self):
         path = self.browser.evidence_dir / "console.log"
         with open(path, "a") as f:

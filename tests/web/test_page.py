@@ -402,3 +402,186 @@ def test_unknown_view_mode_throws(app):
     """The views' control: a mode the page does not have is refused, not ignored."""
     with pytest.raises(cdp.JsError):
         app.js("shadelab.setView('no-such-view')")
+
+
+# ---- e. more controls: a material colour's strength, a light's intensity, adding and removing a light ----
+
+
+def set_input(app, selector, value):
+    """Sets an input's value and sends the 'input' event a user's drag sends."""
+    app.js(f"(() => {{ const e = document.querySelector({json.dumps(selector)}); e.value = {json.dumps(str(value))};"
+           f" e.dispatchEvent(new Event('input')); return true; }})()")
+    app.js("new Promise((r) => requestAnimationFrame(() => r(true)))")
+
+
+def select_centre_object(app):
+    """Clicks the middle of the picture (the default scene has a sphere there); returns the state's selection."""
+    x, y = app.page.center_of("#view")
+    app.page.click(x, y)
+    app.js("new Promise((r) => requestAnimationFrame(() => r(true)))")
+    selected = app.js("document.querySelector('#selected-label').textContent")
+    assert selected != "nothing", "clicking the middle of the default scene selected nothing"
+    return selected
+
+
+def test_diffuse_strength_drives_the_picture(app, binary, evidence):
+    def change():
+        select_centre_object(app)
+        set_input(app, "#md", 0.3)
+
+    before, after = check_control_drives_picture(app, binary, evidence, change)
+    changed = [(material_of(before, a).get("md"), material_of(after, b).get("md"))
+               for a, b in zip(before["objects"], after["objects"])
+               if material_of(before, a).get("md") != material_of(after, b).get("md")]
+    assert len(changed) == 1 and max(changed[0][1]) == pytest.approx(0.3, abs=1e-6), changed
+
+
+def test_light_intensity_drives_the_picture(app, binary, evidence):
+    before, after = check_control_drives_picture(app, binary, evidence,
+                                                 lambda: set_input(app, "#lights .light input[type=range]", -1))
+    assert max(after["lights"][0]["color"]) == pytest.approx(0.5, abs=1e-6), after["lights"][0]
+    assert after["lights"][1:] == before["lights"][1:]
+
+
+def test_add_and_remove_light_drive_the_picture(app, binary, evidence):
+    before, after = check_control_drives_picture(app, binary, evidence,
+                                                 lambda: app.js("document.querySelector('#add-light').click(), true"))
+    assert len(after["lights"]) == len(before["lights"]) + 1
+    app.js("document.querySelector('#lights .light:last-child button').click(), true")
+    app.js("new Promise((r) => requestAnimationFrame(() => r(true)))")
+    assert app.export(evidence / "scene-removed.json")["lights"] == before["lights"]
+
+
+# ---- f. the probe: the same report as the native probe of that pixel ----
+
+
+def native_probe(scene_path, x, y, size, out):
+    """shadelab.probe (the Python package over the same probe code) of one pixel, as JSON."""
+    code = ("import json, sys, shadelab\n"
+            "s = shadelab.Scene.load(sys.argv[1])\n"
+            "print(json.dumps(shadelab.probe(s, (int(sys.argv[2]), int(sys.argv[3])), "
+            "size=(int(sys.argv[4]), int(sys.argv[5])))))\n")
+    env = dict(os.environ)
+    python = os.environ.get("SHADELAB_PYTHONPATH", str(SOURCE_DIR / "build" / "python"))
+    if not (Path(python) / "shadelab").is_dir():
+        pytest.skip(f"{python}: no shadelab Python package (a build with SHADELAB_BUILD_PYTHON=OFF)")
+    env["PYTHONPATH"] = python + (":" + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+    p = subprocess.run(["/usr/bin/python3", "-c", code, str(scene_path), str(x), str(y), str(size[0]), str(size[1])],
+                       capture_output=True, text=True, timeout=120, env=env)
+    assert p.returncode == 0, f"the native probe failed (PYTHONPATH={python}): {p.stderr}"
+    Path(out).write_text(p.stdout)
+    return json.loads(p.stdout)
+
+
+def report_differences(a, b, path="", rel=1e-5):
+    """Where two probe reports differ: the same keys and strings, numbers within `rel` (the page's wasm and
+    the native build may round a transcendental function's last bit differently)."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        if a.keys() != b.keys():
+            return [f"{path}: keys {sorted(set(a) ^ set(b))} in one only"]
+        return [d for k in a for d in report_differences(a[k], b[k], f"{path}.{k}", rel)]
+    if isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            return [f"{path}: {len(a)} items against {len(b)}"]
+        return [d for i, (x, y) in enumerate(zip(a, b)) for d in report_differences(x, y, f"{path}[{i}]", rel)]
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool):
+        return [] if math.isclose(a, b, rel_tol=rel, abs_tol=1e-6) else [f"{path}: {a} against {b}"]
+    return [] if a == b else [f"{path}: {a!r} against {b!r}"]
+
+
+@pytest.mark.parametrize("pixel", [(100, 90), (250, 60), (160, 170)])
+def test_probe_matches_native(app, evidence, pixel):
+    app.load_scene("default.json")
+    scene = app.export(evidence / "scene.json")
+    x, y = pixel
+    page = json.loads(app.js(f"shadelab.probe({x}, {y})"))
+    (evidence / "page-probe.json").write_text(json.dumps(page, indent=1))
+    native = native_probe(evidence / "scene.json", x, y, SIZE, evidence / "native-probe.json")
+    differences = report_differences(page, native)
+    assert not differences, f"the page's probe of ({x}, {y}) differs from the native one: {differences[:5]}"
+    # The control: the probe of another pixel is another report.
+    other = json.loads(app.js(f"shadelab.probe({x + 7}, {y - 5})"))
+    assert report_differences(other, native), "two pixels gave the same probe report: the comparison is blind"
+    assert scene["objects"]
+
+
+# ---- g. the shareable link ----
+
+
+def test_link_round_trips(app, browser, evidence):
+    app.load_scene("default.json")
+    move_shininess(app, 4.0)
+    app.page.select_option("#model", "blinn-phong")
+    app.js("shadelab.setView('split')")
+    edited = app.js("shadelab.exportScene()")
+    (evidence / "edited.json").write_text(edited)
+    link = app.js("shadelab.link()")
+    (evidence / "link.txt").write_text(link)
+    assert len(link) < 8000, f"the link is {len(link)} characters"
+    page = browser.new_page()
+    page.navigate(link, timeout=60)
+    page.wait_for("window.shadelab && window.shadelab.ready && true", timeout=60)
+    page.evaluate("shadelab.ready.then(() => true)", timeout=120)
+    opened = page.evaluate("shadelab.exportScene()")
+    (evidence / "opened.json").write_text(opened)
+    assert page.evaluate("shadelab.message()") == ""
+    assert opened == edited, "the scene the link opens differs from the one it was made of"
+    assert page.evaluate("document.querySelector('#view-mode').value") == "split"
+    page.screenshot(evidence / "opened.png")
+    assert page.take_errors() == []
+    # The control: the unedited default scene is not the edited one, so the equality above says something.
+    page.evaluate("shadelab.loadScene('default.json')", timeout=60)
+    assert page.evaluate("shadelab.exportScene()") != edited
+    page.close()
+
+
+@pytest.mark.parametrize("damage", ["truncated", "garbage", "altered", "foreign-folder", "unknown-view"])
+def test_bad_link_shows_the_message_and_the_default_scene(app, browser, evidence, damage):
+    app.load_scene("default.json")
+    move_shininess(app, 4.0)
+    link = app.js("shadelab.link()")
+    base, hash_ = link.split("#", 1)
+    version, view, folder, scene = hash_.split(",")
+    bad = {
+        "truncated": f"{version},{view},{folder},{scene[:len(scene) // 2]}",
+        "garbage": "v1,raster,%2Fassets%2Fscenes,@@not-base64@@",
+        "altered": f"{version},{view},{folder},{scene[:20]}{'A' * 40}{scene[60:]}",
+        "foreign-folder": f"{version},{view},%2Fetc,{scene}",
+        "unknown-view": f"{version},sideways,{folder},{scene}",
+    }[damage]
+    (evidence / "link.txt").write_text(f"{base}#{bad}")
+    page = browser.new_page()
+    page.navigate(f"{base}#{bad}", timeout=60)
+    page.wait_for("window.shadelab && window.shadelab.ready && true", timeout=60)
+    page.evaluate("shadelab.ready.then(() => true)", timeout=120)
+    message = page.evaluate("shadelab.message()")
+    (evidence / "message.txt").write_text(message)
+    page.screenshot(evidence / "page.png")
+    assert message.startswith("link: ") and "\n" not in message, f"a {damage} link: {message!r}"
+    default = (SOURCE_DIR / "assets" / "scenes" / "default.json")
+    shown = json.loads(page.evaluate("shadelab.exportScene()"))
+    assert shown["title"] == json.loads(default.read_text())["title"], "a bad link did not show the default scene"
+    assert page.evaluate("document.querySelector('#scene').value") == "default.json"
+    assert page.take_errors() == []
+    page.close()
+
+
+def test_dropped_file_opens(app, evidence):
+    """A scene file dropped on the page opens as the file input opens it; a bad one is one line."""
+    app.load_scene("default.json")
+    scene = json.loads((SOURCE_DIR / "assets" / "scenes" / "default.json").read_text())
+    scene["title"] = "dropped here"
+    drop = """(text, name) => {
+        const data = new DataTransfer();
+        data.items.add(new File([text], name, { type: 'application/json' }));
+        document.querySelector('#view').dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true }));
+        return true; }"""
+    app.page.call_function(drop, json.dumps(scene), "dropped.json")
+    app.page.wait_for("JSON.parse(shadelab.exportScene()).title === 'dropped here'", timeout=RENDER_TIMEOUT)
+    assert app.message() == ""
+    app.page.call_function(drop, "{ not json", "broken.json")
+    app.page.wait_for("shadelab.message() !== ''", timeout=RENDER_TIMEOUT)
+    message = app.message()
+    (evidence / "message.txt").write_text(message)
+    assert "broken.json" in message and "\n" not in message, message
+    assert json.loads(app.js("shadelab.exportScene()"))["title"] == "dropped here", "a bad drop lost the scene shown"

@@ -134,8 +134,9 @@
     return pending;
   }
 
-  function act(action) {
-    const error = lab.act(JSON.stringify(action));
+  // Applies a viewer-script action (or takes the error line of an edit already made) and redraws.
+  function act(action, done) {
+    const error = done !== undefined ? done : lab.act(JSON.stringify(action));
     if (error) setMessage(error);
     return redraw();
   }
@@ -151,7 +152,107 @@
       if (document.activeElement !== $('shininess')) $('shininess').value = Math.log2(Math.max(1, s.material.s));
       $('shininess-value').textContent = s.material.s.toPrecision(4);
     }
+    for (const field of ['ma', 'md', 'ms']) {
+      const c = s.material && s.material.colors[field];
+      $(field).disabled = $(field + '-color').disabled = !c;
+      if (!c) continue;
+      if (document.activeElement !== $(field)) $(field).value = Math.min(1, c.intensity);
+      if (document.activeElement !== $(field + '-color')) $(field + '-color').value = hexOf(c.color);
+      $(field + '-value').textContent = c.intensity.toFixed(2);
+    }
+    updateLights(s.lights);
+    drawPlots();
     $('caption').textContent = `${s.title || s.file} · ${s.model} · step ${s.step}`;
+  }
+
+  // '#rrggbb' for a colour whose largest channel is 1 (the split of app::splitIntensity), and back.
+  function hexOf(rgb) {
+    return '#' + rgb.map((v) => Math.round(Math.min(1, Math.max(0, v)) * 255).toString(16).padStart(2, '0')).join('');
+  }
+  function rgbOf(hex) { return [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16) / 255); }
+
+  // One row per light: its name, colour, intensity (a log2 slider, 1/64 .. 64) and a remove button.
+  function updateLights(lights) {
+    const box = $('lights');
+    if (box.children.length !== lights.length) {
+      box.replaceChildren(...lights.map((l, i) => {
+        const row = document.createElement('div');
+        row.className = 'light';
+        row.innerHTML = `<span class="name"></span> <input type="color" aria-label="colour">
+          <input type="range" min="-6" max="6" step="0.01" aria-label="intensity"> <output></output>
+          <button aria-label="remove">✕</button>`;
+        const [color, intensity] = row.querySelectorAll('input');
+        const send = () => act({}, lab.setLightColor(i, ...rgbOf(color.value), Math.pow(2, Number(intensity.value))));
+        color.addEventListener('input', send);
+        intensity.addEventListener('input', send);
+        row.querySelector('button').addEventListener('click', () => act({ action: 'removeLight', index: i }));
+        return row;
+      }));
+    }
+    lights.forEach((l, i) => {
+      const row = box.children[i], [color, intensity] = row.querySelectorAll('input');
+      row.querySelector('.name').textContent = `${l.name || 'light ' + (i + 1)} (${l.type})`;
+      if (document.activeElement !== color) color.value = hexOf(l.color);
+      if (document.activeElement !== intensity) intensity.value = Math.log2(Math.max(1 / 64, l.intensity));
+      row.querySelector('output').textContent = l.intensity.toPrecision(3);
+    });
+    $('add-light').disabled = lights.length >= 8;
+  }
+
+  // The lobe plot (polar: each curve's value over its peak against the outgoing angle, the normal up, L drawn
+  // in white on the left) and the albedo plot (albedo over the
+  // view angle), from the viewer's plot data (app/lobe_plot.h, app/albedo_plot.h).
+  const PLOT_COLOURS = ['#ffb86c', '#8be9fd', '#50fa7b', '#ff79c6', '#bd93f9'];
+  function drawPlots() {
+    const lobe = JSON.parse(lab.lobePlotJson(45)), albedo = JSON.parse(lab.albedoPlotJson());
+    for (const [canvas, plot, draw] of [[$('lobe-plot'), lobe, drawLobe], [$('albedo-plot'), albedo, drawAlbedo]]) {
+      const g = canvas.getContext('2d');
+      g.clearRect(0, 0, canvas.width, canvas.height);
+      if (plot.curves) draw(g, canvas, plot);
+    }
+  }
+  function legend(g, curves, x, y) {
+    curves.forEach((c, k) => { g.fillStyle = PLOT_COLOURS[k % PLOT_COLOURS.length]; g.fillText(c.label, x, y + 12 * k); });
+  }
+  function drawLobe(g, canvas, plot) {
+    const cx = canvas.width / 2, cy = canvas.height - 8, r = Math.min(cx, cy) - 6;
+    g.strokeStyle = '#555';
+    g.beginPath(); g.arc(cx, cy, r, Math.PI, 2 * Math.PI); g.moveTo(cx, cy); g.lineTo(cx, cy - r); g.stroke();
+    // The incoming light's direction, θi from the normal on the left.
+    const ti = plot.incidence * Math.PI / 180;
+    g.strokeStyle = '#ddd';
+    g.beginPath(); g.moveTo(cx, cy); g.lineTo(cx - r * Math.sin(ti), cy - r * Math.cos(ti)); g.stroke();
+    plot.curves.forEach((c, k) => {
+      g.strokeStyle = PLOT_COLOURS[k % PLOT_COLOURS.length];
+      g.beginPath();
+      c.polar.forEach((v, i) => {
+        const t = plot.polarAngles[i] * Math.PI / 180;
+        const x = cx + r * v * Math.sin(t), y = cy - r * v * Math.cos(t);
+        if (i) g.lineTo(x, y); else g.moveTo(x, y);
+      });
+      g.stroke();
+    });
+    legend(g, plot.curves, 4, 12);
+  }
+  function drawAlbedo(g, canvas, plot) {
+    const x0 = 28, y0 = canvas.height - 16, w = canvas.width - x0 - 6, h = y0 - 6;
+    const last = plot.viewAngles[plot.viewAngles.length - 1] || 90;
+    g.strokeStyle = '#555';
+    g.strokeRect(x0, y0 - h, w, h);
+    g.fillStyle = '#aaa';
+    g.fillText('1', 16, y0 - h + 8); g.fillText('0', 16, y0); g.fillText(`θ 0..${last}°`, x0 + w - 60, y0 + 12);
+    plot.curves.forEach((c, k) => {
+      g.strokeStyle = PLOT_COLOURS[k % PLOT_COLOURS.length];
+      g.setLineDash(c.dashed ? [4, 3] : []);
+      g.beginPath();
+      c.albedo.forEach((a, i) => {
+        const x = x0 + w * plot.viewAngles[i] / last, y = y0 - h * Math.min(1, a);
+        if (i) g.lineTo(x, y); else g.moveTo(x, y);
+      });
+      g.stroke();
+    });
+    g.setLineDash([]);
+    legend(g, plot.curves, x0 + 6, y0 - h + 30);
   }
 
   // What the last load warned about (a texture over the limit, an ignored feature), as one line.
@@ -169,6 +270,7 @@
     if (error) { setMessage(error); throw new Error(error); }
     setMessage(warningLine());
     $('scene').value = name;
+    uploads.clear();  // a shipped scene needs none of the files opened before
     reference = null;
     await redraw();
   }
@@ -187,6 +289,33 @@
     await redraw();
   }
 
+  // A shared link (share_link.js): the scene it holds, read as a scene file in the folder it names, and its view.
+  // A bad link is one line, and the default scene.
+  async function openLink(hash) {
+    let error = '';
+    try {
+      const link = await ShareLink.decode(hash, VIEWS);
+      const path = link.folder + '/.link-scene.json';
+      M.FS.writeFile(path, link.sceneJson);
+      error = lab.open(path);
+      if (!error) {
+        $('scene').value = '';
+        uploads.clear();
+        reference = null;
+        setMessage(warningLine());
+        api.setView(link.view);
+        await redraw();
+        return true;
+      }
+      error = `link: ${error}; showing the default scene`;
+    } catch (e) {
+      error = e.message;
+    }
+    await loadScene('default.json');
+    setMessage(error);
+    return false;
+  }
+
   function wire() {
     for (const name of sceneNames()) $('scene').add(new Option(name, name));
     $('scene').addEventListener('change', () => loadScene($('scene').value).catch(() => {}));
@@ -202,7 +331,29 @@
       const s = state();
       if (s.selected) act({ action: 'setShininess', object: '#' + s.selected, s: Math.pow(2, Number($('shininess').value)) });
     });
+    for (const field of ['ma', 'md', 'ms']) {
+      const send = () => act({}, lab.setMaterialColor(field, ...rgbOf($(field + '-color').value), Number($(field).value)));
+      $(field).addEventListener('input', send);
+      $(field + '-color').addEventListener('input', send);
+    }
+    $('add-light').addEventListener('click', () => act({ action: 'addLight', type: 'point' }));
+    $('share').addEventListener('click', async () => {
+      try {
+        const url = await api.link();
+        history.replaceState(null, '', url);
+        await navigator.clipboard.writeText(url).catch(() => {});
+        setMessage('the link to this scene and view is in the address bar (and copied)');
+      } catch (e) { setMessage(e.message); }
+    });
+    addEventListener('hashchange', () => { if (location.hash) openLink(location.hash); });
     $('open-file').addEventListener('change', () => { const f = $('open-file').files[0]; if (f) openFile(f); });
+    // Drag and drop a file anywhere on the page opens it, as the file input does.
+    addEventListener('dragover', (e) => { e.preventDefault(); e.dataTransfer.dropEffect = 'copy'; });
+    addEventListener('drop', (e) => {
+      e.preventDefault();
+      const f = e.dataTransfer.files[0];
+      if (f) openFile(f);
+    });
     $('save').addEventListener('click', () => {
       const url = URL.createObjectURL(new Blob([lab.sceneJson()], { type: 'application/json' }));
       const a = document.createElement('a');
@@ -211,13 +362,31 @@
     });
 
     // Mouse and touch: drag orbits (right button or shift: pans), the wheel zooms, a click selects and probes.
+    // Two fingers: pinching zooms and moving both pans.
     let drag = null;
+    const touches = new Map();  // pointerId -> {x, y}, the fingers down
+    let pinch = null;           // {distance, x, y} of the two fingers at the last move
+    const fingers = () => { const [a, b] = [...touches.values()]; return { distance: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 }; };
     view.addEventListener('contextmenu', (e) => e.preventDefault());
     view.addEventListener('pointerdown', (e) => {
       view.setPointerCapture(e.pointerId);
+      if (e.pointerType === 'touch') touches.set(e.pointerId, { x: e.clientX, y: e.clientY });
+      if (touches.size === 2) { pinch = fingers(); drag = null; return; }
       drag = { x: e.clientX, y: e.clientY, moved: false, pan: e.button === 2 || e.shiftKey, wipe: mode === 'split' };
     });
+    const lift = (e) => { touches.delete(e.pointerId); if (touches.size < 2) pinch = null; };
+    view.addEventListener('pointercancel', (e) => { lift(e); drag = null; });
     view.addEventListener('pointermove', (e) => {
+      if (pinch && touches.has(e.pointerId)) {
+        touches.set(e.pointerId, { x: e.clientX, y: e.clientY });
+        const now = fingers(), scale = width / view.clientWidth;
+        // A wheel step per doubling of the fingers' distance, the viewer's zoom unit.
+        if (pinch.distance > 0 && now.distance > 0) lab.zoom(Math.log2(now.distance / pinch.distance) * 4);
+        lab.pan((now.x - pinch.x) * scale, (now.y - pinch.y) * scale, height);
+        pinch = now;
+        redraw();
+        return;
+      }
       if (!drag) return;
       const scale = width / view.clientWidth, dx = (e.clientX - drag.x) * scale, dy = (e.clientY - drag.y) * scale;
       if (!drag.moved && Math.hypot(dx, dy) < 3) return;
@@ -233,6 +402,7 @@
       redraw();
     });
     view.addEventListener('pointerup', (e) => {
+      lift(e);
       const d = drag;
       drag = null;
       if (!d || d.moved) return;
@@ -281,7 +451,18 @@
       await redraw();
       return pngOf(imageOf(lab.rasterCoverageImage()));
     },
+    // Promise of the probe report (JSON text, docs/viewer.md) of pixel (x, y) of the picture, as a click gives.
+    async probe(x, y) {
+      await redraw();
+      return lab.probe(x, y, width, height);
+    },
     exportScene() { return lab.sceneJson(); },
+    // Promise of this page's address with the edited scene and the view in its hash (share_link.js).
+    async link() {
+      if (!lab.sceneDir().startsWith('/assets'))
+        throw new Error('link: a link cannot carry files opened from disk; use Save scene instead');
+      return location.href.replace(/#.*$/, '') + await ShareLink.encode(lab.sceneJson(), lab.sceneDir(), mode);
+    },
     timings() { return { ...timings }; },
     message() { return message; },
   };
@@ -300,7 +481,7 @@
     lab = M.createLab('#gl');
     if (!lab) { const e = M.createError(); setMessage(e); throw new Error(e); }
     wire();
-    await loadScene('default.json');
+    if (location.hash) await openLink(location.hash); else await loadScene('default.json');
     timings.firstPictureMs = performance.now();  // performance.now() counts from navigation
   })();
   api.ready.catch((e) => setMessage(String(e.message || e)));

@@ -108,6 +108,8 @@ EMSCRIPTEN_BINDINGS(shadelab) {
     emscripten::class_<PageLab>("Lab")
         .function("open", &PageLab::open)
         .function("act", &PageLab::act)
+        .function("setMaterialColor", &PageLab::setMaterialColor)
+        .function("setLightColor", &PageLab::setLightColor)
         .function("orbit", &PageLab::orbit)
         .function("pan", &PageLab::pan)
         .function("zoom", &PageLab::zoom)

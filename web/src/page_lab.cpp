@@ -100,6 +100,19 @@ std::string PageLab::act(const std::string& actionsJson) {
     }
 }
 
+std::string PageLab::setMaterialColor(const std::string& field, float r, float g, float b, float intensity) {
+    if (field != "ma" && field != "md" && field != "ms") return "page: no material colour \"" + field + "\"";
+    if (state_.selected == 0) return "page: select an object first (click it)";
+    const glm::vec3 value = app::joinIntensity({{r, g, b}, intensity});
+    return act(
+        Json{{"action", "setMaterial"}, {"object", "#" + std::to_string(state_.selected)}, {field, vec(value)}}.dump());
+}
+
+std::string PageLab::setLightColor(int index, float r, float g, float b, float intensity) {
+    const glm::vec3 value = app::joinIntensity({{r, g, b}, intensity});
+    return act(Json{{"action", "setLight"}, {"index", index}, {"color", vec(value)}}.dump());
+}
+
 void PageLab::orbit(float dx, float dy) {
     app::OrbitCamera o = state_.orbit;
     // The viewer's mouse: a drag across 200 pixels turns the camera by one radian.
@@ -135,7 +148,13 @@ std::string PageLab::stateJson() const {
     j["objects"] = objects;
     if (state_.selected != 0) {
         const Material m = app::objectMaterial(sc, state_.selected);
-        j["material"] = {{"ma", vec(m.ma)},
+        Json colors;
+        for (const auto& [name, value] : {std::pair{"ma", m.ma}, {"md", m.md}, {"ms", m.ms}}) {
+            const app::ColorIntensity ci = app::splitIntensity(value);
+            colors[name] = {{"color", vec(ci.color)}, {"intensity", ci.intensity}};
+        }
+        j["material"] = {{"colors", colors},
+                         {"ma", vec(m.ma)},
                          {"md", vec(m.md)},
                          {"ms", vec(m.ms)},
                          {"s", m.s},
@@ -241,7 +260,11 @@ std::string PageLab::lobePlotJson(float incidence) const {
     Json curves = Json::array();
     for (const app::LobeCurve& c : plot.curves)
         curves.push_back({{"label", c.label}, {"peak", c.peak}, {"polar", c.polar}, {"value", c.value}});
-    return Json{{"incidence", settings.incidence}, {"axis", settings.axis}, {"curves", curves}}.dump();
+    Json polarAngles = Json::array();
+    for (int i = 0; i < settings.polarSamples; ++i) polarAngles.push_back(plot.polarAngleAt(i));
+    return Json{
+        {"incidence", settings.incidence}, {"axis", settings.axis}, {"polarAngles", polarAngles}, {"curves", curves}}
+        .dump();
 }
 
 std::string PageLab::albedoPlotJson() const {

@@ -29,6 +29,11 @@ public:
     // Applies viewer-script actions, a JSON object or a list of them in the script format (docs/viewer.md),
     // e.g. {"action": "setShininess", "object": "#1", "s": 64}. Only state actions; "" or the error line.
     std::string act(const std::string& actionsJson);
+    // A colour control and its strength slider, as the viewer's light panel splits them (app::splitIntensity):
+    // the selected object's `field` ("ma", "md" or "ms") or light `index` becomes colour x intensity, through
+    // the script's setMaterial / setLight action. "" or the error line.
+    std::string setMaterialColor(const std::string& field, float r, float g, float b, float intensity);
+    std::string setLightColor(int index, float r, float g, float b, float intensity);
     // The camera, as the viewer's mouse moves it: drag pixels, wheel steps.
     void orbit(float dxPixels, float dyPixels);
     void pan(float dxPixels, float dyPixels, float viewportHeight);
@@ -71,7 +76,8 @@ public:
     // report (its JSON, docs/viewer.md); also anchors the viewer state's probe there.
     std::string probe(int x, int y, int width, int height);
     // The lobe and albedo plots of the selected object's material (app/lobe_plot.h, app/albedo_plot.h) as JSON
-    // curves; `incidence` is θi in degrees.
+    // curves; `incidence` is θi in degrees. The lobe's "polar" values (over its peak) are at "polarAngles", the
+    // outgoing angles θo from N (negative on L's side); the albedo's at "viewAngles".
     std::string lobePlotJson(float incidence) const;
     std::string albedoPlotJson() const;
 
