@@ -161,7 +161,7 @@
       $(field + '-value').textContent = c.intensity.toFixed(2);
     }
     updateLights(s.lights);
-    drawPlots();
+    schedulePlots(JSON.stringify([s.selected, s.model, s.material]));
     $('caption').textContent = `${s.title || s.file} · ${s.model} · step ${s.step}`;
   }
 
@@ -203,6 +203,19 @@
   // in white on the left) and the albedo plot (albedo over the
   // view angle), from the viewer's plot data (app/lobe_plot.h, app/albedo_plot.h).
   const PLOT_COLOURS = ['#ffb86c', '#8be9fd', '#50fa7b', '#ff79c6', '#bd93f9'];
+  // The plots are redrawn after the frame, not in it, and only when what they show changed, so that a slider
+  // drag's frames are the picture's alone; the plots follow within a tenth of a second.
+  let plotKey = null, plotTimer = null;
+  function schedulePlots(key) {
+    if (key === plotKey || plotTimer) return;
+    plotTimer = setTimeout(() => {
+      plotTimer = null;
+      const s = state(), now = JSON.stringify([s.selected, s.model, s.material]);
+      if (now === plotKey) return;
+      plotKey = now;
+      drawPlots();
+    }, 100);
+  }
   function drawPlots() {
     const lobe = JSON.parse(lab.lobePlotJson(45)), albedo = JSON.parse(lab.albedoPlotJson());
     for (const [canvas, plot, draw] of [[$('lobe-plot'), lobe, drawLobe], [$('albedo-plot'), albedo, drawAlbedo]]) {
