@@ -2,23 +2,14 @@
 #include "app/image_view.h"
 
 #include "compare/compare_report.h"
+#include "gl/shader_dialect.h"
 
 #include <string>
 #include <vector>
 
 namespace shadelab::app {
 
-ImageView::ImageView(const gl::ShaderLibrary& shaders) {
-    // llvmpipe compiles each lazily, at its first draw.
-    for (int mode = 0; mode < 4; ++mode)
-        for (int srgb = 0; srgb < 2; ++srgb)
-            for (int outline = 0; outline < 2; ++outline)
-                for (int filmic = 0; filmic < 2; ++filmic)
-                    programs_[mode][srgb][outline][filmic] =
-                        gl::Program::build(shaders, "fullscreen.vert", "view_image.frag",
-                                           "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " +
-                                               std::to_string(srgb) + "\n#define OUTLINE " + std::to_string(outline) +
-                                               "\n#define VIEW_TRANSFORM " + std::to_string(filmic) + "\n");
+ImageView::ImageView(const gl::ShaderLibrary& shaders) : shaders_(shaders.withDialect(gl::currentContextDialect())) {
     vao_ = gl::VertexArray::create();
     // The heat ramp of the CLI's heatmaps, so the live difference view reads the same way.
     std::vector<uint8_t> ramp(256 * 3);
@@ -33,6 +24,23 @@ ImageView::ImageView(const gl::ShaderLibrary& shaders) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
     gl::checkError("ImageView setup");
+}
+
+gl::Program& ImageView::program(int mode, int srgb, int outline, int filmic) const {
+    gl::Program& p = programs_[mode][srgb][outline][filmic];
+    if (!p.id())
+        p = gl::Program::build(shaders_, "fullscreen.vert", "view_image.frag",
+                               "#define VIEW_MODE " + std::to_string(mode) + "\n#define SRGB " + std::to_string(srgb) +
+                                   "\n#define OUTLINE " + std::to_string(outline) + "\n#define VIEW_TRANSFORM " +
+                                   std::to_string(filmic) + "\n");
+    return p;
+}
+
+void ImageView::buildAll() {
+    for (int mode = 0; mode < 4; ++mode)
+        for (int srgb = 0; srgb < 2; ++srgb)
+            for (int outline = 0; outline < 2; ++outline)
+                for (int filmic = 0; filmic < 2; ++filmic) program(mode, srgb, outline, filmic);
 }
 
 void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
@@ -52,7 +60,7 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
     const bool outline = in.selected != 0 && in.coverage != 0;
     const bool filmic = in.display.transform == ViewTransform::Filmic;
     const gl::Program& program =
-        programs_[mode][in.encoding == Encoding::Srgb ? 1 : 0][outline ? 1 : 0][filmic ? 1 : 0];
+        this->program(mode, in.encoding == Encoding::Srgb ? 1 : 0, outline ? 1 : 0, filmic ? 1 : 0);
     glUseProgram(program.id());
     const GLuint textures[5] = {in.raster, in.traced ? in.traced : in.raster, in.tiles, ramp_.id(), in.coverage};
     const char* samplers[5] = {"t_raster", "t_traced", "t_tiles", "t_ramp", "t_coverage"};

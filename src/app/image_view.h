@@ -1,7 +1,7 @@
 // ImageView: draws the rendered image into a rectangle of the window (raster, reference, wipe or
 // difference), with the display's exposure and view transform and the sRGB curve in shaders/view_image.frag,
-// and the selected object's outline. Display only:
-// captures read the renderers' float images, never the window.
+// and the selected object's outline. Display only: captures read the renderers' float images, never the window.
+// GL only (no window, no ImGui), so the web page shows its raster image through it too.
 #pragma once
 
 #include "app/viewer_state.h"
@@ -33,12 +33,20 @@ struct ImageViewInputs {
 
 class ImageView {
 public:
+    // Keeps a copy of `shaders` in the current context's dialect (GLSL 3.30 or ES 3.00); each program is built at its first draw (a browser compiles them one by one, and
+    // a page that only shows the raster image needs one of the 32).
     explicit ImageView(const gl::ShaderLibrary& shaders);
+    // Builds every program now (throws InputError on a shader error): the viewer's hot reload wants a broken
+    // shader reported when it reloads, not at the next draw.
+    void buildAll();
     // Draws into the bound draw framebuffer (the window's) at `rect`; sets the state it needs.
     void draw(const ImageRect& rect, const ImageViewInputs& in) const;
 
 private:
-    gl::Program programs_[4][2][2][2];  // [mode][sRGB][selection outline][filmic]
+    gl::Program& program(int mode, int srgb, int outline, int filmic) const;
+
+    gl::ShaderLibrary shaders_;
+    mutable gl::Program programs_[4][2][2][2];  // [mode][sRGB][selection outline][filmic], built when first used
     gl::VertexArray vao_;
     gl::Texture ramp_;
 };

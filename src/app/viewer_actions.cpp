@@ -326,6 +326,7 @@ void Viewer::reloadShaders(const std::string& from) {
         auto raster = std::make_unique<raster::RasterRenderer>(shaders);
         raster->setPartialRedraw(true);
         auto view = std::make_unique<ImageView>(shaders);
+        view->buildAll();
         auto arrows = std::make_unique<ArrowOverlay>(shaders);
         raster_ = std::move(raster);
         imageView_ = std::move(view);

@@ -4,15 +4,18 @@
 'use strict';
 (() => {
   const $ = (id) => document.getElementById(id);
-  const view = $('view');
+  const view = $('view');        // the 2D canvas over the GL one: every view but Raster
+  const glCanvas = $('gl');      // the rasterizer's WebGL2 canvas: Raster is drawn here, nothing read back
+  const stage = $('stage');      // both canvases; the pointer's events land here
   const ctx2d = view.getContext('2d');
   const WORKERS = Math.max(1, Math.min(8, (navigator.hardwareConcurrency || 2)));
   const VIEWS = ['raster', 'reference', 'split', 'difference', 'global'];
 
   let M = null, lab = null;
   let width = 960, height = 540, mode = 'raster', message = '', split = 0.5;
-  let rasterImage = null;       // ImageData of the last raster picture
-  let rasterRevision = -1;      // lab.revision() it was drawn at
+  let rasterImage = null;       // ImageData of the raster picture read back (other views, images), or null
+  let rasterRevision = -1;      // lab.revision() the pictures are of
+  let glDrawn = false;          // the GL canvas shows the raster picture of that revision and size
   let reference = null;         // {revision, width, height, image, done: Promise}
   let globalJob = null;         // {image, samples}
   let pool = null;              // the tracers' workers (tracer_pool.js)
@@ -28,16 +31,30 @@
 
   // --- pictures -------------------------------------------------------------------------------------------
   // What the benchmarks read (bench/web_page.py): milliseconds since navigation to the first picture, of the
-  // last raster frame (draw, readback, ImageData) and of the last complete reference (scene sent to the workers,
-  // tiles traced and assembled, encoded).
-  const timings = { firstPictureMs: null, rasterMs: null, referenceMs: null };
+  // page's script in the last redraw and of its GL draw (drawRaster; WebGL makes it wait for SwiftShader), of the
+  // last raster picture read back (draw, readback, ImageData) and of the last complete reference (scene sent to
+  // the workers, tiles traced and assembled, encoded).
+  const timings = { firstPictureMs: null, frameMs: null, drawMs: null, rasterMs: null, referenceMs: null };
 
-  function renderRaster() {
+  // The raster picture read back, as `shadelab render` writes it: for the views that combine it, and the images.
+  function rasterPicture() {
+    if (rasterImage) return rasterImage;
     const t0 = performance.now();
     const bytes = lab.renderRaster(width, height);
-    if (typeof bytes === 'string') { setMessage(bytes); return; }
+    if (typeof bytes === 'string') { setMessage(bytes); return null; }
     rasterImage = imageOf(bytes);
     timings.rasterMs = performance.now() - t0;
+    return rasterImage;
+  }
+
+  // The raster picture on the GL canvas (the viewer's display pass and partial redraw; nothing read back).
+  function drawGl() {
+    if (glCanvas.width !== width || glCanvas.height !== height) { glCanvas.width = width; glCanvas.height = height; }
+    const t0 = performance.now();
+    const error = lab.drawRaster(width, height);
+    timings.drawMs = performance.now() - t0;
+    if (error) setMessage(error);
+    glDrawn = true;
   }
 
   // What a worker needs to rebuild the scene: its JSON, its folder, and the files opened from disk.
@@ -86,27 +103,29 @@
 
   // Draws what the view mode shows; starts the tracers the mode needs and are not current.
   function show() {
-    if (!rasterImage) return;
     $('difference-text').textContent = '';
     if (mode !== 'global' && pool.running() === 'global') { pool.stop(); globalJob = null; }  // nobody watches it
-    if (mode === 'raster') { ctx2d.putImageData(rasterImage, 0, 0); return; }
+    view.classList.toggle('off', mode === 'raster');
+    if (mode === 'raster') { if (!glDrawn) drawGl(); return; }
+    const raster = rasterPicture();
+    if (!raster) return;
     if (mode === 'global') {
       if (!globalJob) startGlobal();
-      ctx2d.putImageData(globalJob.image || rasterImage, 0, 0);
+      ctx2d.putImageData(globalJob.image || raster, 0, 0);
       return;
     }
     if (!referenceCurrent()) startReference();
     const ref = reference.image;
-    if (mode === 'reference') { ctx2d.putImageData(ref || rasterImage, 0, 0); return; }
+    if (mode === 'reference') { ctx2d.putImageData(ref || raster, 0, 0); return; }
     if (mode === 'split') {
-      ctx2d.putImageData(rasterImage, 0, 0);
+      ctx2d.putImageData(raster, 0, 0);
       if (ref) ctx2d.putImageData(ref, 0, 0, Math.round(split * width), 0, width, height);
       ctx2d.fillStyle = '#fff';
       ctx2d.fillRect(Math.round(split * width), 0, 1, height);
       return;
     }
     if (mode === 'difference') {
-      if (!ref) { ctx2d.putImageData(rasterImage, 0, 0); return; }
+      if (!ref) { ctx2d.putImageData(raster, 0, 0); return; }
       const heat = lab.differenceImage();
       if (heat.length) ctx2d.putImageData(imageOf(heat), 0, 0);
       $('difference-text').textContent = lab.differenceText();
@@ -118,17 +137,21 @@
   function redraw() {
     if (pending) return pending;
     pending = new Promise((resolve) => requestAnimationFrame(() => {
+      const t0 = performance.now();
       pending = null;
       // Only a change a renderer sees (lab.revision(), which every edit, camera move and load bumps) or a new
       // size draws again and restarts the path tracer; asking for the picture again draws nothing.
       const revision = lab.revision();
-      if (!rasterImage || revision !== rasterRevision || rasterImage.width !== width || rasterImage.height !== height) {
+      if (revision !== rasterRevision || view.width !== width || view.height !== height) {
         globalJob = null;
-        renderRaster();
+        rasterImage = null;
+        glDrawn = false;
         rasterRevision = revision;
+        if (view.width !== width || view.height !== height) { view.width = width; view.height = height; }
       }
       show();
       updateControls();
+      timings.frameMs = performance.now() - t0;
       resolve();
     }));
     return pending;
@@ -380,19 +403,19 @@
     const touches = new Map();  // pointerId -> {x, y}, the fingers down
     let pinch = null;           // {distance, x, y} of the two fingers at the last move
     const fingers = () => { const [a, b] = [...touches.values()]; return { distance: Math.hypot(a.x - b.x, a.y - b.y), x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 }; };
-    view.addEventListener('contextmenu', (e) => e.preventDefault());
-    view.addEventListener('pointerdown', (e) => {
-      view.setPointerCapture(e.pointerId);
+    stage.addEventListener('contextmenu', (e) => e.preventDefault());
+    stage.addEventListener('pointerdown', (e) => {
+      stage.setPointerCapture(e.pointerId);
       if (e.pointerType === 'touch') touches.set(e.pointerId, { x: e.clientX, y: e.clientY });
       if (touches.size === 2) { pinch = fingers(); drag = null; return; }
       drag = { x: e.clientX, y: e.clientY, moved: false, pan: e.button === 2 || e.shiftKey, wipe: mode === 'split' };
     });
     const lift = (e) => { touches.delete(e.pointerId); if (touches.size < 2) pinch = null; };
-    view.addEventListener('pointercancel', (e) => { lift(e); drag = null; });
-    view.addEventListener('pointermove', (e) => {
+    stage.addEventListener('pointercancel', (e) => { lift(e); drag = null; });
+    stage.addEventListener('pointermove', (e) => {
       if (pinch && touches.has(e.pointerId)) {
         touches.set(e.pointerId, { x: e.clientX, y: e.clientY });
-        const now = fingers(), scale = width / view.clientWidth;
+        const now = fingers(), scale = width / stage.clientWidth;
         // A wheel step per doubling of the fingers' distance, the viewer's zoom unit.
         if (pinch.distance > 0 && now.distance > 0) lab.zoom(Math.log2(now.distance / pinch.distance) * 4);
         lab.pan((now.x - pinch.x) * scale, (now.y - pinch.y) * scale, height);
@@ -401,12 +424,12 @@
         return;
       }
       if (!drag) return;
-      const scale = width / view.clientWidth, dx = (e.clientX - drag.x) * scale, dy = (e.clientY - drag.y) * scale;
+      const scale = width / stage.clientWidth, dx = (e.clientX - drag.x) * scale, dy = (e.clientY - drag.y) * scale;
       if (!drag.moved && Math.hypot(dx, dy) < 3) return;
       drag.moved = true;
       drag.x = e.clientX; drag.y = e.clientY;
       if (drag.wipe) {
-        const r = view.getBoundingClientRect();
+        const r = stage.getBoundingClientRect();
         split = Math.min(1, Math.max(0, (e.clientX - r.left) / r.width));
         show();
         return;
@@ -414,18 +437,18 @@
       if (drag.pan) lab.pan(dx, dy, height); else lab.orbit(dx, dy);
       redraw();
     });
-    view.addEventListener('pointerup', (e) => {
+    stage.addEventListener('pointerup', (e) => {
       lift(e);
       const d = drag;
       drag = null;
       if (!d || d.moved) return;
-      const r = view.getBoundingClientRect();
+      const r = stage.getBoundingClientRect();
       const x = Math.floor((e.clientX - r.left) * width / r.width), y = Math.floor((e.clientY - r.top) * height / r.height);
       const id = lab.objectAt(x, y);
       if (id) act({ action: 'select', object: '#' + id });
       $('probe').textContent = lab.probe(x, y, width, height);
     });
-    view.addEventListener('wheel', (e) => { e.preventDefault(); lab.zoom(-Math.sign(e.deltaY)); redraw(); }, { passive: false });
+    stage.addEventListener('wheel', (e) => { e.preventDefault(); lab.zoom(-Math.sign(e.deltaY)); redraw(); }, { passive: false });
   }
 
   function pngOf(image) {
@@ -442,7 +465,7 @@
     async setSize(w, h) {
       if (!(Number.isInteger(w) && Number.isInteger(h) && w >= 1 && h >= 1 && w <= 4096 && h <= 4096))
         throw new Error(`setSize: ${w}x${h} is not a size from 1x1 to 4096x4096`);
-      width = w; height = h; view.width = w; view.height = h;
+      width = w; height = h;
       reference = null;
       await redraw();
     },
@@ -454,7 +477,7 @@
     },
     async imageDataUrl(which) {
       await redraw();
-      if (which === 'raster') return pngOf(rasterImage);
+      if (which === 'raster') return pngOf(rasterPicture());
       if (which !== 'reference') throw new Error(`imageDataUrl: "${which}" is not raster or reference`);
       if (!referenceCurrent()) startReference();
       return pngOf(await reference.done);
@@ -462,6 +485,7 @@
     async coverageDataUrl(which) {
       if (which !== 'raster') throw new Error(`coverageDataUrl: "${which}" is not raster`);
       await redraw();
+      rasterPicture();  // the coverage of the picture read back, as `render --coverage` writes it
       return pngOf(imageOf(lab.rasterCoverageImage()));
     },
     // Promise of the probe report (JSON text, docs/viewer.md) of pixel (x, y) of the picture, as a click gives.

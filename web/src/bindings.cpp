@@ -48,6 +48,16 @@ val renderRaster(PageLab& lab, int width, int height) {
     }
 }
 
+// "" or the error line.
+std::string drawRaster(PageLab& lab, int width, int height) {
+    try {
+        lab.drawRaster(width, height);
+        return "";
+    } catch (const std::exception& e) {
+        return errorLine(e.what());
+    }
+}
+
 val setReference(PageLab& lab, const val& rgba, const val& coverage, int width, int height) {
     try {
         return view(lab.setReference(copyArray<float>(rgba), copyArray<uint32_t>(coverage), width, height));
@@ -119,6 +129,7 @@ EMSCRIPTEN_BINDINGS(shadelab) {
         .function("referenceRevision", &PageLab::referenceRevision)
         .function("revision", &PageLab::revision)
         .function("renderRaster", &renderRaster)
+        .function("drawRaster", &drawRaster)
         .function("objectAt", &PageLab::objectAt)
         .function("rasterCoverageImage", &rasterCoverageImage)
         .function("setReference", &setReference)

@@ -64,7 +64,12 @@ Image8 encodeLinear(const std::vector<float>& rgba, int width, int height, const
 
 }  // namespace
 
-PageLab::PageLab(const std::string& canvas) : context_(canvas), renderer_(std::make_unique<raster::RasterRenderer>()) {}
+PageLab::PageLab(const std::string& canvas)
+    : context_(canvas),
+      renderer_(std::make_unique<raster::RasterRenderer>()),
+      view_(std::make_unique<app::ImageView>(gl::ShaderLibrary())) {
+    renderer_->setPartialRedraw(true);  // bit for bit a full draw (redraw_plan.h), as in the viewer
+}
 
 std::string PageLab::open(const std::string& path) {
     try {
@@ -195,13 +200,46 @@ const std::vector<uint8_t>& PageLab::renderRaster(int width, int height) {
         raster::renderOffscreen(*renderer_, state_.scene, render::toOffscreen(request, state_.scene));
     raster_ = std::move(r.pixels);
     rasterCoverage_ = std::move(r.coverage);
+    coverageInTarget_ = false;
     toRgba(raster_, rasterRgba_);
     return rasterRgba_;
 }
 
-uint32_t PageLab::objectAt(int x, int y) const {
-    if (x < 0 || y < 0 || x >= raster_.width || y >= raster_.height || rasterCoverage_.empty()) return 0;
-    return rasterCoverage_[size_t(y) * size_t(raster_.width) + size_t(x)];
+void PageLab::drawRaster(int width, int height) {
+    uploadIfNeeded();
+    render::RenderRequest request;
+    request.engine = render::Engine::Raster;
+    request.width = width;
+    request.height = height;
+    request.coverage = true;
+    render::require(request);
+    renderer_->draw(state_.scene, width, height, true);
+    const raster::RenderTarget& target = renderer_->target();
+    app::ImageViewInputs in;
+    in.raster = target.colorTexture();
+    in.imageWidth = target.width();
+    in.imageHeight = target.height();
+    in.display = render::displayOf(request, state_.scene);
+    in.coverage = target.coverageTexture();
+    in.selected = state_.selected;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    view_->draw({0, 0, width, height}, in);
+    coverageInTarget_ = true;
+}
+
+uint32_t PageLab::objectAt(int x, int y) {
+    const std::vector<uint32_t>* ids = &rasterCoverage_;
+    int width = raster_.width, height = raster_.height;
+    if (coverageInTarget_) {
+        // Read when asked (a click), not every frame.
+        const raster::RenderTarget& target = renderer_->target();
+        target.readCoverage(pickCoverage_);
+        ids = &pickCoverage_;
+        width = target.width();
+        height = target.height();
+    }
+    if (x < 0 || y < 0 || x >= width || y >= height || ids->empty()) return 0;
+    return (*ids)[size_t(y) * size_t(width) + size_t(x)];
 }
 
 const std::vector<uint8_t>& PageLab::rasterCoverageImage() {

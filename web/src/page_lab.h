@@ -6,6 +6,7 @@
 // `shadelab render`: one render::RenderRequest per image, converted by render/render_request.h.
 #pragma once
 
+#include "app/image_view.h"
 #include "app/viewer_state.h"
 #include "image/image.h"
 #include "raster/raster_renderer.h"
@@ -54,8 +55,14 @@ public:
     // The rasterizer's picture at width x height: `shadelab render --renderer raster` of the same scene, as RGBA
     // bytes (alpha 255), row 0 at the top. Its coverage ids are kept for picking and for the comparison.
     const std::vector<uint8_t>& renderRaster(int width, int height);
-    // The coverage id under pixel (x, y) of the last raster picture; 0 for the background or outside.
-    uint32_t objectAt(int x, int y) const;
+    // The rasterizer's picture at width x height shown on the canvas itself (the page's context's default
+    // framebuffer, which the page sizes to width x height), through the viewer's display pass (app/image_view.h)
+    // with the selected object outlined, and nothing read back: the viewer's path, with its partial redraw (a
+    // material edit redraws only that object's pixels). What a slider drag draws; renderRaster is for the
+    // images the page reads.
+    void drawRaster(int width, int height);
+    // The coverage id under pixel (x, y) of the last raster picture (either call); 0 for the background or outside.
+    uint32_t objectAt(int x, int y);
     // The last raster picture's coverage ids as RGBA bytes (compare/coverage_image.h), what
     // `shadelab render --coverage` writes for the same render.
     const std::vector<uint8_t>& rasterCoverageImage();
@@ -88,10 +95,13 @@ private:
 
     WebContext context_;
     std::unique_ptr<raster::RasterRenderer> renderer_;
+    std::unique_ptr<app::ImageView> view_;
+    bool coverageInTarget_ = false;  // the last raster picture was drawRaster's: its ids are in the GL target
     app::ViewerState state_;
     uint64_t uploadedGeometry_ = 0;
     Image8 raster_, reference_;  // RGB, the images compared
     std::vector<uint32_t> rasterCoverage_, referenceCoverage_;
+    std::vector<uint32_t> pickCoverage_;  // objectAt's read of drawRaster's ids
     std::vector<uint8_t> rasterRgba_, referenceRgba_, globalRgba_, heatRgba_, coverageRgba_;
     std::string differenceText_;
 };
