@@ -33,8 +33,8 @@ struct ImageViewInputs {
 
 class ImageView {
 public:
-    // Keeps a copy of `shaders` in the current context's dialect (GLSL 3.30 or ES 3.00); each program is built at its first draw (a browser compiles them one by one, and
-    // a page that only shows the raster image needs one of the 32).
+    // Keeps a copy of `shaders` in the current context's dialect (GLSL 3.30 or ES 3.00); each program is built at its
+    // first draw (a browser compiles them one by one, and a page that only shows the raster image needs one of the 32).
     explicit ImageView(const gl::ShaderLibrary& shaders);
     // Builds every program now (throws InputError on a shader error): the viewer's hot reload wants a broken
     // shader reported when it reloads, not at the next draw.
