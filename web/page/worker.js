@@ -1,5 +1,5 @@
 // One of the page's tracers (tracer_pool.js): a copy of the lab's module in a Web Worker, instantiated once
-// from the wasm the page compiled, tracing the tiles it is handed of the scene the page sends (its saved JSON).
+// from the wasm the page compiled, tracing its share of the tiles of the scene the page sends (its saved JSON).
 // No lighting here: the C++ (web/src/worker_tracer.h) does all of it.
 'use strict';
 importScripts('shadelab.js');
@@ -29,6 +29,15 @@ function withTracer(M, msg) {
   return tracer;
 }
 
+// Resolves in a task of its own, after the messages already queued: a loop that awaits it between pieces of
+// work lets a stop in (a MessageChannel, because a worker's setTimeout(0) is held back to 4 ms once nested).
+const channel = new MessageChannel();
+const waiting = [];
+channel.port1.onmessage = () => waiting.shift()();
+function nextTask() {
+  return new Promise((resolve) => { waiting.push(resolve); channel.port2.postMessage(0); });
+}
+
 function drop() {
   if (current) current.tracer.delete();
   current = null;
@@ -43,13 +52,18 @@ onmessage = async (event) => {
     if (msg.kind === 'stop') {
       drop();
     } else if (msg.kind === 'reference') {
+      // Tiles first, first + step, ... of the job (the pool's workers share them by turns), each sent when
+      // done; between tiles the next message gets in, and a stop or a new job ends this one.
       drop();
-      current = { job: msg.job, tracer: withTracer(M, msg) };
-      postMessage({ kind: 'count', job: msg.job, count: current.tracer.startReference(msg.width, msg.height) });
-    } else if (msg.kind === 'tile') {
-      if (!current || current.job !== msg.job) return;  // a tile of a job that was replaced
-      const t = current.tracer.traceTile(msg.index);
-      postMessage({ kind: 'tile', job: msg.job, index: msg.index, tile: t }, [t.rgba.buffer, t.coverage.buffer]);
+      const mine = { job: msg.job, tracer: withTracer(M, msg) };
+      current = mine;
+      const count = mine.tracer.startReference(msg.width, msg.height);
+      postMessage({ kind: 'count', job: msg.job, count });
+      for (let i = msg.first; i < count && current === mine; i += msg.step) {
+        const t = mine.tracer.traceTile(i);
+        postMessage({ kind: 'tile', job: msg.job, index: i, tile: t }, [t.rgba.buffer, t.coverage.buffer]);
+        await nextTask();
+      }
     } else if (msg.kind === 'global') {
       // The path tracer, one sample per pixel a pass, the running mean after each, until another job comes.
       drop();
@@ -60,7 +74,7 @@ onmessage = async (event) => {
         mine.tracer.addGlobalSamples(1);
         const rgba = mine.tracer.globalImage();
         postMessage({ kind: 'global', job: msg.job, samples: mine.tracer.globalSamples(), rgba }, [rgba.buffer]);
-        await new Promise((r) => setTimeout(r, 0));  // lets the next message (a stop, a new job) in
+        await nextTask();  // lets the next message (a stop, a new job) in
       }
       if (current === mine) drop();
     }
