@@ -104,7 +104,11 @@
   // Draws what the view mode shows; starts the tracers the mode needs and are not current.
   function show() {
     $('difference-text').textContent = '';
-    if (mode !== 'global' && pool.running() === 'global') { pool.stop(); globalJob = null; }  // nobody watches it
+    if (mode !== 'global' && pool.running() === 'global') {  // nobody watches it
+      pool.stop();
+      globalJob = null;
+      $('progress').textContent = '';
+    }
     view.classList.toggle('off', mode === 'raster');
     if (mode === 'raster') { if (!glDrawn) drawGl(); return; }
     const raster = rasterPicture();

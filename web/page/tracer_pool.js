@@ -2,8 +2,8 @@
 // start workers). The wasm is compiled once, by the page, and handed to every worker. A reference job sends the
 // scene to every worker, and worker k traces tiles k, k + n, k + 2n, ... of it without waiting for the page
 // (the tiles are small and many, so the shares even out); a new job, or a stop, ends the old one between tiles,
-// and tiles of an old job that arrive late are dropped. The Global view's path tracer runs in worker 0, a pass
-// at a time, until another job replaces it.
+// and tiles of an old job that arrive late are dropped. The Global view's path tracer shares the rows the same
+// way (worker k: rows k, k + n, ...), a pass at a time, until another job replaces it.
 'use strict';
 class TracerPool {
   constructor(count, wasmModule) {
@@ -12,7 +12,7 @@ class TracerPool {
     for (let k = 0; k < count; ++k) {
       const worker = new Worker('worker.js');
       worker.postMessage({ kind: 'init', module: wasmModule });
-      worker.onmessage = (e) => this._receive(e.data);
+      worker.onmessage = (e) => this._receive(k, e.data);
       this.workers.push({ worker });
     }
     this.current = null;
@@ -44,14 +44,27 @@ class TracerPool {
     return done;
   }
 
-  // The path tracer's progressive image of `scene` at w x h; onImage({rgba, samples}) after each pass.
+  // The path tracer's progressive image of `scene` at w x h, the rows shared by turns between the workers;
+  // onImage({rgba, samples}) whenever a worker has finished a pass, `samples` the fewest any row has.
   global(scene, w, h, onImage, onError) {
     this.stop();
-    this.current = { id: this.job, kind: 'global', onImage, onError };
-    this.workers[0].worker.postMessage({ kind: 'global', job: this.job, ...scene, width: w, height: h, samples: 4096 });
+    const n = this.workers.length;
+    this.current = { id: this.job, kind: 'global', w, h, onImage, onError, rgba: new Float32Array(w * h * 4),
+      passes: new Array(n).fill(0) };
+    this.workers.forEach((worker, k) => worker.worker.postMessage(
+      { kind: 'global', job: this.job, ...scene, width: w, height: h, samples: 4096, first: k, step: n }));
   }
 
-  _receive(m) {
+  // A worker's rows of the Global image (first = k, step = the pool's size) into the whole.
+  _globalRows(job, k, m) {
+    const n = this.workers.length, row = job.w * 4;
+    for (let y = k, i = 0; y < job.h; y += n, ++i) job.rgba.set(m.rows.subarray(i * row, (i + 1) * row), y * row);
+    job.passes[k] = m.samples;
+    const samples = Math.min(...job.passes);
+    if (samples > 0) job.onImage({ rgba: job.rgba, samples });  // shown once every row has a sample
+  }
+
+  _receive(k, m) {
     const job = this.current;
     if (!job || m.job !== job.id) return;
     if (m.kind === 'error') {
@@ -63,7 +76,7 @@ class TracerPool {
       return;
     }
     if (m.kind === 'count') { job.count = m.count; return; }
-    if (m.kind === 'global') { job.onImage(m); return; }
+    if (m.kind === 'global') { this._globalRows(job, k, m); return; }
     const t = m.tile;
     for (let y = 0; y < t.height; ++y) {
       job.rgba.set(t.rgba.subarray(y * t.width * 4, (y + 1) * t.width * 4), ((t.y0 + y) * job.w + t.x0) * 4);

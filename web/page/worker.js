@@ -65,15 +65,16 @@ onmessage = async (event) => {
         await nextTask();
       }
     } else if (msg.kind === 'global') {
-      // The path tracer, one sample per pixel a pass, the running mean after each, until another job comes.
+      // The path tracer over this worker's share of the rows (first, first + step, ...), one sample per pixel a
+      // pass, the running mean of those rows after each, until another job comes.
       drop();
       const mine = { job: msg.job, tracer: withTracer(M, msg) };
       current = mine;
       mine.tracer.startGlobal(msg.width, msg.height);
-      for (let pass = 0; pass < msg.samples && current === mine; ++pass) {
-        mine.tracer.addGlobalSamples(1);
-        const rgba = mine.tracer.globalImage();
-        postMessage({ kind: 'global', job: msg.job, samples: mine.tracer.globalSamples(), rgba }, [rgba.buffer]);
+      for (let pass = 1; pass <= msg.samples && current === mine; ++pass) {
+        mine.tracer.addGlobalRowSamples(1, msg.first, msg.step);
+        const rows = mine.tracer.globalRows(msg.first, msg.step);
+        postMessage({ kind: 'global', job: msg.job, samples: pass, rows }, [rows.buffer]);
         await nextTask();  // lets the next message (a stop, a new job) in
       }
       if (current === mine) drop();

@@ -110,6 +110,10 @@ val globalImage(const WorkerTracer& tracer) {
         .new_(val(emscripten::typed_memory_view(n, image.width ? image.pixel(0, 0) : nullptr)));
 }
 
+val globalRows(const WorkerTracer& tracer, int first, int step) {
+    return val::global("Float32Array").new_(view(tracer.globalRows(first, step)));
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(shadelab) {
@@ -147,7 +151,9 @@ EMSCRIPTEN_BINDINGS(shadelab) {
         .function("startGlobal", &WorkerTracer::startGlobal)
         .function("addGlobalSamples", &WorkerTracer::addGlobalSamples)
         .function("globalSamples", &WorkerTracer::globalSamples)
-        .function("globalImage", &globalImage);
+        .function("globalImage", &globalImage)
+        .function("addGlobalRowSamples", &WorkerTracer::addGlobalRowSamples)
+        .function("globalRows", &globalRows);
 }
 
 }  // namespace shadelab::web

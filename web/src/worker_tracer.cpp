@@ -61,4 +61,20 @@ void WorkerTracer::addGlobalSamples(int count) {
 
 ImageF WorkerTracer::globalImage() const { return path_ ? path_->image() : ImageF(); }
 
+void WorkerTracer::addGlobalRowSamples(int count, int first, int step) {
+    if (path_) path_->addSamplesToRows(count, first, step);
+}
+
+std::vector<float> WorkerTracer::globalRows(int first, int step) const {
+    std::vector<float> out;
+    if (!path_ || step <= 0 || first < 0) return out;
+    const int width = path_->width();
+    for (int y = first; y < path_->height(); y += step)
+        for (int x = 0; x < width; ++x) {
+            const glm::vec3 m = path_->mean(x, y);
+            out.insert(out.end(), {m.r, m.g, m.b, 1.0f});
+        }
+    return out;
+}
+
 }  // namespace shadelab::web

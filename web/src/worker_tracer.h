@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace shadelab::web {
 
@@ -35,6 +36,11 @@ public:
     void addGlobalSamples(int count);
     int globalSamples() const { return path_ ? path_->samples() : 0; }
     ImageF globalImage() const;
+    // This worker's share of the Global image when several share it: `count` more samples in rows first,
+    // first + step, ... (trace::PathRender::addSamplesToRows), and the running mean of just those rows, packed
+    // one after the other (linear RGBA).
+    void addGlobalRowSamples(int count, int first, int step);
+    std::vector<float> globalRows(int first, int step) const;
 
 private:
     std::shared_ptr<const trace::TraceScene> scene_;

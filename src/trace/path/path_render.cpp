@@ -113,6 +113,12 @@ bool PathRender::addSamples(int count, const std::atomic<bool>* cancel, const st
     return !stopped.load();
 }
 
+void PathRender::addSamplesToRows(int count, int first, int step) {
+    if (count <= 0 || step <= 0 || first < 0) return;
+    for (int y = first; y < settings_.height; y += step)
+        for (int x = 0; x < settings_.width; ++x) renderPixel(x, y, count);
+}
+
 int PathRender::samples() const {
     uint32_t fewest = ~0u;
     const size_t n = size_t(settings_.width) * size_t(settings_.height);

@@ -34,6 +34,11 @@ public:
     bool addSamples(int count, const std::atomic<bool>* cancel = nullptr,
                     const std::function<void(float)>& progress = {});
 
+    // Adds `count` samples to the pixels of rows first, first + step, ... on the calling thread alone: one Web
+    // Worker's share of the image (the web page splits the rows between its workers). Each pixel gets the bytes
+    // addSamples would give it, so the shares put together are the image of one PathRender.
+    void addSamplesToRows(int count, int first, int step);
+
     int width() const { return settings_.width; }
     int height() const { return settings_.height; }
     const PathSettings& settings() const { return settings_; }

@@ -434,6 +434,31 @@ TEST(PathDeterminism, AnyThreadCountTileSizeOrPassSplitGivesTheSameBytes) {
     EXPECT_FALSE(sameBytes(one, pathRun(scene, s).render->image()));
 }
 
+// The web page's workers share the rows by turns; put together, their pixels are one render's bytes.
+TEST(PathDeterminism, RowSharesPutTogetherGiveTheSameBytes) {
+    Scene scene = areaLightScene();
+    PathSettings s = small(40, 30, 6, 5);
+    s.threads = 1;
+    const ImageF one = pathRun(scene, s).render->image();
+    const auto traced = std::make_shared<const TraceScene>(scene);
+    PathRender a(traced, s), b(traced, s);
+    a.addSamplesToRows(2, 0, 2);
+    a.addSamplesToRows(4, 0, 2);
+    b.addSamplesToRows(6, 1, 2);
+    ImageF joined(s.width, s.height);
+    for (int y = 0; y < s.height; ++y) {
+        const ImageF share = (y % 2 == 0 ? a : b).image();
+        std::memcpy(joined.pixel(0, y), share.pixel(0, y), size_t(s.width) * 4 * sizeof(float));
+    }
+    EXPECT_TRUE(sameBytes(one, joined));
+    EXPECT_EQ(b.pixelSamples(3, 1), 6u);
+    EXPECT_EQ(b.pixelSamples(3, 0), 0u) << "a row of the other share";
+    // Negative control: a share with a sample fewer is not the same image.
+    PathRender c(traced, s);
+    c.addSamplesToRows(5, 0, 1);
+    EXPECT_FALSE(sameBytes(one, c.image()));
+}
+
 TEST(PathDeterminism, ACancelledPassKeepsWholePixels) {
     Scene scene = areaLightScene();
     PathSettings s = small(16, 16, 4, 2);
