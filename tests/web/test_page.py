@@ -585,3 +585,27 @@ def test_dropped_file_opens(app, evidence):
     (evidence / "message.txt").write_text(message)
     assert "broken.json" in message and "\n" not in message, message
     assert json.loads(app.js("shadelab.exportScene()"))["title"] == "dropped here", "a bad drop lost the scene shown"
+
+
+# ---- h. the Global view: the path tracer over the workers ----
+
+
+def test_global_matches_native_path_tracer(app, binary, evidence):
+    """The page's Global picture at 8 samples per pixel, its rows shared between the workers, against
+    `shadelab render --renderer path --spp 8`; and at 4 samples it is another picture (the control)."""
+    app.load_scene("default.json")
+    page = evidence / "page-global.png"
+    app._png("shadelab.globalDataUrl(8)", page)
+    scene = SOURCE_DIR / "assets" / "scenes" / "default.json"
+    native = evidence / "native-path.png"
+    args = [str(binary), "render", str(scene), "--renderer", "path", "--spp", "8", "--size", f"{SIZE[0]}x{SIZE[1]}",
+            "-o", str(native)]
+    p = subprocess.run(args, capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    equal, summary = compare_exact(page, native, evidence, "global")
+    assert equal, f"the page's Global picture at 8 spp differs from the native path tracer's: {summary}"
+    fewer = evidence / "page-global-4.png"
+    app._png("shadelab.globalDataUrl(4)", fewer)
+    equal, summary = compare_exact(fewer, native, evidence, "global-4")
+    assert not equal, "4 samples gave the 8-sample picture: the comparison is blind"
+    app.js("shadelab.setView('raster')")

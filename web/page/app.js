@@ -83,18 +83,22 @@
     reference = r;
   }
 
-  function startGlobal() {
+  // The path tracer's progressive picture, up to `limit` samples per pixel; job.done resolves with it there.
+  function startGlobal(limit = 4096) {
     const w = width, h = height;
     const job = { image: null, samples: 0 };
+    job.done = new Promise((resolve, reject) => { job.resolve = resolve; job.reject = reject; });
+    job.done.catch(() => {});
     globalJob = job;
     pool.global(sceneMessage(), w, h, (m) => {
       const bytes = lab.encodeGlobal(m.rgba, w, h);
-      if (typeof bytes === 'string') { setMessage(bytes); return; }
+      if (typeof bytes === 'string') { setMessage(bytes); job.reject(new Error(bytes)); return; }
       job.image = imageOf(bytes);
       job.samples = m.samples;
       $('progress').textContent = `path traced: ${m.samples} samples per pixel`;
+      if (m.samples >= limit) job.resolve(job.image);
       if (globalJob === job) show();
-    }, (e) => setMessage(e.message));
+    }, (e) => { setMessage(e.message); job.reject(e); }, limit);
   }
 
   function referenceCurrent() {
@@ -496,6 +500,16 @@
     async probe(x, y) {
       await redraw();
       return lab.probe(x, y, width, height);
+    },
+    // Promise of the Global view's picture at exactly `samples` samples per pixel (PNG data URL), as
+    // `shadelab render --renderer path --spp N` writes it; switches the view to Global.
+    async globalDataUrl(samples) {
+      if (!(Number.isInteger(samples) && samples >= 1 && samples <= 4096))
+        throw new Error(`globalDataUrl: ${samples} is not a sample count from 1 to 4096`);
+      api.setView('global');
+      await redraw();
+      startGlobal(samples);
+      return pngOf(await globalJob.done);
     },
     exportScene() { return lab.sceneJson(); },
     // Promise of this page's address with the edited scene and the view in its hash (share_link.js).

@@ -44,15 +44,16 @@ class TracerPool {
     return done;
   }
 
-  // The path tracer's progressive image of `scene` at w x h, the rows shared by turns between the workers;
-  // onImage({rgba, samples}) whenever a worker has finished a pass, `samples` the fewest any row has.
-  global(scene, w, h, onImage, onError) {
+  // The path tracer's progressive image of `scene` at w x h up to `samples` per pixel, the rows shared by turns
+  // between the workers; onImage({rgba, samples}) whenever a worker has finished a pass, `samples` the fewest any
+  // row has.
+  global(scene, w, h, onImage, onError, samples = 4096) {
     this.stop();
     const n = this.workers.length;
     this.current = { id: this.job, kind: 'global', w, h, onImage, onError, rgba: new Float32Array(w * h * 4),
       passes: new Array(n).fill(0) };
     this.workers.forEach((worker, k) => worker.worker.postMessage(
-      { kind: 'global', job: this.job, ...scene, width: w, height: h, samples: 4096, first: k, step: n }));
+      { kind: 'global', job: this.job, ...scene, width: w, height: h, samples, first: k, step: n }));
   }
 
   // A worker's rows of the Global image (first = k, step = the pool's size) into the whole.
