@@ -274,8 +274,12 @@ const std::vector<uint8_t>& PageLab::differenceImage() {
 
 std::string PageLab::probe(int x, int y, int width, int height) {
     try {
-        const trace::TraceScene traced(state_.scene);
-        const ProbeResult p = probePixel(traced, width, height, x, y);
+        // The tracer's copy of the scene (its BVH) is kept until the scene changes: clicks in a row reuse it.
+        if (!probeScene_ || probeRevision_ != state_.revision) {
+            probeScene_ = std::make_unique<trace::TraceScene>(state_.scene);
+            probeRevision_ = state_.revision;
+        }
+        const ProbeResult p = probePixel(*probeScene_, width, height, x, y);
         app::setProbe(state_, x, y);
         if (p.hit) state_.probe.anchor = ProbeAnchor{p.objectId, p.P};
         return probeReportJson(p, state_.scene, p.objectId);

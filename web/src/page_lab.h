@@ -10,6 +10,7 @@
 #include "app/viewer_state.h"
 #include "image/image.h"
 #include "raster/raster_renderer.h"
+#include "trace/trace_scene.h"
 #include "web_context.h"
 
 #include <cstdint>
@@ -102,6 +103,8 @@ private:
     Image8 raster_, reference_;  // RGB, the images compared
     std::vector<uint32_t> rasterCoverage_, referenceCoverage_;
     std::vector<uint32_t> pickCoverage_;  // objectAt's read of drawRaster's ids
+    std::unique_ptr<trace::TraceScene> probeScene_;  // probe's tracer scene, of state_ at probeRevision_
+    uint64_t probeRevision_ = 0;
     std::vector<uint8_t> rasterRgba_, referenceRgba_, globalRgba_, heatRgba_, coverageRgba_;
     std::string differenceText_;
 };
