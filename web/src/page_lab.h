@@ -102,7 +102,7 @@ private:
     uint64_t uploadedGeometry_ = 0;
     Image8 raster_, reference_;  // RGB, the images compared
     std::vector<uint32_t> rasterCoverage_, referenceCoverage_;
-    std::vector<uint32_t> pickCoverage_;  // objectAt's read of drawRaster's ids
+    std::vector<uint32_t> pickCoverage_;             // objectAt's read of drawRaster's ids
     std::unique_ptr<trace::TraceScene> probeScene_;  // probe's tracer scene, of state_ at probeRevision_
     uint64_t probeRevision_ = 0;
     std::vector<uint8_t> rasterRgba_, referenceRgba_, globalRgba_, heatRgba_, coverageRgba_;
