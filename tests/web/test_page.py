@@ -535,7 +535,8 @@ def test_link_round_trips(app, browser, evidence):
     page.close()
 
 
-@pytest.mark.parametrize("damage", ["truncated", "garbage", "altered", "foreign-folder", "unknown-view"])
+@pytest.mark.parametrize("damage", ["truncated", "garbage", "altered", "foreign-folder", "missing-folder",
+                                    "unknown-view"])
 def test_bad_link_shows_the_message_and_the_default_scene(app, browser, evidence, damage):
     app.load_scene("default.json")
     move_shininess(app, 4.0)
@@ -547,6 +548,7 @@ def test_bad_link_shows_the_message_and_the_default_scene(app, browser, evidence
         "garbage": "v1,raster,%2Fassets%2Fscenes,@@not-base64@@",
         "altered": f"{version},{view},{folder},{scene[:20]}{'A' * 40}{scene[60:]}",
         "foreign-folder": f"{version},{view},%2Fetc,{scene}",
+        "missing-folder": f"{version},{view},%2Fassets%2Fno-such-folder,{scene}",
         "unknown-view": f"{version},sideways,{folder},{scene}",
     }[damage]
     (evidence / "link.txt").write_text(f"{base}#{bad}")

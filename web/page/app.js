@@ -340,7 +340,11 @@
     try {
       const link = await ShareLink.decode(hash, VIEWS);
       const path = link.folder + '/.link-scene.json';
-      M.FS.writeFile(path, link.sceneJson);
+      try {
+        M.FS.writeFile(path, link.sceneJson);
+      } catch (e) {
+        throw new Error(`link: the page has no folder "${link.folder}"; showing the default scene`);
+      }
       error = lab.open(path);
       if (!error) {
         $('scene').value = '';
