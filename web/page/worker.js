@@ -18,14 +18,24 @@ function start(wasmModule) {
   modulePromise = createShadelab(options);
 }
 
+// The tracer of the scene the page sent. The last one is kept: a job of the same scene text (another size,
+// another view, the reference after Global) reuses its BVH. Files opened from disk may change under the same
+// name, so a scene that has them is always built afresh.
+let kept = null;  // {key, tracer}
 function withTracer(M, msg) {
+  const files = msg.files || [];
+  const key = files.length ? null : msg.sceneDir + '\n' + msg.sceneJson;
+  if (kept && key !== null && kept.key === key) return kept.tracer;
+  if (kept) kept.tracer.delete();
+  kept = null;
   // The files the user opened in the page, at the same paths in this worker's file system.
-  for (const f of msg.files || []) {
+  for (const f of files) {
     try { M.FS.mkdir(f.path.slice(0, f.path.lastIndexOf('/'))); } catch (e) { /* exists */ }
     M.FS.writeFile(f.path, f.bytes);
   }
   const tracer = M.createTracer(msg.sceneJson, msg.sceneDir);
   if (!tracer) throw new Error(M.createError());
+  kept = { key, tracer };
   return tracer;
 }
 
@@ -38,8 +48,8 @@ function nextTask() {
   return new Promise((resolve) => { waiting.push(resolve); channel.port2.postMessage(0); });
 }
 
+// Ends the job in hand (its loop sees current change and stops); the tracer stays kept for the next job.
 function drop() {
-  if (current) current.tracer.delete();
   current = null;
 }
 
