@@ -611,3 +611,16 @@ def test_global_matches_native_path_tracer(app, binary, evidence):
     equal, summary = compare_exact(fewer, native, evidence, "global-4")
     assert not equal, "4 samples gave the 8-sample picture: the comparison is blind"
     app.js("shadelab.setView('raster')")
+
+
+def test_global_resumes_after_a_reference(app, evidence):
+    """A reference asked for while Global runs takes the workers; Global then starts again by itself."""
+    app.load_scene("default.json")
+    app.js("shadelab.setView('global')")
+    samples = "parseInt((document.querySelector('#progress').textContent.match(/(\\d+) samples/) || [0, 0])[1])"
+    app.page.wait_for(f"{samples} >= 1", timeout=RENDER_TIMEOUT)
+    app.image("reference", evidence / "reference.png")
+    app.page.wait_for(f"{samples} >= 1", timeout=RENDER_TIMEOUT)
+    app.page.screenshot(evidence / "global-again.png")
+    app.js("shadelab.setView('raster')")
+    assert app.js("document.querySelector('#progress').textContent") == "", "leaving Global left its progress line"

@@ -64,6 +64,7 @@
 
   // The Whitted reference of the scene as it is now, traced by the pool's workers over tiles.
   function startReference() {
+    if (pool.running() === 'global') globalJob = null;  // the pool stops it; Global starts again when shown
     const w = width, h = height, t0 = performance.now();
     const r = { revision: lab.referenceRevision(), width: w, height: h, image: null };
     r.done = pool.reference(sceneMessage(), w, h, (f) => { $('progress').textContent = `reference ${Math.round(100 * f)} %`; })
