@@ -62,6 +62,18 @@ Image8 encodeLinear(const std::vector<float>& rgba, int width, int height, const
     return toImage8(image, request.encoding, render::displayOf(request, scene), nullptr);
 }
 
+// The page's raster picture: `shadelab render --renderer raster` at width x height, with coverage ids (for
+// picking and the comparison). Throws SettingError for a size out of range.
+render::RenderRequest rasterRequest(int width, int height) {
+    render::RenderRequest request;
+    request.engine = render::Engine::Raster;
+    request.width = width;
+    request.height = height;
+    request.coverage = true;
+    render::require(request);
+    return request;
+}
+
 }  // namespace
 
 PageLab::PageLab(const std::string& canvas)
@@ -190,12 +202,7 @@ void PageLab::uploadIfNeeded() {
 
 const std::vector<uint8_t>& PageLab::renderRaster(int width, int height) {
     uploadIfNeeded();
-    render::RenderRequest request;
-    request.engine = render::Engine::Raster;
-    request.width = width;
-    request.height = height;
-    request.coverage = true;
-    render::require(request);
+    const render::RenderRequest request = rasterRequest(width, height);
     raster::OffscreenResult r =
         raster::renderOffscreen(*renderer_, state_.scene, render::toOffscreen(request, state_.scene));
     raster_ = std::move(r.pixels);
@@ -207,12 +214,7 @@ const std::vector<uint8_t>& PageLab::renderRaster(int width, int height) {
 
 void PageLab::drawRaster(int width, int height) {
     uploadIfNeeded();
-    render::RenderRequest request;
-    request.engine = render::Engine::Raster;
-    request.width = width;
-    request.height = height;
-    request.coverage = true;
-    render::require(request);
+    const render::RenderRequest request = rasterRequest(width, height);
     renderer_->draw(state_.scene, width, height, true);
     const raster::RenderTarget& target = renderer_->target();
     app::ImageViewInputs in;
