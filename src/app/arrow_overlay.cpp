@@ -60,18 +60,36 @@ ArrowOverlay::ArrowOverlay(const gl::ShaderLibrary& shaders) {
 std::vector<ArrowLabel> ArrowOverlay::draw(const Scene& scene, const ProbeResult& probe, int renderWidth,
                                            int renderHeight, const ImageRect& rect, int windowHeight,
                                            float pixelScale) {
-    std::vector<ArrowLabel> labels;
-    if (!probe.hit || rect.width <= 0 || rect.height <= 0) return labels;
+    if (!probe.hit) return {};
     const ViewSetup view = makeViewSetup(scene, renderWidth, renderHeight);
     // About a fifth of the image height for an arrow across the view, whatever the distance.
     const float length = 0.4f * glm::length(probe.P - view.eye) * view.tanHalfFovY;
-    const std::vector<Arrow> arrows = probeArrows(probe);
+    std::vector<ArrowSegment> segments;
+    for (const Arrow& a : probeArrows(probe)) segments.push_back({probe.P, probe.P + length * a.direction, a.color, a.label});
+    return draw(scene, segments, renderWidth, renderHeight, rect, windowHeight, pixelScale);
+}
+
+std::vector<ArrowLabel> ArrowOverlay::draw(const Scene& scene, const std::vector<ArrowSegment>& segments,
+                                           int renderWidth, int renderHeight, const ImageRect& rect, int windowHeight,
+                                           float pixelScale) {
+    std::vector<ArrowLabel> labels;
+    if (segments.empty() || rect.width <= 0 || rect.height <= 0) return labels;
+    const ViewSetup view = makeViewSetup(scene, renderWidth, renderHeight);
+    const glm::vec3 forward = view.forward;
+    const float near = view.zNear;
     std::vector<Vertex> outline, fill;
-    for (const Arrow& a : arrows) {
-        const glm::vec3 tip = probe.P + length * a.direction;
-        addArrow(outline, probe.P, tip, glm::vec3(0.0f), 5.0f * pixelScale, 16.0f * pixelScale, 14.0f * pixelScale);
-        addArrow(fill, probe.P, tip, a.color, 2.5f * pixelScale, 14.0f * pixelScale, 10.0f * pixelScale);
-        const glm::vec4 clip = view.viewProj * glm::vec4(tip, 1.0f);
+    for (const ArrowSegment& a : segments) {
+        // Clip against a plane just in front of the eye: the projection of what lies behind it is meaningless.
+        glm::vec3 base = a.base, tip = a.tip;
+        const float db = glm::dot(base - view.eye, forward) - near, dt = glm::dot(tip - view.eye, forward) - near;
+        if (db <= 0.0f && dt <= 0.0f) continue;
+        if (db < 0.0f) base = base + (tip - base) * (db / (db - dt));
+        if (dt < 0.0f) tip = tip + (base - tip) * (dt / (dt - db));
+        const float w = a.width * pixelScale;
+        addArrow(outline, base, tip, glm::vec3(0.0f), 5.0f * w, 16.0f * pixelScale, 14.0f * pixelScale);
+        addArrow(fill, base, tip, a.color, 2.5f * w, 14.0f * pixelScale, 10.0f * pixelScale);
+        if (a.label.empty()) continue;
+        const glm::vec4 clip = view.viewProj * glm::vec4(glm::mix(base, tip, a.labelAt), 1.0f);
         if (clip.w <= 0.0f) continue;
         const glm::vec2 ndc(clip.x / clip.w, clip.y / clip.w);
         const glm::vec2 glPos(float(rect.x) + (ndc.x * 0.5f + 0.5f) * float(rect.width),

@@ -28,6 +28,14 @@ struct Arrow {
 // The arrows of a probe: N, V, then L, R, H for each light (labelled L1, R1, H1, ... with two or more lights).
 std::vector<Arrow> probeArrows(const ProbeResult& probe);
 
+// One arrow from `base` to `tip` in world units, its label placed at `labelAt` (0 the base, 1 the tip).
+struct ArrowSegment {
+    glm::vec3 base, tip, color;
+    std::string label;
+    float labelAt = 1.0f;
+    float width = 1.0f;  // times the probe arrows' shaft width
+};
+
 class ArrowOverlay {
 public:
     explicit ArrowOverlay(const gl::ShaderLibrary& shaders);
@@ -35,6 +43,10 @@ public:
     // renderHeight of `scene`; arrows start at probe.P. `windowHeight` converts label positions to y-down.
     std::vector<ArrowLabel> draw(const Scene& scene, const ProbeResult& probe, int renderWidth, int renderHeight,
                                  const ImageRect& rect, int windowHeight, float pixelScale);
+    // Any arrows, seen by the scene's camera. The part of a segment behind the camera is cut away, so a ray
+    // from an eye elsewhere draws from where it enters the view.
+    std::vector<ArrowLabel> draw(const Scene& scene, const std::vector<ArrowSegment>& segments, int renderWidth,
+                                 int renderHeight, const ImageRect& rect, int windowHeight, float pixelScale);
 
 private:
     gl::Program program_;

@@ -47,6 +47,7 @@ struct UiFields {
     float probeWindowWidth = 0.0f;            // window units, as last drawn (for placing it inside the image)
     float probeWindowHeight = 0.0f;           // unfolded; its size folded is not what placing it needs
     bool probeWindowHadRoom = true;           // the last placement fitted beside the point (else it folded)
+    int rayTreeRay = 0;                       // the ray of the tree whose algebra the probe window writes
     float lobeIncidence = 30.0f;              // degrees: the lobe plots' angle of incidence when no probe is set
     float lobeAxis = 90.0f;                   // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
     std::optional<AlbedoPlot> albedo;         // the albedo plot, recomputed when its settings change
@@ -77,12 +78,19 @@ struct GlobalInfo {
     int denoisedSamples = 0;  // of the newest denoised preview; 0: none yet
 };
 
+// The probe's ray tree in words (probe/ray_tree_view.h): one line per ray, and each ray's algebra.
+struct RayTreePanel {
+    std::vector<std::string> rays;
+    std::vector<std::vector<std::string>> algebra;
+};
+
 struct PanelContext {
     PanelContext(ViewerState& s, PanelServices& sv, UiFields& f) : state(s), services(sv), fields(f) {}
     ViewerState& state;
     PanelServices& services;
     UiFields& fields;
     const ProbeResult* probe = nullptr;  // null when no probe is set
+    const RayTreePanel* rayTree = nullptr;  // the probe's ray tree, while it is drawn (ProbeState::rayTree)
     ReferenceInfo reference;
     GlobalInfo global;                          // the path tracer of Global and Local | Global
     std::optional<GlobalEstimate> probeGlobal;  // its estimate at the probed pixel, in those modes

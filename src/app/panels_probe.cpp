@@ -10,6 +10,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // MovingWindow: whether the user is dragging the probe window
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -182,6 +183,27 @@ void diagram(const ProbeResult& p, float uiScale) {
                         d.lit ? "" : "; L is below the surface (unlit)");
 }
 
+// The ray tree the tracer followed from this pixel (drawn in the view), a ray per line; a click on one
+// writes its intersection as the lecture solves it, with the tracer's numbers.
+void rayTreeSection(PanelContext& ctx) {
+    bool on = ctx.state.probe.rayTree;
+    if (ImGui::Checkbox("ray tree in the view (T)", &on)) setRayTree(ctx.state, on);
+    if (!ctx.rayTree) return;
+    const RayTreePanel& t = *ctx.rayTree;
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu rays; traced from the eye of the click", t.rays.size());
+    const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
+    const float listHeight = std::min(float(t.rays.size()), 8.0f) * rowHeight + 4.0f;
+    if (ImGui::BeginChild("rays", ImVec2(0.0f, listHeight), false)) {
+        for (size_t k = 0; k < t.rays.size(); ++k)
+            if (ImGui::Selectable(t.rays[k].c_str(), ctx.fields.rayTreeRay == int(k))) ctx.fields.rayTreeRay = int(k);
+    }
+    ImGui::EndChild();
+    const size_t chosen = size_t(std::clamp(ctx.fields.rayTreeRay, 0, std::max(int(t.algebra.size()) - 1, 0)));
+    if (chosen < t.algebra.size())
+        for (const std::string& line : t.algebra[chosen]) ImGui::TextUnformatted(line.c_str());
+}
+
 }  // namespace
 
 void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
@@ -242,6 +264,11 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         };
         if (!p.lights.empty()) folded("lights", "each light", [&] { lightTable(p, shadows, pbr); });
         folded("totals", "terms, every model", [&] { totalsTable(p, ctx.state.scene.model, ctx.state.encoding); });
+        if (ImGui::TreeNodeEx("raytree", ctx.state.probe.rayTree ? ImGuiTreeNodeFlags_DefaultOpen : 0,
+                              "rays: r(t) = o + t\xc2\xb7" "d")) {
+            rayTreeSection(ctx);
+            ImGui::TreePop();
+        }
         if (ctx.probeGlobal && ctx.probeGlobal->samples > 0) {
             // The path tracer's estimate of the same pixel: what the local terms plus ambient approximate.
             const GlobalEstimate& g = *ctx.probeGlobal;

@@ -188,6 +188,7 @@ const ActionInfo kActions[] = {
          return Probe{a.child("x").integerIn(0, 16383), a.child("y").integerIn(0, 16383)};
      }},
     {"clearProbe", {}, [](const JsonNode&) -> Action { return ClearProbe{}; }},
+    {"rayTree", {"on"}, [](const JsonNode& a) -> Action { return RayTree{!a.has("on") || a.child("on").boolean()}; }},
     {"whiteFurnace",
      {"on"},
      [](const JsonNode& a) -> Action { return WhiteFurnace{!a.has("on") || a.child("on").boolean()}; }},
@@ -328,6 +329,7 @@ struct StateApplier {
     void operator()(const ResetCamera&) const { resetCamera(state); }
     void operator()(const Probe& x) const { setProbe(state, x.x, x.y); }
     void operator()(const ClearProbe&) const { clearProbe(state); }
+    void operator()(const RayTree& x) const { setRayTree(state, x.on); }
     void operator()(const WhiteFurnace& x) const { setWhiteFurnace(state, x.on); }
 };
 

@@ -102,6 +102,9 @@ struct Probe {
     int x = 0, y = 0;
 };  // pixels, row 0 at the top
 struct ClearProbe {};
+struct RayTree {
+    bool on = true;
+};  // setRayTree
 struct WhiteFurnace {
     bool on = true;
 };  // setWhiteFurnace
@@ -164,7 +167,7 @@ using Action =
                  actions::ToggleTerm, actions::Progression, actions::SetModel, actions::SwitchModel, actions::SetMode,
                  actions::SetEncoding, actions::SetDisplay, actions::SetGlobal, actions::SetSplit, actions::SetAmbient,
                  actions::SetRaster, actions::AddLight, actions::RemoveLight, actions::SetLight, actions::Orbit,
-                 actions::Zoom, actions::FrameAll, actions::ResetCamera, actions::Probe, actions::ClearProbe,
+                 actions::Zoom, actions::FrameAll, actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::RayTree,
                  actions::WhiteFurnace, actions::Screenshot, actions::ReferenceScreenshot, actions::WindowScreenshot,
                  actions::ProbeReport, actions::SaveScene, actions::Open, actions::ReloadShaders,
                  actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot,

@@ -106,6 +106,7 @@ bool Viewer::frame() {
 
     PanelContext ctx(state_, *this, fields_);
     ctx.probe = probe_ ? &*probe_ : nullptr;
+    ctx.rayTree = rayTree_ ? &rayTreePanel_ : nullptr;
     ctx.reference = {reference_->active(),  reference_->complete(), reference_->progress(),
                      reference_->seconds(), reference_->threads(),  reference_->error()};
     ctx.global = {global_->active(), global_->samples(), GlobalRenderer::kMaxSamples, global_->passProgress(),
@@ -324,10 +325,11 @@ void Viewer::updateProbe() {
     }
     ProbeState& p = state_.probe;
     if (probe_ && probeRevision_ == state_.revision && probeX_ == p.x && probeY_ == p.y && probeW_ == renderW_ &&
-        probeH_ == renderH_)
+        probeH_ == renderH_ && p.rayTree == rayTree_.has_value())
         return;
     const trace::TraceScene traced(state_.scene, reference_->meshBvh(state_.scene));
-    if (p.anchor.objectId == 0) {
+    const bool clicked = p.anchor.objectId == 0;
+    if (clicked) {
         probe_ = probePixel(traced, renderW_, renderH_, p.x, p.y);
         if (probe_->hit) p.anchor = ProbeAnchor{probe_->objectId, probe_->P};
     } else {
@@ -342,6 +344,31 @@ void Viewer::updateProbe() {
     }
     probeRevision_ = state_.revision;
     probeX_ = p.x, probeY_ = p.y, probeW_ = renderW_, probeH_ = renderH_;
+    updateRayTree(traced, clicked);
+}
+
+// The tree is traced once from the camera of the click (or of the moment T is pressed) and traced again
+// along the same primary ray when the scene changes, so orbiting walks around it rather than re-aiming it.
+void Viewer::updateRayTree(const trace::TraceScene& traced, bool clicked) {
+    const ProbeState& p = state_.probe;
+    if (!p.rayTree || !probe_ || !probe_->hit) {
+        rayTree_.reset();
+        return;
+    }
+    if (!rayTree_ || clicked || rayTreeAnchor_ != p.anchor.point) {
+        rayTree_ = recordRayTree(traced, renderW_, renderH_, p.x, p.y);
+        rayTreeAnchor_ = p.anchor.point;
+        fields_.rayTreeRay = 0;
+    } else {
+        rerecordRayTree(traced, *rayTree_);
+    }
+    const trace::RayTreeRecord& rec = rayTree_->record;
+    rayTreePanel_ = {};
+    for (size_t k = 0; k < rec.rays.size(); ++k) {
+        rayTreePanel_.rays.push_back(rayTreeRayLine(state_.scene, rec, k));
+        rayTreePanel_.algebra.push_back(rayTreeAlgebra(traced, rec, k));
+    }
+    fields_.rayTreeRay = std::clamp(fields_.rayTreeRay, 0, std::max(int(rec.rays.size()) - 1, 0));
 }
 
 void Viewer::compose() {
@@ -390,19 +417,34 @@ void Viewer::compose() {
     drawToast();
     if (fields_.lightMarkers) drawLightMarkers();  // over the captions: a light off the frame sits at its edge
     if (probe_ && probe_->hit) {
-        const std::vector<ArrowLabel> labels =
-            arrows_->draw(state_.scene, *probe_, renderW_, renderH_, fbRect_, fbH_, fbScale_ * uiScale_);
-        ImDrawList* dl = ImGui::GetForegroundDrawList();
-        for (const ArrowLabel& l : labels) {
-            const ImVec2 at(l.position.x / fbScale_ + 6.0f * uiScale_, l.position.y / fbScale_ - 10.0f * uiScale_);
-            const ImU32 color = ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, 1.0f));
-            dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 255), l.text.c_str());
-            dl->AddText(at, color, l.text.c_str());
-        }
+        if (rayTree_) drawRayTree();
+        drawArrowLabels(arrows_->draw(state_.scene, *probe_, renderW_, renderH_, fbRect_, fbH_, fbScale_ * uiScale_));
     }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     gl::checkError("viewer frame");
+}
+
+void Viewer::drawArrowLabels(const std::vector<ArrowLabel>& labels) {
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    for (const ArrowLabel& l : labels) {
+        const ImVec2 at(l.position.x / fbScale_ + 6.0f * uiScale_, l.position.y / fbScale_ - 10.0f * uiScale_);
+        const ImU32 color = ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, 1.0f));
+        dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 255), l.text.c_str());
+        dl->AddText(at, color, l.text.c_str());
+    }
+}
+
+// The ray tree as arrows in the view, each labelled at its middle; the ray whose algebra the probe window
+// shows drawn wider. Rays that leave the scene are drawn as long as the eye is from the probed point.
+void Viewer::drawRayTree() {
+    const float escape = glm::length(probe_->P - rayTree_->primary.origin);
+    std::vector<ArrowSegment> segments;
+    for (const RayTreeSegment& s : rayTreeSegments(state_.scene, rayTree_->record, escape)) {
+        const bool chosen = s.ray == fields_.rayTreeRay;
+        segments.push_back({s.from, s.to, s.color, s.label, 0.5f, chosen ? 1.6f : 0.8f});
+    }
+    drawArrowLabels(arrows_->draw(state_.scene, segments, renderW_, renderH_, fbRect_, fbH_, fbScale_ * uiScale_));
 }
 
 // A marker per light (light_markers.h): a disc in the light's colour, an arrow for a directional light, and

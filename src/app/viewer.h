@@ -14,6 +14,7 @@
 #include "app/image_view.h"
 #include "app/panels.h"
 #include "app/probe_window_place.h"
+#include "probe/ray_tree_view.h"
 #include "app/reference_renderer.h"
 #include "app/script.h"
 #include "app/undo_history.h"
@@ -71,6 +72,9 @@ private:
     // Whether the Global modes show the path tracer's denoised preview now (asked for, and one has arrived).
     bool showsDenoised() const;
     void updateProbe();
+    void updateRayTree(const trace::TraceScene& traced, bool clicked);
+    void drawRayTree();
+    void drawArrowLabels(const std::vector<ArrowLabel>& labels);
     void compose();
     void drawCaptions();
     // The status message (saved, refused, an error) over the bottom of the visible image while it is fresh.
@@ -151,6 +155,11 @@ private:
     std::optional<ProbeResult> probe_;
     uint64_t probeRevision_ = 0;
     int probeX_ = -1, probeY_ = -1, probeW_ = 0, probeH_ = 0;
+    // The probe's ray tree (key T), traced from where the camera was at the click and kept while it orbits,
+    // so that the class can walk around it; its rays in words and algebra for the probe window.
+    std::optional<RayTreeView> rayTree_;
+    RayTreePanel rayTreePanel_;
+    glm::vec3 rayTreeAnchor_{0.0f};  // the anchor point it was recorded for: another click records afresh
 
     // Difference metrics for a complete reference.
     std::optional<CompareResult> metrics_;

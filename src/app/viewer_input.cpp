@@ -181,6 +181,7 @@ void Viewer::handleKeys() {
             case GLFW_KEY_V: setMode(state_, ViewMode((int(state_.mode) + 1) % 6)); break;
             case GLFW_KEY_TAB: showPanel_ = !showPanel_; break;
             case GLFW_KEY_C: fields_.captions = !fields_.captions; break;
+            case GLFW_KEY_T: setRayTree(state_, !state_.probe.rayTree); break;
             case GLFW_KEY_D: setGlobalDenoise(state_, !state_.globalDenoise); break;
             case GLFW_KEY_F11: overlayPanel_ = !overlayPanel_; break;
             case GLFW_KEY_ESCAPE:

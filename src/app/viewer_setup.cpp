@@ -170,15 +170,17 @@ void Viewer::initImGui() {
     const float pixels = std::round(kFontSize * uiScale_ * fbScale);
     const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     const char* mono = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+    // Latin-1 and the letters the probe's algebra writes: Greek (Δ, δ), superscript T, arrows, ± and √.
+    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D40, 0x1D40, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
     if (std::filesystem::exists(sans))
-        io.Fonts->AddFontFromFileTTF(sans, pixels);
+        io.Fonts->AddFontFromFileTTF(sans, pixels, nullptr, kRanges);
     else {
         ImFontConfig config;
         config.SizePixels = std::round(13.0f * uiScale_ * fbScale);
         io.Fonts->AddFontDefault(&config);
     }
     // The probe's tables: monospaced and a little smaller, so the window covers less of the image.
-    if (std::filesystem::exists(mono)) io.Fonts->AddFontFromFileTTF(mono, std::round(0.88f * pixels));
+    if (std::filesystem::exists(mono)) io.Fonts->AddFontFromFileTTF(mono, std::round(0.88f * pixels), nullptr, kRanges);
     // The captions on the image: half as large again, to read from the back of a classroom.
     if (std::filesystem::exists(sans)) captionFont_ = io.Fonts->AddFontFromFileTTF(sans, std::round(1.5f * pixels));
     io.FontGlobalScale = 1.0f / fbScale;

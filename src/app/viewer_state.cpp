@@ -322,4 +322,6 @@ void setProbe(ViewerState& state, int x, int y) {
 
 void clearProbe(ViewerState& state) { state.probe.active = false; }
 
+void setRayTree(ViewerState& state, bool on) { state.probe.rayTree = on; }
+
 }  // namespace shadelab::app

@@ -26,6 +26,7 @@ struct ProbeState {
     int x = 0, y = 0;    // pixel of the rendered image, row 0 at the top: where it was set, then where the
                          // anchored point projects
     ProbeAnchor anchor;  // set from the first probe at the pixel; the probe then follows the point
+    bool rayTree = false;  // draw the Whitted ray tree of the probed pixel in the view (key T)
 };
 
 struct ViewerState {
@@ -143,5 +144,6 @@ float wipePosition(const ViewerState& state, float visibleCentre);
 void setHeatGain(ViewerState& state, int gain);  // clamped to [1, 255]
 void setProbe(ViewerState& state, int x, int y);
 void clearProbe(ViewerState& state);
+void setRayTree(ViewerState& state, bool on);  // the probe's ray tree drawn in the view, or not
 
 }  // namespace shadelab::app

@@ -15,6 +15,7 @@
 #include "image/encode.h"
 #include "image/exr.h"
 #include "image/png.h"
+#include "probe/ray_tree_picture.h"
 #include "raster/offscreen.h"
 #include "render/memory_budget.h"
 #include "scene/scene_load.h"
@@ -258,6 +259,19 @@ int render(const RenderOptions& o, std::string& doing) {
         keep(fa, "");
         keep(fb, "trace");
         timer.stage("compare + heatmap");
+    }
+    if (o.rayTree) {
+        // The tree the reference traces at this pixel, at the render's depth, drawn over whichever renderer's
+        // image; its rays in words on stderr (stdout may carry the PNG).
+        Scene traced = scene;
+        traced.maxDepth = render::traceDepth(request, scene);
+        const trace::TraceScene ts(traced);
+        const RayTreeView tree = recordRayTree(ts, request.width, request.height, o.rayTree->first, o.rayTree->second);
+        drawRayTreePicture(output, traced, tree);
+        std::fprintf(stderr, "shadelab: the ray tree of pixel %d,%d (depth %d):\n", tree.x, tree.y, traced.maxDepth);
+        for (size_t k = 0; k < tree.record.rays.size(); ++k)
+            std::fprintf(stderr, "  %s\n", rayTreeRayLine(traced, tree.record, k).c_str());
+        timer.stage("ray tree");
     }
     size_t written = 0;
     if (exr) {

@@ -27,6 +27,9 @@ const char* const kHelpHead =
     "  -o, --output PATH          image to write (required): .png, or .exr for linear OpenEXR; written\n"
     "                             atomically; - for a PNG on stdout. Refused when it is the scene or a file\n"
     "                             the scene loads, or exists and is not a regular file\n"
+    "  --ray-tree X,Y             draw the Whitted ray tree of pixel X,Y (from the top left) on the PNG:\n"
+    "                             the primary ray's hit, its shadow rays (yellow lit, red blocked) and\n"
+    "                             reflected (blue) and refracted (green) rays; each ray in words on stderr\n"
     "  --coverage PATH            also write which object each pixel shows (design.md §4) as a PNG: the id\n"
     "                             in R + 256 G + 65536 B, 0 the background; raster or trace only. `shadelab\n"
     "                             compare --coverage-a/--coverage-b` then gates silhouettes as the tests do\n"
@@ -93,7 +96,10 @@ std::string flagOf(const std::string& field) {
 }
 
 OutputFormat outputFormat(const RenderOptions& o) {
-    if (hasExrExtension(o.output) && !isStdout(o.output)) return OutputFormat::Exr;
+    if (hasExrExtension(o.output) && !isStdout(o.output)) {
+        if (o.rayTree) throw UsageError("--ray-tree: only for a PNG output (-o " + o.output + " writes linear EXR)");
+        return OutputFormat::Exr;
+    }
     const std::string& p = o.output;
     std::string ext = p.size() >= 4 ? p.substr(p.size() - 4) : std::string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -136,6 +142,21 @@ int64_t parseSeed(const std::string& value) {
     return std::stoll(value);
 }
 
+// --ray-tree X,Y: a pixel of the image, column then row from the top left; a PNG of one renderer.
+std::pair<int, int> parseRayTreePixel(const std::string& value, const render::RenderRequest& r) {
+    const size_t comma = value.find(',');
+    if (comma == std::string::npos)
+        throw UsageError("--ray-tree: expected X,Y (a pixel, from the top left), got '" + value + "'");
+    const int x = parseWhole("--ray-tree", value.substr(0, comma));
+    const int y = parseWhole("--ray-tree", value.substr(comma + 1));
+    if (x < 0 || y < 0 || x >= r.width || y >= r.height)
+        throw UsageError("--ray-tree: pixel " + value + " is outside the " + std::to_string(r.width) + "x" +
+                         std::to_string(r.height) + " image");
+    if (r.engine == render::Engine::Both)
+        throw UsageError("--ray-tree: only with --renderer raster, trace or path (both writes three images)");
+    return {x, y};
+}
+
 }  // namespace
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
@@ -146,6 +167,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         "--exposure",   "--view-transform"};
     valued.emplace_back("--seed");
     valued.emplace_back("--coverage");
+    valued.emplace_back("--ray-tree");
     std::vector<std::string> flags = {"-h",       "--help",   "--verbose", "--timings", "--allow-external-paths",
                                       "--strict", "--passes", "--denoise"};
     valued.insert(valued.end(), rasterValuedFlags().begin(), rasterValuedFlags().end());
@@ -201,6 +223,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         if (o.coverage == o.output) throw UsageError("--coverage: '" + o.coverage + "' is also the -o image");
         r.coverage = true;
     }
+    if (auto v = args.value("--ray-tree")) o.rayTree = parseRayTreePixel(*v, r);
     // The ranges are the request's, as every front end holds them; only the words are the command line's.
     if (std::optional<render::RequestProblem> p = render::check(r))
         throw UsageError(flagOf(p->field) + ": " + p->reason);

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace shadelab::cli {
 
@@ -28,6 +29,8 @@ struct RenderOptions {
     RasterOverride raster;                     // --shadow-map-size, --pcf, ...: over the scene's "raster"
     std::optional<ExrPrecision> exrPrecision;  // --exr-precision; unset: float (only with an .exr output)
     bool passes = false;                       // --passes: surface passes as EXR layers (only with an .exr output)
+    std::optional<std::pair<int, int>> rayTree;  // --ray-tree X,Y: the Whitted ray tree of that pixel drawn on
+                                                 // the PNG (probe/ray_tree_picture.h), its rays on stderr
     gl::GlBackend backend = gl::GlBackend::Auto;
     bool allowExternalPaths = false;  // glTF buffers may live outside the model's folder
     bool verbose = false;

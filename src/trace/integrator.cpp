@@ -33,7 +33,36 @@ struct WhittedIntegrator::Tree {
     int64_t raysLeft;  // secondary rays this sample may still trace
     const std::atomic<bool>* cancel;
     TreeStats stats;
+    RayTreeRecord* record = nullptr;  // when set, every ray traced is appended
+    int current = -1;                 // the record's index of the ray being shaded
 };
+
+const char* treeRayKindName(TreeRayKind kind) {
+    switch (kind) {
+        case TreeRayKind::Primary: return "primary";
+        case TreeRayKind::Shadow: return "shadow";
+        case TreeRayKind::Reflected: return "reflected";
+        case TreeRayKind::Refracted: return "refracted";
+        case TreeRayKind::Behind: return "behind";
+    }
+    return "?";
+}
+
+void WhittedIntegrator::note(Tree& tree, TreeRayKind kind, int depth, const Ray& ray, const std::optional<Hit>& hit,
+                             const glm::vec3& weight, float after) const {
+    if (!tree.record) return;
+    TreeRay r;
+    r.kind = kind;
+    r.parent = tree.current;
+    r.depth = depth;
+    r.ray = ray;
+    r.after = after;
+    r.hit = hit;
+    r.hitId = hit ? scene_.coverageId(*hit) : 0;
+    r.weight = weight;
+    tree.current = int(tree.record->rays.size());
+    tree.record->rays.push_back(r);
+}
 
 WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, const RayTreeLimits& limits)
     : scene_(scene),
@@ -45,21 +74,40 @@ WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, cons
 
 PrimarySample WhittedIntegrator::primary(const Ray& ray, const std::atomic<bool>* cancel, TreeStats* stats) const {
     Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, cancel, {}};
-    const std::optional<Hit> hit = visibleHit(ray, 0.0f, 0);
-    PrimarySample s{env_.escaping(ray.dir), kBackgroundId};
-    if (hit) s = {shade(ray, *hit, 0, glm::vec3(1.0f), tree), scene_.coverageId(*hit)};
+    const PrimarySample s = primary(ray, tree);
     if (stats) *stats = tree.stats;
     return s;
 }
 
-glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth) const {
+PrimarySample WhittedIntegrator::recordPrimary(const Ray& ray, RayTreeRecord& record, TreeStats* stats) const {
+    record.rays.clear();
     Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, nullptr, {}};
-    return radiance(ray, depth, glm::vec3(1.0f), tree);
+    tree.record = &record;
+    const PrimarySample s = primary(ray, tree);
+    if (stats) *stats = tree.stats;
+    return s;
 }
 
-glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const {
+PrimarySample WhittedIntegrator::primary(const Ray& ray, Tree& tree) const {
+    const std::optional<Hit> hit = visibleHit(ray, 0.0f, 0);
+    note(tree, TreeRayKind::Primary, 0, ray, hit, glm::vec3(1.0f));
+    if (!hit) return {env_.escaping(ray.dir), kBackgroundId};
+    return {shade(ray, *hit, 0, glm::vec3(1.0f), tree), scene_.coverageId(*hit)};
+}
+
+glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth) const {
+    Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, nullptr, {}};
+    return radiance(ray, depth, glm::vec3(1.0f), tree, TreeRayKind::Primary);
+}
+
+glm::vec3 WhittedIntegrator::radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree,
+                                      TreeRayKind kind) const {
     const std::optional<Hit> hit = visibleHit(ray, 0.0f, depth);
-    return hit ? shade(ray, *hit, depth, weight, tree) : env_.escaping(ray.dir);
+    const int parent = tree.current;
+    note(tree, kind, depth, ray, hit, weight);
+    const glm::vec3 L = hit ? shade(ray, *hit, depth, weight, tree) : env_.escaping(ray.dir);
+    tree.current = parent;
+    return L;
 }
 
 bool WhittedIntegrator::admit(const glm::vec3& weight, Tree& tree) const {
@@ -85,19 +133,46 @@ bool WhittedIntegrator::admit(const glm::vec3& weight, Tree& tree) const {
     return true;
 }
 
-float WhittedIntegrator::visibility(const Surface& s, const Light& light) const {
+Ray WhittedIntegrator::shadowRay(const Surface& s, const Light& light, float& tMax) const {
     Ray shadow;
     shadow.origin = s.P + scene_.epsilon() * s.Nf;
-    float tMax = INFINITY;
+    tMax = INFINITY;
     if (light.positional()) {
         const glm::vec3 toLight = light.position - shadow.origin;
         tMax = glm::length(toLight);
-        if (!(tMax > 0.0f)) return 1.0f;
+        if (!(tMax > 0.0f)) return shadow;
         shadow.dir = toLight / tMax;
     } else {
         shadow.dir = glm::normalize(-light.direction);
     }
+    return shadow;
+}
+
+float WhittedIntegrator::visibility(const Surface& s, const Light& light) const {
+    float tMax = 0.0f;
+    const Ray shadow = shadowRay(s, light, tMax);
+    if (!(tMax > 0.0f)) return 1.0f;
     return scene_.occluded(shadow, tMax) ? 0.0f : 1.0f;
+}
+
+void WhittedIntegrator::noteShadow(Tree& tree, const Surface& s, size_t light, float visibility) const {
+    TreeRay r;
+    r.kind = TreeRayKind::Shadow;
+    r.parent = tree.current;
+    r.depth = tree.current >= 0 ? tree.record->rays[size_t(tree.current)].depth : 0;
+    r.ray = shadowRay(s, scene_.scene().lights[light], r.tMax);
+    r.light = int(light);
+    r.blocked = visibility == 0.0f;
+    r.weight = tree.current >= 0 ? tree.record->rays[size_t(tree.current)].weight : glm::vec3(1.0f);
+    // The blocker: the nearest surface before the light (occluded() stops at any; this names the first).
+    if (r.blocked) {
+        const std::optional<Hit> h = scene_.intersect(r.ray);
+        if (h && h->t < r.tMax) {
+            r.hit = h;
+            r.hitId = scene_.coverageId(*h);
+        }
+    }
+    tree.record->rays.push_back(r);
 }
 
 glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::vec3 V) const {
@@ -132,7 +207,7 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     return params;
 }
 
-glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected) const {
+glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree) const {
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
     // The lecture's step 0, as surface.glsl's shadeSurface: no light term on, the surface's unlit colour.
@@ -168,6 +243,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
             // shadow ray: otherwise its term is 0.
             const bool reaches = glm::dot(s.N, ls.L) > 0.0f && ls.Il != glm::vec3(0.0f);
             ls.visibility = sc.terms.shadows && lit && reaches ? visibility(s, l) : 1.0f;
+            if (tree && tree->record && sc.terms.shadows && lit && reaches) noteShadow(*tree, s, first + k, ls.visibility);
         }
         shading::TermFlags terms{ambientOn && first == 0, sc.terms.diffuse, sc.terms.specular};
         const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, model_, terms);
@@ -181,16 +257,19 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,
                                    Tree& tree) const {
     const Surface s = surfaceAt(ray, hit, depth);
+    const int self = tree.current;  // this ray's index in the record, the parent of what it spawns
     // alphaMode BLEND: this surface over what lies behind it on the same ray, as the rasterizer's blend state
     // composites it (docs/gltf-import.md); the surface behind is shaded at the same depth.
     const float alpha = s.material->alphaMode == AlphaMode::Blend ? glm::clamp(s.alpha, 0.0f, 1.0f) : 1.0f;
     glm::vec3 behind(0.0f);
     if (alpha < 1.0f) {
         const std::optional<Hit> next = visibleHit(ray, hit.t + scene_.epsilon(), depth);
+        note(tree, TreeRayKind::Behind, depth, ray, next, weight * (1.0f - alpha), hit.t + scene_.epsilon());
         behind = next ? shade(ray, *next, depth, weight * (1.0f - alpha), tree) : env_.escaping(ray.dir);
+        tree.current = self;
     }
     auto over = [&](const glm::vec3& c) { return alpha < 1.0f ? c * alpha + behind * (1.0f - alpha) : c; };
-    if (!scene_.scene().terms.reflections || depth >= maxDepth_) return over(local(ray, s));
+    if (!scene_.scene().terms.reflections || depth >= maxDepth_) return over(local(ray, s, nullptr, &tree));
 
     const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
@@ -208,7 +287,8 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
             reflectWeight += m.kt;  // total internal reflection: the transmitted energy is reflected
         } else if (admit(weight * m.kt, tree)) {
             const glm::vec3 T = glm::normalize(-eta * V + (eta * NoV - std::sqrt(cos2)) * N);
-            transmitted = m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1, weight * m.kt, tree);
+            transmitted =
+                m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1, weight * m.kt, tree, TreeRayKind::Refracted);
         }
     }
     // One reflected ray serves kr and a pbr surface's environment specular: one reflected ray per pixel and
@@ -226,16 +306,19 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
         const glm::vec3 R = glm::normalize(2.0f * NoV * N - V);
         const Ray reflectedRay{s.P + eps * s.Nf, R};
         const std::optional<Hit> next = visibleHit(reflectedRay, 0.0f, depth + 1);
+        note(tree, TreeRayKind::Reflected, depth + 1, reflectedRay, next, weight * rayWeight);
         if (next) {
             const glm::vec3 Lr = shade(reflectedRay, *next, depth + 1, weight * rayWeight, tree);
-            I = local(ray, s, mirror > 0.0f ? &Lr : nullptr);
+            tree.current = self;
+            I = local(ray, s, mirror > 0.0f ? &Lr : nullptr, &tree);
             I += reflectWeight * Lr;
         } else {
-            I = local(ray, s);
+            tree.current = self;
+            I = local(ray, s, nullptr, &tree);
             I += reflectWeight * env_.escaping(R);
         }
     } else {
-        I = local(ray, s);
+        I = local(ray, s, nullptr, &tree);
     }
     return over(I + transmitted);
 }

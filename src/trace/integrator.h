@@ -6,6 +6,7 @@
 #include "shading/local_illumination.h"
 #include "trace/environment_light.h"
 #include "trace/ray.h"
+#include "trace/ray_tree_record.h"
 #include "trace/surface.h"
 #include "trace/trace_scene.h"
 #include "trace/trace_settings.h"
@@ -40,6 +41,9 @@ public:
     // One camera sample. `cancel`, when set, is read before every secondary ray: once it is true no
     // further child is traced, so the call returns within about one shade() of it.
     PrimarySample primary(const Ray& ray, const std::atomic<bool>* cancel = nullptr, TreeStats* stats = nullptr) const;
+    // The same sample, returning the same colour, with every ray it traces written to `record` (cleared
+    // first): the ray view's tree (ray_tree_record.h).
+    PrimarySample recordPrimary(const Ray& ray, RayTreeRecord& record, TreeStats* stats = nullptr) const;
     // Radiance arriving along `ray`, which is `depth` bounces from the camera, as the root of a tree of
     // its own (weight 1, a fresh ray budget). Background on a miss.
     glm::vec3 radiance(const Ray& ray, int depth) const;
@@ -51,7 +55,9 @@ public:
     // weighted by its shadow-ray visibility when the shadows term is on. A pbr surface in an environment
     // gets the split-sum environment light in place of Ia·ma; its specular part reads `reflected` (the
     // radiance the reflected ray brought back from an object) when given, else the prefiltered lookup.
-    glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected = nullptr) const;
+    glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected = nullptr) const {
+        return local(ray, s, reflected, nullptr);
+    }
 
     // The coefficients shadeLight reads at `s` seen from unit direction V (shading::surfaceParams with the
     // base-colour texture and pbr's energy compensation applied); `dfg`, when given, receives pbr's DFG
@@ -62,6 +68,9 @@ public:
 
     // vis_l: 1 when the shadow ray from s.P + ε·s.Nf toward the light reaches it, else 0.
     float visibility(const Surface& s, const Light& light) const;
+    // That shadow ray and the distance to the light along it (infinity for a directional light; 0 when the
+    // point is at the light).
+    Ray shadowRay(const Surface& s, const Light& light, float& tMax) const;
 
     // The first hit that an alpha mask does not cut away (SurfaceSetup::visibleHit).
     std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const {
@@ -69,9 +78,16 @@ public:
     }
 
 private:
-    struct Tree;  // one sample's budget, cancel flag and stats
-    glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const;
+    struct Tree;  // one sample's budget, cancel flag and stats, and the record when one is kept
+    PrimarySample primary(const Ray& ray, Tree& tree) const;
+    glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree, TreeRayKind kind) const;
     glm::vec3 shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight, Tree& tree) const;
+    glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree) const;
+    // Appends a ray to the tree's record, a child of the ray being shaded, and makes it the one being shaded.
+    void note(Tree& tree, TreeRayKind kind, int depth, const Ray& ray, const std::optional<Hit>& hit,
+                     const glm::vec3& weight, float after = 0.0f) const;
+    // Appends the shadow ray toward scene light `light` that visibility() traced from `s`, with its answer.
+    void noteShadow(Tree& tree, const Surface& s, size_t light, float visibility) const;
     // Whether a child of weight `weight` is traced; counts it in the stats either way.
     bool admit(const glm::vec3& weight, Tree& tree) const;
 
