@@ -376,3 +376,43 @@ TEST(AppWindow, ProjectorProbeWindowStaysInsideTheImageAndOffThePoint) {
     }
     EXPECT_LT(folded, int(std::size(points))) << "every placement folded: the check would be blind";
 }
+
+// The ray view: the tree the viewer draws is the one the reference traces (the lines `render --ray-tree` prints
+// for the same pixel); orbiting keeps it, traced from the eye of the click, so the class can walk around it; it
+// is drawn over the image. Negative control: a new click after the orbit traces another tree.
+TEST(AppWindow, RayTreeIsTheTracersAndStaysWhileTheCameraOrbits) {
+    REQUIRE_XVFB();
+    const std::string scenePath = test::sourcePath("assets/scenes/default.json");
+    const std::string before = test::outputPath("raytree_before.json"), after = test::outputPath("raytree_after.json");
+    const std::string fresh = test::outputPath("raytree_fresh.json");
+    const std::string drawn = test::outputPath("raytree_drawn.png"), bare = test::outputPath("raytree_bare.png");
+    const std::string script = writeText("raytree_script.json", R"([
+        {"frame": 2, "action": "probe", "x": 70, "y": 125},
+        {"frame": 3, "action": "windowScreenshot", "path": ")" + bare +
+                                                                    R"("},
+        {"frame": 4, "action": "rayTree", "on": true},
+        {"frame": 5, "action": "probeReport", "path": ")" + before + R"("},
+        {"action": "windowScreenshot", "path": ")" + drawn + R"("},
+        {"frame": 6, "action": "orbit", "yaw": 40, "pitch": 10},
+        {"frame": 7, "action": "probeReport", "path": ")" + after + R"("},
+        {"action": "probe", "x": 70, "y": 125},
+        {"frame": 8, "action": "probeReport", "path": ")" + fresh + R"("}])");
+    Result v = view(scenePath + " --size " + kSize + " --frames 10 --script " + script);
+    ASSERT_EQ(v.code, 0) << v.out;
+    const nlohmann::json a = nlohmann::json::parse(readFile(before)), b = nlohmann::json::parse(readFile(after));
+    const nlohmann::json c = nlohmann::json::parse(readFile(fresh));
+    ASSERT_TRUE(a.contains("ray_tree")) << a.dump();
+    ASSERT_TRUE(b.contains("ray_tree")) << b.dump();
+    ASSERT_TRUE(c.contains("ray_tree")) << c.dump();
+    std::string lines;
+    for (const auto& ray : a["ray_tree"]["rays"]) lines += "  " + ray["line"].get<std::string>() + "\n";
+    EXPECT_NE(lines.find("blocked by shiny blue (sphere 2)"), std::string::npos) << lines;
+    // The tracer's own tree for the pixel, as the command line prints it.
+    Result cli = render(scenePath, test::outputPath("raytree_cli.png"), "--renderer trace --ray-tree 70,125");
+    ASSERT_EQ(cli.code, 0) << cli.out;
+    EXPECT_NE(cli.out.find(lines), std::string::npos) << "viewer:\n" << lines << "render:\n" << cli.out;
+    EXPECT_EQ(a["ray_tree"]["rays"], b["ray_tree"]["rays"]) << "orbiting re-aimed the tree";
+    EXPECT_NE(a["V"], b["V"]) << "the camera did move";
+    EXPECT_NE(a["ray_tree"]["rays"], c["ray_tree"]["rays"]) << "a new click must trace from the new eye";
+    EXPECT_NE(readFile(drawn), readFile(bare)) << "the tree is drawn over the image: " << drawn << ", " << bare;
+}

@@ -65,7 +65,8 @@ std::vector<ArrowLabel> ArrowOverlay::draw(const Scene& scene, const ProbeResult
     // About a fifth of the image height for an arrow across the view, whatever the distance.
     const float length = 0.4f * glm::length(probe.P - view.eye) * view.tanHalfFovY;
     std::vector<ArrowSegment> segments;
-    for (const Arrow& a : probeArrows(probe)) segments.push_back({probe.P, probe.P + length * a.direction, a.color, a.label});
+    for (const Arrow& a : probeArrows(probe))
+        segments.push_back({probe.P, probe.P + length * a.direction, a.color, a.label});
     return draw(scene, segments, renderWidth, renderHeight, rect, windowHeight, pixelScale);
 }
 

@@ -89,7 +89,7 @@ struct PanelContext {
     ViewerState& state;
     PanelServices& services;
     UiFields& fields;
-    const ProbeResult* probe = nullptr;  // null when no probe is set
+    const ProbeResult* probe = nullptr;     // null when no probe is set
     const RayTreePanel* rayTree = nullptr;  // the probe's ray tree, while it is drawn (ProbeState::rayTree)
     ReferenceInfo reference;
     GlobalInfo global;                          // the path tracer of Global and Local | Global

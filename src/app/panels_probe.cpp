@@ -265,7 +265,8 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         if (!p.lights.empty()) folded("lights", "each light", [&] { lightTable(p, shadows, pbr); });
         folded("totals", "terms, every model", [&] { totalsTable(p, ctx.state.scene.model, ctx.state.encoding); });
         if (ImGui::TreeNodeEx("raytree", ctx.state.probe.rayTree ? ImGuiTreeNodeFlags_DefaultOpen : 0,
-                              "rays: r(t) = o + t\xc2\xb7" "d")) {
+                              "rays: r(t) = o + t\xc2\xb7"
+                              "d")) {
             rayTreeSection(ctx);
             ImGui::TreePop();
         }

@@ -167,11 +167,11 @@ using Action =
                  actions::ToggleTerm, actions::Progression, actions::SetModel, actions::SwitchModel, actions::SetMode,
                  actions::SetEncoding, actions::SetDisplay, actions::SetGlobal, actions::SetSplit, actions::SetAmbient,
                  actions::SetRaster, actions::AddLight, actions::RemoveLight, actions::SetLight, actions::Orbit,
-                 actions::Zoom, actions::FrameAll, actions::ResetCamera, actions::Probe, actions::ClearProbe, actions::RayTree,
-                 actions::WhiteFurnace, actions::Screenshot, actions::ReferenceScreenshot, actions::WindowScreenshot,
-                 actions::ProbeReport, actions::SaveScene, actions::Open, actions::ReloadShaders,
-                 actions::WaitReference, actions::ResizeWindow, actions::Drag, actions::SmoothScreenshot,
-                 actions::Render, actions::Undo, actions::Redo>;
+                 actions::Zoom, actions::FrameAll, actions::ResetCamera, actions::Probe, actions::ClearProbe,
+                 actions::RayTree, actions::WhiteFurnace, actions::Screenshot, actions::ReferenceScreenshot,
+                 actions::WindowScreenshot, actions::ProbeReport, actions::SaveScene, actions::Open,
+                 actions::ReloadShaders, actions::WaitReference, actions::ResizeWindow, actions::Drag,
+                 actions::SmoothScreenshot, actions::Render, actions::Undo, actions::Redo>;
 
 struct ScriptAction {
     int index = 0;     // position in the file's list, for messages ("actions[3]")

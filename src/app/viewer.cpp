@@ -355,18 +355,25 @@ void Viewer::updateRayTree(const trace::TraceScene& traced, bool clicked) {
         rayTree_.reset();
         return;
     }
+    std::optional<trace::TraceScene> fromClick;  // the scene seen from the click's camera, once it has moved
     if (!rayTree_ || clicked || rayTreeAnchor_ != p.anchor.point) {
         rayTree_ = recordRayTree(traced, renderW_, renderH_, p.x, p.y);
         rayTreeAnchor_ = p.anchor.point;
         fields_.rayTreeRay = 0;
-    } else {
+    } else if (sameCamera(rayTree_->camera, state_.scene.camera)) {
         rerecordRayTree(traced, *rayTree_);
+    } else {
+        Scene seen = state_.scene;
+        seen.camera = rayTree_->camera;
+        fromClick.emplace(seen, reference_->meshBvh(seen));
+        rerecordRayTree(*fromClick, *rayTree_);
     }
+    const trace::TraceScene& tracedFrom = fromClick ? *fromClick : traced;
     const trace::RayTreeRecord& rec = rayTree_->record;
     rayTreePanel_ = {};
     for (size_t k = 0; k < rec.rays.size(); ++k) {
         rayTreePanel_.rays.push_back(rayTreeRayLine(state_.scene, rec, k));
-        rayTreePanel_.algebra.push_back(rayTreeAlgebra(traced, rec, k));
+        rayTreePanel_.algebra.push_back(rayTreeAlgebra(tracedFrom, rec, k));
     }
     fields_.rayTreeRay = std::clamp(fields_.rayTreeRay, 0, std::max(int(rec.rays.size()) - 1, 0));
 }
@@ -425,10 +432,12 @@ void Viewer::compose() {
     gl::checkError("viewer frame");
 }
 
+// Labels inside the image only: an arrow cut at the image's edge must not label the panel beside it.
 void Viewer::drawArrowLabels(const std::vector<ArrowLabel>& labels) {
     ImDrawList* dl = ImGui::GetForegroundDrawList();
     for (const ArrowLabel& l : labels) {
         const ImVec2 at(l.position.x / fbScale_ + 6.0f * uiScale_, l.position.y / fbScale_ - 10.0f * uiScale_);
+        if (at.x < imageX_ || at.y < imageY_ || at.x > imageX_ + imageW_ || at.y > imageY_ + imageH_) continue;
         const ImU32 color = ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, 1.0f));
         dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 255), l.text.c_str());
         dl->AddText(at, color, l.text.c_str());

@@ -14,12 +14,12 @@
 #include "app/image_view.h"
 #include "app/panels.h"
 #include "app/probe_window_place.h"
-#include "probe/ray_tree_view.h"
 #include "app/reference_renderer.h"
 #include "app/script.h"
 #include "app/undo_history.h"
 #include "app/viewer_state.h"
 #include "compare/image_compare.h"
+#include "probe/ray_tree_view.h"
 #include "raster/raster_renderer.h"
 
 #include <array>

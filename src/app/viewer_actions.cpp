@@ -229,7 +229,7 @@ void Viewer::writeProbeReport(const std::string& path) {
         throw InputError(path, "no probe is set (click the image, or use a 'probe' script action)");
     updateProbe();
     const uint32_t coverage = coverageAt(state_.probe.x, state_.probe.y);
-    writeFileAtomic(path, probeReportJson(*probe_, state_.scene, coverage));
+    writeFileAtomic(path, probeReportJson(*probe_, state_.scene, coverage, rayTree_ ? &*rayTree_ : nullptr));
 }
 
 void Viewer::writeWindowScreenshot(const std::string& path) {

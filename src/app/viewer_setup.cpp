@@ -171,7 +171,8 @@ void Viewer::initImGui() {
     const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     const char* mono = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
     // Latin-1 and the letters the probe's algebra writes: Greek (Δ, δ), superscript T, arrows, ± and √.
-    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D40, 0x1D40, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D40, 0x1D40,
+                                      0x2190, 0x21FF, 0x2200, 0x22FF, 0};
     if (std::filesystem::exists(sans))
         io.Fonts->AddFontFromFileTTF(sans, pixels, nullptr, kRanges);
     else {

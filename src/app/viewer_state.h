@@ -23,9 +23,9 @@ namespace shadelab::app {
 
 struct ProbeState {
     bool active = false;
-    int x = 0, y = 0;    // pixel of the rendered image, row 0 at the top: where it was set, then where the
-                         // anchored point projects
-    ProbeAnchor anchor;  // set from the first probe at the pixel; the probe then follows the point
+    int x = 0, y = 0;      // pixel of the rendered image, row 0 at the top: where it was set, then where the
+                           // anchored point projects
+    ProbeAnchor anchor;    // set from the first probe at the pixel; the probe then follows the point
     bool rayTree = false;  // draw the Whitted ray tree of the probed pixel in the view (key T)
 };
 

@@ -23,12 +23,12 @@ struct RenderOptions {
     // and --light-paths, and --max-memory: the render itself, checked as every front end checks it
     // (render/render_request.h).
     render::RenderRequest request;
-    std::optional<ShadingModel> model;         // unset: the scene's
-    std::optional<Terms> terms;                // unset: the scene's
-    std::optional<CameraChoice> camera;        // --camera; unset: the scene's own (a bare model: fit)
-    RasterOverride raster;                     // --shadow-map-size, --pcf, ...: over the scene's "raster"
-    std::optional<ExrPrecision> exrPrecision;  // --exr-precision; unset: float (only with an .exr output)
-    bool passes = false;                       // --passes: surface passes as EXR layers (only with an .exr output)
+    std::optional<ShadingModel> model;           // unset: the scene's
+    std::optional<Terms> terms;                  // unset: the scene's
+    std::optional<CameraChoice> camera;          // --camera; unset: the scene's own (a bare model: fit)
+    RasterOverride raster;                       // --shadow-map-size, --pcf, ...: over the scene's "raster"
+    std::optional<ExrPrecision> exrPrecision;    // --exr-precision; unset: float (only with an .exr output)
+    bool passes = false;                         // --passes: surface passes as EXR layers (only with an .exr output)
     std::optional<std::pair<int, int>> rayTree;  // --ray-tree X,Y: the Whitted ray tree of that pixel drawn on
                                                  // the PNG (probe/ray_tree_picture.h), its rays on stderr
     gl::GlBackend backend = gl::GlBackend::Auto;

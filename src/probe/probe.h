@@ -71,7 +71,11 @@ ProbeResult probePixel(const trace::TraceScene& scene, int width, int height, in
 // are the pixel it projects to. No hit when the object there is not the anchored one any more.
 ProbeResult probeAnchor(const trace::TraceScene& scene, int width, int height, const ProbeAnchor& anchor);
 
-// The JSON written by the script's "probeReport" action and --probe-report (docs/viewer.md).
-std::string probeReportJson(const ProbeResult& probe, const Scene& scene, uint32_t coverageId);
+struct RayTreeView;
+
+// The JSON written by the script's "probeReport" action and --probe-report (docs/viewer.md); with the ray
+// tree when it is shown (its rays as rayTreeRayLine writes them, and each ray's fields).
+std::string probeReportJson(const ProbeResult& probe, const Scene& scene, uint32_t coverageId,
+                            const RayTreeView* rayTree = nullptr);
 
 }  // namespace shadelab

@@ -1,6 +1,10 @@
 // probeReportJson: the probe as JSON for scripts and tests (field names follow design.md's vocabulary).
 #include "probe/probe.h"
 
+#include "probe/ray_tree_view.h"
+
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace shadelab {
@@ -20,7 +24,7 @@ const char* kindName(ObjectKind k) {
 
 }  // namespace
 
-std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t coverageId) {
+std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t coverageId, const RayTreeView* rayTree) {
     nlohmann::json j;
     j["pixel"] = {p.x, p.y};
     j["size"] = {p.width, p.height};
@@ -67,6 +71,28 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                           {"specular_pbr", vec(l.specularPbr)}});
     j["lights"] = lights;
     j["total"] = {{"phong", vec(p.totalPhong)}, {"blinn_phong", vec(p.totalBlinn)}, {"pbr", vec(p.totalPbr)}};
+    if (rayTree) {
+        nlohmann::json rays = nlohmann::json::array();
+        for (size_t k = 0; k < rayTree->record.rays.size(); ++k) {
+            const trace::TreeRay& r = rayTree->record.rays[k];
+            nlohmann::json ray = {{"line", rayTreeRayLine(scene, rayTree->record, k)},
+                                  {"kind", trace::treeRayKindName(r.kind)},
+                                  {"parent", r.parent},
+                                  {"depth", r.depth},
+                                  {"origin", vec(r.ray.origin)},
+                                  {"dir", vec(r.ray.dir)},
+                                  {"object", r.hitId}};
+            if (r.hit) ray["t"] = r.hit->t;
+            if (r.kind == trace::TreeRayKind::Shadow) {
+                ray["light"] = r.light;
+                ray["blocked"] = r.blocked;
+                if (std::isfinite(r.tMax)) ray["tMax"] = r.tMax;
+            }
+            rays.push_back(ray);
+        }
+        j["ray_tree"] = {
+            {"pixel", {rayTree->x, rayTree->y}}, {"size", {rayTree->width, rayTree->height}}, {"rays", rays}};
+    }
     return j.dump(2) + "\n";
 }
 

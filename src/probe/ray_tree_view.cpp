@@ -40,12 +40,17 @@ std::string lightName(const Scene& scene, int light) {
 RayTreeView recordRayTree(const trace::TraceScene& scene, int width, int height, int x, int y) {
     RayTreeView view;
     view.width = width, view.height = height, view.x = x, view.y = y;
+    view.camera = scene.scene().camera;
     view.primary = trace::sampleRay(makeViewSetup(scene.scene(), width, height), 1, x, y, 0, 0);
     record(scene, view);
     return view;
 }
 
 void rerecordRayTree(const trace::TraceScene& scene, RayTreeView& view) { record(scene, view); }
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.target == b.target && a.up == b.up && a.fovY == b.fovY;
+}
 
 std::vector<RayTreeSegment> rayTreeSegments(const Scene& scene, const trace::RayTreeRecord& rec, float escape) {
     using trace::TreeRayKind;
@@ -60,7 +65,9 @@ std::vector<RayTreeSegment> rayTreeSegments(const Scene& scene, const trace::Ray
             case TreeRayKind::Reflected: s.color = glm::vec3(0.3f, 0.75f, 1.0f); break;
             case TreeRayKind::Refracted: s.color = glm::vec3(0.35f, 1.0f, 0.5f); break;
             case TreeRayKind::Behind: s.color = glm::vec3(0.7f); break;
-            case TreeRayKind::Shadow: s.color = r.blocked ? glm::vec3(1.0f, 0.25f, 0.2f) : glm::vec3(1.0f, 0.85f, 0.2f); break;
+            case TreeRayKind::Shadow:
+                s.color = r.blocked ? glm::vec3(1.0f, 0.25f, 0.2f) : glm::vec3(1.0f, 0.85f, 0.2f);
+                break;
         }
         if (r.kind == TreeRayKind::Shadow) {
             const std::string name = lightName(scene, r.light);

@@ -15,8 +15,9 @@
 namespace shadelab {
 
 struct RayTreeView {
-    trace::Ray primary;           // the ray through the pixel, from the eye it was probed from
-    trace::RayTreeRecord record;  // what the tracer did with it
+    Camera camera;                            // the camera it was traced with (the secondary-ray ε depends on the eye)
+    trace::Ray primary;                       // the ray through the pixel, from the eye it was probed from
+    trace::RayTreeRecord record;              // what the tracer did with it
     int width = 0, height = 0, x = 0, y = 0;  // the pixel, in the image it was probed in
 };
 
@@ -24,7 +25,9 @@ struct RayTreeView {
 // scene's own depth and limits, exactly as the reference traces that pixel.
 RayTreeView recordRayTree(const trace::TraceScene& scene, int width, int height, int x, int y);
 // The same primary ray in a scene that has changed (a material, a light): the tree again, from the same eye.
+// `scene` must have been built with view.camera (sameCamera), so that it is the tree the reference would trace.
 void rerecordRayTree(const trace::TraceScene& scene, RayTreeView& view);
+bool sameCamera(const Camera& a, const Camera& b);
 
 struct RayTreeSegment {
     glm::vec3 from{0.0f}, to{0.0f};
@@ -42,7 +45,6 @@ std::string rayTreeRayLine(const Scene& scene, const trace::RayTreeRecord& recor
 
 // The lecture's algebra for ray `ray` of the record (trace/ray_algebra.h): a shadow ray's own test
 // against the light's distance, or the hit's intersection; an escaped ray says it met nothing.
-std::vector<std::string> rayTreeAlgebra(const trace::TraceScene& scene, const trace::RayTreeRecord& record,
-                                        size_t ray);
+std::vector<std::string> rayTreeAlgebra(const trace::TraceScene& scene, const trace::RayTreeRecord& record, size_t ray);
 
 }  // namespace shadelab

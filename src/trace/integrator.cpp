@@ -243,7 +243,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
             // shadow ray: otherwise its term is 0.
             const bool reaches = glm::dot(s.N, ls.L) > 0.0f && ls.Il != glm::vec3(0.0f);
             ls.visibility = sc.terms.shadows && lit && reaches ? visibility(s, l) : 1.0f;
-            if (tree && tree->record && sc.terms.shadows && lit && reaches) noteShadow(*tree, s, first + k, ls.visibility);
+            if (tree && tree->record && sc.terms.shadows && lit && reaches)
+                noteShadow(*tree, s, first + k, ls.visibility);
         }
         shading::TermFlags terms{ambientOn && first == 0, sc.terms.diffuse, sc.terms.specular};
         const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, model_, terms);

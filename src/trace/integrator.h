@@ -85,7 +85,7 @@ private:
     glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree) const;
     // Appends a ray to the tree's record, a child of the ray being shaded, and makes it the one being shaded.
     void note(Tree& tree, TreeRayKind kind, int depth, const Ray& ray, const std::optional<Hit>& hit,
-                     const glm::vec3& weight, float after = 0.0f) const;
+              const glm::vec3& weight, float after = 0.0f) const;
     // Appends the shadow ray toward scene light `light` that visibility() traced from `s`, with its answer.
     void noteShadow(Tree& tree, const Surface& s, size_t light, float visibility) const;
     // Whether a child of weight `weight` is traced; counts it in the stats either way.

@@ -106,8 +106,8 @@ std::vector<std::string> rayAlgebraLines(const TraceScene& scene, const Ray& ray
         case HitKind::Sphere: {
             const Sphere& sp = sc.spheres[hit.index];
             const SphereAlgebra s = sphereAlgebra(ray, sp.center, sp.radius);
-            out.push_back(format("sphere: |r(t) - c|^2 - r^2 = 0, c = %s, r = %.4g", vec(sp.center).c_str(),
-                                 double(sp.radius)));
+            out.push_back(
+                format("sphere: |r(t) - c|^2 - r^2 = 0, c = %s, r = %.4g", vec(sp.center).c_str(), double(sp.radius)));
             out.push_back(format("a·t² + b·t + c = 0:  a = d·d = %.6g, b = 2d·(o - c) = %.6g, c = |o - c|² - r² = %.6g",
                                  double(s.a), double(s.b), double(s.c)));
             out.push_back(format("Δ = b² - 4ac = %.6g%s", double(s.discriminant), s.real ? "" : " < 0: no hit"));
@@ -126,11 +126,10 @@ std::vector<std::string> rayAlgebraLines(const TraceScene& scene, const Ray& ray
             const PlaneAlgebra p = planeAlgebra(ray, pl.normal, pl.offset);
             out.push_back(format("plane: nᵀx - δ = 0, n = %s, δ = %.4g", vec(pl.normal).c_str(), double(pl.offset)));
             out.push_back(format("t = (δ - nᵀo)/(nᵀd):  nᵀo = %.6g, nᵀd = %.6g", double(p.nDotO), double(p.nDotD)));
-            out.push_back(p.parallel ? std::string("nᵀd = 0: the ray runs parallel to the plane, no hit")
-                          : p.t > 0.0f
-                              ? format("t = %.7g", double(p.t))
-                              : format("t = %.7g <= 0: the plane is behind o, no hit",
-                                       double((pl.offset - p.nDotO) / p.nDotD)));
+            out.push_back(p.parallel   ? std::string("nᵀd = 0: the ray runs parallel to the plane, no hit")
+                          : p.t > 0.0f ? format("t = %.7g", double(p.t))
+                                       : format("t = %.7g <= 0: the plane is behind o, no hit",
+                                                double((pl.offset - p.nDotO) / p.nDotD)));
             break;
         }
         case HitKind::Triangle: {
@@ -142,8 +141,8 @@ std::vector<std::string> rayAlgebraLines(const TraceScene& scene, const Ray& ray
             out.push_back("triangle: o + t·d = b0·A + b1·B + b2·C, b0 + b1 + b2 = 1");
             out.push_back("A = " + vec(A) + ", B = " + vec(B) + ", C = " + vec(C));
             out.push_back(t.parallel ? std::string("the ray lies in the triangle's plane: no hit")
-                                     : format("t = %.7g, (b0, b1, b2) = (%.4g, %.4g, %.4g): all >= 0, inside",
-                                              t.t, t.b0, t.b1, t.b2));
+                                     : format("t = %.7g, (b0, b1, b2) = (%.4g, %.4g, %.4g): all >= 0, inside", t.t,
+                                              t.b0, t.b1, t.b2));
             break;
         }
     }

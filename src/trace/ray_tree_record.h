@@ -26,10 +26,10 @@ const char* treeRayKindName(TreeRayKind kind);
 
 struct TreeRay {
     TreeRayKind kind = TreeRayKind::Primary;
-    int parent = -1;  // index of the ray whose hit spawned this one; -1 for the primary
-    int depth = 0;    // bounces from the camera (shadow rays: their parent's)
-    Ray ray;          // origin and unit direction exactly as traced (secondary origins offset by ε·N)
-    float after = 0.0f;  // hits at t <= after were not looked for (a see-through ray starts behind the surface)
+    int parent = -1;         // index of the ray whose hit spawned this one; -1 for the primary
+    int depth = 0;           // bounces from the camera (shadow rays: their parent's)
+    Ray ray;                 // origin and unit direction exactly as traced (secondary origins offset by ε·N)
+    float after = 0.0f;      // hits at t <= after were not looked for (a see-through ray starts behind the surface)
     std::optional<Hit> hit;  // the nearest visible hit; none when the ray escaped (or, for a shadow ray, was clear)
     uint32_t hitId = 0;      // coverage id of `hit` (scene/coverage.h); 0 none
     glm::vec3 weight{1.0f};  // how much of this ray's radiance reaches the pixel (1 for the primary)

@@ -147,8 +147,9 @@ Checked checkScene(const Scene& sc, const std::string& what) {
                 ++c.triangles;
                 const MeshGeometry& g = *ts.meshPart(hit).geometry;
                 const size_t tri = 3 * size_t(ts.triangleInPart(hit));
-                const TriangleAlgebra t = triangleAlgebra(r.ray, g.positions[g.indices[tri]],
-                                                          g.positions[g.indices[tri + 1]], g.positions[g.indices[tri + 2]]);
+                const TriangleAlgebra t =
+                    triangleAlgebra(r.ray, g.positions[g.indices[tri]], g.positions[g.indices[tri + 1]],
+                                    g.positions[g.indices[tri + 2]]);
                 // Relative to the ray's scale: t, or the coordinates' size when t is tiny (a float hit point
                 // cannot be closer than its coordinates' rounding).
                 const double scale = std::max(double(hit.t), double(glm::length(r.ray.origin)));
