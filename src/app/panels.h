@@ -10,6 +10,7 @@
 #include "app/viewer_state.h"
 #include "compare/image_compare.h"
 #include "probe/probe.h"
+#include "probe/rendering_equation.h"
 
 #include <optional>
 #include <string>
@@ -48,6 +49,7 @@ struct UiFields {
     float probeWindowHeight = 0.0f;           // unfolded; its size folded is not what placing it needs
     bool probeWindowHadRoom = true;           // the last placement fitted beside the point (else it folded)
     int rayTreeRay = 0;                       // the ray of the tree whose algebra the probe window writes
+    bool equationOpen = false;                // the probe window's rendering-equation section is open
     float lobeIncidence = 30.0f;              // degrees: the lobe plots' angle of incidence when no probe is set
     float lobeAxis = 90.0f;                   // degrees: the Cartesian lobe plot's axis, 0 to this (zoom)
     std::optional<AlbedoPlot> albedo;         // the albedo plot, recomputed when its settings change
@@ -89,8 +91,9 @@ struct PanelContext {
     ViewerState& state;
     PanelServices& services;
     UiFields& fields;
-    const ProbeResult* probe = nullptr;     // null when no probe is set
-    const RayTreePanel* rayTree = nullptr;  // the probe's ray tree, while it is drawn (ProbeState::rayTree)
+    const ProbeResult* probe = nullptr;           // null when no probe is set
+    const RayTreePanel* rayTree = nullptr;        // the probe's ray tree, while it is drawn (ProbeState::rayTree)
+    const RenderingEquation* equation = nullptr;  // at the probed point, while its section is open
     ReferenceInfo reference;
     GlobalInfo global;                          // the path tracer of Global and Local | Global
     std::optional<GlobalEstimate> probeGlobal;  // its estimate at the probed pixel, in those modes
@@ -103,6 +106,7 @@ struct PanelContext {
     int renderWidth = 0, renderHeight = 0;      // the rendered image, pixels
     float wipe = 0.5f;                          // the current mode's wipe, as drawn (Viewer::wipeFraction)
     float uiScale = 1.0f;                 // --ui-scale; 2 for --projector; else the monitor's content scale, 1 to 3
+    bool compactProbe = false;            // the probe window shows its key rows, the tables a click away
     size_t undoSteps = 0, redoSteps = 0;  // how many steps Undo and Redo can take
 };
 
@@ -124,6 +128,8 @@ void drawLessonWindow(PanelContext& ctx, float x, float bottom, float width, boo
 // placement stops having room beside the point (`room`), the window folds to its title bar, and unfolds when
 // it has room again; in between a click on its arrow is the user's to make.
 void drawProbeWindow(PanelContext& ctx, float x, float y, bool room);
+// The rendering equation at the probed point (panels_equation.cpp), inside the probe window.
+void drawRenderingEquation(const RenderingEquation& re, float uiScale);
 // The lobe plots of a material (panels_lobe.cpp): its specular lobe under each model against the angle
 // between R and V and as a polar plot in the plane of incidence (with the probe's L, V, R), and the
 // directional albedo of each model. `phongExponent` is the material's s as a Phong exponent.

@@ -223,9 +223,9 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
     if (ImGui::GetCurrentContext()->MovingWindow == ImGui::GetCurrentWindow()) ctx.fields.probeWindowMoved = true;
     ImGuiIO& io = ImGui::GetIO();
     if (io.Fonts->Fonts.Size > 1) ImGui::PushFont(io.Fonts->Fonts[1]);
-    // Compact on a projector (UI scale 1.5 and more): the key rows, the rest a click away, so that the window
+    // Compact (PanelContext::compactProbe): the key rows, the rest a click away, so that the window
     // fits beside the point inside what the panel leaves of the image.
-    const bool compact = ctx.uiScale >= 1.5f;
+    const bool compact = ctx.compactProbe;
     ImGui::Text("pixel (%d, %d): %s", p.x, p.y, p.hit ? p.label.c_str() : "background");
     if (p.hit) {
         ImGui::Text("P %+.3f %+.3f %+.3f", p.P.x, p.P.y, p.P.z);
@@ -264,6 +264,14 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         };
         if (!p.lights.empty()) folded("lights", "each light", [&] { lightTable(p, shadows, pbr); });
         folded("totals", "terms, every model", [&] { totalsTable(p, ctx.state.scene.model, ctx.state.encoding); });
+        ctx.fields.equationOpen = ImGui::TreeNodeEx("equation", 0, "rendering equation at this point");
+        if (ctx.fields.equationOpen) {
+            if (ctx.equation)
+                drawRenderingEquation(*ctx.equation, ctx.uiScale);
+            else
+                ImGui::TextDisabled("computing...");
+            ImGui::TreePop();
+        }
         if (ImGui::TreeNodeEx("raytree", ctx.state.probe.rayTree ? ImGuiTreeNodeFlags_DefaultOpen : 0,
                               "rays: r(t) = o + t\xc2\xb7"
                               "d")) {

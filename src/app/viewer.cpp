@@ -103,10 +103,12 @@ bool Viewer::frame() {
     updateReference();
     updateMetrics();
     updateProbe();
+    updateEquation();
 
     PanelContext ctx(state_, *this, fields_);
     ctx.probe = probe_ ? &*probe_ : nullptr;
     ctx.rayTree = rayTree_ ? &rayTreePanel_ : nullptr;
+    ctx.equation = equation_ ? &*equation_ : nullptr;
     ctx.reference = {reference_->active(),  reference_->complete(), reference_->progress(),
                      reference_->seconds(), reference_->threads(),  reference_->error()};
     ctx.global = {global_->active(), global_->samples(), GlobalRenderer::kMaxSamples, global_->passProgress(),
@@ -124,6 +126,9 @@ bool Viewer::frame() {
     ctx.renderWidth = renderW_;
     ctx.renderHeight = renderH_;
     ctx.uiScale = uiScale_;
+    // Compact on a projector, with the ray tree on (its rays need the room), and wherever the whole window
+    // (about 720 units tall) would not fit the image.
+    ctx.compactProbe = uiScale_ >= 1.5f || state_.probe.rayTree || imageH_ < 760.0f * uiScale_;
     ctx.wipe = wipeFraction();
     ctx.undoSteps = history_.undoSteps();
     ctx.redoSteps = history_.redoSteps();
@@ -347,6 +352,26 @@ void Viewer::updateProbe() {
     updateRayTree(traced, clicked);
 }
 
+// Local models: the lights and the ambient at the point; Global modes: the path tracer's hemisphere too.
+void Viewer::updateEquation() {
+    if (!fields_.equationOpen || !probe_ || !probe_->hit) {
+        equation_.reset();
+        return;
+    }
+    const bool global = isGlobal(state_.mode);
+    if (equation_ && equationRevision_ == state_.revision && equationX_ == probe_->x && equationY_ == probe_->y &&
+        equationGlobal_ == global)
+        return;
+    // Not while a drag orbits the camera or moves a light: the old figures stay until the hand stops.
+    for (int b = 0; b < 3; ++b)
+        if (ImGui::IsMouseDown(b) && equation_) return;
+    const trace::TraceScene traced(state_.scene, reference_->meshBvh(state_.scene));
+    equation_ = renderingEquationAt(traced, renderW_, renderH_, probe_->x, probe_->y, global);
+    equationRevision_ = state_.revision;
+    equationX_ = probe_->x, equationY_ = probe_->y;
+    equationGlobal_ = global;
+}
+
 // The tree is traced once from the camera of the click (or of the moment T is pressed) and traced again
 // along the same primary ray when the scene changes, so orbiting walks around it rather than re-aiming it.
 void Viewer::updateRayTree(const trace::TraceScene& traced, bool clicked) {
@@ -432,9 +457,10 @@ void Viewer::compose() {
     gl::checkError("viewer frame");
 }
 
-// Labels inside the image only: an arrow cut at the image's edge must not label the panel beside it.
+// Labels inside the image only: an arrow cut at the image's edge must not label the panel beside it. Under
+// the windows, as the arrows are: the probe window stays readable over them.
 void Viewer::drawArrowLabels(const std::vector<ArrowLabel>& labels) {
-    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
     for (const ArrowLabel& l : labels) {
         const ImVec2 at(l.position.x / fbScale_ + 6.0f * uiScale_, l.position.y / fbScale_ - 10.0f * uiScale_);
         if (at.x < imageX_ || at.y < imageY_ || at.x > imageX_ + imageW_ || at.y > imageY_ + imageH_) continue;

@@ -20,6 +20,7 @@
 #include "app/viewer_state.h"
 #include "compare/image_compare.h"
 #include "probe/ray_tree_view.h"
+#include "probe/rendering_equation.h"
 #include "raster/raster_renderer.h"
 
 #include <array>
@@ -74,6 +75,7 @@ private:
     void updateProbe();
     void updateRayTree(const trace::TraceScene& traced, bool clicked);
     void drawRayTree();
+    void updateEquation();
     void drawArrowLabels(const std::vector<ArrowLabel>& labels);
     void compose();
     void drawCaptions();
@@ -160,6 +162,12 @@ private:
     std::optional<RayTreeView> rayTree_;
     RayTreePanel rayTreePanel_;
     glm::vec3 rayTreeAnchor_{0.0f};  // the anchor point it was recorded for: another click records afresh
+    // The rendering equation at the probed point, while its section of the probe window is open: computed
+    // when the probe or the mode changes and no mouse button is held (a path-traced one takes ~0.1 s).
+    std::optional<RenderingEquation> equation_;
+    uint64_t equationRevision_ = 0;
+    int equationX_ = -1, equationY_ = -1;
+    bool equationGlobal_ = false;
 
     // Difference metrics for a complete reference.
     std::optional<CompareResult> metrics_;

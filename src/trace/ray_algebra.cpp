@@ -107,7 +107,7 @@ std::vector<std::string> rayAlgebraLines(const TraceScene& scene, const Ray& ray
             const Sphere& sp = sc.spheres[hit.index];
             const SphereAlgebra s = sphereAlgebra(ray, sp.center, sp.radius);
             out.push_back(
-                format("sphere: |r(t) - c|^2 - r^2 = 0, c = %s, r = %.4g", vec(sp.center).c_str(), double(sp.radius)));
+                format("sphere: |r(t) - c|² - r² = 0, c = %s, r = %.4g", vec(sp.center).c_str(), double(sp.radius)));
             out.push_back(format("a·t² + b·t + c = 0:  a = d·d = %.6g, b = 2d·(o - c) = %.6g, c = |o - c|² - r² = %.6g",
                                  double(s.a), double(s.b), double(s.c)));
             out.push_back(format("Δ = b² - 4ac = %.6g%s", double(s.discriminant), s.real ? "" : " < 0: no hit"));
