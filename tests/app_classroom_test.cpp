@@ -432,3 +432,37 @@ TEST(AppFileList, ListsFoldersThenScenesAndRemembersRecentFiles) {
     for (const char* p : {"a", "b", "a", "c"}) rememberRecent(recent, p, 2);
     EXPECT_EQ(recent, (std::vector<std::string>{"c", "a"}));
 }
+
+// A spot's marker outlines its outer cone: a closed rim around the arrow's end, wider for a wider cone;
+// a point light, and a spot whose marker waits at the image's edge, have none.
+TEST(AppLightMarkers, SpotMarkerOutlinesItsCone) {
+    ViewerState s = stateOf("assets/scenes/default.json");
+    s.scene.lights.clear();
+    addLight(s, LightType::Spot);
+    addLight(s, LightType::Point);
+    Light spot = s.scene.lights[0];
+    spot.position = glm::vec3(0.5f, 2.3f, 1.5f);
+    spot.direction = glm::normalize(glm::vec3(-0.2f, -1.0f, -0.6f));
+    spot.innerConeAngle = 0.2f;
+    spot.outerConeAngle = 0.3f;
+    ASSERT_TRUE(setLight(s, 0, spot));
+    const int w = 320, h = 180;
+    auto spread = [](const LightMarker& m) {
+        float r = 0.0f;
+        for (const glm::vec2& p : m.coneRim) r = std::max(r, glm::length(p - m.arrowTip));
+        return r;
+    };
+    const std::vector<LightMarker> markers = lightMarkers(s.scene, w, h);
+    ASSERT_EQ(markers[0].coneRim.size(), 32u);
+    EXPECT_TRUE(markers[1].coneRim.empty()) << "a point light has no cone";
+    const float narrow = spread(markers[0]);
+    EXPECT_GT(narrow, 2.0f);
+    spot.outerConeAngle = 0.6f;
+    ASSERT_TRUE(setLight(s, 0, spot));
+    EXPECT_GT(spread(lightMarkers(s.scene, w, h)[0]), 1.5f * narrow) << "control: a wider cone, a wider rim";
+    spot.position = glm::vec3(0.0f, 40.0f, 0.0f);  // far above the frame: the marker is clamped to the edge
+    ASSERT_TRUE(setLight(s, 0, spot));
+    const LightMarker off = lightMarkers(s.scene, w, h)[0];
+    EXPECT_TRUE(off.clamped);
+    EXPECT_TRUE(off.coneRim.empty());
+}

@@ -5,8 +5,11 @@
 #include "probe/rendering_equation.h"
 #include "probe/probe.h"
 #include "scene/scene_load.h"
+#include "scene/view.h"
 #include "test_output.h"
+#include "trace/integrator.h"
 #include "trace/path/path_render.h"
+#include "trace/tile_renderer.h"
 
 #include <gtest/gtest.h>
 
@@ -118,6 +121,46 @@ TEST(RenderingEquation, GlobalIntegralIsThePathTracersEstimate) {
         ++checked;
     }
     EXPECT_EQ(checked, 3);
+}
+
+}  // namespace shadelab
+
+namespace shadelab {
+
+// The lecture's step 0 (no light term on): the image shows each surface's unlit colour, and the probe, the
+// rendering equation and the reference say the same number. Control: with the ambient on they do not.
+TEST(RenderingEquation, NoIlluminationIsTheUnlitColourEverywhere) {
+    Scene scene = loadScene(test::sourcePath("assets/scenes/default.json"));
+    scene.terms = Terms{false, false, false, false, false};
+    int checked = 0;
+    for (ShadingModel model : {ShadingModel::Phong, ShadingModel::Pbr}) {
+        scene.model = model;
+        const trace::TraceScene ts(scene);
+        const trace::WhittedIntegrator whitted(ts, scene.maxDepth);
+        const ViewSetup view = makeViewSetup(scene, 160, 90);
+        for (int y = 5; y < 90; y += 10)
+            for (int x = 5; x < 160; x += 10) {
+                const ProbeResult p = probePixel(ts, 160, 90, x, y);
+                if (!p.hit) continue;
+                EXPECT_TRUE(p.unlit);
+                const glm::vec3 shown = model == ShadingModel::Pbr ? p.totalPbr : p.totalPhong;
+                if (model == ShadingModel::Phong) {
+                    EXPECT_EQ(shown, p.material.md) << x << "," << y;  // the checker tile's md
+                }
+                const glm::vec3 traced = whitted.primary(trace::sampleRay(view, 1, x, y, 0, 0)).color;
+                EXPECT_LT(maxAbs(traced, shown + p.material.emission), 1e-6) << toString(model) << " " << x << "," << y;
+                EXPECT_LT(maxAbs(renderingEquationAt(ts, 160, 90, x, y, false, 8).total, traced), 1e-6)
+                    << toString(model) << " " << x << "," << y;
+                ++checked;
+            }
+    }
+    EXPECT_GT(checked, 50);
+    scene.terms.ambient = true;
+    const trace::TraceScene lit(scene);
+    const ProbeResult p = probePixel(lit, 160, 90, 80, 70);
+    ASSERT_TRUE(p.hit);
+    EXPECT_FALSE(p.unlit);
+    EXPECT_GT(maxAbs(p.totalPhong, p.material.md), 1e-3) << "negative control: ambient on is Ia·ma, not md";
 }
 
 }  // namespace shadelab

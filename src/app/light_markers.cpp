@@ -41,6 +41,22 @@ bool project(const ViewSetup& v, const glm::vec3& p, glm::vec2& pixel) {
     return std::isfinite(pixel.x) && std::isfinite(pixel.y);
 }
 
+// The circle where the outer cone meets the plane `length` along the spot's axis, in 32 points.
+std::vector<glm::vec2> coneRim(const ViewSetup& v, const Light& light, float length) {
+    const glm::vec3 axis = glm::normalize(light.direction);
+    const glm::vec3 helper = std::fabs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    const glm::vec3 u = glm::normalize(glm::cross(axis, helper)), w = glm::cross(axis, u);
+    const float radius = length * std::tan(std::min(light.outerConeAngle, 1.5f));
+    std::vector<glm::vec2> rim;
+    for (int k = 0; k < 32; ++k) {
+        const float a = 2.0f * 3.14159265f * float(k) / 32.0f;
+        glm::vec2 p;
+        if (!project(v, light.position + length * axis + radius * (std::cos(a) * u + std::sin(a) * w), p)) return {};
+        rim.push_back(p);
+    }
+    return rim;
+}
+
 }  // namespace
 
 std::vector<LightMarker> lightMarkers(const Scene& scene, int width, int height) {
@@ -72,6 +88,7 @@ std::vector<LightMarker> lightMarkers(const Scene& scene, int width, int height)
         const glm::vec2 lo(kMarkerInset), hi(float(width) - kMarkerInset, float(height) - kMarkerInset);
         m.shown = glm::clamp(m.pixel, lo, glm::max(lo, hi));
         m.clamped = m.shown != m.pixel;
+        if (light.type == LightType::Spot && !m.clamped) m.coneRim = coneRim(v, light, 0.35f * sphere.radius);
         markers.push_back(m);
     }
     return markers;

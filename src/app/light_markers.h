@@ -27,6 +27,9 @@ struct LightMarker {
     // lights are above the frame), the nearest point kMarkerInset pixels inside the image's edge.
     glm::vec2 shown{0.0f};
     bool clamped = false;
+    // Spot lights: the rim of the outer cone where the arrow ends (image pixels, a closed loop), so the class
+    // sees where the light falls; empty for other lights, a light off the image, or a rim partly behind the eye.
+    std::vector<glm::vec2> coneRim;
 };
 
 inline constexpr float kMarkerInset = 14.0f;

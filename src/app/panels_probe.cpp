@@ -131,7 +131,7 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
     }
     row("sum diffuse", &Column::diffuse);
     row("sum specular", &Column::specular);
-    row("I (switches)", &Column::total);
+    row(p.unlit ? "I (unlit colour)" : "I (switches)", &Column::total);
     rowLabel("8-bit");
     for (int c = 0; c < 3; ++c) {
         const glm::vec3 v = cols[c].total;

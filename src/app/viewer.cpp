@@ -506,6 +506,25 @@ void Viewer::drawLightMarkers() {
                                   ImVec2(base.x - side.x, base.y - side.y), IM_COL32(255, 255, 255, 220));
         } else if (light.type != LightType::Point) {  // directional and spot: an arrow along the light
             const ImVec2 tip = windowPoint(m.arrowTip);
+            if (!m.coneRim.empty()) {  // a spot's outer cone: its rim, and two edges from the light to it
+                std::vector<ImVec2> rim;
+                for (const glm::vec2& p : m.coneRim) rim.push_back(windowPoint(p));
+                dl->AddPolyline(rim.data(), int(rim.size()), IM_COL32(0, 0, 0, 160), ImDrawFlags_Closed,
+                                3.0f * uiScale_);
+                dl->AddPolyline(rim.data(), int(rim.size()), fill, ImDrawFlags_Closed, 1.5f * uiScale_);
+                // The cone's outline from the light: the rim points seen at the widest angles either side.
+                glm::vec2 axis(0.0f);
+                for (const ImVec2& p : rim) axis += glm::vec2(p.x - at.x, p.y - at.y) / float(rim.size());
+                size_t lo = 0, hi = 0;
+                float loA = INFINITY, hiA = -INFINITY;
+                for (size_t k = 0; k < rim.size(); ++k) {
+                    const glm::vec2 d(rim[k].x - at.x, rim[k].y - at.y);
+                    const float a = std::atan2(axis.x * d.y - axis.y * d.x, glm::dot(axis, d));
+                    if (a < loA) loA = a, lo = k;
+                    if (a > hiA) hiA = a, hi = k;
+                }
+                for (size_t k : {lo, hi}) dl->AddLine(at, rim[k], fill, 1.0f * uiScale_);
+            }
             dl->AddLine(at, tip, IM_COL32(0, 0, 0, 200), 4.0f * uiScale_);
             dl->AddLine(at, tip, fill, 2.0f * uiScale_);
             dl->AddCircleFilled(tip, 3.0f * uiScale_, fill);

@@ -98,6 +98,12 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     r.totalBlinn = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsBlinn, scene.ambient,
                                        shading::SL_MODEL_BLINN_PHONG, flags);
     r.totalPbr = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsPbr, scene.ambient, pbr, flags);
+    // The lecture's step 0: with no light term on, both renderers show the surface's unlit colour, not black.
+    if (shading::noIllumination(scene.terms.ambient, scene.terms.diffuse, scene.terms.specular)) {
+        r.unlit = true;
+        r.totalPhong = r.totalBlinn = shading::unlitColour(m.md, s.baseColor, shading::SL_MODEL_PHONG);
+        r.totalPbr = shading::unlitColour(m.md, s.baseColor, pbr);
+    }
     return r;
 }
 

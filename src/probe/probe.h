@@ -52,6 +52,7 @@ struct ProbeResult {
     Material material;                    // the object's, with the checker tile's md at P
     glm::vec3 ambient{0.0f};              // Ia ⊙ ma
     std::vector<ProbeLight> lights;
+    bool unlit = false;                            // no light term on: the totals are the unlit colour (step 0)
     glm::vec3 totalPhong{0.0f};                    // shadeLocal with the scene's term switches, Phong
     glm::vec3 totalBlinn{0.0f};                    // the same, Blinn-Phong
     glm::vec3 totalPbr{0.0f};                      // the same, pbr

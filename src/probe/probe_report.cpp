@@ -71,6 +71,7 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                           {"specular_pbr", vec(l.specularPbr)}});
     j["lights"] = lights;
     j["total"] = {{"phong", vec(p.totalPhong)}, {"blinn_phong", vec(p.totalBlinn)}, {"pbr", vec(p.totalPbr)}};
+    j["unlit"] = p.unlit;
     if (rayTree) {
         nlohmann::json rays = nlohmann::json::array();
         for (size_t k = 0; k < rayTree->record.rays.size(); ++k) {
