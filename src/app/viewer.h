@@ -4,6 +4,8 @@
 //   viewer.cpp          the frame loop, layout and composition
 //   viewer_input.cpp    mouse, keys, drag and drop
 //   viewer_actions.cpp  script actions, captures (screenshots, probe report), open/save, shader reload
+//   viewer_probe.cpp    the probe, its ray tree and the rendering equation, updated each frame
+//   viewer_overlays.cpp what is drawn over the image: arrow labels, the ray tree, light markers, captions, toast
 #pragma once
 
 #include "app/accumulation.h"
