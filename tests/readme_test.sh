@@ -7,6 +7,11 @@
 # each with `--frames 5` added, the only change to a line, since the viewer otherwise runs until it is closed.
 # On failure the copy, with every command's output, stays in OUTPUT_DIR.
 #
+# The Quick start's first command, scripts/run.sh, is install-deps, build and then scripts/show.sh: its install
+# and build are the second command's too (CI runs that one on a fresh clone), so here the Quick start must hold
+# exactly those two commands, run.sh must end in show.sh, and show.sh runs first, in the copy: without a
+# display it must write out/default.png and out/default-blinn.png, with one open the viewer (--frames 5).
+#
 # Usage: tests/readme_test.sh SOURCE_DIR BUILD_DIR OUTPUT_DIR [--display]
 set -euo pipefail
 [[ $# -ge 3 ]] || { echo "usage: readme_test.sh SOURCE_DIR BUILD_DIR OUTPUT_DIR [--display]" >&2; exit 2; }
@@ -40,6 +45,39 @@ fi
 n=0
 ran=0
 failed=0
+
+# The Quick start: exactly its two commands, the first ending in the main job that runs here.
+quick=$(awk '
+    /^## / { in_section = ($0 ~ /^## Quick start/) }
+    in_section && /^```sh/ { in_block = 1; next }
+    in_block && /^```/ { in_block = 0; next }
+    in_block { sub(/[[:space:]]*#.*/, ""); if (length($0)) print }' "$src/README.md")
+if [[ $quick != $'scripts/run.sh\nscripts/test.sh' ]]; then
+    echo "readme_test: the Quick start should be exactly scripts/run.sh and scripts/test.sh, got:" >&2
+    printf '%s\n' "$quick" >&2
+    failed=1
+fi
+if [[ $(grep -v '^[[:space:]]*\(#\|$\)' scripts/run.sh | tail -1) != 'exec scripts/show.sh "$@"' ]]; then
+    echo "readme_test: scripts/run.sh no longer ends in scripts/show.sh, the part run here" >&2
+    failed=1
+fi
+show=(scripts/show.sh)
+[[ $display != --display ]] || show+=(--frames 5)
+status=0
+"${wrap[@]}" "${show[@]}" >"$output/quick-start.log" 2>&1 || status=$?
+printf '  0  exit %d        %s (the Quick start'"'"'s main job)\n' "$status" "${show[*]}"
+if [[ $status != 0 ]]; then
+    echo "readme_test: ${show[*]} exited $status" >&2
+    tail -5 "$output/quick-start.log" >&2
+    failed=1
+elif [[ $display != --display ]]; then
+    for f in out/default.png out/default-blinn.png; do
+        [[ -s $f ]] || { echo "readme_test: scripts/show.sh did not write $f" >&2; failed=1; }
+    done
+    grep -q "Rendered the default scene headlessly" "$output/quick-start.log" ||
+        { echo "readme_test: scripts/show.sh did not say where the PNGs are" >&2; failed=1; }
+    rm -rf out  # the first five minutes start without out/, as on a fresh clone
+fi
 while IFS= read -r line; do
     n=$((n + 1))
     expected=0
