@@ -219,10 +219,14 @@ def render(scene: SceneLike, size: Size = DEFAULT_SIZE, *, renderer: RendererNam
                                      seed=seed)
 
 
-def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_SIZE) -> dict[str, Any]:
+def probe(
+    scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_SIZE, ray_tree: bool = False
+) -> dict[str, Any]:
     """The lighting probe at `pixel` = (x, y) (row 0 at the top) of a `size` image: what the primary ray hits,
     N, V, and per light L, R, H, every dot product and term for Phong and Blinn-Phong, as a dict (the viewer's
-    probe report, docs/viewer.md). Asks the tracer; needs no GL context."""
+    probe report, docs/viewer.md). With `ray_tree`, also the Whitted ray tree the reference traces from the
+    pixel (report["ray_tree"]["rays"]: each ray's kind, parent, origin, direction, t and hit object, and for a
+    shadow ray its light and whether it is blocked). Asks the tracer; needs no GL context."""
     handle = _scene(scene)._handle
     width, height = parse_size(size)
     try:
@@ -231,5 +235,7 @@ def probe(scene: SceneLike, pixel: Sequence[SupportsInt], size: Size = DEFAULT_S
         raise ValueError(f"pixel: expected (x, y), two numbers int() takes, got {pixel!r}") from None
     clamp = _checks.Clamp()  # in the order the probe words them: size, then the pixel
     width, height = clamp(width), clamp(height)
-    report: dict[str, Any] = _checks.call(clamp, _shadelab._probe, handle, clamp(x), clamp(y), width, height)
+    report: dict[str, Any] = _checks.call(
+        clamp, _shadelab._probe, handle, clamp(x), clamp(y), width, height, bool(ray_tree)
+    )
     return report

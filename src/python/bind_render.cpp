@@ -2,6 +2,7 @@
 // threads (a notebook's widgets, a Dask worker's heartbeat) keep going.
 #include "image/image.h"
 #include "probe/probe.h"
+#include "probe/ray_tree_view.h"
 #include "python/bindings.h"
 #include "python/py_json.h"
 #include "python/renderer.h"
@@ -133,7 +134,7 @@ void bindRender(py::module_& m) {
 
     m.def(
         "_probe",
-        [](const SceneHandle& scene, int x, int y, int width, int height) {
+        [](const SceneHandle& scene, int x, int y, int width, int height, bool rayTree) {
             if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
                 throw UsageError("size: each side must be 1.." + std::to_string(kMaxImageSide) + " pixels, got " +
                                  std::to_string(width) + "x" + std::to_string(height));
@@ -146,12 +147,15 @@ void bindRender(py::module_& m) {
                 py::gil_scoped_release released;
                 const trace::TraceScene prepared(copy);
                 const ProbeResult probe = probePixel(prepared, width, height, x, y);
+                // The Whitted tree of the pixel, as the viewer's ray view records it (probe/ray_tree_view.h).
+                std::optional<RayTreeView> tree;
+                if (rayTree && probe.hit) tree = recordRayTree(prepared, width, height, x, y);
                 // The tracer's own coverage id stands where the viewer puts the rasterizer's.
-                report = probeReportJson(probe, copy, probe.objectId);
+                report = probeReportJson(probe, copy, probe.objectId, tree ? &*tree : nullptr);
             }
             return jsonTextToPython(report);
         },
-        py::arg("scene"), py::arg("x"), py::arg("y"), py::arg("width"), py::arg("height"));
+        py::arg("scene"), py::arg("x"), py::arg("y"), py::arg("width"), py::arg("height"), py::arg("ray_tree") = false);
 }
 
 }  // namespace shadelab::python

@@ -106,3 +106,20 @@ def test_probe_report(scene):
     assert not shadelab.probe(scene, (5, 0), SIZE)["hit"]  # the sky
     with pytest.raises(ValueError, match="outside"):
         shadelab.probe(scene, (96, 0), SIZE)
+
+
+def test_probe_ray_tree_is_the_tracers(scene):
+    """The ray tree beside the probe: rooted at the primary ray that the probe's own hit ends, each child
+    starting where its parent hit; without ray_tree it is absent (the control)."""
+    report = shadelab.probe(scene, (24, 40), SIZE, ray_tree=True)
+    rays = report["ray_tree"]["rays"]
+    assert rays[0]["kind"] == "primary" and rays[0]["parent"] == -1
+    assert rays[0]["t"] == pytest.approx(report["t"], rel=1e-6)
+    assert rays[0]["object"] == report["object"]["id"]
+    for ray in rays[1:]:
+        parent = rays[ray["parent"]]
+        hit = np.array(parent["origin"]) + parent["t"] * np.array(parent["dir"])
+        assert np.linalg.norm(np.array(ray["origin"]) - hit) < 1e-2, ray["line"]
+    shadows = [r for r in rays if r["kind"] == "shadow"]
+    assert len(shadows) >= 1 and all(isinstance(r["blocked"], bool) for r in shadows)
+    assert "ray_tree" not in shadelab.probe(scene, (24, 40), SIZE)
