@@ -460,7 +460,7 @@ def native_probe(scene_path, x, y, size, out):
     code = ("import json, sys, shadelab\n"
             "s = shadelab.Scene.load(sys.argv[1])\n"
             "print(json.dumps(shadelab.probe(s, (int(sys.argv[2]), int(sys.argv[3])), "
-            "size=(int(sys.argv[4]), int(sys.argv[5])))))\n")
+            "size=(int(sys.argv[4]), int(sys.argv[5])), ray_tree=True)))\n")
     env = dict(os.environ)
     python = os.environ.get("SHADELAB_PYTHONPATH", str(SOURCE_DIR / "build" / "python"))
     if not (Path(python) / "shadelab").is_dir():
@@ -499,6 +499,8 @@ def test_probe_matches_native(app, evidence, pixel):
     native = native_probe(evidence / "scene.json", x, y, SIZE, evidence / "native-probe.json")
     differences = report_differences(page, native)
     assert not differences, f"the page's probe of ({x}, {y}) differs from the native one: {differences[:5]}"
+    # The ray tree comes with it, the reference's own: compared above, ray by ray, with the native one.
+    assert not page["hit"] or page["ray_tree"]["rays"][0]["kind"] == "primary"
     # The control: the probe of another pixel is another report.
     other = json.loads(app.js(f"shadelab.probe({x + 7}, {y - 5})"))
     assert report_differences(other, native), "two pixels gave the same probe report: the comparison is blind"

@@ -11,6 +11,7 @@
 #include "compare/image_compare.h"
 #include "image/encode.h"
 #include "probe/probe.h"
+#include "probe/ray_tree_view.h"
 #include "raster/offscreen.h"
 #include "render/render_request.h"
 #include "scene/coverage.h"
@@ -25,6 +26,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 
 namespace shadelab::web {
@@ -284,7 +286,10 @@ std::string PageLab::probe(int x, int y, int width, int height) {
         const ProbeResult p = probePixel(*probeScene_, width, height, x, y);
         app::setProbe(state_, x, y);
         if (p.hit) state_.probe.anchor = ProbeAnchor{p.objectId, p.P};
-        return probeReportJson(p, state_.scene, p.objectId);
+        // With the rays the reference traces from the pixel (the viewer's ray view, probe/ray_tree_view.h).
+        std::optional<RayTreeView> tree;
+        if (p.hit) tree = recordRayTree(*probeScene_, width, height, x, y);
+        return probeReportJson(p, state_.scene, p.objectId, tree ? &*tree : nullptr);
     } catch (const std::exception& e) {
         return Json{{"error", lineOf(e)}}.dump();
     }

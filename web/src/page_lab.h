@@ -81,7 +81,7 @@ public:
     std::string differenceText() const { return differenceText_; }
 
     // The lighting probe at pixel (x, y) of a width x height image (probe/probe.h), as the viewer's probe
-    // report (its JSON, docs/viewer.md); also anchors the viewer state's probe there.
+    // report (its JSON, docs/viewer.md) with the pixel's ray tree; also anchors the viewer state's probe there.
     std::string probe(int x, int y, int width, int height);
     // The lobe and albedo plots of the selected object's material (app/lobe_plot.h, app/albedo_plot.h) as JSON
     // curves; `incidence` is θi in degrees. The lobe's "polar" values (over its peak) are at "polarAngles", the
