@@ -424,6 +424,28 @@ def select_centre_object(app):
     return selected
 
 
+def test_the_outline_follows_the_selection(app, evidence):
+    """A click outlines the object under it: the stage changes when another object is selected (the outline
+    moved), and not when the same one is clicked again (the control: the comparison is not blind to noise)."""
+    app.load_scene("default.json")
+    rect = app.js("(() => { const r = document.querySelector('#stage').getBoundingClientRect();"
+                  " return [r.left, r.top, r.width, r.height]; })()")
+    left, top, w, h = rect
+
+    def click_and_shoot(fx, fy, name):
+        app.page.click(left + fx * w, top + fy * h)
+        app.js("new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true))))")
+        label = app.js("document.querySelector('#selected-label').textContent")
+        return label, app.page.screenshot(str(evidence / f"{name}.png"), clip=(left, top, w, h))
+
+    green, a = click_and_shoot(0.52, 0.43, "green")   # the default scene's middle sphere
+    again, b = click_and_shoot(0.52, 0.43, "green-again")
+    red, c = click_and_shoot(0.19, 0.50, "red")       # the left sphere
+    assert green == again and green != red, (green, again, red)
+    assert a == b, "clicking the selected object again changed the picture"
+    assert a != c, f"selecting {red} after {green} left the picture as it was: the outline did not follow"
+
+
 def test_diffuse_strength_drives_the_picture(app, binary, evidence):
     def change():
         select_centre_object(app)

@@ -458,7 +458,8 @@
       const r = stage.getBoundingClientRect();
       const x = Math.floor((e.clientX - r.left) * width / r.width), y = Math.floor((e.clientY - r.top) * height / r.height);
       const id = lab.objectAt(x, y);
-      if (id) act({ action: 'select', object: '#' + id });
+      // A selection changes no render (no revision), but the outline: the display pass runs again.
+      if (id) { glDrawn = false; act({ action: 'select', object: '#' + id }); }
       $('probe').textContent = lab.probe(x, y, width, height);
     });
     stage.addEventListener('wheel', (e) => { e.preventDefault(); lab.zoom(-Math.sign(e.deltaY)); redraw(); }, { passive: false });
