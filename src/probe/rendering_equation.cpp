@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <optional>
 
 namespace shadelab {
 namespace {
@@ -107,7 +108,9 @@ RenderingEquation renderingEquationAt(const trace::TraceScene& scene, int width,
     // The hemisphere, texel by texel; under global illumination, samplesPerTexel paths stratified in each.
     PathSettings ps;
     ps.maxDepth = std::max(sc.maxDepth - 1, 0);
-    const PathIntegrator paths(scene, ps);
+    // Only the global view traces paths (its environment sampler is built from the whole map, if any).
+    std::optional<PathIntegrator> paths;
+    if (global) paths.emplace(scene, ps);
     const glm::vec3 above = s.P + scene.epsilon() * s.Nf;
     const int k = std::max(1, int(std::lround(std::sqrt(double(std::max(samplesPerTexel, 1))))));
     const float texel = 2.0f * kPi / float(size * size);
@@ -138,7 +141,7 @@ RenderingEquation renderingEquationAt(const trace::TraceScene& scene, int width,
                     const glm::vec3 w = frame.toWorld(hemisphereDirection(uv));
                     if (glm::dot(w, s.Nf) <= 0.0f) continue;  // under the geometric surface: no light from there
                     const SampleRng pathRng{uint32_t(t), uint32_t(b * k + a), 0x4E1u, PathSampler::Independent};
-                    const glm::vec3 L = paths.trace(Ray{above, w}, pathRng).color;
+                    const glm::vec3 L = paths->trace(Ray{above, w}, pathRng).color;
                     const glm::vec3 p = L * bsdf.evalCos(w);
                     sumL += L;
                     sumP += p;
