@@ -1,11 +1,12 @@
 // The path tracer against closed forms and against itself (design.md §8; pbrt-v4's integrator tests are the
 // model): radiance inside a diffuse emitting sphere and inside a sphere lit by a point light (both exactly
-// 1), the white furnace, agreement of BSDF-only, light-only and MIS estimators, direct lighting equal to the
-// Whitted tracer, and bit-identical images for any thread count, tile size or split into passes. Every
-// comparison is noise-aware (standard errors from the render itself) and has a negative control.
+// 1), the white furnace, agreement of BSDF-only, light-only and MIS estimators, and direct lighting equal to
+// the Whitted tracer (the render's determinism is path_render_test.cpp's). Every comparison is noise-aware
+// (standard errors from the render itself) and has a negative control.
 #include "scene/environment_load.h"
 #include "scene/scene_load.h"
 #include "trace/path/path_render.h"
+#include "trace/path/path_test_util.h"
 #include "trace/trace_image.h"
 #include "trace/trace_test_util.h"
 #include "util/input_error.h"
@@ -19,36 +20,11 @@
 namespace shadelab::trace {
 namespace {
 
-struct PathRun {
-    std::unique_ptr<PathRender> render;
-    glm::dvec3 mean{0.0};  // over all pixels
-    glm::dvec3 se{0.0};    // standard error of that mean
-};
-
-PathRun pathRun(const Scene& scene, PathSettings s) {
-    PathRun r;
-    r.render = std::make_unique<PathRender>(std::make_shared<const TraceScene>(scene), s);
-    r.render->addSamples(s.spp);
-    const double n = double(s.width) * s.height;
-    for (int y = 0; y < s.height; ++y)
-        for (int x = 0; x < s.width; ++x) {
-            const glm::vec3 m = r.render->mean(x, y), e = r.render->standardError(x, y);
-            r.mean += glm::dvec3(m) / n;
-            r.se += glm::dvec3(e) * glm::dvec3(e);
-        }
-    r.se = glm::sqrt(r.se) / n;
-    return r;
-}
-
-PathSettings small(int w, int h, int spp, int maxDepth) {
-    PathSettings s;
-    s.width = w;
-    s.height = h;
-    s.spp = spp;
-    s.maxDepth = maxDepth;
-    s.threads = 2;
-    return s;
-}
+using test::areaLightScene;
+using test::PathRun;
+using test::pathRun;
+using test::sameBytes;
+using test::small;
 
 // The camera at the centre of a sphere of radius 1 looking along −z.
 Scene insideSphere(const Material& m) {
@@ -172,41 +148,6 @@ TEST(PathFurnace, UnnormalisedPhongGainsOrLosesEnergyAndTheFurnaceShowsIt) {
         ::testing::Test::RecordProperty("phong_furnace_s" + std::to_string(int(s)), std::to_string(r.mean.y));
         EXPECT_GT(std::abs(r.mean.y - 1.0), 5.0 * r.se.y + 0.01) << "s = " << s;
     }
-}
-
-// An area-light scene: a floor, a glossy and a diffuse sphere, and an emissive sphere and emissive triangle.
-Scene areaLightScene() {
-    Scene scene;
-    scene.camera.position = glm::vec3(0.0f, 1.5f, 5.0f);
-    scene.camera.target = glm::vec3(0.0f, 0.5f, 0.0f);
-    scene.camera.fovY = 40.0f;
-    scene.model = ShadingModel::BlinnPhong;
-    Plane floor;
-    floor.material = test::plainMaterial(glm::vec3(0.0f), glm::vec3(0.6f), glm::vec3(0.2f), 30.0f);
-    scene.planes.push_back(floor);
-    Sphere glossy;
-    glossy.center = glm::vec3(-0.8f, 0.6f, 0.0f);
-    glossy.radius = 0.6f;
-    glossy.material = test::plainMaterial(glm::vec3(0.0f), glm::vec3(0.2f, 0.3f, 0.6f), glm::vec3(0.5f), 60.0f);
-    scene.spheres.push_back(glossy);
-    Sphere matte = glossy;
-    matte.center = glm::vec3(0.8f, 0.5f, 0.3f);
-    matte.radius = 0.5f;
-    matte.material = test::plainMaterial(glm::vec3(0.0f), glm::vec3(0.7f, 0.4f, 0.2f));
-    scene.spheres.push_back(matte);
-    Sphere lamp;
-    lamp.center = glm::vec3(0.3f, 2.4f, 0.8f);
-    lamp.radius = 0.35f;
-    lamp.material = test::plainMaterial(glm::vec3(0.0f));
-    lamp.material.emission = glm::vec3(6.0f, 5.0f, 4.0f);
-    scene.spheres.push_back(lamp);
-    Mesh panel;
-    panel.parts.push_back(test::makePart({{-2.5f, 0.2f, -1.5f}, {-1.5f, 0.2f, -1.5f}, {-2.0f, 1.6f, -1.0f}}, {0, 1, 2},
-                                         glm::vec3(-2.0f, 0.6f, -3.0f)));
-    panel.parts[0].material = test::plainMaterial(glm::vec3(0.0f));
-    panel.parts[0].material.emission = glm::vec3(1.0f, 3.0f, 2.0f);
-    scene.meshes.push_back(panel);
-    return scene;
 }
 
 // The mean difference of two renders in units of its standard error.
@@ -405,104 +346,6 @@ TEST(PathDirect, NegativeControlWhittedWithItsAmbientTermDiffers) {
     const DirectCheck d = compareWithWhitted(scene, scene, 0);
     EXPECT_GT(d.z, 3.0);
     EXPECT_GT(d.badPixels, 0.03);
-}
-
-bool sameBytes(const ImageF& a, const ImageF& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(float)) == 0;
-}
-
-TEST(PathDeterminism, AnyThreadCountTileSizeOrPassSplitGivesTheSameBytes) {
-    Scene scene = areaLightScene();
-    scene.spheres[0].material.kt = glm::vec3(0.5f);  // glass and roulette paths too
-    PathSettings s = small(40, 30, 12, 5);
-    s.threads = 1;
-    const ImageF one = pathRun(scene, s).render->image();
-    for (int threads : {2, 3}) {
-        s.threads = threads;
-        s.tileSize = threads == 2 ? 16 : 7;
-        EXPECT_TRUE(sameBytes(one, pathRun(scene, s).render->image())) << threads << " threads";
-    }
-    // Progressive: 5 + 7 samples equal 12 at once.
-    PathRender progressive(std::make_shared<const TraceScene>(scene), s);
-    progressive.addSamples(5);
-    progressive.addSamples(7);
-    EXPECT_EQ(progressive.samples(), 12);
-    EXPECT_TRUE(sameBytes(one, progressive.image()));
-    // Negative control: another seed is another image.
-    s.seed = 1;
-    EXPECT_FALSE(sameBytes(one, pathRun(scene, s).render->image()));
-}
-
-// The web page's workers share the rows by turns; put together, their pixels are one render's bytes.
-TEST(PathDeterminism, RowSharesPutTogetherGiveTheSameBytes) {
-    Scene scene = areaLightScene();
-    PathSettings s = small(40, 30, 6, 5);
-    s.threads = 1;
-    const ImageF one = pathRun(scene, s).render->image();
-    const auto traced = std::make_shared<const TraceScene>(scene);
-    PathRender a(traced, s), b(traced, s);
-    a.addSamplesToRows(2, 0, 2);
-    a.addSamplesToRows(4, 0, 2);
-    b.addSamplesToRows(6, 1, 2);
-    ImageF joined(s.width, s.height);
-    for (int y = 0; y < s.height; ++y) {
-        const ImageF share = (y % 2 == 0 ? a : b).image();
-        std::memcpy(joined.pixel(0, y), share.pixel(0, y), size_t(s.width) * 4 * sizeof(float));
-    }
-    EXPECT_TRUE(sameBytes(one, joined));
-    EXPECT_EQ(b.pixelSamples(3, 1), 6u);
-    EXPECT_EQ(b.pixelSamples(3, 0), 0u) << "a row of the other share";
-    // Negative control: a share with a sample fewer is not the same image.
-    PathRender c(traced, s);
-    c.addSamplesToRows(5, 0, 1);
-    EXPECT_FALSE(sameBytes(one, c.image()));
-}
-
-TEST(PathDeterminism, ACancelledPassKeepsWholePixels) {
-    Scene scene = areaLightScene();
-    PathSettings s = small(16, 16, 4, 2);
-    PathRender render(std::make_shared<const TraceScene>(scene), s);
-    std::atomic<bool> cancel{true};
-    EXPECT_FALSE(render.addSamples(4, &cancel));
-    EXPECT_EQ(render.samples(), 0);
-    cancel = false;
-    EXPECT_TRUE(render.addSamples(4, &cancel));
-    EXPECT_EQ(render.samples(), 4);
-}
-
-TEST(PathSettingsValidation, BadValuesAreRefusedWithTheFieldNamed) {
-    auto field = [](const PathSettings& s) -> std::string {
-        try {
-            validate(s);
-        } catch (const SettingError& e) {
-            return e.field();
-        }
-        return "";
-    };
-    PathSettings s;
-    s.spp = 0;
-    EXPECT_EQ(field(s), "spp");
-    s = PathSettings{};
-    s.timeLimit = -1.0;
-    EXPECT_EQ(field(s), "time_limit");
-    s = PathSettings{};
-    s.maxDepth = 65;
-    EXPECT_EQ(field(s), "depth");
-    EXPECT_NO_THROW(validate(PathSettings{}));
-}
-
-TEST(PathTimeLimit, StopsAtAWholeSampleCount) {
-    Scene scene = areaLightScene();
-    PathSettings s = small(64, 48, 100000, 3);
-    s.timeLimit = 0.3;
-    const PathOutput out = pathTraceImage(std::make_shared<const TraceScene>(scene), s);
-    EXPECT_GE(out.spp, 1);
-    EXPECT_LT(out.spp, 100000);
-    // The standard error needs two samples; a slow (sanitizer, loaded) machine may finish only one in time.
-    if (out.spp >= 2) {
-        EXPECT_GT(out.meanStandardError8, 0.0);
-    }
 }
 
 }  // namespace
