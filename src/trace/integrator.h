@@ -68,9 +68,6 @@ public:
 
     // vis_l: 1 when the shadow ray from s.P + ε·s.Nf toward the light reaches it, else 0.
     float visibility(const Surface& s, const Light& light) const;
-    // That shadow ray and the distance to the light along it (infinity for a directional light; 0 when the
-    // point is at the light).
-    Ray shadowRay(const Surface& s, const Light& light, float& tMax) const;
 
     // The first hit that an alpha mask does not cut away (SurfaceSetup::visibleHit).
     std::optional<Hit> visibleHit(const Ray& ray, float after, int depth) const {
@@ -78,6 +75,9 @@ public:
     }
 
 private:
+    // visibility()'s shadow ray and the distance to the light along it (infinity for a directional light; 0
+    // when the point is at the light). Defined inline in integrator.cpp, its only user.
+    Ray shadowRay(const Surface& s, const Light& light, float& tMax) const;
     struct Tree;  // one sample's budget, cancel flag and stats, and the record when one is kept
     PrimarySample primary(const Ray& ray, Tree& tree) const;
     glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree, TreeRayKind kind) const;
