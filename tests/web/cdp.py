@@ -136,12 +136,14 @@ class Browser:
                 self.proc.wait(timeout=3)
             except subprocess.TimeoutExpired:
                 pass
+            group = self.proc.pid
             try:
-                os.killpg(self.proc.pid, signal.SIGKILL)  # the group we started: helpers included
+                os.killpg(group, signal.SIGKILL)  # the group we started: helpers included
             except ProcessLookupError:
                 pass
             self.proc.wait()
             self.proc = None
+            _wait_for_group_to_die(group)
         if self._log is not None:
             self._log.close()
             self._log = None
@@ -418,6 +420,28 @@ class Page:
         data = base64.b64decode(self.call("Page.captureScreenshot", params)["data"])
         Path(path).write_bytes(data)
         return data
+
+
+def _living_in_group(group):
+    """Processes of a process group that still run (zombies, which a container's init may never reap, hold
+    nothing and do not count)."""
+    living = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[2]) == group and fields[0] not in ("Z", "X"):
+            living.append(stat.parent.name)
+    return living
+
+
+def _wait_for_group_to_die(group, timeout=10.0):
+    """SIGKILL is delivered asynchronously: the helpers of a killed group can still show as running for a few
+    milliseconds on a loaded machine. Returns once none does (or after `timeout`, leaving the rest to init)."""
+    deadline = time.monotonic() + timeout
+    while _living_in_group(group) and time.monotonic() < deadline:
+        time.sleep(0.01)
 
 
 def _die_with_parent():

@@ -164,7 +164,7 @@ def living_processes_in_group(group):
             fields = stat.read_text().rsplit(")", 1)[1].split()
         except OSError:
             continue
-        if int(fields[2]) == group and fields[0] != "Z":
+        if int(fields[2]) == group and fields[0] not in ("Z", "X"):
             living.append(stat.parent.name)
     return living
 
