@@ -422,7 +422,7 @@ class Page:
         return data
 
 
-def _living_in_group(group):
+def living_in_group(group):
     """Processes of a process group that still run (zombies, which a container's init may never reap, hold
     nothing and do not count)."""
     living = []
@@ -440,7 +440,7 @@ def _wait_for_group_to_die(group, timeout=10.0):
     """SIGKILL is delivered asynchronously: the helpers of a killed group can still show as running for a few
     milliseconds on a loaded machine. Returns once none does (or after `timeout`, leaving the rest to init)."""
     deadline = time.monotonic() + timeout
-    while _living_in_group(group) and time.monotonic() < deadline:
+    while living_in_group(group) and time.monotonic() < deadline:
         time.sleep(0.01)
 
 

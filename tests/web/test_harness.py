@@ -155,18 +155,8 @@ def test_served_mime_types(server, tmp_path):
                 assert r.headers["Content-Type"] == mime, name
 
 
-def living_processes_in_group(group):
-    """Processes of a process group that still run (zombies, which a container's init may never reap, hold
-    nothing and do not count)."""
-    living = []
-    for stat in Path("/proc").glob("[0-9]*/stat"):
-        try:
-            fields = stat.read_text().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[2]) == group and fields[0] not in ("Z", "X"):
-            living.append(stat.parent.name)
-    return living
+# The processes of a group still running (zombies do not count): the same /proc reading Browser.close waits on.
+living_processes_in_group = cdp.living_in_group
 
 
 def test_browser_is_killed_on_failure(evidence):
