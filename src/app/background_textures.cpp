@@ -1,6 +1,7 @@
 // The background renderers' image and tile textures.
 #include "app/background_textures.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace shadelab::app {
@@ -47,6 +48,37 @@ void uploadRowsFlipped(const gl::Texture& texture, int x, int y, int w, int h, i
     glBindTexture(GL_TEXTURE_2D, texture.id());
     glTexSubImage2D(GL_TEXTURE_2D, 0, x, imageHeight - y - h, w, h, GL_RGBA, GL_FLOAT, scratch.data());
     glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void TileMask::reset(int width, int height, int tileSize) {
+    tilesX_ = (width + tileSize - 1) / tileSize;
+    tilesY_ = (height + tileSize - 1) / tileSize;
+    state_.assign(size_t(tilesX_) * size_t(tilesY_), 0);
+    done_ = 0;
+    dirty_ = true;
+    if (!texture_) texture_ = makeTileTexture();
+}
+
+bool TileMask::mark(int tx, int ty) {
+    uint8_t& state = state_[size_t(ty) * size_t(tilesX_) + size_t(tx)];
+    const bool fresh = state == 0;
+    if (fresh) ++done_;
+    state = 255;
+    dirty_ = true;
+    return fresh;
+}
+
+void TileMask::assign(const std::vector<uint8_t>& mask) {
+    if (mask.size() != state_.size()) return;
+    state_ = mask;
+    done_ = int(std::count(state_.begin(), state_.end(), uint8_t(255)));
+    dirty_ = true;
+}
+
+void TileMask::upload() {
+    if (!dirty_ || !texture_) return;
+    uploadTileMask(texture_, tilesX_, tilesY_, state_.data());
+    dirty_ = false;
 }
 
 }  // namespace shadelab::app

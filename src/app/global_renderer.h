@@ -1,30 +1,22 @@
 // GlobalRenderer: the path tracer (design.md §8) for the viewer's Global and Local | Global modes. A
-// controller thread at idle priority owns a trace::PathRender and adds one sample per pixel per pass,
-// forever refining until kMaxSamples, restarting whenever the state (or the part of the light shown)
-// changes. After each pass it hands the mean image, and each pixel's standard error, to the UI thread,
-// which uploads it to a float texture; during the first pass it hands over the tiles done so far every
-// ~0.3 s (pending tiles show the raster image, as the reference's do). Whole passes also carry the denoised
-// preview (trace/path/path_denoise.h), guided by the first-hit passes computed once per request: after the
-// first pass, and then whenever the time since the last one is at least kDenoiseShare⁻¹ times what it took,
-// so the denoiser never takes more than about a fifth of the path tracer's time.
+// BackgroundController runs PathPassWork (path_pass_work.h), which adds one sample per pixel per pass, forever
+// refining until kMaxSamples, restarting whenever the state (or the part of the light shown) changes. The UI
+// thread uploads the newest pass, and its denoised preview when it carries one, to float textures.
 #pragma once
 
-#include "app/job_hand_off.h"
+#include "app/background_controller.h"
+#include "app/background_textures.h"
+#include "app/path_pass_work.h"
 #include "gl/objects.h"
 #include "image/image.h"
 #include "render/render_request.h"
 #include "scene/scene.h"
 #include "trace/accel/mesh_bvh_cache.h"
-#include "trace/path/path_render.h"
 #include "trace/path/path_settings.h"
 
-#include <atomic>
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <mutex>
-#include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace shadelab::app {
@@ -38,13 +30,11 @@ struct GlobalEstimate {
 
 class GlobalRenderer {
 public:
-    static constexpr int kMaxSamples = 4096;
-    static constexpr int kTileSize = 16;
-    static constexpr double kDenoiseShare = 0.25;  // denoising time over tracing time, at most
+    static constexpr int kMaxSamples = PathPassWork::kMaxSamples;
+    static constexpr int kTileSize = PathPassWork::kTileSize;
 
     // Shares the mesh BVH cache with the Whitted reference (built once per geometry).
     explicit GlobalRenderer(trace::MeshBvhCache& meshes);
-    ~GlobalRenderer();
     GlobalRenderer(const GlobalRenderer&) = delete;
     GlobalRenderer& operator=(const GlobalRenderer&) = delete;
 
@@ -55,68 +45,43 @@ public:
     // UI thread, GL context current: uploads the newest pass. True when one arrived.
     bool update();
 
-    bool active() const { return job_ != 0; }
+    bool active() const { return controller_.active(); }
     // Whether the texture holds an image of the current request yet (after its first pass).
     bool ready() const { return active() && samples_ > 0; }
     GLuint texture() const { return color_.id(); }  // RGBA32F, GL row order: the raw estimate
     // The denoised preview, RGBA32F, GL row order; valid once denoisedSamples() > 0.
     GLuint denoisedTexture() const { return denoised_.id(); }
-    GLuint tileTexture() const { return done_.id(); }  // R8, one texel per tile: 1 = has its first sample
+    GLuint tileTexture() const { return tiles_.texture(); }  // R8, one texel per tile: 1 = has its first sample
     int tileSize() const { return kTileSize; }
     int samples() const { return samples_; }
     // The samples per pixel of the newest denoised preview (0: none yet); at most samples().
     int denoisedSamples() const { return denoisedSamples_; }
     const ImageF& denoisedImage() const { return denoisedImage_; }  // linear, row 0 at the top
     uint64_t revision() const { return revision_; }                 // the state revision being rendered
-    float passProgress() const;                                     // of the pass under way, [0, 1]
+    float passProgress() const { return work_.passProgress(); }     // of the pass under way, [0, 1]
     double noise8() const { return noise8_; }                       // mean standard error, 8-bit sRGB units
-    double seconds() const;
-    int threads() const { return threads_; }
-    std::string error() const;
+    double seconds() const { return controller_.seconds(); }
+    int threads() const { return controller_.threads(); }
+    std::string error() const { return controller_.error(); }
     const ImageF& image() const { return image_; }  // the raw estimate, linear, row 0 at the top
     // The estimate at pixel (x, y), row 0 at the top; samples 0 before the first pass.
     GlobalEstimate estimate(int x, int y) const;
 
 private:
-    struct Job {
-        uint64_t id;
-        Scene scene;
-        render::RenderRequest request;  // the path tracer at the image's size, for the light paths asked for
-    };
-    struct Pass {  // one finished pass, controller → UI
-        uint64_t job = 0;
-        int samples = 0;
-        double noise8 = 0.0;
-        ImageF image;
-        std::vector<glm::vec3> standardError;
-        std::vector<uint8_t> tiles;  // tilesX × tilesY, row 0 at the top: 255 = every pixel has a sample
-        ImageF denoised;             // whole passes only, and not every one (kDenoiseShare); empty otherwise
-    };
-    // The render's state for the UI: during the first pass, the tiles done so far (the rest show the raster).
-    static Pass snapshot(uint64_t job, const trace::PathRender& render);
-    void controllerLoop();
-    void uploadTiles(const std::vector<uint8_t>& tiles);  // UI thread
-
-    trace::MeshBvhCache& meshes_;
-    JobHandOff<Job> jobs_;
-    std::atomic<bool> cancel_{false};  // set by the UI thread: the pass under way stops between pixels
-    std::mutex arrivedMutex_;
-    std::optional<Pass> arrived_;  // under arrivedMutex_
-    std::atomic<float> passProgress_{0.0f};
-    int threads_ = 1;
+    PathPassWork work_;
 
     // UI thread only.
-    uint64_t nextJob_ = 1, job_ = 0, revision_ = 0;
+    uint64_t revision_ = 0;
     trace::PathPart part_ = trace::PathPart::All;
-    int width_ = 0, height_ = 0, samples_ = 0, denoisedSamples_ = 0, tilesX_ = 0, tilesY_ = 0;
+    int width_ = 0, height_ = 0, samples_ = 0, denoisedSamples_ = 0;
     double noise8_ = 0.0;
     ImageF image_, denoisedImage_;
     std::vector<glm::vec3> standardError_;
-    double started_ = 0.0;
-    gl::Texture color_, denoised_, done_;
+    gl::Texture color_, denoised_;
+    TileMask tiles_;
     std::vector<float> flipped_;
 
-    std::thread controller_;  // last: it starts once every member exists
+    BackgroundController controller_;  // last: its thread starts once the work exists
 };
 
 }  // namespace shadelab::app

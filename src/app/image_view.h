@@ -4,17 +4,13 @@
 // GL only (no window, no ImGui), so the web page shows its raster image through it too.
 #pragma once
 
+#include "app/image_rect.h"
 #include "app/viewer_state.h"
 #include "gl/program.h"
 
 #include <cstdint>
 
 namespace shadelab::app {
-
-struct ImageRect {
-    int x = 0, y = 0;  // framebuffer pixels, GL convention: y is the bottom edge
-    int width = 0, height = 0;
-};
 
 struct ImageViewInputs {
     GLuint raster = 0;                    // RGBA32F texture

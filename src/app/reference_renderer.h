@@ -1,9 +1,11 @@
-// ReferenceRenderer: the CPU ray-traced reference for the viewer, rendered progressively on background
-// threads (src/trace ProgressiveTrace) and restarted whenever the state changes. The UI thread collects
-// finished tiles each frame into a float texture, so the window stays responsive while it runs.
+// ReferenceRenderer: the CPU ray-traced reference for the viewer, rendered progressively on background threads
+// (a BackgroundController running ReferenceWork) and restarted whenever the state changes. The UI thread
+// collects finished tiles each frame into a float texture, so the window stays responsive while it runs.
 #pragma once
 
-#include "app/job_hand_off.h"
+#include "app/background_controller.h"
+#include "app/background_textures.h"
+#include "app/reference_work.h"
 #include "gl/objects.h"
 #include "image/image.h"
 #include "render/render_request.h"
@@ -13,20 +15,16 @@
 
 #include <chrono>
 #include <cstdint>
-#include <mutex>
-#include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace shadelab::app {
 
 class ReferenceRenderer {
 public:
-    // Starts the controller thread, which drops to SCHED_IDLE before it starts workers, so they inherit it
-    // and the UI thread keeps the cores it needs. Workers: max(1, cores - 1).
+    // Starts the controller thread (at idle priority, so the UI thread keeps the cores it needs). Workers:
+    // max(1, cores - 1).
     ReferenceRenderer();
-    ~ReferenceRenderer();
     ReferenceRenderer(const ReferenceRenderer&) = delete;
     ReferenceRenderer& operator=(const ReferenceRenderer&) = delete;
 
@@ -44,49 +42,38 @@ public:
     // anything arrived.
     bool update();
 
-    GLuint texture() const { return color_.id(); }      // RGBA32F, GL row order, like the raster target
-    GLuint tileTexture() const { return tiles_.id(); }  // R8, 1 = tile rendered for the current request
+    GLuint texture() const { return color_.id(); }           // RGBA32F, GL row order, like the raster target
+    GLuint tileTexture() const { return tiles_.texture(); }  // R8, 1 = tile rendered for the current request
     int tileSize() const { return kTileSize; }
-    bool active() const { return job_ != 0; }
-    bool complete() const { return job_ != 0 && tilesDone_ == tileTotal_; }
-    float progress() const { return tileTotal_ ? float(tilesDone_) / float(tileTotal_) : 0.0f; }
+    bool active() const { return controller_.active(); }
+    bool complete() const { return active() && tiles_.done() == tiles_.total(); }
+    float progress() const { return tiles_.total() ? float(tiles_.done()) / float(tiles_.total()) : 0.0f; }
     double seconds() const;                          // since the current request, or its total
     uint64_t revision() const { return revision_; }  // the state revision being traced
     const ImageF& image() const { return image_; }   // linear, row 0 at the top
     const std::vector<uint32_t>& coverage() const { return coverage_; }
-    std::string error() const;
-    int threads() const { return threads_; }
+    std::string error() const { return controller_.error(); }
+    int threads() const { return controller_.threads(); }
 
 private:
     static constexpr int kTileSize = 32;
-    struct Job {
-        uint64_t id;
-        Scene scene;
-        render::RenderRequest request;  // the Whitted tracer at the image's size and depth, with coverage
-    };
-    void controllerLoop();
     void resize(int width, int height);
 
-    // Shared with the controller thread.
-    JobHandOff<Job> jobs_;
-    std::mutex arrivedMutex_;
-    std::vector<std::pair<uint64_t, trace::TileResult>> arrived_;  // (job id, tile), not yet collected
-    trace::MeshBvhCache meshes_;
-    int threads_ = 1;
+    trace::MeshBvhCache meshes_;  // shared with the controller thread's work
+    ReferenceWork work_;
 
     // UI thread only.
-    uint64_t nextJob_ = 1, job_ = 0, revision_ = 0;
+    uint64_t revision_ = 0;
     int maxDepth_ = -1;
-    int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0, tilesDone_ = 0, tileTotal_ = 0;
+    int width_ = 0, height_ = 0;
     ImageF image_;
     std::vector<uint32_t> coverage_;
-    std::vector<uint8_t> tileState_;
-    bool tilesDirty_ = false;
-    std::chrono::steady_clock::time_point started_, finished_;
-    gl::Texture color_, tiles_;
+    TileMask tiles_;
+    double finished_ = 0.0;  // seconds() when the last tile arrived
+    gl::Texture color_;
     std::vector<float> flipped_;
 
-    std::thread controller_;  // last: it starts once every member exists
+    BackgroundController controller_;  // last: its thread starts once the work exists
 };
 
 }  // namespace shadelab::app

@@ -18,7 +18,9 @@
 #include "app/probe_window_place.h"
 #include "app/reference_renderer.h"
 #include "app/script.h"
+#include "app/script_player.h"
 #include "app/undo_history.h"
+#include "app/viewer_layout.h"
 #include "app/viewer_state.h"
 #include "compare/image_compare.h"
 #include "probe/ray_tree_view.h"
@@ -38,9 +40,7 @@ struct ImVec2;
 
 namespace shadelab::app {
 
-inline constexpr float kViewerPanelWidth = 440.0f;  // side panel, window units at UI scale 1
-
-class Viewer : public PanelServices {
+class Viewer : public PanelServices, public ScriptWindow {
 public:
     Viewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script);
     ~Viewer() override;
@@ -55,6 +55,12 @@ public:
     void redo() override;
     void queueDrop(const std::string& path);  // from GLFW's drop callback
     void queueKey(int key, int mods);         // from GLFW's key callback: presses only
+
+    // ScriptWindow (viewer_actions.cpp)
+    void perform(const ScriptAction& action) override { performAction(action); }
+    bool referenceComplete() override;
+    bool writeSmoothFrame(const std::string& path) override;
+    double seconds() override;
 
 private:
     // viewer_setup.cpp
@@ -116,16 +122,7 @@ private:
     ViewerOptions options_;
     ViewerState state_;
     UndoHistory history_;
-    std::optional<Script> script_;
-    std::optional<ScriptCursor> cursor_;
-    const ScriptAction* waiting_ = nullptr;  // a waitReference action holding the script
-    struct SyntheticDrag {
-        actions::Drag drag;
-        int frame = 0;
-    };
-    std::optional<SyntheticDrag> drag_;         // a scripted drag in progress
-    const ScriptAction* smoothShot_ = nullptr;  // a smoothScreenshot waiting for the smooth frame
-    double waitStarted_ = 0.0;
+    std::optional<ScriptPlayer> player_;  // --script
 
     GLFWwindow* window_ = nullptr;
     bool imguiReady_ = false;
@@ -139,62 +136,73 @@ private:
 
     // Layout, in window (logical) units unless named fb*.
     int winW_ = 0, winH_ = 0, fbW_ = 0, fbH_ = 0;
-    float fbScale_ = 1.0f, uiScale_ = 1.0f;
-    float panelWidth_ = 0.0f;
+    float uiScale_ = 1.0f;
     bool showPanel_ = true;
-    bool overlayPanel_ = false;   // projector mode (key F11): the panel lies over a full-window image
-    bool panelOverlays_ = false;  // as laid out this frame (also when the panel is too wide to sit beside)
-    float imageX_ = 0, imageY_ = 0, imageW_ = 0, imageH_ = 0;  // where the image is shown
-    ImageRect fbRect_;                                         // the same in framebuffer pixels (GL)
-    int renderW_ = 0, renderH_ = 0;                            // rendered image size
+    bool overlayPanel_ = false;  // projector mode (key F11): the panel lies over a full-window image
+    ViewerLayout layout_;        // as laid out this frame
 
     // What the raster target holds.
-    uint64_t rasterRevision_ = 0, rasterGeometry_ = 0, meshGeometry_ = 0;
-    int rasterW_ = 0, rasterH_ = 0;     // the image's full size (a preview is about half of it)
-    bool rasterPreview_ = false;        // the target holds the half-size preview of a moving camera
-    std::optional<Camera> lastCamera_;  // the camera of the previous frame, for cameraMoved()
-    double lastChange_ = 0.0;           // glfwGetTime() of the last change of the image (for --verbose)
+    struct RasterShown {
+        uint64_t revision = 0, geometry = 0, meshGeometry = 0;
+        int width = 0, height = 0;         // the image's full size (a preview is about half of it)
+        bool preview = false;              // the target holds the half-size preview of a moving camera
+        std::optional<Camera> lastCamera;  // the camera of the previous frame, for cameraMoved()
+        double lastChange = 0.0;           // glfwGetTime() of the last change of the image (for --verbose)
+    } shown_;
 
-    // Probe, recomputed when the state or pixel changes.
-    std::optional<ProbeResult> probe_;
-    uint64_t probeRevision_ = 0;
-    int probeX_ = -1, probeY_ = -1, probeW_ = 0, probeH_ = 0;
+    // The probe, recomputed when the state or pixel changes.
+    struct ProbeCache {
+        std::optional<ProbeResult> result;
+        uint64_t revision = 0;
+        int x = -1, y = -1, width = 0, height = 0;
+    } probe_;
     // The probe's ray tree (key T), traced from where the camera was at the click and kept while it orbits,
     // so that the class can walk around it; its rays in words and algebra for the probe window.
-    std::optional<RayTreeView> rayTree_;
-    RayTreePanel rayTreePanel_;
-    glm::vec3 rayTreeAnchor_{0.0f};  // the anchor point it was recorded for: another click records afresh
+    struct RayTreeCache {
+        std::optional<RayTreeView> view;
+        RayTreePanel panel;
+        glm::vec3 anchor{0.0f};  // the anchor point it was recorded for: another click records afresh
+    } rayTree_;
     // The rendering equation at the probed point, while its section of the probe window is open: computed
     // when the probe or the mode changes and no mouse button is held (a path-traced one takes ~0.1 s).
-    std::optional<RenderingEquation> equation_;
-    uint64_t equationRevision_ = 0;
-    int equationX_ = -1, equationY_ = -1;
-    bool equationGlobal_ = false;
-
+    struct EquationCache {
+        std::optional<RenderingEquation> result;
+        uint64_t revision = 0;
+        int x = -1, y = -1;
+        bool global = false;
+    } equation_;
     // Difference metrics for a complete reference.
-    std::optional<CompareResult> metrics_;
-    std::string metricsWords_;  // where they differ, in plain words (compare/difference_sites.h)
-    uint64_t metricsRevision_ = 0;
-    uint64_t finiteCheckedRevision_ = 0;  // the reference revision whose finished image was checked for NaN
+    struct MetricsCache {
+        std::optional<CompareResult> result;
+        std::string words;  // where they differ, in plain words (compare/difference_sites.h)
+        uint64_t revision = 0;
+        uint64_t finiteChecked = 0;  // the reference revision whose finished image was checked for NaN
+    } metrics_;
 
     // Input.
     static constexpr float kMarkerPickRadius = 12.0f;  // window units at UI scale 1
-    int draggingLight_ = -1;                           // a light marker being dragged
-    bool aimingLight_ = false;                         // ... by a spot's arrow tip: the drag aims it
-    bool leftDown_ = false, dragged_ = false, panning_ = false, splitting_ = false;
-    float pressX_ = 0, pressY_ = 0;
-    std::vector<std::string> drops_;
+    struct Pointer {
+        int light = -1;       // a light marker being dragged
+        bool aiming = false;  // ... by a spot's arrow tip: the drag aims it
+        bool leftDown = false, dragged = false, panning = false, splitting = false;
+        float pressX = 0, pressY = 0;
+    } pointer_;
     struct KeyPress {
         int key = 0, mods = 0;
     };
-    std::vector<KeyPress> keys_;  // presses since the last frame
+    struct Queued {  // from GLFW's callbacks, handled at the next frame
+        std::vector<std::string> drops;
+        std::vector<KeyPress> keys;  // presses since the last frame
+    } queued_;
 
     UiFields fields_;
     std::string shaderError_;
-    std::string status_;
+    struct Status {  // the status line: saved, refused, an error
+        std::string message;
+        bool error = false;
+        double time = 0.0;  // glfwGetTime() when it was set
+    } status_;
     std::string lastProbeWindowLog_;
-    bool statusError_ = false;
-    double statusTime_ = 0.0;
     std::string pendingWindowShot_;
 
     int frame_ = 0;
@@ -202,11 +210,13 @@ private:
     static constexpr double kStatusSeconds = 8.0;
     int settleFrames_ = kSettleFrames;
     uint64_t idleRevision_ = 0;
-    FrameStats frameStats_, idleStats_, rasterStats_;    // frames with / without a raster redraw
-    size_t previewDraws_ = 0;                            // raster draws at half size (camera moving)
-    size_t partialDraws_ = 0;                            // raster draws that redrew only some objects
-    size_t shadowRenders_ = 0, environmentRenders_ = 0;  // raster draws that re-rendered those (--stats)
-    std::array<double, 64> recentMs_{};
+    struct Stats {                                         // for --stats and the panel's frame time
+        FrameStats frames, idle, raster;                   // all frames, those without a raster redraw, with
+        size_t previewDraws = 0;                           // raster draws at half size (camera moving)
+        size_t partialDraws = 0;                           // raster draws that redrew only some objects
+        size_t shadowRenders = 0, environmentRenders = 0;  // raster draws that re-rendered those
+        std::array<double, 64> recentMs{};
+    } stats_;
     double recentFrameMs() const;
     std::vector<std::string> glInfo_;
 };

@@ -47,47 +47,27 @@ Image8 readTarget8(const raster::RenderTarget& target, Encoding encoding, const 
 }  // namespace
 
 void Viewer::runScript() {
-    if (!cursor_ || drag_) return;  // a drag holds the script until it has been released
-    if (smoothShot_) {
-        const auto& shot = std::get<actions::SmoothScreenshot>(smoothShot_->action);
-        if (accumulation_->converged() && !accumulation_->restart(state_.revision, renderW_, renderH_)) {
-            uint64_t nonFinite = 0;
-            const Image8 smooth =
-                readTarget8(accumulation_->target(), state_.encoding, state_.scene.display, &nonFinite);
-            warnNonFinite("smooth frame", nonFinite, smooth);
-            writePng(shot.path, smooth);
-            smoothShot_ = nullptr;
-        } else if (glfwGetTime() - waitStarted_ > double(shot.timeout)) {
-            throw InputError(script_->file, "actions[" + std::to_string(smoothShot_->index) + "]",
-                             "the smooth frame did not complete within " + std::to_string(int(shot.timeout)) +
-                                 " s (it accumulates in Raster mode only, with 'smooth edges' on)");
-        } else {
-            return;
-        }
-    }
-    if (waiting_) {
-        const float timeout = std::get<actions::WaitReference>(waiting_->action).timeout;
-        // In Global modes: the path tracer's first whole sample pass of this state.
-        const bool done = isGlobal(state_.mode)
-                              ? global_->samples() > 0 && global_->revision() == state_.referenceRevision
-                              : reference_->complete() && reference_->revision() == state_.referenceRevision;
-        if (done) {
-            waiting_ = nullptr;
-        } else if (glfwGetTime() - waitStarted_ > double(timeout)) {
-            throw InputError(script_->file, "actions[" + std::to_string(waiting_->index) + "]",
-                             "the reference did not finish within " + std::to_string(int(timeout)) + " s");
-        } else {
-            return;
-        }
-    }
-    while (const ScriptAction* a = cursor_->next(frame_)) {
-        if (isStateAction(*a))
-            applyScriptAction(state_, *a, script_->file);
-        else
-            performAction(*a);
-        if (waiting_ || drag_ || smoothShot_) break;
-    }
+    if (player_) player_->play(frame_, state_, *this);
 }
+
+bool Viewer::referenceComplete() {
+    // In Global modes: the path tracer's first whole sample pass of this state.
+    return isGlobal(state_.mode) ? global_->samples() > 0 && global_->revision() == state_.referenceRevision
+                                 : reference_->complete() && reference_->revision() == state_.referenceRevision;
+}
+
+bool Viewer::writeSmoothFrame(const std::string& path) {
+    if (!accumulation_->converged() ||
+        accumulation_->restart(state_.revision, layout_.renderWidth, layout_.renderHeight))
+        return false;
+    uint64_t nonFinite = 0;
+    const Image8 smooth = readTarget8(accumulation_->target(), state_.encoding, state_.scene.display, &nonFinite);
+    warnNonFinite("smooth frame", nonFinite, smooth);
+    writePng(path, smooth);
+    return true;
+}
+
+double Viewer::seconds() { return glfwGetTime(); }
 
 void Viewer::performAction(const ScriptAction& a) {
     using namespace actions;
@@ -102,8 +82,7 @@ void Viewer::performAction(const ScriptAction& a) {
                     // writes (with --denoise when the denoised preview is shown), N the samples so far
                     // (printed, so a script or a test can render the same).
                     if (global_->samples() == 0 || global_->revision() != state_.referenceRevision)
-                        throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
-                                         "the path tracer has no whole sample yet (use waitReference first)");
+                        player_->fail(a, "the path tracer has no whole sample yet (use waitReference first)");
                     const bool denoised = showsDenoised();
                     writePng(x.path,
                              toPixels(denoised ? global_->denoisedImage() : global_->image(), "path-traced image"));
@@ -113,8 +92,7 @@ void Viewer::performAction(const ScriptAction& a) {
                     return;
                 }
                 if (!reference_->complete() || reference_->revision() != state_.referenceRevision)
-                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]",
-                                     "the reference is not complete (use waitReference first)");
+                    player_->fail(a, "the reference is not complete (use waitReference first)");
                 writePng(x.path, toPixels(reference_->image(), "traced image"));
             } else if constexpr (std::is_same_v<T, WindowScreenshot>) {
                 pendingWindowShot_ = x.path;
@@ -122,17 +100,11 @@ void Viewer::performAction(const ScriptAction& a) {
                 writeProbeReport(x.path);
             } else if constexpr (std::is_same_v<T, SaveScene>) {
                 if (const std::string why = saveRefusal(x.path); !why.empty())
-                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "].path",
-                                     x.path + ": " + why);
+                    player_->fail(a, x.path + ": " + why, "path");
                 saveSceneJson(state_.scene, x.path);
-            } else if constexpr (std::is_same_v<T, SmoothScreenshot>) {
-                smoothShot_ = &a;
-                waitStarted_ = glfwGetTime();
-            } else if constexpr (std::is_same_v<T, Drag>) {
-                drag_ = SyntheticDrag{x, 0};
             } else if constexpr (std::is_same_v<T, Render>) {
                 render::RenderRequest request = x.request;
-                if (!x.sizeGiven) request.width = renderW_, request.height = renderH_;
+                if (!x.sizeGiven) request.width = layout_.renderWidth, request.height = layout_.renderHeight;
                 request.encoding = state_.encoding;
                 // A render never replaces the scene it was made from.
                 if (!state_.scenePath.empty()) refuseInputAsOutput(x.path, "path", {state_.scenePath});
@@ -143,8 +115,7 @@ void Viewer::performAction(const ScriptAction& a) {
                     warnNonFinite("render", nonFinite, image);
                     writePng(x.path, image);
                 } catch (const SettingError& e) {
-                    throw InputError(script_->file, "actions[" + std::to_string(a.index) + "]." + e.field(),
-                                     e.reason());
+                    player_->fail(a, e.reason(), e.field());
                 }
                 std::fprintf(stderr, "shadelab: %s: %s render, %dx%d\n", x.path.c_str(),
                              render::toString(request.engine), request.width, request.height);
@@ -163,11 +134,8 @@ void Viewer::performAction(const ScriptAction& a) {
                 reloadShaders(x.dir);
             } else if constexpr (std::is_same_v<T, ResizeWindow>) {
                 glfwSetWindowSize(window_, x.width, x.height);
-            } else if constexpr (std::is_same_v<T, WaitReference>) {
-                waiting_ = &a;
-                waitStarted_ = glfwGetTime();
             } else {
-                applyScriptAction(state_, a, script_->file);
+                applyScriptAction(state_, a, player_->file());
             }
         },
         a.action);
@@ -177,15 +145,12 @@ void Viewer::performAction(const ScriptAction& a) {
 // before ImGui::NewFrame turns it into clicks and deltas: frame 0 moves to the start, 1 presses, then
 // `steps` moves, then the release. handleMouse cannot tell it from a hand on the mouse.
 void Viewer::feedSyntheticMouse() {
-    if (!drag_) return;
+    if (!player_) return;
+    const std::optional<DragPointer> pointer = player_->nextDragPointer();
+    if (!pointer) return;
     ImGuiIO& io = ImGui::GetIO();
-    const actions::Drag& d = drag_->drag;
-    const int frame = drag_->frame++;
-    const float t = std::clamp(float(frame - 1) / float(d.steps), 0.0f, 1.0f);
-    const ImVec2 p = windowPoint(glm::vec2(d.x0 + 0.5f + t * (d.x1 - d.x0), d.y0 + 0.5f + t * (d.y1 - d.y0)));
-    io.MousePos = p;
-    io.MouseDown[0] = frame >= 1 && frame <= d.steps + 1;
-    if (frame > d.steps + 2) drag_.reset();
+    io.MousePos = windowPoint(pointer->imagePixel);
+    io.MouseDown[0] = pointer->down;
 }
 
 Image8 Viewer::captureRaster() {
@@ -213,12 +178,12 @@ void Viewer::warnNonFinite(const char* what, uint64_t nonFinite, const Image8& i
 
 uint32_t Viewer::coverageAt(int x, int y) {
     ensureRasterCurrent(false);
-    if (x < 0 || y < 0 || x >= rasterW_ || y >= rasterH_) return 0;
+    if (x < 0 || y < 0 || x >= shown_.width || y >= shown_.height) return 0;
     raster_->target().bind();
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     uint32_t id = 0;
-    glReadPixels(x, rasterH_ - 1 - y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &id);
+    glReadPixels(x, shown_.height - 1 - y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &id);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::checkError("coverage readback");
     return id;
@@ -229,7 +194,8 @@ void Viewer::writeProbeReport(const std::string& path) {
         throw InputError(path, "no probe is set (click the image, or use a 'probe' script action)");
     updateProbe();
     const uint32_t coverage = coverageAt(state_.probe.x, state_.probe.y);
-    writeFileAtomic(path, probeReportJson(*probe_, state_.scene, coverage, rayTree_ ? &*rayTree_ : nullptr));
+    writeFileAtomic(path,
+                    probeReportJson(*probe_.result, state_.scene, coverage, rayTree_.view ? &*rayTree_.view : nullptr));
 }
 
 void Viewer::writeWindowScreenshot(const std::string& path) {
@@ -252,7 +218,7 @@ void Viewer::writeWindowScreenshot(const std::string& path) {
 
 void Viewer::updateMetrics() {
     if (state_.mode != ViewMode::Difference || !reference_->complete() ||
-        reference_->revision() != state_.referenceRevision || metricsRevision_ == state_.revision)
+        reference_->revision() != state_.referenceRevision || metrics_.revision == state_.revision)
         return;
     const Image8 raster = captureRaster();
     std::vector<uint32_t> rasterCoverage;
@@ -260,10 +226,10 @@ void Viewer::updateMetrics() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     const Image8 traced = toPixels(reference_->image(), "traced image");
     if (traced.width != raster.width || traced.height != raster.height) return;
-    metrics_ = compareImages(raster, traced, rasterCoverage, reference_->coverage());
-    metricsWords_ = describeDifference(state_.scene, differenceSites(raster, traced, rasterCoverage, *metrics_),
-                                       metrics_->gates.threshold);
-    metricsRevision_ = state_.revision;
+    metrics_.result = compareImages(raster, traced, rasterCoverage, reference_->coverage());
+    metrics_.words = describeDifference(state_.scene, differenceSites(raster, traced, rasterCoverage, *metrics_.result),
+                                        metrics_.result->gates.threshold);
+    metrics_.revision = state_.revision;
 }
 
 void Viewer::openScene(const std::string& path) {
@@ -275,7 +241,7 @@ void Viewer::openScene(const std::string& path) {
         rememberRecent(fields_.recent, path);
         fields_.openPath = path;
         fields_.savePath = defaultSavePath(path);
-        metrics_.reset();
+        metrics_.result.reset();
         setStatus("opened " + path, false);
     } catch (const std::exception& e) {
         setStatus(e.what(), true);
@@ -297,14 +263,14 @@ void Viewer::saveScene(const std::string& path) {
 
 void Viewer::undo() {
     if (history_.undo(state_)) {
-        metrics_.reset();
+        metrics_.result.reset();
         setStatus("undone (" + std::to_string(history_.undoSteps()) + " more to undo)", false);
     }
 }
 
 void Viewer::redo() {
     if (history_.redo(state_)) {
-        metrics_.reset();
+        metrics_.result.reset();
         setStatus("redone (" + std::to_string(history_.redoSteps()) + " more to redo)", false);
     }
 }
@@ -312,7 +278,8 @@ void Viewer::redo() {
 void Viewer::screenshot(const std::string& path) {
     try {
         writePng(path, captureRaster());
-        setStatus("wrote " + path + " (" + std::to_string(rasterW_) + "x" + std::to_string(rasterH_) + ")", false);
+        setStatus("wrote " + path + " (" + std::to_string(shown_.width) + "x" + std::to_string(shown_.height) + ")",
+                  false);
     } catch (const std::exception& e) {
         setStatus(e.what(), true);
     }
@@ -331,8 +298,8 @@ void Viewer::reloadShaders(const std::string& from) {
         raster_ = std::move(raster);
         imageView_ = std::move(view);
         arrows_ = std::move(arrows);
-        meshGeometry_ = 0;  // the new renderer has no meshes yet
-        rasterRevision_ = 0;
+        shown_.meshGeometry = 0;  // the new renderer has no meshes yet
+        shown_.revision = 0;
         shaderError_.clear();
         setStatus("reloaded shaders from " + dir, false);
     } catch (const std::exception& e) {
@@ -342,9 +309,9 @@ void Viewer::reloadShaders(const std::string& from) {
 }
 
 void Viewer::setStatus(const std::string& message, bool error) {
-    status_ = message;
-    statusError_ = error;
-    statusTime_ = glfwGetTime();
+    status_.message = message;
+    status_.error = error;
+    status_.time = glfwGetTime();
     if (error)
         printError(message);
     else if (options_.verbose)

@@ -46,13 +46,13 @@ void installInputCallbacks(GLFWwindow* window) {
     glfwSetKeyCallback(window, onKey);
 }
 
-void Viewer::queueKey(int key, int mods) { keys_.push_back({key, mods}); }
+void Viewer::queueKey(int key, int mods) { queued_.keys.push_back({key, mods}); }
 
-void Viewer::queueDrop(const std::string& path) { drops_.push_back(path); }
+void Viewer::queueDrop(const std::string& path) { queued_.drops.push_back(path); }
 
 void Viewer::handleDrops() {
     std::vector<std::string> drops;
-    drops.swap(drops_);
+    drops.swap(queued_.drops);
     for (const std::string& path : drops) {
         if (!sceneExtension(path)) {
             setStatus(path + ": not a scene (.json, .gltf or .glb)", true);
@@ -64,62 +64,66 @@ void Viewer::handleDrops() {
 }
 
 glm::ivec2 Viewer::imagePixelAt(float windowX, float windowY) const {
-    return {int(std::floor((windowX - imageX_) / imageW_ * float(renderW_))),
-            int(std::floor((windowY - imageY_) / imageH_ * float(renderH_)))};
+    return {int(std::floor((windowX - layout_.imageX) / layout_.imageW * float(layout_.renderWidth))),
+            int(std::floor((windowY - layout_.imageY) / layout_.imageH * float(layout_.renderHeight)))};
 }
 
 void Viewer::handleMouse() {
     ImGuiIO& io = ImGui::GetIO();
     const ImVec2 m = io.MousePos;
-    const bool overImage = m.x >= imageX_ && m.x < imageX_ + imageW_ && m.y >= imageY_ && m.y < imageY_ + imageH_;
+    const bool overImage = m.x >= layout_.imageX && m.x < layout_.imageX + layout_.imageW && m.y >= layout_.imageY &&
+                           m.y < layout_.imageY + layout_.imageH;
     if (!io.WantCaptureMouse && overImage) {
         int marker = -1;
         if (fields_.lightMarkers && ImGui::IsMouseClicked(0)) {
             // A spot's arrow tip aims it (unless its own disc is under the pointer too); elsewhere a light's
             // marker moves the light, not the camera.
-            const std::vector<LightMarker> markers = lightMarkers(state_.scene, renderW_, renderH_);
+            const std::vector<LightMarker> markers =
+                lightMarkers(state_.scene, layout_.renderWidth, layout_.renderHeight);
             const glm::vec2 at = imagePixelF(m.x, m.y);
             marker = aimHandleAt(state_.scene, markers, at, markerPickRadius());
-            aimingLight_ = marker >= 0 && markerAt(markers, at, markerPickRadius()) != marker;
-            if (!aimingLight_) marker = markerAt(markers, at, markerPickRadius());
+            pointer_.aiming = marker >= 0 && markerAt(markers, at, markerPickRadius()) != marker;
+            if (!pointer_.aiming) marker = markerAt(markers, at, markerPickRadius());
         }
         if (marker >= 0) {
-            draggingLight_ = marker;
+            pointer_.light = marker;
         } else if (ImGui::IsMouseClicked(0)) {
-            leftDown_ = true;
-            dragged_ = false;
-            pressX_ = m.x;
-            pressY_ = m.y;
-            const float wipe = imageX_ + wipeFraction() * imageW_;
-            splitting_ = hasWipe(state_.mode) && std::fabs(m.x - wipe) < 8.0f * uiScale_;
+            pointer_.leftDown = true;
+            pointer_.dragged = false;
+            pointer_.pressX = m.x;
+            pointer_.pressY = m.y;
+            const float wipe = layout_.imageX + wipeFraction() * layout_.imageW;
+            pointer_.splitting = hasWipe(state_.mode) && std::fabs(m.x - wipe) < 8.0f * uiScale_;
         }
-        if (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)) panning_ = true;
+        if (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)) pointer_.panning = true;
         if (io.MouseWheel != 0.0f) {
             OrbitCamera o = state_.orbit;
             orbitZoom(o, io.MouseWheel);
             applyOrbit(state_, o);
         }
     }
-    if (draggingLight_ >= 0) {
-        if (!ImGui::IsMouseDown(0) || size_t(draggingLight_) >= state_.scene.lights.size()) {
-            draggingLight_ = -1;
+    if (pointer_.light >= 0) {
+        if (!ImGui::IsMouseDown(0) || size_t(pointer_.light) >= state_.scene.lights.size()) {
+            pointer_.light = -1;
         } else if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
             const glm::vec2 at = imagePixelF(m.x, m.y);
-            setLight(state_, draggingLight_,
-                     aimingLight_ ? aimedSpot(state_.scene, renderW_, renderH_, draggingLight_, at)
-                                  : draggedLight(state_.scene, renderW_, renderH_, draggingLight_, at));
+            setLight(state_, pointer_.light,
+                     pointer_.aiming
+                         ? aimedSpot(state_.scene, layout_.renderWidth, layout_.renderHeight, pointer_.light, at)
+                         : draggedLight(state_.scene, layout_.renderWidth, layout_.renderHeight, pointer_.light, at));
         }
     }
-    if (leftDown_) {
+    if (pointer_.leftDown) {
         if (!ImGui::IsMouseDown(0)) {
-            leftDown_ = false;
-            if (!dragged_ && !splitting_) clickAt(pressX_, pressY_);
-            splitting_ = false;
+            pointer_.leftDown = false;
+            if (!pointer_.dragged && !pointer_.splitting) clickAt(pointer_.pressX, pointer_.pressY);
+            pointer_.splitting = false;
         } else {
-            if (std::fabs(m.x - pressX_) + std::fabs(m.y - pressY_) > kClickSlop) dragged_ = true;
-            if (dragged_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-                if (splitting_) {
-                    setSplitPosition(state_, (m.x - imageX_) / imageW_);
+            if (std::fabs(m.x - pointer_.pressX) + std::fabs(m.y - pointer_.pressY) > kClickSlop)
+                pointer_.dragged = true;
+            if (pointer_.dragged && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+                if (pointer_.splitting) {
+                    setSplitPosition(state_, (m.x - layout_.imageX) / layout_.imageW);
                 } else {
                     OrbitCamera o = state_.orbit;
                     orbitRotate(o, -io.MouseDelta.x * kRadiansPerPixel, io.MouseDelta.y * kRadiansPerPixel);
@@ -128,12 +132,12 @@ void Viewer::handleMouse() {
             }
         }
     }
-    if (panning_) {
+    if (pointer_.panning) {
         if (!ImGui::IsMouseDown(1) && !ImGui::IsMouseDown(2)) {
-            panning_ = false;
+            pointer_.panning = false;
         } else if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
             OrbitCamera o = state_.orbit;
-            orbitPan(o, io.MouseDelta.x, io.MouseDelta.y, imageH_);
+            orbitPan(o, io.MouseDelta.x, io.MouseDelta.y, layout_.imageH);
             applyOrbit(state_, o);
         }
     }
@@ -143,7 +147,7 @@ void Viewer::handleMouse() {
 // the probe on that pixel; the background clears both.
 void Viewer::clickAt(float windowX, float windowY) {
     const glm::ivec2 p = imagePixelAt(windowX, windowY);
-    if (p.x < 0 || p.y < 0 || p.x >= renderW_ || p.y >= renderH_) return;
+    if (p.x < 0 || p.y < 0 || p.x >= layout_.renderWidth || p.y >= layout_.renderHeight) return;
     const uint32_t id = coverageAt(p.x, p.y);
     select(state_, id);
     if (id != 0)
@@ -154,7 +158,7 @@ void Viewer::clickAt(float windowX, float windowY) {
 
 void Viewer::handleKeys() {
     std::vector<KeyPress> keys;
-    keys.swap(keys_);
+    keys.swap(queued_.keys);
     if (ImGui::GetIO().WantCaptureKeyboard) return;  // a text field has the keyboard
     for (const KeyPress& k : keys) {
         const bool ctrl = (k.mods & GLFW_MOD_CONTROL) != 0, shift = (k.mods & GLFW_MOD_SHIFT) != 0;

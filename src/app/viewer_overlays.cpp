@@ -20,8 +20,11 @@ namespace shadelab::app {
 void Viewer::drawArrowLabels(const std::vector<ArrowLabel>& labels) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     for (const ArrowLabel& l : labels) {
-        const ImVec2 at(l.position.x / fbScale_ + 6.0f * uiScale_, l.position.y / fbScale_ - 10.0f * uiScale_);
-        if (at.x < imageX_ || at.y < imageY_ || at.x > imageX_ + imageW_ || at.y > imageY_ + imageH_) continue;
+        const ImVec2 at(l.position.x / layout_.fbScale + 6.0f * uiScale_,
+                        l.position.y / layout_.fbScale - 10.0f * uiScale_);
+        if (at.x < layout_.imageX || at.y < layout_.imageY || at.x > layout_.imageX + layout_.imageW ||
+            at.y > layout_.imageY + layout_.imageH)
+            continue;
         const ImU32 color = ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, 1.0f));
         dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 255), l.text.c_str());
         dl->AddText(at, color, l.text.c_str());
@@ -31,23 +34,24 @@ void Viewer::drawArrowLabels(const std::vector<ArrowLabel>& labels) {
 // The ray tree as arrows in the view, each labelled at its middle; the ray whose algebra the probe window
 // shows drawn wider. Rays that leave the scene are drawn as long as the eye is from the probed point.
 void Viewer::drawRayTree() {
-    const float escape = glm::length(probe_->P - rayTree_->primary.origin);
+    const float escape = glm::length(probe_.result->P - rayTree_.view->primary.origin);
     std::vector<ArrowSegment> segments;
-    for (const RayTreeSegment& s : rayTreeSegments(state_.scene, rayTree_->record, escape)) {
+    for (const RayTreeSegment& s : rayTreeSegments(state_.scene, rayTree_.view->record, escape)) {
         const bool chosen = s.ray == fields_.rayTreeRay;
         segments.push_back({s.from, s.to, s.color, s.label, 0.5f, chosen ? 1.6f : 0.8f});
     }
-    drawArrowLabels(arrows_->draw(state_.scene, segments, renderW_, renderH_, fbRect_, fbH_, fbScale_ * uiScale_));
+    drawArrowLabels(arrows_->draw(state_.scene, segments, layout_.renderWidth, layout_.renderHeight, layout_.fbRect,
+                                  fbH_, layout_.fbScale * uiScale_));
 }
 
 // A marker per light (light_markers.h): a disc in the light's colour, an arrow for a directional light, and
 // its name; the one under the pointer or being dragged is ringed.
 void Viewer::drawLightMarkers() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const std::vector<LightMarker> markers = lightMarkers(state_.scene, renderW_, renderH_);
+    const std::vector<LightMarker> markers = lightMarkers(state_.scene, layout_.renderWidth, layout_.renderHeight);
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const int hover =
-        draggingLight_ >= 0 ? draggingLight_ : markerAt(markers, imagePixelF(mouse.x, mouse.y), markerPickRadius());
+        pointer_.light >= 0 ? pointer_.light : markerAt(markers, imagePixelF(mouse.x, mouse.y), markerPickRadius());
     const float r = 7.0f * uiScale_;
     for (const LightMarker& m : markers) {
         if (!m.visible) continue;
@@ -91,7 +95,8 @@ void Viewer::drawLightMarkers() {
         dl->AddCircleFilled(at, r, fill);
         if (m.light == hover) dl->AddCircle(at, r + 4.0f * uiScale_, IM_COL32(255, 220, 60, 255), 0, 2.0f * uiScale_);
         const std::string name = "L" + std::to_string(m.light + 1);
-        const bool leftSide = at.x > imageX_ + imageW_ - 40.0f * uiScale_;  // keep the name inside the image
+        const bool leftSide =
+            at.x > layout_.imageX + layout_.imageW - 40.0f * uiScale_;  // keep the name inside the image
         const ImVec2 text(leftSide ? at.x - r - 22.0f * uiScale_ : at.x + r + 3.0f * uiScale_, at.y - r);
         dl->AddText(ImVec2(text.x + 1.0f, text.y + 1.0f), IM_COL32(0, 0, 0, 255), name.c_str());
         dl->AddText(text, IM_COL32(255, 255, 255, 255), name.c_str());
@@ -100,15 +105,17 @@ void Viewer::drawLightMarkers() {
 
 // kMarkerPickRadius window units, in image pixels.
 float Viewer::markerPickRadius() const {
-    return kMarkerPickRadius * uiScale_ * float(renderW_) / std::max(imageW_, 1.0f);
+    return kMarkerPickRadius * uiScale_ * float(layout_.renderWidth) / std::max(layout_.imageW, 1.0f);
 }
 
 ImVec2 Viewer::windowPoint(glm::vec2 pixel) const {
-    return ImVec2(imageX_ + pixel.x / float(renderW_) * imageW_, imageY_ + pixel.y / float(renderH_) * imageH_);
+    return ImVec2(layout_.imageX + pixel.x / float(layout_.renderWidth) * layout_.imageW,
+                  layout_.imageY + pixel.y / float(layout_.renderHeight) * layout_.imageH);
 }
 
 glm::vec2 Viewer::imagePixelF(float windowX, float windowY) const {
-    return {(windowX - imageX_) / imageW_ * float(renderW_), (windowY - imageY_) / imageH_ * float(renderH_)};
+    return {(windowX - layout_.imageX) / layout_.imageW * float(layout_.renderWidth),
+            (windowY - layout_.imageY) / layout_.imageH * float(layout_.renderHeight)};
 }
 
 // Captions over the image, under every ImGui window (the background draw list): the model, the terms and
@@ -120,7 +127,7 @@ void Viewer::drawCaptions() {
     ImFont* font = captionFont_ ? captionFont_ : ImGui::GetFont();
     const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
     const float pad = 4.0f * uiScale_, margin = 10.0f * uiScale_;
-    const float left = visibleLeft(), right = imageX_ + imageW_;
+    const float left = visibleLeft(), right = layout_.imageX + layout_.imageW;
     auto extentOf = [&](const char* text, float wrap) { return font->CalcTextSizeA(size, 1e9f, wrap, text); };
     auto box = [&](ImVec2 at, ImVec2 extent, const char* text, float wrap) {
         dl->AddRectFilled(at, ImVec2(at.x + extent.x + 2.0f * pad, at.y + extent.y + 2.0f * pad),
@@ -132,13 +139,14 @@ void Viewer::drawCaptions() {
         imageCaption(state_, GlobalCaption{global_->samples(), global_->noise8(), showsDenoised()});
     // Below the row where lights outside the frame put their markers (light_markers.h).
     const float top =
-        imageY_ + margin + (fields_.lightMarkers ? 2.0f * kMarkerInset * imageH_ / float(renderH_) : 0.0f);
+        layout_.imageY + margin +
+        (fields_.lightMarkers ? 2.0f * kMarkerInset * layout_.imageH / float(layout_.renderHeight) : 0.0f);
     const float wrap = std::max(right - left - 2.0f * (margin + pad), 1.0f);
     const float height = box(ImVec2(left + margin, top), extentOf(caption.c_str(), wrap), caption.c_str(), wrap);
     const WipeCaptions sides = wipeCaptions(state_.mode);
     if (!hasWipe(state_.mode)) return;
     // Each label wraps to the room on its side of the wipe; one whose longest word does not fit is left out.
-    const float wipe = imageX_ + wipeFraction() * imageW_, gap = 6.0f * uiScale_;
+    const float wipe = layout_.imageX + wipeFraction() * layout_.imageW, gap = 6.0f * uiScale_;
     const float leftWrap = std::max(wipe - gap - left - 2.0f * pad, 1.0f);
     const float rightWrap = std::max(right - wipe - gap - 2.0f * pad, 1.0f);
     const ImVec2 leftExtent = extentOf(sides.left, leftWrap), rightExtent = extentOf(sides.right, rightWrap);
@@ -167,19 +175,20 @@ void Viewer::drawCaptions() {
 // Over every window (the foreground list), centred at the bottom of what the panel leaves of the image: at UI
 // scale 2 the panel's own status line can be scrolled out of view, and a class must see a refused save.
 void Viewer::drawToast() {
-    if (status_.empty() || glfwGetTime() - statusTime_ >= kStatusSeconds) return;
+    if (status_.message.empty() || glfwGetTime() - status_.time >= kStatusSeconds) return;
     ImDrawList* dl = ImGui::GetForegroundDrawList();
     ImFont* font = ImGui::GetFont();
     const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
     const float pad = 6.0f * uiScale_, margin = 12.0f * uiScale_;
-    const float left = visibleLeft(), right = imageX_ + imageW_;
+    const float left = visibleLeft(), right = layout_.imageX + layout_.imageW;
     const float wrap = std::max(right - left - 2.0f * (margin + pad), 1.0f);
-    const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, wrap, status_.c_str());
+    const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, wrap, status_.message.c_str());
     const float x = std::max(left + margin, 0.5f * (left + right) - 0.5f * extent.x - pad);
-    const float y = std::max(imageY_, imageY_ + imageH_ - margin - extent.y - 2.0f * pad);
+    const float y = std::max(layout_.imageY, layout_.imageY + layout_.imageH - margin - extent.y - 2.0f * pad);
     dl->AddRectFilled(ImVec2(x, y), ImVec2(x + extent.x + 2.0f * pad, y + extent.y + 2.0f * pad),
-                      statusError_ ? IM_COL32(150, 30, 30, 230) : IM_COL32(25, 95, 45, 230), 4.0f * uiScale_);
-    dl->AddText(font, size, ImVec2(x + pad, y + pad), IM_COL32(255, 255, 255, 255), status_.c_str(), nullptr, wrap);
+                      status_.error ? IM_COL32(150, 30, 30, 230) : IM_COL32(25, 95, 45, 230), 4.0f * uiScale_);
+    dl->AddText(font, size, ImVec2(x + pad, y + pad), IM_COL32(255, 255, 255, 255), status_.message.c_str(), nullptr,
+                wrap);
 }
 
 }  // namespace shadelab::app

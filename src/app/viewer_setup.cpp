@@ -54,8 +54,8 @@ std::string shaderSourceDir() {
 }
 
 Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Script> script)
-    : options_(options), state_(std::move(state)), script_(std::move(script)) {
-    if (script_) cursor_.emplace(*script_);
+    : options_(options), state_(std::move(state)) {
+    if (script) player_.emplace(std::move(*script));
     history_.reset(state_);
     if (!state_.scenePath.empty()) rememberRecent(fields_.recent, state_.scenePath);
     fields_.openPath = state_.scenePath;
