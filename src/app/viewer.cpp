@@ -26,8 +26,8 @@ int Viewer::run() {
     if (!options_.probeReport.empty()) writeProbeReport(options_.probeReport);
     if (options_.stats) {
         std::printf("shadelab: view stats: %zu frames, image %dx%d in a %dx%d window (framebuffer %dx%d)\n",
-                    stats_.frames.count() + stats_.idle.count(), layout_.renderWidth, layout_.renderHeight, winW_,
-                    winH_, fbW_, fbH_);
+                    stats_.frames.count() + stats_.idle.count(), layout_.renderWidth, layout_.renderHeight,
+                    shape_.windowWidth, shape_.windowHeight, shape_.fbWidth, shape_.fbHeight);
         std::printf("shadelab:   frame, raster redrawn  median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
                     stats_.frames.median(), stats_.frames.percentile(95.0), stats_.frames.count());
         std::printf("shadelab:   raster draw alone      median %6.2f ms   p95 %6.2f ms   (draw + glFinish)\n",
@@ -59,12 +59,12 @@ bool Viewer::finished() const {
 // tile). A few frames after any input let ImGui settle its hover and focus state before sleeping again.
 void Viewer::waitForWork() {
     const bool scripted = options_.frames >= 0 || options_.stats || (player_ && !player_->finished());
-    const bool changed = state_.revision != idleRevision_ ||
+    const bool changed = state_.revision != idle_.revision ||
                          (fields_.smooth && state_.mode == ViewMode::Raster && !accumulation_->converged());
-    idleRevision_ = state_.revision;
-    if (scripted || changed || settleFrames_ > 0) {
-        if (settleFrames_ > 0) --settleFrames_;
-        if (changed) settleFrames_ = kSettleFrames;
+    idle_.revision = state_.revision;
+    if (scripted || changed || idle_.settleFrames > 0) {
+        if (idle_.settleFrames > 0) --idle_.settleFrames;
+        if (changed) idle_.settleFrames = kSettleFrames;
         glfwPollEvents();
         return;
     }
@@ -75,7 +75,7 @@ void Viewer::waitForWork() {
     if (statusLeft > 0.0) timeout = std::min(timeout, statusLeft + 0.01);
     const double before = glfwGetTime();
     glfwWaitEventsTimeout(timeout);
-    if (glfwGetTime() - before < timeout) settleFrames_ = kSettleFrames;  // woken by an event
+    if (glfwGetTime() - before < timeout) idle_.settleFrames = kSettleFrames;  // woken by an event
 }
 
 bool Viewer::frame() {
@@ -83,9 +83,10 @@ bool Viewer::frame() {
     const double t0 = glfwGetTime();
     if (glfwWindowShouldClose(window_)) return false;
     handleDrops();
-    glfwGetFramebufferSize(window_, &fbW_, &fbH_);
-    glfwGetWindowSize(window_, &winW_, &winH_);
-    if (fbW_ <= 0 || fbH_ <= 0 || winW_ <= 0 || winH_ <= 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED)) {
+    glfwGetFramebufferSize(window_, &shape_.fbWidth, &shape_.fbHeight);
+    glfwGetWindowSize(window_, &shape_.windowWidth, &shape_.windowHeight);
+    if (shape_.fbWidth <= 0 || shape_.fbHeight <= 0 || shape_.windowWidth <= 0 || shape_.windowHeight <= 0 ||
+        glfwGetWindowAttrib(window_, GLFW_ICONIFIED)) {
         glfwWaitEventsTimeout(0.1);  // minimised: no GL work at all until the window has a size again
         return true;
     }
@@ -123,18 +124,18 @@ bool Viewer::frame() {
     ctx.frameMs = recentFrameMs();
     ctx.renderWidth = layout_.renderWidth;
     ctx.renderHeight = layout_.renderHeight;
-    ctx.uiScale = uiScale_;
+    ctx.uiScale = shape_.uiScale;
     // Compact on a projector, with the ray tree on (its rays need the room), and wherever the whole window
     // (about 720 units tall) would not fit the image.
-    ctx.compactProbe = uiScale_ >= 1.5f || state_.probe.rayTree || layout_.imageH < 760.0f * uiScale_;
+    ctx.compactProbe = shape_.uiScale >= 1.5f || state_.probe.rayTree || layout_.imageH < 760.0f * shape_.uiScale;
     ctx.wipe = wipeFraction();
     ctx.undoSteps = history_.undoSteps();
     ctx.redoSteps = history_.redoSteps();
-    if (showPanel_) drawSidePanel(ctx, layout_.panelWidth, float(winH_), layout_.panelOverlays);
-    const float margin = 10.0f * uiScale_;
+    if (shape_.showPanel) drawSidePanel(ctx, layout_.panelWidth, float(shape_.windowHeight), layout_.panelOverlays);
+    const float margin = 10.0f * shape_.uiScale;
     const float left = visibleLeft(), visibleW = layout_.imageX + layout_.imageW - left;
     drawLessonWindow(ctx, left + margin, layout_.imageY + layout_.imageH - margin,
-                     std::min(visibleW - 2.0f * margin, 760.0f * uiScale_), ctx.probe != nullptr);
+                     std::min(visibleW - 2.0f * margin, 760.0f * shape_.uiScale), ctx.probe != nullptr);
     if (!ctx.probe) fields_.probeWindowMoved = false;
     if (ctx.probe) {
         // Beside the probed point inside the visible image, clear of the point and its arrows, at the size
@@ -147,8 +148,8 @@ bool Viewer::frame() {
             glm::vec2(layout_.imageX + (float(state_.probe.x) + 0.5f) / float(layout_.renderWidth) * layout_.imageW,
                       layout_.imageY + (float(state_.probe.y) + 0.5f) / float(layout_.renderHeight) * layout_.imageH);
         space.clearance =
-            0.22f * layout_.imageH + 20.0f * uiScale_;  // the arrows (arrow_overlay.h): ~0.2 of the height
-        space.minClearance = 20.0f * uiScale_;
+            0.22f * layout_.imageH + 20.0f * shape_.uiScale;  // the arrows (arrow_overlay.h): ~0.2 of the height
+        space.minClearance = 20.0f * shape_.uiScale;
         const glm::vec2 size(fields_.probeWindowWidth, fields_.probeWindowHeight);
         const ProbeWindowPlace place = placeProbeWindow(space, size);
         drawProbeWindow(ctx, place.topLeft.x, place.topLeft.y, place.fits || fields_.probeWindowMoved);
@@ -191,17 +192,9 @@ double Viewer::recentFrameMs() const {
 }
 
 void Viewer::computeLayout() {
-    LayoutInput in;
-    in.windowWidth = winW_;
-    in.windowHeight = winH_;
-    in.fbWidth = fbW_;
-    in.fbHeight = fbH_;
-    in.uiScale = uiScale_;
-    in.showPanel = showPanel_;
-    in.overlayPanel = overlayPanel_;
-    in.fixedWidth = options_.width;
-    in.fixedHeight = options_.height;
-    layout_ = layOutViewer(in);
+    shape_.fixedWidth = options_.width;
+    shape_.fixedHeight = options_.height;
+    layout_ = layOutViewer(shape_);
 }
 
 bool Viewer::cameraMoved() {
@@ -314,17 +307,17 @@ void Viewer::updateReference() {
 
 void Viewer::compose() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fbW_, fbH_);
+    glViewport(0, 0, shape_.fbWidth, shape_.fbHeight);
     // The image pass covers its rectangle; clear only what it leaves (a whole-window clear costs ~1 ms).
-    const bool letterboxed =
-        layout_.fbRect.y > 0 || layout_.fbRect.height < fbH_ || layout_.fbRect.x + layout_.fbRect.width < fbW_;
+    const bool letterboxed = layout_.fbRect.y > 0 || layout_.fbRect.height < shape_.fbHeight ||
+                             layout_.fbRect.x + layout_.fbRect.width < shape_.fbWidth;
     glClearColor(0.09f, 0.09f, 0.10f, 1.0f);
     if (letterboxed) {
         glDisable(GL_SCISSOR_TEST);
         glClear(GL_COLOR_BUFFER_BIT);
     } else if (layout_.fbRect.x > 0) {
         glEnable(GL_SCISSOR_TEST);
-        glScissor(0, 0, layout_.fbRect.x, fbH_);
+        glScissor(0, 0, layout_.fbRect.x, shape_.fbHeight);
         glClear(GL_COLOR_BUFFER_BIT);
         glDisable(GL_SCISSOR_TEST);
     }
@@ -361,7 +354,7 @@ void Viewer::compose() {
     if (probe_.result && probe_.result->hit) {
         if (rayTree_.view) drawRayTree();
         drawArrowLabels(arrows_->draw(state_.scene, *probe_.result, layout_.renderWidth, layout_.renderHeight,
-                                      layout_.fbRect, fbH_, layout_.fbScale * uiScale_));
+                                      layout_.fbRect, shape_.fbHeight, layout_.fbScale * shape_.uiScale));
     }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

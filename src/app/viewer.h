@@ -135,11 +135,8 @@ private:
     std::unique_ptr<Accumulation> accumulation_;
 
     // Layout, in window (logical) units unless named fb*.
-    int winW_ = 0, winH_ = 0, fbW_ = 0, fbH_ = 0;
-    float uiScale_ = 1.0f;
-    bool showPanel_ = true;
-    bool overlayPanel_ = false;  // projector mode (key F11): the panel lies over a full-window image
-    ViewerLayout layout_;        // as laid out this frame
+    LayoutInput shape_;    // the window, the UI scale, the panel's switches and --size
+    ViewerLayout layout_;  // laid out from shape_ each frame
 
     // What the raster target holds.
     struct RasterShown {
@@ -208,8 +205,10 @@ private:
     int frame_ = 0;
     static constexpr int kSettleFrames = 3;
     static constexpr double kStatusSeconds = 8.0;
-    int settleFrames_ = kSettleFrames;
-    uint64_t idleRevision_ = 0;
+    struct Idle {  // waitForWork's: the state revision last drawn, and frames to run before sleeping
+        uint64_t revision = 0;
+        int settleFrames = kSettleFrames;
+    } idle_;
     struct Stats {                                         // for --stats and the panel's frame time
         FrameStats frames, idle, raster;                   // all frames, those without a raster redraw, with
         size_t previewDraws = 0;                           // raster draws at half size (camera moving)

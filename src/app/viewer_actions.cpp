@@ -200,19 +200,19 @@ void Viewer::writeProbeReport(const std::string& path) {
 
 void Viewer::writeWindowScreenshot(const std::string& path) {
     Image8 img;
-    img.width = fbW_;
-    img.height = fbH_;
+    img.width = shape_.fbWidth;
+    img.height = shape_.fbHeight;
     img.channels = 3;
-    std::vector<uint8_t> rgba(size_t(fbW_) * size_t(fbH_) * 4);
+    std::vector<uint8_t> rgba(size_t(shape_.fbWidth) * size_t(shape_.fbHeight) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, fbW_, fbH_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    img.data.resize(size_t(fbW_) * size_t(fbH_) * 3);
-    for (int y = 0; y < fbH_; ++y)
-        for (int x = 0; x < fbW_; ++x)
-            std::memcpy(&img.data[(size_t(y) * size_t(fbW_) + size_t(x)) * 3],
-                        &rgba[(size_t(fbH_ - 1 - y) * size_t(fbW_) + size_t(x)) * 4], 3);
+    glReadPixels(0, 0, shape_.fbWidth, shape_.fbHeight, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    img.data.resize(size_t(shape_.fbWidth) * size_t(shape_.fbHeight) * 3);
+    for (int y = 0; y < shape_.fbHeight; ++y)
+        for (int x = 0; x < shape_.fbWidth; ++x)
+            std::memcpy(&img.data[(size_t(y) * size_t(shape_.fbWidth) + size_t(x)) * 3],
+                        &rgba[(size_t(shape_.fbHeight - 1 - y) * size_t(shape_.fbWidth) + size_t(x)) * 4], 3);
     writePng(path, img);
 }
 

@@ -93,7 +93,7 @@ void Viewer::handleMouse() {
             pointer_.pressX = m.x;
             pointer_.pressY = m.y;
             const float wipe = layout_.imageX + wipeFraction() * layout_.imageW;
-            pointer_.splitting = hasWipe(state_.mode) && std::fabs(m.x - wipe) < 8.0f * uiScale_;
+            pointer_.splitting = hasWipe(state_.mode) && std::fabs(m.x - wipe) < 8.0f * shape_.uiScale;
         }
         if (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)) pointer_.panning = true;
         if (io.MouseWheel != 0.0f) {
@@ -183,11 +183,11 @@ void Viewer::handleKeys() {
                 setModel(state_, state_.scene.model == ShadingModel::Pbr ? ShadingModel::Phong : ShadingModel::Pbr);
                 break;
             case GLFW_KEY_V: setMode(state_, ViewMode((int(state_.mode) + 1) % 6)); break;
-            case GLFW_KEY_TAB: showPanel_ = !showPanel_; break;
+            case GLFW_KEY_TAB: shape_.showPanel = !shape_.showPanel; break;
             case GLFW_KEY_C: fields_.captions = !fields_.captions; break;
             case GLFW_KEY_T: setRayTree(state_, !state_.probe.rayTree); break;
             case GLFW_KEY_D: setGlobalDenoise(state_, !state_.globalDenoise); break;
-            case GLFW_KEY_F11: overlayPanel_ = !overlayPanel_; break;
+            case GLFW_KEY_F11: shape_.overlayPanel = !shape_.overlayPanel; break;
             case GLFW_KEY_ESCAPE:
                 clearProbe(state_);
                 select(state_, 0);

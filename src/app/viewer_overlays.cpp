@@ -20,8 +20,8 @@ namespace shadelab::app {
 void Viewer::drawArrowLabels(const std::vector<ArrowLabel>& labels) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     for (const ArrowLabel& l : labels) {
-        const ImVec2 at(l.position.x / layout_.fbScale + 6.0f * uiScale_,
-                        l.position.y / layout_.fbScale - 10.0f * uiScale_);
+        const ImVec2 at(l.position.x / layout_.fbScale + 6.0f * shape_.uiScale,
+                        l.position.y / layout_.fbScale - 10.0f * shape_.uiScale);
         if (at.x < layout_.imageX || at.y < layout_.imageY || at.x > layout_.imageX + layout_.imageW ||
             at.y > layout_.imageY + layout_.imageH)
             continue;
@@ -41,7 +41,7 @@ void Viewer::drawRayTree() {
         segments.push_back({s.from, s.to, s.color, s.label, 0.5f, chosen ? 1.6f : 0.8f});
     }
     drawArrowLabels(arrows_->draw(state_.scene, segments, layout_.renderWidth, layout_.renderHeight, layout_.fbRect,
-                                  fbH_, layout_.fbScale * uiScale_));
+                                  shape_.fbHeight, layout_.fbScale * shape_.uiScale));
 }
 
 // A marker per light (light_markers.h): a disc in the light's colour, an arrow for a directional light, and
@@ -52,7 +52,7 @@ void Viewer::drawLightMarkers() {
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const int hover =
         pointer_.light >= 0 ? pointer_.light : markerAt(markers, imagePixelF(mouse.x, mouse.y), markerPickRadius());
-    const float r = 7.0f * uiScale_;
+    const float r = 7.0f * shape_.uiScale;
     for (const LightMarker& m : markers) {
         if (!m.visible) continue;
         const ImVec2 at = windowPoint(m.shown);
@@ -61,9 +61,9 @@ void Viewer::drawLightMarkers() {
         const ImU32 fill = ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
         if (m.clamped) {  // outside the image: a pointer from the edge toward where the light is
             const glm::vec2 d = glm::normalize(m.pixel - m.shown);
-            const ImVec2 p0(at.x + d.x * (r + 9.0f * uiScale_), at.y + d.y * (r + 9.0f * uiScale_));
-            const ImVec2 side(-d.y * 5.0f * uiScale_, d.x * 5.0f * uiScale_);
-            const ImVec2 base(at.x + d.x * (r + 2.0f * uiScale_), at.y + d.y * (r + 2.0f * uiScale_));
+            const ImVec2 p0(at.x + d.x * (r + 9.0f * shape_.uiScale), at.y + d.y * (r + 9.0f * shape_.uiScale));
+            const ImVec2 side(-d.y * 5.0f * shape_.uiScale, d.x * 5.0f * shape_.uiScale);
+            const ImVec2 base(at.x + d.x * (r + 2.0f * shape_.uiScale), at.y + d.y * (r + 2.0f * shape_.uiScale));
             dl->AddTriangleFilled(p0, ImVec2(base.x + side.x, base.y + side.y),
                                   ImVec2(base.x - side.x, base.y - side.y), IM_COL32(255, 255, 255, 220));
         } else if (light.type != LightType::Point) {  // directional and spot: an arrow along the light
@@ -72,8 +72,8 @@ void Viewer::drawLightMarkers() {
                 std::vector<ImVec2> rim;
                 for (const glm::vec2& p : m.coneRim) rim.push_back(windowPoint(p));
                 dl->AddPolyline(rim.data(), int(rim.size()), IM_COL32(0, 0, 0, 160), ImDrawFlags_Closed,
-                                3.0f * uiScale_);
-                dl->AddPolyline(rim.data(), int(rim.size()), fill, ImDrawFlags_Closed, 1.5f * uiScale_);
+                                3.0f * shape_.uiScale);
+                dl->AddPolyline(rim.data(), int(rim.size()), fill, ImDrawFlags_Closed, 1.5f * shape_.uiScale);
                 // The cone's outline from the light: the rim points seen at the widest angles either side.
                 glm::vec2 axis(0.0f);
                 for (const ImVec2& p : rim) axis += glm::vec2(p.x - at.x, p.y - at.y) / float(rim.size());
@@ -85,19 +85,20 @@ void Viewer::drawLightMarkers() {
                     if (a < loA) loA = a, lo = k;
                     if (a > hiA) hiA = a, hi = k;
                 }
-                for (size_t k : {lo, hi}) dl->AddLine(at, rim[k], fill, 1.0f * uiScale_);
+                for (size_t k : {lo, hi}) dl->AddLine(at, rim[k], fill, 1.0f * shape_.uiScale);
             }
-            dl->AddLine(at, tip, IM_COL32(0, 0, 0, 200), 4.0f * uiScale_);
-            dl->AddLine(at, tip, fill, 2.0f * uiScale_);
-            dl->AddCircleFilled(tip, 3.0f * uiScale_, fill);
+            dl->AddLine(at, tip, IM_COL32(0, 0, 0, 200), 4.0f * shape_.uiScale);
+            dl->AddLine(at, tip, fill, 2.0f * shape_.uiScale);
+            dl->AddCircleFilled(tip, 3.0f * shape_.uiScale, fill);
         }
-        dl->AddCircleFilled(at, r + 1.5f * uiScale_, IM_COL32(0, 0, 0, 200));
+        dl->AddCircleFilled(at, r + 1.5f * shape_.uiScale, IM_COL32(0, 0, 0, 200));
         dl->AddCircleFilled(at, r, fill);
-        if (m.light == hover) dl->AddCircle(at, r + 4.0f * uiScale_, IM_COL32(255, 220, 60, 255), 0, 2.0f * uiScale_);
+        if (m.light == hover)
+            dl->AddCircle(at, r + 4.0f * shape_.uiScale, IM_COL32(255, 220, 60, 255), 0, 2.0f * shape_.uiScale);
         const std::string name = "L" + std::to_string(m.light + 1);
         const bool leftSide =
-            at.x > layout_.imageX + layout_.imageW - 40.0f * uiScale_;  // keep the name inside the image
-        const ImVec2 text(leftSide ? at.x - r - 22.0f * uiScale_ : at.x + r + 3.0f * uiScale_, at.y - r);
+            at.x > layout_.imageX + layout_.imageW - 40.0f * shape_.uiScale;  // keep the name inside the image
+        const ImVec2 text(leftSide ? at.x - r - 22.0f * shape_.uiScale : at.x + r + 3.0f * shape_.uiScale, at.y - r);
         dl->AddText(ImVec2(text.x + 1.0f, text.y + 1.0f), IM_COL32(0, 0, 0, 255), name.c_str());
         dl->AddText(text, IM_COL32(255, 255, 255, 255), name.c_str());
     }
@@ -105,7 +106,7 @@ void Viewer::drawLightMarkers() {
 
 // kMarkerPickRadius window units, in image pixels.
 float Viewer::markerPickRadius() const {
-    return kMarkerPickRadius * uiScale_ * float(layout_.renderWidth) / std::max(layout_.imageW, 1.0f);
+    return kMarkerPickRadius * shape_.uiScale * float(layout_.renderWidth) / std::max(layout_.imageW, 1.0f);
 }
 
 ImVec2 Viewer::windowPoint(glm::vec2 pixel) const {
@@ -126,12 +127,12 @@ void Viewer::drawCaptions() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImFont* font = captionFont_ ? captionFont_ : ImGui::GetFont();
     const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
-    const float pad = 4.0f * uiScale_, margin = 10.0f * uiScale_;
+    const float pad = 4.0f * shape_.uiScale, margin = 10.0f * shape_.uiScale;
     const float left = visibleLeft(), right = layout_.imageX + layout_.imageW;
     auto extentOf = [&](const char* text, float wrap) { return font->CalcTextSizeA(size, 1e9f, wrap, text); };
     auto box = [&](ImVec2 at, ImVec2 extent, const char* text, float wrap) {
         dl->AddRectFilled(at, ImVec2(at.x + extent.x + 2.0f * pad, at.y + extent.y + 2.0f * pad),
-                          IM_COL32(0, 0, 0, 150), 3.0f * uiScale_);
+                          IM_COL32(0, 0, 0, 150), 3.0f * shape_.uiScale);
         dl->AddText(font, size, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 235), text, nullptr, wrap);
         return extent.y + 2.0f * pad;
     };
@@ -146,7 +147,7 @@ void Viewer::drawCaptions() {
     const WipeCaptions sides = wipeCaptions(state_.mode);
     if (!hasWipe(state_.mode)) return;
     // Each label wraps to the room on its side of the wipe; one whose longest word does not fit is left out.
-    const float wipe = layout_.imageX + wipeFraction() * layout_.imageW, gap = 6.0f * uiScale_;
+    const float wipe = layout_.imageX + wipeFraction() * layout_.imageW, gap = 6.0f * shape_.uiScale;
     const float leftWrap = std::max(wipe - gap - left - 2.0f * pad, 1.0f);
     const float rightWrap = std::max(right - wipe - gap - 2.0f * pad, 1.0f);
     const ImVec2 leftExtent = extentOf(sides.left, leftWrap), rightExtent = extentOf(sides.right, rightWrap);
@@ -179,14 +180,14 @@ void Viewer::drawToast() {
     ImDrawList* dl = ImGui::GetForegroundDrawList();
     ImFont* font = ImGui::GetFont();
     const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
-    const float pad = 6.0f * uiScale_, margin = 12.0f * uiScale_;
+    const float pad = 6.0f * shape_.uiScale, margin = 12.0f * shape_.uiScale;
     const float left = visibleLeft(), right = layout_.imageX + layout_.imageW;
     const float wrap = std::max(right - left - 2.0f * (margin + pad), 1.0f);
     const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, wrap, status_.message.c_str());
     const float x = std::max(left + margin, 0.5f * (left + right) - 0.5f * extent.x - pad);
     const float y = std::max(layout_.imageY, layout_.imageY + layout_.imageH - margin - extent.y - 2.0f * pad);
     dl->AddRectFilled(ImVec2(x, y), ImVec2(x + extent.x + 2.0f * pad, y + extent.y + 2.0f * pad),
-                      status_.error ? IM_COL32(150, 30, 30, 230) : IM_COL32(25, 95, 45, 230), 4.0f * uiScale_);
+                      status_.error ? IM_COL32(150, 30, 30, 230) : IM_COL32(25, 95, 45, 230), 4.0f * shape_.uiScale);
     dl->AddText(font, size, ImVec2(x + pad, y + pad), IM_COL32(255, 255, 255, 255), status_.message.c_str(), nullptr,
                 wrap);
 }

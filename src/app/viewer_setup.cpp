@@ -119,19 +119,20 @@ void Viewer::initWindow() {
         glfwGetMonitorContentScale(monitor, &contentScale, &unused);
         if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) screenW = mode->width, screenH = mode->height;
     }
-    uiScale_ = options_.uiScale > 0.0f ? options_.uiScale
-               : options_.projector    ? 2.0f
-                                       : std::clamp(contentScale, 1.0f, 3.0f);
-    overlayPanel_ = options_.projector;
-    const int panel = overlayPanel_ ? 0 : int(kViewerPanelWidth * uiScale_);
+    shape_.uiScale = options_.uiScale > 0.0f ? options_.uiScale
+                     : options_.projector    ? 2.0f
+                                             : std::clamp(contentScale, 1.0f, 3.0f);
+    shape_.overlayPanel = options_.projector;
+    const int panel = shape_.overlayPanel ? 0 : int(kViewerPanelWidth * shape_.uiScale);
     // Default: a 16:9 image area of up to 1280x720 next to the panel, as `shadelab render` frames it.
     // In projector mode: a 16:9 window as wide as the screen allows, the panel over it.
     const int imageW =
-        overlayPanel_ ? int(0.95f * float(screenW)) : std::min(1280, int(0.95f * float(screenW)) - panel);
-    int w = panel + imageW, h = overlayPanel_ ? imageW * 9 / 16 : std::max(imageW * 9 / 16, int(720 * uiScale_));
+        shape_.overlayPanel ? int(0.95f * float(screenW)) : std::min(1280, int(0.95f * float(screenW)) - panel);
+    int w = panel + imageW,
+        h = shape_.overlayPanel ? imageW * 9 / 16 : std::max(imageW * 9 / 16, int(720 * shape_.uiScale));
     if (options_.width > 0) {
         w = options_.width + panel;
-        h = std::max(options_.height, int(600 * uiScale_));
+        h = std::max(options_.height, int(600 * shape_.uiScale));
     }
     // Never larger than the screen: a fixed --size then shows scaled down, but renders at full size.
     w = std::min(w, screenW);
@@ -161,13 +162,13 @@ void Viewer::initImGui() {
     style.FrameRounding = 3.0f;
     style.GrabRounding = 3.0f;
     style.WindowBorderSize = 0.0f;
-    style.ScaleAllSizes(uiScale_);
+    style.ScaleAllSizes(shape_.uiScale);
     // Glyphs rasterised at framebuffer resolution, shown at window units (sharp on HiDPI).
     int fbW = 0, fbH = 0, winW = 0, winH = 0;
     glfwGetFramebufferSize(window_, &fbW, &fbH);
     glfwGetWindowSize(window_, &winW, &winH);
     const float fbScale = winW > 0 && fbW > 0 ? float(fbW) / float(winW) : 1.0f;
-    const float pixels = std::round(kFontSize * uiScale_ * fbScale);
+    const float pixels = std::round(kFontSize * shape_.uiScale * fbScale);
     const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     const char* mono = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
     // Latin-1 and the letters the probe's algebra writes: Greek (Δ, δ), superscript T, arrows, ± and √.
@@ -177,7 +178,7 @@ void Viewer::initImGui() {
         io.Fonts->AddFontFromFileTTF(sans, pixels, nullptr, kRanges);
     else {
         ImFontConfig config;
-        config.SizePixels = std::round(13.0f * uiScale_ * fbScale);
+        config.SizePixels = std::round(13.0f * shape_.uiScale * fbScale);
         io.Fonts->AddFontDefault(&config);
     }
     // The probe's tables: monospaced and a little smaller, so the window covers less of the image.

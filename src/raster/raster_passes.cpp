@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 
-#include <algorithm>
-
 namespace shadelab::raster {
 namespace {
 
@@ -73,48 +71,6 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     p.set("u_alpha", alpha);
 }
 
-int RasterRenderer::materialMaps(const Material& m) {
-    return (m.baseColorTexture ? 1 : 0) | (m.metallicRoughnessTexture ? 2 : 0) | (m.normalTexture ? 4 : 0) |
-           (m.occlusionTexture ? 8 : 0) | (m.alphaMode != AlphaMode::Opaque ? 16 : 0) | (m.emissiveTexture ? 32 : 0);
-}
-
-const RasterRenderer::ColorPrograms& RasterRenderer::programsFor(const ShaderVariant& variant, int materialMaps) {
-    // mesh.frag's texture code (SL_MATERIAL_MAPS, the maps the scene's parts use) only where a part needs it:
-    // all of it triples the mesh programs' compile time, which every untextured render would otherwise pay.
-    const std::string defines = colorProgramDefines(variant.defines(), materialMaps, false);
-    if (auto it = programs_.find(defines); it != programs_.end()) return it->second;
-    ColorPrograms set;
-    set.shaders = &shaders_;
-    set.defines = defines;
-    return programs_.emplace(defines, std::move(set)).first->second;
-}
-
-const gl::Program& RasterRenderer::ColorPrograms::get(Kind kind) const {
-    gl::Program& p = built[size_t(kind)];
-    if (p) return p;
-    const bool environment = kind == MeshEnvironment || kind == SphereEnvironment || kind == PlaneMirror;
-    const std::string text = colorProgramDefines(defines, 0, environment);
-    const char* stem = kind == Mesh || kind == MeshEnvironment       ? "mesh"
-                       : kind == Sphere || kind == SphereEnvironment ? "sphere"
-                                                                     : "plane";
-    p = gl::Program::build(*shaders, std::string(stem) + ".vert", std::string(stem) + ".frag", text);
-    p.bindBlock("Frame", kFrameBinding);
-    p.bindBlock("Shadows", kShadowBinding);
-    glUseProgram(p.id());
-    p.setSampler("t_shadowMaps", kShadowUnit);
-    p.setSampler("t_iblCube", kIblCubeUnit);
-    p.setSampler("t_iblDfg", kIblDfgUnit);
-    p.setSampler("t_baseColor", kBaseColorUnit);
-    p.setSampler("t_metalRough", kMetalRoughUnit);
-    p.setSampler("t_normal", kNormalMapUnit);
-    p.setSampler("t_occlusion", kOcclusionUnit);
-    p.setSampler("t_emissive", kEmissiveUnit);
-    if (kind == PlaneMirror) p.setSampler("t_reflection", kReflectionUnit);
-    if (kind == MeshEnvironment || kind == SphereEnvironment) p.setSampler("t_environment", kEnvironmentUnit);
-    glUseProgram(0);
-    return p;
-}
-
 // The program for one object: with its environment cube when it has one and this pass looks them up.
 const gl::Program& RasterRenderer::objectProgram(const ColorPrograms& programs, int plainKind, int environmentKind,
                                                  int sphere, int range, const PassOptions& options) const {
@@ -149,9 +105,9 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     // Meshes first: they keep early depth testing, and the impostors behind them are rejected cheaply.
     std::vector<size_t> blended;  // alphaMode BLEND parts, drawn last
     glDisable(GL_CULL_FACE);      // two-sided lighting: back faces are lit with the flipped normal
-    glBindVertexArray(meshVao_.id());
-    for (size_t k = 0; k < ranges_.size(); ++k) {
-        const DrawRange& r = ranges_[k];
+    glBindVertexArray(geometry_.meshVao.id());
+    for (size_t k = 0; k < geometry_.ranges.size(); ++k) {
+        const DrawRange& r = geometry_.ranges[k];
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
         if (int(k) == options.skipRange || skipped(meshCoverageId(scene, r.mesh)) ||
             outsideClip(frame.viewProj, r.lo, r.hi))
@@ -167,7 +123,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
-    glBindVertexArray(cubeVao_.id());
+    glBindVertexArray(geometry_.cubeVao.id());
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         if (int(i) == options.skipSphere || skipped(sphereCoverageId(scene, i))) continue;
         const Sphere& s = scene.spheres[i];
@@ -182,7 +138,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
 
     // Planes last, over the whole viewport: plane.frag casts the ray and writes the exact hit's depth, as the
     // spheres' shader does.
-    glBindVertexArray(emptyVao_.id());
+    glBindVertexArray(geometry_.emptyVao.id());
     const glm::vec3 eye(frame.eye);
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         if (int(i) == options.skipPlane || skipped(planeCoverageId(scene, i))) continue;  // a mirror: not itself
@@ -218,10 +174,11 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     // centre, composited with the fragment's alpha and without depth writes; the coverage id is the part's.
     if (!blended.empty()) {
         std::stable_sort(blended.begin(), blended.end(), [&](size_t a, size_t b) {
-            const glm::vec3 ca = 0.5f * (ranges_[a].lo + ranges_[a].hi), cb = 0.5f * (ranges_[b].lo + ranges_[b].hi);
+            const glm::vec3 ca = 0.5f * (geometry_.ranges[a].lo + geometry_.ranges[a].hi),
+                            cb = 0.5f * (geometry_.ranges[b].lo + geometry_.ranges[b].hi);
             return glm::dot(ca - eye, ca - eye) > glm::dot(cb - eye, cb - eye);
         });
-        glBindVertexArray(meshVao_.id());
+        glBindVertexArray(geometry_.meshVao.id());
         glEnable(GL_BLEND);  // the coverage attachment is integer: blending leaves it alone
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
@@ -236,9 +193,9 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
 
 void RasterRenderer::drawRange(const Scene& scene, const FrameBlock& frame, const PassOptions& options,
                                size_t k) const {
-    const DrawRange& r = ranges_[k];
+    const DrawRange& r = geometry_.ranges[k];
     const Material& m = scene.meshes[r.mesh].parts[r.part].material;
-    const ColorPrograms* programs = meshPrograms_[size_t(materialMaps(m))];  // filled by render()
+    const ColorPrograms* programs = &programs_.part(m);  // prepared by render()
     const gl::Program& p =
         objectProgram(*programs, ColorPrograms::Mesh, ColorPrograms::MeshEnvironment, -1, int(k), options);
     setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);

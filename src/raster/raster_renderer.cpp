@@ -74,7 +74,10 @@ KeyBytes environmentSharedKey(const Scene& scene, const FrameBlock& frame) {
 }  // namespace
 
 RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
-    : shaders_(shaders.withDialect(gl::currentContextDialect())), shadows_(shaders_) {
+    : shaders_(shaders.withDialect(gl::currentContextDialect())),
+      programs_(shaders_),
+      shadows_(shaders_),
+      partial_(shaders_) {
     // Compile errors surface here, not at a later draw: every variant is the same source with different
     // constants, so these two (without shadows; with every optional block) check all of it. llvmpipe
     // generates code lazily at the first draw, so variants a scene never uses cost little.
@@ -86,7 +89,7 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
     full.planes = 1;
     full.planeMask = {1, 1, 1};
     for (const ShaderVariant* v : {&local, &full}) {
-        const ColorPrograms& set = programsFor(*v);
+        const ColorPrograms& set = programs_.get(*v);
         for (int k = 0; k < ColorPrograms::kKinds; ++k) set.get(ColorPrograms::Kind(k));
     }
     glUseProgram(0);
@@ -99,14 +102,14 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameBlock), nullptr, GL_DYNAMIC_DRAW);
 
     const std::array<glm::vec3, 36> cube = unitCube();
-    cubeVao_ = gl::VertexArray::create();
-    cubeVbo_ = gl::Buffer::create();
-    glBindVertexArray(cubeVao_.id());
-    glBindBuffer(GL_ARRAY_BUFFER, cubeVbo_.id());
+    geometry_.cubeVao = gl::VertexArray::create();
+    geometry_.cubeVbo = gl::Buffer::create();
+    glBindVertexArray(geometry_.cubeVao.id());
+    glBindBuffer(GL_ARRAY_BUFFER, geometry_.cubeVbo.id());
     glBufferData(GL_ARRAY_BUFFER, sizeof(cube), cube.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    emptyVao_ = gl::VertexArray::create();
+    geometry_.emptyVao = gl::VertexArray::create();
     glBindVertexArray(0);
     gl::checkError("RasterRenderer setup");
 }
@@ -116,8 +119,8 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
 void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
     RasterSettings settings = scene.raster;
     settings.shadowMapSize = shadowMapSizeFor(scene.raster, width, height);
-    std::vector<float> key = {float(settings.shadowMapSize), settings.depthBias,     settings.normalBias,
-                              float(settings.pcf),           float(meshGeneration_), float(scene.meshes.size())};
+    std::vector<float> key = {float(settings.shadowMapSize), settings.depthBias,          settings.normalBias,
+                              float(settings.pcf),           float(geometry_.generation), float(scene.meshes.size())};
     auto push = [&key](const glm::vec3& v) { key.insert(key.end(), {v.x, v.y, v.z}); };
     for (const Light& l : scene.lights) {
         key.push_back(float(l.type));
@@ -133,7 +136,8 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
         key.push_back(p.offset);
     }
     if (key != shadowKey_) {
-        shadows_.render(scene, settings, ranges_, meshVao_ ? meshVao_.id() : emptyVao_.id(), cubeVao_.id());
+        shadows_.render(scene, settings, geometry_.ranges,
+                        geometry_.meshVao ? geometry_.meshVao.id() : geometry_.emptyVao.id(), geometry_.cubeVao.id());
         shadowKey_ = std::move(key);
         report_.shadowMaps = true;
     }
@@ -151,8 +155,8 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
         const Sphere& s = scene.spheres[i];
         if (reflective(s.material)) probes_.push_back({int(i), -1, s.center, 0.5f * s.radius});
     }
-    for (size_t k = 0; k < ranges_.size() && probes_.size() < size_t(kMaxEnvironmentCubes); ++k) {
-        const DrawRange& r = ranges_[k];
+    for (size_t k = 0; k < geometry_.ranges.size() && probes_.size() < size_t(kMaxEnvironmentCubes); ++k) {
+        const DrawRange& r = geometry_.ranges[k];
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
         if (!reflective(scene.meshes[r.mesh].parts[r.part].material)) continue;
         probes_.push_back({-1, int(k), 0.5f * (r.lo + r.hi), std::max(1e-3f * glm::length(r.hi - r.lo), 1e-5f)});
@@ -163,7 +167,7 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
     DrawKey key = drawKey(scene);  // for its objects' ids and materials
     key.shared = environmentSharedKey(scene, frame);
     for (float v : shadowKey_) key.shared.add(v);
-    key.shared.add(size).add(meshGeneration_).add(ibl_.generation()).add(probes_.size());
+    key.shared.add(size).add(geometry_.generation).add(ibl_.generation()).add(probes_.size());
     for (const EnvironmentProbe& probe : probes_) key.shared.add(probe.sphere).add(probe.range);
     // When only materials changed, a face is re-rendered only inside the rectangle where a changed object
     // can appear (every object drawn there again): no other pixel of it can change (one bounce, no mirrors).
@@ -186,10 +190,11 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
             PixelRect rect{0, 0, size, size};
             if (!plan.full) {
                 rect = PixelRect{};
-                for (size_t k = 0; k < ranges_.size(); ++k)
-                    if (int(k) != probe.range && ranges_[k].mesh < scene.meshes.size() &&
-                        listed(meshCoverageId(scene, ranges_[k].mesh)))
-                        rect = unite(rect, boxPixelRect(faceFrame.viewProj, ranges_[k].lo, ranges_[k].hi, size, size));
+                for (size_t k = 0; k < geometry_.ranges.size(); ++k)
+                    if (int(k) != probe.range && geometry_.ranges[k].mesh < scene.meshes.size() &&
+                        listed(meshCoverageId(scene, geometry_.ranges[k].mesh)))
+                        rect = unite(rect, boxPixelRect(faceFrame.viewProj, geometry_.ranges[k].lo,
+                                                        geometry_.ranges[k].hi, size, size));
                 for (size_t i = 0; i < scene.spheres.size(); ++i)
                     if (int(i) != probe.sphere && listed(sphereCoverageId(scene, i))) {
                         const Sphere& sp = scene.spheres[i];
@@ -217,15 +222,10 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
     environmentKey_ = std::move(key);
 }
 
-void RasterRenderer::setPartialRedraw(bool on) {
-    partialRedraw_ = on;
-    if (!on) lastKey_.reset();
-}
-
 void RasterRenderer::draw(const Scene& scene, int width, int height, bool withCoverage, Band band, glm::vec2 jitter) {
     const bool whole = band.rows <= 0 || (band.top == 0 && band.rows == height);
     render(target_, scene, width, height, withCoverage, band, jitter,
-           partialRedraw_ && whole && withCoverage && jitter == glm::vec2(0.0f));
+           partial_.enabled() && whole && withCoverage && jitter == glm::vec2(0.0f));
 }
 
 const RenderTarget& RasterRenderer::drawSample(const Scene& scene, int width, int height, glm::vec2 jitter) {
@@ -243,19 +243,8 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     if (frame.flags.w & kPassShadows) prepareShadows(scene, width, height);
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
     const ShaderVariant variant = makeShaderVariant(frame, &shadows_.block());
-    // The program sets this render uses, dropped all at once first if there are too many to keep (a long
-    // viewer session), so no reference taken below is invalidated.
-    if (programs_.size() >= kMaxProgramSets) programs_.clear();
-    const ColorPrograms& programs = programsFor(variant);  // spheres, planes and untextured parts
     int maps = 0;  // every part's SL_MATERIAL_MAPS bits together (the partial-redraw key)
-    meshPrograms_.fill(nullptr);
-    meshPrograms_[0] = &programs;
-    for (const Mesh& m : scene.meshes)
-        for (const MeshPart& p : m.parts) {
-            const int bits = materialMaps(p.material);
-            maps |= bits;
-            if (!meshPrograms_[size_t(bits)]) meshPrograms_[size_t(bits)] = &programsFor(variant, bits);
-        }
+    const ColorPrograms& programs = programs_.prepare(variant, scene, maps);  // spheres, planes, untextured parts
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);
@@ -317,28 +306,32 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
             // Everything the colour pass reads besides the materials (redraw_plan.h): the scene's part, and
             // what this renderer derives from it or holds.
             key = drawKey(scene);
-            key->shared.add(frame).addString(variant.defines()).add(maps).add(meshGeneration_).add(ibl_.generation());
+            key->shared.add(frame)
+                .addString(variant.defines())
+                .add(maps)
+                .add(geometry_.generation)
+                .add(ibl_.generation());
             key->shared.add(width).add(height).add(shadowKey_.size());
             for (float v : shadowKey_) key->shared.add(v);
-            RedrawPlan plan = planRedraw(lastKey_ ? &*lastKey_ : nullptr, *key, kMaxPartialIds);
+            RedrawPlan plan = planRedraw(partial_.last(), *key, kMaxPartialIds);
             // A re-rendered environment cube changes the pixels of the object that looks it up.
             for (size_t cube = 0; cube < probes_.size() && !plan.full && report_.environments; ++cube) {
                 const EnvironmentProbe& probe = probes_[cube];
                 addToPlan(plan,
                           probe.sphere >= 0 ? sphereCoverageId(scene, size_t(probe.sphere))
-                                            : meshCoverageId(scene, ranges_[size_t(probe.range)].mesh),
+                                            : meshCoverageId(scene, geometry_.ranges[size_t(probe.range)].mesh),
                           kMaxPartialIds);
             }
             if (!plan.full && target_.width() == width && target_.height() == height && target_.hasCoverage()) {
                 if (!plan.ids.empty()) redrawPart(scene, frame, programs, plan.ids);
                 report_.partial = true;
                 report_.partialIds = int(plan.ids.size());
-                lastKey_ = std::move(key);
+                partial_.remember(std::move(*key));
                 gl::checkError("RasterRenderer::draw (partial)");
                 return;
             }
         }
-        lastKey_.reset();
+        partial_.forget();
     }
 
     out.resize(width, band.rows, withCoverage);
@@ -349,75 +342,23 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     uploadFrame(frame);
     drawBackdrop(frame);
     drawPasses(scene, frame, programs, PassOptions{});
-    if (key) lastKey_ = std::move(key);
+    if (key) partial_.remember(std::move(*key));
     gl::checkError("RasterRenderer::draw");
 }
 
-// The partial redraw: the listed objects are drawn again, in the full draw's order, over a copy of the image's
-// depth, so at every pixel one of them owns (coverage) the fragment that wins is the one that won in the full
-// draw (LEQUAL keeps the last of equal depths, and no later object came nearer). Those pixels are then
-// copied into the image; all others keep their values.
+// The partial redraw (partial_redraw.h): the listed objects drawn again over a copy of the image's depth, only
+// where their bounds can reach, then merged into the image.
 void RasterRenderer::redrawPart(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
                                 const std::vector<uint32_t>& ids) {
-    const int w = target_.width(), h = target_.height();
-    // Only the pixels the objects' bounds can cover: the depth copy, the draw and the merge are scissored.
-    const auto listed = [&ids](uint32_t id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); };
-    PixelRect rect;
-    for (const DrawRange& r : ranges_)
-        if (r.mesh < scene.meshes.size() && listed(meshCoverageId(scene, r.mesh)))
-            rect = unite(rect, boxPixelRect(frame.viewProj, r.lo, r.hi, w, h));
-    for (size_t i = 0; i < scene.spheres.size(); ++i)
-        if (listed(sphereCoverageId(scene, i))) {
-            const Sphere& sp = scene.spheres[i];
-            rect = unite(rect, boxPixelRect(frame.viewProj, sp.center - glm::vec3(sp.radius),
-                                            sp.center + glm::vec3(sp.radius), w, h));
-        }
-    for (size_t i = 0; i < scene.planes.size(); ++i)
-        if (listed(planeCoverageId(scene, i))) rect = PixelRect{0, 0, w, h};
+    const PixelRect rect =
+        PartialRedraw::objectsRect(scene, geometry_.ranges, frame.viewProj, ids, target_.width(), target_.height());
     if (rect.empty()) return;
-    partialTarget_.resize(w, h, false);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.framebuffer());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, partialTarget_.framebuffer());
-    glBlitFramebuffer(rect.x0, rect.y0, rect.x1, rect.y1, rect.x0, rect.y0, rect.x1, rect.y1, GL_DEPTH_BUFFER_BIT,
-                      GL_NEAREST);
-    partialTarget_.bind();
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(rect.x0, rect.y0, rect.x1 - rect.x0, rect.y1 - rect.y0);
+    partial_.begin(target_, rect);
     uploadFrame(frame);
     PassOptions options;
     options.only = &ids;
     drawPasses(scene, frame, programs, options);
-
-    if (!partialMerge_) {
-        partialMerge_ = gl::Program::build(shaders_, "fullscreen.vert", "partial_merge.frag");
-        mergeFbo_ = gl::Framebuffer::create();
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, mergeFbo_.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_.colorTexture(), 0);
-    glViewport(0, 0, w, h);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glUseProgram(partialMerge_.id());
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, partialTarget_.colorTexture());
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, target_.coverageTexture());
-    partialMerge_.setSampler("t_partial", 0, gl::Program::Uniform::Required);
-    partialMerge_.setSampler("t_coverage", 1, gl::Program::Uniform::Required);
-    for (size_t i = 0; i < ids.size(); ++i)
-        partialMerge_.set(("u_ids[" + std::to_string(i) + "]").c_str(), ids[i], gl::Program::Uniform::Required);
-    partialMerge_.set("u_idCount", int(ids.size()), gl::Program::Uniform::Required);
-    glBindVertexArray(emptyVao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glUseProgram(0);
-    glDisable(GL_SCISSOR_TEST);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_DEPTH_TEST);
-    target_.bind();
+    partial_.merge(target_, ids);
 }
 
 // An environment map seen where no object is: each pixel's ray (of the uploaded frame: the image's, a
@@ -427,7 +368,7 @@ void RasterRenderer::drawBackdrop(const FrameBlock& frame) const {
     glUseProgram(backdrop_.id());
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
-    glBindVertexArray(emptyVao_.id());
+    glBindVertexArray(geometry_.emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glDepthMask(GL_TRUE);

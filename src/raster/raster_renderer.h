@@ -6,10 +6,12 @@
 #include "gl/program.h"
 #include "image/image.h"
 #include "raster/band.h"
-#include "raster/draw_range.h"
+#include "raster/color_programs.h"
 #include "raster/environment_cubes.h"
+#include "raster/geometry_buffers.h"
 #include "raster/ibl_textures.h"
 #include "raster/mesh_textures.h"
+#include "raster/partial_redraw.h"
 #include "raster/raster_limits.h"
 #include "raster/redraw_plan.h"
 #include "raster/render_target.h"
@@ -17,13 +19,10 @@
 #include "raster/shadow_maps.h"
 #include "scene/scene.h"
 
-#include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <map>
 #include <optional>
-#include <string>
 #include <vector>
 
 namespace shadelab::raster {
@@ -58,9 +57,9 @@ public:
     // image at the pixel centres with coverage, after one whose inputs differed only in some objects' materials,
     // redraws only the pixels of those objects (and of objects whose environment cube changed with them); the image is
     // bit for bit what a full draw gives (redraw_plan.h). A draw with nothing changed then draws nothing.
-    void setPartialRedraw(bool on);
+    void setPartialRedraw(bool on) { partial_.setEnabled(on); }
     // The next draw is a full one (a benchmark's forced redraw).
-    void invalidate() { lastKey_.reset(); }
+    void invalidate() { partial_.forget(); }
     // One jittered sample of the whole image (see draw), into a colour-only target of its own, which it
     // returns: target() keeps the centre sample and its coverage.
     const RenderTarget& drawSample(const Scene& scene, int width, int height, glm::vec2 jitter);
@@ -78,7 +77,6 @@ public:
     int shadowLayers() const { return shadows_.layers(); }
 
 private:
-    struct ColorPrograms;
     // What one run of the colour passes leaves out or changes: the mirror pass skips its plane and reverses
     // winding; an environment face skips its own object and adds no environment reflections (one bounce).
     struct PassOptions {
@@ -105,33 +103,10 @@ private:
     void redrawPart(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
                     const std::vector<uint32_t>& ids);
 
-    // The colour passes' programs per ShaderVariant, compiled on first use and kept (its defines are the key).
-    // One variant's programs, each compiled at its first use (a textured scene of meshes alone never pays
-    // for the sphere, plane and environment programs of its variant). Environment kinds add kr ⊙ env(R) from
-    // the object's cube, and the plane mirror kr ⊙ the planar reflection pass (SL_ENVIRONMENT).
-    struct ColorPrograms {
-        enum Kind { Mesh, Sphere, Plane, MeshEnvironment, SphereEnvironment, PlaneMirror, kKinds };
-        const gl::ShaderLibrary* shaders = nullptr;
-        std::string defines;
-        mutable std::array<gl::Program, kKinds> built;
-        // Compiles on first use; leaves no program in use (callers bind what they draw with).
-        const gl::Program& get(Kind kind) const;
-    };
-    // materialMaps: mesh.frag's SL_MATERIAL_MAPS bits of one part (materialMaps in raster_passes.cpp), 0 for
-    // none. The reference stays valid until render() drops the sets (a long viewer session: more than
-    // kMaxProgramSets of them), which it does before it takes any.
-    const ColorPrograms& programsFor(const ShaderVariant& variant, int materialMaps = 0);
-    // mesh.frag's SL_MATERIAL_MAPS bits for one material: bit k for map k (emissive 32), 16 for alpha.
-    static int materialMaps(const Material& m);
-    static constexpr size_t kMaxProgramSets = 32;
     const gl::ShaderLibrary shaders_;
-    std::map<std::string, ColorPrograms> programs_;
-    // This render's mesh programs by the part's SL_MATERIAL_MAPS bits (null for bits no part has): each part
-    // runs only the texture code of its own maps, since llvmpipe executes every branch of the union's code.
-    std::array<const ColorPrograms*, 64> meshPrograms_{};
+    ColorProgramCache programs_;  // after shaders_, which it compiles from
     ShadowMaps shadows_;
     std::vector<float> shadowKey_;  // what the current shadow maps were rendered from
-    uint64_t meshGeneration_ = 0;   // bumped by uploadMeshes
     EnvironmentCubes environments_;
     std::vector<EnvironmentProbe> probes_;   // this draw's reflective spheres and mesh parts, cube i for probe i
     std::optional<DrawKey> environmentKey_;  // what the cubes were rendered from
@@ -141,16 +116,10 @@ private:
     IblTextures ibl_;                 // the environment's prefiltered atlas and the DFG table
     gl::Program backdrop_;            // an environment map behind everything (environment_backdrop.frag)
     gl::Buffer frameUbo_;
-    gl::VertexArray meshVao_, cubeVao_, emptyVao_;
-    gl::Buffer meshVbo_, meshIbo_, cubeVbo_;
-    std::vector<DrawRange> ranges_;
+    GeometryBuffers geometry_;
     RenderTarget target_;
     RenderTarget sampleTarget_;  // drawSample's
-    bool partialRedraw_ = false;
-    std::optional<DrawKey> lastKey_;  // what target_ holds, when a partial redraw may start from it
-    RenderTarget partialTarget_;      // the redrawn objects, over a copy of target_'s depth
-    gl::Program partialMerge_;        // copies their pixels into target_ (partial_merge.frag)
-    gl::Framebuffer mergeFbo_;        // target_'s colour alone
+    PartialRedraw partial_;      // what target_ holds, when a partial redraw may start from it
     bool environmentsRendered_ = false;
     DrawReport report_;
 };

@@ -13,22 +13,22 @@
 namespace shadelab::raster {
 
 void RasterRenderer::uploadMeshes(const Scene& scene) {
-    ranges_.clear();
-    ++meshGeneration_;
+    geometry_.ranges.clear();
+    ++geometry_.generation;
     size_t vertexCount = 0, indexCount = 0;
     for (const Mesh& m : scene.meshes)
         for (const MeshPart& p : m.parts) {
             vertexCount += p.geometry->positions.size();
             indexCount += p.geometry->indices.size();
         }
-    if (!meshVao_) {
-        meshVao_ = gl::VertexArray::create();
-        meshVbo_ = gl::Buffer::create();
-        meshIbo_ = gl::Buffer::create();
+    if (!geometry_.meshVao) {
+        geometry_.meshVao = gl::VertexArray::create();
+        geometry_.meshVbo = gl::Buffer::create();
+        geometry_.meshIbo = gl::Buffer::create();
     }
-    glBindVertexArray(meshVao_.id());
-    glBindBuffer(GL_ARRAY_BUFFER, meshVbo_.id());
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIbo_.id());
+    glBindVertexArray(geometry_.meshVao.id());
+    glBindBuffer(GL_ARRAY_BUFFER, geometry_.meshVbo.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, geometry_.meshIbo.id());
     if (vertexCount == 0) {
         glBindVertexArray(0);
         return;
@@ -75,7 +75,7 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
             for (size_t k = 0; k < g.indices.size(); ++k) rebased[k] = g.indices[k] + uint32_t(vBase);
             glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(iBase * sizeof(uint32_t)),
                             GLsizeiptr(rebased.size() * sizeof(uint32_t)), rebased.data());
-            ranges_.push_back({mi, pi, iBase, g.indices.size(), g.bounds.lo, g.bounds.hi});
+            geometry_.ranges.push_back({mi, pi, iBase, g.indices.size(), g.bounds.lo, g.bounds.hi});
             vBase += g.positions.size();
             iBase += g.indices.size();
         }

@@ -1,0 +1,64 @@
+// ColorPrograms and ColorProgramCache: compiling and keeping the colour passes' programs.
+#include "raster/color_programs.h"
+
+#include "raster/frame_block.h"
+
+namespace shadelab::raster {
+
+const gl::Program& ColorPrograms::get(Kind kind) const {
+    gl::Program& p = built[size_t(kind)];
+    if (p) return p;
+    const bool environment = kind == MeshEnvironment || kind == SphereEnvironment || kind == PlaneMirror;
+    const std::string text = colorProgramDefines(defines, 0, environment);
+    const char* stem = kind == Mesh || kind == MeshEnvironment       ? "mesh"
+                       : kind == Sphere || kind == SphereEnvironment ? "sphere"
+                                                                     : "plane";
+    p = gl::Program::build(*shaders, std::string(stem) + ".vert", std::string(stem) + ".frag", text);
+    p.bindBlock("Frame", kFrameBinding);
+    p.bindBlock("Shadows", kShadowBinding);
+    glUseProgram(p.id());
+    p.setSampler("t_shadowMaps", kShadowUnit);
+    p.setSampler("t_iblCube", kIblCubeUnit);
+    p.setSampler("t_iblDfg", kIblDfgUnit);
+    p.setSampler("t_baseColor", kBaseColorUnit);
+    p.setSampler("t_metalRough", kMetalRoughUnit);
+    p.setSampler("t_normal", kNormalMapUnit);
+    p.setSampler("t_occlusion", kOcclusionUnit);
+    p.setSampler("t_emissive", kEmissiveUnit);
+    if (kind == PlaneMirror) p.setSampler("t_reflection", kReflectionUnit);
+    if (kind == MeshEnvironment || kind == SphereEnvironment) p.setSampler("t_environment", kEnvironmentUnit);
+    glUseProgram(0);
+    return p;
+}
+
+int ColorProgramCache::materialMaps(const Material& m) {
+    return (m.baseColorTexture ? 1 : 0) | (m.metallicRoughnessTexture ? 2 : 0) | (m.normalTexture ? 4 : 0) |
+           (m.occlusionTexture ? 8 : 0) | (m.alphaMode != AlphaMode::Opaque ? 16 : 0) | (m.emissiveTexture ? 32 : 0);
+}
+
+const ColorPrograms& ColorProgramCache::get(const ShaderVariant& variant, int materialMaps) {
+    // mesh.frag's texture code only where a part needs it (SL_MATERIAL_MAPS).
+    const std::string defines = colorProgramDefines(variant.defines(), materialMaps, false);
+    if (auto it = sets_.find(defines); it != sets_.end()) return it->second;
+    ColorPrograms set;
+    set.shaders = &shaders_;
+    set.defines = defines;
+    return sets_.emplace(defines, std::move(set)).first->second;
+}
+
+const ColorPrograms& ColorProgramCache::prepare(const ShaderVariant& variant, const Scene& scene, int& maps) {
+    if (sets_.size() >= kMaxSets) sets_.clear();
+    const ColorPrograms& untextured = get(variant);
+    maps = 0;
+    forMaps_.fill(nullptr);
+    forMaps_[0] = &untextured;
+    for (const Mesh& m : scene.meshes)
+        for (const MeshPart& p : m.parts) {
+            const int bits = materialMaps(p.material);
+            maps |= bits;
+            if (!forMaps_[size_t(bits)]) forMaps_[size_t(bits)] = &get(variant, bits);
+        }
+    return untextured;
+}
+
+}  // namespace shadelab::raster

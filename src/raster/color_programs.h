@@ -1,0 +1,53 @@
+// The rasterizer's colour-pass programs: ColorPrograms, one shader variant's set (mesh, sphere and plane, each
+// plain or with its environment lookup), each compiled at its first use; and ColorProgramCache, which keeps the
+// sets by their defines and picks, for each mesh part, the set with only the texture code of its own maps
+// (llvmpipe executes every branch of the union's code, and all of it triples a mesh program's compile time).
+#pragma once
+
+#include "gl/program.h"
+#include "raster/shader_variant.h"
+#include "scene/scene.h"
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <string>
+
+namespace shadelab::raster {
+
+struct ColorPrograms {
+    // Environment kinds add kr ⊙ env(R) from the object's cube, and the plane mirror kr ⊙ the planar
+    // reflection pass (SL_ENVIRONMENT).
+    enum Kind { Mesh, Sphere, Plane, MeshEnvironment, SphereEnvironment, PlaneMirror, kKinds };
+    const gl::ShaderLibrary* shaders = nullptr;
+    std::string defines;
+    mutable std::array<gl::Program, kKinds> built;
+    // Compiles on first use; leaves no program in use (callers bind what they draw with).
+    const gl::Program& get(Kind kind) const;
+};
+
+class ColorProgramCache {
+public:
+    static constexpr size_t kMaxSets = 32;  // a long viewer session drops them all beyond this
+
+    explicit ColorProgramCache(const gl::ShaderLibrary& shaders) : shaders_(shaders) {}
+
+    // The set for `variant` with the texture code of `materialMaps` (mesh.frag's SL_MATERIAL_MAPS bits, 0 for
+    // none). The reference stays valid until the next prepare().
+    const ColorPrograms& get(const ShaderVariant& variant, int materialMaps = 0);
+    // One render's sets: the untextured one it returns (spheres, planes, untextured parts) and one per map set
+    // the scene's parts use, for part(). Drops every set first when there are too many to keep, so no reference
+    // it hands out is invalidated during the render. `maps`: every part's bits together.
+    const ColorPrograms& prepare(const ShaderVariant& variant, const Scene& scene, int& maps);
+    // The set prepare() chose for a part's material.
+    const ColorPrograms& part(const Material& m) const { return *forMaps_[size_t(materialMaps(m))]; }
+    // mesh.frag's SL_MATERIAL_MAPS bits for one material: bit k for map k (emissive 32), 16 for alpha.
+    static int materialMaps(const Material& m);
+
+private:
+    const gl::ShaderLibrary& shaders_;
+    std::map<std::string, ColorPrograms> sets_;
+    std::array<const ColorPrograms*, 64> forMaps_{};  // this render's sets by map bits (null: no part has them)
+};
+
+}  // namespace shadelab::raster
