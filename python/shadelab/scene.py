@@ -348,7 +348,13 @@ class Scene(_View):
 
     def _set(self, path: _Path, value: Any) -> None:
         document = _deepcopy(self._document())
-        _walk(document, path[:-1])[path[-1]] = _plain(value)
+        parent = _walk(document, path[:-1])
+        parent[path[-1]] = _plain(value)
+        # A material's field derived from the other model's (its "derived" list) is given once it is set: the
+        # fields derived from it then follow it (docs/scene-format.md, "Materials under each model").
+        derived = parent.get("derived") if len(path) >= 2 and path[-2] == "material" else None
+        if isinstance(derived, list) and path[-1] in derived:
+            derived.remove(path[-1])
         self._commit(document, strict=True)
 
     # The top level reads and writes as any view does.

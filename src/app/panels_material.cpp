@@ -32,6 +32,39 @@ void presetCombo(ViewerState& s) {
     ImGui::EndCombo();
 }
 
+// Which of `group`'s fields are derived from the other model's (Material::derived), in one dim line.
+void derivedNote(const Material& m, uint8_t group, const char* how) {
+    if (!(m.derived & group)) return;
+    std::string names;
+    for (const auto& entry : kMaterialFieldNames)
+        if (m.derived & group & entry.value) names += (names.empty() ? "" : ", ") + std::string(entry.name);
+    ImGui::TextDisabled("derived: %s (%s)", names.c_str(), how);
+}
+
+// The material's own shading model, or the scene's (the first entry): side by side in one picture.
+bool modelCombo(ShadingModel sceneModel, Material& m) {
+    const std::string sceneEntry = std::string("the scene's (") + toString(sceneModel) + ")";
+    const char* current = m.model ? toString(*m.model) : sceneEntry.c_str();
+    bool changed = false;
+    if (ImGui::BeginCombo("model", current)) {
+        if (ImGui::Selectable(sceneEntry.c_str(), !m.model)) {
+            changed = m.model.has_value();
+            m.model.reset();
+        }
+        for (ShadingModel model : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr})
+            if (ImGui::Selectable(toString(model), m.model == model)) {
+                changed = m.model != model;
+                m.model = model;
+            }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "the model this object is shaded with, in every renderer; the scene's model (Lighting) "
+            "shades the objects that name none");
+    return changed;
+}
+
 }  // namespace
 
 void drawMaterialSection(PanelContext& ctx) {
@@ -43,8 +76,9 @@ void drawMaterialSection(PanelContext& ctx) {
     }
     presetCombo(s);
     Material m = objectMaterial(s.scene, s.selected);
-    bool changed = false;
+    bool changed = modelCombo(s.scene.model, m);
     const ImGuiColorEditFlags colorFlags = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
+    derivedNote(m, kPhongFields, "from baseColor, metallic, roughness; editing one sets it");
     changed |= ImGui::ColorEdit3("ma  ambient", glm::value_ptr(m.ma), colorFlags);
     changed |= ImGui::ColorEdit3("md  diffuse", glm::value_ptr(m.md), colorFlags);
     changed |= ImGui::ColorEdit3("ms  specular", glm::value_ptr(m.ms), colorFlags);
@@ -64,6 +98,7 @@ void drawMaterialSection(PanelContext& ctx) {
             "emitted radiance: an area light under the path tracer (Global mode); the rasterizer and "
             "the Whitted reference add it to the object's colour");
     ImGui::TextDisabled("pbr: glTF metallic-roughness");
+    derivedNote(m, kPbrFields, "from md and s; editing one sets it");
     changed |= ImGui::ColorEdit3("baseColor", glm::value_ptr(m.baseColor), ImGuiColorEditFlags_Float);
     changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f, "%.2f");
     changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f, "%.3f");

@@ -231,7 +231,9 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         ImGui::Text("P %+.3f %+.3f %+.3f", p.P.x, p.P.y, p.P.z);
         ImGui::Text("N %+.3f %+.3f %+.3f", p.N.x, p.N.y, p.N.z);
         ImGui::Text("V %+.3f %+.3f %+.3f", p.V.x, p.V.y, p.V.z);
-        const bool pbr = ctx.state.scene.model == ShadingModel::Pbr;
+        // The model this point is shaded with: its material's own, else the scene's.
+        const ShadingModel shown = modelOf(p.material, ctx.state.scene.model);
+        const bool pbr = shown == ShadingModel::Pbr;
         if (pbr)
             ImGui::Text("roughness %.3f  metallic %.2f   c_diff %.2f %.2f %.2f   F0 %.2f %.2f %.2f",
                         p.material.roughness, p.material.metallic, p.pbrDiffuseColor.r, p.pbrDiffuseColor.g,
@@ -246,7 +248,7 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         const bool shadows = ctx.state.scene.terms.shadows;
         if (compact) {
             // The key row always; the per-light and per-model tables a click away.
-            const ShadingModel m = ctx.state.scene.model;
+            const ShadingModel m = shown;
             const glm::vec3 total = m == ShadingModel::Pbr          ? p.totalPbr
                                     : m == ShadingModel::BlinnPhong ? p.totalBlinn
                                                                     : p.totalPhong;
@@ -263,7 +265,7 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
             }
         };
         if (!p.lights.empty()) folded("lights", "each light", [&] { lightTable(p, shadows, pbr); });
-        folded("totals", "terms, every model", [&] { totalsTable(p, ctx.state.scene.model, ctx.state.encoding); });
+        folded("totals", "terms, every model", [&] { totalsTable(p, shown, ctx.state.encoding); });
         ctx.fields.equationOpen = ImGui::TreeNodeEx("equation", 0, "rendering equation at this point");
         if (ctx.fields.equationOpen) {
             if (ctx.equation)

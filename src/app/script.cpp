@@ -92,7 +92,7 @@ const ActionInfo kActions[] = {
          return SetShininess{objectField(a), a.child("s").inRange(0.0f, kMaxShininess, false, false)};
      }},
     {"setMaterial",
-     {"object", "ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness"},
+     {"object", "ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "model"},
      [](const JsonNode& a) -> Action {
          return SetMaterial{objectField(a), parseMaterialOverride(a)};
      }},
@@ -262,7 +262,7 @@ struct StateApplier {
     void operator()(const SetMaterial& x) const {
         const uint32_t id = object(x.object);
         Material m = objectMaterial(state.scene, id);
-        x.material.applyTo(m);
+        x.material.applyValues(m);  // setObjectMaterial derives what follows from the edit
         setObjectMaterial(state, id, m);
     }
     void operator()(const Preset& x) const { applyPreset(state, object(x.object), *x.preset); }

@@ -36,7 +36,12 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
     if (m.baseColor != before.baseColor) o.baseColor = m.baseColor;
     if (m.metallic != before.metallic) o.metallic = m.metallic;
     if (m.roughness != before.roughness) o.roughness = m.roughness;
-    for (MeshPart& p : mesh.parts) o.applyTo(p.material);
+    if (m.emission != before.emission) o.emission = m.emission;
+    if (m.model != before.model) o.model = m.model;  // back to the scene's model too
+    for (MeshPart& p : mesh.parts) {
+        o.applyTo(p.material);
+        p.material.model = o.model;
+    }
 }
 
 }  // namespace
@@ -88,6 +93,7 @@ Material objectMaterial(const Scene& scene, uint32_t id) {
         const Mesh& mesh = scene.meshes[r.index];
         if (!mesh.parts.empty()) return mesh.parts.front().material;
         Material m;
+        m.derived = kPhongFields | kPbrFields;  // as a glTF part's: the override gives, the rest derives
         mesh.material.applyTo(m);
         return m;
     }
@@ -97,9 +103,12 @@ Material objectMaterial(const Scene& scene, uint32_t id) {
 bool setObjectMaterial(ViewerState& state, uint32_t id, const Material& m) {
     const ObjectRef r = objectRef(state.scene, id);
     if (r.kind == ObjectKind::None) return false;
-    if (Material* dst = sphereOrPlaneMaterial(state.scene, r))
+    if (Material* dst = sphereOrPlaneMaterial(state.scene, r)) {
+        // The edited fields count as given; what was derived from them follows (deriveFields).
+        const Material before = *dst;
         *dst = m;
-    else
+        deriveFields(*dst, editedFields(before, m));
+    } else
         setMeshMaterial(state.scene.meshes[r.index], objectMaterial(state.scene, id), m);
     markChanged(state);
     return true;

@@ -32,6 +32,7 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
     j["coverage_id"] = coverageId;  // what the rasterizer's coverage buffer holds at the pixel
     j["model"] = toString(scene.model);
     if (!p.hit) return j.dump(2) + "\n";
+    j["shaded_with"] = toString(modelOf(p.material, scene.model));  // the material's own model, else the scene's
     j["object"] = {{"id", p.objectId}, {"kind", kindName(p.kind)}, {"label", p.label}};
     j["t"] = p.t;
     j["P"] = vec(p.P);
@@ -47,6 +48,10 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                      {"roughness", m.roughness},
                      {"pbr_diffuse_color", vec(p.pbrDiffuseColor)},
                      {"pbr_f0", vec(p.pbrF0)}};
+    nlohmann::json derived = nlohmann::json::array();  // fields derived from the other model's (scene-format.md)
+    for (const auto& entry : kMaterialFieldNames)
+        if (m.derived & entry.value) derived.push_back(entry.name);
+    j["material"]["derived"] = std::move(derived);
     j["ambient"] = vec(p.ambient);
     nlohmann::json lights = nlohmann::json::array();
     for (const ProbeLight& l : p.lights)

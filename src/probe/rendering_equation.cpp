@@ -79,7 +79,7 @@ RenderingEquation renderingEquationAt(const trace::TraceScene& scene, int width,
     const Surface s = whitted.surfaceAt(ray, *hit, 0);
     const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
-    const int model = modelIndex(sc.model);
+    const int model = s.model;  // the material's own, else the scene's
     const shading::SurfaceParams params = whitted.shadingParams(s, V);
     const PathBsdf bsdf(s, params, V, model, BsdfTerms{sc.terms.diffuse, sc.terms.specular, sc.terms.reflections});
     const Frame frame(glm::normalize(s.N));

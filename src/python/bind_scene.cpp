@@ -53,7 +53,7 @@ void bindScene(py::module_& m) {
             py::arg("document"), py::arg("reject_unknown_fields") = false,
             "Parses `document` as a scene file: (replaced, warnings); the scene is unchanged when it raises")
         .def("to_json", [](const SceneHandle& h) { return sceneToJson(h.scene()); })
-        .def("to_document", [](const SceneHandle& h) { return jsonTextToPython(sceneToJson(h.scene())); })
+        .def("to_document", [](const SceneHandle& h) { return jsonTextToPython(sceneToJson(h.scene(), true)); })
         .def("save", [](const SceneHandle& h, const std::string& path) { saveSceneJson(h.scene(), path); })
         .def("copy", [](const SceneHandle& h) { return SceneHandle(h); })
         .def_property_readonly("base_dir", &SceneHandle::baseDir)

@@ -1,7 +1,7 @@
 // ColorPrograms and ColorProgramCache: compiling and keeping the colour passes' programs.
 #include "raster/color_programs.h"
 
-#include "raster/frame_block.h"
+#include <optional>
 
 namespace shadelab::raster {
 
@@ -46,19 +46,36 @@ const ColorPrograms& ColorProgramCache::get(const ShaderVariant& variant, int ma
     return sets_.emplace(defines, std::move(set)).first->second;
 }
 
-const ColorPrograms& ColorProgramCache::prepare(const ShaderVariant& variant, const Scene& scene, int& maps) {
+const ColorPrograms& ColorProgramCache::prepare(const FrameBlock& frame, const ShadowBlock* shadows, const Scene& scene,
+                                                int& maps) {
     if (sets_.size() >= kMaxSets) sets_.clear();
-    const ColorPrograms& untextured = get(variant);
+    sceneModel_ = frame.flags.x;
+    chosen_.fill(nullptr);
+    std::array<std::optional<ShaderVariant>, kModels> variants;  // each model's, made when an object has it
+    const auto choose = [&](const Material& m, int bits) {
+        const int model = modelOf(m);
+        const ColorPrograms*& set = chosen_[size_t(model * kMapSets + bits)];
+        if (set) return;
+        std::optional<ShaderVariant>& v = variants[size_t(model)];
+        if (!v) v = makeShaderVariant(frame, shadows, model);
+        set = &get(*v, bits);
+    };
+    const Material sceneMaterial;  // no model of its own: the scene's
+    choose(sceneMaterial, 0);
     maps = 0;
-    forMaps_.fill(nullptr);
-    forMaps_[0] = &untextured;
+    for (const Sphere& s : scene.spheres) choose(s.material, 0);
+    for (const Plane& p : scene.planes) choose(p.material, 0);
     for (const Mesh& m : scene.meshes)
         for (const MeshPart& p : m.parts) {
             const int bits = materialMaps(p.material);
             maps |= bits;
-            if (!forMaps_[size_t(bits)]) forMaps_[size_t(bits)] = &get(variant, bits);
+            choose(p.material, bits);
         }
-    return untextured;
+    return *chosen_[size_t(sceneModel_ * kMapSets)];
+}
+
+const ColorPrograms& ColorProgramCache::of(const Material& m, bool meshPart) const {
+    return *chosen_[size_t(modelOf(m) * kMapSets + (meshPart ? materialMaps(m) : 0))];
 }
 
 }  // namespace shadelab::raster

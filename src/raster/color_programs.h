@@ -1,11 +1,14 @@
 // The rasterizer's colour-pass programs: ColorPrograms, one shader variant's set (mesh, sphere and plane, each
 // plain or with its environment lookup), each compiled at its first use; and ColorProgramCache, which keeps the
-// sets by their defines and picks, for each mesh part, the set with only the texture code of its own maps
-// (llvmpipe executes every branch of the union's code, and all of it triples a mesh program's compile time).
+// sets by their defines and picks, for each object, the set of its material's shading model (a material may
+// name its own) with only the texture code of its own maps (llvmpipe executes every branch of the union's
+// code, and all of it triples a mesh program's compile time).
 #pragma once
 
 #include "gl/program.h"
+#include "raster/frame_block.h"
 #include "raster/shader_variant.h"
+#include "raster/shadow_block.h"
 #include "scene/scene.h"
 
 #include <array>
@@ -35,19 +38,25 @@ public:
     // The set for `variant` with the texture code of `materialMaps` (mesh.frag's SL_MATERIAL_MAPS bits, 0 for
     // none). The reference stays valid until the next prepare().
     const ColorPrograms& get(const ShaderVariant& variant, int materialMaps = 0);
-    // One render's sets: the untextured one it returns (spheres, planes, untextured parts) and one per map set
-    // the scene's parts use, for part(). Drops every set first when there are too many to keep, so no reference
-    // it hands out is invalidated during the render. `maps`: every part's bits together.
-    const ColorPrograms& prepare(const ShaderVariant& variant, const Scene& scene, int& maps);
-    // The set prepare() chose for a part's material.
-    const ColorPrograms& part(const Material& m) const { return *forMaps_[size_t(materialMaps(m))]; }
+    // One render's sets: one per (model, map set) the scene's objects use, for of(). Drops every set first when
+    // there are too many to keep, so no reference it hands out is invalidated during the render. Returns the
+    // untextured set of the scene's own model; `maps`: every part's bits together.
+    const ColorPrograms& prepare(const FrameBlock& frame, const ShadowBlock* shadows, const Scene& scene, int& maps);
+    // The set prepare() chose for an object's material (a mesh part's: with the texture code of its maps).
+    const ColorPrograms& of(const Material& m, bool meshPart = false) const;
+    // The model prepare() shades `m` with (shading::SL_MODEL_*).
+    int modelOf(const Material& m) const { return m.model ? modelIndex(*m.model) : sceneModel_; }
     // mesh.frag's SL_MATERIAL_MAPS bits for one material: bit k for map k (emissive 32), 16 for alpha.
     static int materialMaps(const Material& m);
 
 private:
     const gl::ShaderLibrary& shaders_;
     std::map<std::string, ColorPrograms> sets_;
-    std::array<const ColorPrograms*, 64> forMaps_{};  // this render's sets by map bits (null: no part has them)
+    static constexpr int kModels = 3;    // shading::SL_MODEL_*
+    static constexpr int kMapSets = 64;  // SL_MATERIAL_MAPS values
+    // This render's sets by model × kMapSets + map bits (null: no object has them).
+    std::array<const ColorPrograms*, kModels * kMapSets> chosen_{};
+    int sceneModel_ = 0;
 };
 
 }  // namespace shadelab::raster

@@ -3,6 +3,7 @@
 #include "raster/frame_block.h"
 
 #include "scene/light_at.h"
+#include "scene/scene_models.h"
 #include "shading/lighting.h"
 
 #include <algorithm>
@@ -65,7 +66,8 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band, glm
         f.lightCone[i] = lightCone(l);
     }
     // The environment, as src/trace/environment_light.cpp reads it.
-    f.iblInfo.w = model == shading::SL_MODEL_PBR && scene.energyCompensation ? 1 : 0;
+    // (for the pbr surfaces: the scene's model, or any material's own)
+    f.iblInfo.w = scene.energyCompensation && usesModel(scene, ShadingModel::Pbr) ? 1 : 0;
     if (scene.environment) {
         const Environment& e = *scene.environment;
         f.iblParams =

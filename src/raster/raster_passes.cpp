@@ -94,8 +94,7 @@ const gl::Program& RasterRenderer::objectProgram(const ColorPrograms& programs, 
     return plain;
 }
 
-void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
-                                const PassOptions& options) const {
+void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, const PassOptions& options) const {
     const auto skipped = [&options](uint32_t id) {
         return options.only && std::find(options.only->begin(), options.only->end(), id) == options.only->end();
     };
@@ -117,7 +116,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             blended.push_back(k);
             continue;
         }
-        drawRange(scene, frame, options, k);
+        drawRange(scene, options, k);
     }
 
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
@@ -127,9 +126,9 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         if (int(i) == options.skipSphere || skipped(sphereCoverageId(scene, i))) continue;
         const Sphere& s = scene.spheres[i];
-        const gl::Program& p =
-            objectProgram(programs, ColorPrograms::Sphere, ColorPrograms::SphereEnvironment, int(i), -1, options);
-        setMaterial(p, s.material, sphereCoverageId(scene, i), frame.flags.x, scene.normalized);
+        const gl::Program& p = objectProgram(programs_.of(s.material), ColorPrograms::Sphere,
+                                             ColorPrograms::SphereEnvironment, int(i), -1, options);
+        setMaterial(p, s.material, sphereCoverageId(scene, i), programs_.modelOf(s.material), scene.normalized);
         p.set("u_center", s.center, gl::Program::Uniform::Required);
         p.set("u_radius", s.radius, gl::Program::Uniform::Required);
         glDrawArrays(GL_TRIANGLES, 0, 36);
@@ -144,14 +143,16 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         if (int(i) == options.skipPlane || skipped(planeCoverageId(scene, i))) continue;  // a mirror: not itself
         const Plane& p = scene.planes[i];
         const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
-        const gl::Program& planeProgram = programs.get(mirror >= 0 ? ColorPrograms::PlaneMirror : ColorPrograms::Plane);
+        const gl::Program& planeProgram =
+            programs_.of(p.material).get(mirror >= 0 ? ColorPrograms::PlaneMirror : ColorPrograms::Plane);
+        const int model = programs_.modelOf(p.material);
         glUseProgram(planeProgram.id());
         if (mirror >= 0) {
             glActiveTexture(GL_TEXTURE0 + kReflectionUnit);
             glBindTexture(GL_TEXTURE_2D, mirrorTargets_[size_t(mirror)].colorTexture());
             glActiveTexture(GL_TEXTURE0);
         }
-        setMaterial(planeProgram, p.material, planeCoverageId(scene, i), frame.flags.x, scene.normalized);
+        setMaterial(planeProgram, p.material, planeCoverageId(scene, i), model, scene.normalized);
         const glm::vec3 t = shading::planeTangent(p.normal), b = shading::planeBitangent(p.normal);
         // The tangent basis picks the checker's tiles only: where the shaded colour does not depend on the tile
         // (a variant that ignores md and the base colour), the compiler removes both, so they are optional.
@@ -163,7 +164,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         const Checker c = p.checker.value_or(Checker{});
         // pbr: the second tiles' md2 is their base colour (F0 stays the plane's), as in the tracer.
         const glm::vec3 md2 =
-            frame.flags.x == shading::SL_MODEL_PBR ? shading::pbrDiffuseColor(c.md2, p.material.metallic) : c.md2;
+            model == shading::SL_MODEL_PBR ? shading::pbrDiffuseColor(c.md2, p.material.metallic) : c.md2;
         planeProgram.set("u_md2", md2);
         planeProgram.set("u_baseColor2", c.md2);
         planeProgram.set("u_checkerSize", c.size);
@@ -182,7 +183,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         glEnable(GL_BLEND);  // the coverage attachment is integer: blending leaves it alone
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
-        for (size_t k : blended) drawRange(scene, frame, options, k);
+        for (size_t k : blended) drawRange(scene, options, k);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
@@ -191,14 +192,12 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     glUseProgram(0);
 }
 
-void RasterRenderer::drawRange(const Scene& scene, const FrameBlock& frame, const PassOptions& options,
-                               size_t k) const {
+void RasterRenderer::drawRange(const Scene& scene, const PassOptions& options, size_t k) const {
     const DrawRange& r = geometry_.ranges[k];
     const Material& m = scene.meshes[r.mesh].parts[r.part].material;
-    const ColorPrograms* programs = &programs_.part(m);  // prepared by render()
-    const gl::Program& p =
-        objectProgram(*programs, ColorPrograms::Mesh, ColorPrograms::MeshEnvironment, -1, int(k), options);
-    setMaterial(p, m, meshCoverageId(scene, r.mesh), frame.flags.x, scene.normalized);
+    const gl::Program& p = objectProgram(programs_.of(m, true), ColorPrograms::Mesh, ColorPrograms::MeshEnvironment, -1,
+                                         int(k), options);  // prepared by render()
+    setMaterial(p, m, meshCoverageId(scene, r.mesh), programs_.modelOf(m), scene.normalized);
     glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
 }

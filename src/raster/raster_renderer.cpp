@@ -7,6 +7,7 @@
 #include "raster/planar_reflection.h"
 #include "scene/coverage.h"
 #include "scene/ray_epsilon.h"
+#include "scene/scene_models.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
 
@@ -147,7 +148,7 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
 
 // Reflective spheres and mesh parts (kr > 0, reflections on): one environment cube each, rendered from its
 // centre with the image's programs, re-rendered only when something but the camera changes.
-void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs) {
+void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& frame) {
     probes_.clear();
     if (!(frame.flags.w & kPassMirrors)) return;
     const auto reflective = [](const Material& m) { return m.kr.x > 0.0f || m.kr.y > 0.0f || m.kr.z > 0.0f; };
@@ -212,7 +213,7 @@ void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& f
             glClearBufferfv(GL_DEPTH, 0, &farDepth);
             uploadFrame(faceFrame);
             drawBackdrop(faceFrame);
-            drawPasses(scene, faceFrame, programs, PassOptions{-1, probe.sphere, probe.range, false, false});
+            drawPasses(scene, faceFrame, PassOptions{-1, probe.sphere, probe.range, false, false});
             glDisable(GL_SCISSOR_TEST);
             report_.environments = true;
         }
@@ -244,7 +245,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     shadows_.bind(kShadowBinding, kShadowUnit);  // always bound: the programs declare the block
     const ShaderVariant variant = makeShaderVariant(frame, &shadows_.block());
     int maps = 0;  // every part's SL_MATERIAL_MAPS bits together (the partial-redraw key)
-    const ColorPrograms& programs = programs_.prepare(variant, scene, maps);  // spheres, planes, untextured parts
+    programs_.prepare(frame, &shadows_.block(), scene, maps);
 
     // Every pass sets the state it needs (style.md "GL resources").
     glDisable(GL_BLEND);
@@ -257,7 +258,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     const float* background = backgroundColour.data();
     const GLuint noObject[4] = {kBackgroundId, 0, 0, 0};
     const float farDepth = 1.0f;
-    const bool pbr = frame.flags.x == shading::SL_MODEL_PBR;
+    const bool pbr = usesModel(scene, ShadingModel::Pbr);  // the scene's model, or any material's own
     ibl_.prepare(scene.environment ? scene.environment->map : nullptr,
                  pbr && (frame.iblInfo.x != kIblNone || frame.iblInfo.w != 0));
     ibl_.bind(kIblCubeUnit, kIblDfgUnit);
@@ -271,7 +272,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
         glUseProgram(0);
     }
 
-    prepareEnvironments(scene, frame, programs);
+    prepareEnvironments(scene, frame);
 
     // Mirror passes first, each into its own float target of the band's size (one bounce, local shading).
     mirrorOfPlane_.assign(scene.planes.size(), -1);
@@ -295,7 +296,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
         // in mesh.frag (SL_CLIP_DISTANCE); impostors test their own hit.
         const bool clipDistance = shaders_.dialect() == gl::ShaderDialect::Glsl330;
         if (clipDistance) glEnable(GL_CLIP_DISTANCE0);
-        drawPasses(scene, *mirrored, programs, PassOptions{int(i), -1, -1, true, false});
+        drawPasses(scene, *mirrored, PassOptions{int(i), -1, -1, true, false});
         if (clipDistance) glDisable(GL_CLIP_DISTANCE0);
         mirrorOfPlane_[i] = int(mirrors++);
     }
@@ -323,7 +324,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
                           kMaxPartialIds);
             }
             if (!plan.full && target_.width() == width && target_.height() == height && target_.hasCoverage()) {
-                if (!plan.ids.empty()) redrawPart(scene, frame, programs, plan.ids);
+                if (!plan.ids.empty()) redrawPart(scene, frame, plan.ids);
                 report_.partial = true;
                 report_.partialIds = int(plan.ids.size());
                 partial_.remember(std::move(*key));
@@ -341,15 +342,14 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
     uploadFrame(frame);
     drawBackdrop(frame);
-    drawPasses(scene, frame, programs, PassOptions{});
+    drawPasses(scene, frame, PassOptions{});
     if (key) partial_.remember(std::move(*key));
     gl::checkError("RasterRenderer::draw");
 }
 
 // The partial redraw (partial_redraw.h): the listed objects drawn again over a copy of the image's depth, only
 // where their bounds can reach, then merged into the image.
-void RasterRenderer::redrawPart(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
-                                const std::vector<uint32_t>& ids) {
+void RasterRenderer::redrawPart(const Scene& scene, const FrameBlock& frame, const std::vector<uint32_t>& ids) {
     const PixelRect rect =
         PartialRedraw::objectsRect(scene, geometry_.ranges, frame.viewProj, ids, target_.width(), target_.height());
     if (rect.empty()) return;
@@ -357,7 +357,7 @@ void RasterRenderer::redrawPart(const Scene& scene, const FrameBlock& frame, con
     uploadFrame(frame);
     PassOptions options;
     options.only = &ids;
-    drawPasses(scene, frame, programs, options);
+    drawPasses(scene, frame, options);
     partial_.merge(target_, ids);
 }
 

@@ -91,17 +91,15 @@ private:
     const gl::Program& objectProgram(const ColorPrograms& programs, int plain, int environment, int sphere, int range,
                                      const PassOptions& options) const;
     void uploadFrame(const FrameBlock& frame) const;
-    void drawPasses(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
-                    const PassOptions& options) const;
+    void drawPasses(const Scene& scene, const FrameBlock& frame, const PassOptions& options) const;
     // One mesh part (ranges_[k]) with its material, through drawPasses' state.
-    void drawRange(const Scene& scene, const FrameBlock& frame, const PassOptions& options, size_t k) const;
+    void drawRange(const Scene& scene, const PassOptions& options, size_t k) const;
     void prepareShadows(const Scene& scene, int width, int height);
-    void prepareEnvironments(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs);
+    void prepareEnvironments(const Scene& scene, const FrameBlock& frame);
     void drawBackdrop(const FrameBlock& frame) const;
     void render(RenderTarget& target, const Scene& scene, int width, int height, bool withCoverage, Band band,
                 glm::vec2 jitter, bool reusable);
-    void redrawPart(const Scene& scene, const FrameBlock& frame, const ColorPrograms& programs,
-                    const std::vector<uint32_t>& ids);
+    void redrawPart(const Scene& scene, const FrameBlock& frame, const std::vector<uint32_t>& ids);
 
     const gl::ShaderLibrary shaders_;
     ColorProgramCache programs_;  // after shaders_, which it compiles from

@@ -27,7 +27,7 @@ void addTexture(KeyBytes& k, const TextureBinding& t) {
 // The web build's 32-bit WebAssembly has other sizes and relies on the native builds to remind.)
 #if UINTPTR_MAX == UINT64_MAX
 static_assert(sizeof(TextureBinding) == 56, "a new TextureBinding field: add it to addTexture");
-static_assert(sizeof(Material) == 400, "a new Material field: add it to materialKey");
+static_assert(sizeof(Material) == 416, "a new Material field: add it to materialKey");
 #endif
 
 KeyBytes materialKey(const Material& m) {
@@ -38,6 +38,8 @@ KeyBytes materialKey(const Material& m) {
          {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.occlusionTexture, &m.emissiveTexture})
         addTexture(k, *t);
     k.add(m.alphaMode).add(m.alpha).add(m.alphaCutoff);
+    k.add(m.model.has_value()).add(m.model.value_or(ShadingModel::Phong));
+    // Material::derived is not in the key: which fields were given changes no pixel.
     return k;
 }
 

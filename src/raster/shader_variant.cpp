@@ -52,9 +52,9 @@ std::string colorProgramDefines(const std::string& variantDefines, int materialM
     return s;
 }
 
-ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows) {
+ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows, int model) {
     ShaderVariant v;
-    v.model = frame.flags.x;
+    v.model = model >= 0 ? model : frame.flags.x;
     v.terms = frame.flags.y;
     const int count = std::clamp(frame.flags.z, 0, kMaxLights);
     v.lights = std::min(count, kMaxShadowedLights);

@@ -44,7 +44,8 @@ struct ShaderVariant {
 // SL_ENVIRONMENT 1. Tests compile exactly these.
 std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment);
 
-// The variant for one draw. `shadows` is null when the frame has no shadow pass.
-ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows);
+// The variant for one draw. `shadows` is null when the frame has no shadow pass. `model` (shading::SL_MODEL_*)
+// is the objects' model when a material names its own; -1: the frame's (the scene's).
+ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows, int model = -1);
 
 }  // namespace shadelab::raster

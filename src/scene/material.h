@@ -4,10 +4,13 @@
 // model's are given (docs/scene-format.md, "Materials under each model").
 #pragma once
 
+#include "scene/shading_model.h"
 #include "scene/texture.h"
+#include "util/name_table.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
@@ -47,7 +50,39 @@ struct Material {
     // glTF emissiveTexture (linear RGB after sRGB decoding): multiplies `emission` in the rasterizer and the
     // Whitted tracer (docs/gltf-import.md). Imported only.
     TextureBinding emissiveTexture;
+    // The material's own shading model, which every renderer shades it with; none: the scene's (Scene::model).
+    // So Phong, Blinn-Phong and pbr can sit side by side in one picture.
+    std::optional<ShadingModel> model;
+    // Which of the fields the models share a meaning through (MaterialField) were derived from the other model's
+    // by deriveFields (docs/scene-format.md, "Materials under each model") rather than given: in the file, by
+    // an edit, in the panel. An edit re-derives these from what it changed; saving writes only the given ones.
+    uint8_t derived = 0;
 };
+
+// The fields two models share a meaning through: Phong's ma, md, ms, s and pbr's baseColor, metallic, roughness.
+enum MaterialField : uint8_t {
+    kFieldMa = 1,
+    kFieldMd = 2,
+    kFieldMs = 4,
+    kFieldS = 8,
+    kFieldBaseColor = 16,
+    kFieldMetallic = 32,
+    kFieldRoughness = 64,
+};
+inline constexpr uint8_t kPhongFields = kFieldMa | kFieldMd | kFieldMs | kFieldS;
+inline constexpr uint8_t kPbrFields = kFieldBaseColor | kFieldMetallic | kFieldRoughness;
+inline constexpr EnumName<MaterialField> kMaterialFieldNames[] = {
+    {kFieldMa, "ma"},
+    {kFieldMd, "md"},
+    {kFieldMs, "ms"},
+    {kFieldS, "s"},
+    {kFieldBaseColor, "baseColor"},
+    {kFieldMetallic, "metallic"},
+    {kFieldRoughness, "roughness"},
+};
+
+// The model `m` is shaded with in a scene whose model is `sceneModel`.
+inline ShadingModel modelOf(const Material& m, ShadingModel sceneModel) { return m.model.value_or(sceneModel); }
 
 inline constexpr float kMaxShininess = 10000.0f;
 
@@ -64,6 +99,39 @@ inline float roughnessFromShininess(float s) {
     return std::clamp(std::sqrt(std::sqrt(2.0f / (std::max(s, 0.0f) + 2.0f))), 0.0f, 1.0f);
 }
 
+// An edit of the `edited` fields (MaterialField bits) of `m`, already written: they count as given from now on,
+// and the fields derived from them follow, each unless it was given itself: baseColor follows md (clamped: md
+// may exceed 1, a base colour may not) and roughness follows s (Walter et al. 2007's equivalence); md =
+// baseColor·(1 − metallic), ma = md, ms = mix(0.04, baseColor, metallic) and s follow the pbr fields (glTF 2.0
+// Appendix B). metallic follows nothing. When only pbr fields changed, every derived Phong field follows them.
+inline void deriveFields(Material& m, uint8_t edited) {
+    m.derived = uint8_t(m.derived & ~edited);
+    const bool phong = (edited & kPhongFields) != 0, pbr = (edited & kPbrFields) != 0;
+    const auto follows = [&](MaterialField field, uint8_t sources) {
+        return (m.derived & field) && (pbr && !phong ? true : (edited & sources) != 0);
+    };
+    if (phong) {
+        if (follows(kFieldBaseColor, kFieldMd)) m.baseColor = glm::clamp(m.md, 0.0f, 1.0f);
+        if (follows(kFieldRoughness, kFieldS)) m.roughness = roughnessFromShininess(m.s);
+    }
+    if (pbr) {
+        if (follows(kFieldMd, kFieldBaseColor | kFieldMetallic)) m.md = m.baseColor * (1.0f - m.metallic);
+        if (follows(kFieldMa, kFieldBaseColor | kFieldMetallic)) m.ma = m.md;
+        if (follows(kFieldMs, kFieldBaseColor | kFieldMetallic))
+            m.ms = glm::mix(glm::vec3(0.04f), m.baseColor, m.metallic);
+        if (follows(kFieldS, kFieldRoughness)) m.s = shininessFromRoughness(m.roughness);
+    }
+}
+
+// The linked fields in which `after` differs from `before` (MaterialField bits).
+inline uint8_t editedFields(const Material& before, const Material& after) {
+    return uint8_t((after.ma != before.ma ? kFieldMa : 0) | (after.md != before.md ? kFieldMd : 0) |
+                   (after.ms != before.ms ? kFieldMs : 0) | (after.s != before.s ? kFieldS : 0) |
+                   (after.baseColor != before.baseColor ? kFieldBaseColor : 0) |
+                   (after.metallic != before.metallic ? kFieldMetallic : 0) |
+                   (after.roughness != before.roughness ? kFieldRoughness : 0));
+}
+
 // Each set field replaces the same field of the material it is applied to. A field of one model that is not
 // set follows the other model's set fields: pbr without baseColor / roughness reads md and s; Phong without
 // md / ma / ms / s reads baseColor, metallic and roughness (docs/scene-format.md).
@@ -75,11 +143,29 @@ struct MaterialOverride {
     std::optional<glm::vec3> baseColor;
     std::optional<float> metallic, roughness;
     std::optional<glm::vec3> emission;
+    std::optional<ShadingModel> model;
+    // Linked fields whose values were derived when written (a Python document's "derived" list): read, but not
+    // given, so that they follow the given fields again.
+    uint8_t derived = 0;
 
     bool empty() const {
-        return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission;
+        return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission &&
+               !model;
     }
+    // Writes the fields, then derives from the given ones what follows from them (deriveFields).
     void applyTo(Material& m) const {
+        applyValues(m);
+        m.derived = uint8_t(m.derived | derived);
+        deriveFields(m, uint8_t(linkedFields() & ~derived));
+    }
+    // The linked fields given (MaterialField bits).
+    uint8_t linkedFields() const {
+        return uint8_t((ma ? kFieldMa : 0) | (md ? kFieldMd : 0) | (ms ? kFieldMs : 0) | (s ? kFieldS : 0) |
+                       (baseColor ? kFieldBaseColor : 0) | (metallic ? kFieldMetallic : 0) |
+                       (roughness ? kFieldRoughness : 0));
+    }
+    // Writes the given fields and nothing else (an edit whose derivation the caller makes).
+    void applyValues(Material& m) const {
         if (ma) m.ma = *ma;
         if (md) m.md = *md;
         if (ms) m.ms = *ms;
@@ -91,18 +177,7 @@ struct MaterialOverride {
         if (metallic) m.metallic = *metallic;
         if (roughness) m.roughness = *roughness;
         if (emission) m.emission = *emission;
-        const bool phong = ma || md || ms || s, pbr = baseColor || metallic || roughness;
-        if (phong && !pbr) {
-            if (md) m.baseColor = glm::clamp(*md, 0.0f, 1.0f);  // md may exceed 1; a base colour may not
-            if (s) m.roughness = roughnessFromShininess(*s);
-        }
-        if (pbr && !phong) {
-            // glTF 2.0 Appendix B, as gltf_materials.cpp maps glTF materials: diffuse colour, F0, exponent.
-            m.md = m.baseColor * (1.0f - m.metallic);
-            m.ma = m.md;
-            m.ms = glm::mix(glm::vec3(0.04f), m.baseColor, m.metallic);
-            m.s = shininessFromRoughness(m.roughness);
-        }
+        if (model) m.model = *model;
     }
 };
 

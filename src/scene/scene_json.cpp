@@ -35,9 +35,15 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 // ---- 1. Loading materials, camera, lights --------------------------------------------------------------
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys(
-        {"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "emission"});
-    return parseMaterialOverride(n);
+    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
+                                       "emission", "model", "derived"});
+    MaterialOverride o = parseMaterialOverride(n);
+    // "derived": the fields listed were derived from the other model's when the document was written (Python's
+    // documents list them): read, but not given, so that they follow the given fields again.
+    if (auto f = n.find("derived"))
+        for (size_t i = 0; i < f->arraySize(); ++i)
+            o.derived = uint8_t(o.derived | (*f)[i].oneOf(kMaterialFieldNames, "material field"));
+    return o;
 }
 
 // An object's "material": inline fields, or a string naming an entry of the top-level "materials".
@@ -59,7 +65,15 @@ MaterialOverride parseMaterialRef(const JsonNode& n, const NamedMaterials& named
 
 Material parseMaterial(const JsonNode& object, const NamedMaterials& named) {
     Material m;
-    if (auto f = object.find("material")) parseMaterialRef(*f, named).applyTo(m);
+    if (auto f = object.find("material")) {
+        const MaterialOverride o = parseMaterialRef(*f, named);
+        // A material that gives one model's fields only has the other's derived from them (docs/scene-format.md,
+        // "Materials under each model"); one that gives some of both has each as given.
+        const uint8_t given = uint8_t(o.linkedFields() & ~o.derived);
+        if ((given & kPhongFields) && !(given & kPbrFields)) m.derived = kPbrFields;
+        if ((given & kPbrFields) && !(given & kPhongFields)) m.derived = kPhongFields;
+        o.applyTo(m);
+    }
     return m;
 }
 
@@ -209,6 +223,7 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("metallic")) m.metallic = f->inRange(0.0f, 1.0f, false, false);
     if (auto f = n.find("roughness")) m.roughness = f->inRange(0.0f, 1.0f, false, false);
     if (auto f = n.find("emission")) m.emission = f->rgbUpTo(kMaxRadiance);
+    if (auto f = n.find("model")) m.model = f->oneOf(kShadingModelNames, "shading model");
     return m;
 }
 
@@ -337,18 +352,31 @@ double exact(float f) {
 
 OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
 
-OJson materialJson(const Material& m) {
-    OJson j = {{"ma", vec(m.ma)},
-               {"md", vec(m.md)},
-               {"ms", vec(m.ms)},
-               {"s", exact(m.s)},
-               {"kr", vec(m.kr)},
-               {"kt", vec(m.kt)},
-               {"ior", exact(m.ior)},
-               {"baseColor", vec(m.baseColor)},
-               {"metallic", exact(m.metallic)},
-               {"roughness", exact(m.roughness)}};
+// The given fields of `m` (a derived one is derived again on loading); `withDerived` writes the derived ones too,
+// listed under "derived", as Python's documents hold them.
+OJson materialJson(const Material& m, bool withDerived) {
+    OJson j = OJson::object();
+    const auto put = [&](MaterialField field, OJson value) {
+        if (withDerived || !(m.derived & field)) j[nameOf(kMaterialFieldNames, field)] = std::move(value);
+    };
+    put(kFieldMa, vec(m.ma));
+    put(kFieldMd, vec(m.md));
+    put(kFieldMs, vec(m.ms));
+    put(kFieldS, exact(m.s));
+    j["kr"] = vec(m.kr);
+    j["kt"] = vec(m.kt);
+    j["ior"] = exact(m.ior);
+    put(kFieldBaseColor, vec(m.baseColor));
+    put(kFieldMetallic, exact(m.metallic));
+    put(kFieldRoughness, exact(m.roughness));
     if (m.emission != glm::vec3(0.0f)) j["emission"] = vec(m.emission);  // written only for emitters
+    if (m.model) j["model"] = toString(*m.model);                        // only a material's own
+    if (withDerived && m.derived) {
+        OJson names = OJson::array();
+        for (const auto& entry : kMaterialFieldNames)
+            if (m.derived & entry.value) names.push_back(entry.name);
+        j["derived"] = std::move(names);
+    }
     return j;
 }
 
@@ -365,6 +393,7 @@ OJson overrideJson(const MaterialOverride& m) {
     if (m.metallic) j["metallic"] = exact(*m.metallic);
     if (m.roughness) j["roughness"] = exact(*m.roughness);
     if (m.emission) j["emission"] = vec(*m.emission);
+    if (m.model) j["model"] = toString(*m.model);
     return j;
 }
 
@@ -409,7 +438,7 @@ void writePretty(const OJson& j, int indent, std::string& out) {
 
 // ---- 5. sceneToJson, saveSceneJson ---------------------------------------------------------------------
 
-std::string sceneToJson(const Scene& scene) {
+std::string sceneToJson(const Scene& scene, bool withDerived) {
     OJson doc;
     doc["shadelab"] = kFormatVersion;
     doc["title"] = scene.title;
@@ -469,14 +498,14 @@ std::string sceneToJson(const Scene& scene) {
                            {"name", s.name},
                            {"center", vec(s.center)},
                            {"radius", exact(s.radius)},
-                           {"material", materialJson(s.material)}});
+                           {"material", materialJson(s.material, withDerived)}});
     }
     for (const Plane& p : scene.planes) {
         OJson j = {{"type", "plane"},
                    {"name", p.name},
                    {"normal", vec(p.normal)},
                    {"offset", exact(p.offset)},
-                   {"material", materialJson(p.material)}};
+                   {"material", materialJson(p.material, withDerived)}};
         if (p.checker) j["checker"] = {{"md2", vec(p.checker->md2)}, {"size", exact(p.checker->size)}};
         objects.push_back(j);
     }

@@ -24,8 +24,11 @@ Scene parseSceneDocument(const JsonNode& root);
 MaterialOverride parseMaterialOverride(const JsonNode& n);  // ma md ms s kr kt ior baseColor metallic roughness
 LightOverride parseLightOverride(const JsonNode& n);        // "position", "direction", "color", the cone, "range"
 
-// Serialises every described field (not imported geometry). parse(save(s)) == s, field by field.
-std::string sceneToJson(const Scene& scene);
+// Serialises every described field (not imported geometry). parse(save(s)) == s, field by field. A material's
+// fields derived from the other model's (Material::derived) are left out, so that loading derives them again;
+// `withDerived` writes them too, listed under the material's "derived" (Python's documents: every value readable,
+// and an edit of a given field re-derives the rest).
+std::string sceneToJson(const Scene& scene, bool withDerived = false);
 
 // Writes atomically (util/atomic_file.h).
 void saveSceneJson(const Scene& scene, const std::string& path);

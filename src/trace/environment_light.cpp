@@ -2,6 +2,7 @@
 // (shaders/surface.glsl, SL_IBL), around the shared lookups of shaders/ibl.glsl.
 #include "trace/environment_light.h"
 
+#include "scene/scene_models.h"
 #include "shading/dfg_lut.h"
 #include "shading/prefilter.h"
 
@@ -14,11 +15,11 @@ namespace shadelab::trace {
 
 EnvironmentLight::EnvironmentLight(const Scene& scene) : uniform_(scene.background) {
     // The DFG table costs tens of milliseconds the first time: only pbr scenes that read it compute it.
-    if (scene.model == ShadingModel::Pbr && (scene.environment || scene.energyCompensation))
-        lookup_.dfg = &shading::dfgLut();
+    const bool pbr = usesModel(scene, ShadingModel::Pbr);  // the scene's model, or any material's own
+    if (pbr && (scene.environment || scene.energyCompensation)) lookup_.dfg = &shading::dfgLut();
     if (!scene.environment) return;
     const Environment& e = *scene.environment;
-    lightsPbr_ = scene.model == ShadingModel::Pbr;
+    lightsPbr_ = pbr;
     intensity_ = e.intensity;
     uniform_ = scene.background * e.intensity;
     cosRot_ = std::cos(glm::radians(e.rotation));

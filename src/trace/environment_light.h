@@ -16,7 +16,8 @@ class EnvironmentLight {
 public:
     explicit EnvironmentLight(const Scene& scene);
 
-    // Whether pbr surfaces are lit by the environment (the scene has one and its model is pbr).
+    // Whether pbr surfaces are lit by the environment (the scene has one, and pbr surfaces: its model is pbr, or
+    // some material's own is). Other surfaces keep the constant ambient.
     bool lightsPbr() const { return lightsPbr_; }
     // Radiance arriving along a ray of direction `dir` that leaves the scene.
     glm::vec3 escaping(glm::vec3 dir) const;

@@ -16,9 +16,9 @@ namespace {
 
 bool emits(const Material& m) { return m.emission.x > 0.0f || m.emission.y > 0.0f || m.emission.z > 0.0f; }
 
-glm::vec3 albedoOf(const Surface& s, ShadingModel model) {
+glm::vec3 albedoOf(const Surface& s) {
     if (emits(*s.material)) return glm::vec3(1.0f);
-    const glm::vec3 a = model == ShadingModel::Pbr ? s.baseColor : s.md + s.ms + s.material->kr;
+    const glm::vec3 a = s.model == modelIndex(ShadingModel::Pbr) ? s.baseColor : s.md + s.ms + s.material->kr;
     return glm::clamp(a, glm::vec3(0.0f), glm::vec3(1.0f));
 }
 
@@ -29,7 +29,6 @@ SurfacePasses firstHitPasses(const TraceScene& scene, int width, int height, int
     const ViewSetup v = makeViewSetup(scene.scene(), width, height);
     SurfaceSetup surfaces(scene);
     surfaces.setPixelFootprint(pixelFootprint(v));
-    const ShadingModel model = scene.scene().model;
     if (threads <= 0) threads = std::max(1, int(std::thread::hardware_concurrency()));
     parallelFor(height, threads, [&](int y) {
         for (int x = 0; x < width; ++x) {
@@ -39,7 +38,7 @@ SurfacePasses firstHitPasses(const TraceScene& scene, int width, int height, int
             if (!hit) continue;
             const Surface s = surfaces.at(ray, *hit, 0);
             const size_t p = size_t(y) * size_t(width) + size_t(x);
-            const glm::vec3 a = albedoOf(s, model);
+            const glm::vec3 a = albedoOf(s);
             const float len = glm::length(s.N);
             const glm::vec3 n = len > 0.0f ? s.N / len : s.Nf;
             for (int c = 0; c < 3; ++c) {

@@ -65,12 +65,7 @@ void WhittedIntegrator::note(Tree& tree, TreeRayKind kind, int depth, const Ray&
 }
 
 WhittedIntegrator::WhittedIntegrator(const TraceScene& scene, int maxDepth, const RayTreeLimits& limits)
-    : scene_(scene),
-      maxDepth_(std::max(maxDepth, 0)),
-      model_(modelIndex(scene.scene().model)),
-      limits_(limits),
-      env_(scene.scene()),
-      surfaces_(scene) {}
+    : scene_(scene), maxDepth_(std::max(maxDepth, 0)), limits_(limits), env_(scene.scene()), surfaces_(scene) {}
 
 PrimarySample WhittedIntegrator::primary(const Ray& ray, const std::atomic<bool>* cancel, TreeStats* stats) const {
     Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, cancel, {}};
@@ -179,7 +174,8 @@ void WhittedIntegrator::noteShadow(Tree& tree, const Surface& s, size_t light, f
 
 glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::vec3 V) const {
     const Scene& sc = scene_.scene();
-    if (!env_.lightsPbr() || !sc.terms.ambient || !sc.terms.specular) return glm::vec3(0.0f);
+    if (!env_.lightsPbr() || s.model != shading::SL_MODEL_PBR || !sc.terms.ambient || !sc.terms.specular)
+        return glm::vec3(0.0f);
     const Material& m = *s.material;
     const glm::vec3 f0 =
         s.mapped ? s.ms : shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
@@ -193,8 +189,8 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
     shading::SurfaceParams params =
-        shading::surfaceParams(model_, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
-    const bool pbr = model_ == shading::SL_MODEL_PBR;
+        shading::surfaceParams(s.model, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
+    const bool pbr = s.model == shading::SL_MODEL_PBR;
     if (pbr) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     // A base-colour texture scales ma, and F0's base colour under pbr, the affine form mesh.frag uses.
     params.ma = params.ma * s.tex;
@@ -214,20 +210,21 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     const Material& m = *s.material;
     // The lecture's step 0, as surface.glsl's shadeSurface: no light term on, the surface's unlit colour.
     if (shading::noIllumination(sc.terms.ambient, sc.terms.diffuse, sc.terms.specular))
-        return shading::unlitColour(s.md, s.baseColor, model_) + m.emission * s.emissive;
+        return shading::unlitColour(s.md, s.baseColor, s.model) + m.emission * s.emissive;
     const glm::vec3 V = -ray.dir;
     glm::vec2 dfg(0.0f);
     const shading::SurfaceParams params = shadingParams(s, V, &dfg);
     // The environment replaces the constant ambient of pbr surfaces (design.md §8: what global light replaces).
+    const bool environmentLit = env_.lightsPbr() && s.model == shading::SL_MODEL_PBR;
     glm::vec3 environment(0.0f);
-    if (env_.lightsPbr() && sc.terms.ambient) {
+    if (environmentLit && sc.terms.ambient) {
         const glm::vec3 R = shading::IblLookup{}.iblReflect(s.N, V);
         const glm::vec3 pre =
             reflected ? env_.prefilteredWithMirror(R, s.roughness, *reflected) : env_.prefiltered(R, s.roughness);
         environment = s.ao * shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
                                                        sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
     }
-    const bool ambientOn = sc.terms.ambient && !env_.lightsPbr();
+    const bool ambientOn = sc.terms.ambient && !environmentLit;
     const bool lit = sc.terms.diffuse || sc.terms.specular;
     // Lights go to shadeLocal in batches of kMaxLights (one batch for every scene the rasterizer takes).
     const bool recording = tree && tree->record;
@@ -249,12 +246,12 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
             if (recording && sc.terms.shadows && lit && reaches) noteShadow(*tree, s, first + k, ls.visibility);
         }
         shading::TermFlags terms{ambientOn && first == 0, sc.terms.diffuse, sc.terms.specular};
-        const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, model_, terms);
+        const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, s.model, terms);
         I = first == 0 ? batch : I + batch;
         first += count;
     } while (first < sc.lights.size());
     // An emitter's own light (design.md §8), as surface.glsl adds u_emission.
-    return (env_.lightsPbr() ? I + environment : I) + m.emission * s.emissive;
+    return (environmentLit ? I + environment : I) + m.emission * s.emissive;
 }
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,

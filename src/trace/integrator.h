@@ -93,7 +93,6 @@ private:
 
     const TraceScene& scene_;
     int maxDepth_;
-    int model_;
     RayTreeLimits limits_;
     EnvironmentLight env_;
     SurfaceSetup surfaces_;

@@ -96,6 +96,7 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
     const Scene& sc = scene_.scene();
     Surface s;
     s.material = &scene_.material(hit);
+    s.model = s.material->model ? modelIndex(*s.material->model) : model_;
     s.md = s.material->md;
     s.baseColor = s.material->baseColor;
     s.roughness = s.material->roughness;
@@ -148,10 +149,10 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
                 const glm::vec4 mr = mapTexel(ray, hit, depth, m.metallicRoughnessTexture);
                 const float metallic = shading::mapMetallic(m.metallic, mr);
                 s.roughness = shading::mapRoughness(m.roughness, mr);
-                s.s = shading::mapExponent(model_, s.roughness);
+                s.s = shading::mapExponent(s.model, s.roughness);
                 s.md = shading::mapDiffuse(s.baseColor, metallic);
                 s.ma = s.md;
-                s.ms = shading::mapSpecular(model_, sc.normalized, s.baseColor, metallic, s.s);
+                s.ms = shading::mapSpecular(s.model, sc.normalized, s.baseColor, metallic, s.s);
                 s.mapped = true;
             }
             if (m.normalTexture) {

@@ -24,6 +24,7 @@ struct Surface {
     glm::vec3 baseColor{0.0f};  // pbr base colour, after the plane's checker and the base-colour texture
     glm::vec3 tex{1.0f};        // the base-colour texture's linear RGB here (1 without one): scales md, ma, F0
     const Material* material = nullptr;
+    int model = 0;  // shading::SL_MODEL_* the material is shaded with: its own, else the scene's
     // The other glTF maps (shaders/material_maps.glsl, as mesh.frag): a metallic-roughness texel re-derives
     // ma, md, ms and s (mapped); occlusion scales indirect light by ao; alpha is the base colour's.
     bool mapped = false;

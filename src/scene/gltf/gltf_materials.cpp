@@ -88,6 +88,8 @@ Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, 
     m.baseColor = baseColor;
     m.metallic = metallic;
     m.roughness = roughness;
+    // The asset's fields, none given by the scene: a mesh's material override re-derives from what it gives.
+    m.derived = kPhongFields | kPbrFields;
     return m;
 }
 

@@ -31,8 +31,7 @@ PathIntegrator::PathIntegrator(const TraceScene& scene, const PathSettings& sett
       surfaces_(scene),
       whitted_(scene, 0),
       environment_(scene.scene()),
-      emitters_(scene, environment_),
-      model_(modelIndex(scene.scene().model)) {
+      emitters_(scene, environment_) {
     settings_.maxDepth = std::max(settings_.maxDepth, 0);
 }
 
@@ -99,13 +98,13 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
         // The lecture's step 0 (no light term on): no light to carry, so the camera ray's first hit shows its
         // unlit colour, as in the Whitted tracer and the rasterizer, and the path ends there.
         if (shading::noIllumination(sc.terms.ambient, sc.terms.diffuse, sc.terms.specular)) {
-            add(beta * shading::unlitColour(s.md, s.baseColor, model_), scattered);
+            add(beta * shading::unlitColour(s.md, s.baseColor, s.model), scattered);
             break;
         }
         if (bounce > settings_.maxDepth) break;
 
         const glm::vec3 V = -ray.dir;
-        const PathBsdf bsdf(s, whitted_.shadingParams(s, V), V, model_, terms);
+        const PathBsdf bsdf(s, whitted_.shadingParams(s, V), V, s.model, terms);
         const glm::vec3 above = s.P + eps * s.Nf;
         if (bsdf.hasSmooth()) {
             // Point, spot and directional lights: the Whitted tracer's terms, π·f·N·L·Il·vis (design.md §7, §8).

@@ -48,7 +48,6 @@ private:
     WhittedIntegrator whitted_;  // shadow rays, shading parameters, the environment
     EnvironmentSampler environment_;
     Emitters emitters_;
-    int model_;
 };
 
 }  // namespace shadelab::trace

@@ -1,0 +1,79 @@
+"""A material's own model and its given and derived fields, from Python: a sweep of s under pbr narrows the
+highlight because roughness is derived from s (and the same through a scene file edited and reloaded), a field
+given explicitly is never re-derived (the negative control), `material.derived` names what is derived, and a
+material's "model" shades that object alone with it."""
+
+import json
+
+import numpy as np
+import pytest
+
+import shadelab
+
+SIZE = (480, 270)
+SWEEP = [1, 8, 64, 512, 2048]
+
+
+def highlight_width(scene, object_id=1):
+    """Pixels of the object brighter than half-way from its median to its peak: the highlight's area."""
+    image = shadelab.render(scene, SIZE, coverage=True)
+    lum = np.asarray(image)[..., :3] @ np.array([0.2126, 0.7152, 0.0722])
+    values = lum[np.asarray(image.coverage) == object_id]
+    floor = float(np.median(values))
+    return int((values - floor > 0.5 * (float(values.max()) - floor)).sum())
+
+
+@pytest.fixture()
+def pbr_default():
+    scene = shadelab.data.scene("default")
+    scene.model = "pbr"
+    return scene
+
+
+def test_a_sweep_of_s_under_pbr_narrows_the_highlight(pbr_default):
+    assert pbr_default.objects[0].material.derived == ("baseColor", "metallic", "roughness")
+    widths = []
+    for s in SWEEP:
+        pbr_default.objects[0].material.s = s
+        widths.append(highlight_width(pbr_default))
+    assert all(a > b for a, b in zip(widths, widths[1:])), widths
+    assert pbr_default.objects[0].material.derived == ("baseColor", "metallic", "roughness")
+
+
+def test_the_same_through_a_scene_file_edited_and_reloaded(pbr_default, tmp_path):
+    widths = []
+    for s in (8, 512):
+        pbr_default.objects[0].material.s = s
+        path = tmp_path / f"s{s}.json"
+        pbr_default.save(path)
+        saved = json.loads(path.read_text())
+        # Saving writes only the given fields: roughness, derived from s, is derived again on loading.
+        assert "roughness" not in saved["objects"][0]["material"]
+        widths.append(highlight_width(shadelab.Scene.load(path)))
+    assert widths[0] > widths[1], widths
+
+
+def test_a_given_roughness_is_never_re_derived(pbr_default):
+    pbr_default.objects[0].material.roughness = 0.5
+    assert "roughness" not in pbr_default.objects[0].material.derived
+    pbr_default.objects[0].material.s = 1
+    first = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    pbr_default.objects[0].material.s = 2048
+    assert pbr_default.objects[0].material.roughness == 0.5
+    # The negative control of the sweep: with roughness given, s no longer moves the pbr picture.
+    assert np.array_equal(first, np.asarray(shadelab.render(pbr_default, (160, 90))))
+
+
+def test_a_materials_own_model_shades_that_object_alone(pbr_default):
+    phong = shadelab.data.scene("default")
+    mixed = shadelab.data.scene("default")
+    mixed.objects[0].material.model = "pbr"
+    a = shadelab.render(mixed, (160, 90), coverage=True)
+    wide = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    rest = np.asarray(shadelab.render(phong, (160, 90)))
+    cov = np.asarray(a.coverage)
+    pixels = np.asarray(a)
+    assert np.array_equal(pixels[cov == 1], wide[cov == 1])  # the sphere as a scene-wide pbr render has it
+    assert not np.array_equal(pixels[cov == 1], rest[cov == 1])  # control: not as Phong has it
+    with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.model: unknown shading model 'phong2'"):
+        mixed.objects[0].material.model = "phong2"
