@@ -278,6 +278,14 @@ TEST(AppCaptions, SayTheModelTheTermsAndTheMode) {
     setTerm(s, Term::Diffuse, false);
     setModel(s, ShadingModel::Pbr);
     EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
+    // An object under its own model is named too, or the caption would mislead (control: back to the scene's).
+    Material own = objectMaterial(s.scene, 1);
+    own.model = ShadingModel::Phong;
+    setObjectMaterial(s, 1, own);
+    EXPECT_EQ(modelCaption(s.scene), "PBR (GGX) and the objects' own models");
+    own.model = ShadingModel::Pbr;
+    setObjectMaterial(s, 1, own);
+    EXPECT_EQ(modelCaption(s.scene), "PBR (GGX)");
     // A display that is not Standard is named at the end (not in Difference, which shows the raw values).
     setMode(s, ViewMode::Raster);
     EXPECT_EQ(imageCaption(s, GlobalCaption{4, 3.0, true}), imageCaption(s)) << "no samples or denoising in Raster";

@@ -1,5 +1,7 @@
 #include "app/captions.h"
 
+#include "scene/scene_models.h"
+
 #include <cstdio>
 
 namespace shadelab::app {
@@ -33,12 +35,16 @@ std::string stepCaption(const Terms& shown, const Terms& scene) {
 }  // namespace
 
 std::string modelCaption(const Scene& scene) {
+    std::string words;
     switch (scene.model) {
-        case ShadingModel::Phong: return scene.normalized ? "normalised Phong" : "Phong";
-        case ShadingModel::BlinnPhong: return scene.normalized ? "normalised Blinn-Phong" : "Blinn-Phong";
-        case ShadingModel::Pbr: return "PBR (GGX)";
+        case ShadingModel::Phong: words = scene.normalized ? "normalised Phong" : "Phong"; break;
+        case ShadingModel::BlinnPhong: words = scene.normalized ? "normalised Blinn-Phong" : "Blinn-Phong"; break;
+        case ShadingModel::Pbr: words = "PBR (GGX)"; break;
     }
-    return toString(scene.model);
+    // Objects whose material names another model are shaded with it: say so, or the caption misleads.
+    for (ShadingModel other : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr})
+        if (other != scene.model && usesModel(scene, other)) return words + " and the objects' own models";
+    return words;
 }
 
 WipeCaptions wipeCaptions(ViewMode mode) {

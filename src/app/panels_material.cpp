@@ -38,7 +38,9 @@ void derivedNote(const Material& m, uint8_t group, const char* how) {
     std::string names;
     for (const auto& entry : kMaterialFieldNames)
         if (m.derived & group & entry.value) names += (names.empty() ? "" : ", ") + std::string(entry.name);
-    ImGui::TextDisabled("derived: %s (%s)", names.c_str(), how);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("derived: %s (%s)", names.c_str(), how);
+    ImGui::PopStyleColor();
 }
 
 // The material's own shading model, or the scene's (the first entry): side by side in one picture.
