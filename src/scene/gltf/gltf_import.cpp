@@ -98,6 +98,7 @@ public:
                                      gm.emissiveTexture.extensions, true, ".emissiveTexture");
         }
         if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
+        for (const std::string& line : unshadedMaterialExtensions(model)) warnOnce(line);
         for (const std::string& ext : model.extensionsRequired) {
             if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
                 throw InputError(file_, "extensionsRequired", ext + " is not supported");

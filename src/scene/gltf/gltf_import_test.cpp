@@ -364,6 +364,20 @@ TEST(GltfImport, TwoCylinderEngineImportsWhole) {
     EXPECT_EQ(triangleCount(g), 121496u);
 }
 
+// A material extension that is not shaded is said once per file, not dropped in silence: ClearCoatTest's coat
+// (the one layered Khronos asset Debian ships). Control: a model without one says nothing of the kind.
+TEST(GltfImport, AMaterialExtensionNotShadedIsSaidOnce) {
+    REQUIRE_MODELS();
+    const GltfImport g = importGltf(model("glTF2/ClearCoat-glTF/ClearCoatTest.gltf"));
+    const auto lines = std::count_if(g.warnings.begin(), g.warnings.end(), [](const std::string& w) {
+        return contains(w, "KHR_materials_clearcoat is not shaded");
+    });
+    EXPECT_EQ(lines, 1);
+    EXPECT_TRUE(anyWarningContains(g, "materials use it): rendered without it"));
+    const GltfImport plain = importGltf(model("glTF2/BoxTextured-glTF/BoxTextured.gltf"));
+    EXPECT_FALSE(anyWarningContains(plain, "is not shaded"));
+}
+
 // Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed.
 // Limits against hostile files (docs/gltf-import.md, "Limits against hostile files"): each gives a one-line InputError
 // before anything big is allocated.

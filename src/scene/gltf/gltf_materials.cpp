@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <map>
 #include <optional>
+#include <set>
 
 namespace shadelab {
 namespace {
@@ -91,6 +93,21 @@ Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, 
     // The asset's fields, none given by the scene: a mesh's material override re-derives from what it gives.
     m.derived = kPhongFields | kPbrFields;
     return m;
+}
+
+std::vector<std::string> unshadedMaterialExtensions(const tinygltf::Model& model) {
+    // The material extensions materialFrom reads; every other KHR_materials_* changes how a surface looks.
+    static const std::set<std::string> kShaded = {"KHR_materials_pbrSpecularGlossiness",
+                                                  "KHR_materials_emissive_strength", "KHR_materials_ior"};
+    std::map<std::string, size_t> users;  // extension → materials that use it, in name order
+    for (const tinygltf::Material& gm : model.materials)
+        for (const auto& [name, value] : gm.extensions)
+            if (name.rfind("KHR_materials_", 0) == 0 && !kShaded.count(name)) ++users[name];
+    std::vector<std::string> lines;
+    for (const auto& [name, count] : users)
+        lines.push_back(name + " is not shaded (" + std::to_string(count) +
+                        (count == 1 ? " material uses it" : " materials use it") + "): rendered without it");
+    return lines;
 }
 
 }  // namespace shadelab
