@@ -77,3 +77,13 @@ def test_a_materials_own_model_shades_that_object_alone(pbr_default):
     assert not np.array_equal(pixels[cov == 1], rest[cov == 1])  # control: not as Phong has it
     with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.model: unknown shading model 'phong2'"):
         mixed.objects[0].material.model = "phong2"
+
+
+def test_a_material_extension_not_shaded_is_a_warning():
+    path = "/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf"
+    import os
+
+    if not os.path.exists(path):
+        pytest.skip("assimp-testmodels is not installed")
+    with pytest.warns(shadelab.ShadelabWarning, match=r"KHR_materials_clearcoat is not shaded"):
+        shadelab.Scene.load(path)
