@@ -1,6 +1,8 @@
 // The background renderers' image and tile textures.
 #include "app/background_textures.h"
 
+#include "util/check.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -60,6 +62,7 @@ void TileMask::reset(int width, int height, int tileSize) {
 }
 
 bool TileMask::mark(int tx, int ty) {
+    SHADELAB_DCHECK(tx >= 0 && tx < tilesX_ && ty >= 0 && ty < tilesY_);
     uint8_t& state = state_[size_t(ty) * size_t(tilesX_) + size_t(tx)];
     const bool fresh = state == 0;
     if (fresh) ++done_;

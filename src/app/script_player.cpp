@@ -1,6 +1,7 @@
 // ScriptPlayer: the frame-by-frame playback of a viewer script.
 #include "app/script_player.h"
 
+#include "util/check.h"
 #include "util/input_error.h"
 
 #include <algorithm>
@@ -63,6 +64,7 @@ void ScriptPlayer::play(int frame, ViewerState& state, ScriptWindow& window) {
 std::optional<DragPointer> ScriptPlayer::nextDragPointer() {
     if (!drag_) return std::nullopt;
     const actions::Drag& d = drag_->drag;
+    SHADELAB_DCHECK_GE(d.steps, 1);  // the script's reader refuses fewer
     const int frame = drag_->frame++;
     const float t = std::clamp(float(frame - 1) / float(d.steps), 0.0f, 1.0f);
     DragPointer p;

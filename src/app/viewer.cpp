@@ -81,12 +81,12 @@ void Viewer::waitForWork() {
 bool Viewer::frame() {
     waitForWork();
     const double t0 = glfwGetTime();
-    if (glfwWindowShouldClose(window_)) return false;
+    if (glfwWindowShouldClose(window_.handle)) return false;
     handleDrops();
-    glfwGetFramebufferSize(window_, &shape_.fbWidth, &shape_.fbHeight);
-    glfwGetWindowSize(window_, &shape_.windowWidth, &shape_.windowHeight);
+    glfwGetFramebufferSize(window_.handle, &shape_.fbWidth, &shape_.fbHeight);
+    glfwGetWindowSize(window_.handle, &shape_.windowWidth, &shape_.windowHeight);
     if (shape_.fbWidth <= 0 || shape_.fbHeight <= 0 || shape_.windowWidth <= 0 || shape_.windowHeight <= 0 ||
-        glfwGetWindowAttrib(window_, GLFW_ICONIFIED)) {
+        glfwGetWindowAttrib(window_.handle, GLFW_ICONIFIED)) {
         glfwWaitEventsTimeout(0.1);  // minimised: no GL work at all until the window has a size again
         return true;
     }
@@ -174,7 +174,7 @@ bool Viewer::frame() {
         writeWindowScreenshot(pendingWindowShot_);
         pendingWindowShot_.clear();
     }
-    glfwSwapBuffers(window_);
+    glfwSwapBuffers(window_.handle);
     const double ms = (glfwGetTime() - t0) * 1000.0;
     if (options_.stats) (redrawn ? stats_.frames : stats_.idle).add(ms);
     stats_.recentMs[size_t(frame_) % stats_.recentMs.size()] = ms;

@@ -124,9 +124,11 @@ private:
     UndoHistory history_;
     std::optional<ScriptPlayer> player_;  // --script
 
-    GLFWwindow* window_ = nullptr;
-    bool imguiReady_ = false;
-    ImFont* captionFont_ = nullptr;  // larger than the panel's, for a projector
+    struct Window {
+        GLFWwindow* handle = nullptr;
+        bool imguiReady = false;
+        ImFont* captionFont = nullptr;  // larger than the panel's, for a projector
+    } window_;
     std::unique_ptr<raster::RasterRenderer> raster_;
     std::unique_ptr<ImageView> imageView_;
     std::unique_ptr<ArrowOverlay> arrows_;
@@ -217,7 +219,6 @@ private:
         std::array<double, 64> recentMs{};
     } stats_;
     double recentFrameMs() const;
-    std::vector<std::string> glInfo_;
 };
 
 }  // namespace shadelab::app

@@ -133,7 +133,7 @@ void Viewer::performAction(const ScriptAction& a) {
             } else if constexpr (std::is_same_v<T, ReloadShaders>) {
                 reloadShaders(x.dir);
             } else if constexpr (std::is_same_v<T, ResizeWindow>) {
-                glfwSetWindowSize(window_, x.width, x.height);
+                glfwSetWindowSize(window_.handle, x.width, x.height);
             } else {
                 applyScriptAction(state_, a, player_->file());
             }

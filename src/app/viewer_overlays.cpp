@@ -125,7 +125,7 @@ glm::vec2 Viewer::imagePixelF(float windowX, float windowY) const {
 // same from the back of the room.
 void Viewer::drawCaptions() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    ImFont* font = captionFont_ ? captionFont_ : ImGui::GetFont();
+    ImFont* font = window_.captionFont ? window_.captionFont : ImGui::GetFont();
     const float size = font->FontSize * ImGui::GetIO().FontGlobalScale;
     const float pad = 4.0f * shape_.uiScale, margin = 10.0f * shape_.uiScale;
     const float left = visibleLeft(), right = layout_.imageX + layout_.imageW;

@@ -84,20 +84,20 @@ Viewer::~Viewer() { shutdown(); }
 
 // GL objects go while their context is current; then ImGui, the window and GLFW.
 void Viewer::shutdown() {
-    if (window_) glfwMakeContextCurrent(window_);
+    if (window_.handle) glfwMakeContextCurrent(window_.handle);
     global_.reset();     // joins the path tracer's threads (it borrows the reference's BVH cache)
     reference_.reset();  // joins the tracer threads, then deletes its textures
     arrows_.reset();
     imageView_.reset();
     raster_.reset();
-    if (imguiReady_) {
+    if (window_.imguiReady) {
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
     }
-    imguiReady_ = false;
-    if (window_) glfwDestroyWindow(window_);
-    window_ = nullptr;
+    window_.imguiReady = false;
+    if (window_.handle) glfwDestroyWindow(window_.handle);
+    window_.handle = nullptr;
     glfwTerminate();
 }
 
@@ -137,14 +137,14 @@ void Viewer::initWindow() {
     // Never larger than the screen: a fixed --size then shows scaled down, but renders at full size.
     w = std::min(w, screenW);
     h = std::min(h, screenH);
-    window_ = glfwCreateWindow(w, h, windowTitle(state_).c_str(), nullptr, nullptr);
-    if (!window_) throw std::runtime_error("cannot create an OpenGL 3.3 core window: " + g_glfwError);
-    glfwMakeContextCurrent(window_);
+    window_.handle = glfwCreateWindow(w, h, windowTitle(state_).c_str(), nullptr, nullptr);
+    if (!window_.handle) throw std::runtime_error("cannot create an OpenGL 3.3 core window: " + g_glfwError);
+    glfwMakeContextCurrent(window_.handle);
     glfwSwapInterval(1);
     if (const char* missing = gl::loadFunctions(getProc))
         throw std::runtime_error(std::string("the window's OpenGL lacks ") + missing);
-    glfwSetWindowUserPointer(window_, this);
-    installInputCallbacks(window_);
+    glfwSetWindowUserPointer(window_.handle, this);
+    installInputCallbacks(window_.handle);
     if (options_.verbose)
         std::fprintf(stderr, "shadelab: GL_RENDERER %s\nshadelab: GL_VERSION %s\n",
                      reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
@@ -165,8 +165,8 @@ void Viewer::initImGui() {
     style.ScaleAllSizes(shape_.uiScale);
     // Glyphs rasterised at framebuffer resolution, shown at window units (sharp on HiDPI).
     int fbW = 0, fbH = 0, winW = 0, winH = 0;
-    glfwGetFramebufferSize(window_, &fbW, &fbH);
-    glfwGetWindowSize(window_, &winW, &winH);
+    glfwGetFramebufferSize(window_.handle, &fbW, &fbH);
+    glfwGetWindowSize(window_.handle, &winW, &winH);
     const float fbScale = winW > 0 && fbW > 0 ? float(fbW) / float(winW) : 1.0f;
     const float pixels = std::round(kFontSize * shape_.uiScale * fbScale);
     const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
@@ -184,11 +184,12 @@ void Viewer::initImGui() {
     // The probe's tables: monospaced and a little smaller, so the window covers less of the image.
     if (std::filesystem::exists(mono)) io.Fonts->AddFontFromFileTTF(mono, std::round(0.88f * pixels), nullptr, kRanges);
     // The captions on the image: half as large again, to read from the back of a classroom.
-    if (std::filesystem::exists(sans)) captionFont_ = io.Fonts->AddFontFromFileTTF(sans, std::round(1.5f * pixels));
+    if (std::filesystem::exists(sans))
+        window_.captionFont = io.Fonts->AddFontFromFileTTF(sans, std::round(1.5f * pixels));
     io.FontGlobalScale = 1.0f / fbScale;
-    ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    ImGui_ImplGlfw_InitForOpenGL(window_.handle, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
-    imguiReady_ = true;
+    window_.imguiReady = true;
 }
 
 }  // namespace shadelab::app

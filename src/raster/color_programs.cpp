@@ -1,6 +1,8 @@
 // ColorPrograms and ColorProgramCache: compiling and keeping the colour passes' programs.
 #include "raster/color_programs.h"
 
+#include "util/check.h"
+
 #include <optional>
 
 namespace shadelab::raster {
@@ -75,7 +77,9 @@ const ColorPrograms& ColorProgramCache::prepare(const FrameBlock& frame, const S
 }
 
 const ColorPrograms& ColorProgramCache::of(const Material& m, bool meshPart) const {
-    return *chosen_[size_t(modelOf(m) * kMapSets + (meshPart ? materialMaps(m) : 0))];
+    const ColorPrograms* set = chosen_[size_t(modelOf(m) * kMapSets + (meshPart ? materialMaps(m) : 0))];
+    SHADELAB_CHECK(set != nullptr);  // prepare() saw this render's objects, and this one among them
+    return *set;
 }
 
 }  // namespace shadelab::raster

@@ -1,7 +1,9 @@
 // PartialRedraw: the bounds, the depth copy and the merge of a partial redraw.
 #include "raster/partial_redraw.h"
 
+#include "raster/raster_limits.h"
 #include "scene/coverage.h"
+#include "util/check.h"
 
 #include <algorithm>
 #include <string>
@@ -43,6 +45,8 @@ void PartialRedraw::begin(const RenderTarget& image, const PixelRect& rect) {
 }
 
 void PartialRedraw::merge(const RenderTarget& image, const std::vector<uint32_t>& ids) {
+    SHADELAB_CHECK_LE(ids.size(), kMaxPartialIds);  // partial_merge.frag's u_ids holds no more
+    SHADELAB_CHECK(image.hasCoverage());            // the merge picks the objects' pixels by it
     if (!merge_) {
         merge_ = gl::Program::build(shaders_, "fullscreen.vert", "partial_merge.frag");
         mergeFbo_ = gl::Framebuffer::create();
