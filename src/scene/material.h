@@ -152,11 +152,17 @@ struct MaterialOverride {
         return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission &&
                !model;
     }
-    // Writes the fields, then derives from the given ones what follows from them (deriveFields).
+    // Writes the fields, then derives from the given ones what follows from them (deriveFields). Fields of both
+    // models given, with no "derived" list: each as given and nothing derived (docs/scene-format.md).
     void applyTo(Material& m) const {
         applyValues(m);
         m.derived = uint8_t(m.derived | derived);
-        deriveFields(m, uint8_t(linkedFields() & ~derived));
+        const uint8_t given = uint8_t(linkedFields() & ~derived);
+        if ((given & kPhongFields) && (given & kPbrFields) && !derived) {
+            m.derived = uint8_t(m.derived & ~given);
+            return;
+        }
+        deriveFields(m, given);
     }
     // The linked fields given (MaterialField bits).
     uint8_t linkedFields() const {

@@ -109,3 +109,38 @@ TEST(MaterialDerivation, AnUnknownDerivedFieldIsRefusedWithItsPlace) {
         EXPECT_NE(std::string(e.what()).find("objects[0].material.derived[0]"), std::string::npos) << e.what();
     }
 }
+
+TEST(MaterialDerivation, AMaterialEditedUnderBothModelsSavesAndLoadsExactly) {
+    Scene scene = sphereWith(R"({"md": [0.8, 0.2, 0.1], "s": 20})");
+    Material& m = scene.spheres[0].material;
+    const Material before = m;
+    m.metallic = 0.7f;  // a pbr field given beside the Phong ones: baseColor and roughness stay derived
+    deriveFields(m, editedFields(before, m));
+    const Scene back = parseSceneJson(sceneToJson(scene), "both.json");
+    const Material& r = back.spheres[0].material;
+    EXPECT_EQ(r.baseColor, m.baseColor);
+    EXPECT_EQ(r.roughness, m.roughness);
+    EXPECT_EQ(r.metallic, 0.7f);
+    EXPECT_EQ(r.md, m.md);
+    EXPECT_EQ(r.s, m.s);
+}
+
+TEST(MaterialDerivation, AMeshOverrideOfBothModelsKeepsTheImportedRest) {
+    Material imported;
+    imported.baseColor = glm::vec3(0.2f, 0.4f, 0.6f);
+    imported.s = 77.0f;
+    imported.derived = kPhongFields | kPbrFields;  // as glTF import marks its materials
+    MaterialOverride o;
+    o.md = glm::vec3(1.0f, 0.0f, 0.0f);
+    o.roughness = 0.2f;
+    Material m = imported;
+    o.applyTo(m);
+    EXPECT_EQ(m.baseColor, imported.baseColor);  // not derived from md: both models' fields were given
+    EXPECT_EQ(m.s, 77.0f);
+    // Control: an override of one model's fields does derive the other's.
+    MaterialOverride phongOnly;
+    phongOnly.md = glm::vec3(1.0f, 0.0f, 0.0f);
+    Material p = imported;
+    phongOnly.applyTo(p);
+    EXPECT_EQ(p.baseColor, glm::vec3(1.0f, 0.0f, 0.0f));
+}

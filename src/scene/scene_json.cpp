@@ -356,8 +356,11 @@ OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exa
 // listed under "derived", as Python's documents hold them.
 OJson materialJson(const Material& m, bool withDerived) {
     OJson j = OJson::object();
+    // A material that gives fields of both models reads back with nothing derived: then every value is written,
+    // so that it reads back exactly.
+    const bool both = (~m.derived & kPhongFields) && (~m.derived & kPbrFields);
     const auto put = [&](MaterialField field, OJson value) {
-        if (withDerived || !(m.derived & field)) j[nameOf(kMaterialFieldNames, field)] = std::move(value);
+        if (withDerived || both || !(m.derived & field)) j[nameOf(kMaterialFieldNames, field)] = std::move(value);
     };
     put(kFieldMa, vec(m.ma));
     put(kFieldMd, vec(m.md));

@@ -59,6 +59,7 @@ public:
         // Deliberately not glTF's "Default Material" (a rough white metal, md = 0): a model with no
         // materials should show the lecture's diffuse and specular terms, so it gets shadelab's default.
         defaultMaterial_ = Material{};
+        defaultMaterial_.derived = kPhongFields | kPbrFields;  // as an imported material's: an override derives
         // Every material map is decoded and rendered (gltf_textures.cpp).
         for (size_t i = 0; i < model.materials.size(); ++i) {
             const tinygltf::Material& gm = model.materials[i];
