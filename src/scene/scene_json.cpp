@@ -2,12 +2,13 @@
 // path in errors; saving writes every field, so a saved file documents itself and loads back exactly.
 // Mesh geometry is not touched here: loadScene() (scene_load.h) imports it.
 //
-// Sections: 1. loading materials, camera, lights   2. loading objects
-//           3. the material and light readers scripts share; parseSceneJson
+// Sections: 1. loading camera, lights (materials: material_json.cpp)   2. loading objects
+//           3. the light reader scripts share; parseSceneJson
 //           4. saving (exact floats, layout)      5. sceneToJson, saveSceneJson
 #include "scene/scene_json.h"
 
 #include "scene/json_reader.h"
+#include "scene/material_json.h"
 #include "scene/raster_override.h"
 #include "scene/scene_limits.h"
 #include "util/atomic_file.h"
@@ -30,52 +31,7 @@ namespace {
 constexpr int kFormatVersion = 1;
 constexpr int kMaxDepthLimit = 64;
 
-using NamedMaterials = std::map<std::string, MaterialOverride>;
-
-// ---- 1. Loading materials, camera, lights --------------------------------------------------------------
-
-MaterialOverride parseMaterialFields(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
-                                       "emission", "model", "derived"});
-    MaterialOverride o = parseMaterialOverride(n);
-    // "derived": the fields listed were derived from the other model's when the document was written (Python's
-    // documents list them): read, but not given, so that they follow the given fields again.
-    if (auto f = n.find("derived"))
-        for (size_t i = 0; i < f->arraySize(); ++i)
-            o.derived = uint8_t(o.derived | (*f)[i].oneOf(kMaterialFieldNames, "material field"));
-    return o;
-}
-
-// An object's "material": inline fields, or a string naming an entry of the top-level "materials".
-MaterialOverride parseMaterialRef(const JsonNode& n, const NamedMaterials& named) {
-    if (!n.json().is_string()) return parseMaterialFields(n);
-    std::string name = n.string();
-    auto it = named.find(name);
-    if (it != named.end()) return it->second;
-    // The first few names only: a file may define thousands (the message stays one short line).
-    constexpr size_t kListed = 8;
-    std::string known;
-    size_t listed = 0;
-    for (const auto& entry : named)
-        if (listed++ < kListed) known += (known.empty() ? "" : ", ") + entry.first;
-    if (named.size() > kListed) known += " and " + std::to_string(named.size() - kListed) + " more";
-    n.fail("unknown material '" + name + "'; " +
-           (known.empty() ? std::string("the file has no \"materials\"") : "named materials are: " + known));
-}
-
-Material parseMaterial(const JsonNode& object, const NamedMaterials& named) {
-    Material m;
-    if (auto f = object.find("material")) {
-        const MaterialOverride o = parseMaterialRef(*f, named);
-        // A material that gives one model's fields only has the other's derived from them (docs/scene-format.md,
-        // "Materials under each model"); one that gives some of both has each as given.
-        const uint8_t given = uint8_t(o.linkedFields() & ~o.derived);
-        if ((given & kPhongFields) && !(given & kPbrFields)) m.derived = kPbrFields;
-        if ((given & kPbrFields) && !(given & kPhongFields)) m.derived = kPhongFields;
-        o.applyTo(m);
-    }
-    return m;
-}
+// ---- 1. Loading the camera and lights (materials: material_json.cpp) ---------------------------------
 
 Camera parseCamera(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"position", "target", "up", "fovY"});
@@ -207,25 +163,7 @@ void parseObject(const JsonNode& n, const NamedMaterials& named, Scene& scene) {
 
 }  // namespace
 
-// ---- 3. The material and light readers scripts share; parseSceneJson ---------------------------------
-
-MaterialOverride parseMaterialOverride(const JsonNode& n) {
-    n.requireObject();
-    MaterialOverride m;
-    if (auto f = n.find("ma")) m.ma = f->rgb();
-    if (auto f = n.find("md")) m.md = f->rgb();
-    if (auto f = n.find("ms")) m.ms = f->rgb();
-    if (auto f = n.find("s")) m.s = f->inRange(0.0f, kMaxShininess, false, false);
-    if (auto f = n.find("kr")) m.kr = f->rgb();
-    if (auto f = n.find("kt")) m.kt = f->rgb();
-    if (auto f = n.find("ior")) m.ior = f->positive();
-    if (auto f = n.find("baseColor")) m.baseColor = f->unitRgb();
-    if (auto f = n.find("metallic")) m.metallic = f->inRange(0.0f, 1.0f, false, false);
-    if (auto f = n.find("roughness")) m.roughness = f->inRange(0.0f, 1.0f, false, false);
-    if (auto f = n.find("emission")) m.emission = f->rgbUpTo(kMaxRadiance);
-    if (auto f = n.find("model")) m.model = f->oneOf(kShadingModelNames, "shading model");
-    return m;
-}
+// ---- 3. The light reader scripts share; parseSceneJson --------------------------------------------------
 
 LightOverride parseLightOverride(const JsonNode& n) {
     n.requireObject();

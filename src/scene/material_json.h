@@ -1,0 +1,23 @@
+// Reading a scene file's materials (docs/scene-format.md, "Materials"): an object's inline fields or the name of
+// one of the file's "materials", the "derived" list, and the rule by which one model's fields derive the other's.
+// parseMaterialOverride (the fields alone, which scripts share) is declared in scene_json.h.
+#pragma once
+
+#include "scene/json_reader.h"
+#include "scene/material.h"
+
+#include <map>
+#include <string>
+
+namespace shadelab {
+
+using NamedMaterials = std::map<std::string, MaterialOverride>;
+
+// A material object of the file: its fields (unknown keys warned about) and its "derived" list.
+MaterialOverride parseMaterialFields(const JsonNode& n);
+// An object's "material": inline fields, or a string naming an entry of the top-level "materials".
+MaterialOverride parseMaterialRef(const JsonNode& n, const NamedMaterials& named);
+// The material of `object` (its "material", when it has one), with what its given fields derive.
+Material parseMaterial(const JsonNode& object, const NamedMaterials& named);
+
+}  // namespace shadelab
