@@ -5,6 +5,7 @@
 const int SL_MODEL_PHONG = 0;
 const int SL_MODEL_BLINN_PHONG = 1;
 const int SL_MODEL_PBR = 2;  // glTF 2.0 metallic-roughness (design.md §7): md = diffuse colour, ms = F0, s = roughness
+const int SL_MODEL_DISNEY = 3;  // Burley 2012's principled BRDF: pbr's fields plus eight more (shadeLightDisney)
 
 const float SL_PI = 3.14159265358979f;
 const float SL_MIN_ALPHA = 0.002025f;  // Filament's MIN_ROUGHNESS: α = 0.045², keeps D_GGX finite in fp32
@@ -72,6 +73,12 @@ SL_FN vec3 F_Schlick(vec3 f0, float VoH) {
     return f0 + (vec3(1.0f) - f0) * x5;
 }
 
+// The microfacet models (pbr, disney): md is the diffuse colour, ms F0 and s the roughness, the environment
+// replaces the constant ambient, and the unlit colour is the base colour.
+SL_FN bool physicallyBased(int model) {
+    return model == SL_MODEL_PBR || model == SL_MODEL_DISNEY;
+}
+
 // Lambert 1760: the diffuse BRDF 1/π. Under the π-scaled light of design.md §7 it contributes exactly md·N·L.
 SL_FN float Fd_Lambert() {
     return 1.0f / SL_PI;
@@ -117,6 +124,126 @@ SL_FN vec3 energyCompensation(vec3 f0, vec2 dfg) {
     return vec3(1.0f) + f0 * (1.0f / max(dfg.x + dfg.y, 1e-4f) - 1.0f);
 }
 
+// Burley 2012, "Physically Based Shading at Disney", and its published disney.brdf: the principled BRDF.
+// Schlick's weight (1 − u)⁵, u clamped to [0, 1], the fifth power multiplied out.
+SL_FN float schlickWeight(float u) {
+    float m = clamp(1.0f - u, 0.0f, 1.0f);
+    float m2 = m * m;
+    return m2 * m2 * m;
+}
+
+// Burley 2012, eq. 4 with γ = 1 (Berry 1923): GTR1, the clearcoat's long-tailed distribution, normalised so that
+// ∫ D·cos θh dω = 1: D = (α² − 1) / (π ln(α²) (1 + (α² − 1) cos² θh)); α >= 1 is the uniform 1/π.
+SL_FN float D_GTR1(float NoH, float a) {
+    if (a >= 1.0f) return 1.0f / SL_PI;
+    float a2 = a * a;
+    float t = 1.0f + (a2 - 1.0f) * NoH * NoH;
+    return (a2 - 1.0f) / (SL_PI * log(a2) * t);
+}
+
+// Burley 2012, eq. 13: anisotropic GTR2 (GGX) with widths ax along the tangent X and ay along Y = N × X,
+// D = 1 / (π ax ay ((H·X/ax)² + (H·Y/ay)² + (N·H)²)²), normalised as D_GTR1.
+SL_FN float D_GTR2Aniso(float NoH, float HoX, float HoY, float ax, float ay) {
+    float x = HoX / ax;
+    float y = HoY / ay;
+    float d = x * x + y * y + NoH * NoH;
+    return 1.0f / (SL_PI * ax * ay * d * d);
+}
+
+// disney.brdf's separable Smith masking for GGX of width a, folded with the microfacet denominator:
+// G1(v) / (2 N·V) = 1 / (N·V + sqrt(a² + N·V² − a²·N·V²)); the product over L and V is G / (4 N·L N·V).
+SL_FN float smithGGXSeparable(float NoV, float a) {
+    float a2 = a * a;
+    float b = NoV * NoV;
+    return 1.0f / (NoV + sqrt(a2 + b - a2 * b));
+}
+
+// The same with anisotropic widths (Heitz 2014, eq. 86): 1 / (N·V + sqrt((V·X ax)² + (V·Y ay)² + N·V²)).
+SL_FN float smithGGXAniso(float NoV, float VoX, float VoY, float ax, float ay) {
+    float x = VoX * ax;
+    float y = VoY * ay;
+    return 1.0f / (NoV + sqrt(x * x + y * y + NoV * NoV));
+}
+
+// The base colour's hue at unit luminance (disney.brdf's Ctint, luminance 0.3 R + 0.6 G + 0.1 B); white for black.
+SL_FN vec3 disneyTint(vec3 baseColor) {
+    float lum = 0.3f * baseColor.x + 0.6f * baseColor.y + 0.1f * baseColor.z;
+    return lum > 0.0f ? baseColor / lum : vec3(1.0f);
+}
+
+// The specular colour at normal incidence: 0.08·specular (tinted by specularTint) for a dielectric, the base
+// colour for a metal (disney.brdf's Cspec0). specular = 0.5, untinted, is pbr's 0.04.
+SL_FN vec3 disneySpecularF0(vec3 baseColor, float metallic, float specular, float specularTint) {
+    return mix(specular * 0.08f * mix(vec3(1.0f), disneyTint(baseColor), specularTint), baseColor, metallic);
+}
+
+// The width of the anisotropic lobe along X and Y (disney.brdf): aspect √(1 − 0.9·anisotropic), α = roughness²,
+// each at least 0.001.
+SL_FN vec2 disneyAnisoAlpha(float roughness, float anisotropic) {
+    float aspect = sqrt(1.0f - 0.9f * anisotropic);
+    float a = roughness * roughness;
+    return vec2(max(0.001f, a / aspect), max(0.001f, a * aspect));
+}
+
+// The clearcoat's GTR1 width: clearcoatGloss 0 a satin 0.1, 1 a gloss 0.001.
+SL_FN float disneyClearcoatAlpha(float clearcoatGloss) {
+    return mix(0.1f, 0.001f, clearcoatGloss);
+}
+
+// The tangent X along which an anisotropic lobe stretches, from N alone so that every renderer agrees: the way
+// around the world's vertical axis (a sphere's parallels, brushed as on a lathe), around x where N is vertical.
+SL_FN vec3 anisotropyTangent(vec3 N) {
+    vec3 axis = abs(N.y) < 0.999f ? vec3(0.0f, 1.0f, 0.0f) : vec3(1.0f, 0.0f, 0.0f);
+    return normalize(cross(axis, N));
+}
+
+// The principled BRDF f(L, V) times π·N·L·Il (design.md §7's π-scaled light), as disney.brdf's BRDF(): the
+// diffuse with its retro-reflection mixed toward the subsurface approximation, and the sheen, both scaled by
+// (1 − metallic); the anisotropic GGX specular lobe (times specScale, as pbr's); and the clearcoat's GTR1 lobe
+// (fixed F0 = 0.04, Smith width 0.25). d0 = (subsurface, specular, specularTint, anisotropic), d1 = (sheen,
+// sheenTint, clearcoat, clearcoatGloss). diffuseOn: diffuse, subsurface and sheen; specularOn: specular and
+// clearcoat. Unlike disney.brdf, N·V is clamped to 1e-4 (as specularGGX), so interpolated normals facing
+// slightly away keep their diffuse light. N, L, V need not be unit.
+SL_FN vec3 shadeLightDisney(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 baseColor, float metallic, float roughness, vec4 d0,
+                            vec4 d1, bool diffuseOn, bool specularOn, vec3 specScale) {
+    N = normalize(N);
+    L = normalize(L);
+    V = normalize(V);
+    float NoL = dot(N, L);
+    if (NoL <= 0.0f) return vec3(0.0f);
+    float NoV = max(dot(N, V), 1e-4f);
+    vec3 H = normalize(L + V);
+    float NoH = dot(N, H);
+    float LoH = dot(L, H);
+    float FL = schlickWeight(NoL);
+    float FV = schlickWeight(NoV);
+    float FH = schlickWeight(LoH);
+    vec3 tint = disneyTint(baseColor);
+    vec3 f = vec3(0.0f);
+    if (diffuseOn) {
+        float Fd90 = 0.5f + 2.0f * LoH * LoH * roughness;
+        float Fd = mix(1.0f, Fd90, FL) * mix(1.0f, Fd90, FV);
+        float Fss90 = LoH * LoH * roughness;
+        float Fss = mix(1.0f, Fss90, FL) * mix(1.0f, Fss90, FV);
+        float ss = 1.25f * (Fss * (1.0f / (NoL + NoV) - 0.5f) + 0.5f);
+        vec3 sheen = FH * d1.x * mix(vec3(1.0f), tint, d1.y);
+        f = ((1.0f / SL_PI) * mix(Fd, ss, d0.x) * baseColor + sheen) * (1.0f - metallic);
+    }
+    if (specularOn) {
+        vec3 X = anisotropyTangent(N);
+        vec3 Y = cross(N, X);
+        vec2 a = disneyAnisoAlpha(roughness, d0.w);
+        float Ds = D_GTR2Aniso(NoH, dot(H, X), dot(H, Y), a.x, a.y);
+        float Gs = smithGGXAniso(NoL, dot(L, X), dot(L, Y), a.x, a.y) * smithGGXAniso(NoV, dot(V, X), dot(V, Y), a.x, a.y);
+        vec3 Fs = mix(disneySpecularF0(baseColor, metallic, d0.y, d0.z), vec3(1.0f), FH);
+        float Dr = D_GTR1(NoH, disneyClearcoatAlpha(d1.w));
+        float Gr = smithGGXSeparable(NoL, 0.25f) * smithGGXSeparable(NoV, 0.25f);
+        float Fr = mix(0.04f, 1.0f, FH);
+        f = f + (Gs * Ds) * Fs * specScale + vec3(0.25f * d1.z * Gr * Fr * Dr);
+    }
+    return Il * (SL_PI * NoL) * f;
+}
+
 // One light's contribution Il ⊙ (md·max(N·L,0) + ms·spec), before visibility. N, L, V need not be unit:
 // both renderers hand in raw vectors and this normalises them, so the order of operations is shared.
 // SL_MODEL_PBR reads md as the diffuse colour, ms as F0 and s as roughness (pbrDiffuseColor, pbrF0) and
@@ -143,6 +270,15 @@ SL_FN vec3 shadeLightScaled(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, f
         }
     }
     return Il * I;
+}
+
+// One light's contribution under any model: shadeLightDisney for disney (its base colour, metallic, s as the
+// roughness, d0 and d1), shadeLightScaled for the others (which ignore the last four).
+SL_FN vec3 shadeLightModel(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s, int model, bool diffuseOn,
+                           bool specularOn, vec3 specScale, vec3 baseColor, float metallic, vec4 d0, vec4 d1) {
+    if (model == SL_MODEL_DISNEY)
+        return shadeLightDisney(N, L, V, Il, baseColor, metallic, s, d0, d1, diffuseOn, specularOn, specScale);
+    return shadeLightScaled(N, L, V, Il, md, ms, s, model, diffuseOn, specularOn, specScale);
 }
 
 // shadeLightScaled without energy compensation (the default, and the lecture's models).
@@ -176,7 +312,7 @@ SL_FN bool noIllumination(bool ambientOn, bool diffuseOn, bool specularOn) {
 // That unlit colour: md under Phong and Blinn-Phong, the base colour under pbr (so a metal keeps its colour,
 // though it has no diffuse one); each as the surface has it at the point (textured, a checker's tile).
 SL_FN vec3 unlitColour(vec3 md, vec3 baseColor, int model) {
-    return model == SL_MODEL_PBR ? baseColor : md;
+    return physicallyBased(model) ? baseColor : md;
 }
 
 // Ambient term Ia ⊙ ma.

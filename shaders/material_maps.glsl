@@ -20,16 +20,16 @@ SL_FN float mapRoughness(float roughness, vec4 texel) {
 
 // The texel's coefficients, re-derived by glTF 2.0 Appendix B as gltf_materials.cpp maps a material: the
 // diffuse colour baseColor·(1 − metallic) (md, and ma under every model), F0 = mix(0.04, baseColor, metallic)
-// (pbr's F0, Phong's ms, normalised when asked) and the exponent (pbr: roughness; Phong: mapShininess).
+// (pbr's F0, Phong's ms, normalised when asked) and the exponent (pbr, disney: roughness; Phong: mapShininess).
 SL_FN vec3 mapDiffuse(vec3 baseColor, float metallic) {
     return pbrDiffuseColor(baseColor, metallic);
 }
 SL_FN float mapExponent(int model, float roughness) {
-    return model == SL_MODEL_PBR ? roughness : mapShininess(roughness);
+    return physicallyBased(model) ? roughness : mapShininess(roughness);
 }
 SL_FN vec3 mapSpecular(int model, bool normalized, vec3 baseColor, float metallic, float exponent) {
     vec3 f0 = pbrF0(baseColor, metallic);
-    if (model == SL_MODEL_PBR || !normalized) return f0;
+    if (physicallyBased(model) || !normalized) return f0;
     return f0 * (model == SL_MODEL_PHONG ? phongNormalization(exponent) : blinnPhongNormalization(exponent));
 }
 

@@ -95,6 +95,7 @@ void main() {
         s_s = mapExponent(SL_MODEL, mapRoughness(u_mapFactors.y, mr));
         vec3 base = u_baseColor * s_tex;
         md = mapDiffuse(base, metallic);
+        s_metallic = metallic;
         s_ma = md;
         s_ms = mapSpecular(SL_MODEL, u_mapFactors.z != 0.0f, base, metallic, s_s);
         s_mapped = true;

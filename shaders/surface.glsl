@@ -24,6 +24,18 @@ vec3 surfaceMs() { return s_mapped ? s_ms : u_ms + u_msTex * (s_tex - 1.0f); }
 vec3 surfaceMa() { return s_mapped ? s_ma : u_ma * s_tex; }
 float surfaceS() { return s_mapped ? s_s : u_s; }
 uniform vec3 u_baseColor;  // the pbr base colour factor (mesh.frag's maps re-derive coefficients from it; unlitColour)
+// disney (shadeLightDisney): the metallic factor, or a metallic-roughness texel's (s_metallic, mesh.frag), and
+// the packed parameters (scene/disney_params.h, lobes0 and lobes1).
+uniform float u_metallic;
+uniform vec4 u_disney0;
+uniform vec4 u_disney1;
+float s_metallic = 0.0f;
+float surfaceMetallic() { return s_mapped ? s_metallic : u_metallic; }
+// The F0 of the environment's light and of the energy compensation: under disney its own from the base colour
+// `base` here (disneySpecularF0), else surfaceMs().
+vec3 surfaceF0(vec3 base) {
+    return SL_MODEL == SL_MODEL_DISNEY ? disneySpecularF0(base, surfaceMetallic(), u_disney0.y, u_disney0.z) : surfaceMs();
+}
 uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
 // The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
 vec3 s_emissive = vec3(1.0f);
@@ -44,9 +56,9 @@ vec2 dfgTexel(int x, int y) { return texelFetch(t_iblDfg, ivec2(x, y), 0).rg; }
 
 #if SL_IBL
 // The environment's light on a pbr surface (src/trace/integrator.cpp, WhittedIntegrator::local, with the
-// prefiltered lookup): diffuse·irradiance + prefiltered(R, roughness)·E, u_md the diffuse colour, u_ms F0 and
-// u_s the roughness.
-vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
+// prefiltered lookup): diffuse·irradiance + prefiltered(R, roughness)·E, md the diffuse colour, f0 the F0 and
+// u_s the roughness. disney takes it as pbr does (docs/lighting.md).
+vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec2 dfg) {
 #if SL_IBL == 2
     vec3 R = iblReflect(N, V);
     vec3 sh[9];
@@ -57,7 +69,7 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
     vec3 irradiance = u_iblRadiance.xyz;
     vec3 prefiltered = u_iblRadiance.xyz;
 #endif
-    return shadeEnvironment(md, surfaceMs(), irradiance, prefiltered, dfg, SL_ENERGY_COMPENSATION != 0, SL_DIFFUSE, SL_SPECULAR);
+    return shadeEnvironment(md, f0, irradiance, prefiltered, dfg, SL_ENERGY_COMPENSATION != 0, SL_DIFFUSE, SL_SPECULAR);
 }
 #endif
 
@@ -65,12 +77,13 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec2 dfg) {
 // or spot light), isAttenuated (attenuation, range or cone), kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
 // specialised lights, so their branches fold away.
 vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, int layer, vec3 P, vec3 N, vec3 V,
-               vec3 md, vec3 specScale) {
+               vec3 md, vec3 base, vec3 specScale) {
     vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
     // Attenuation (1, 0, 0), no range and no cone multiply by exactly 1: skipped, bit for bit the same.
     vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i])
                            : u_lightColor[i].xyz;
-    vec3 c = shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
+    vec3 c = shadeLightModel(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale,
+                             base, surfaceMetallic(), u_disney0, u_disney1);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
     c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
@@ -88,7 +101,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
     vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(N, V), surfaceS());
 #endif
 #if SL_ENERGY_COMPENSATION
-    vec3 specScale = energyCompensation(surfaceMs(), dfg);
+    vec3 specScale = energyCompensation(surfaceF0(base), dfg);
 #else
     vec3 specScale = vec3(1.0f);
 #endif
@@ -98,7 +111,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
     vec3 I = shadeAmbient(u_ambient.xyz, surfaceMa() * s_ao, SL_AMBIENT);
 #endif
     // One call per specialised light with literal arguments (the variant's X-macro, unrolled).
-#define SL_LIGHT_TERM(i, isPoint, isAttenuated, kind, mask, layer) I += lightTerm(i, isPoint, isAttenuated, kind, mask, layer, P, N, V, md, specScale);
+#define SL_LIGHT_TERM(i, isPoint, isAttenuated, kind, mask, layer) I += lightTerm(i, isPoint, isAttenuated, kind, mask, layer, P, N, V, md, base, specScale);
     SL_FOR_EACH_LIGHT(SL_LIGHT_TERM)
 #undef SL_LIGHT_TERM
 #if SL_MORE_LIGHTS
@@ -107,11 +120,12 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i]);
-        I += shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
+        I += shadeLightModel(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale,
+                             base, surfaceMetallic(), u_disney0, u_disney1);
     }
 #endif
 #if SL_IBL
-    I += environmentLight(N, V, md, dfg) * s_ao;
+    I += environmentLight(N, V, md, surfaceF0(base), dfg) * s_ao;
 #endif
     return I + u_emission * s_emissive;
 }

@@ -40,9 +40,10 @@ std::string modelCaption(const Scene& scene) {
         case ShadingModel::Phong: words = scene.normalized ? "normalised Phong" : "Phong"; break;
         case ShadingModel::BlinnPhong: words = scene.normalized ? "normalised Blinn-Phong" : "Blinn-Phong"; break;
         case ShadingModel::Pbr: words = "PBR (GGX)"; break;
+        case ShadingModel::Disney: words = "Disney principled"; break;
     }
     // Objects whose material names another model are shaded with it: say so, or the caption misleads.
-    for (ShadingModel other : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr})
+    for (ShadingModel other : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr, ShadingModel::Disney})
         if (other != scene.model && usesModel(scene, other)) return words + " and the objects' own models";
     return words;
 }

@@ -51,13 +51,15 @@ void drawEnvironmentControls(ViewerState& s) {
 void drawLightingSection(PanelContext& ctx) {
     ViewerState& s = ctx.state;
     int model = modelIndex(s.scene.model);
-    const char* names[] = {"Phong  (R·V)^s", "Blinn-Phong  (N·H)^s", "pbr  GGX metallic-roughness"};
-    const ShadingModel models[] = {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr};
-    for (int i = 0; i < 3; ++i) {
+    const char* names[] = {"Phong  (R·V)^s", "Blinn-Phong  (N·H)^s", "pbr  GGX metallic-roughness",
+                           "disney  principled"};
+    const ShadingModel models[] = {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr,
+                                   ShadingModel::Disney};
+    for (int i = 0; i < 4; ++i) {
         if (i > 0) sameLineIfFits(radioWidth(names[i]));
         if (ImGui::RadioButton(names[i], &model, i)) setModel(s, models[i]);
     }
-    if (s.scene.model != ShadingModel::Pbr) {
+    if (!isPhysicallyBased(s.scene.model)) {
         bool normalized = s.scene.normalized;
         if (ImGui::Checkbox("normalized lobe  (s+2)/2, (s+8)/8", &normalized)) setNormalized(s, normalized);
     } else {
@@ -97,8 +99,9 @@ void drawLightingSection(PanelContext& ctx) {
             "reflects exactly the light it receives vanishes; energy lost or gained shows as dark or bright rings.");
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped(
-            s.scene.model == ShadingModel::Pbr
-                ? "pbr: lit by the uniform environment (image-based lighting). GGX without energy compensation "
+            isPhysicallyBased(s.scene.model)
+                ? "pbr and disney: lit by the uniform environment (image-based lighting). GGX without energy "
+                  "compensation "
                   "misses its multiple scattering: a white metal shows dark rims that grow with roughness. Tick "
                   "'energy compensation' below and they vanish."
                 : "Phong and Blinn-Phong are lit by the ambient term only, a constant that knows nothing of the "

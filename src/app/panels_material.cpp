@@ -53,7 +53,8 @@ bool modelCombo(ShadingModel sceneModel, Material& m) {
             changed = m.model.has_value();
             m.model.reset();
         }
-        for (ShadingModel model : {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr})
+        for (ShadingModel model :
+             {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr, ShadingModel::Disney})
             if (ImGui::Selectable(toString(model), m.model == model)) {
                 changed = m.model != model;
                 m.model = model;
@@ -104,6 +105,13 @@ void drawMaterialSection(PanelContext& ctx) {
     changed |= ImGui::ColorEdit3("baseColor", glm::value_ptr(m.baseColor), ImGuiColorEditFlags_Float);
     changed |= ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f, "%.2f");
     changed |= ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f, "%.3f");
+    // The principled BRDF's own eight, shown where they shade something (its baseColor, metallic and roughness
+    // are the pbr fields above).
+    if (modelOf(m, s.scene.model) == ShadingModel::Disney) {
+        ImGui::TextDisabled("disney: Burley 2012's principled BRDF");
+        for (const DisneyField& field : kDisneyFields)
+            changed |= ImGui::SliderFloat(field.name, &(m.disney.*field.member), 0.0f, 1.0f, "%.2f");
+    }
     if (changed) {
         m.s = objectMaterial(s.scene, s.selected).s;  // the slider above already applied its own change
         setObjectMaterial(s, s.selected, m);
@@ -116,8 +124,8 @@ void drawMaterialSection(PanelContext& ctx) {
     const float phongS = s.scene.model == ShadingModel::BlinnPhong ? equivalentPhongExponent(s2) : s2;
     drawLobePlots(ctx, objectMaterial(s.scene, s.selected), phongS);
 
-    // The equivalent exponents belong to the lecture's models; pbr reads roughness, not s.
-    if (s.scene.model == ShadingModel::Pbr) return;
+    // The equivalent exponents belong to the lecture's models; pbr and disney read roughness, not s.
+    if (isPhysicallyBased(s.scene.model)) return;
     ImGui::TextDisabled("Equivalent exponent: keep the highlight's size");
     if (s.scene.model == ShadingModel::Phong) {
         const std::string label =

@@ -25,7 +25,8 @@ void rowLabel(const char* label) {
     ImGui::TextUnformatted(label);
 }
 
-void lightTable(const ProbeResult& p, bool shadows, bool pbr) {
+void lightTable(const ProbeResult& p, bool shadows, ShadingModel shown) {
+    const bool disney = shown == ShadingModel::Disney, pbr = isPhysicallyBased(shown);
     const int columns = 1 + int(p.lights.size());
     if (!ImGui::BeginTable("lights", columns, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
     ImGui::TableSetupColumn("");
@@ -66,12 +67,12 @@ void lightTable(const ProbeResult& p, bool shadows, bool pbr) {
     scalarRow("N·L", &ProbeLight::NoL);
     if (!pbr) scalarRow("R·V", &ProbeLight::RoV);
     scalarRow("N·H", &ProbeLight::NoH);
-    if (pbr) {
+    if (shown == ShadingModel::Pbr) {
         // glTF 2.0 Appendix B: f_spec = D · V · F, with V = G2 / (4 N·L N·V) (lighting.glsl).
         scalarRow("D  GGX", &ProbeLight::D, true);
         scalarRow("V  Smith", &ProbeLight::Vis, true);
         rgbRow("F  Schlick", &ProbeLight::F);
-    } else {
+    } else if (!disney) {
         scalarRow("(R·V)^s", &ProbeLight::specPhong);
         scalarRow("(N·H)^s", &ProbeLight::specBlinn);
     }
@@ -84,7 +85,13 @@ void lightTable(const ProbeResult& p, bool shadows, bool pbr) {
             ImGui::TextUnformatted(l.NoL <= 0.0f ? "faces away" : l.visibility > 0.0f ? "yes" : "no: in shadow");
         }
     }
-    if (pbr) {
+    if (disney) {
+        // Burley 2012: each lobe's part of this light's term (they sum to it).
+        rgbRow("diffuse+subsurf", &ProbeLight::diffuseDisney);
+        rgbRow("sheen", &ProbeLight::sheenDisney);
+        rgbRow("spec GTR2 aniso", &ProbeLight::specularDisney);
+        rgbRow("clearcoat GTR1", &ProbeLight::clearcoatDisney);
+    } else if (pbr) {
         rgbRow("diffuse (1-F)", &ProbeLight::diffusePbr);
         rgbRow("spec pi·DVF·N·L", &ProbeLight::specularPbr);
     } else {
@@ -101,14 +108,19 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
         ShadingModel model;
         glm::vec3 diffuse{0.0f}, specular{0.0f}, total{0.0f};
     };
-    Column cols[] = {
-        {"Phong", ShadingModel::Phong}, {"Blinn-Phong", ShadingModel::BlinnPhong}, {"pbr", ShadingModel::Pbr}};
+    Column cols[] = {{"Phong", ShadingModel::Phong},
+                     {"Blinn-Phong", ShadingModel::BlinnPhong},
+                     {"pbr", ShadingModel::Pbr},
+                     {"disney", ShadingModel::Disney}};
     for (const ProbeLight& l : p.lights) {
         cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse, cols[2].diffuse += l.diffusePbr;
         cols[0].specular += l.specularPhong, cols[1].specular += l.specularBlinn, cols[2].specular += l.specularPbr;
+        cols[3].diffuse += l.diffuseDisney + l.sheenDisney;
+        cols[3].specular += l.specularDisney + l.clearcoatDisney;
     }
     cols[0].total = p.totalPhong, cols[1].total = p.totalBlinn, cols[2].total = p.totalPbr;
-    if (!ImGui::BeginTable("totals", 4, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
+    cols[3].total = p.totalDisney;
+    if (!ImGui::BeginTable("totals", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) return;
     ImGui::TableSetupColumn("");
     for (const Column& c : cols) {
         const std::string name = std::string(c.name) + (c.model == current ? " (shown)" : "");
@@ -117,14 +129,14 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
     ImGui::TableHeadersRow();
     auto row = [&](const char* label, glm::vec3 Column::*field) {
         rowLabel(label);
-        for (int c = 0; c < 3; ++c) {
+        for (int c = 0; c < 4; ++c) {
             ImGui::TableSetColumnIndex(c + 1);
             if (cols[c].model == current) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(60, 80, 120, 160));
             rgbCell(cols[c].*field);
         }
     };
     rowLabel("Ia ma");
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < 4; ++c) {
         ImGui::TableSetColumnIndex(c + 1);
         if (cols[c].model == current) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(60, 80, 120, 160));
         rgbCell(p.ambient);
@@ -133,7 +145,7 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
     row("sum specular", &Column::specular);
     row(p.unlit ? "I (unlit colour)" : "I (switches)", &Column::total);
     rowLabel("8-bit");
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < 4; ++c) {
         const glm::vec3 v = cols[c].total;
         ImGui::TableSetColumnIndex(c + 1);
         if (cols[c].model == current) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(60, 80, 120, 160));
@@ -233,7 +245,7 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         ImGui::Text("V %+.3f %+.3f %+.3f", p.V.x, p.V.y, p.V.z);
         // The model this point is shaded with: its material's own, else the scene's.
         const ShadingModel shown = modelOf(p.material, ctx.state.scene.model);
-        const bool pbr = shown == ShadingModel::Pbr;
+        const bool pbr = isPhysicallyBased(shown);
         if (pbr)
             ImGui::Text("roughness %.3f  metallic %.2f   c_diff %.2f %.2f %.2f   F0 %.2f %.2f %.2f",
                         p.material.roughness, p.material.metallic, p.pbrDiffuseColor.r, p.pbrDiffuseColor.g,
@@ -249,7 +261,8 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         if (compact) {
             // The key row always; the per-light and per-model tables a click away.
             const ShadingModel m = shown;
-            const glm::vec3 total = m == ShadingModel::Pbr          ? p.totalPbr
+            const glm::vec3 total = m == ShadingModel::Disney       ? p.totalDisney
+                                    : m == ShadingModel::Pbr        ? p.totalPbr
                                     : m == ShadingModel::BlinnPhong ? p.totalBlinn
                                                                     : p.totalPhong;
             ImGui::Text("N\xc2\xb7L %+.3f   total %.3f %.3f %.3f", p.lights.empty() ? 0.0f : p.lights[0].NoL, total.r,
@@ -264,7 +277,7 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
                 ImGui::TreePop();
             }
         };
-        if (!p.lights.empty()) folded("lights", "each light", [&] { lightTable(p, shadows, pbr); });
+        if (!p.lights.empty()) folded("lights", "each light", [&] { lightTable(p, shadows, shown); });
         folded("totals", "terms, every model", [&] { totalsTable(p, shown, ctx.state.encoding); });
         ctx.fields.equationOpen = ImGui::TreeNodeEx("equation", 0, "rendering equation at this point");
         if (ctx.fields.equationOpen) {

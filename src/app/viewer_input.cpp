@@ -180,7 +180,7 @@ void Viewer::handleKeys() {
                          state_.scene.model == ShadingModel::Phong ? ShadingModel::BlinnPhong : ShadingModel::Phong);
                 break;
             case GLFW_KEY_P:  // pbr and back to Phong: the pbr-vs-phong lesson flips between them
-                setModel(state_, state_.scene.model == ShadingModel::Pbr ? ShadingModel::Phong : ShadingModel::Pbr);
+                setModel(state_, isPhysicallyBased(state_.scene.model) ? ShadingModel::Phong : ShadingModel::Pbr);
                 break;
             case GLFW_KEY_V: setMode(state_, ViewMode((int(state_.mode) + 1) % 6)); break;
             case GLFW_KEY_TAB: shape_.showPanel = !shape_.showPanel; break;

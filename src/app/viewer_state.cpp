@@ -166,8 +166,8 @@ void setNormalized(ViewerState& state, bool normalized) {
 }
 
 void switchModelKeepingHighlights(ViewerState& state, ShadingModel model, bool allObjects) {
-    // Only Phong ↔ Blinn-Phong have equivalent exponents; pbr reads roughness, not s.
-    const bool lecture = model != ShadingModel::Pbr && state.scene.model != ShadingModel::Pbr;
+    // Only Phong ↔ Blinn-Phong have equivalent exponents; pbr and disney read roughness, not s.
+    const bool lecture = !isPhysicallyBased(model) && !isPhysicallyBased(state.scene.model);
     if (lecture && state.scene.model != model) {
         const bool all = allObjects || state.selected == 0;
         for (uint32_t id = 1; id <= objectCount(state.scene); ++id) {

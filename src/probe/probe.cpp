@@ -43,7 +43,7 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     // Each model's specular coefficient, with its energy normalisation when the scene asks for it.
     const auto paramsFor = [&](int model) {
         return shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness,
-                                      scene.normalized);
+                                      scene.normalized, m.disney.lobes0(), m.disney.lobes1());
     };
     const glm::vec3 msPhong = paramsFor(shading::SL_MODEL_PHONG).ms;
     const glm::vec3 msBlinn = paramsFor(shading::SL_MODEL_BLINN_PHONG).ms;
@@ -53,6 +53,19 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     r.pbrDiffuseColor = paramsPbr.md;
     r.pbrF0 = paramsPbr.ms;
     const int pbr = shading::SL_MODEL_PBR;
+    // disney, as WhittedIntegrator::shadingParams: the base colour here (the checker's), its own F0.
+    shading::SurfaceParams paramsDisney = paramsFor(shading::SL_MODEL_DISNEY);
+    paramsDisney.md = paramsPbr.md;
+    paramsDisney.baseColor = s.baseColor;
+    paramsDisney.ms = shading::disneySpecularF0(s.baseColor, m.metallic, m.disney.specular, m.disney.specularTint);
+    // One lobe of disney's at a time: the diffuse or specular group, with sheen or clearcoat (d1.x, d1.z) kept or
+    // zeroed, so that the four parts are the shared function's own and sum to its term.
+    const auto disneyPart = [&](const glm::vec3& L, const glm::vec3& Il, bool diffuse, bool withExtra) {
+        glm::vec4 d1 = paramsDisney.disney1;
+        if (!withExtra) (diffuse ? d1.x : d1.z) = 0.0f;
+        return shading::shadeLightDisney(s.N, L, V, Il, paramsDisney.baseColor, paramsDisney.metallic, paramsDisney.s,
+                                         paramsDisney.disney0, d1, diffuse, !diffuse, glm::vec3(1.0f));
+    };
     // Each light: the same raw vectors the fragment shaders pass (surface.glsl), then shadeLight.
     std::vector<shading::LightSample> samples;
     for (const Light& light : scene.lights) {
@@ -89,6 +102,10 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
         pl.specularPbr =
             vis * shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, false, true);
         pl.diffusePbr = vis * both - pl.specularPbr;
+        pl.diffuseDisney = vis * disneyPart(Lraw, Il, true, false);
+        pl.sheenDisney = vis * disneyPart(Lraw, Il, true, true) - pl.diffuseDisney;
+        pl.specularDisney = vis * disneyPart(Lraw, Il, false, false);
+        pl.clearcoatDisney = vis * disneyPart(Lraw, Il, false, true) - pl.specularDisney;
         r.lights.push_back(pl);
     }
     const shading::SurfaceParams paramsPhong{m.ma, m.md, msPhong, m.s}, paramsBlinn{m.ma, m.md, msBlinn, m.s};
@@ -98,11 +115,13 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     r.totalBlinn = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsBlinn, scene.ambient,
                                        shading::SL_MODEL_BLINN_PHONG, flags);
     r.totalPbr = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsPbr, scene.ambient, pbr, flags);
+    r.totalDisney = shading::shadeLocal(s.N, V, samples.data(), samples.size(), paramsDisney, scene.ambient,
+                                        shading::SL_MODEL_DISNEY, flags);
     // The lecture's step 0: with no light term on, both renderers show the surface's unlit colour, not black.
     if (shading::noIllumination(scene.terms.ambient, scene.terms.diffuse, scene.terms.specular)) {
         r.unlit = true;
         r.totalPhong = r.totalBlinn = shading::unlitColour(m.md, s.baseColor, shading::SL_MODEL_PHONG);
-        r.totalPbr = shading::unlitColour(m.md, s.baseColor, pbr);
+        r.totalPbr = r.totalDisney = shading::unlitColour(m.md, s.baseColor, pbr);
     }
     return r;
 }

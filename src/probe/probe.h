@@ -38,6 +38,11 @@ struct ProbeLight {
     glm::vec3 F{0.0f};           // F_Schlick(F0, V·H)
     glm::vec3 diffusePbr{0.0f};  // vis_l · Il ⊙ (1 − F) ⊙ c_diff · N·L (plain c_diff · N·L with specular off)
     glm::vec3 specularPbr{0.0f};  // vis_l · Il ⊙ π · D · Vis · F · N·L
+    // disney (shadeLightDisney): this light's part through each lobe, vis_l included; they sum to its term.
+    glm::vec3 diffuseDisney{0.0f};    // the diffuse with its retro-reflection and subsurface blend
+    glm::vec3 sheenDisney{0.0f};      // the sheen
+    glm::vec3 specularDisney{0.0f};   // the anisotropic GGX lobe
+    glm::vec3 clearcoatDisney{0.0f};  // the clearcoat's GTR1 lobe
 };
 
 struct ProbeResult {
@@ -56,6 +61,7 @@ struct ProbeResult {
     glm::vec3 totalPhong{0.0f};                    // shadeLocal with the scene's term switches, Phong
     glm::vec3 totalBlinn{0.0f};                    // the same, Blinn-Phong
     glm::vec3 totalPbr{0.0f};                      // the same, pbr
+    glm::vec3 totalDisney{0.0f};                   // the same, disney
     glm::vec3 pbrDiffuseColor{0.0f}, pbrF0{0.0f};  // c_diff (of the checker tile at P) and F0 (shading::surfaceParams)
 };
 
@@ -64,7 +70,7 @@ struct ProbeResult {
 // (WhittedIntegrator::surfaceAt: normal flipped to the viewer, checker applied) and, with the shadows
 // term on, each light's vis_l from its shadow ray (WhittedIntegrator::visibility, the same origin
 // offset): the exact answer the rasterizer's shadow maps approximate. Then evaluates every local term
-// with shading::shadeLight / shadeLocal, for Phong, Blinn-Phong and pbr side by side.
+// with shading::shadeLight / shadeLocal, for Phong, Blinn-Phong, pbr and disney side by side.
 ProbeResult probePixel(const trace::TraceScene& scene, int width, int height, int x, int y);
 
 // The probe at an anchored point seen from the scene's current camera: a ray from the eye's direction

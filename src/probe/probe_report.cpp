@@ -73,9 +73,16 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                           {"Vis", l.Vis},
                           {"F", vec(l.F)},
                           {"diffuse_pbr", vec(l.diffusePbr)},
-                          {"specular_pbr", vec(l.specularPbr)}});
+                          {"specular_pbr", vec(l.specularPbr)},
+                          {"diffuse_disney", vec(l.diffuseDisney)},
+                          {"sheen_disney", vec(l.sheenDisney)},
+                          {"specular_disney", vec(l.specularDisney)},
+                          {"clearcoat_disney", vec(l.clearcoatDisney)}});
     j["lights"] = lights;
-    j["total"] = {{"phong", vec(p.totalPhong)}, {"blinn_phong", vec(p.totalBlinn)}, {"pbr", vec(p.totalPbr)}};
+    j["total"] = {{"phong", vec(p.totalPhong)},
+                  {"blinn_phong", vec(p.totalBlinn)},
+                  {"pbr", vec(p.totalPbr)},
+                  {"disney", vec(p.totalDisney)}};
     j["unlit"] = p.unlit;
     if (rayTree) {
         nlohmann::json rays = nlohmann::json::array();

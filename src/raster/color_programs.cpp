@@ -56,6 +56,7 @@ const ColorPrograms& ColorProgramCache::prepare(const FrameBlock& frame, const S
     std::array<std::optional<ShaderVariant>, kModels> variants;  // each model's, made when an object has it
     const auto choose = [&](const Material& m, int bits) {
         const int model = modelOf(m);
+        SHADELAB_CHECK(model >= 0 && model < kModels);  // a new ShadingModel widens kModels
         const ColorPrograms*& set = chosen_[size_t(model * kMapSets + bits)];
         if (set) return;
         std::optional<ShaderVariant>& v = variants[size_t(model)];

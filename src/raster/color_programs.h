@@ -52,7 +52,7 @@ public:
 private:
     const gl::ShaderLibrary& shaders_;
     std::map<std::string, ColorPrograms> sets_;
-    static constexpr int kModels = 3;    // shading::SL_MODEL_*
+    static constexpr int kModels = 4;    // shading::SL_MODEL_*
     static constexpr int kMapSets = 64;  // SL_MATERIAL_MAPS values
     // This render's sets by model × kMapSets + map bits (null: no object has them).
     std::array<const ColorPrograms*, kModels * kMapSets> chosen_{};

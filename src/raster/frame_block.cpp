@@ -66,8 +66,8 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band, glm
         f.lightCone[i] = lightCone(l);
     }
     // The environment, as src/trace/environment_light.cpp reads it.
-    // (for the pbr surfaces: the scene's model, or any material's own)
-    f.iblInfo.w = scene.energyCompensation && usesModel(scene, ShadingModel::Pbr) ? 1 : 0;
+    // (for the pbr and disney surfaces: the scene's model, or any material's own)
+    f.iblInfo.w = scene.energyCompensation && usesPhysicallyBased(scene) ? 1 : 0;
     if (scene.environment) {
         const Environment& e = *scene.environment;
         f.iblParams =

@@ -28,17 +28,21 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
                                  bool normalized) const {
     // The coefficients shadeLight reads under this model, derived on the CPU exactly as the tracer does.
     const shading::SurfaceParams c =
-        shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, normalized);
+        shading::surfaceParams(model, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, normalized,
+                               m.disney.lobes0(), m.disney.lobes1());
     p.set("u_ma", c.ma);
     p.set("u_md", c.md);
     p.set("u_ms", c.ms);
     p.set("u_s", c.s);
     p.set("u_baseColor", m.baseColor);  // pbr's unlit colour, and mesh.frag's metallic-roughness map
     p.set("u_emission", m.emission);
+    p.set("u_metallic", m.metallic);  // disney's (shadeLightDisney), with its own parameters
+    p.set("u_disney0", c.disney0);
+    p.set("u_disney1", c.disney1);
     p.set("u_objectId", objectId);
     p.set("u_kr", m.kr);  // planes' mirrors and objects' cubes
     // Base-colour texture (mesh.frag): F0 = u_ms + u_msTex·(tex − 1) under pbr, as the tracer's local().
-    const glm::vec3 msTex = model == shading::SL_MODEL_PBR ? m.metallic * m.baseColor : glm::vec3(0.0f);
+    const glm::vec3 msTex = shading::physicallyBased(model) ? m.metallic * m.baseColor : glm::vec3(0.0f);
     p.set("u_msTex", msTex);
     // The material maps (mesh.frag's u_tex arrays; spheres and planes have none of these uniforms).
     if (p.uniform("u_tex") < 0) return;
@@ -164,7 +168,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         const Checker c = p.checker.value_or(Checker{});
         // pbr: the second tiles' md2 is their base colour (F0 stays the plane's), as in the tracer.
         const glm::vec3 md2 =
-            model == shading::SL_MODEL_PBR ? shading::pbrDiffuseColor(c.md2, p.material.metallic) : c.md2;
+            shading::physicallyBased(model) ? shading::pbrDiffuseColor(c.md2, p.material.metallic) : c.md2;
         planeProgram.set("u_md2", md2);
         planeProgram.set("u_baseColor2", c.md2);
         planeProgram.set("u_checkerSize", c.size);

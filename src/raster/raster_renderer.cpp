@@ -258,7 +258,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     const float* background = backgroundColour.data();
     const GLuint noObject[4] = {kBackgroundId, 0, 0, 0};
     const float farDepth = 1.0f;
-    const bool pbr = usesModel(scene, ShadingModel::Pbr);  // the scene's model, or any material's own
+    const bool pbr = usesPhysicallyBased(scene);  // the scene's model, or any material's own
     ibl_.prepare(scene.environment ? scene.environment->map : nullptr,
                  pbr && (frame.iblInfo.x != kIblNone || frame.iblInfo.w != 0));
     ibl_.bind(kIblCubeUnit, kIblDfgUnit);

@@ -65,7 +65,7 @@ ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shad
             v.point[size_t(i)] && (glm::vec3(frame.lightAtten[i]) != glm::vec3(1.0f, 0.0f, 0.0f) ||
                                    frame.lightCone[i].z != 0.0f || frame.lightCone[i].w != 0.0f);
     }
-    const bool pbr = v.model == 2;  // shading::SL_MODEL_PBR
+    const bool pbr = v.model == 2 || v.model == 3;  // shading::physicallyBased: pbr, disney
     v.ibl = pbr && (v.terms & kTermAmbient) ? frame.iblInfo.x : 0;
     v.energyCompensation = pbr && frame.iblInfo.w != 0;
     if (shadows && (frame.flags.w & kPassShadows)) {

@@ -4,6 +4,7 @@
 // model's are given (docs/scene-format.md, "Materials under each model").
 #pragma once
 
+#include "scene/disney_params.h"
 #include "scene/shading_model.h"
 #include "scene/texture.h"
 #include "util/name_table.h"
@@ -30,6 +31,8 @@ struct Material {
     glm::vec3 baseColor{0.7f};  // pbr: base colour, linear RGB in [0, 1] (= md by default)
     float metallic = 0.0f;      // pbr: [0, 1], 0 dielectric (F0 = 0.04), 1 metal (F0 = baseColor)
     float roughness = 0.4925f;  // pbr: perceptual roughness in [0, 1], α = roughness²; ≈ s = 32's equivalent
+    DisneyParams disney;        // disney: the principled BRDF's other eight parameters (baseColor, metallic and
+                                // roughness are pbr's)
     glm::vec3 emission{0.0f};   // emitted radiance, linear RGB, >= 0, from both sides: an area light under the
                                 // path tracer; the other renderers add it to the surface's colour (design.md §8)
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
@@ -144,13 +147,14 @@ struct MaterialOverride {
     std::optional<float> metallic, roughness;
     std::optional<glm::vec3> emission;
     std::optional<ShadingModel> model;
+    DisneyOverride disney;
     // Linked fields whose values were derived when written (a Python document's "derived" list): read, but not
     // given, so that they follow the given fields again.
     uint8_t derived = 0;
 
     bool empty() const {
         return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission &&
-               !model;
+               !model && disney.empty();
     }
     // Writes the fields, then derives from the given ones what follows from them (deriveFields). Fields of both
     // models given, with no "derived" list: each as given and nothing derived (docs/scene-format.md).
@@ -184,6 +188,7 @@ struct MaterialOverride {
         if (roughness) m.roughness = *roughness;
         if (emission) m.emission = *emission;
         if (model) m.model = *model;
+        disney.applyTo(m.disney);
     }
 };
 

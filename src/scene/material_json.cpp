@@ -6,6 +6,16 @@
 
 namespace shadelab {
 
+DisneyOverride parseDisneyOverride(const JsonNode& n) {
+    std::vector<const char*> names;
+    for (const DisneyField& field : kDisneyFields) names.push_back(field.name);
+    n.requireObject().warnUnknownKeys(names);
+    DisneyOverride o;
+    for (int i = 0; i < kDisneyFieldCount; ++i)
+        if (auto f = n.find(kDisneyFields[i].name)) o.value[i] = f->inRange(0.0f, 1.0f, false, false);
+    return o;
+}
+
 MaterialOverride parseMaterialOverride(const JsonNode& n) {
     n.requireObject();
     MaterialOverride m;
@@ -21,12 +31,13 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("roughness")) m.roughness = f->inRange(0.0f, 1.0f, false, false);
     if (auto f = n.find("emission")) m.emission = f->rgbUpTo(kMaxRadiance);
     if (auto f = n.find("model")) m.model = f->oneOf(kShadingModelNames, "shading model");
+    if (auto f = n.find("disney")) m.disney = parseDisneyOverride(*f);
     return m;
 }
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
-                                       "emission", "model", "derived"});
+                                       "emission", "model", "disney", "derived"});
     MaterialOverride o = parseMaterialOverride(n);
     // "derived": the fields listed were derived from the other model's when the document was written (Python's
     // documents list them): read, but not given, so that they follow the given fields again.

@@ -290,6 +290,19 @@ double exact(float f) {
 
 OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
 
+// The principled BRDF's parameters: those that are set (an override), or all of them.
+OJson disneyJson(const DisneyOverride& o) {
+    OJson j = OJson::object();
+    for (int i = 0; i < kDisneyFieldCount; ++i)
+        if (o.value[i]) j[kDisneyFields[i].name] = exact(*o.value[i]);
+    return j;
+}
+OJson disneyJson(const DisneyParams& p) {
+    DisneyOverride all;
+    for (int i = 0; i < kDisneyFieldCount; ++i) all.value[i] = p.*kDisneyFields[i].member;
+    return disneyJson(all);
+}
+
 // The given fields of `m` (a derived one is derived again on loading); `withDerived` writes the derived ones too,
 // listed under "derived", as Python's documents hold them.
 OJson materialJson(const Material& m, bool withDerived) {
@@ -312,6 +325,10 @@ OJson materialJson(const Material& m, bool withDerived) {
     put(kFieldRoughness, exact(m.roughness));
     if (m.emission != glm::vec3(0.0f)) j["emission"] = vec(m.emission);  // written only for emitters
     if (m.model) j["model"] = toString(*m.model);                        // only a material's own
+    // The principled BRDF's parameters where they matter: a disney material, or any left off their defaults; in
+    // Python's documents always, so that they can be edited in place.
+    if (withDerived || m.model == ShadingModel::Disney || m.disney != DisneyParams{})
+        j["disney"] = disneyJson(m.disney);
     if (withDerived && m.derived) {
         OJson names = OJson::array();
         for (const auto& entry : kMaterialFieldNames)
@@ -335,6 +352,7 @@ OJson overrideJson(const MaterialOverride& m) {
     if (m.roughness) j["roughness"] = exact(*m.roughness);
     if (m.emission) j["emission"] = vec(*m.emission);
     if (m.model) j["model"] = toString(*m.model);
+    if (!m.disney.empty()) j["disney"] = disneyJson(m.disney);
     return j;
 }
 

@@ -1,6 +1,6 @@
 // Which shading models a scene's objects are shaded with: the scene's own model (Scene::model) and any a
 // material names for itself (Material::model). Renderers ask before they prepare what only one model reads
-// (pbr's DFG table, its environment prefilter).
+// (pbr's and disney's DFG table, their environment prefilter).
 #pragma once
 
 #include "scene/scene.h"
@@ -17,6 +17,12 @@ inline bool usesModel(const Scene& scene, ShadingModel model) {
         for (const MeshPart& part : m.parts)
             if (modelOf(part.material, scene.model) == model) return true;
     return false;
+}
+
+// Whether any object of `scene` is shaded with a microfacet model (pbr or disney): those read the DFG table and
+// take the environment's light.
+inline bool usesPhysicallyBased(const Scene& scene) {
+    return usesModel(scene, ShadingModel::Pbr) || usesModel(scene, ShadingModel::Disney);
 }
 
 }  // namespace shadelab

@@ -19,6 +19,7 @@ using glm::cross;
 using glm::dot;
 using glm::floor;
 using glm::length;
+using glm::log;
 using glm::max;
 using glm::min;
 using glm::mix;

@@ -19,16 +19,40 @@ struct SurfaceParams {
     vec3 ma, md, ms;
     float s;
     vec3 specScale{1.0f};  // pbr specular lobe scale: energyCompensation() when the scene asks for it
+    // disney only (shadeLightDisney): the base colour, metallic and the packed parameters (DisneyParams::lobes0/1);
+    // md, ms and s then hold the diffuse colour, the specular F0 and the roughness for the environment's light.
+    vec3 baseColor{0.0f};
+    float metallic = 0.0f;
+    vec4 disney0{0.0f}, disney1{0.0f};
 };
 
 // The coefficients shadeLight reads under `model`: the lecture's (ma, md, ms, s), or for SL_MODEL_PBR the
-// ambient ma, the diffuse colour, F0 and the roughness derived from the metallic-roughness fields.
-// `normalized` (design.md §7) scales a Phong or Blinn-Phong lobe by its energy-conserving factor.
+// ambient ma, the diffuse colour, F0 and the roughness derived from the metallic-roughness fields; for
+// SL_MODEL_DISNEY the same with disney's F0 (disneySpecularF0) and its own fields. `normalized` (design.md §7)
+// scales a Phong or Blinn-Phong lobe by its energy-conserving factor.
 inline SurfaceParams surfaceParams(int model, vec3 ma, vec3 md, vec3 ms, float s, vec3 baseColor, float metallic,
-                                   float roughness, bool normalized = false) {
+                                   float roughness, bool normalized = false, vec4 disney0 = vec4(0.0f),
+                                   vec4 disney1 = vec4(0.0f)) {
     if (model == SL_MODEL_PHONG) return {ma, md, normalized ? ms * phongNormalization(s) : ms, s};
     if (model == SL_MODEL_BLINN_PHONG) return {ma, md, normalized ? ms * blinnPhongNormalization(s) : ms, s};
+    if (model == SL_MODEL_DISNEY)
+        return {ma,
+                pbrDiffuseColor(baseColor, metallic),
+                disneySpecularF0(baseColor, metallic, disney0.y, disney0.z),
+                roughness,
+                vec3(1.0f),
+                baseColor,
+                metallic,
+                disney0,
+                disney1};
     return {ma, pbrDiffuseColor(baseColor, metallic), pbrF0(baseColor, metallic), roughness};
+}
+
+// shadeLightModel with the coefficients of `m`.
+inline vec3 shadeLightWith(vec3 N, vec3 L, vec3 V, vec3 Il, const SurfaceParams& m, int model, bool diffuseOn,
+                           bool specularOn) {
+    return shadeLightModel(N, L, V, Il, m.md, m.ms, m.s, model, diffuseOn, specularOn, m.specScale, m.baseColor,
+                           m.metallic, m.disney0, m.disney1);
 }
 
 struct TermFlags {
@@ -41,8 +65,7 @@ inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCo
     for (size_t i = 0; i < lightCount; ++i) {
         const LightSample& l = lights[i];
         if (l.visibility <= 0.0f) continue;
-        I += l.visibility *
-             shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular, m.specScale);
+        I += l.visibility * shadeLightWith(N, l.L, V, l.Il, m, model, t.diffuse, t.specular);
     }
     return I;
 }

@@ -18,7 +18,7 @@ bool emits(const Material& m) { return m.emission.x > 0.0f || m.emission.y > 0.0
 
 glm::vec3 albedoOf(const Surface& s) {
     if (emits(*s.material)) return glm::vec3(1.0f);
-    const glm::vec3 a = s.model == modelIndex(ShadingModel::Pbr) ? s.baseColor : s.md + s.ms + s.material->kr;
+    const glm::vec3 a = shading::physicallyBased(s.model) ? s.baseColor : s.md + s.ms + s.material->kr;
     return glm::clamp(a, glm::vec3(0.0f), glm::vec3(1.0f));
 }
 

@@ -20,6 +20,7 @@ namespace shadelab::trace {
 static_assert(int(ShadingModel::Phong) == shading::SL_MODEL_PHONG);
 static_assert(int(ShadingModel::BlinnPhong) == shading::SL_MODEL_BLINN_PHONG);
 static_assert(int(ShadingModel::Pbr) == shading::SL_MODEL_PBR);
+static_assert(int(ShadingModel::Disney) == shading::SL_MODEL_DISNEY);
 
 namespace {
 
@@ -174,11 +175,14 @@ void WhittedIntegrator::noteShadow(Tree& tree, const Surface& s, size_t light, f
 
 glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::vec3 V) const {
     const Scene& sc = scene_.scene();
-    if (!env_.lightsPbr() || s.model != shading::SL_MODEL_PBR || !sc.terms.ambient || !sc.terms.specular)
+    if (!env_.lightsPbr() || !shading::physicallyBased(s.model) || !sc.terms.ambient || !sc.terms.specular)
         return glm::vec3(0.0f);
     const Material& m = *s.material;
     const glm::vec3 f0 =
-        s.mapped ? s.ms : shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
+        s.model == shading::SL_MODEL_DISNEY
+            ? shading::disneySpecularF0(s.baseColor, s.metallic, m.disney.specular, m.disney.specularTint)
+        : s.mapped ? s.ms
+                   : shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
     const glm::vec2 dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), s.roughness);
     glm::vec3 E = shading::specularDFG(f0, dfg);
     if (sc.energyCompensation) E = E * shading::energyCompensation(f0, dfg);
@@ -189,13 +193,26 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
     shading::SurfaceParams params =
-        shading::surfaceParams(s.model, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized);
-    const bool pbr = s.model == shading::SL_MODEL_PBR;
+        shading::surfaceParams(s.model, m.ma, s.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness, sc.normalized,
+                               m.disney.lobes0(), m.disney.lobes1());
+    const bool pbr = shading::physicallyBased(s.model);
     if (pbr) params.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     // A base-colour texture scales ma, and F0's base colour under pbr, the affine form mesh.frag uses.
     params.ma = params.ma * s.tex;
     if (pbr) params.ms = params.ms + m.metallic * m.baseColor * (s.tex - 1.0f);
-    if (s.mapped) params = {s.ma, s.md, s.ms, s.s};  // a metallic-roughness texel (surfaceAt)
+    if (s.mapped) {  // a metallic-roughness texel (surfaceAt)
+        params.ma = s.ma;
+        params.md = s.md;
+        params.ms = s.ms;
+        params.s = s.s;
+    }
+    if (s.model == shading::SL_MODEL_DISNEY) {
+        // The principled BRDF reads the base colour and metallic here (textured, the checker's, a texel's) and
+        // takes the environment's light with its own F0 of them, as surface.glsl's surfaceF0.
+        params.baseColor = s.baseColor;
+        params.metallic = s.metallic;
+        params.ms = shading::disneySpecularF0(s.baseColor, s.metallic, m.disney.specular, m.disney.specularTint);
+    }
     params.ma = params.ma * s.ao;
     glm::vec2 dfg(0.0f);
     if (pbr && (sc.energyCompensation || env_.lightsPbr()))
@@ -215,7 +232,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     glm::vec2 dfg(0.0f);
     const shading::SurfaceParams params = shadingParams(s, V, &dfg);
     // The environment replaces the constant ambient of pbr surfaces (design.md §8: what global light replaces).
-    const bool environmentLit = env_.lightsPbr() && s.model == shading::SL_MODEL_PBR;
+    const bool environmentLit = env_.lightsPbr() && shading::physicallyBased(s.model);
     glm::vec3 environment(0.0f);
     if (environmentLit && sc.terms.ambient) {
         const glm::vec3 R = shading::IblLookup{}.iblReflect(s.N, V);

@@ -100,6 +100,7 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
     s.md = s.material->md;
     s.baseColor = s.material->baseColor;
     s.roughness = s.material->roughness;
+    s.metallic = s.material->metallic;
     s.alpha = s.material->alpha;
     s.P = ray.origin + hit.t * ray.dir;
     const glm::vec3 V = -ray.dir;
@@ -151,6 +152,7 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
                 s.roughness = shading::mapRoughness(m.roughness, mr);
                 s.s = shading::mapExponent(s.model, s.roughness);
                 s.md = shading::mapDiffuse(s.baseColor, metallic);
+                s.metallic = metallic;
                 s.ma = s.md;
                 s.ms = shading::mapSpecular(s.model, sc.normalized, s.baseColor, metallic, s.s);
                 s.mapped = true;

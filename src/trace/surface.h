@@ -31,6 +31,7 @@ struct Surface {
     glm::vec3 ma{0.0f}, ms{0.0f};
     float s = 0.0f;
     float roughness = 0.0f;  // pbr roughness here: the material's, or the texel's when mapped
+    float metallic = 0.0f;   // metallic here: the material's, or the texel's when mapped (disney reads it)
     float ao = 1.0f;
     float alpha = 1.0f;
     glm::vec3 emissive{1.0f};  // the emissive texture's linear RGB here (1 without one): scales emission

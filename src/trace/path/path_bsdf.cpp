@@ -1,4 +1,4 @@
-// PathBsdf: evaluation through lighting.glsl's shadeLightScaled, lobe sampling through warp.h.
+// PathBsdf: evaluation through lighting.glsl's shadeLightModel, lobe sampling through warp.h.
 #include "trace/path/path_bsdf.h"
 
 #include "shading/lighting.h"
@@ -24,17 +24,29 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
       ms_(params.ms),
       s_(params.s),
       specScale_(params.specScale),
+      params_(params),
+      tangent_(frame_),
       model_(model),
       diffuseOn_(terms.diffuse),
       specularOn_(terms.specular) {
     const Material& m = *s.material;
     if (model_ == shading::SL_MODEL_PBR) alpha_ = shading::pbrAlpha(s_);
     const float NoV = std::clamp(glm::dot(N_, V_), 0.0f, 1.0f);
+    if (model_ == shading::SL_MODEL_DISNEY) {
+        tangent_.t = shading::anisotropyTangent(N_);
+        tangent_.b = glm::cross(N_, tangent_.t);
+        const glm::vec2 a = shading::disneyAnisoAlpha(s_, params.disney0.w);
+        ax_ = a.x;
+        ay_ = a.y;
+        coatAlpha_ = shading::disneyClearcoatAlpha(params.disney1.w);
+    }
 
     // Estimated albedos of each lobe pick the lobe: a sample goes where the light it carries is.
     float diffuse = diffuseOn_ ? luminance(md_) : 0.0f;
-    float specular = 0.0f;
-    if (specularOn_) {
+    float specular = 0.0f, coat = 0.0f;
+    if (model_ == shading::SL_MODEL_DISNEY) {
+        pickDisneyLobes(NoV, diffuse, specular, coat);
+    } else if (specularOn_) {
         if (model_ == shading::SL_MODEL_PHONG) {
             specular = luminance(ms_) * 2.0f / (s_ + 2.0f);  // ∫ cos^s over the hemisphere, relative to the cosine's
         } else if (model_ == shading::SL_MODEL_BLINN_PHONG) {
@@ -63,19 +75,33 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
         }
     }
     const float mirror = nonNegative(luminance(kr_)), glass = nonNegative(luminance(kt_));
-    const float total = diffuse + specular + mirror + glass;
+    const float total = diffuse + specular + coat + mirror + glass;
     if (total > 0.0f) {
         pDiffuse_ = diffuse / total;
         pSpecular_ = specular / total;
+        pCoat_ = coat / total;
         pMirror_ = mirror / total;
         pGlass_ = glass / total;
     }
 }
 
+// disney's lobes picked by estimates of what each reflects: the diffuse (with subsurface and sheen) as its
+// colour, the specular lobe as its Fresnel at N·V, the clearcoat as a quarter of its own; each with a floor.
+void PathBsdf::pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const {
+    const float FV = shading::schlickWeight(NoV);
+    const float diffuseWeight = 1.0f - params_.metallic;
+    diffuse = diffuseOn_ ? diffuseWeight * (luminance(params_.baseColor) + 0.25f * params_.disney1.x) : 0.0f;
+    if (!specularOn_) return;
+    const glm::vec3 f0 =
+        shading::disneySpecularF0(params_.baseColor, params_.metallic, params_.disney0.y, params_.disney0.z);
+    specular = std::max(luminance(glm::mix(f0, glm::vec3(1.0f), FV) * specScale_), 0.02f);
+    if (params_.disney1.z > 0.0f) coat = std::max(0.25f * params_.disney1.z * glm::mix(0.04f, 1.0f, FV), 0.02f);
+}
+
 glm::vec3 PathBsdf::evalCos(const glm::vec3& wi) const {
     if (!hasSmooth()) return glm::vec3(0.0f);
-    return shading::shadeLightScaled(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
-                                     specScale_) *
+    return shading::shadeLightModel(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
+                                    specScale_, params_.baseColor, params_.metallic, params_.disney0, params_.disney1) *
            (1.0f / kPi);
 }
 
@@ -88,19 +114,38 @@ float PathBsdf::specularPdf(const glm::vec3& wi) const {
     const float VoH = glm::dot(V_, H);
     if (VoH <= 0.0f) return 0.0f;
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return powerCosinePdf(glm::dot(N_, H), s_) / (4.0f * VoH);
+    if (model_ == shading::SL_MODEL_DISNEY)
+        return ggxAnisoVisibleNormalPdf(tangent_.toLocal(V_), tangent_.toLocal(H), ax_, ay_) / (4.0f * VoH);
     return ggxVisibleNormalPdf(frame_.toLocal(V_), frame_.toLocal(H), alpha_) / (4.0f * VoH);
+}
+
+// The clearcoat's density: GTR1's normal density over the reflection's Jacobian 1 / (4 V·H).
+float PathBsdf::coatPdf(const glm::vec3& wi) const {
+    const glm::vec3 h = wi + V_;
+    const float len = glm::length(h);
+    if (!(len > 0.0f)) return 0.0f;
+    const glm::vec3 H = h / len;
+    const float VoH = glm::dot(V_, H);
+    if (VoH <= 0.0f) return 0.0f;
+    return gtr1NormalPdf(glm::dot(N_, H), coatAlpha_) / (4.0f * VoH);
 }
 
 float PathBsdf::pdf(const glm::vec3& wi) const {
     float p = 0.0f;
     if (pDiffuse_ > 0.0f) p += pDiffuse_ * cosineHemispherePdf(glm::dot(N_, wi));
     if (pSpecular_ > 0.0f) p += pSpecular_ * specularPdf(wi);
+    if (pCoat_ > 0.0f) p += pCoat_ * coatPdf(wi);
     return p;
 }
 
 glm::vec3 PathBsdf::sampleSpecular(glm::vec2 u) const {
     if (model_ == shading::SL_MODEL_PHONG) return Frame(reflectAbout(V_, N_)).toWorld(samplePowerCosine(u, s_));
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return reflectAbout(V_, frame_.toWorld(samplePowerCosine(u, s_)));
+    if (model_ == shading::SL_MODEL_DISNEY) {
+        const glm::vec3 v = tangent_.toLocal(V_);
+        if (v.z <= 0.0f) return glm::vec3(0.0f);
+        return reflectAbout(V_, tangent_.toWorld(sampleGgxAnisoVisibleNormal(v, ax_, ay_, u)));
+    }
     const glm::vec3 v = frame_.toLocal(V_);
     if (v.z <= 0.0f) return glm::vec3(0.0f);
     return reflectAbout(V_, frame_.toWorld(sampleGgxVisibleNormal(v, alpha_, u)));
@@ -126,7 +171,12 @@ std::optional<BsdfSample> PathBsdf::sample(const glm::vec3& u) const {
     }
     pick -= pGlass_;
     if (!hasSmooth()) return std::nullopt;
-    out.wi = pick < pDiffuse_ ? frame_.toWorld(sampleCosineHemisphere(uv)) : sampleSpecular(uv);
+    if (pick < pDiffuse_)
+        out.wi = frame_.toWorld(sampleCosineHemisphere(uv));
+    else if (pick < pDiffuse_ + pSpecular_)
+        out.wi = sampleSpecular(uv);
+    else
+        out.wi = reflectAbout(V_, frame_.toWorld(sampleGtr1Normal(uv, coatAlpha_)));
     // Directions under the shading or the geometric surface carry nothing back (f is 0 there, or the ray
     // would start inside the object).
     if (!(glm::dot(out.wi, N_) > 0.0f) || !(glm::dot(out.wi, Nf_) > 0.0f)) return std::nullopt;

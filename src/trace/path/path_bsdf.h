@@ -2,7 +2,9 @@
 // lecture's local model read as a BRDF: f·N·L = shadeLight(Il = 1)/π, the very lighting.glsl code both other
 // renderers run, so a light's direct contribution π·f·Il·N·L is the Whitted tracer's term for term. Phong's
 // and Blinn-Phong's specular lobes are sampled by their cos^s lobes (Lafortune & Willems 1994), pbr's GGX
-// lobe by its visible normals (Heitz 2018), the diffuse lobe by the cosine. Mirrors (kr) and glass (kt,
+// lobe by its visible normals (Heitz 2018), the diffuse lobe by the cosine. disney's anisotropic GGX lobe is
+// sampled by its visible normals in the tangent frame of anisotropyTangent, its clearcoat by GTR1's normals
+// (Burley 2012, Appendix B), its diffuse, subsurface and sheen by the cosine. Mirrors (kr) and glass (kt,
 // ior, refracted as the Whitted tracer refracts, total internal reflection going to the mirror) are delta
 // lobes. One lobe is picked per sample with probabilities from estimated albedos; pdf() is the mixture's.
 #pragma once
@@ -45,11 +47,13 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& u) const;
 
     // Whether the non-delta part can scatter at all (light sampling is pointless without it).
-    bool hasSmooth() const { return pDiffuse_ + pSpecular_ > 0.0f; }
+    bool hasSmooth() const { return pDiffuse_ + pSpecular_ + pCoat_ > 0.0f; }
 
 private:
     float specularPdf(const glm::vec3& wi) const;
+    float coatPdf(const glm::vec3& wi) const;
     glm::vec3 sampleSpecular(glm::vec2 u) const;
+    void pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const;
 
     Frame frame_;           // around the unit shading normal
     glm::vec3 N_, Nf_, V_;  // unit shading normal, geometric normal and view direction (all on V's side)
@@ -57,6 +61,10 @@ private:
     float s_;               // exponent, or roughness under pbr
     float alpha_ = 0.0f;    // pbr: GGX α
     glm::vec3 specScale_{1.0f};
+    shading::SurfaceParams params_;  // disney reads its base colour, metallic and parameters from here
+    Frame tangent_;                  // disney: the anisotropic lobe's frame (anisotropyTangent, N × it, N)
+    float ax_ = 0.0f, ay_ = 0.0f;    // disney: the anisotropic widths
+    float coatAlpha_ = 0.0f;         // disney: the clearcoat's GTR1 width
     int model_;
     bool diffuseOn_, specularOn_;
     glm::vec3 kr_{0.0f}, kt_{0.0f};
@@ -64,7 +72,7 @@ private:
     bool totalInternal_ = false;  // kt goes to the mirror, as in the Whitted tracer
     glm::vec3 refracted_{0.0f};
     // Lobe picking probabilities (sum 1 unless everything is black).
-    float pDiffuse_ = 0.0f, pSpecular_ = 0.0f, pMirror_ = 0.0f, pGlass_ = 0.0f;
+    float pDiffuse_ = 0.0f, pSpecular_ = 0.0f, pCoat_ = 0.0f, pMirror_ = 0.0f, pGlass_ = 0.0f;
 };
 
 }  // namespace shadelab::trace

@@ -95,6 +95,55 @@ inline float ggxVisibleNormalPdf(const glm::vec3& v, const glm::vec3& h, float a
     return ggxG1(v.z, alpha) * std::max(0.0f, glm::dot(v, h)) * ggxD(h.z, alpha) / v.z;
 }
 
+// Anisotropic GGX with widths (ax, ay) along the local x and y axes: D(h) = 1 / (π ax ay (hx²/ax² + hy²/ay² + hz²)²)
+// (Burley 2012, eq. 13) and Smith's G1 with Λ from the projected width (Heitz 2014, eq. 86).
+inline float ggxAnisoD(const glm::vec3& h, float ax, float ay) {
+    if (h.z <= 0.0f) return 0.0f;
+    const float x = h.x / ax, y = h.y / ay;
+    const float d = x * x + y * y + h.z * h.z;
+    return 1.0f / (kPi * ax * ay * d * d);
+}
+inline float ggxAnisoG1(const glm::vec3& v, float ax, float ay) {
+    if (v.z <= 0.0f) return 0.0f;
+    const float x = v.x * ax, y = v.y * ay;
+    return 2.0f * v.z / (v.z + std::sqrt(x * x + y * y + v.z * v.z));
+}
+
+// Heitz 2018 with two widths: the hemisphere configuration stretches x by ax and y by ay, and the sampled normal
+// is stretched back. Density D_v(h) = G1(v) max(0, v·h) D(h) / v.z, as the isotropic sampler.
+inline glm::vec3 sampleGgxAnisoVisibleNormal(const glm::vec3& v, float ax, float ay, glm::vec2 u) {
+    const glm::vec3 vh = glm::normalize(glm::vec3(ax * v.x, ay * v.y, v.z));
+    const float lensq = vh.x * vh.x + vh.y * vh.y;
+    const glm::vec3 t1 = lensq > 0.0f ? glm::vec3(-vh.y, vh.x, 0.0f) / std::sqrt(lensq) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::vec3 t2 = glm::cross(vh, t1);
+    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+    const float p1 = r * std::cos(phi);
+    float p2 = r * std::sin(phi);
+    const float s = 0.5f * (1.0f + vh.z);
+    p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
+    const glm::vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
+    return glm::normalize(glm::vec3(ax * nh.x, ay * nh.y, std::max(1e-6f, nh.z)));
+}
+inline float ggxAnisoVisibleNormalPdf(const glm::vec3& v, const glm::vec3& h, float ax, float ay) {
+    if (v.z <= 0.0f) return 0.0f;
+    return ggxAnisoG1(v, ax, ay) * std::max(0.0f, glm::dot(v, h)) * ggxAnisoD(h, ax, ay) / v.z;
+}
+
+// Burley 2012, Appendix B: GTR1 (the clearcoat's distribution, γ = 1) by its cos θh,
+// cos² θh = (1 − α^(2(1 − u))) / (1 − α²); density D(h)·cos θh over the micro-normal's solid angle.
+inline float gtr1D(float cosThetaH, float alpha) {
+    if (cosThetaH <= 0.0f) return 0.0f;
+    if (alpha >= 1.0f) return 1.0f / kPi;
+    const float a2 = alpha * alpha;
+    return (a2 - 1.0f) / (kPi * std::log(a2) * (1.0f + (a2 - 1.0f) * cosThetaH * cosThetaH));
+}
+inline glm::vec3 sampleGtr1Normal(glm::vec2 u, float alpha) {
+    const float a2 = std::min(alpha * alpha, 0.9999f);
+    const float cos2 = (1.0f - std::pow(a2, 1.0f - u.x)) / (1.0f - a2);
+    return sphericalDirection(std::sqrt(std::clamp(cos2, 0.0f, 1.0f)), u.y);
+}
+inline float gtr1NormalPdf(float cosThetaH, float alpha) { return gtr1D(cosThetaH, alpha) * std::max(cosThetaH, 0.0f); }
+
 // A uniform point on a triangle as barycentrics (b1, b2) (Heitz 2019's low-distortion map is not needed:
 // the square-root map, pbrt-v3 §13.6.5).
 inline glm::vec2 sampleTriangleBarycentrics(glm::vec2 u) {
