@@ -133,11 +133,13 @@ SL_FN float schlickWeight(float u) {
 }
 
 // Burley 2012, eq. 4 with γ = 1 (Berry 1923): GTR1, the clearcoat's long-tailed distribution, normalised so that
-// ∫ D·cos θh dω = 1: D = (α² − 1) / (π ln(α²) (1 + (α² − 1) cos² θh)); α >= 1 is the uniform 1/π.
-SL_FN float D_GTR1(float NoH, float a) {
+// ∫ D·cos θh dω = 1: D = (α² − 1) / (π ln(α²) (1 + (α² − 1) cos² θh)); α >= 1 is the uniform 1/π. The
+// denominator's 1 + (α² − 1) cos² θh is written α² cos² θh + |N × H|², the caller passing 1 − N·H² as |N × H|²
+// (as D_GGX): near a gloss coat's peak 1 − N·H² would cancel, and GLSL and C++ would round it apart.
+SL_FN float D_GTR1(float NoH, float oneMinusNoHSquared, float a) {
     if (a >= 1.0f) return 1.0f / SL_PI;
     float a2 = a * a;
-    float t = 1.0f + (a2 - 1.0f) * NoH * NoH;
+    float t = a2 * NoH * NoH + oneMinusNoHSquared;
     return (a2 - 1.0f) / (SL_PI * log(a2) * t);
 }
 
@@ -236,7 +238,8 @@ SL_FN vec3 shadeLightDisney(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 baseColor, flo
         float Ds = D_GTR2Aniso(NoH, dot(H, X), dot(H, Y), a.x, a.y);
         float Gs = smithGGXAniso(NoL, dot(L, X), dot(L, Y), a.x, a.y) * smithGGXAniso(NoV, dot(V, X), dot(V, Y), a.x, a.y);
         vec3 Fs = mix(disneySpecularF0(baseColor, metallic, d0.y, d0.z), vec3(1.0f), FH);
-        float Dr = D_GTR1(NoH, disneyClearcoatAlpha(d1.w));
+        vec3 NxH = cross(N, H);
+        float Dr = D_GTR1(NoH, dot(NxH, NxH), disneyClearcoatAlpha(d1.w));
         float Gr = smithGGXSeparable(NoL, 0.25f) * smithGGXSeparable(NoV, 0.25f);
         float Fr = mix(0.04f, 1.0f, FH);
         f = f + (Gs * Ds) * Fs * specScale + vec3(0.25f * d1.z * Gr * Fr * Dr);

@@ -5,9 +5,12 @@
 uniform sampler2D t_N;        // xyz: N
 uniform sampler2D t_L;        // xyz: L
 uniform sampler2D t_V;        // xyz: V
-uniform sampler2D t_params;   // x: s (pbr: roughness), y: model (0 Phong, 1 Blinn-Phong, 2 pbr), z: metallic
-                              // y = 3: a spot light's intensity instead: N the spot's direction, L the light
+uniform sampler2D t_params;   // x: s (pbr, disney: roughness), y: model (0 Phong, 1 Blinn-Phong, 2 pbr, 3 disney),
+                              // z: metallic
+                              // y = 9: a spot light's intensity instead: N the spot's direction, L the light
                               // vector, V its attenuation (kc, kl, kq), x, z its cone scale and offset, w its range
+uniform sampler2D t_disney0;  // disney: (subsurface, specular, specularTint, anisotropic)
+uniform sampler2D t_disney1;  // disney: (sheen, sheenTint, clearcoat, clearcoatGloss)
 uniform vec3 u_Il;
 uniform vec3 u_md;
 uniform vec3 u_ms;
@@ -21,10 +24,20 @@ void main() {
     vec3 V = texelFetch(t_V, p, 0).xyz;
     vec4 params = texelFetch(t_params, p, 0);
     int model = int(params.y + 0.5f);
-    if (model == 3) {
+    if (model == 9) {
         vec4 cone = vec4(params.x, params.z, params.w, 1.0f);
         vec3 I = lightIntensityAt(u_Il, true, V, L, N, cone);
         o_result = vec4(I, spotAttenuation(N, L, vec2(params.x, params.z)));
+        return;
+    }
+    if (model == SL_MODEL_DISNEY) {
+        // u_md is the base colour; w: the specular group alone (anisotropic GGX and clearcoat), green.
+        vec4 d0 = texelFetch(t_disney0, p, 0);
+        vec4 d1 = texelFetch(t_disney1, p, 0);
+        vec3 I = shadeLightModel(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), vec3(0.0f), params.x, model, true,
+                                 true, vec3(1.0f), u_md, params.z, d0, d1);
+        vec3 spec = shadeLightDisney(N, L, V, vec3(1.0f), u_md, params.z, params.x, d0, d1, false, true, vec3(1.0f));
+        o_result = vec4(I, spec.y);
         return;
     }
     if (model == SL_MODEL_PBR) {

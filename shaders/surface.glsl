@@ -36,6 +36,16 @@ float surfaceMetallic() { return s_mapped ? s_metallic : u_metallic; }
 vec3 surfaceF0(vec3 base) {
     return SL_MODEL == SL_MODEL_DISNEY ? disneySpecularF0(base, surfaceMetallic(), u_disney0.y, u_disney0.z) : surfaceMs();
 }
+// One light's diffuse + specular under the variant's model (lighting.glsl's shadeLightModel, chosen here by the
+// preprocessor: the other models' programs keep exactly the code, and so the rounding, they had without disney).
+vec3 shadeOneLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 base, vec3 specScale) {
+#if SL_MODEL == 3
+    return shadeLightDisney(N, L, V, Il, base, surfaceMetallic(), surfaceS(), u_disney0, u_disney1, SL_DIFFUSE,
+                            SL_SPECULAR, specScale);
+#else
+    return shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
+#endif
+}
 uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
 // The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
 vec3 s_emissive = vec3(1.0f);
@@ -82,8 +92,7 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
     // Attenuation (1, 0, 0), no range and no cone multiply by exactly 1: skipped, bit for bit the same.
     vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i])
                            : u_lightColor[i].xyz;
-    vec3 c = shadeLightModel(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale,
-                             base, surfaceMetallic(), u_disney0, u_disney1);
+    vec3 c = shadeOneLight(N, L, V, Il, md, base, specScale);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
     c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
@@ -120,8 +129,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i]);
-        I += shadeLightModel(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale,
-                             base, surfaceMetallic(), u_disney0, u_disney1);
+        I += shadeOneLight(N, L, V, Il, md, base, specScale);
     }
 #endif
 #if SL_IBL

@@ -1,6 +1,6 @@
-// Per-object shading models (Material::model): a scene whose three spheres name Phong, Blinn-Phong and pbr renders
-// each sphere exactly as a render of the whole scene under that model does, in the rasterizer, the Whitted tracer
-// and the path tracer's direct light; and the model survives a scene file. Negative control: a sphere under
+// Per-object shading models (Material::model): a scene whose four spheres name Phong, Blinn-Phong, pbr and disney
+// renders each sphere exactly as a render of the whole scene under that model does, in the rasterizer, the Whitted
+// tracer and the path tracer's direct light; and the model survives a scene file. Negative control: a sphere under
 // another model than the scene-wide render's differs there. Failures leave both images behind.
 #include "compare/compare_report.h"
 #include "gl_fixture.h"
@@ -23,9 +23,11 @@ using namespace shadelab;
 namespace {
 
 constexpr int kWidth = 200, kHeight = 120;
-constexpr ShadingModel kModels[] = {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr};
+constexpr ShadingModel kModels[] = {ShadingModel::Phong, ShadingModel::BlinnPhong, ShadingModel::Pbr,
+                                    ShadingModel::Disney};
+constexpr int kSpheres = 4;
 
-// Three spheres apart on a checkered floor, lit by two lights with shadows; sphere i names kModels[i]. The floor
+// Four spheres apart on a checkered floor, lit by two lights with shadows; sphere i names kModels[i]. The floor
 // names Phong itself, so that it is the same in every render and only the spheres change.
 Scene mixedScene() {
     Scene scene = test::comparisonStage();
@@ -36,14 +38,15 @@ Scene mixedScene() {
     floor.checker = Checker{glm::vec3(0.3f, 0.35f, 0.4f), 0.75f};
     floor.material.model = ShadingModel::Phong;
     scene.planes.push_back(floor);
-    const char* names[] = {"phong", "blinn", "pbr"};
-    for (int i = 0; i < 3; ++i) {
-        Material m = test::colourMaterial({0.8f - 0.3f * float(i), 0.3f, 0.2f + 0.3f * float(i)}, 24.0f);
+    const char* names[] = {"phong", "blinn", "pbr", "disney"};
+    for (int i = 0; i < kSpheres; ++i) {
+        Material m = test::colourMaterial({0.8f - 0.2f * float(i), 0.3f, 0.2f + 0.2f * float(i)}, 24.0f);
         m.baseColor = {1.0f, 0.77f, 0.34f};
         m.metallic = i == 2 ? 1.0f : 0.0f;
         m.roughness = 0.35f;
+        m.disney = {0.3f, 0.6f, 0.2f, 0.5f, 0.5f, 0.5f, 0.6f, 0.8f};  // every lobe on: all of them compared
         m.model = kModels[i];
-        scene.spheres.push_back({names[i], {-1.5f + 1.5f * float(i), 0.55f, 0.0f}, 0.55f, m});
+        scene.spheres.push_back({names[i], {-1.8f + 1.2f * float(i), 0.5f, 0.0f}, 0.5f, m});
     }
     scene.lights.push_back(test::pointLight({-3.0f, 5.0f, 4.0f}, glm::vec3(0.9f)));
     scene.lights.push_back(test::pointLight({3.0f, 3.0f, 2.0f}, glm::vec3(0.4f, 0.4f, 0.5f)));
@@ -101,7 +104,7 @@ Image8 pathDirect(const Scene& scene) {
 
 TEST(PerObjectModel, TheTracerShadesEachSphereAsTheSceneWideRenderOfItsModel) {
     const Rendered mixed = test::traceWithCoverage(mixedScene(), kWidth, kHeight);
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < kSpheres; ++i) {
         const Scene wide = sceneWide(kModels[i]);
         const Rendered r = test::traceWithCoverage(wide, kWidth, kHeight);
         const uint32_t id = sphereCoverageId(wide, size_t(i));
@@ -120,7 +123,7 @@ TEST(PerObjectModel, ThePathTracersDirectLightIsTheSceneWideRenderOfEachModel) {
     const Scene scene = mixedScene();
     const Image8 mixed = pathDirect(scene);
     const std::vector<uint32_t> coverage = test::traceWithCoverage(scene, kWidth, kHeight).coverage;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < kSpheres; ++i) {
         const Scene wide = sceneWide(kModels[i]);
         EXPECT_EQ(differingPixels(mixed, pathDirect(wide), coverage, sphereCoverageId(wide, size_t(i)),
                                   std::string("per_object_path_") + toString(kModels[i])),
@@ -154,7 +157,7 @@ class PerObjectModelRaster : public test::GlTest {};
 
 TEST_F(PerObjectModelRaster, EachSphereIsTheSceneWideRenderOfItsModel) {
     const Rendered mixed = test::rasterizeWithCoverage(mixedScene(), kWidth, kHeight);
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < kSpheres; ++i) {
         const Scene wide = sceneWide(kModels[i]);
         const Rendered r = test::rasterizeWithCoverage(wide, kWidth, kHeight);
         EXPECT_EQ(differingPixels(mixed.pixels, r.pixels, mixed.coverage, sphereCoverageId(wide, size_t(i)),

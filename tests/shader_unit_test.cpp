@@ -42,10 +42,11 @@ glm::vec3 randomDirection(std::mt19937& rng) {
 
 struct Case {
     glm::vec3 N, L, V;
-    float s;  // pbr: roughness
+    float s;  // pbr, disney: roughness
     int model;
     float metallic = 0.0f;
-    float w = 0.0f;  // params.w: the spot kernel's range
+    float w = 0.0f;                          // params.w: the spot kernel's range
+    glm::vec4 disney0{0.0f}, disney1{0.0f};  // disney: the packed parameters (DisneyParams::lobes0, lobes1)
 };
 
 // Random N and L; odd cases a random V, even ones V near the mirror direction, where the highlight is and
@@ -80,24 +81,27 @@ std::vector<Case> makeCases() {
 
 // Runs lighting_probe.frag once per case (one texel each) and reads the results back.
 ImageF runProbe(const std::vector<Case>& cases, const glm::vec3& Il, const glm::vec3& md, const glm::vec3& ms) {
-    std::vector<glm::vec4> n, l, v, params;
+    std::vector<glm::vec4> n, l, v, params, d0, d1;
     for (const Case& c : cases) {
         n.emplace_back(c.N, 0.0f);
         l.emplace_back(c.L, 0.0f);
         v.emplace_back(c.V, 0.0f);
         params.emplace_back(c.s, float(c.model), c.metallic, c.w);
+        d0.push_back(c.disney0);
+        d1.push_back(c.disney1);
     }
     gl::Program program = gl::Program::build(gl::ShaderLibrary(), "fullscreen.vert", "lighting_probe.frag");
     gl::Texture tn = floatTexture(n), tl = floatTexture(l), tv = floatTexture(v), tp = floatTexture(params);
+    gl::Texture td0 = floatTexture(d0), td1 = floatTexture(d1);
     raster::RenderTarget target;
     target.resize(kW, kH, false);
     target.bind();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glUseProgram(program.id());
-    const char* samplers[] = {"t_N", "t_L", "t_V", "t_params"};
-    const gl::Texture* textures[] = {&tn, &tl, &tv, &tp};
-    for (int i = 0; i < 4; ++i) {
+    const char* samplers[] = {"t_N", "t_L", "t_V", "t_params", "t_disney0", "t_disney1"};
+    const gl::Texture* textures[] = {&tn, &tl, &tv, &tp, &td0, &td1};
+    for (int i = 0; i < 6; ++i) {
         glActiveTexture(GLenum(GL_TEXTURE0 + i));
         glBindTexture(GL_TEXTURE_2D, textures[i]->id());
         glUniform1i(program.uniform(samplers[i]), i);
@@ -166,7 +170,7 @@ namespace {
 
 // A spot light's arriving intensity (lightIntensityAt with a cone and a range), over directions inside, across
 // and outside cones of random angles, and distances inside and beyond random ranges. The case's N is the spot's
-// direction, V its attenuation; s and metallic carry the cone's scale and offset, model 3 selects the kernel.
+// direction, V its attenuation; s and metallic carry the cone's scale and offset, model 9 selects the kernel.
 struct SpotCase {
     glm::vec3 spotDir, L, attenuation;
     glm::vec2 cone;
@@ -203,7 +207,7 @@ TEST_F(ShaderUnitTest, GlslSpotIntensityEqualsCpp) {
     const std::vector<SpotCase> spots = makeSpotCases();
     std::vector<Case> cases;
     for (const SpotCase& s : spots) {
-        cases.push_back(Case{s.spotDir, s.L, s.attenuation, s.cone.x, 3, s.cone.y, s.range});
+        cases.push_back(Case{s.spotDir, s.L, s.attenuation, s.cone.x, 9, s.cone.y, s.range});
     }
     const glm::vec3 Il(1.0f, 0.7f, 0.3f);
     const ImageF result = runProbe(cases, Il, glm::vec3(0.0f), glm::vec3(0.0f));
@@ -326,6 +330,103 @@ TEST_F(ShaderUnitTest, GlslPbrEqualsCppOverSweep) {
     }
     EXPECT_GT(roughnessNoticed, int(cases.size()) / 10) << "a 10% roughness change went unnoticed";
     EXPECT_GT(metallicNoticed, int(cases.size()) / 10) << "flipping metallic went unnoticed";
+}
+
+namespace {
+
+// The disney sweep: roughness, metallic and all eight parameters uniform in [0, 1], each of the optional lobes
+// (subsurface, anisotropic, sheen, clearcoat) off in a quarter of the cases; half the cases look along the
+// mirror direction, where the specular and clearcoat lobes peak.
+std::vector<Case> makeDisneyCases() {
+    std::mt19937 rng(20261204);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const auto maybe = [&](int i, int bit) { return (i >> bit) % 4 == 0 ? 0.0f : unit(rng); };
+    std::vector<Case> cases;
+    for (int i = 0; i < kW * kH; ++i) {
+        Case c = randomGeometry(rng, i);
+        c.s = unit(rng);
+        c.model = shading::SL_MODEL_DISNEY;
+        const int kind = (i / 2) % 3;
+        c.metallic = kind == 0 ? 0.0f : kind == 1 ? 1.0f : unit(rng);
+        c.disney0 = glm::vec4(maybe(i, 2), unit(rng), unit(rng), maybe(i, 4));
+        c.disney1 = glm::vec4(maybe(i, 6), unit(rng), maybe(i, 8), unit(rng));
+        cases.push_back(c);
+    }
+    const glm::vec4 d0(0.0f, 0.5f, 0.0f, 0.0f), d1(0.0f, 0.5f, 0.0f, 1.0f);  // Disney's defaults
+    cases[0] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, 0.0f, shading::SL_MODEL_DISNEY, 0.0f, 0.0f, d0, d1};  // mirror peak
+    cases[1] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, 1.0f, shading::SL_MODEL_DISNEY, 1.0f, 0.0f, d0, glm::vec4(1.0f)};
+    cases[2] = {{0, 0, 1}, {1, 0, 1e-4f}, {-1, 0, 1e-4f}, 0.5f, shading::SL_MODEL_DISNEY, 0.0f, 0.0f, d0, d1};
+    cases[3] = {{0, 1, 0}, {0, -1, 0}, {0, 1, 0}, 0.5f, shading::SL_MODEL_DISNEY, 1.0f, 0.0f, d0, d1};  // unlit side
+    return cases;
+}
+
+glm::vec3 cpuDisney(const Case& c, const glm::vec3& Il, const glm::vec3& baseColor) {
+    return shading::shadeLightModel(c.N, c.L, c.V, Il, shading::pbrDiffuseColor(baseColor, c.metallic), glm::vec3(0.0f),
+                                    c.s, c.model, true, true, glm::vec3(1.0f), baseColor, c.metallic, c.disney0,
+                                    c.disney1);
+}
+
+}  // namespace
+
+// disney: the principled BRDF's GLSL and C++ agree to 1e-4 (relative above 1) over 2,048 parameter sets; a 10 %
+// change of the roughness, and 0.1 more of each optional lobe, are noticed (negative controls).
+TEST_F(ShaderUnitTest, GlslDisneyEqualsCppOverSweep) {
+    const std::vector<Case> cases = makeDisneyCases();
+    ASSERT_GE(cases.size(), 2048u);
+    const glm::vec3 Il(1.0f, 0.7f, 0.3f), baseColor(0.9f, 0.6f, 0.2f);
+    const ImageF result = runProbe(cases, Il, baseColor, glm::vec3(0.0f));
+    const float tol = 1e-4f;
+    float worst = 0.0f;
+    int worstIndex = -1, failures = 0;
+    std::ofstream report(test::outputPath("shader_unit_disney_sweep.csv"));
+    report << "index,roughness,metallic,subsurface,specular,specularTint,anisotropic,sheen,sheenTint,clearcoat,"
+              "clearcoatGloss,gpu_r,cpu_r,gpu_spec_g,cpu_spec_g\n";
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
+        const glm::vec3 cpu = cpuDisney(c, Il, baseColor);
+        const glm::vec3 spec = shading::shadeLightDisney(c.N, c.L, c.V, glm::vec3(1.0f), baseColor, c.metallic, c.s,
+                                                         c.disney0, c.disney1, false, true, glm::vec3(1.0f));
+        const float err = std::max({relativeError(gpu[0], cpu.x), relativeError(gpu[1], cpu.y),
+                                    relativeError(gpu[2], cpu.z), relativeError(gpu[3], spec.y)});
+        report << i << ',' << c.s << ',' << c.metallic;
+        for (int k = 0; k < 4; ++k) report << ',' << c.disney0[k];
+        for (int k = 0; k < 4; ++k) report << ',' << c.disney1[k];
+        report << ',' << gpu[0] << ',' << cpu.x << ',' << gpu[3] << ',' << spec.y << '\n';
+        if (err > worst) {
+            worst = err;
+            worstIndex = int(i);
+        }
+        if (err > tol) ++failures;
+    }
+    RecordProperty("max_rel_error", std::to_string(worst));
+    std::printf("shader-unit disney sweep: %zu cases, max |GLSL - C++| / max(1, |C++|) = %.3g (case %d)\n",
+                cases.size(), worst, worstIndex);
+    EXPECT_EQ(failures, 0) << "max error " << worst << " at case " << worstIndex << "; all values in "
+                           << test::outputPath("shader_unit_disney_sweep.csv");
+    struct Control {
+        const char* what;
+        int vec, component;  // -1: the roughness, scaled by 1.1; else disney0 / disney1's component, plus 0.1
+    };
+    const Control controls[] = {{"roughness", -1, 0},   {"subsurface", 0, 0}, {"anisotropic", 0, 3},
+                                {"sheen", 1, 0},        {"clearcoat", 1, 2},  {"clearcoatGloss", 1, 3},
+                                {"specularTint", 0, 2}, {"specular", 0, 1}};
+    for (const Control& k : controls) {
+        int noticed = 0;
+        for (size_t i = 0; i < cases.size(); ++i) {
+            Case changed = cases[i];
+            if (k.vec < 0)
+                changed.s *= 1.1f;
+            else
+                (k.vec == 0 ? changed.disney0 : changed.disney1)[k.component] += 0.1f;
+            const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
+            const glm::vec3 cpu = cpuDisney(changed, Il, baseColor);
+            if (std::max({relativeError(gpu[0], cpu.x), relativeError(gpu[1], cpu.y), relativeError(gpu[2], cpu.z)}) >
+                tol)
+                ++noticed;
+        }
+        EXPECT_GT(noticed, int(cases.size()) / 10) << "0.1 more " << k.what << " went unnoticed";
+    }
 }
 
 namespace {

@@ -44,4 +44,4 @@ ViewTransformName = Literal["standard", "filmic"]
 BackendName = Literal["auto", "egl-device", "egl-surfaceless", "osmesa"]
 
 # A shading model as scene files name it; "blinn" is accepted for "blinn-phong".
-ModelName = Literal["phong", "blinn-phong", "blinn", "pbr"]
+ModelName = Literal["phong", "blinn-phong", "blinn", "pbr", "disney"]

@@ -3,6 +3,7 @@
 #include "raster/frame_block.h"
 #include "raster/shadow_block.h"
 #include "shading/dfg_lut.h"
+#include "shading/lighting.h"
 
 #include <algorithm>
 
@@ -52,6 +53,9 @@ std::string colorProgramDefines(const std::string& variantDefines, int materialM
     return s;
 }
 
+// surface.glsl's shadeOneLight picks disney's function by `#if SL_MODEL == 3`.
+static_assert(shading::SL_MODEL_DISNEY == 3 && shading::SL_MODEL_PBR == 2);
+
 ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shadows, int model) {
     ShaderVariant v;
     v.model = model >= 0 ? model : frame.flags.x;
@@ -65,7 +69,7 @@ ShaderVariant makeShaderVariant(const FrameBlock& frame, const ShadowBlock* shad
             v.point[size_t(i)] && (glm::vec3(frame.lightAtten[i]) != glm::vec3(1.0f, 0.0f, 0.0f) ||
                                    frame.lightCone[i].z != 0.0f || frame.lightCone[i].w != 0.0f);
     }
-    const bool pbr = v.model == 2 || v.model == 3;  // shading::physicallyBased: pbr, disney
+    const bool pbr = shading::physicallyBased(v.model);  // pbr, disney
     v.ibl = pbr && (v.terms & kTermAmbient) ? frame.iblInfo.x : 0;
     v.energyCompensation = pbr && frame.iblInfo.w != 0;
     if (shadows && (frame.flags.w & kPassShadows)) {

@@ -164,10 +164,40 @@ TEST(SceneJson, PbrModelAndMaterialsReadEachOthersFields) {
     expectRoundTrip(s);
 }
 
+// The principled BRDF's parameters: a material's "disney" object sets some, the rest keep Burley's defaults,
+// and all of them survive saving and loading (written for a disney material, or any left off the defaults).
+TEST(SceneJson, DisneyParametersReadWithDefaultsAndRoundTrip) {
+    Scene s = parse(R"({"model": "disney", "objects": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1,
+         "material": {"baseColor": [0.8, 0.2, 0.1], "disney": {"clearcoat": 1, "sheen": 0.25, "anisotropic": 0.5}}},
+        {"type": "sphere", "center": [3, 1, 0], "radius": 1,
+         "material": {"model": "pbr", "disney": {"subsurface": 0.7}}},
+        {"type": "sphere", "center": [6, 1, 0], "radius": 1, "material": {"model": "disney"}}]})");
+    EXPECT_EQ(s.model, ShadingModel::Disney);
+    const DisneyParams& a = s.spheres[0].material.disney;
+    EXPECT_EQ(a.clearcoat, 1.0f);
+    EXPECT_EQ(a.sheen, 0.25f);
+    EXPECT_EQ(a.anisotropic, 0.5f);
+    EXPECT_EQ(a.specular, 0.5f);  // Burley's defaults where none is given
+    EXPECT_EQ(a.sheenTint, 0.5f);
+    EXPECT_EQ(a.clearcoatGloss, 1.0f);
+    EXPECT_EQ(s.spheres[1].material.disney.subsurface, 0.7f);  // kept under another model, for a switch back
+    EXPECT_EQ(s.spheres[2].material.model, ShadingModel::Disney);
+    EXPECT_EQ(s.spheres[2].material.disney, DisneyParams{});
+    expectRoundTrip(s);
+    // Every parameter at once, each a value of its own, reads back exactly.
+    Scene all = s;
+    for (int i = 0; i < kDisneyFieldCount; ++i)
+        all.spheres[0].material.disney.*kDisneyFields[i].member = 0.1f * float(i + 1);
+    expectRoundTrip(all);
+    EXPECT_EQ(gWarnings.size(), 0u) << joined(gWarnings);
+}
+
 TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
     Scene s = parse(R"({"foo": 1, "camera": {"fovy": 30},
         "lights": [{"type": "point", "position": [0, 1, 0], "colour": [1, 0, 0]}], "raster": {"PCF": true},
-        "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"ks": 0.5, "zzz": 1}}]})");
+        "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1,
+                     "material": {"ks": 0.5, "zzz": 1, "disney": {"clearCoat": 1}}}]})");
     ASSERT_EQ(s.lights.size(), 1u);
     EXPECT_EQ(s.lights[0].color, glm::vec3(1.0f));
     EXPECT_EQ(s.camera.fovY, 45.0f);
@@ -177,7 +207,8 @@ TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
         "a.json: raster: unknown field 'PCF' (ignored); did you mean 'pcf'?",
         "a.json: lights[0]: unknown field 'colour' (ignored); did you mean 'color'?",
         "a.json: objects[0].material: unknown field 'ks' (ignored); did you mean 'ms'?",
-        "a.json: objects[0].material: unknown field 'zzz' (ignored)"};
+        "a.json: objects[0].material: unknown field 'zzz' (ignored)",
+        "a.json: objects[0].material.disney: unknown field 'clearCoat' (ignored); did you mean 'clearcoat'?"};
     EXPECT_EQ(joined(gWarnings), joined(expected));
     EXPECT_NO_THROW(parseSceneJson(R"({"foo": 1})", "a.json"));  // no warn callback: silently ignored
 }

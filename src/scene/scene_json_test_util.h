@@ -46,6 +46,8 @@ struct Diff {
         v(p + ".kr", a.kr, b.kr), v(p + ".kt", a.kt, b.kt), f(p + ".ior", a.ior, b.ior);
         v(p + ".baseColor", a.baseColor, b.baseColor), f(p + ".metallic", a.metallic, b.metallic);
         f(p + ".roughness", a.roughness, b.roughness);
+        for (const DisneyField& d : kDisneyFields) f(p + ".disney." + d.name, a.disney.*d.member, b.disney.*d.member);
+        eq(p + ".model", a.model, b.model);
     }
     void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
         auto vv = [this](const std::string& n, const glm::vec3& x, const glm::vec3& y) { v(n, x, y); };
@@ -54,6 +56,8 @@ struct Diff {
         opt(p + ".s", a.s, b.s, ff), opt(p + ".kr", a.kr, b.kr, vv), opt(p + ".kt", a.kt, b.kt, vv);
         opt(p + ".ior", a.ior, b.ior, ff), opt(p + ".baseColor", a.baseColor, b.baseColor, vv);
         opt(p + ".metallic", a.metallic, b.metallic, ff), opt(p + ".roughness", a.roughness, b.roughness, ff);
+        for (int i = 0; i < kDisneyFieldCount; ++i)
+            opt(p + ".disney." + kDisneyFields[i].name, a.disney.value[i], b.disney.value[i], ff);
     }
 };
 

@@ -33,7 +33,7 @@ TEST(SceneNames, EveryTableRoundTrips) {
 }
 
 TEST(SceneNames, ChoicesListTheCanonicalNamesOnly) {
-    EXPECT_EQ(nameChoices(kShadingModelNames), "phong, blinn-phong or pbr");
+    EXPECT_EQ(nameChoices(kShadingModelNames), "phong, blinn-phong, pbr or disney");
     EXPECT_EQ(nameChoices(kTermNames), "ambient, diffuse, specular, shadows or reflections");
     EXPECT_EQ(nameChoices(kTermNames, "none"), "ambient, diffuse, specular, shadows, reflections or none");
     EXPECT_EQ(nameChoices(kLightTypeNames), "point, directional or spot");

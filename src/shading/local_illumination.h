@@ -62,10 +62,21 @@ struct TermFlags {
 inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCount, const SurfaceParams& m, vec3 Ia,
                        int model, TermFlags t) {
     vec3 I = shadeAmbient(Ia, m.ma, t.ambient);
+    // The model is decided once, outside the loop (shadeLightModel per light would ask per light).
+    if (model == SL_MODEL_DISNEY) {
+        for (size_t i = 0; i < lightCount; ++i) {
+            const LightSample& l = lights[i];
+            if (l.visibility <= 0.0f) continue;
+            I += l.visibility * shadeLightDisney(N, l.L, V, l.Il, m.baseColor, m.metallic, m.s, m.disney0, m.disney1,
+                                                 t.diffuse, t.specular, m.specScale);
+        }
+        return I;
+    }
     for (size_t i = 0; i < lightCount; ++i) {
         const LightSample& l = lights[i];
         if (l.visibility <= 0.0f) continue;
-        I += l.visibility * shadeLightWith(N, l.L, V, l.Il, m, model, t.diffuse, t.specular);
+        I += l.visibility *
+             shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular, m.specScale);
     }
     return I;
 }

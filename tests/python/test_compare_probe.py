@@ -99,7 +99,7 @@ def test_probe_report(scene):
         assert np.allclose(R, 2 * N * (N @ L) - L, atol=1e-5)
         for key in ("spec_phong", "spec_blinn", "diffuse", "specular_phong", "specular_blinn", "visibility"):
             assert key in light
-    assert set(report["total"]) == {"phong", "blinn_phong", "pbr"}
+    assert set(report["total"]) == {"phong", "blinn_phong", "pbr", "disney"}
     # The probe's object is the one the coverage buffer shows there.
     ids = shadelab.render(scene, SIZE, renderer="trace", coverage=True).coverage
     assert report["object"]["id"] == ids[40, 24]

@@ -1,7 +1,7 @@
 """A material's own model and its given and derived fields, from Python: a sweep of s under pbr narrows the
 highlight because roughness is derived from s (and the same through a scene file edited and reloaded), a field
 given explicitly is never re-derived (the negative control), `material.derived` names what is derived, and a
-material's "model" shades that object alone with it."""
+material's "model" shades that object alone with it; the disney model's parameters edit in place like any field."""
 
 import json
 
@@ -77,6 +77,36 @@ def test_a_materials_own_model_shades_that_object_alone(pbr_default):
     assert not np.array_equal(pixels[cov == 1], rest[cov == 1])  # control: not as Phong has it
     with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.model: unknown shading model 'phong2'"):
         mixed.objects[0].material.model = "phong2"
+
+
+def test_a_sweep_of_s_under_disney_narrows_the_highlight_too(pbr_default):
+    pbr_default.model = "disney"  # disney reads pbr's fields, derived from s alike
+    widths = []
+    # From s = 8: at s = 1 (roughness 0.90) the lobe has merged into the diffuse, whose retro-reflection
+    # (Burley's Fd90 grows with roughness) then holds the brightest pixels, so there is no highlight to measure.
+    for s in SWEEP[1:]:
+        pbr_default.objects[0].material.s = s
+        widths.append(highlight_width(pbr_default))
+    assert all(a > b for a, b in zip(widths, widths[1:])), widths
+
+
+def test_disney_parameters_edit_in_place_and_change_that_object_alone(pbr_default):
+    pbr_default.model = "disney"
+    material = pbr_default.objects[0].material
+    assert material.disney.specular == 0.5 and material.disney.clearcoat == 0.0  # Burley's defaults
+    before = shadelab.render(pbr_default, (160, 90), coverage=True)
+    material.disney.clearcoat = 1.0
+    material.disney.sheen = 1.0
+    after = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    cov = np.asarray(before.coverage)
+    pixels = np.asarray(before)
+    assert not np.array_equal(pixels[cov == 1], after[cov == 1])
+    assert np.array_equal(pixels[cov == 2], after[cov == 2])  # control: another sphere is untouched
+    saved = pbr_default.to_dict()["objects"][0]["material"]["disney"]
+    assert saved["clearcoat"] == 1.0 and saved["sheen"] == 1.0
+    with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.disney\.sheen: must be in \[0, 1\]"):
+        material.disney.sheen = 2
+    assert pbr_default.objects[0].material.disney.sheen == 1.0  # nothing lost
 
 
 def test_a_material_extension_not_shaded_is_a_warning():

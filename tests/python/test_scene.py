@@ -45,7 +45,7 @@ def _with(path, value):
 # (document, the message: JSON path and reason, exactly as a scene file's error reads after "<file>: ")
 ERROR_CASES = [
     (_with(["lights", 2, "color"], [1, 1]), "lights[2].color: expected 3 numbers, got 2"),
-    (_scene_dict(model="toon"), "model: unknown shading model 'toon'; expected phong, blinn-phong or pbr"),
+    (_scene_dict(model="toon"), "model: unknown shading model 'toon'; expected phong, blinn-phong, pbr or disney"),
     (_with(["objects", 0, "material", "s"], -1), "objects[0].material.s: must be in [0, 10000], got -1"),
     (_with(["lights", 0, "type"], "area"),
      "lights[0].type: unknown light type 'area'; expected point, directional or spot"),

@@ -24,8 +24,6 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
       ms_(params.ms),
       s_(params.s),
       specScale_(params.specScale),
-      params_(params),
-      tangent_(frame_),
       model_(model),
       diffuseOn_(terms.diffuse),
       specularOn_(terms.specular) {
@@ -33,8 +31,12 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
     if (model_ == shading::SL_MODEL_PBR) alpha_ = shading::pbrAlpha(s_);
     const float NoV = std::clamp(glm::dot(N_, V_), 0.0f, 1.0f);
     if (model_ == shading::SL_MODEL_DISNEY) {
-        tangent_.t = shading::anisotropyTangent(N_);
-        tangent_.b = glm::cross(N_, tangent_.t);
+        baseColor_ = params.baseColor;
+        metallic_ = params.metallic;
+        disney0_ = params.disney0;
+        disney1_ = params.disney1;
+        tangentX_ = shading::anisotropyTangent(N_);
+        tangentY_ = glm::cross(N_, tangentX_);
         const glm::vec2 a = shading::disneyAnisoAlpha(s_, params.disney0.w);
         ax_ = a.x;
         ay_ = a.y;
@@ -89,19 +91,18 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
 // colour, the specular lobe as its Fresnel at N·V, the clearcoat as a quarter of its own; each with a floor.
 void PathBsdf::pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const {
     const float FV = shading::schlickWeight(NoV);
-    const float diffuseWeight = 1.0f - params_.metallic;
-    diffuse = diffuseOn_ ? diffuseWeight * (luminance(params_.baseColor) + 0.25f * params_.disney1.x) : 0.0f;
+    const float diffuseWeight = 1.0f - metallic_;
+    diffuse = diffuseOn_ ? diffuseWeight * (luminance(baseColor_) + 0.25f * disney1_.x) : 0.0f;
     if (!specularOn_) return;
-    const glm::vec3 f0 =
-        shading::disneySpecularF0(params_.baseColor, params_.metallic, params_.disney0.y, params_.disney0.z);
+    const glm::vec3 f0 = shading::disneySpecularF0(baseColor_, metallic_, disney0_.y, disney0_.z);
     specular = std::max(luminance(glm::mix(f0, glm::vec3(1.0f), FV) * specScale_), 0.02f);
-    if (params_.disney1.z > 0.0f) coat = std::max(0.25f * params_.disney1.z * glm::mix(0.04f, 1.0f, FV), 0.02f);
+    if (disney1_.z > 0.0f) coat = std::max(0.25f * disney1_.z * glm::mix(0.04f, 1.0f, FV), 0.02f);
 }
 
 glm::vec3 PathBsdf::evalCos(const glm::vec3& wi) const {
     if (!hasSmooth()) return glm::vec3(0.0f);
     return shading::shadeLightModel(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
-                                    specScale_, params_.baseColor, params_.metallic, params_.disney0, params_.disney1) *
+                                    specScale_, baseColor_, metallic_, disney0_, disney1_) *
            (1.0f / kPi);
 }
 
@@ -115,7 +116,7 @@ float PathBsdf::specularPdf(const glm::vec3& wi) const {
     if (VoH <= 0.0f) return 0.0f;
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return powerCosinePdf(glm::dot(N_, H), s_) / (4.0f * VoH);
     if (model_ == shading::SL_MODEL_DISNEY)
-        return ggxAnisoVisibleNormalPdf(tangent_.toLocal(V_), tangent_.toLocal(H), ax_, ay_) / (4.0f * VoH);
+        return ggxAnisoVisibleNormalPdf(toTangentFrame(V_), toTangentFrame(H), ax_, ay_) / (4.0f * VoH);
     return ggxVisibleNormalPdf(frame_.toLocal(V_), frame_.toLocal(H), alpha_) / (4.0f * VoH);
 }
 
@@ -142,9 +143,10 @@ glm::vec3 PathBsdf::sampleSpecular(glm::vec2 u) const {
     if (model_ == shading::SL_MODEL_PHONG) return Frame(reflectAbout(V_, N_)).toWorld(samplePowerCosine(u, s_));
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return reflectAbout(V_, frame_.toWorld(samplePowerCosine(u, s_)));
     if (model_ == shading::SL_MODEL_DISNEY) {
-        const glm::vec3 v = tangent_.toLocal(V_);
+        const glm::vec3 v = toTangentFrame(V_);
         if (v.z <= 0.0f) return glm::vec3(0.0f);
-        return reflectAbout(V_, tangent_.toWorld(sampleGgxAnisoVisibleNormal(v, ax_, ay_, u)));
+        const glm::vec3 h = sampleGgxAnisoVisibleNormal(v, ax_, ay_, u);
+        return reflectAbout(V_, h.x * tangentX_ + h.y * tangentY_ + h.z * N_);
     }
     const glm::vec3 v = frame_.toLocal(V_);
     if (v.z <= 0.0f) return glm::vec3(0.0f);

@@ -14,6 +14,7 @@
 #include "trace/path/warp.h"
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <optional>
 
 namespace shadelab::trace {
@@ -52,6 +53,9 @@ public:
 private:
     float specularPdf(const glm::vec3& wi) const;
     float coatPdf(const glm::vec3& wi) const;
+    glm::vec3 toTangentFrame(const glm::vec3& v) const {
+        return {glm::dot(v, tangentX_), glm::dot(v, tangentY_), glm::dot(v, N_)};
+    }
     glm::vec3 sampleSpecular(glm::vec2 u) const;
     void pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const;
 
@@ -61,10 +65,14 @@ private:
     float s_;               // exponent, or roughness under pbr
     float alpha_ = 0.0f;    // pbr: GGX α
     glm::vec3 specScale_{1.0f};
-    shading::SurfaceParams params_;  // disney reads its base colour, metallic and parameters from here
-    Frame tangent_;                  // disney: the anisotropic lobe's frame (anisotropyTangent, N × it, N)
-    float ax_ = 0.0f, ay_ = 0.0f;    // disney: the anisotropic widths
-    float coatAlpha_ = 0.0f;         // disney: the clearcoat's GTR1 width
+    // disney only (set by the constructor under that model): its inputs to shadeLightDisney, the anisotropic
+    // lobe's tangents (anisotropyTangent and N × it), its widths and the clearcoat's GTR1 width.
+    glm::vec3 baseColor_{0.0f};
+    float metallic_ = 0.0f;
+    glm::vec4 disney0_{0.0f}, disney1_{0.0f};
+    glm::vec3 tangentX_{0.0f}, tangentY_{0.0f};
+    float ax_ = 0.0f, ay_ = 0.0f;
+    float coatAlpha_ = 0.0f;
     int model_;
     bool diffuseOn_, specularOn_;
     glm::vec3 kr_{0.0f}, kt_{0.0f};
