@@ -195,7 +195,8 @@ TEST(Cli, EnumFlagsListTheirWordsAndAcceptTheSameAliasesAsSceneFiles) {
     const std::string scene = test::sourcePath("assets/scenes/default.json");
     const std::pair<const char*, const char*> cases[] = {
         {"--encoding gamma", "shadelab: usage error: --encoding: expected srgb or linear, got 'gamma'"},
-        {"--model gouraud", "shadelab: usage error: --model: expected phong, blinn-phong, pbr or disney, got 'gouraud'"},
+        {"--model gouraud",
+         "shadelab: usage error: --model: expected phong, blinn-phong, pbr or disney, got 'gouraud'"},
         {"--renderer gpu", "shadelab: usage error: --renderer: expected raster, trace, both or path, got 'gpu'"},
         {"--terms ambient,glow",
          "shadelab: usage error: --terms: unknown term 'glow'; expected ambient, diffuse, "
