@@ -1,4 +1,4 @@
-// PathBsdf: evaluation through lighting.glsl's shadeLightModel, lobe sampling through warp.h.
+// PathBsdf: evaluation through lighting.glsl's shadeLightScaled and shadeLightDisney, lobe sampling through warp.h.
 #include "trace/path/path_bsdf.h"
 
 #include "shading/lighting.h"
@@ -31,16 +31,17 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
     if (model_ == shading::SL_MODEL_PBR) alpha_ = shading::pbrAlpha(s_);
     const float NoV = std::clamp(glm::dot(N_, V_), 0.0f, 1.0f);
     if (model_ == shading::SL_MODEL_DISNEY) {
-        baseColor_ = params.baseColor;
-        metallic_ = params.metallic;
-        disney0_ = params.disney0;
-        disney1_ = params.disney1;
-        tangentX_ = shading::anisotropyTangent(N_);
-        tangentY_ = glm::cross(N_, tangentX_);
+        const glm::vec3 X = shading::anisotropyTangent(N_);
         const glm::vec2 a = shading::disneyAnisoAlpha(s_, params.disney0.w);
-        ax_ = a.x;
-        ay_ = a.y;
-        coatAlpha_ = shading::disneyClearcoatAlpha(params.disney1.w);
+        disney_ = DisneyLobes{params.baseColor,
+                              params.metallic,
+                              params.disney0,
+                              params.disney1,
+                              X,
+                              glm::cross(N_, X),
+                              a.x,
+                              a.y,
+                              shading::disneyClearcoatAlpha(params.disney1.w)};
     }
 
     // Estimated albedos of each lobe pick the lobe: a sample goes where the light it carries is.
@@ -91,18 +92,27 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
 // colour, the specular lobe as its Fresnel at N·V, the clearcoat as a quarter of its own; each with a floor.
 void PathBsdf::pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const {
     const float FV = shading::schlickWeight(NoV);
-    const float diffuseWeight = 1.0f - metallic_;
-    diffuse = diffuseOn_ ? diffuseWeight * (luminance(baseColor_) + 0.25f * disney1_.x) : 0.0f;
+    const DisneyLobes& d = *disney_;
+    const float diffuseWeight = 1.0f - d.metallic;
+    diffuse = diffuseOn_ ? diffuseWeight * (luminance(d.baseColor) + 0.25f * d.params1.x) : 0.0f;
     if (!specularOn_) return;
-    const glm::vec3 f0 = shading::disneySpecularF0(baseColor_, metallic_, disney0_.y, disney0_.z);
+    const glm::vec3 f0 = shading::disneySpecularF0(d.baseColor, d.metallic, d.params0.y, d.params0.z);
     specular = std::max(luminance(glm::mix(f0, glm::vec3(1.0f), FV) * specScale_), 0.02f);
-    if (disney1_.z > 0.0f) coat = std::max(0.25f * disney1_.z * glm::mix(0.04f, 1.0f, FV), 0.02f);
+    if (d.params1.z > 0.0f) coat = std::max(0.25f * d.params1.z * glm::mix(0.04f, 1.0f, FV), 0.02f);
 }
 
 glm::vec3 PathBsdf::evalCos(const glm::vec3& wi) const {
     if (!hasSmooth()) return glm::vec3(0.0f);
-    return shading::shadeLightModel(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
-                                    specScale_, baseColor_, metallic_, disney0_, disney1_) *
+    if (disney_) return evalCosDisney(wi);
+    return shading::shadeLightScaled(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
+                                     specScale_) *
+           (1.0f / kPi);
+}
+
+glm::vec3 PathBsdf::evalCosDisney(const glm::vec3& wi) const {
+    const DisneyLobes& d = *disney_;
+    return shading::shadeLightDisney(N_, wi, V_, glm::vec3(1.0f), d.baseColor, d.metallic, s_, d.params0, d.params1,
+                                     diffuseOn_, specularOn_, specScale_) *
            (1.0f / kPi);
 }
 
@@ -116,7 +126,7 @@ float PathBsdf::specularPdf(const glm::vec3& wi) const {
     if (VoH <= 0.0f) return 0.0f;
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return powerCosinePdf(glm::dot(N_, H), s_) / (4.0f * VoH);
     if (model_ == shading::SL_MODEL_DISNEY)
-        return ggxAnisoVisibleNormalPdf(toTangentFrame(V_), toTangentFrame(H), ax_, ay_) / (4.0f * VoH);
+        return ggxAnisoVisibleNormalPdf(toTangentFrame(V_), toTangentFrame(H), disney_->ax, disney_->ay) / (4.0f * VoH);
     return ggxVisibleNormalPdf(frame_.toLocal(V_), frame_.toLocal(H), alpha_) / (4.0f * VoH);
 }
 
@@ -128,7 +138,7 @@ float PathBsdf::coatPdf(const glm::vec3& wi) const {
     const glm::vec3 H = h / len;
     const float VoH = glm::dot(V_, H);
     if (VoH <= 0.0f) return 0.0f;
-    return gtr1NormalPdf(glm::dot(N_, H), coatAlpha_) / (4.0f * VoH);
+    return gtr1NormalPdf(glm::dot(N_, H), disney_->coatAlpha) / (4.0f * VoH);
 }
 
 float PathBsdf::pdf(const glm::vec3& wi) const {
@@ -145,8 +155,8 @@ glm::vec3 PathBsdf::sampleSpecular(glm::vec2 u) const {
     if (model_ == shading::SL_MODEL_DISNEY) {
         const glm::vec3 v = toTangentFrame(V_);
         if (v.z <= 0.0f) return glm::vec3(0.0f);
-        const glm::vec3 h = sampleGgxAnisoVisibleNormal(v, ax_, ay_, u);
-        return reflectAbout(V_, h.x * tangentX_ + h.y * tangentY_ + h.z * N_);
+        const glm::vec3 h = sampleGgxAnisoVisibleNormal(v, disney_->ax, disney_->ay, u);
+        return reflectAbout(V_, h.x * disney_->tangentX + h.y * disney_->tangentY + h.z * N_);
     }
     const glm::vec3 v = frame_.toLocal(V_);
     if (v.z <= 0.0f) return glm::vec3(0.0f);
@@ -178,7 +188,7 @@ std::optional<BsdfSample> PathBsdf::sample(const glm::vec3& u) const {
     else if (pick < pDiffuse_ + pSpecular_)
         out.wi = sampleSpecular(uv);
     else
-        out.wi = reflectAbout(V_, frame_.toWorld(sampleGtr1Normal(uv, coatAlpha_)));
+        out.wi = reflectAbout(V_, frame_.toWorld(sampleGtr1Normal(uv, disney_->coatAlpha)));
     // Directions under the shading or the geometric surface carry nothing back (f is 0 there, or the ray
     // would start inside the object).
     if (!(glm::dot(out.wi, N_) > 0.0f) || !(glm::dot(out.wi, Nf_) > 0.0f)) return std::nullopt;

@@ -52,9 +52,11 @@ public:
 
 private:
     float specularPdf(const glm::vec3& wi) const;
-    float coatPdf(const glm::vec3& wi) const;
+    // Out of line: the other models' pdf() and evalCos() stay as small, and as inlined, as they were without disney.
+    [[gnu::noinline]] float coatPdf(const glm::vec3& wi) const;
+    [[gnu::noinline]] glm::vec3 evalCosDisney(const glm::vec3& wi) const;
     glm::vec3 toTangentFrame(const glm::vec3& v) const {
-        return {glm::dot(v, tangentX_), glm::dot(v, tangentY_), glm::dot(v, N_)};
+        return {glm::dot(v, disney_->tangentX), glm::dot(v, disney_->tangentY), glm::dot(v, N_)};
     }
     glm::vec3 sampleSpecular(glm::vec2 u) const;
     void pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const;
@@ -65,14 +67,17 @@ private:
     float s_;               // exponent, or roughness under pbr
     float alpha_ = 0.0f;    // pbr: GGX α
     glm::vec3 specScale_{1.0f};
-    // disney only (set by the constructor under that model): its inputs to shadeLightDisney, the anisotropic
-    // lobe's tangents (anisotropyTangent and N × it), its widths and the clearcoat's GTR1 width.
-    glm::vec3 baseColor_{0.0f};
-    float metallic_ = 0.0f;
-    glm::vec4 disney0_{0.0f}, disney1_{0.0f};
-    glm::vec3 tangentX_{0.0f}, tangentY_{0.0f};
-    float ax_ = 0.0f, ay_ = 0.0f;
-    float coatAlpha_ = 0.0f;
+    // disney only (made by the constructor under that model): its inputs to shadeLightDisney, the anisotropic
+    // lobe's tangents (anisotropyTangent and N × it), its widths and the clearcoat's GTR1 width. Absent under the
+    // other models, which then pay nothing for it.
+    struct DisneyLobes {
+        glm::vec3 baseColor;
+        float metallic;
+        glm::vec4 params0, params1;
+        glm::vec3 tangentX, tangentY;
+        float ax, ay, coatAlpha;
+    };
+    std::optional<DisneyLobes> disney_;
     int model_;
     bool diffuseOn_, specularOn_;
     glm::vec3 kr_{0.0f}, kt_{0.0f};
