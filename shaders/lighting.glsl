@@ -205,7 +205,8 @@ SL_FN vec3 anisotropyTangent(vec3 N) {
 // (fixed F0 = 0.04, Smith width 0.25). d0 = (subsurface, specular, specularTint, anisotropic), d1 = (sheen,
 // sheenTint, clearcoat, clearcoatGloss). diffuseOn: diffuse, subsurface and sheen; specularOn: specular and
 // clearcoat. Unlike disney.brdf, N·V is clamped to 1e-4 (as specularGGX), so interpolated normals facing
-// slightly away keep their diffuse light. N, L, V need not be unit.
+// slightly away keep their diffuse light; an isotropic lobe (anisotropic 0) is evaluated as the GGX it equals,
+// with no tangent, and a coat of 0 not at all. N, L, V need not be unit.
 SL_FN vec3 shadeLightDisney(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 baseColor, float metallic, float roughness, vec4 d0,
                             vec4 d1, bool diffuseOn, bool specularOn, vec3 specScale) {
     N = normalize(N);
@@ -232,17 +233,28 @@ SL_FN vec3 shadeLightDisney(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 baseColor, flo
         f = ((1.0f / SL_PI) * mix(Fd, ss, d0.x) * baseColor + sheen) * (1.0f - metallic);
     }
     if (specularOn) {
-        vec3 X = anisotropyTangent(N);
-        vec3 Y = cross(N, X);
         vec2 a = disneyAnisoAlpha(roughness, d0.w);
-        float Ds = D_GTR2Aniso(NoH, dot(H, X), dot(H, Y), a.x, a.y);
-        float Gs = smithGGXAniso(NoL, dot(L, X), dot(L, Y), a.x, a.y) * smithGGXAniso(NoV, dot(V, X), dot(V, Y), a.x, a.y);
-        vec3 Fs = mix(disneySpecularF0(baseColor, metallic, d0.y, d0.z), vec3(1.0f), FH);
         vec3 NxH = cross(N, H);
-        float Dr = D_GTR1(NoH, dot(NxH, NxH), disneyClearcoatAlpha(d1.w));
-        float Gr = smithGGXSeparable(NoL, 0.25f) * smithGGXSeparable(NoV, 0.25f);
-        float Fr = mix(0.04f, 1.0f, FH);
-        f = f + (Gs * Ds) * Fs * specScale + vec3(0.25f * d1.z * Gr * Fr * Dr);
+        float Ds;
+        float Gs;
+        if (d0.w > 0.0f) {
+            vec3 X = anisotropyTangent(N);
+            vec3 Y = cross(N, X);
+            Ds = D_GTR2Aniso(NoH, dot(H, X), dot(H, Y), a.x, a.y);
+            Gs = smithGGXAniso(NoL, dot(L, X), dot(L, Y), a.x, a.y) * smithGGXAniso(NoV, dot(V, X), dot(V, Y), a.x, a.y);
+        } else {
+            // Isotropic: GTR2 with ax = ay is GGX, (H·X)² + (H·Y)² = |N × H|², and no tangent is needed.
+            Ds = D_GGX(NoH, dot(NxH, NxH), a.x);
+            Gs = smithGGXSeparable(NoL, a.x) * smithGGXSeparable(NoV, a.x);
+        }
+        vec3 Fs = mix(disneySpecularF0(baseColor, metallic, d0.y, d0.z), vec3(1.0f), FH);
+        f = f + (Gs * Ds) * Fs * specScale;
+        if (d1.z > 0.0f) {
+            float Dr = D_GTR1(NoH, dot(NxH, NxH), disneyClearcoatAlpha(d1.w));
+            float Gr = smithGGXSeparable(NoL, 0.25f) * smithGGXSeparable(NoV, 0.25f);
+            float Fr = mix(0.04f, 1.0f, FH);
+            f = f + vec3(0.25f * d1.z * Gr * Fr * Dr);
+        }
     }
     return Il * (SL_PI * NoL) * f;
 }
