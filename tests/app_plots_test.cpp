@@ -129,6 +129,23 @@ TEST(LobePlot, PolarLobesPeakAtTheMirrorDirectionAndNarrowWithRoughness) {
         widths.push_back(halfWidthAtHalfMaximum(p.curves[size_t(LobeModel::Pbr)].value, 90.0f));
     }
     EXPECT_TRUE(strictlyShrinking(widths));
+    // disney's lobe narrows with roughness too, and anisotropy widens it in the plane of incidence (which here
+    // holds the tangent along which it stretches); a coat adds its sharp peak (the label says so).
+    std::vector<float> disney;
+    for (float r : {1.0f, 0.7f, 0.5f, 0.3f, 0.2f}) {
+        settings.roughness = r;
+        disney.push_back(halfWidthAtHalfMaximum(makeLobePlot(settings).curves[size_t(LobeModel::Disney)].value, 90.0f));
+    }
+    EXPECT_TRUE(strictlyShrinking(disney));
+    settings.roughness = 0.4f;
+    const float isotropic =
+        halfWidthAtHalfMaximum(makeLobePlot(settings).curves[size_t(LobeModel::Disney)].value, 90.0f);
+    settings.disney0.w = 0.9f;
+    const float stretched =
+        halfWidthAtHalfMaximum(makeLobePlot(settings).curves[size_t(LobeModel::Disney)].value, 90.0f);
+    EXPECT_GT(stretched, 1.3f * isotropic);
+    settings.disney1.z = 1.0f;
+    EXPECT_NE(makeLobePlot(settings).curves[size_t(LobeModel::Disney)].label.find("+ coat"), std::string::npos);
     // The probe's vectors in the plane of incidence: L on the left, R its mirror, V out of the plane.
     const glm::vec3 N(0, 1, 0), L = glm::normalize(glm::vec3(-1, 1, 0)), V = glm::normalize(glm::vec3(0.5f, 1, 0.5f));
     const PlaneOfIncidence pi = planeOfIncidence(N, L, V);
@@ -143,7 +160,7 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
     settings.phongExponent = 64.0f;
     settings.roughness = 1.0f;
     const AlbedoPlot plot = makeAlbedoPlot(settings);
-    ASSERT_EQ(plot.curves.size(), 7u);
+    ASSERT_EQ(plot.curves.size(), 10u);
     for (float v : plot.curves[0].albedo) EXPECT_NEAR(v, 1.0f, 3e-3f);  // Lambert
     EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);    // Phong: 2/(s+1)
     EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);   // normalised
@@ -154,6 +171,20 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
         if (plot.viewAngles[i] <= 75.0f) {
             EXPECT_NEAR(plot.curves[6].albedo[i], 1.0f, 0.015f) << plot.viewAngles[i];
         }
+    // disney: its diffuse keeps more than Lambert toward grazing on a rough surface (the retro-reflection), its
+    // white metal is a GGX lobe that loses more than pbr's (the separable Smith term shadows more than the
+    // height-correlated one, Heitz 2014), and the coat alone reflects a few per cent, more toward grazing.
+    EXPECT_EQ(plot.curves[7].label, "Disney diffuse, white");
+    EXPECT_GT(plot.curves[7].albedo.back(), plot.curves[7].albedo.front());
+    EXPECT_GT(plot.curves[7].albedo.back(), 1.0f);
+    for (size_t i = 0; i < plot.viewAngles.size(); ++i) {
+        EXPECT_LT(plot.curves[8].albedo[i], 0.999f);
+        EXPECT_LE(plot.curves[8].albedo[i], plot.curves[5].albedo[i] + 1e-3f) << plot.viewAngles[i];
+        EXPECT_GT(plot.curves[8].albedo[i], 0.6f * plot.curves[5].albedo[i]) << plot.viewAngles[i];
+    }
+    EXPECT_GT(plot.curves[9].albedo.front(), 0.005f);
+    EXPECT_LT(plot.curves[9].albedo.front(), 0.05f);
+    EXPECT_GT(plot.curves[9].albedo.back(), plot.curves[9].albedo.front());
     // The hook: a curve from any shade function.
     AlbedoPlot copy = plot;
     addAlbedoCurve(copy, "half Lambert",

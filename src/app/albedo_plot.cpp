@@ -71,6 +71,24 @@ AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& in) {
             return (I.x + I.y + I.z) / 3.0f;
         },
         true);
+    // disney (Burley 2012): each lobe of shadeLightDisney alone, at the material's roughness and coat gloss.
+    const vec4 d0(0.0f, 0.5f, 0.0f, 0.0f), d1(0.0f, 0.5f, 0.0f, plot.settings.clearcoatGloss);
+    const vec4 coat(0.0f, 0.5f, 1.0f, plot.settings.clearcoatGloss);
+    const auto disney = [r](float metallic, vec4 a, vec4 b, bool diffuse, bool specular) {
+        return [=](const vec3& L, const vec3& V) {
+            const vec3 I = shadeLightDisney(vec3(0.0f, 0.0f, 1.0f), L, V, vec3(1.0f), vec3(1.0f), metallic, r, a, b,
+                                            diffuse, specular, vec3(1.0f));
+            return (I.x + I.y + I.z) / 3.0f;
+        };
+    };
+    std::snprintf(label, sizeof label, "Disney diffuse, white");
+    addAlbedoCurve(plot, label, disney(0.0f, d0, d1, true, false));
+    std::snprintf(label, sizeof label, "Disney metal, white");
+    addAlbedoCurve(plot, label, disney(1.0f, d0, d1, false, true));
+    // The coat alone: a black metal's specular with the coat on, less the same without it.
+    const auto withCoat = disney(0.0f, d0, coat, false, true), without = disney(0.0f, d0, d1, false, true);
+    std::snprintf(label, sizeof label, "Disney clearcoat");
+    addAlbedoCurve(plot, label, [=](const vec3& L, const vec3& V) { return withCoat(L, V) - without(L, V); });
     return plot;
 }
 

@@ -1,4 +1,4 @@
-// makeLobePlot: the four specular lobes in the plane of incidence, from the shared shading functions.
+// makeLobePlot: the five specular lobes in the plane of incidence, from the shared shading functions.
 #include "app/lobe_plot.h"
 
 #include "app/specular_lobe.h"
@@ -29,6 +29,11 @@ float lobeValue(LobeModel model, float parameter, const LobePlotSettings& s, dou
         case LobeModel::Pbr: {
             const vec3 f0 = pbrF0(s.baseColor, s.metallic);
             const vec3 spec = SL_PI * std::max(dot(N, L), 0.0f) * specularGGX(N, L, V, f0, parameter);
+            return (spec.x + spec.y + spec.z) / 3.0f;
+        }
+        case LobeModel::Disney: {
+            const vec3 spec = shadeLightDisney(N, L, V, vec3(1.0f), s.baseColor, s.metallic, parameter, s.disney0,
+                                               s.disney1, false, true, vec3(1.0f));
             return (spec.x + spec.y + spec.z) / 3.0f;
         }
     }
@@ -79,6 +84,11 @@ LobePlot makeLobePlot(const LobePlotSettings& in) {
             case LobeModel::Pbr:
                 c.parameter = s.roughness;
                 std::snprintf(label, sizeof label, "GGX  pbr, roughness %.2f", double(s.roughness));
+                break;
+            case LobeModel::Disney:
+                c.parameter = s.roughness;
+                std::snprintf(label, sizeof label, "disney, roughness %.2f%s", double(s.roughness),
+                              s.disney1.z > 0.0f ? " + coat" : "");
                 break;
         }
         c.label = label;

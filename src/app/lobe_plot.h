@@ -5,6 +5,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <string>
 #include <vector>
 
@@ -16,14 +17,16 @@ struct LobePlotSettings {
     float roughness = 0.5f;       // pbr: perceptual roughness, α = roughness²
     float metallic = 0.0f;        // pbr
     glm::vec3 baseColor{0.7f};    // pbr: F0 = mix(0.04, baseColor, metallic)
-    float incidence = 30.0f;      // θi: the angle between N and L, [0, 89]
-    float axis = 90.0f;           // the Cartesian plot's angle axis runs from 0 to this (zoom), (0, 90]
-    int samples = 361;            // points per Cartesian curve, first at 0, last at `axis`
-    int polarSamples = 1441;      // points per polar curve, over outgoing angles −90..90
+    // disney: the material's parameters (DisneyParams::lobes0, lobes1), Burley's defaults unless set
+    glm::vec4 disney0{0.0f, 0.5f, 0.0f, 0.0f}, disney1{0.0f, 0.5f, 0.0f, 1.0f};
+    float incidence = 30.0f;  // θi: the angle between N and L, [0, 89]
+    float axis = 90.0f;       // the Cartesian plot's angle axis runs from 0 to this (zoom), (0, 90]
+    int samples = 361;        // points per Cartesian curve, first at 0, last at `axis`
+    int polarSamples = 1441;  // points per polar curve, over outgoing angles −90..90
 };
 
-enum class LobeModel { Phong, BlinnSame, BlinnEquivalent, Pbr };
-inline constexpr int kLobeModels = 4;
+enum class LobeModel { Phong, BlinnSame, BlinnEquivalent, Pbr, Disney };
+inline constexpr int kLobeModels = 5;
 
 struct LobeCurve {
     LobeModel model = LobeModel::Phong;
@@ -34,12 +37,13 @@ struct LobeCurve {
     std::vector<float> polar;  // polar: lobe / peak at outgoing angle θo, `polarSamples` points
 };
 
-// Both views of the four lobes. In the plane of incidence L lies at −θi from N and R at +θi. The Cartesian
+// Both views of the five lobes. In the plane of incidence L lies at −θi from N and R at +θi. The Cartesian
 // view follows V from R toward N and beyond: θo = θi − a for the angle a between R and V, so a runs over a
 // fixed axis [0, axis] whatever the material (so that as s grows the lobe visibly narrows). The polar view
 // sweeps V over θo ∈ [−90°, 90°] (the textbook figure: radius = lobe value). Each lobe is the specular term
 // the renderers add for one light of intensity 1 (Phong/Blinn-Phong: the lecture's term; pbr: π·f_spec·N·L,
-// the mean of its RGB), divided by its peak so the shapes compare; `peak` keeps the scale.
+// the mean of its RGB; disney: its specular and clearcoat lobes, π·f·N·L, V in the tangent's plane), divided by
+// its peak so the shapes compare; `peak` keeps the scale.
 struct LobePlot {
     LobePlotSettings settings;
     std::vector<LobeCurve> curves;    // kLobeModels curves, in LobeModel order

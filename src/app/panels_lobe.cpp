@@ -20,11 +20,12 @@ const ImU32 kLobeColors[kLobeModels] = {
     IM_COL32(120, 150, 255, 230),  // Blinn-Phong, same exponent
     IM_COL32(90, 220, 110, 200),   // Blinn-Phong, equivalent exponent
     IM_COL32(240, 100, 180, 255),  // pbr
+    IM_COL32(80, 220, 230, 255),   // disney
 };
-const float kLobeThickness[kLobeModels] = {2.0f, 2.0f, 6.0f, 2.0f};
+const float kLobeThickness[kLobeModels] = {2.0f, 2.0f, 6.0f, 2.0f, 2.0f};
 // Drawn in this order: the wide equivalent Blinn lobe first, the thin Phong lobe it matches over it.
 const LobeModel kDrawOrder[kLobeModels] = {LobeModel::BlinnEquivalent, LobeModel::BlinnSame, LobeModel::Pbr,
-                                           LobeModel::Phong};
+                                           LobeModel::Disney, LobeModel::Phong};
 const ImU32 kGrid = IM_COL32(70, 70, 80, 255);
 const ImU32 kBackground = IM_COL32(25, 25, 30, 255);
 
@@ -115,8 +116,17 @@ void drawPolar(const LobePlot& plot, const PlaneOfIncidence* probe, float width,
 }
 
 void drawAlbedo(const AlbedoPlot& plot, float width, float height, float scale) {
-    static const ImU32 colors[] = {
-        IM_COL32(170, 170, 170, 255), kLobeColors[0], kLobeColors[0], kLobeColors[2], kLobeColors[2], kLobeColors[3]};
+    // Lambert, Phong ×2, Blinn-Phong ×2, GGX ×2, then disney's diffuse, metal and coat.
+    static const ImU32 colors[] = {IM_COL32(170, 170, 170, 255),
+                                   kLobeColors[0],
+                                   kLobeColors[0],
+                                   kLobeColors[2],
+                                   kLobeColors[2],
+                                   kLobeColors[3],
+                                   kLobeColors[3],
+                                   IM_COL32(150, 200, 230, 255),
+                                   kLobeColors[4],
+                                   IM_COL32(200, 240, 250, 255)};
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     const ImVec2 p1(p0.x + width, p0.y + height);
@@ -190,6 +200,8 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     settings.roughness = m.roughness;
     settings.metallic = m.metallic;
     settings.baseColor = m.baseColor;
+    settings.disney0 = m.disney.lobes0();
+    settings.disney1 = m.disney.lobes1();
     settings.axis = f.lobeAxis;
     if (probePlane) {
         settings.incidence = probePlane->incidence;
@@ -203,7 +215,8 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     drawCartesian(plot, width, 120.0f * scale, scale);
     ImGui::TextDisabled("angle R to V; lobe / its peak; half-width at ½:");
     const float column = ImGui::GetCursorPosX() + width - ImGui::CalcTextSize("HWHM 00.0°").x;
-    for (LobeModel model : {LobeModel::Phong, LobeModel::BlinnSame, LobeModel::BlinnEquivalent, LobeModel::Pbr}) {
+    for (LobeModel model :
+         {LobeModel::Phong, LobeModel::BlinnSame, LobeModel::BlinnEquivalent, LobeModel::Pbr, LobeModel::Disney}) {
         const LobeCurve& c = plot.curves[size_t(model)];
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(kLobeColors[size_t(model)]));
         ImGui::TextUnformatted(c.label.c_str());
@@ -226,6 +239,7 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     AlbedoPlotSettings wanted;
     wanted.phongExponent = phongExponent;
     wanted.roughness = m.roughness;
+    wanted.clearcoatGloss = m.disney.clearcoatGloss;
     if (!f.albedo || !(f.albedo->settings == wanted)) f.albedo = makeAlbedoPlot(wanted);
     drawAlbedo(*f.albedo, width, 140.0f * scale, scale);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
