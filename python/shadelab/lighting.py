@@ -89,6 +89,27 @@ def pbr(N: ArrayLike, L: ArrayLike, V: ArrayLike, base_color: ArrayLike = 0.7, m
     return _shaped_vectors(_shadelab._pbr(*rows), shape)
 
 
+def disney(N: ArrayLike, L: ArrayLike, V: ArrayLike, Il: ArrayLike = 1.0, base_color: ArrayLike = 0.7,
+           metallic: ArrayLike = 0.0, roughness: ArrayLike = 0.5, *, subsurface: ArrayLike = 0.0,
+           specular: ArrayLike = 0.5, specular_tint: ArrayLike = 0.0, anisotropic: ArrayLike = 0.0,
+           sheen: ArrayLike = 0.0, sheen_tint: ArrayLike = 0.5, clearcoat: ArrayLike = 0.0,
+           clearcoat_gloss: ArrayLike = 1.0, diffuse_lobes: bool = True,
+           specular_lobes: bool = True) -> NDArray[np.float32]:
+    """Burley 2012's principled BRDF as the renderers shade one light with it: π·f(L, V)·Il·N·L, RGB
+    (docs/lighting.md, "The Disney principled BRDF"). The eight parameters are a material's "disney" fields
+    (defaults: Burley's); diffuse_lobes switches the diffuse, subsurface and sheen lobes, specular_lobes the
+    anisotropic specular and the clearcoat. The anisotropic lobe stretches along the tangent the renderers
+    take, around the world's vertical axis."""
+    params = {"subsurface": subsurface, "specular": specular, "specular_tint": specular_tint,
+              "anisotropic": anisotropic, "sheen": sheen, "sheen_tint": sheen_tint, "clearcoat": clearcoat,
+              "clearcoat_gloss": clearcoat_gloss}
+    shape, rows = _broadcast({"N": N, "L": L, "V": V, "Il": _rgb(Il), "base_color": _rgb(base_color)},
+                             {"metallic": metallic, "roughness": roughness, **params})
+    rN, rL, rV, rIl, rbase, rmetal, rrough = rows[:7]
+    return _shaped_vectors(_shadelab._disney(rN, rL, rV, rIl, rbase, rmetal, rrough, rows[7:], bool(diffuse_lobes),
+                                             bool(specular_lobes)), shape)
+
+
 def reflect_light(N: ArrayLike, L: ArrayLike) -> NDArray[np.float32]:
     """R = 2N(N·L) − L, the mirror of L about N."""
     shape, rows = _broadcast({"N": N, "L": L}, {})
@@ -105,7 +126,8 @@ def shade(N: ArrayLike, L: ArrayLike, V: ArrayLike, Il: ArrayLike = 1.0, md: Arr
           specular: bool = True) -> NDArray[np.float32]:
     """One light's contribution Il ⊙ (md·max(N·L, 0) + ms·spec), RGB, exactly as both renderers compute it
     (shadeLight). model: "phong", "blinn-phong" or "pbr" (then md is the diffuse colour, ms F0 and s the
-    roughness, and the result is π·f(L, V)·Il·N·L). Colours may be single numbers (grey)."""
+    roughness, and the result is π·f(L, V)·Il·N·L); disney() takes the disney model's own parameters.
+    Colours may be single numbers (grey)."""
     shape, rows = _broadcast({"N": N, "L": L, "V": V, "Il": _rgb(Il), "md": _rgb(md), "ms": _rgb(ms)}, {"s": s})
     rN, rL, rV, rIl, rmd, rms, rs = rows
     return _shaped_vectors(_shadelab._shade(rN, rL, rV, rIl, rmd, rms, rs, model, bool(diffuse), bool(specular)), shape)

@@ -7,6 +7,7 @@
 #include "util/input_error.h"
 
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
 #include <string>
 
@@ -84,6 +85,32 @@ void bindLighting(py::module_& m) {
         }
         return out;
     });
+    // shadeLightDisney: one light's contribution under the principled BRDF; p holds the eight parameters as rows
+    // of (subsurface, specular, specularTint, anisotropic, sheen, sheenTint, clearcoat, clearcoatGloss).
+    m.def("_disney", [](const Floats& N, const Floats& L, const Floats& V, const Floats& Il, const Floats& baseColor,
+                        const Floats& metallic, const Floats& roughness, const std::vector<Floats>& p, bool diffuse,
+                        bool specular) {
+        const size_t n = rows(N, 3, "N");
+        const auto sn = py::ssize_t(n);
+        rows(L, 3, "L", sn);
+        rows(V, 3, "V", sn);
+        rows(Il, 3, "Il", sn);
+        rows(baseColor, 3, "base_color", sn);
+        rows(metallic, 1, "metallic", sn);
+        rows(roughness, 1, "roughness", sn);
+        if (p.size() != 8) throw UsageError("disney: expected 8 parameter rows");
+        for (const Floats& q : p) rows(q, 1, "parameter", sn);
+        py::array_t<float> out({n, size_t(3)});
+        for (size_t i = 0; i < n; ++i) {
+            const shading::vec4 d0(p[0].data()[i], p[1].data()[i], p[2].data()[i], p[3].data()[i]);
+            const shading::vec4 d1(p[4].data()[i], p[5].data()[i], p[6].data()[i], p[7].data()[i]);
+            store(out.mutable_data(), i,
+                  shading::shadeLightDisney(vecAt(N.data(), i), vecAt(L.data(), i), vecAt(V.data(), i),
+                                            vecAt(Il.data(), i), vecAt(baseColor.data(), i), metallic.data()[i],
+                                            roughness.data()[i], d0, d1, diffuse, specular, shading::vec3(1.0f)));
+        }
+        return out;
+    });
     // shadeLight: one light's whole contribution under any model (pbr reads md, ms, s as its diffuse colour, F0
     // and roughness, as the renderers hand them over).
     m.def("_shade", [](const Floats& N, const Floats& L, const Floats& V, const Floats& Il, const Floats& md,
@@ -92,6 +119,8 @@ void bindLighting(py::module_& m) {
         if (!named)
             throw UsageError("model: unknown shading model '" + model + "'; expected " +
                              nameChoices(kShadingModelNames));
+        if (*named == ShadingModel::Disney)
+            throw UsageError("model: disney reads more than md, ms and s: use shadelab.lighting.disney()");
         const size_t n = rows(N, 3, "N");
         const auto sn = py::ssize_t(n);
         rows(L, 3, "L", sn);

@@ -196,7 +196,7 @@ def test_controls_exist(app):
     })""")
     assert set(SCENES) <= set(dom["scenes"]), dom
     assert sorted(dom["steps"]) == list("012345"), dom
-    assert set(dom["models"]) >= {"phong", "blinn-phong", "pbr"}, dom
+    assert set(dom["models"]) >= {"phong", "blinn-phong", "pbr", "disney"}, dom
     assert dom["shininess"] == ["range", "0", "11"], dom
     assert dom["file"] == "file", dom
 
