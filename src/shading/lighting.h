@@ -19,7 +19,6 @@ using glm::cross;
 using glm::dot;
 using glm::floor;
 using glm::length;
-using glm::log;
 using glm::max;
 using glm::min;
 using glm::mix;

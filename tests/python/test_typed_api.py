@@ -268,6 +268,7 @@ _TYPES = {
     "numpy.ndarray[numpy.float32]": {"ArrayLike", "NDArray[np.float32]"},
     "shadelab._shadelab.Image": {"Image"}, "shadelab._shadelab._Scene": {"_Scene"},
     "tuple": {"tuple[...]"}, "dict": {"dict[...]"}, "handle": {"dict[...]"},
+    "List[numpy.ndarray[numpy.float32]]": {"list[...]"},
     # What the binding returns as a py::object, or takes as one to check its type itself (a one-line TypeError).
     "object": {"dict[...]", "NDArray[np.uint32] | None", "StrPath", "EncodingName", "MemorySize | None",
                "ExrPrecisionName | None", "tuple[...]", "ArrayLike"},
