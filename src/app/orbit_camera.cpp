@@ -2,6 +2,7 @@
 #include "app/orbit_camera.h"
 
 #include "scene/scene_limits.h"
+#include "scene/view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,7 +68,7 @@ void orbitPan(OrbitCamera& o, float dx, float dy, float viewportHeight) {
     const glm::vec3 right = glm::normalize(glm::cross(forward, o.up));
     const glm::vec3 camUp = glm::cross(right, forward);
     // World units per pixel at the target's depth.
-    const float scale = 2.0f * o.distance * std::tan(glm::radians(o.fovY) * 0.5f) / viewportHeight;
+    const float scale = 2.0f * o.distance * tanHalfFov(o.fovY) / viewportHeight;
     o.target += (-dx * right + dy * camUp) * scale;
 }
 

@@ -5,6 +5,7 @@
 #include "scene/environment_load.h"
 #include "scene/gltf/gltf_import.h"
 #include "scene/scene_json.h"
+#include "scene/view.h"
 #include "util/input_error.h"
 #include "util/read_file.h"
 
@@ -92,7 +93,7 @@ Camera frameBounds(const Bounds& b, float fovY) {
     const glm::vec3 w = glm::normalize(glm::vec3(0.3f, 0.35f, 1.0f));  // from the centre toward the eye
     const glm::vec3 r = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), w));
     const glm::vec3 u = glm::cross(w, r);
-    const float tanY = std::tan(0.5f * glm::radians(fovY)), tanX = tanY * kFrameAspect;
+    const float tanY = tanHalfFov(fovY), tanX = tanY * kFrameAspect;  // as the page's build computes it
     float distance = 0.0f;
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 corner((i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z);

@@ -19,7 +19,7 @@ ViewSetup makeViewSetup(const Scene& scene, int width, int height) {
     v.forward = glm::normalize(c.target - c.position);
     v.right = glm::normalize(glm::cross(v.forward, c.up));
     v.up = glm::cross(v.right, v.forward);
-    v.tanHalfFovY = std::tan(glm::radians(c.fovY) * 0.5f);
+    v.tanHalfFovY = tanHalfFov(c.fovY);
 
     // Near plane: half the distance to the nearest bounded geometry, but never so small that depth
     // precision collapses. Planes are unbounded and ride on the infinite far plane.
