@@ -278,6 +278,7 @@ SL_FN vec3 shadeLightDisney(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 baseColor, flo
 // returns π·f(L,V)·Il·N·L (design.md §7): π·Fd_Lambert() = 1, so its diffuse term is the lecture's md·N·L,
 // taken by (1 − F) under the specular layer (glTF 2.0 Appendix B, fresnel_mix) when that layer is on.
 // specScale multiplies the pbr specular lobe: energyCompensation(), or vec3(1) (shadeLight) for none.
+// Not for SL_MODEL_DISNEY, which reads more than md, ms and s: shadeLightModel sends it to shadeLightDisney.
 SL_FN vec3 shadeLightScaled(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 ms, float s, int model,
                             bool diffuseOn, bool specularOn, vec3 specScale) {
     N = normalize(N);

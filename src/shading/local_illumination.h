@@ -48,13 +48,6 @@ inline SurfaceParams surfaceParams(int model, vec3 ma, vec3 md, vec3 ms, float s
     return {ma, pbrDiffuseColor(baseColor, metallic), pbrF0(baseColor, metallic), roughness};
 }
 
-// shadeLightModel with the coefficients of `m`.
-inline vec3 shadeLightWith(vec3 N, vec3 L, vec3 V, vec3 Il, const SurfaceParams& m, int model, bool diffuseOn,
-                           bool specularOn) {
-    return shadeLightModel(N, L, V, Il, m.md, m.ms, m.s, model, diffuseOn, specularOn, m.specScale, m.baseColor,
-                           m.metallic, m.disney0, m.disney1);
-}
-
 struct TermFlags {
     bool ambient = true, diffuse = true, specular = true;
 };

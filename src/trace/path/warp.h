@@ -4,6 +4,8 @@
 // the lobe axis along +z.
 #pragma once
 
+#include "shading/lighting.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -95,18 +97,13 @@ inline float ggxVisibleNormalPdf(const glm::vec3& v, const glm::vec3& h, float a
     return ggxG1(v.z, alpha) * std::max(0.0f, glm::dot(v, h)) * ggxD(h.z, alpha) / v.z;
 }
 
-// Anisotropic GGX with widths (ax, ay) along the local x and y axes: D(h) = 1 / (π ax ay (hx²/ax² + hy²/ay² + hz²)²)
-// (Burley 2012, eq. 13) and Smith's G1 with Λ from the projected width (Heitz 2014, eq. 86).
+// Anisotropic GGX with widths (ax, ay) along the local x and y axes: lighting.glsl's D_GTR2Aniso (Burley 2012,
+// eq. 13) and Smith's G1 = 2 cos θ · smithGGXAniso (Heitz 2014, eq. 86), in the local frame.
 inline float ggxAnisoD(const glm::vec3& h, float ax, float ay) {
-    if (h.z <= 0.0f) return 0.0f;
-    const float x = h.x / ax, y = h.y / ay;
-    const float d = x * x + y * y + h.z * h.z;
-    return 1.0f / (kPi * ax * ay * d * d);
+    return h.z > 0.0f ? shading::D_GTR2Aniso(h.z, h.x, h.y, ax, ay) : 0.0f;
 }
 inline float ggxAnisoG1(const glm::vec3& v, float ax, float ay) {
-    if (v.z <= 0.0f) return 0.0f;
-    const float x = v.x * ax, y = v.y * ay;
-    return 2.0f * v.z / (v.z + std::sqrt(x * x + y * y + v.z * v.z));
+    return v.z > 0.0f ? 2.0f * v.z * shading::smithGGXAniso(v.z, v.x, v.y, ax, ay) : 0.0f;
 }
 
 // Heitz 2018 with two widths: the hemisphere configuration stretches x by ax and y by ay, and the sampled normal
@@ -130,12 +127,10 @@ inline float ggxAnisoVisibleNormalPdf(const glm::vec3& v, const glm::vec3& h, fl
 }
 
 // Burley 2012, Appendix B: GTR1 (the clearcoat's distribution, γ = 1) by its cos θh,
-// cos² θh = (1 − α^(2(1 − u))) / (1 − α²); density D(h)·cos θh over the micro-normal's solid angle.
+// cos² θh = (1 − α^(2(1 − u))) / (1 − α²); density D(h)·cos θh (lighting.glsl's D_GTR1) over the micro-normal's
+// solid angle.
 inline float gtr1D(float cosThetaH, float alpha) {
-    if (cosThetaH <= 0.0f) return 0.0f;
-    if (alpha >= 1.0f) return 1.0f / kPi;
-    const float a2 = alpha * alpha;
-    return (a2 - 1.0f) / (kPi * std::log(a2) * (1.0f + (a2 - 1.0f) * cosThetaH * cosThetaH));
+    return cosThetaH > 0.0f ? shading::D_GTR1(cosThetaH, 1.0f - cosThetaH * cosThetaH, alpha) : 0.0f;
 }
 inline glm::vec3 sampleGtr1Normal(glm::vec2 u, float alpha) {
     const float a2 = std::min(alpha * alpha, 0.9999f);
