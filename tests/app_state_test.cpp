@@ -120,6 +120,14 @@ TEST(AppState, MeshPbrEditsGoToTheOverride) {
     for (const MeshPart& p : mesh.parts) EXPECT_EQ(p.material.roughness, 0.125f);
     const Scene back = parseSceneJson(sceneToJson(s.scene), path);
     EXPECT_EQ(back.meshes[0].material.roughness, 0.125f);
+    // disney's parameters too (its panel sliders): the edited one only, on every part, and saved.
+    m = objectMaterial(s.scene, torus);
+    m.disney.sheen = 0.75f;
+    ASSERT_TRUE(setObjectMaterial(s, torus, m));
+    EXPECT_EQ(mesh.material.disney.value[4], 0.75f);  // kDisneyFields[4] is sheen
+    EXPECT_FALSE(mesh.material.disney.value[0].has_value());
+    for (const MeshPart& p : mesh.parts) EXPECT_EQ(p.material.disney.sheen, 0.75f);
+    EXPECT_EQ(parseSceneJson(sceneToJson(s.scene), path).meshes[0].material.disney.value[4], 0.75f);
 }
 
 TEST(AppState, PresetsComeFromTheClassicTable) {

@@ -38,6 +38,10 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
     if (m.roughness != before.roughness) o.roughness = m.roughness;
     if (m.emission != before.emission) o.emission = m.emission;
     if (m.model != before.model) o.model = m.model;  // back to the scene's model too
+    for (int i = 0; i < kDisneyFieldCount; ++i) {
+        const float DisneyParams::*field = kDisneyFields[i].member;
+        if (m.disney.*field != before.disney.*field) o.disney.value[i] = m.disney.*field;
+    }
     for (MeshPart& p : mesh.parts) {
         o.applyTo(p.material);
         p.material.model = o.model;
