@@ -116,14 +116,22 @@ glm::vec3 PathBsdf::evalCosDisney(const glm::vec3& wi) const {
            (1.0f / kPi);
 }
 
-float PathBsdf::specularPdf(const glm::vec3& wi) const {
-    if (model_ == shading::SL_MODEL_PHONG) return powerCosinePdf(glm::dot(wi, reflectAbout(V_, N_)), s_);
+// The half vector of wi and V and V·H, for the densities of lobes sampled by their micro-normals (the reflection's
+// Jacobian is 1 / (4 V·H)); false where there is none (wi = −V) or V·H <= 0.
+bool PathBsdf::halfVector(const glm::vec3& wi, glm::vec3& H, float& VoH) const {
     const glm::vec3 h = wi + V_;
     const float len = glm::length(h);
-    if (!(len > 0.0f)) return 0.0f;
-    const glm::vec3 H = h / len;
-    const float VoH = glm::dot(V_, H);
-    if (VoH <= 0.0f) return 0.0f;
+    if (!(len > 0.0f)) return false;
+    H = h / len;
+    VoH = glm::dot(V_, H);
+    return VoH > 0.0f;
+}
+
+float PathBsdf::specularPdf(const glm::vec3& wi) const {
+    if (model_ == shading::SL_MODEL_PHONG) return powerCosinePdf(glm::dot(wi, reflectAbout(V_, N_)), s_);
+    glm::vec3 H;
+    float VoH;
+    if (!halfVector(wi, H, VoH)) return 0.0f;
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return powerCosinePdf(glm::dot(N_, H), s_) / (4.0f * VoH);
     if (model_ == shading::SL_MODEL_DISNEY)
         return ggxAnisoVisibleNormalPdf(toTangentFrame(V_), toTangentFrame(H), disney_->ax, disney_->ay) / (4.0f * VoH);
@@ -132,12 +140,9 @@ float PathBsdf::specularPdf(const glm::vec3& wi) const {
 
 // The clearcoat's density: GTR1's normal density over the reflection's Jacobian 1 / (4 V·H).
 float PathBsdf::coatPdf(const glm::vec3& wi) const {
-    const glm::vec3 h = wi + V_;
-    const float len = glm::length(h);
-    if (!(len > 0.0f)) return 0.0f;
-    const glm::vec3 H = h / len;
-    const float VoH = glm::dot(V_, H);
-    if (VoH <= 0.0f) return 0.0f;
+    glm::vec3 H;
+    float VoH;
+    if (!halfVector(wi, H, VoH)) return 0.0f;
     return gtr1NormalPdf(glm::dot(N_, H), disney_->coatAlpha) / (4.0f * VoH);
 }
 

@@ -51,6 +51,7 @@ public:
     bool hasSmooth() const { return pDiffuse_ + pSpecular_ + pCoat_ > 0.0f; }
 
 private:
+    bool halfVector(const glm::vec3& wi, glm::vec3& H, float& VoH) const;
     float specularPdf(const glm::vec3& wi) const;
     // Out of line: the other models' pdf() and evalCos() stay as small, and as inlined, as they were without disney.
     [[gnu::noinline]] float coatPdf(const glm::vec3& wi) const;

@@ -77,21 +77,8 @@ inline float ggxG1(float cosTheta, float alpha) {
     return 2.0f * cosTheta / (cosTheta + std::sqrt(a2 + (1.0f - a2) * cosTheta * cosTheta));
 }
 
-// Heitz 2018, "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)): a micro-normal h seen from
-// local direction v (v.z > 0) with density D_v(h) = G1(v) max(0, v·h) D(h) / v.z.
-inline glm::vec3 sampleGgxVisibleNormal(const glm::vec3& v, float alpha, glm::vec2 u) {
-    const glm::vec3 vh = glm::normalize(glm::vec3(alpha * v.x, alpha * v.y, v.z));  // hemisphere configuration
-    const float lensq = vh.x * vh.x + vh.y * vh.y;
-    const glm::vec3 t1 = lensq > 0.0f ? glm::vec3(-vh.y, vh.x, 0.0f) / std::sqrt(lensq) : glm::vec3(1.0f, 0.0f, 0.0f);
-    const glm::vec3 t2 = glm::cross(vh, t1);
-    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
-    const float p1 = r * std::cos(phi);
-    float p2 = r * std::sin(phi);
-    const float s = 0.5f * (1.0f + vh.z);
-    p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
-    const glm::vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
-    return glm::normalize(glm::vec3(alpha * nh.x, alpha * nh.y, std::max(1e-6f, nh.z)));
-}
+// Heitz 2018, "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)): sampleGgxVisibleNormal (below)
+// draws a micro-normal h seen from local direction v (v.z > 0) with density D_v(h) = G1(v) max(0, v·h) D(h) / v.z.
 inline float ggxVisibleNormalPdf(const glm::vec3& v, const glm::vec3& h, float alpha) {
     if (v.z <= 0.0f) return 0.0f;
     return ggxG1(v.z, alpha) * std::max(0.0f, glm::dot(v, h)) * ggxD(h.z, alpha) / v.z;
@@ -120,6 +107,10 @@ inline glm::vec3 sampleGgxAnisoVisibleNormal(const glm::vec3& v, float ax, float
     p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
     const glm::vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
     return glm::normalize(glm::vec3(ax * nh.x, ay * nh.y, std::max(1e-6f, nh.z)));
+}
+// The isotropic sampler is the anisotropic one with equal widths: the same operations, the same bits.
+inline glm::vec3 sampleGgxVisibleNormal(const glm::vec3& v, float alpha, glm::vec2 u) {
+    return sampleGgxAnisoVisibleNormal(v, alpha, alpha, u);
 }
 inline float ggxAnisoVisibleNormalPdf(const glm::vec3& v, const glm::vec3& h, float ax, float ay) {
     if (v.z <= 0.0f) return 0.0f;
