@@ -2,14 +2,16 @@
 // the perspective cameras, and metallic-roughness → Phong (docs/gltf-import.md). Reading the file is
 // gltf_file.cpp; accessor bytes are read, bounds-checked, by gltf_accessors.cpp.
 //
-// Node transforms, triangulation and generated normals are gltf_geometry.cpp; materials gltf_materials.cpp.
-// Sections: 1. the importer: hierarchy walk, meshes, lights, camera   2. public functions
+// Node transforms, triangulation and generated normals are gltf_geometry.cpp; materials gltf_materials.cpp;
+// a node's camera and light gltf_lights_cameras.cpp.
+// Sections: 1. the importer: hierarchy walk, meshes   2. public functions
 #include "scene/gltf/gltf_import.h"
 
 #include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf/gltf_file.h"
 #include "scene/gltf/gltf_geometry.h"
 #include "scene/gltf/gltf_instancing.h"
+#include "scene/gltf/gltf_lights_cameras.h"
 #include "scene/gltf/gltf_materials.h"
 #include "scene/gltf/gltf_textures.h"
 #include "scene/gltf/gltf_values.h"
@@ -174,8 +176,15 @@ private:
         const glm::dmat4 world = parent * localMatrix(node, place, file_, out_.warnings);
         if (node.skin >= 0) warnOnce("skins are ignored (meshes are placed by their node transform)");
         if (node.mesh >= 0) addMesh(node, place, world);
-        if (node.camera >= 0) addCamera(node, place, world);
-        if (node.extensions.count("KHR_lights_punctual")) addLight(node, place, world);
+        const gltf::Warn warn = [this](const std::string& line) { warnOnce(line); };
+        if (node.camera >= 0)
+            if (std::optional<Camera> c = gltf::importCamera(model_, node, file_, place, world, warn))
+                out_.cameras.push_back(*c);
+        if (node.extensions.count("KHR_lights_punctual"))
+            if (std::optional<gltf::ImportedLight> l = gltf::importLight(model_, node, file_, place, world, warn)) {
+                lightIntensities_.push_back(l->intensity);
+                out_.lights.push_back(std::move(l->light));
+            }
         for (int child : node.children) {
             checkNode(child, place + ".children");
             visit(size_t(child), world, depth + 1);
@@ -373,99 +382,6 @@ private:
             throw InputError(file_, where,
                              "the model needs more than the limit of " + std::to_string(limits_.maxMeshBytes) +
                                  " bytes of geometry");
-    }
-
-    void addCamera(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {
-        if (size_t(node.camera) >= model_.cameras.size())
-            throw InputError(file_, place,
-                             "camera " + std::to_string(node.camera) + " out of range (" +
-                                 std::to_string(model_.cameras.size()) + " cameras)");
-        const tinygltf::Camera& gc = model_.cameras[size_t(node.camera)];
-        const std::string cameraPlace = indexed("cameras", size_t(node.camera));
-        if (gc.type != "perspective") {
-            warnOnce(cameraPlace + ": " + gc.type + " camera skipped (only perspective cameras are imported)");
-            return;
-        }
-        // glTF cameras look down their node's -Z with +Y up (glTF 2.0 spec, "Cameras").
-        Camera c;
-        c.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
-        const glm::dmat3 linear(world);
-        c.target = c.position + direction(linear * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, 0.0f, -1.0f));
-        c.up = direction(linear * glm::dvec3(0.0, 1.0, 0.0), glm::vec3(0.0f, 1.0f, 0.0f));
-        const double yfov = gc.perspective.yfov;
-        if (std::isfinite(yfov) && yfov > 0.0 && yfov < glm::pi<double>()) {
-            c.fovY = float(glm::degrees(yfov));
-        } else {
-            c.fovY = 45.0f;
-            warnOnce(cameraPlace + ": yfov " + std::to_string(yfov) + " out of (0, pi); using 45 degrees");
-        }
-        out_.cameras.push_back(c);
-    }
-
-    void addLight(const tinygltf::Node& node, const std::string& place, const glm::dmat4& world) {
-        const std::string extPlace = place + ".extensions.KHR_lights_punctual";
-        const tinygltf::Value& ext = node.extensions.at("KHR_lights_punctual");
-        const double index = numberOr(ext, "light", -1.0);
-        if (!(index >= 0.0 && index < double(model_.lights.size())))
-            throw InputError(file_, extPlace,
-                             "light " + std::to_string(index) + " out of range (" +
-                                 std::to_string(model_.lights.size()) + " lights)");
-        const tinygltf::Light& gl = model_.lights[size_t(index)];
-        const std::string lightPlace = indexed("KHR_lights_punctual.lights", size_t(index));
-        Light l;
-        l.name = gl.name.empty() ? node.name : gl.name;
-        const glm::dmat3 linear(world);
-        if (gl.type == "directional") {
-            l.type = LightType::Directional;
-            l.direction = direction(linear * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, -1.0f, 0.0f));
-        } else if (gl.type == "point" || gl.type == "spot") {
-            l.type = gl.type == "spot" ? LightType::Spot : LightType::Point;
-            l.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
-            // A spot shines along its node's −Z, as a directional light does; scale leaves the cone alone.
-            if (l.type == LightType::Spot) {
-                l.direction = direction(linear * glm::dvec3(0.0, 0.0, -1.0), glm::vec3(0.0f, -1.0f, 0.0f));
-                addCone(gl.spot, lightPlace, l);
-            }
-            // range: > 0 where given (the spec's "Must be > 0"), absent is infinite; anything else is dropped.
-            if (std::isfinite(gl.range) && gl.range > 0.0) {
-                l.range = float(std::min(gl.range, double(kMaxCoordinate)));
-            } else if (gl.range != 0.0) {
-                warnOnce(lightPlace + ": range " + std::to_string(gl.range) + " is not > 0; the light has no range");
-            }
-        } else {
-            warnOnce(lightPlace + ": unknown light type \"" + gl.type + "\" skipped");
-            return;
-        }
-        l.color = gl.color.size() >= 3 ? glm::vec3(finiteClamp(gl.color[0], 0.0f, kMaxRadiance, 1.0f),
-                                                   finiteClamp(gl.color[1], 0.0f, kMaxRadiance, 1.0f),
-                                                   finiteClamp(gl.color[2], 0.0f, kMaxRadiance, 1.0f))
-                                       : glm::vec3(1.0f);
-        lightIntensities_.push_back(finiteClamp(gl.intensity, 0.0f, 1e30f, 1.0f));
-        out_.lights.push_back(std::move(l));
-    }
-
-    // KHR_lights_punctual's cone: 0 <= innerConeAngle < outerConeAngle <= π/2 (defaults 0 and π/4). A value
-    // outside [0, π/2] is clamped into it, and an inner angle past the outer one is lowered to it, with a warning.
-    void addCone(const tinygltf::SpotLight& spot, const std::string& lightPlace, Light& l) {
-        const auto angle = [&](double a, float fallback, const char* name) {
-            if (std::isfinite(a) && a >= 0.0 && a <= double(kMaxConeAngle)) return float(a);
-            const float clamped = std::isfinite(a) ? float(std::clamp(a, 0.0, double(kMaxConeAngle))) : fallback;
-            warnOnce(lightPlace + ".spot." + name + ": " + std::to_string(a) + " outside [0, pi/2]; using " +
-                     std::to_string(clamped));
-            return clamped;
-        };
-        l.innerConeAngle = angle(spot.innerConeAngle, kDefaultInnerConeAngle, "innerConeAngle");
-        l.outerConeAngle = angle(spot.outerConeAngle, kDefaultOuterConeAngle, "outerConeAngle");
-        if (l.innerConeAngle > l.outerConeAngle) {
-            warnOnce(lightPlace + ".spot.innerConeAngle: " + std::to_string(l.innerConeAngle) +
-                     " exceeds outerConeAngle; using " + std::to_string(l.outerConeAngle));
-            l.innerConeAngle = l.outerConeAngle;
-        }
-    }
-
-    static glm::vec3 direction(const glm::dvec3& d, const glm::vec3& fallback) {
-        const double len = glm::length(d);
-        return len > 1e-12 && std::isfinite(len) ? glm::vec3(d / len) : fallback;
     }
 
     const tinygltf::Model& model_;
