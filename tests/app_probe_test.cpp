@@ -116,6 +116,40 @@ TEST(AppState, ProbeReportsShadowRayVisibility) {
     EXPECT_EQ(j["lights"][0]["visibility"].get<float>(), 0.0f);
 }
 
+// disney: each light's four lobe parts sum to its term, and with the ambient to the shared shadeLocal's total;
+// its F0 is disney's own (specular 1, tinted), not pbr's; the report carries both. Control: disney is not pbr.
+TEST(AppState, ProbeDisneyLobesSumToTheSharedShading) {
+    ViewerState s = defaultState();
+    setModel(s, ShadingModel::Disney);
+    const int w = 640, h = 360;
+    const uint32_t green = idOf(s, "matte green");
+    Sphere& sphere = s.scene.spheres[green - 1];
+    sphere.material.roughness = 0.4f;
+    sphere.material.disney = {0.5f, 1.0f, 0.6f, 0.7f, 1.0f, 0.5f, 1.0f, 0.5f};
+    const glm::ivec2 px = pixelOf(s.scene, w, h, sphere.center + glm::vec3(0.3f, 0.3f, 0.0f));
+    const ProbeResult p = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    ASSERT_TRUE(p.hit);
+    const Material& m = sphere.material;
+    EXPECT_EQ(p.disneyF0, shading::disneySpecularF0(m.baseColor, m.metallic, 1.0f, 0.6f));
+    EXPECT_GT(glm::length(p.disneyF0 - p.pbrF0), 1e-3f);
+    glm::vec3 sum = p.ambient;
+    for (size_t i = 0; i < p.lights.size(); ++i) {
+        const ProbeLight& l = p.lights[i];
+        const glm::vec3 one =
+            shading::shadeLightDisney(p.N, l.L, p.V, l.Il, m.baseColor, m.metallic, m.roughness, m.disney.lobes0(),
+                                      m.disney.lobes1(), true, true, glm::vec3(1.0f));
+        const glm::vec3 parts = l.diffuseDisney + l.sheenDisney + l.specularDisney + l.clearcoatDisney;
+        EXPECT_NEAR(glm::length(parts - l.visibility * one), 0.0f, 1e-5f) << i;
+        sum += parts;
+    }
+    EXPECT_NEAR(glm::length(p.totalDisney - sum), 0.0f, 1e-5f);
+    EXPECT_GT(glm::length(p.totalDisney - p.totalPbr), 1e-3f) << "control: disney is not pbr here";
+    const nlohmann::json j = nlohmann::json::parse(probeReportJson(p, s.scene, green));
+    EXPECT_NEAR(j["total"]["disney"][0].get<float>(), p.totalDisney.x, 1e-6f);
+    EXPECT_NEAR(j["material"]["disney_f0"][1].get<float>(), p.disneyF0.y, 1e-6f);
+    EXPECT_NEAR(j["lights"][0]["clearcoat_disney"][0].get<float>(), p.lights[0].clearcoatDisney.x, 1e-6f);
+}
+
 TEST(AppState, ProbePbrColumnEqualsSharedShading) {
     ViewerState s = defaultState();
     setModel(s, ShadingModel::Pbr);

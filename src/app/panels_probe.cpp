@@ -246,10 +246,12 @@ void drawProbeWindow(PanelContext& ctx, float x, float y, bool room) {
         // The model this point is shaded with: its material's own, else the scene's.
         const ShadingModel shown = modelOf(p.material, ctx.state.scene.model);
         const bool pbr = isPhysicallyBased(shown);
+        // F0: pbr's mix(0.04, baseColor, metallic), or disney's from its specular and specularTint.
+        const glm::vec3 f0 = shown == ShadingModel::Disney ? p.disneyF0 : p.pbrF0;
         if (pbr)
             ImGui::Text("roughness %.3f  metallic %.2f   c_diff %.2f %.2f %.2f   F0 %.2f %.2f %.2f",
                         p.material.roughness, p.material.metallic, p.pbrDiffuseColor.r, p.pbrDiffuseColor.g,
-                        p.pbrDiffuseColor.b, p.pbrF0.r, p.pbrF0.g, p.pbrF0.b);
+                        p.pbrDiffuseColor.b, f0.r, f0.g, f0.b);
         else
             ImGui::Text("s %.1f   ms %.2f %.2f %.2f", p.material.s, p.material.ms.r, p.material.ms.g, p.material.ms.b);
         const ImGuiTreeNodeFlags open = compact ? 0 : ImGuiTreeNodeFlags_DefaultOpen;

@@ -58,6 +58,7 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     paramsDisney.md = paramsPbr.md;
     paramsDisney.baseColor = s.baseColor;
     paramsDisney.ms = shading::disneySpecularF0(s.baseColor, m.metallic, m.disney.specular, m.disney.specularTint);
+    r.disneyF0 = paramsDisney.ms;
     // One lobe of disney's at a time: the diffuse or specular group, with sheen or clearcoat (d1.x, d1.z) kept or
     // zeroed, so that the four parts are the shared function's own and sum to its term.
     const auto disneyPart = [&](const glm::vec3& L, const glm::vec3& Il, bool diffuse, bool withExtra) {

@@ -63,6 +63,7 @@ struct ProbeResult {
     glm::vec3 totalPbr{0.0f};                      // the same, pbr
     glm::vec3 totalDisney{0.0f};                   // the same, disney
     glm::vec3 pbrDiffuseColor{0.0f}, pbrF0{0.0f};  // c_diff (of the checker tile at P) and F0 (shading::surfaceParams)
+    glm::vec3 disneyF0{0.0f};                      // disney's own F0 there (disneySpecularF0: specular, specularTint)
 };
 
 // Asks the tracer about pixel (x, y) of a width x height image: its primary ray through the pixel centre

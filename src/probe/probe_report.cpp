@@ -47,7 +47,8 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                      {"metallic", m.metallic},
                      {"roughness", m.roughness},
                      {"pbr_diffuse_color", vec(p.pbrDiffuseColor)},
-                     {"pbr_f0", vec(p.pbrF0)}};
+                     {"pbr_f0", vec(p.pbrF0)},
+                     {"disney_f0", vec(p.disneyF0)}};
     nlohmann::json derived = nlohmann::json::array();  // fields derived from the other model's (scene-format.md)
     for (const auto& entry : kMaterialFieldNames)
         if (m.derived & entry.value) derived.push_back(entry.name);
