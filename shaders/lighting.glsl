@@ -124,6 +124,35 @@ SL_FN vec3 energyCompensation(vec3 f0, vec2 dfg) {
     return vec3(1.0f) + f0 * (1.0f / max(dfg.x + dfg.y, 1e-4f) - 1.0f);
 }
 
+// glTF's KHR_materials_clearcoat (its "Layering" section, as the Khronos Sample Viewer evaluates it): a clear
+// dielectric coat (F0 = 0.04, index 1.5) over the base, coat = (factor, roughness). The coat takes
+// factor·Fc(Nc·V) of the base's light, Fc Schlick's Fresnel at the coat normal Nc, and adds its own GGX lobe
+// times factor. Nc is the geometry's normal, or the coat's own normal map's: the base's normal map leaves it.
+SL_FN float clearcoatWeight(vec3 Nc, vec3 V, float factor) {
+    float NoV = clamp(dot(normalize(Nc), normalize(V)), 0.0f, 1.0f);
+    return factor * F_Schlick(vec3(0.04f), NoV).x;
+}
+
+// One light's term `base` (the base material's, before visibility) under the coat: base·(1 − factor·Fc) +
+// factor·π·f_coat·Il·Nc·L. The coat is a specular layer: with the specular term off, or factor 0, the base is
+// returned as it is. N, L, V need not be unit.
+SL_FN vec3 clearcoatLight(vec3 base, vec3 Nc, vec3 L, vec3 V, vec3 Il, vec2 coat, bool specularOn) {
+    if (!specularOn || coat.x <= 0.0f) return base;
+    Nc = normalize(Nc);
+    L = normalize(L);
+    V = normalize(V);
+    float NoL = dot(Nc, L);
+    vec3 layer = NoL > 0.0f ? (SL_PI * NoL) * specularGGX(Nc, L, V, vec3(0.04f), coat.y) : vec3(0.0f);
+    return base * (1.0f - clearcoatWeight(Nc, V, coat.x)) + coat.x * Il * layer;
+}
+
+// The environment's light `base` under the coat (split sum, as shadeEnvironment): base·(1 − factor·Fc) +
+// factor·prefiltered·(0.04·A + B), prefiltered and dfg = (A, B) looked up for the coat's normal and roughness.
+SL_FN vec3 clearcoatEnvironment(vec3 base, vec3 Nc, vec3 V, vec3 prefiltered, vec2 dfg, vec2 coat, bool specularOn) {
+    if (!specularOn || coat.x <= 0.0f) return base;
+    return base * (1.0f - clearcoatWeight(Nc, V, coat.x)) + coat.x * prefiltered * specularDFG(vec3(0.04f), dfg);
+}
+
 // Burley 2012, "Physically Based Shading at Disney", and its published disney.brdf: the principled BRDF.
 // Schlick's weight (1 − u)⁵, u clamped to [0, 1], the fifth power multiplied out.
 SL_FN float schlickWeight(float u) {

@@ -7,6 +7,8 @@ uniform sampler2D t_L;        // xyz: L
 uniform sampler2D t_V;        // xyz: V
 uniform sampler2D t_params;   // x: s (pbr, disney: roughness), y: model (0 Phong, 1 Blinn-Phong, 2 pbr, 3 disney),
                               // z: metallic
+                              // y = 8: pbr under glTF's clear coat, t_disney0 its (factor, roughness), t_disney1
+                              // its normal
                               // y = 9: a spot light's intensity instead: N the spot's direction, L the light
                               // vector, V its attenuation (kc, kl, kq), x, z its cone scale and offset, w its range
 uniform sampler2D t_disney0;  // disney: (subsurface, specular, specularTint, anisotropic)
@@ -28,6 +30,15 @@ void main() {
         vec4 cone = vec4(params.x, params.z, params.w, 1.0f);
         vec3 I = lightIntensityAt(u_Il, true, V, L, N, cone);
         o_result = vec4(I, spotAttenuation(N, L, vec2(params.x, params.z)));
+        return;
+    }
+    if (model == 8) {
+        // u_md is the base colour; w: the coat's Fresnel weight.
+        vec2 coat = texelFetch(t_disney0, p, 0).xy;
+        vec3 Nc = texelFetch(t_disney1, p, 0).xyz;
+        vec3 base = shadeLight(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), pbrF0(u_md, params.z), params.x,
+                               SL_MODEL_PBR, true, true);
+        o_result = vec4(clearcoatLight(base, Nc, L, V, u_Il, coat, true), clearcoatWeight(Nc, V, coat.x));
         return;
     }
     if (model == SL_MODEL_DISNEY) {

@@ -1,7 +1,8 @@
 // Triangle meshes: interpolated normal, renormalised in shadeLight, flipped to face the viewer by winding;
 // with SL_MATERIAL_MAPS (a textured or non-opaque part; RasterRenderer::programsFor), the material's glTF
-// maps (base colour, metallic-roughness, normal, occlusion, emissive) and its alpha mode. Its value has bit
-// 1 << k set when the part has map k (k = 4, emissive: bit 32), and bit 16 for a non-opaque alpha mode: each
+// maps (base colour, metallic-roughness, normal, occlusion, emissive, and pbr's clear coat maps) and its alpha
+// mode. Its value has bit 1 << k set when the part has map k (k = 4, emissive: bit 32), bit 16 for a
+// non-opaque alpha mode and bit 128 for any of the clear coat's three maps (5–7): each
 // part's program holds the code of its own maps only, since llvmpipe's compile time grows with every inlined
 // sampler and it runs the code of every branch, taken or not.
 #include "surface.glsl"
@@ -31,9 +32,12 @@ uniform sampler2D t_metalRough;
 uniform sampler2D t_normal;
 uniform sampler2D t_occlusion;
 uniform sampler2D t_emissive;
-uniform ivec4 u_tex[5];
-uniform vec4 u_texMatrix[5];
-uniform vec4 u_texOffset[5];
+uniform sampler2D t_clearcoat;
+uniform sampler2D t_clearcoatRoughness;
+uniform sampler2D t_clearcoatNormal;
+uniform ivec4 u_tex[8];
+uniform vec4 u_texMatrix[8];
+uniform vec4 u_texOffset[8];
 uniform vec4 u_mapFactors;  // x metallic, y roughness (factors), z 1 when Phong's ms is normalised
 uniform vec4 u_alpha;       // x the base colour factor's alpha, y the MASK cutoff, z alphaMode (0 opaque, 1 mask, 2 blend)
 // `map` is a literal at every call, so each branch folds away once the functions are inlined.
@@ -42,6 +46,9 @@ vec4 texTexel(int map, int level, int x, int y) {
     if (map == 2) return texelFetch(t_normal, ivec2(x, y), level);
     if (map == 3) return texelFetch(t_occlusion, ivec2(x, y), level);
     if (map == 4) return texelFetch(t_emissive, ivec2(x, y), level);
+    if (map == 5) return texelFetch(t_clearcoat, ivec2(x, y), level);
+    if (map == 6) return texelFetch(t_clearcoatRoughness, ivec2(x, y), level);
+    if (map == 7) return texelFetch(t_clearcoatNormal, ivec2(x, y), level);
     return texelFetch(t_baseColor, ivec2(x, y), level);
 }
 ivec2 texSize(int map, int level) {
@@ -49,6 +56,9 @@ ivec2 texSize(int map, int level) {
     if (map == 2) return textureSize(t_normal, level);
     if (map == 3) return textureSize(t_occlusion, level);
     if (map == 4) return textureSize(t_emissive, level);
+    if (map == 5) return textureSize(t_clearcoat, level);
+    if (map == 6) return textureSize(t_clearcoatRoughness, level);
+    if (map == 7) return textureSize(t_clearcoatNormal, level);
     return textureSize(t_baseColor, level);
 }
 int texWidth(int map, int level) { return texSize(map, level).x; }
@@ -103,8 +113,22 @@ void main() {
 #endif
 #if (SL_MATERIAL_MAPS & 4) != 0
     if (u_tex[2].x > 0) {
+#if SL_COATED
+        s_coatN = N;  // the coat follows the geometry, not the base's normal map
+#endif
         vec3 n = mapNormal(v2f_normal, v2f_tangent, sampleMap(2), u_texOffset[2].w);
         N = gl_FrontFacing ? n : -n;
+    }
+#endif
+#if (SL_MATERIAL_MAPS & 128) != 0 && SL_COATED
+    // KHR_materials_clearcoat's maps (maps 5–7): red times the factor, green times the roughness, the coat's
+    // own normal map (WhittedIntegrator reads them through SurfaceSetup::at).
+    s_coat = u_coat;
+    if (u_tex[5].x > 0) s_coat.x *= sampleMap(5).r;
+    if (u_tex[6].x > 0) s_coat.y *= sampleMap(6).g;
+    if (u_tex[7].x > 0) {
+        vec3 n = mapNormal(v2f_normal, v2f_tangent, sampleMap(7), u_texOffset[7].w);
+        s_coatN = gl_FrontFacing ? n : -n;
     }
 #endif
 #if (SL_MATERIAL_MAPS & 8) != 0

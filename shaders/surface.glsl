@@ -46,6 +46,19 @@ vec3 shadeOneLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 base, vec3 spe
     return shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #endif
 }
+#if defined(SL_CLEARCOAT) && SL_MODEL == 2
+// pbr's clear coat (lighting.glsl's clearcoatLight): (factor, roughness) times its maps' texels (mesh.frag sets
+// s_coat when the part has them), and its normal: s_coatN when mesh.frag sets one (the geometry's normal under a
+// base normal map, or the coat's own map's), else the shading normal.
+#define SL_COATED 1
+uniform vec2 u_coat;
+vec2 s_coat = vec2(-1.0f);
+vec3 s_coatN = vec3(0.0f);
+vec2 surfaceCoat() { return s_coat.x < 0.0f ? u_coat : s_coat; }
+vec3 coatNormal(vec3 N) { return s_coatN == vec3(0.0f) ? N : s_coatN; }
+#else
+#define SL_COATED 0
+#endif
 uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
 // The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
 vec3 s_emissive = vec3(1.0f);
@@ -83,6 +96,20 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec2 dfg) {
 }
 #endif
 
+#if SL_IBL && SL_COATED
+// The environment's light `base` under the clear coat (WhittedIntegrator::coatedEnvironment): the prefiltered
+// environment at the coat's normal and roughness.
+vec3 coatedEnvironment(vec3 base, vec3 Nc, vec3 V, vec2 coat) {
+#if SL_IBL == 2
+    vec3 prefiltered = u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(iblReflect(Nc, V), u_iblParams.y, u_iblParams.z), coat.y);
+#else
+    vec3 prefiltered = u_iblRadiance.xyz;
+#endif
+    vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(Nc, V), coat.y);
+    return clearcoatEnvironment(base, Nc, V, prefiltered, dfg, coat, SL_SPECULAR);
+}
+#endif
+
 // One light's diffuse + specular at P, times its shadow visibility when the variant has shadows. isPoint (a point
 // or spot light), isAttenuated (attenuation, range or cone), kind, planeMask and layer (its first shadow-map layer) are compile-time constants for the
 // specialised lights, so their branches fold away.
@@ -93,6 +120,9 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
     vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i])
                            : u_lightColor[i].xyz;
     vec3 c = shadeOneLight(N, L, V, Il, md, base, specScale);
+#if SL_COATED
+    c = clearcoatLight(c, coatNormal(N), L, V, Il, surfaceCoat(), SL_SPECULAR);
+#endif
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
     c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
@@ -129,11 +159,19 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i]);
-        I += shadeOneLight(N, L, V, Il, md, base, specScale);
+        vec3 c = shadeOneLight(N, L, V, Il, md, base, specScale);
+#if SL_COATED
+        c = clearcoatLight(c, coatNormal(N), L, V, Il, surfaceCoat(), SL_SPECULAR);
+#endif
+        I += c;
     }
 #endif
 #if SL_IBL
-    I += environmentLight(N, V, md, surfaceF0(base), dfg) * s_ao;
+    vec3 environment = environmentLight(N, V, md, surfaceF0(base), dfg) * s_ao;
+#if SL_COATED
+    environment = coatedEnvironment(environment, coatNormal(N), V, surfaceCoat());
+#endif
+    I += environment;
 #endif
     return I + u_emission * s_emissive;
 }

@@ -150,6 +150,39 @@ TEST(AppState, ProbeDisneyLobesSumToTheSharedShading) {
     EXPECT_NEAR(j["lights"][0]["clearcoat_disney"][0].get<float>(), p.lights[0].clearcoatDisney.x, 1e-6f);
 }
 
+// glTF's clear coat under pbr: the base's two parts and the coat's lobe sum to each light's coated term and, with
+// the ambient, to the total the tracer shades; the report carries the coat's part. Control: without the coat the
+// total differs.
+TEST(AppState, ProbePbrClearcoatPartsSumToTheCoatedShading) {
+    ViewerState s = defaultState();
+    setModel(s, ShadingModel::Pbr);
+    const int w = 640, h = 360;
+    const uint32_t green = idOf(s, "matte green");
+    Sphere& sphere = s.scene.spheres[green - 1];
+    sphere.material.roughness = 0.6f;
+    sphere.material.clearcoat = Clearcoat{1.0f, 0.1f};
+    const glm::ivec2 px = pixelOf(s.scene, w, h, sphere.center + glm::vec3(0.3f, 0.3f, 0.0f));
+    const ProbeResult p = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    ASSERT_TRUE(p.hit);
+    const Material& m = sphere.material;
+    glm::vec3 sum = p.ambient;
+    for (size_t i = 0; i < p.lights.size(); ++i) {
+        const ProbeLight& l = p.lights[i];
+        const glm::vec3 base = shading::shadeLight(p.N, l.L, p.V, l.Il, p.pbrDiffuseColor, p.pbrF0, m.roughness,
+                                                   shading::SL_MODEL_PBR, true, true);
+        const glm::vec3 one = shading::clearcoatLight(base, p.N, l.L, p.V, l.Il, m.clearcoat.packed(), true);
+        const glm::vec3 parts = l.diffusePbr + l.specularPbr + l.clearcoatPbr;
+        EXPECT_NEAR(glm::length(parts - l.visibility * one), 0.0f, 1e-5f) << i;
+        sum += parts;
+    }
+    EXPECT_NEAR(glm::length(p.totalPbr - sum), 0.0f, 1e-5f);
+    const nlohmann::json j = nlohmann::json::parse(probeReportJson(p, s.scene, green));
+    EXPECT_NEAR(j["lights"][0]["clearcoat_pbr"][1].get<float>(), p.lights[0].clearcoatPbr.y, 1e-6f);
+    sphere.material.clearcoat.factor = 0.0f;
+    const ProbeResult bare = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    EXPECT_GT(glm::length(p.totalPbr - bare.totalPbr), 1e-3f) << "control: the coat changes the total";
+}
+
 TEST(AppState, ProbePbrColumnEqualsSharedShading) {
     ViewerState s = defaultState();
     setModel(s, ShadingModel::Pbr);

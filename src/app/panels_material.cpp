@@ -112,6 +112,12 @@ void drawMaterialSection(PanelContext& ctx) {
         for (const DisneyField& field : kDisneyFields)
             changed |= ImGui::SliderFloat(field.name, &(m.disney.*field.member), 0.0f, 1.0f, "%.2f");
     }
+    // glTF's clear coat layer, shaded under pbr (disney has its own clearcoat above).
+    if (modelOf(m, s.scene.model) == ShadingModel::Pbr) {
+        ImGui::TextDisabled("pbr: glTF clear coat (KHR_materials_clearcoat)");
+        changed |= ImGui::SliderFloat("clearcoat", &m.clearcoat.factor, 0.0f, 1.0f, "%.2f");
+        changed |= ImGui::SliderFloat("coat roughness", &m.clearcoat.roughness, 0.0f, 1.0f, "%.3f");
+    }
     if (changed) {
         m.s = objectMaterial(s.scene, s.selected).s;  // the slider above already applied its own change
         setObjectMaterial(s, s.selected, m);

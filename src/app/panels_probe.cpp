@@ -94,6 +94,7 @@ void lightTable(const ProbeResult& p, bool shadows, ShadingModel shown) {
     } else if (pbr) {
         rgbRow("diffuse (1-F)", &ProbeLight::diffusePbr);
         rgbRow("spec pi·DVF·N·L", &ProbeLight::specularPbr);
+        if (p.material.clearcoat.factor > 0.0f) rgbRow("clear coat", &ProbeLight::clearcoatPbr);
     } else {
         rgbRow("diffuse", &ProbeLight::diffuse);
         rgbRow("spec Phong", &ProbeLight::specularPhong);
@@ -114,7 +115,8 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
                      {"disney", ShadingModel::Disney}};
     for (const ProbeLight& l : p.lights) {
         cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse, cols[2].diffuse += l.diffusePbr;
-        cols[0].specular += l.specularPhong, cols[1].specular += l.specularBlinn, cols[2].specular += l.specularPbr;
+        cols[0].specular += l.specularPhong, cols[1].specular += l.specularBlinn,
+            cols[2].specular += l.specularPbr + l.clearcoatPbr;
         cols[3].diffuse += l.diffuseDisney + l.sheenDisney;
         cols[3].specular += l.specularDisney + l.clearcoatDisney;
     }

@@ -92,7 +92,8 @@ const ActionInfo kActions[] = {
          return SetShininess{objectField(a), a.child("s").inRange(0.0f, kMaxShininess, false, false)};
      }},
     {"setMaterial",
-     {"object", "ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "model", "disney"},
+     {"object", "ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "model", "disney",
+      "clearcoat"},
      [](const JsonNode& a) -> Action {
          return SetMaterial{objectField(a), parseMaterialOverride(a)};
      }},

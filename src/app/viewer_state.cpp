@@ -42,6 +42,10 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
         const float DisneyParams::*field = kDisneyFields[i].member;
         if (m.disney.*field != before.disney.*field) o.disney.value[i] = m.disney.*field;
     }
+    for (int i = 0; i < ClearcoatOverride::kCount; ++i) {
+        const float Clearcoat::*field = kClearcoatFields[i].member;
+        if (m.clearcoat.*field != before.clearcoat.*field) o.clearcoat.value[i] = m.clearcoat.*field;
+    }
     for (MeshPart& p : mesh.parts) {
         o.applyTo(p.material);
         p.material.model = o.model;

@@ -50,6 +50,8 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     // As WhittedIntegrator: the checker's second tiles change pbr's base colour (F0 stays the plane's).
     shading::SurfaceParams paramsPbr = paramsFor(shading::SL_MODEL_PBR);
     paramsPbr.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
+    paramsPbr.coat = s.coat;  // glTF's clear coat, as WhittedIntegrator::shadingParams gives it to pbr
+    paramsPbr.coatN = s.coatN;
     r.pbrDiffuseColor = paramsPbr.md;
     r.pbrF0 = paramsPbr.ms;
     const int pbr = shading::SL_MODEL_PBR;
@@ -103,6 +105,14 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
         pl.specularPbr =
             vis * shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, false, true);
         pl.diffusePbr = vis * both - pl.specularPbr;
+        if (paramsPbr.coat.x > 0.0f) {
+            // Under the coat the base's two parts keep 1 − c·Fc, and the coat's lobe is the rest of the term.
+            const float keep = 1.0f - shading::clearcoatWeight(s.coatN, V, paramsPbr.coat.x);
+            const glm::vec3 coated = vis * shading::clearcoatLight(both, s.coatN, Lraw, V, Il, paramsPbr.coat, true);
+            pl.diffusePbr *= keep;
+            pl.specularPbr *= keep;
+            pl.clearcoatPbr = coated - pl.diffusePbr - pl.specularPbr;
+        }
         pl.diffuseDisney = vis * disneyPart(Lraw, Il, true, false);
         pl.sheenDisney = vis * disneyPart(Lraw, Il, true, true) - pl.diffuseDisney;
         pl.specularDisney = vis * disneyPart(Lraw, Il, false, false);

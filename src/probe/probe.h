@@ -38,6 +38,8 @@ struct ProbeLight {
     glm::vec3 F{0.0f};           // F_Schlick(F0, V·H)
     glm::vec3 diffusePbr{0.0f};  // vis_l · Il ⊙ (1 − F) ⊙ c_diff · N·L (plain c_diff · N·L with specular off)
     glm::vec3 specularPbr{0.0f};  // vis_l · Il ⊙ π · D · Vis · F · N·L
+    // Under glTF's clear coat the two above keep (1 − c·Fc) and this is the coat's lobe, c·π·f_coat·Il·Nc·L.
+    glm::vec3 clearcoatPbr{0.0f};
     // disney (shadeLightDisney): this light's part through each lobe, vis_l included; they sum to its term.
     glm::vec3 diffuseDisney{0.0f};    // the diffuse with its retro-reflection and subsurface blend
     glm::vec3 sheenDisney{0.0f};      // the sheen

@@ -27,6 +27,9 @@ const gl::Program& ColorPrograms::get(Kind kind) const {
     p.setSampler("t_normal", kNormalMapUnit);
     p.setSampler("t_occlusion", kOcclusionUnit);
     p.setSampler("t_emissive", kEmissiveUnit);
+    p.setSampler("t_clearcoat", kClearcoatUnit);
+    p.setSampler("t_clearcoatRoughness", kClearcoatRoughnessUnit);
+    p.setSampler("t_clearcoatNormal", kClearcoatNormalUnit);
     if (kind == PlaneMirror) p.setSampler("t_reflection", kReflectionUnit);
     if (kind == MeshEnvironment || kind == SphereEnvironment) p.setSampler("t_environment", kEnvironmentUnit);
     glUseProgram(0);
@@ -34,8 +37,14 @@ const gl::Program& ColorPrograms::get(Kind kind) const {
 }
 
 int ColorProgramCache::materialMaps(const Material& m) {
+    const bool coatMaps = m.clearcoatTexture || m.clearcoatRoughnessTexture || m.clearcoatNormalTexture;
     return (m.baseColorTexture ? 1 : 0) | (m.metallicRoughnessTexture ? 2 : 0) | (m.normalTexture ? 4 : 0) |
-           (m.occlusionTexture ? 8 : 0) | (m.alphaMode != AlphaMode::Opaque ? 16 : 0) | (m.emissiveTexture ? 32 : 0);
+           (m.occlusionTexture ? 8 : 0) | (m.alphaMode != AlphaMode::Opaque ? 16 : 0) | (m.emissiveTexture ? 32 : 0) |
+           (coatMaps ? 128 : 0);
+}
+
+int ColorProgramCache::programBits(const Material& m, bool meshPart) {
+    return (meshPart ? materialMaps(m) : 0) | (m.clearcoat.factor > 0.0f ? kCoatBit : 0);
 }
 
 const ColorPrograms& ColorProgramCache::get(const ShaderVariant& variant, int materialMaps) {
@@ -66,11 +75,11 @@ const ColorPrograms& ColorProgramCache::prepare(const FrameBlock& frame, const S
     const Material sceneMaterial;  // no model of its own: the scene's
     choose(sceneMaterial, 0);
     maps = 0;
-    for (const Sphere& s : scene.spheres) choose(s.material, 0);
-    for (const Plane& p : scene.planes) choose(p.material, 0);
+    for (const Sphere& s : scene.spheres) choose(s.material, programBits(s.material, false));
+    for (const Plane& p : scene.planes) choose(p.material, programBits(p.material, false));
     for (const Mesh& m : scene.meshes)
         for (const MeshPart& p : m.parts) {
-            const int bits = materialMaps(p.material);
+            const int bits = programBits(p.material, true);
             maps |= bits;
             choose(p.material, bits);
         }
@@ -78,7 +87,7 @@ const ColorPrograms& ColorProgramCache::prepare(const FrameBlock& frame, const S
 }
 
 const ColorPrograms& ColorProgramCache::of(const Material& m, bool meshPart) const {
-    const ColorPrograms* set = chosen_[size_t(modelOf(m) * kMapSets + (meshPart ? materialMaps(m) : 0))];
+    const ColorPrograms* set = chosen_[size_t(modelOf(m) * kMapSets + programBits(m, meshPart))];
     SHADELAB_CHECK(set != nullptr);  // prepare() saw this render's objects, and this one among them
     return *set;
 }

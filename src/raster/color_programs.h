@@ -35,8 +35,8 @@ public:
 
     explicit ColorProgramCache(const gl::ShaderLibrary& shaders) : shaders_(shaders) {}
 
-    // The set for `variant` with the texture code of `materialMaps` (mesh.frag's SL_MATERIAL_MAPS bits, 0 for
-    // none). The reference stays valid until the next prepare().
+    // The set for `variant` with the texture code of `materialMaps` (programBits: mesh.frag's SL_MATERIAL_MAPS
+    // bits and kCoatBit, 0 for none). The reference stays valid until the next prepare().
     const ColorPrograms& get(const ShaderVariant& variant, int materialMaps = 0);
     // One render's sets: one per (model, map set) the scene's objects use, for of(). Drops every set first when
     // there are too many to keep, so no reference it hands out is invalidated during the render. Returns the
@@ -46,14 +46,19 @@ public:
     const ColorPrograms& of(const Material& m, bool meshPart = false) const;
     // The model prepare() shades `m` with (shading::SL_MODEL_*).
     int modelOf(const Material& m) const { return m.model ? modelIndex(*m.model) : sceneModel_; }
-    // mesh.frag's SL_MATERIAL_MAPS bits for one material: bit k for map k (emissive 32), 16 for alpha.
+    // mesh.frag's SL_MATERIAL_MAPS bits for one material: bit k for map k (emissive 32), 16 for alpha, and
+    // 128 for any of the clear coat's maps.
     static int materialMaps(const Material& m);
+    // The bits a program for `m` is chosen by: a mesh part's materialMaps, and kCoatBit for a clear coat
+    // (SL_CLEARCOAT; shaded only under pbr).
+    static int programBits(const Material& m, bool meshPart);
+    static constexpr int kCoatBit = 64;
 
 private:
     const gl::ShaderLibrary& shaders_;
     std::map<std::string, ColorPrograms> sets_;
-    static constexpr int kModels = 4;    // shading::SL_MODEL_*
-    static constexpr int kMapSets = 64;  // SL_MATERIAL_MAPS values
+    static constexpr int kModels = 4;     // shading::SL_MODEL_*
+    static constexpr int kMapSets = 256;  // programBits values
     // This render's sets by model × kMapSets + map bits (null: no object has them).
     std::array<const ColorPrograms*, kModels * kMapSets> chosen_{};
     int sceneModel_ = 0;

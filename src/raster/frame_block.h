@@ -61,13 +61,16 @@ inline constexpr GLuint kShadowBinding = 1;
 inline constexpr GLuint kShadowUnit = 1;
 inline constexpr GLuint kReflectionUnit = 2;
 inline constexpr GLuint kEnvironmentUnit = 3;
-inline constexpr GLuint kIblCubeUnit = 4;     // the prefiltered atlas (IblTextures)
-inline constexpr GLuint kIblDfgUnit = 5;      // the DFG table
-inline constexpr GLuint kBaseColorUnit = 6;   // a mesh part's material maps (MeshTextures): base colour,
-inline constexpr GLuint kMetalRoughUnit = 7;  // metallic-roughness,
-inline constexpr GLuint kNormalMapUnit = 8;   // normal
-inline constexpr GLuint kOcclusionUnit = 9;   // occlusion
-inline constexpr GLuint kEmissiveUnit = 10;   // and emissive
+inline constexpr GLuint kIblCubeUnit = 4;              // the prefiltered atlas (IblTextures)
+inline constexpr GLuint kIblDfgUnit = 5;               // the DFG table
+inline constexpr GLuint kBaseColorUnit = 6;            // a mesh part's material maps (MeshTextures): base colour,
+inline constexpr GLuint kMetalRoughUnit = 7;           // metallic-roughness,
+inline constexpr GLuint kNormalMapUnit = 8;            // normal
+inline constexpr GLuint kOcclusionUnit = 9;            // occlusion
+inline constexpr GLuint kEmissiveUnit = 10;            // emissive
+inline constexpr GLuint kClearcoatUnit = 11;           // and the clear coat's factor,
+inline constexpr GLuint kClearcoatRoughnessUnit = 12;  // roughness
+inline constexpr GLuint kClearcoatNormalUnit = 13;     // and normal (units 0–15 exist everywhere: GL 3.3, WebGL2)
 
 // The block for drawing `band` of the image `v` describes, every sample moved by `jitter` pixels (x right, y
 // down) off the pixel centre: the lights, terms, model and environment of `scene` in the layout above.

@@ -39,6 +39,7 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     p.set("u_metallic", m.metallic);  // disney's (shadeLightDisney), with its own parameters
     p.set("u_disney0", c.disney0);
     p.set("u_disney1", c.disney1);
+    p.set("u_coat", m.clearcoat.packed());  // pbr's clear coat, in the programs that have one (SL_CLEARCOAT)
     p.set("u_objectId", objectId);
     p.set("u_kr", m.kr);  // planes' mirrors and objects' cubes
     // Base-colour texture (mesh.frag): F0 = u_ms + u_msTex·(tex − 1) under pbr, as the tracer's local().
@@ -46,12 +47,15 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     p.set("u_msTex", msTex);
     // The material maps (mesh.frag's u_tex arrays; spheres and planes have none of these uniforms).
     if (p.uniform("u_tex") < 0) return;
-    const TextureBinding* maps[5] = {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
-                                     &m.occlusionTexture, &m.emissiveTexture};
-    const GLuint units[5] = {kBaseColorUnit, kMetalRoughUnit, kNormalMapUnit, kOcclusionUnit, kEmissiveUnit};
-    glm::ivec4 info[5];
-    glm::vec4 matrix[5], offset[5];
-    for (int k = 0; k < 5; ++k) {
+    constexpr int kMaps = 8;
+    const TextureBinding* maps[kMaps] = {&m.baseColorTexture,          &m.metallicRoughnessTexture, &m.normalTexture,
+                                         &m.occlusionTexture,          &m.emissiveTexture,          &m.clearcoatTexture,
+                                         &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture};
+    const GLuint units[kMaps] = {kBaseColorUnit, kMetalRoughUnit, kNormalMapUnit,          kOcclusionUnit,
+                                 kEmissiveUnit,  kClearcoatUnit,  kClearcoatRoughnessUnit, kClearcoatNormalUnit};
+    glm::ivec4 info[kMaps];
+    glm::vec4 matrix[kMaps], offset[kMaps];
+    for (int k = 0; k < kMaps; ++k) {
         const TextureBinding& t = *maps[k];
         info[k] = glm::ivec4(0);
         matrix[k] = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
@@ -66,9 +70,9 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
         glBindTexture(GL_TEXTURE_2D, textures_.texture(t.texture));
     }
     glActiveTexture(GL_TEXTURE0);
-    p.set("u_tex", info, 5, gl::Program::Uniform::Required);
-    p.set("u_texMatrix", matrix, 5);
-    p.set("u_texOffset", offset, 5);
+    p.set("u_tex", info, kMaps, gl::Program::Uniform::Required);
+    p.set("u_texMatrix", matrix, kMaps);
+    p.set("u_texOffset", offset, kMaps);
     const glm::vec4 factors(m.metallic, m.roughness, normalized ? 1.0f : 0.0f, 0.0f);
     const glm::vec4 alpha(m.alpha, m.alphaCutoff, float(int(m.alphaMode)), 0.0f);
     p.set("u_mapFactors", factors);

@@ -48,7 +48,10 @@ std::string ShaderVariant::defines() const {
 
 std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment) {
     std::string s = variantDefines;
-    if (materialMaps) s += "#define SL_MATERIAL_MAPS " + std::to_string(materialMaps) + "\n";
+    // Bit 64 is the clear coat (ColorProgramCache::kCoatBit), the others mesh.frag's maps.
+    const int maps = materialMaps & ~64;
+    if (maps) s += "#define SL_MATERIAL_MAPS " + std::to_string(maps) + "\n";
+    if (materialMaps & 64) s += "#define SL_CLEARCOAT 1\n";
     if (environment) s += "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n";
     return s;
 }

@@ -40,8 +40,8 @@ struct ShaderVariant {
 };
 
 // The text RasterRenderer puts after the prelude of one colour program: `variantDefines`, then mesh.frag's
-// SL_MATERIAL_MAPS (`materialMaps` bits, none for 0), then, for the environment and plane-mirror programs,
-// SL_ENVIRONMENT 1. Tests compile exactly these.
+// SL_MATERIAL_MAPS (`materialMaps` bits but 64, none for 0) and SL_CLEARCOAT (bit 64), then, for the environment and
+// plane-mirror programs, SL_ENVIRONMENT 1. Tests compile exactly these.
 std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment);
 
 // The variant for one draw. `shadows` is null when the frame has no shadow pass. `model` (shading::SL_MODEL_*)

@@ -3,8 +3,9 @@
 // Plain data with one name table, so that the scene file, scripts, the viewer and Python name them alike.
 #pragma once
 
+#include "scene/param_table.h"
+
 #include <glm/vec4.hpp>
-#include <optional>
 
 namespace shadelab {
 
@@ -27,10 +28,7 @@ struct DisneyParams {
 };
 
 // Each parameter's name (scene files, scripts, Python) and member, all in [0, 1].
-struct DisneyField {
-    const char* name;
-    float DisneyParams::*member;
-};
+using DisneyField = ParamField<DisneyParams>;
 inline constexpr DisneyField kDisneyFields[] = {
     {"subsurface", &DisneyParams::subsurface},
     {"specular", &DisneyParams::specular},
@@ -44,23 +42,6 @@ inline constexpr DisneyField kDisneyFields[] = {
 inline constexpr int kDisneyFieldCount = int(sizeof kDisneyFields / sizeof kDisneyFields[0]);
 
 // Some of the parameters, each replacing the same one of a material's (a scene file's "disney" object).
-struct DisneyOverride {
-    std::optional<float> value[kDisneyFieldCount];
-
-    bool empty() const {
-        for (const auto& v : value)
-            if (v) return false;
-        return true;
-    }
-    void applyTo(DisneyParams& p) const {
-        for (int i = 0; i < kDisneyFieldCount; ++i)
-            if (value[i]) p.*kDisneyFields[i].member = *value[i];
-    }
-    bool operator==(const DisneyOverride& o) const {
-        for (int i = 0; i < kDisneyFieldCount; ++i)
-            if (value[i] != o.value[i]) return false;
-        return true;
-    }
-};
+using DisneyOverride = ParamOverride<DisneyParams, kDisneyFields>;
 
 }  // namespace shadelab

@@ -4,6 +4,7 @@
 // model's are given (docs/scene-format.md, "Materials under each model").
 #pragma once
 
+#include "scene/clearcoat.h"
 #include "scene/disney_params.h"
 #include "scene/shading_model.h"
 #include "scene/texture.h"
@@ -33,6 +34,7 @@ struct Material {
     float roughness = 0.4925f;  // pbr: perceptual roughness in [0, 1], α = roughness²; ≈ s = 32's equivalent
     DisneyParams disney;        // disney: the principled BRDF's other eight parameters (baseColor, metallic and
                                 // roughness are pbr's)
+    Clearcoat clearcoat;        // pbr: glTF's clear coat layer over the base (KHR_materials_clearcoat); none by default
     glm::vec3 emission{0.0f};   // emitted radiance, linear RGB, >= 0, from both sides: an area light under the
                                 // path tracer; the other renderers add it to the surface's colour (design.md §8)
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
@@ -53,6 +55,12 @@ struct Material {
     // glTF emissiveTexture (linear RGB after sRGB decoding): multiplies `emission` in the rasterizer and the
     // Whitted tracer (docs/gltf-import.md). Imported only.
     TextureBinding emissiveTexture;
+    // KHR_materials_clearcoat's maps, imported only: clearcoatTexture's red multiplies the factor,
+    // clearcoatRoughnessTexture's green the roughness, and clearcoatNormalTexture bends the coat's normal alone
+    // (tangent space, strength = its scale); without it the coat follows the geometry, not the base's normal map.
+    TextureBinding clearcoatTexture;
+    TextureBinding clearcoatRoughnessTexture;
+    TextureBinding clearcoatNormalTexture;
     // The material's own shading model, which every renderer shades it with; none: the scene's (Scene::model).
     // So Phong, Blinn-Phong and pbr can sit side by side in one picture.
     std::optional<ShadingModel> model;
@@ -148,13 +156,14 @@ struct MaterialOverride {
     std::optional<glm::vec3> emission;
     std::optional<ShadingModel> model;
     DisneyOverride disney;
+    ClearcoatOverride clearcoat;
     // Linked fields whose values were derived when written (a Python document's "derived" list): read, but not
     // given, so that they follow the given fields again.
     uint8_t derived = 0;
 
     bool empty() const {
         return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission &&
-               !model && disney.empty();
+               !model && disney.empty() && clearcoat.empty();
     }
     // Writes the fields, then derives from the given ones what follows from them (deriveFields). Fields of both
     // models given, with no "derived" list: each as given and nothing derived (docs/scene-format.md).
@@ -189,6 +198,7 @@ struct MaterialOverride {
         if (emission) m.emission = *emission;
         if (model) m.model = *model;
         disney.applyTo(m.disney);
+        clearcoat.applyTo(m.clearcoat);
     }
 };
 

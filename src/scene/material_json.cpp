@@ -6,15 +6,25 @@
 
 namespace shadelab {
 
-DisneyOverride parseDisneyOverride(const JsonNode& n) {
+namespace {
+
+// A nested object of parameters named by O's table, each in [0, 1] ("disney", "clearcoat").
+template <class O>
+O parseParamOverride(const JsonNode& n) {
     std::vector<const char*> names;
-    for (const DisneyField& field : kDisneyFields) names.push_back(field.name);
+    for (const auto& field : O::fields()) names.push_back(field.name);
     n.requireObject().warnUnknownKeys(names);
-    DisneyOverride o;
-    for (int i = 0; i < kDisneyFieldCount; ++i)
-        if (auto f = n.find(kDisneyFields[i].name)) o.value[i] = f->inRange(0.0f, 1.0f, false, false);
+    O o;
+    for (int i = 0; i < O::kCount; ++i)
+        if (auto f = n.find(O::fields()[i].name)) o.value[i] = f->inRange(0.0f, 1.0f, false, false);
     return o;
 }
+
+}  // namespace
+
+DisneyOverride parseDisneyOverride(const JsonNode& n) { return parseParamOverride<DisneyOverride>(n); }
+
+ClearcoatOverride parseClearcoatOverride(const JsonNode& n) { return parseParamOverride<ClearcoatOverride>(n); }
 
 MaterialOverride parseMaterialOverride(const JsonNode& n) {
     n.requireObject();
@@ -32,12 +42,13 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("emission")) m.emission = f->rgbUpTo(kMaxRadiance);
     if (auto f = n.find("model")) m.model = f->oneOf(kShadingModelNames, "shading model");
     if (auto f = n.find("disney")) m.disney = parseDisneyOverride(*f);
+    if (auto f = n.find("clearcoat")) m.clearcoat = parseClearcoatOverride(*f);
     return m;
 }
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
-                                       "emission", "model", "disney", "derived"});
+                                       "emission", "model", "disney", "clearcoat", "derived"});
     MaterialOverride o = parseMaterialOverride(n);
     // "derived": the fields listed were derived from the other model's when the document was written (Python's
     // documents list them): read, but not given, so that they follow the given fields again.

@@ -15,6 +15,8 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 
 // A material's "disney" object: some of the principled BRDF's parameters, each in [0, 1].
 DisneyOverride parseDisneyOverride(const JsonNode& n);
+// A material's "clearcoat" object: some of glTF's clear coat fields (factor, roughness), each in [0, 1].
+ClearcoatOverride parseClearcoatOverride(const JsonNode& n);
 // A material object of the file: its fields (unknown keys warned about) and its "derived" list.
 MaterialOverride parseMaterialFields(const JsonNode& n);
 // An object's "material": inline fields, or a string naming an entry of the top-level "materials".

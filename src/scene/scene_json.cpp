@@ -290,17 +290,13 @@ double exact(float f) {
 
 OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
 
-// The principled BRDF's parameters: those that are set (an override), or all of them.
-OJson disneyJson(const DisneyOverride& o) {
+// A group of parameters (the principled BRDF's, the clear coat's): those that are set (an override).
+template <class O>
+OJson paramsJson(const O& o) {
     OJson j = OJson::object();
-    for (int i = 0; i < kDisneyFieldCount; ++i)
-        if (o.value[i]) j[kDisneyFields[i].name] = exact(*o.value[i]);
+    for (int i = 0; i < O::kCount; ++i)
+        if (o.value[i]) j[O::fields()[i].name] = exact(*o.value[i]);
     return j;
-}
-OJson disneyJson(const DisneyParams& p) {
-    DisneyOverride all;
-    for (int i = 0; i < kDisneyFieldCount; ++i) all.value[i] = p.*kDisneyFields[i].member;
-    return disneyJson(all);
 }
 
 // The given fields of `m` (a derived one is derived again on loading); `withDerived` writes the derived ones too,
@@ -328,7 +324,9 @@ OJson materialJson(const Material& m, bool withDerived) {
     // The principled BRDF's parameters where they matter: a disney material, or any left off their defaults; in
     // Python's documents always, so that they can be edited in place.
     if (withDerived || m.model == ShadingModel::Disney || m.disney != DisneyParams{})
-        j["disney"] = disneyJson(m.disney);
+        j["disney"] = paramsJson(DisneyOverride::all(m.disney));
+    // The clear coat where there is one (Python's documents always, to be edited in place).
+    if (withDerived || m.clearcoat != Clearcoat{}) j["clearcoat"] = paramsJson(ClearcoatOverride::all(m.clearcoat));
     if (withDerived && m.derived) {
         OJson names = OJson::array();
         for (const auto& entry : kMaterialFieldNames)
@@ -352,7 +350,8 @@ OJson overrideJson(const MaterialOverride& m) {
     if (m.roughness) j["roughness"] = exact(*m.roughness);
     if (m.emission) j["emission"] = vec(*m.emission);
     if (m.model) j["model"] = toString(*m.model);
-    if (!m.disney.empty()) j["disney"] = disneyJson(m.disney);
+    if (!m.disney.empty()) j["disney"] = paramsJson(m.disney);
+    if (!m.clearcoat.empty()) j["clearcoat"] = paramsJson(m.clearcoat);
     return j;
 }
 

@@ -193,6 +193,32 @@ TEST(SceneJson, DisneyParametersReadWithDefaultsAndRoundTrip) {
     EXPECT_EQ(gWarnings.size(), 0u) << joined(gWarnings);
 }
 
+// glTF's clear coat: read with its defaults (no coat), saved only where there is one, read back exactly, also as a
+// mesh's override; a misspelt field warns with a hint (a value outside [0, 1]: scene_json_errors_test.cpp).
+TEST(SceneJson, ClearcoatReadsSavesOnlyWhereThereIsOneAndRoundTrips) {
+    Scene s = parse(R"({"model": "pbr", "objects": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1,
+         "material": {"baseColor": [0.8, 0.2, 0.1], "clearcoat": {"factor": 0.75, "roughness": 0.125}}},
+        {"type": "sphere", "center": [3, 1, 0], "radius": 1, "material": {"clearcoat": {"factor": 1}}},
+        {"type": "sphere", "center": [6, 1, 0], "radius": 1},
+        {"type": "mesh", "source": "torus.gltf", "material": {"clearcoat": {"roughness": 0.5}}}]})");
+    EXPECT_EQ(s.spheres[0].material.clearcoat, (Clearcoat{0.75f, 0.125f}));
+    EXPECT_EQ(s.spheres[1].material.clearcoat, (Clearcoat{1.0f, 0.0f}));  // glTF's default coat roughness
+    EXPECT_EQ(s.spheres[2].material.clearcoat, Clearcoat{});
+    EXPECT_EQ(s.meshes[0].material.clearcoat.value[1], 0.5f);
+    EXPECT_FALSE(s.meshes[0].material.clearcoat.value[0]);
+    expectRoundTrip(s);
+    const std::string saved = sceneToJson(s);
+    size_t coats = 0;
+    for (size_t at = saved.find("\"clearcoat\""); at != std::string::npos; at = saved.find("\"clearcoat\"", at + 1))
+        ++coats;
+    EXPECT_EQ(coats, 3u) << saved;  // the two coats and the override; none where there is no coat
+    parse(R"({"objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1,
+                           "material": {"clearcoat": {"Factor": 1}}}]})");
+    EXPECT_EQ(joined(gWarnings),
+              "a.json: objects[0].material.clearcoat: unknown field 'Factor' (ignored); did you mean 'factor'?\n");
+}
+
 TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
     Scene s = parse(R"({"foo": 1, "camera": {"fovy": 30},
         "lights": [{"type": "point", "position": [0, 1, 0], "colour": [1, 0, 0]}], "raster": {"PCF": true},

@@ -47,6 +47,8 @@ struct Diff {
         v(p + ".baseColor", a.baseColor, b.baseColor), f(p + ".metallic", a.metallic, b.metallic);
         f(p + ".roughness", a.roughness, b.roughness);
         for (const DisneyField& d : kDisneyFields) f(p + ".disney." + d.name, a.disney.*d.member, b.disney.*d.member);
+        for (const auto& c : kClearcoatFields)
+            f(p + ".clearcoat." + c.name, a.clearcoat.*c.member, b.clearcoat.*c.member);
         eq(p + ".model", a.model, b.model);
     }
     void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
@@ -58,6 +60,8 @@ struct Diff {
         opt(p + ".metallic", a.metallic, b.metallic, ff), opt(p + ".roughness", a.roughness, b.roughness, ff);
         for (int i = 0; i < kDisneyFieldCount; ++i)
             opt(p + ".disney." + kDisneyFields[i].name, a.disney.value[i], b.disney.value[i], ff);
+        for (int i = 0; i < ClearcoatOverride::kCount; ++i)
+            opt(p + ".clearcoat." + kClearcoatFields[i].name, a.clearcoat.value[i], b.clearcoat.value[i], ff);
     }
 };
 

@@ -24,6 +24,10 @@ struct SurfaceParams {
     vec3 baseColor{0.0f};
     float metallic = 0.0f;
     vec4 disney0{0.0f}, disney1{0.0f};
+    // pbr only: the clear coat (Clearcoat::packed, textures applied; factor 0: none) and its normal, the
+    // geometry's or the coat's normal map's (clearcoatLight).
+    vec2 coat{0.0f};
+    vec3 coatN{0.0f};
 };
 
 // The coefficients shadeLight reads under `model`: the lecture's (ma, md, ms, s), or for SL_MODEL_PBR the
@@ -62,6 +66,16 @@ inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCo
             if (l.visibility <= 0.0f) continue;
             I += l.visibility * shadeLightDisney(N, l.L, V, l.Il, m.baseColor, m.metallic, m.s, m.disney0, m.disney1,
                                                  t.diffuse, t.specular, m.specScale);
+        }
+        return I;
+    }
+    if (m.coat.x > 0.0f && t.specular) {  // pbr under a clear coat
+        for (size_t i = 0; i < lightCount; ++i) {
+            const LightSample& l = lights[i];
+            if (l.visibility <= 0.0f) continue;
+            const vec3 base =
+                shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular, m.specScale);
+            I += l.visibility * clearcoatLight(base, m.coatN, l.L, V, l.Il, m.coat, t.specular);
         }
         return I;
     }

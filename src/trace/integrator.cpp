@@ -213,6 +213,10 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
         params.metallic = s.metallic;
         params.ms = shading::disneySpecularF0(s.baseColor, s.metallic, m.disney.specular, m.disney.specularTint);
     }
+    if (s.model == shading::SL_MODEL_PBR && s.coat.x > 0.0f) {  // glTF's clear coat (disney has its own)
+        params.coat = s.coat;
+        params.coatN = s.coatN;
+    }
     params.ma = params.ma * s.ao;
     glm::vec2 dfg(0.0f);
     if (pbr && (sc.energyCompensation || env_.lightsPbr()))
@@ -220,6 +224,14 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     if (pbr && sc.energyCompensation) params.specScale = shading::energyCompensation(params.ms, dfg);
     if (dfgOut) *dfgOut = dfg;
     return params;
+}
+
+glm::vec3 WhittedIntegrator::coatedEnvironment(const glm::vec3& base, const shading::SurfaceParams& params,
+                                               const glm::vec3& V) const {
+    shading::IblLookup ibl;  // (its functions are not const: the shared GLSL text has no const methods)
+    const glm::vec3 pre = env_.prefiltered(ibl.iblReflect(params.coatN, V), params.coat.y);
+    const glm::vec2 dfg = env_.dfg(ibl.iblNoV(params.coatN, V), params.coat.y);
+    return shading::clearcoatEnvironment(base, params.coatN, V, pre, dfg, params.coat, scene_.scene().terms.specular);
 }
 
 glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree) const {
@@ -240,6 +252,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
             reflected ? env_.prefilteredWithMirror(R, s.roughness, *reflected) : env_.prefiltered(R, s.roughness);
         environment = s.ao * shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
                                                        sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
+        if (params.coat.x > 0.0f) environment = coatedEnvironment(environment, params, V);
     }
     const bool ambientOn = sc.terms.ambient && !environmentLit;
     const bool lit = sc.terms.diffuse || sc.terms.specular;

@@ -83,6 +83,9 @@ private:
     glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree, TreeRayKind kind) const;
     glm::vec3 shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight, Tree& tree) const;
     glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree) const;
+    // The environment's light `base` on a pbr surface under its clear coat (params.coat): the coat reflects the
+    // prefiltered environment at its own normal and roughness, not the objects around it (docs/lighting.md).
+    glm::vec3 coatedEnvironment(const glm::vec3& base, const shading::SurfaceParams& params, const glm::vec3& V) const;
     // Appends a ray to the tree's record, a child of the ray being shaded, and makes it the one being shaded.
     void note(Tree& tree, TreeRayKind kind, int depth, const Ray& ray, const std::optional<Hit>& hit,
               const glm::vec3& weight, float after = 0.0f) const;

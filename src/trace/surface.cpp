@@ -102,6 +102,7 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
     s.roughness = s.material->roughness;
     s.metallic = s.material->metallic;
     s.alpha = s.material->alpha;
+    s.coat = s.material->clearcoat.packed();
     s.P = ray.origin + hit.t * ray.dir;
     const glm::vec3 V = -ray.dir;
     switch (hit.kind) {
@@ -112,6 +113,7 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
             s.N = shading::faceForward(outward, V);
             s.entering = !(glm::dot(outward, V) < 0.0f);
             s.Nf = glm::normalize(s.N);
+            s.coatN = s.N;
             break;
         }
         case HitKind::Plane: {
@@ -120,6 +122,7 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
             s.N = shading::faceForward(pl.normal, V);
             s.entering = !(glm::dot(pl.normal, V) < 0.0f);
             s.Nf = glm::normalize(s.N);
+            s.coatN = s.N;
             if (pl.checker && shading::checkerParity(s.P, pl.normal, pl.checker->size) == 1) {
                 s.md = pl.checker->md2;
                 s.baseColor = pl.checker->md2;  // pbr: the second tiles' base colour (F0 stays the plane's)
@@ -157,18 +160,28 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
                 s.ms = shading::mapSpecular(s.model, sc.normalized, s.baseColor, metallic, s.s);
                 s.mapped = true;
             }
-            if (m.normalTexture) {
+            // The tangent here (w: the bitangent's sign), for the normal maps; zero without tangents.
+            const auto tangent = [&] {
                 const MeshGeometry& g = *scene_.meshPart(hit).geometry;
-                glm::vec4 T(0.0f);
-                if (g.tangents.size() == g.positions.size()) {
-                    const size_t i = 3 * size_t(scene_.triangleInPart(hit));
-                    T = hit.b0 * g.tangents[g.indices[i]] + hit.b1 * g.tangents[g.indices[i + 1]] +
-                        hit.b2 * g.tangents[g.indices[i + 2]];
-                }
-                const glm::vec3 n =
-                    shading::mapNormal(N, T, mapTexel(ray, hit, depth, m.normalTexture), m.normalTexture.strength);
+                if (g.tangents.size() != g.positions.size()) return glm::vec4(0.0f);
+                const size_t i = 3 * size_t(scene_.triangleInPart(hit));
+                return hit.b0 * g.tangents[g.indices[i]] + hit.b1 * g.tangents[g.indices[i + 1]] +
+                       hit.b2 * g.tangents[g.indices[i + 2]];
+            };
+            s.coatN = s.N;  // the coat follows the geometry, not the base's normal map
+            if (m.normalTexture) {
+                const glm::vec3 n = shading::mapNormal(N, tangent(), mapTexel(ray, hit, depth, m.normalTexture),
+                                                       m.normalTexture.strength);
                 s.N = back ? -n : n;
             }
+            if (m.clearcoatNormalTexture) {
+                const glm::vec3 n =
+                    shading::mapNormal(N, tangent(), mapTexel(ray, hit, depth, m.clearcoatNormalTexture),
+                                       m.clearcoatNormalTexture.strength);
+                s.coatN = back ? -n : n;
+            }
+            if (m.clearcoatTexture) s.coat.x *= mapTexel(ray, hit, depth, m.clearcoatTexture).r;
+            if (m.clearcoatRoughnessTexture) s.coat.y *= mapTexel(ray, hit, depth, m.clearcoatRoughnessTexture).g;
             if (m.emissiveTexture) s.emissive = glm::vec3(mapTexel(ray, hit, depth, m.emissiveTexture));
             if (m.occlusionTexture)
                 s.ao =

@@ -35,6 +35,10 @@ struct Surface {
     float ao = 1.0f;
     float alpha = 1.0f;
     glm::vec3 emissive{1.0f};  // the emissive texture's linear RGB here (1 without one): scales emission
+    // pbr's clear coat here: (factor, roughness) times its textures' texels, and its normal on the viewer's side:
+    // the geometry's (the interpolated one, not the base's normal map), or its own normal map's.
+    glm::vec2 coat{0.0f};
+    glm::vec3 coatN{0.0f};
 };
 
 // How a primary ray's unnormalised direction D = forward + x·right + y·up changes per pixel step of the

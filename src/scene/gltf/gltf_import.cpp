@@ -99,6 +99,8 @@ public:
             m.occlusionTexture.strength = finiteClamp(gm.occlusionTexture.strength, 0.0f, 1.0f, 1.0f);
             m.emissiveTexture = bind(gm.emissiveTexture.index, gm.emissiveTexture.texCoord,
                                      gm.emissiveTexture.extensions, true, ".emissiveTexture");
+            if (auto coat = gm.extensions.find("KHR_materials_clearcoat"); coat != gm.extensions.end())
+                bindClearcoatMaps(m, coat->second, place + ".extensions.KHR_materials_clearcoat");
         }
         if (!model.animations.empty()) warnOnce("animations are ignored (the static pose is imported)");
         for (const std::string& line : unshadedMaterialExtensions(model)) warnOnce(line);
@@ -153,6 +155,34 @@ public:
 private:
     void warnOnce(const std::string& line) {
         if (warned_.insert(line).second) out_.warnings.push_back(line);
+    }
+
+    // KHR_materials_clearcoat's texture infos (`coat`, the extension's object at `where`): clearcoatTexture
+    // (red), clearcoatRoughnessTexture (green), clearcoatNormalTexture (with its scale); the factors are
+    // materialFrom's. A texture info that is not an object, or whose index or texCoord is not a whole number,
+    // is warned about and left out.
+    void bindClearcoatMaps(Material& m, const tinygltf::Value& coat, const std::string& where) {
+        const auto bindInfo = [&](const char* key) {
+            if (!coat.IsObject() || !coat.Has(key)) return TextureBinding{};
+            const tinygltf::Value& info = coat.Get(key);
+            const std::string place = where + "." + key;
+            const std::optional<int> index = wholeNumber(numberOr(info, "index", -1.5), 0, 1 << 30);
+            const std::optional<int> texCoord = wholeNumber(numberOr(info, "texCoord", 0.0), 0, 1 << 30);
+            if (!info.IsObject() || !index || !texCoord) {
+                warnOnce(place + ": not a texture info with a whole index and texCoord; using the factor alone");
+                return TextureBinding{};
+            }
+            const tinygltf::Value* transform = nullptr;
+            if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
+                transform = &info.Get("extensions").Get("KHR_texture_transform");
+            return textures_.binding(*index, *texCoord, false, place, transform);
+        };
+        m.clearcoatTexture = bindInfo("clearcoatTexture");
+        m.clearcoatRoughnessTexture = bindInfo("clearcoatRoughnessTexture");
+        m.clearcoatNormalTexture = bindInfo("clearcoatNormalTexture");
+        if (m.clearcoatNormalTexture)
+            m.clearcoatNormalTexture.strength =
+                finiteClamp(numberOr(coat.Get("clearcoatNormalTexture"), "scale", 1.0), -1e6f, 1e6f, 1.0f);
     }
 
     void checkNode(int index, const std::string& place) const {
@@ -314,8 +344,11 @@ private:
                                  std::to_string(materials_.size()) + " materials)");
         MeshPart part;
         part.material = prim.material >= 0 ? materials_[size_t(prim.material)] : defaultMaterial_;
-        // A normal map needs tangents: the file's, or generated from its coordinate set (mesh_tangents.h).
-        if (const TextureBinding& nt = part.material.normalTexture; nt && geo.tangents.empty()) {
+        // A normal map (the base's, or the clear coat's) needs tangents: the file's, or generated from its
+        // coordinate set (mesh_tangents.h).
+        const TextureBinding& nt =
+            part.material.normalTexture ? part.material.normalTexture : part.material.clearcoatNormalTexture;
+        if (nt && geo.tangents.empty()) {
             const std::vector<glm::vec2>& uvs = nt.texCoord == 1 ? geo.texcoords1 : geo.texcoords0;
             if (uvs.size() == geo.positions.size())
                 geo.tangents = generateTangents(geo.positions, geo.normals, uvs, geo.indices);

@@ -364,16 +364,40 @@ TEST(GltfImport, TwoCylinderEngineImportsWhole) {
     EXPECT_EQ(triangleCount(g), 121496u);
 }
 
-// A material extension that is not shaded is said once per file, not dropped in silence: ClearCoatTest's coat
-// (the one layered Khronos asset Debian ships). Control: a model without one says nothing of the kind.
-TEST(GltfImport, AMaterialExtensionNotShadedIsSaidOnce) {
-    REQUIRE_MODELS();
-    const GltfImport g = importGltf(model("glTF2/ClearCoat-glTF/ClearCoatTest.gltf"));
+// A material extension that is not shaded is said once per file, not dropped in silence (here two materials
+// with a sheen); one that is shaded, the clear coat, is not mentioned and is read (factor, roughness, and its
+// maps on ClearCoatTest, the one layered Khronos asset Debian ships). Control: a model without either says
+// nothing of the kind.
+TEST(GltfImport, AMaterialExtensionNotShadedIsSaidOnceAndTheClearcoatIsRead) {
+    const std::string sheen = R"({"extensions":{"KHR_materials_sheen":{"sheenColorFactor":[1,1,1]}}})";
+    const std::string path = writeGltf(
+        "layers.gltf", quad(), R"([{"mesh":0}])", "[0]",
+        R"(,"materials":[)" + sheen + "," + sheen +
+            R"(,{"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":0.75,"clearcoatRoughnessFactor":0.2}}}])");
+    const GltfImport g = importGltf(path);
     const auto lines = std::count_if(g.warnings.begin(), g.warnings.end(), [](const std::string& w) {
-        return contains(w, "KHR_materials_clearcoat is not shaded");
+        return contains(w, "KHR_materials_sheen is not shaded");
     });
     EXPECT_EQ(lines, 1);
-    EXPECT_TRUE(anyWarningContains(g, "materials use it): rendered without it"));
+    EXPECT_TRUE(anyWarningContains(g, "KHR_materials_sheen is not shaded (2 materials use it): rendered without it"));
+    EXPECT_FALSE(anyWarningContains(g, "KHR_materials_clearcoat"));
+    REQUIRE_MODELS();
+    const GltfImport coated = importGltf(model("glTF2/ClearCoat-glTF/ClearCoatTest.gltf"));
+    EXPECT_FALSE(anyWarningContains(coated, "is not shaded"));
+    int factors = 0, maps = 0, normalMaps = 0;
+    for (const MeshPart& p : coated.parts) {
+        const Material& m = p.material;
+        if (m.clearcoat.factor == 1.0f && (m.clearcoat.roughness == 0.03f || m.clearcoat.roughness == 1.0f)) ++factors;
+        maps += m.clearcoatTexture || m.clearcoatRoughnessTexture;
+        normalMaps += bool(m.clearcoatNormalTexture);
+        if (m.clearcoatNormalTexture) {
+            EXPECT_FALSE(m.clearcoatNormalTexture.texture->srgb);
+            EXPECT_EQ(p.geometry->tangents.size(), p.geometry->positions.size()) << "a coat normal map needs tangents";
+        }
+    }
+    EXPECT_EQ(factors, 6);
+    EXPECT_EQ(maps, 2);
+    EXPECT_EQ(normalMaps, 2);
     const GltfImport plain = importGltf(model("glTF2/BoxTextured-glTF/BoxTextured.gltf"));
     EXPECT_FALSE(anyWarningContains(plain, "is not shaded"));
 }

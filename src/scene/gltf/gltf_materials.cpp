@@ -1,5 +1,5 @@
 // glTF materials → shadelab's Phong materials (docs/gltf-import.md): metallic-roughness by the documented
-// mapping, KHR_materials_pbrSpecularGlossiness and KHR_materials_ior when present.
+// mapping, KHR_materials_pbrSpecularGlossiness, KHR_materials_ior and KHR_materials_clearcoat when present.
 #include "scene/gltf/gltf_materials.h"
 
 #include "scene/gltf/gltf_import.h"
@@ -61,6 +61,12 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
         if (strength != gm.extensions.end())
             m.emission *= finiteClamp(numberOr(strength->second, "emissiveStrength", 1.0), 0.0f, 1e6f, 1.0f);
     }
+    // KHR_materials_clearcoat: the coat's factor and roughness (its maps are bound with the other textures).
+    auto coat = gm.extensions.find("KHR_materials_clearcoat");
+    if (coat != gm.extensions.end()) {
+        m.clearcoat.factor = finiteClamp(numberOr(coat->second, "clearcoatFactor", 0.0), 0.0f, 1.0f, 0.0f);
+        m.clearcoat.roughness = finiteClamp(numberOr(coat->second, "clearcoatRoughnessFactor", 0.0), 0.0f, 1.0f, 0.0f);
+    }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);
@@ -98,7 +104,8 @@ Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, 
 std::vector<std::string> unshadedMaterialExtensions(const tinygltf::Model& model) {
     // The material extensions materialFrom reads; every other KHR_materials_* changes how a surface looks.
     static const std::set<std::string> kShaded = {"KHR_materials_pbrSpecularGlossiness",
-                                                  "KHR_materials_emissive_strength", "KHR_materials_ior"};
+                                                  "KHR_materials_emissive_strength", "KHR_materials_ior",
+                                                  "KHR_materials_clearcoat"};
     std::map<std::string, size_t> users;  // extension → materials that use it, in name order
     for (const tinygltf::Material& gm : model.materials)
         for (const auto& [name, value] : gm.extensions)

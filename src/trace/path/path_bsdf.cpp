@@ -1,4 +1,5 @@
-// PathBsdf: evaluation through lighting.glsl's shadeLightScaled and shadeLightDisney, lobe sampling through warp.h.
+// PathBsdf: evaluation through lighting.glsl's shadeLightScaled, clearcoatLight and shadeLightDisney, lobe sampling
+// through warp.h.
 #include "trace/path/path_bsdf.h"
 
 #include "shading/lighting.h"
@@ -58,6 +59,15 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
             const float F = luminance(shading::F_Schlick(ms_, NoV) * specScale_);
             specular = F;
             diffuse *= 1.0f - std::min(F, 1.0f);
+            if (params.coat.x > 0.0f) {
+                // The coat reflects about factor·Fc(Nc·V) of the light and passes the rest to the base.
+                const glm::vec3 Nc = glm::normalize(params.coatN);
+                clearcoat_ = Clearcoat{params.coat, Frame(Nc), shading::pbrAlpha(params.coat.y)};
+                const float w = shading::clearcoatWeight(Nc, V_, params.coat.x);
+                diffuse *= 1.0f - w;
+                specular *= 1.0f - w;
+                coat = std::max(w, 0.02f * params.coat.x);
+            }
         }
         // A lobe with any weight keeps a floor of samples: its albedo estimate may be off near grazing angles.
         if (luminance(ms_) > 0.0f) specular = std::max(specular, 0.05f * luminance(ms_));
@@ -104,6 +114,7 @@ void PathBsdf::pickDisneyLobes(float NoV, float& diffuse, float& specular, float
 glm::vec3 PathBsdf::evalCos(const glm::vec3& wi) const {
     if (!hasSmooth()) return glm::vec3(0.0f);
     if (disney_) return evalCosDisney(wi);
+    if (clearcoat_) return evalCosCoated(wi);
     return shading::shadeLightScaled(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
                                      specScale_) *
            (1.0f / kPi);
@@ -113,6 +124,13 @@ glm::vec3 PathBsdf::evalCosDisney(const glm::vec3& wi) const {
     const DisneyLobes& d = *disney_;
     return shading::shadeLightDisney(N_, wi, V_, glm::vec3(1.0f), d.baseColor, d.metallic, s_, d.params0, d.params1,
                                      diffuseOn_, specularOn_, specScale_) *
+           (1.0f / kPi);
+}
+
+glm::vec3 PathBsdf::evalCosCoated(const glm::vec3& wi) const {
+    const glm::vec3 base = shading::shadeLightScaled(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_,
+                                                     specularOn_, specScale_);
+    return shading::clearcoatLight(base, clearcoat_->frame.n, wi, V_, glm::vec3(1.0f), clearcoat_->coat, specularOn_) *
            (1.0f / kPi);
 }
 
@@ -138,12 +156,25 @@ float PathBsdf::specularPdf(const glm::vec3& wi) const {
     return ggxVisibleNormalPdf(frame_.toLocal(V_), frame_.toLocal(H), alpha_) / (4.0f * VoH);
 }
 
-// The clearcoat's density: GTR1's normal density over the reflection's Jacobian 1 / (4 V·H).
+// The clearcoat's density over the reflection's Jacobian 1 / (4 V·H): GTR1's normal density (disney), or the GGX
+// visible-normal density around the coat's normal (pbr's clear coat).
 float PathBsdf::coatPdf(const glm::vec3& wi) const {
     glm::vec3 H;
     float VoH;
     if (!halfVector(wi, H, VoH)) return 0.0f;
+    if (clearcoat_) {
+        const Frame& f = clearcoat_->frame;
+        return ggxVisibleNormalPdf(f.toLocal(V_), f.toLocal(H), clearcoat_->alpha) / (4.0f * VoH);
+    }
     return gtr1NormalPdf(glm::dot(N_, H), disney_->coatAlpha) / (4.0f * VoH);
+}
+
+glm::vec3 PathBsdf::sampleCoat(glm::vec2 u) const {
+    if (!clearcoat_) return reflectAbout(V_, frame_.toWorld(sampleGtr1Normal(u, disney_->coatAlpha)));
+    const Frame& f = clearcoat_->frame;
+    const glm::vec3 v = f.toLocal(V_);
+    if (v.z <= 0.0f) return glm::vec3(0.0f);
+    return reflectAbout(V_, f.toWorld(sampleGgxVisibleNormal(v, clearcoat_->alpha, u)));
 }
 
 float PathBsdf::pdf(const glm::vec3& wi) const {
@@ -193,7 +224,7 @@ std::optional<BsdfSample> PathBsdf::sample(const glm::vec3& u) const {
     else if (pick < pDiffuse_ + pSpecular_)
         out.wi = sampleSpecular(uv);
     else
-        out.wi = reflectAbout(V_, frame_.toWorld(sampleGtr1Normal(uv, disney_->coatAlpha)));
+        out.wi = sampleCoat(uv);
     // Directions under the shading or the geometric surface carry nothing back (f is 0 there, or the ray
     // would start inside the object).
     if (!(glm::dot(out.wi, N_) > 0.0f) || !(glm::dot(out.wi, Nf_) > 0.0f)) return std::nullopt;

@@ -4,7 +4,8 @@
 // and Blinn-Phong's specular lobes are sampled by their cos^s lobes (Lafortune & Willems 1994), pbr's GGX
 // lobe by its visible normals (Heitz 2018), the diffuse lobe by the cosine. disney's anisotropic GGX lobe is
 // sampled by its visible normals in the tangent frame of anisotropyTangent, its clearcoat by GTR1's normals
-// (Burley 2012, Appendix B), its diffuse, subsurface and sheen by the cosine. Mirrors (kr) and glass (kt,
+// (Burley 2012, Appendix B), its diffuse, subsurface and sheen by the cosine; pbr's clear coat (glTF's
+// KHR_materials_clearcoat) by its own GGX's visible normals around the coat's normal. Mirrors (kr) and glass (kt,
 // ior, refracted as the Whitted tracer refracts, total internal reflection going to the mirror) are delta
 // lobes. One lobe is picked per sample with probabilities from estimated albedos; pdf() is the mixture's.
 #pragma once
@@ -56,6 +57,8 @@ private:
     // Out of line: the other models' pdf() and evalCos() stay as small, and as inlined, as they were without disney.
     [[gnu::noinline]] float coatPdf(const glm::vec3& wi) const;
     [[gnu::noinline]] glm::vec3 evalCosDisney(const glm::vec3& wi) const;
+    [[gnu::noinline]] glm::vec3 evalCosCoated(const glm::vec3& wi) const;
+    glm::vec3 sampleCoat(glm::vec2 u) const;
     glm::vec3 toTangentFrame(const glm::vec3& v) const {
         return {glm::dot(v, disney_->tangentX), glm::dot(v, disney_->tangentY), glm::dot(v, N_)};
     }
@@ -79,6 +82,13 @@ private:
         float ax, ay, coatAlpha;
     };
     std::optional<DisneyLobes> disney_;
+    // pbr under glTF's clear coat only: its (factor, roughness), the frame around its unit normal and its GGX α.
+    struct Clearcoat {
+        glm::vec2 coat;
+        Frame frame;
+        float alpha;
+    };
+    std::optional<Clearcoat> clearcoat_;
     int model_;
     bool diffuseOn_, specularOn_;
     glm::vec3 kr_{0.0f}, kt_{0.0f};
