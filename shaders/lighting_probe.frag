@@ -7,6 +7,7 @@ uniform sampler2D t_L;        // xyz: L
 uniform sampler2D t_V;        // xyz: V
 uniform sampler2D t_params;   // x: s (pbr, disney: roughness), y: model (0 Phong, 1 Blinn-Phong, 2 pbr, 3 disney),
                               // z: metallic
+                              // y = 7: pbr with glTF's specular layer, t_disney0 its (f0d, weight)
                               // y = 8: pbr under glTF's clear coat, t_disney0 its (factor, roughness), t_disney1
                               // its normal
                               // y = 9: a spot light's intensity instead: N the spot's direction, L the light
@@ -30,6 +31,14 @@ void main() {
         vec4 cone = vec4(params.x, params.z, params.w, 1.0f);
         vec3 I = lightIntensityAt(u_Il, true, V, L, N, cone);
         o_result = vec4(I, spotAttenuation(N, L, vec2(params.x, params.z)));
+        return;
+    }
+    if (model == 7) {
+        // u_md is the base colour; w: the layered F0's green (pbrSpecularF0).
+        vec4 layer = texelFetch(t_disney0, p, 0);
+        vec3 I = shadeLightPbrSpecular(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), u_md, params.z, params.x, layer,
+                                       true, true, vec3(1.0f));
+        o_result = vec4(I, pbrSpecularF0(u_md, params.z, layer).y);
         return;
     }
     if (model == 8) {

@@ -31,10 +31,21 @@ uniform vec4 u_disney0;
 uniform vec4 u_disney1;
 float s_metallic = 0.0f;
 float surfaceMetallic() { return s_mapped ? s_metallic : u_metallic; }
+#if defined(SL_SPECULAR_LAYER) && SL_MODEL == 2
+// pbr with glTF's specular layer and index (lighting.glsl's shadeLightPbrSpecular): (f0d, w), SpecularLayer::packed.
+#define SL_LAYERED 1
+uniform vec4 u_specLayer;
+#else
+#define SL_LAYERED 0
+#endif
 // The F0 of the environment's light and of the energy compensation: under disney its own from the base colour
-// `base` here (disneySpecularF0), else surfaceMs().
+// `base` here (disneySpecularF0), under glTF's specular layer pbrSpecularF0, else surfaceMs().
 vec3 surfaceF0(vec3 base) {
+#if SL_LAYERED
+    return pbrSpecularF0(base, surfaceMetallic(), u_specLayer);
+#else
     return SL_MODEL == SL_MODEL_DISNEY ? disneySpecularF0(base, surfaceMetallic(), u_disney0.y, u_disney0.z) : surfaceMs();
+#endif
 }
 // One light's diffuse + specular under the variant's model (lighting.glsl's shadeLightModel, chosen here by the
 // preprocessor: the other models' programs keep exactly the code, and so the rounding, they had without disney).
@@ -42,6 +53,9 @@ vec3 shadeOneLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 base, vec3 spe
 #if SL_MODEL == 3
     return shadeLightDisney(N, L, V, Il, base, surfaceMetallic(), surfaceS(), u_disney0, u_disney1, SL_DIFFUSE,
                             SL_SPECULAR, specScale);
+#elif SL_LAYERED
+    return shadeLightPbrSpecular(N, L, V, Il, md, base, surfaceMetallic(), surfaceS(), u_specLayer, SL_DIFFUSE,
+                                 SL_SPECULAR, specScale);
 #else
     return shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #endif
@@ -79,9 +93,9 @@ vec2 dfgTexel(int x, int y) { return texelFetch(t_iblDfg, ivec2(x, y), 0).rg; }
 
 #if SL_IBL
 // The environment's light on a pbr surface (src/trace/integrator.cpp, WhittedIntegrator::local, with the
-// prefiltered lookup): diffuse·irradiance + prefiltered(R, roughness)·E, md the diffuse colour, f0 the F0 and
-// u_s the roughness. disney takes it as pbr does (docs/lighting.md).
-vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec2 dfg) {
+// prefiltered lookup): diffuse·irradiance + prefiltered(R, roughness)·E, md the diffuse colour, f0 the F0, base the
+// base colour and u_s the roughness. disney takes it as pbr does (docs/lighting.md).
+vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec3 base, vec2 dfg) {
 #if SL_IBL == 2
     vec3 R = iblReflect(N, V);
     vec3 sh[9];
@@ -92,7 +106,13 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec2 dfg) {
     vec3 irradiance = u_iblRadiance.xyz;
     vec3 prefiltered = u_iblRadiance.xyz;
 #endif
+#if SL_LAYERED
+    vec3 compensation = SL_ENERGY_COMPENSATION != 0 ? energyCompensation(f0, dfg) : vec3(1.0f);
+    return shadeEnvironmentPbrSpecular(md, base, surfaceMetallic(), u_specLayer, irradiance, prefiltered, dfg,
+                                       compensation, SL_DIFFUSE, SL_SPECULAR);
+#else
     return shadeEnvironment(md, f0, irradiance, prefiltered, dfg, SL_ENERGY_COMPENSATION != 0, SL_DIFFUSE, SL_SPECULAR);
+#endif
 }
 #endif
 
@@ -167,7 +187,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
     }
 #endif
 #if SL_IBL
-    vec3 environment = environmentLight(N, V, md, surfaceF0(base), dfg) * s_ao;
+    vec3 environment = environmentLight(N, V, md, surfaceF0(base), base, dfg) * s_ao;
 #if SL_COATED
     environment = coatedEnvironment(environment, coatNormal(N), V, surfaceCoat());
 #endif

@@ -5,6 +5,7 @@
 
 #include "app/material_presets.h"
 #include "app/specular_lobe.h"
+#include "scene/material_json.h"
 
 #include <imgui.h>
 #include <glm/common.hpp>
@@ -117,6 +118,11 @@ void drawMaterialSection(PanelContext& ctx) {
         ImGui::TextDisabled("pbr: glTF clear coat (KHR_materials_clearcoat)");
         changed |= ImGui::SliderFloat("clearcoat", &m.clearcoat.factor, 0.0f, 1.0f, "%.2f");
         changed |= ImGui::SliderFloat("coat roughness", &m.clearcoat.roughness, 0.0f, 1.0f, "%.3f");
+        // glTF's specular layer: the dielectric's lobe weight and F0 tint (its F0 from ior, above).
+        ImGui::TextDisabled("pbr: glTF specular (KHR_materials_specular), F0 from ior");
+        changed |= ImGui::SliderFloat("specular weight", &m.specular.factor, 0.0f, 1.0f, "%.2f");
+        changed |= ImGui::ColorEdit3("specular color", glm::value_ptr(m.specular.color), colorFlags);
+        m.specular.color = glm::clamp(m.specular.color, 0.0f, kMaxSpecularColor);
     }
     if (changed) {
         m.s = objectMaterial(s.scene, s.selected).s;  // the slider above already applied its own change

@@ -42,6 +42,8 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
         const float DisneyParams::*field = kDisneyFields[i].member;
         if (m.disney.*field != before.disney.*field) o.disney.value[i] = m.disney.*field;
     }
+    if (m.specular.factor != before.specular.factor) o.specular.factor = m.specular.factor;
+    if (m.specular.color != before.specular.color) o.specular.color = m.specular.color;
     for (int i = 0; i < ClearcoatOverride::kCount; ++i) {
         const float Clearcoat::*field = kClearcoatFields[i].member;
         if (m.clearcoat.*field != before.clearcoat.*field) o.clearcoat.value[i] = m.clearcoat.*field;

@@ -52,6 +52,16 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     paramsPbr.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     paramsPbr.coat = s.coat;  // glTF's clear coat, as WhittedIntegrator::shadingParams gives it to pbr
     paramsPbr.coatN = s.coatN;
+    if (hasSpecularLayer(m.specular, m.ior)) {  // glTF's specular layer and ior, as WhittedIntegrator's
+        paramsPbr.layered = true;
+        paramsPbr.specLayer = m.specular.packed(m.ior);
+        paramsPbr.baseColor = s.baseColor;
+        paramsPbr.metallic = m.metallic;
+        paramsPbr.ms = shading::pbrSpecularF0(s.baseColor, m.metallic, paramsPbr.specLayer);
+    }
+    // The base's terms, without the coat (the coat's part is listed on its own).
+    shading::SurfaceParams basePbr = paramsPbr;
+    basePbr.coat = glm::vec2(0.0f);
     r.pbrDiffuseColor = paramsPbr.md;
     r.pbrF0 = paramsPbr.ms;
     const int pbr = shading::SL_MODEL_PBR;
@@ -100,10 +110,9 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
         pl.D = shading::D_GGX(std::max(pl.NoH, 0.0f), glm::dot(NxH, NxH), a);
         pl.Vis = shading::V_SmithGGXCorrelated(std::max(glm::dot(r.N, r.V), 1e-4f), std::max(pl.NoL, 0.0f), a);
         pl.F = shading::F_Schlick(paramsPbr.ms, std::max(glm::dot(r.V, pl.H), 0.0f));
-        const glm::vec3 both =
-            shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, true, true);
-        pl.specularPbr =
-            vis * shading::shadeLight(s.N, Lraw, V, Il, paramsPbr.md, paramsPbr.ms, paramsPbr.s, pbr, false, true);
+        const shading::LightSample sample{Lraw, Il};
+        const glm::vec3 both = shading::shadeLightPbrLayers(s.N, sample, V, basePbr, true, true);
+        pl.specularPbr = vis * shading::shadeLightPbrLayers(s.N, sample, V, basePbr, false, true);
         pl.diffusePbr = vis * both - pl.specularPbr;
         if (paramsPbr.coat.x > 0.0f) {
             // Under the coat the base's two parts keep 1 − c·Fc, and the coat's lobe is the rest of the term.

@@ -49,16 +49,17 @@ public:
     // mesh.frag's SL_MATERIAL_MAPS bits for one material: bit k for map k (emissive 32), 16 for alpha, and
     // 128 for any of the clear coat's maps.
     static int materialMaps(const Material& m);
-    // The bits a program for `m` is chosen by: a mesh part's materialMaps, and kCoatBit for a clear coat
-    // (SL_CLEARCOAT; shaded only under pbr).
-    static int programBits(const Material& m, bool meshPart);
-    static constexpr int kCoatBit = 64;
+    // The bits a program for `m` is chosen by: a mesh part's materialMaps, and for a material shaded with pbr
+    // kCoatBit for a clear coat (SL_CLEARCOAT) and kSpecularLayerBit for glTF's specular layer or an index other
+    // than 1.5 (SL_SPECULAR_LAYER). Valid after prepare() has taken the scene's model.
+    int programBits(const Material& m, bool meshPart) const;
+    static constexpr int kCoatBit = 64, kSpecularLayerBit = 256;
 
 private:
     const gl::ShaderLibrary& shaders_;
     std::map<std::string, ColorPrograms> sets_;
     static constexpr int kModels = 4;     // shading::SL_MODEL_*
-    static constexpr int kMapSets = 256;  // programBits values
+    static constexpr int kMapSets = 512;  // programBits values
     // This render's sets by model × kMapSets + map bits (null: no object has them).
     std::array<const ColorPrograms*, kModels * kMapSets> chosen_{};
     int sceneModel_ = 0;

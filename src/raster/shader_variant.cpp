@@ -48,10 +48,12 @@ std::string ShaderVariant::defines() const {
 
 std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment) {
     std::string s = variantDefines;
-    // Bit 64 is the clear coat (ColorProgramCache::kCoatBit), the others mesh.frag's maps.
-    const int maps = materialMaps & ~64;
+    // Bit 64 is the clear coat and bit 256 glTF's specular layer (ColorProgramCache::kCoatBit, kSpecularLayerBit),
+    // the others mesh.frag's maps.
+    const int maps = materialMaps & ~(64 | 256);
     if (maps) s += "#define SL_MATERIAL_MAPS " + std::to_string(maps) + "\n";
     if (materialMaps & 64) s += "#define SL_CLEARCOAT 1\n";
+    if (materialMaps & 256) s += "#define SL_SPECULAR_LAYER 1\n";
     if (environment) s += "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n";
     return s;
 }

@@ -7,6 +7,7 @@
 #include "scene/clearcoat.h"
 #include "scene/disney_params.h"
 #include "scene/shading_model.h"
+#include "scene/specular_layer.h"
 #include "scene/texture.h"
 #include "util/name_table.h"
 
@@ -28,13 +29,14 @@ struct Material {
     float s = 32.0f;            // shininess exponent, [0, 10000]
     glm::vec3 kr{0.0f};         // reflectivity, RGB (tracer and raster reflections)
     glm::vec3 kt{0.0f};         // transmission, RGB
-    float ior = 1.5f;           // index of refraction, > 0
+    float ior = 1.5f;           // index of refraction, > 0; under pbr also the dielectric's F0 (KHR_materials_ior)
     glm::vec3 baseColor{0.7f};  // pbr: base colour, linear RGB in [0, 1] (= md by default)
     float metallic = 0.0f;      // pbr: [0, 1], 0 dielectric (F0 = 0.04), 1 metal (F0 = baseColor)
     float roughness = 0.4925f;  // pbr: perceptual roughness in [0, 1], α = roughness²; ≈ s = 32's equivalent
     DisneyParams disney;        // disney: the principled BRDF's other eight parameters (baseColor, metallic and
                                 // roughness are pbr's)
     Clearcoat clearcoat;        // pbr: glTF's clear coat layer over the base (KHR_materials_clearcoat); none by default
+    SpecularLayer specular;     // pbr: glTF's dielectric F0 tint and weight (KHR_materials_specular), with ior's F0
     glm::vec3 emission{0.0f};   // emitted radiance, linear RGB, >= 0, from both sides: an area light under the
                                 // path tracer; the other renderers add it to the surface's colour (design.md §8)
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
@@ -157,13 +159,14 @@ struct MaterialOverride {
     std::optional<ShadingModel> model;
     DisneyOverride disney;
     ClearcoatOverride clearcoat;
+    SpecularLayerOverride specular;
     // Linked fields whose values were derived when written (a Python document's "derived" list): read, but not
     // given, so that they follow the given fields again.
     uint8_t derived = 0;
 
     bool empty() const {
         return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission &&
-               !model && disney.empty() && clearcoat.empty();
+               !model && disney.empty() && clearcoat.empty() && specular.empty();
     }
     // Writes the fields, then derives from the given ones what follows from them (deriveFields). Fields of both
     // models given, with no "derived" list: each as given and nothing derived (docs/scene-format.md).
@@ -199,6 +202,7 @@ struct MaterialOverride {
         if (model) m.model = *model;
         disney.applyTo(m.disney);
         clearcoat.applyTo(m.clearcoat);
+        specular.applyTo(m.specular);
     }
 };
 

@@ -26,6 +26,14 @@ DisneyOverride parseDisneyOverride(const JsonNode& n) { return parseParamOverrid
 
 ClearcoatOverride parseClearcoatOverride(const JsonNode& n) { return parseParamOverride<ClearcoatOverride>(n); }
 
+SpecularLayerOverride parseSpecularLayerOverride(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"factor", "color"});
+    SpecularLayerOverride o;
+    if (auto f = n.find("factor")) o.factor = f->inRange(0.0f, 1.0f, false, false);
+    if (auto f = n.find("color")) o.color = f->rgbUpTo(kMaxSpecularColor);
+    return o;
+}
+
 MaterialOverride parseMaterialOverride(const JsonNode& n) {
     n.requireObject();
     MaterialOverride m;
@@ -43,12 +51,13 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("model")) m.model = f->oneOf(kShadingModelNames, "shading model");
     if (auto f = n.find("disney")) m.disney = parseDisneyOverride(*f);
     if (auto f = n.find("clearcoat")) m.clearcoat = parseClearcoatOverride(*f);
+    if (auto f = n.find("specular")) m.specular = parseSpecularLayerOverride(*f);
     return m;
 }
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
-                                       "emission", "model", "disney", "clearcoat", "derived"});
+                                       "emission", "model", "disney", "clearcoat", "specular", "derived"});
     MaterialOverride o = parseMaterialOverride(n);
     // "derived": the fields listed were derived from the other model's when the document was written (Python's
     // documents list them): read, but not given, so that they follow the given fields again.

@@ -17,6 +17,10 @@ using NamedMaterials = std::map<std::string, MaterialOverride>;
 DisneyOverride parseDisneyOverride(const JsonNode& n);
 // A material's "clearcoat" object: some of glTF's clear coat fields (factor, roughness), each in [0, 1].
 ClearcoatOverride parseClearcoatOverride(const JsonNode& n);
+// A material's "specular" object: glTF's specular layer, `factor` in [0, 1] and `color` (RGB, each in [0, 100]).
+SpecularLayerOverride parseSpecularLayerOverride(const JsonNode& n);
+// The largest specularColor a scene file takes (glTF allows more than 1; F0 is clamped to 1 after the tint).
+inline constexpr float kMaxSpecularColor = 100.0f;
 // A material object of the file: its fields (unknown keys warned about) and its "derived" list.
 MaterialOverride parseMaterialFields(const JsonNode& n);
 // An object's "material": inline fields, or a string naming an entry of the top-level "materials".

@@ -299,6 +299,14 @@ OJson paramsJson(const O& o) {
     return j;
 }
 
+// glTF's specular layer: the fields that are set.
+OJson specularJson(const SpecularLayerOverride& o) {
+    OJson j = OJson::object();
+    if (o.factor) j["factor"] = exact(*o.factor);
+    if (o.color) j["color"] = vec(*o.color);
+    return j;
+}
+
 // The given fields of `m` (a derived one is derived again on loading); `withDerived` writes the derived ones too,
 // listed under "derived", as Python's documents hold them.
 OJson materialJson(const Material& m, bool withDerived) {
@@ -327,6 +335,9 @@ OJson materialJson(const Material& m, bool withDerived) {
         j["disney"] = paramsJson(DisneyOverride::all(m.disney));
     // The clear coat where there is one (Python's documents always, to be edited in place).
     if (withDerived || m.clearcoat != Clearcoat{}) j["clearcoat"] = paramsJson(ClearcoatOverride::all(m.clearcoat));
+    // glTF's specular layer where it is off its defaults (Python's documents always).
+    if (withDerived || m.specular != SpecularLayer{})
+        j["specular"] = specularJson(SpecularLayerOverride{m.specular.factor, m.specular.color});
     if (withDerived && m.derived) {
         OJson names = OJson::array();
         for (const auto& entry : kMaterialFieldNames)
@@ -352,6 +363,7 @@ OJson overrideJson(const MaterialOverride& m) {
     if (m.model) j["model"] = toString(*m.model);
     if (!m.disney.empty()) j["disney"] = paramsJson(m.disney);
     if (!m.clearcoat.empty()) j["clearcoat"] = paramsJson(m.clearcoat);
+    if (!m.specular.empty()) j["specular"] = specularJson(m.specular);
     return j;
 }
 

@@ -54,6 +54,8 @@ TEST(SceneJson, ErrorsNameThePathAndTheReason) {
         {m + R"({"clearcoat": {"roughness": -0.5}}}]})",
          {"objects[0].material.clearcoat.roughness", "must be in [0, 1]"}},
         {m + R"({"clearcoat": [1, 0]}}]})", {"objects[0].material.clearcoat", "expected an object, got array"}},
+        {m + R"({"specular": {"factor": 2}}}]})", {"objects[0].material.specular.factor", "must be in [0, 1]"}},
+        {m + R"({"specular": {"color": [1, -1, 1]}}}]})", {"objects[0].material.specular.color[1]", "must be >= 0"}},
         {m + R"({"model": "principled"}}]})", {"objects[0].material.model", "disney"}},
         {m + R"({"ms": -0.5}}]})", {"objects[0].material.ms", "must be >= 0"}},
         {m + R"({"kr": [0.5, -1, 0]}}]})", {"objects[0].material.kr[1]", "must be >= 0"}},

@@ -219,6 +219,38 @@ TEST(SceneJson, ClearcoatReadsSavesOnlyWhereThereIsOneAndRoundTrips) {
               "a.json: objects[0].material.clearcoat: unknown field 'Factor' (ignored); did you mean 'factor'?\n");
 }
 
+// glTF's specular layer: read (a factor, a colour above 1), saved where it is off its defaults, read back exactly,
+// also as a mesh's override; its packing gives pbr's 0.04 exactly for the index 1.5 (so that a default material
+// shades as pbr does), the index's own F0 otherwise, and clamps a tinted F0 at 1.
+TEST(SceneJson, SpecularLayerReadsRoundTripsAndPacks) {
+    Scene s = parse(R"({"model": "pbr", "objects": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1,
+         "material": {"ior": 1.33, "specular": {"factor": 0.5, "color": [2, 1, 0.25]}}},
+        {"type": "sphere", "center": [3, 1, 0], "radius": 1},
+        {"type": "mesh", "source": "torus.gltf", "material": {"specular": {"factor": 0.25}}}]})");
+    const SpecularLayer& a = s.spheres[0].material.specular;
+    EXPECT_EQ(a.factor, 0.5f);
+    EXPECT_EQ(a.color, glm::vec3(2.0f, 1.0f, 0.25f));
+    EXPECT_EQ(s.spheres[1].material.specular, SpecularLayer{});
+    EXPECT_FALSE(hasSpecularLayer(s.spheres[1].material.specular, s.spheres[1].material.ior));
+    EXPECT_TRUE(hasSpecularLayer(SpecularLayer{}, 1.33f));
+    EXPECT_EQ(s.meshes[0].material.specular.factor, 0.25f);
+    EXPECT_FALSE(s.meshes[0].material.specular.color);
+    expectRoundTrip(s);
+    const std::string saved = sceneToJson(s);
+    size_t layers = 0;
+    const std::string key = "\"specular\": {";  // the layer's object, not the terms' "specular": true
+    for (size_t at = saved.find(key); at != std::string::npos; at = saved.find(key, at + 1)) ++layers;
+    EXPECT_EQ(layers, 2u) << "the layer and the override; a default layer is not written:\n" << saved;
+    EXPECT_EQ(SpecularLayer{}.packed(1.5f), glm::vec4(glm::vec3(0.04f), 1.0f));  // bit for bit pbr's constant
+    const glm::vec4 p = a.packed(1.33f);
+    const float f0 = float(std::pow((1.33 - 1.0) / (1.33 + 1.0), 2.0));
+    EXPECT_NEAR(p.x, 2.0f * f0, 1e-7f);
+    EXPECT_NEAR(p.z, 0.25f * f0, 1e-7f);
+    EXPECT_EQ(p.w, 0.5f);
+    EXPECT_EQ((SpecularLayer{1.0f, glm::vec3(100.0f)}.packed(3.0f).x), 1.0f);  // clamped
+}
+
 TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
     Scene s = parse(R"({"foo": 1, "camera": {"fovy": 30},
         "lights": [{"type": "point", "position": [0, 1, 0], "colour": [1, 0, 0]}], "raster": {"PCF": true},

@@ -49,6 +49,8 @@ struct Diff {
         for (const DisneyField& d : kDisneyFields) f(p + ".disney." + d.name, a.disney.*d.member, b.disney.*d.member);
         for (const auto& c : kClearcoatFields)
             f(p + ".clearcoat." + c.name, a.clearcoat.*c.member, b.clearcoat.*c.member);
+        f(p + ".specular.factor", a.specular.factor, b.specular.factor);
+        v(p + ".specular.color", a.specular.color, b.specular.color);
         eq(p + ".model", a.model, b.model);
     }
     void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
@@ -62,6 +64,8 @@ struct Diff {
             opt(p + ".disney." + kDisneyFields[i].name, a.disney.value[i], b.disney.value[i], ff);
         for (int i = 0; i < ClearcoatOverride::kCount; ++i)
             opt(p + ".clearcoat." + kClearcoatFields[i].name, a.clearcoat.value[i], b.clearcoat.value[i], ff);
+        opt(p + ".specular.factor", a.specular.factor, b.specular.factor, ff);
+        opt(p + ".specular.color", a.specular.color, b.specular.color, vv);
     }
 };
 

@@ -28,7 +28,21 @@ struct SurfaceParams {
     // geometry's or the coat's normal map's (clearcoatLight).
     vec2 coat{0.0f};
     vec3 coatN{0.0f};
+    // pbr only: glTF's specular layer and index (SpecularLayer::packed), shaded by shadeLightPbrSpecular with
+    // baseColor and metallic above when `layered`; ms then holds pbrSpecularF0.
+    bool layered = false;
+    vec4 specLayer{0.0f};
 };
+
+// One light's term of a pbr surface with glTF's layers (`m.layered`, `m.coat`), before visibility.
+inline vec3 shadeLightPbrLayers(vec3 N, const LightSample& l, vec3 V, const SurfaceParams& m, bool diffuseOn,
+                                bool specularOn) {
+    const vec3 base = m.layered ? shadeLightPbrSpecular(N, l.L, V, l.Il, m.md, m.baseColor, m.metallic, m.s,
+                                                        m.specLayer, diffuseOn, specularOn, m.specScale)
+                                : shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, SL_MODEL_PBR, diffuseOn,
+                                                   specularOn, m.specScale);
+    return m.coat.x > 0.0f ? clearcoatLight(base, m.coatN, l.L, V, l.Il, m.coat, specularOn) : base;
+}
 
 // The coefficients shadeLight reads under `model`: the lecture's (ma, md, ms, s), or for SL_MODEL_PBR the
 // ambient ma, the diffuse colour, F0 and the roughness derived from the metallic-roughness fields; for
@@ -69,13 +83,11 @@ inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCo
         }
         return I;
     }
-    if (m.coat.x > 0.0f && t.specular) {  // pbr under a clear coat
+    if (model == SL_MODEL_PBR && (m.layered || m.coat.x > 0.0f)) {  // pbr with glTF's layers
         for (size_t i = 0; i < lightCount; ++i) {
             const LightSample& l = lights[i];
             if (l.visibility <= 0.0f) continue;
-            const vec3 base =
-                shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, model, t.diffuse, t.specular, m.specScale);
-            I += l.visibility * clearcoatLight(base, m.coatN, l.L, V, l.Il, m.coat, t.specular);
+            I += l.visibility * shadeLightPbrLayers(N, l, V, m, t.diffuse, t.specular);
         }
         return I;
     }

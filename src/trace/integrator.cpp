@@ -184,6 +184,13 @@ glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::ve
         : s.mapped ? s.ms
                    : shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
     const glm::vec2 dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), s.roughness);
+    if (s.model == shading::SL_MODEL_PBR && hasSpecularLayer(m.specular, m.ior)) {  // glTF's specular layer
+        const glm::vec4 layer = m.specular.packed(m.ior);
+        const glm::vec3 layeredF0 = shading::pbrSpecularF0(s.baseColor, s.metallic, layer);
+        const glm::vec3 Ed = layer.w * shading::specularDFG(glm::vec3(layer), dfg);
+        const glm::vec3 E = glm::mix(Ed, shading::specularDFG(s.baseColor, dfg), s.metallic);
+        return sc.energyCompensation ? E * shading::energyCompensation(layeredF0, dfg) : E;
+    }
     glm::vec3 E = shading::specularDFG(f0, dfg);
     if (sc.energyCompensation) E = E * shading::energyCompensation(f0, dfg);
     return E;
@@ -216,6 +223,15 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     if (s.model == shading::SL_MODEL_PBR && s.coat.x > 0.0f) {  // glTF's clear coat (disney has its own)
         params.coat = s.coat;
         params.coatN = s.coatN;
+    }
+    if (s.model == shading::SL_MODEL_PBR && hasSpecularLayer(m.specular, m.ior)) {
+        // glTF's specular and ior: shadeLightPbrSpecular reads the base colour and metallic here (textured, the
+        // checker's, a texel's); its F0 for the environment and the energy compensation is pbrSpecularF0's.
+        params.layered = true;
+        params.specLayer = m.specular.packed(m.ior);
+        params.baseColor = s.baseColor;
+        params.metallic = s.metallic;
+        params.ms = shading::pbrSpecularF0(s.baseColor, s.metallic, params.specLayer);
     }
     params.ma = params.ma * s.ao;
     glm::vec2 dfg(0.0f);
@@ -250,8 +266,14 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         const glm::vec3 R = shading::IblLookup{}.iblReflect(s.N, V);
         const glm::vec3 pre =
             reflected ? env_.prefilteredWithMirror(R, s.roughness, *reflected) : env_.prefiltered(R, s.roughness);
-        environment = s.ao * shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
-                                                       sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
+        environment =
+            params.layered
+                ? s.ao * shading::shadeEnvironmentPbrSpecular(
+                             params.md, params.baseColor, params.metallic, params.specLayer, env_.irradiance(s.N), pre,
+                             dfg, sc.energyCompensation ? shading::energyCompensation(params.ms, dfg) : glm::vec3(1.0f),
+                             sc.terms.diffuse, sc.terms.specular)
+                : s.ao * shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
+                                                   sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
         if (params.coat.x > 0.0f) environment = coatedEnvironment(environment, params, V);
     }
     const bool ambientOn = sc.terms.ambient && !environmentLit;

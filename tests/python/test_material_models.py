@@ -146,3 +146,23 @@ def test_the_clearcoat_edits_in_place_under_pbr(pbr_default):
     with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.clearcoat\.factor: must be in \[0, 1\]"):
         material.clearcoat.factor = 1.5
     assert pbr_default.objects[0].material.clearcoat.factor == 1.0  # nothing lost
+
+
+def test_the_specular_layer_and_ior_edit_in_place_under_pbr(pbr_default):
+    material = pbr_default.objects[0].material
+    assert material.specular.factor == 1.0 and material.specular.color == (1.0, 1.0, 1.0)  # glTF's defaults
+    before = shadelab.render(pbr_default, (160, 90), coverage=True)
+    material.ior = 2.4  # a diamond's F0, 0.17 instead of 0.04
+    brighter = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    material.specular.factor = 0.0  # no dielectric specular lobe at all
+    dull = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    cov = np.asarray(before.coverage)
+    pixels = np.asarray(before)
+    assert brighter[cov == 1].sum(dtype=np.float64) > pixels[cov == 1].sum(dtype=np.float64)
+    assert dull[cov == 1].sum(dtype=np.float64) < pixels[cov == 1].sum(dtype=np.float64)
+    assert np.array_equal(pixels[cov == 2], dull[cov == 2])  # control: another sphere is untouched
+    saved = pbr_default.to_dict()["objects"][0]["material"]
+    assert saved["specular"]["factor"] == 0.0 and saved["ior"] == 2.4
+    with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.specular\.factor: must be in \[0, 1\]"):
+        material.specular.factor = -0.5
+    assert pbr_default.objects[0].material.specular.factor == 0.0  # nothing lost

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 namespace shadelab {
 namespace {
@@ -400,6 +401,31 @@ TEST(GltfImport, AMaterialExtensionNotShadedIsSaidOnceAndTheClearcoatIsRead) {
     EXPECT_EQ(normalMaps, 2);
     const GltfImport plain = importGltf(model("glTF2/BoxTextured-glTF/BoxTextured.gltf"));
     EXPECT_FALSE(anyWarningContains(plain, "is not shaded"));
+}
+
+// KHR_materials_specular and KHR_materials_ior are read into the material (pbr's F0 tint and weight, the index);
+// their textures are said to be not shaded, once each; a material without them keeps the defaults (control).
+TEST(GltfImport, SpecularAndIorAreRead) {
+    const std::string path =
+        writeGltf("specular.gltf", quad(), R"([{"mesh":0}])", "[0]",
+                  R"(,"materials":[{"extensions":{"KHR_materials_ior":{"ior":1.33},"KHR_materials_specular":)"
+                  R"({"specularFactor":0.5,"specularColorFactor":[2,1,0.5],"specularTexture":{"index":0}}}},{}])");
+    {  // the quad's primitive takes material 0
+        std::ifstream in(path);
+        nlohmann::json j = nlohmann::json::parse(in);
+        j["meshes"][0]["primitives"][0]["material"] = 0;
+        std::ofstream(path) << j.dump();
+    }
+    const GltfImport g = importGltf(path);
+    ASSERT_EQ(g.parts.size(), 1u);
+    const Material& m = g.parts[0].material;
+    EXPECT_EQ(m.ior, 1.33f);
+    EXPECT_EQ(m.specular.factor, 0.5f);
+    EXPECT_EQ(m.specular.color, glm::vec3(2.0f, 1.0f, 0.5f));
+    EXPECT_FALSE(anyWarningContains(g, "KHR_materials_specular is not shaded"));
+    EXPECT_TRUE(anyWarningContains(g, "KHR_materials_specular.specularTexture: not shaded yet; the factors alone are"));
+    const GltfImport plain = importGltf(writeGltf("plain.gltf", quad(), R"([{"mesh":0}])"));
+    EXPECT_EQ(plain.parts[0].material.specular, SpecularLayer{});
 }
 
 // Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed.

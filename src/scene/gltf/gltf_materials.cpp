@@ -1,5 +1,6 @@
 // glTF materials → shadelab's Phong materials (docs/gltf-import.md): metallic-roughness by the documented
-// mapping, KHR_materials_pbrSpecularGlossiness, KHR_materials_ior and KHR_materials_clearcoat when present.
+// mapping, KHR_materials_pbrSpecularGlossiness, KHR_materials_ior, KHR_materials_clearcoat and
+// KHR_materials_specular when present.
 #include "scene/gltf/gltf_materials.h"
 
 #include "scene/gltf/gltf_import.h"
@@ -67,6 +68,21 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
         m.clearcoat.factor = finiteClamp(numberOr(coat->second, "clearcoatFactor", 0.0), 0.0f, 1.0f, 0.0f);
         m.clearcoat.roughness = finiteClamp(numberOr(coat->second, "clearcoatRoughnessFactor", 0.0), 0.0f, 1.0f, 0.0f);
     }
+    // KHR_materials_specular: the dielectric's F0 tint and the weight of its specular lobe (pbr, with the ior's F0).
+    // Its two textures are not read: the factors alone, said once per material.
+    auto specular = gm.extensions.find("KHR_materials_specular");
+    if (specular != gm.extensions.end()) {
+        const tinygltf::Value& v = specular->second;
+        m.specular.factor = finiteClamp(numberOr(v, "specularFactor", 1.0), 0.0f, 1.0f, 1.0f);
+        const std::vector<double> color = numbersOf(v, "specularColorFactor");
+        if (color.size() >= 3)
+            m.specular.color = {finiteClamp(color[0], 0.0f, 100.0f, 1.0f), finiteClamp(color[1], 0.0f, 100.0f, 1.0f),
+                                finiteClamp(color[2], 0.0f, 100.0f, 1.0f)};
+        for (const char* key : {"specularTexture", "specularColorTexture"})
+            if (v.IsObject() && v.Has(key))
+                warnings.push_back(place + ".extensions.KHR_materials_specular." + key +
+                                   ": not shaded yet; the factors alone are");
+    }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);
@@ -105,7 +121,7 @@ std::vector<std::string> unshadedMaterialExtensions(const tinygltf::Model& model
     // The material extensions materialFrom reads; every other KHR_materials_* changes how a surface looks.
     static const std::set<std::string> kShaded = {"KHR_materials_pbrSpecularGlossiness",
                                                   "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                  "KHR_materials_clearcoat"};
+                                                  "KHR_materials_clearcoat", "KHR_materials_specular"};
     std::map<std::string, size_t> users;  // extension → materials that use it, in name order
     for (const tinygltf::Material& gm : model.materials)
         for (const auto& [name, value] : gm.extensions)

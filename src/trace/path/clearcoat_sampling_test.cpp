@@ -1,7 +1,8 @@
 // χ² test of PathBsdf's mixture under glTF's clear coat (pbr's diffuse, its GGX lobe and the coat's GGX lobe
-// around the coat's own normal) through sample() and pdf(), as disney_sampling_test.cpp does for disney; its
-// negative control claims the density of a coat rougher than the one sampled. A glossy coat's lobe is a few
-// thousandths of cos θ wide: each bin's expected count is integrated on a 96² grid.
+// around the coat's own normal), and with glTF's specular layer (its picking probabilities), through sample() and
+// pdf(), as disney_sampling_test.cpp does for disney; its negative control claims the density of a coat rougher than
+// the one sampled. A glossy coat's lobe is a few thousandths of cos θ wide: each bin's expected count is integrated on
+// a 96² grid.
 #include "shading/local_illumination.h"
 #include "trace/path/chi2_test_util.h"
 #include "trace/path/path_bsdf.h"
@@ -27,7 +28,8 @@ glm::vec3 numbers(int k) {
 struct CoatCase {
     float metallic, roughness;
     glm::vec2 coat;
-    glm::vec3 coatN;  // the coat's normal (the base's is +z)
+    glm::vec3 coatN;        // the coat's normal (the base's is +z)
+    glm::vec4 layer{0.0f};  // glTF's specular layer (f0d, weight); none here when the weight is 0
 };
 
 // The BSDF on the plane z = 0 seen from V under pbr with the case's coat.
@@ -41,6 +43,13 @@ PathBsdf makeCoated(Material& m, Surface& s, const glm::vec3& V, const CoatCase&
         shading::surfaceParams(shading::SL_MODEL_PBR, m.ma, m.md, m.ms, m.s, m.baseColor, c.metallic, c.roughness);
     p.coat = c.coat;
     p.coatN = c.coatN;
+    if (c.layer.w > 0.0f) {
+        p.layered = true;
+        p.specLayer = c.layer;
+        p.baseColor = m.baseColor;
+        p.metallic = c.metallic;
+        p.ms = shading::pbrSpecularF0(m.baseColor, c.metallic, c.layer);
+    }
     return PathBsdf(s, p, V, shading::SL_MODEL_PBR, BsdfTerms{});
 }
 
@@ -69,10 +78,12 @@ TEST(ClearcoatSampling, TheMixtureMatchesItsPdf) {
         bool headOn;
     };
     const Seen cases[] = {
-        {{0.0f, 0.5f, {1.0f, 0.1f}, kUp}, false},       // a gloss coat over plastic
-        {{0.0f, 0.3f, {0.5f, 0.5f}, kUp}, true},        // half a rough coat
-        {{1.0f, 0.6f, {1.0f, 0.3f}, kUp}, true},        // a coat over a rough metal
-        {{0.0f, 0.5f, {1.0f, 0.15f}, kTilted}, false},  // a coat normal map's tilt
+        {{0.0f, 0.5f, {1.0f, 0.1f}, kUp}, false},                              // a gloss coat over plastic
+        {{0.0f, 0.3f, {0.5f, 0.5f}, kUp}, true},                               // half a rough coat
+        {{1.0f, 0.6f, {1.0f, 0.3f}, kUp}, true},                               // a coat over a rough metal
+        {{0.0f, 0.5f, {1.0f, 0.15f}, kTilted}, false},                         // a coat normal map's tilt
+        {{0.3f, 0.4f, {0.0f, 0.0f}, kUp, {0.15f, 0.1f, 0.05f, 0.6f}}, true},   // glTF's specular layer alone
+        {{0.0f, 0.4f, {1.0f, 0.3f}, kUp, {0.02f, 0.02f, 0.02f, 0.5f}}, true},  // the layer under a coat
     };
     for (const Seen& k : cases)
         for (glm::vec3 V : {kOblique, kUp}) {

@@ -56,13 +56,21 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
         } else if (model_ == shading::SL_MODEL_BLINN_PHONG) {
             specular = luminance(ms_) * 8.0f / (s_ + 8.0f);
         } else {
-            const float F = luminance(shading::F_Schlick(ms_, NoV) * specScale_);
+            float F = luminance(shading::F_Schlick(ms_, NoV) * specScale_);
+            if (params.layered) {
+                // glTF's specular layer: the dielectric's weighted Fresnel and the metal's, mixed by metallic.
+                layers_ = params;
+                const glm::vec4 l = params.specLayer;
+                const glm::vec3 Fd = l.w * shading::F_Schlick(glm::vec3(l), NoV);
+                F = luminance(glm::mix(Fd, shading::F_Schlick(params.baseColor, NoV), params.metallic) * specScale_);
+            }
             specular = F;
             diffuse *= 1.0f - std::min(F, 1.0f);
             if (params.coat.x > 0.0f) {
                 // The coat reflects about factor·Fc(Nc·V) of the light and passes the rest to the base.
                 const glm::vec3 Nc = glm::normalize(params.coatN);
                 clearcoat_ = Clearcoat{params.coat, Frame(Nc), shading::pbrAlpha(params.coat.y)};
+                layers_ = params;
                 const float w = shading::clearcoatWeight(Nc, V_, params.coat.x);
                 diffuse *= 1.0f - w;
                 specular *= 1.0f - w;
@@ -114,7 +122,7 @@ void PathBsdf::pickDisneyLobes(float NoV, float& diffuse, float& specular, float
 glm::vec3 PathBsdf::evalCos(const glm::vec3& wi) const {
     if (!hasSmooth()) return glm::vec3(0.0f);
     if (disney_) return evalCosDisney(wi);
-    if (clearcoat_) return evalCosCoated(wi);
+    if (layers_) return evalCosLayered(wi);
     return shading::shadeLightScaled(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_, specularOn_,
                                      specScale_) *
            (1.0f / kPi);
@@ -127,11 +135,10 @@ glm::vec3 PathBsdf::evalCosDisney(const glm::vec3& wi) const {
            (1.0f / kPi);
 }
 
-glm::vec3 PathBsdf::evalCosCoated(const glm::vec3& wi) const {
-    const glm::vec3 base = shading::shadeLightScaled(N_, wi, V_, glm::vec3(1.0f), md_, ms_, s_, model_, diffuseOn_,
-                                                     specularOn_, specScale_);
-    return shading::clearcoatLight(base, clearcoat_->frame.n, wi, V_, glm::vec3(1.0f), clearcoat_->coat, specularOn_) *
-           (1.0f / kPi);
+// pbr with glTF's layers, as the Whitted tracer shades a light (shadeLightPbrLayers).
+glm::vec3 PathBsdf::evalCosLayered(const glm::vec3& wi) const {
+    const shading::LightSample light{wi, glm::vec3(1.0f)};
+    return shading::shadeLightPbrLayers(N_, light, V_, *layers_, diffuseOn_, specularOn_) * (1.0f / kPi);
 }
 
 // The half vector of wi and V and V·H, for the densities of lobes sampled by their micro-normals (the reflection's

@@ -57,7 +57,7 @@ private:
     // Out of line: the other models' pdf() and evalCos() stay as small, and as inlined, as they were without disney.
     [[gnu::noinline]] float coatPdf(const glm::vec3& wi) const;
     [[gnu::noinline]] glm::vec3 evalCosDisney(const glm::vec3& wi) const;
-    [[gnu::noinline]] glm::vec3 evalCosCoated(const glm::vec3& wi) const;
+    [[gnu::noinline]] glm::vec3 evalCosLayered(const glm::vec3& wi) const;
     glm::vec3 sampleCoat(glm::vec2 u) const;
     glm::vec3 toTangentFrame(const glm::vec3& v) const {
         return {glm::dot(v, disney_->tangentX), glm::dot(v, disney_->tangentY), glm::dot(v, N_)};
@@ -89,6 +89,9 @@ private:
         float alpha;
     };
     std::optional<Clearcoat> clearcoat_;
+    // pbr with any of glTF's layers (the coat, the specular layer and ior): the coefficients
+    // shadeLightPbrLayers reads. Absent otherwise.
+    std::optional<shading::SurfaceParams> layers_;
     int model_;
     bool diffuseOn_, specularOn_;
     glm::vec3 kr_{0.0f}, kt_{0.0f};

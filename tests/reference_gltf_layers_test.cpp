@@ -1,9 +1,11 @@
-// glTF's clear coat (KHR_materials_clearcoat) on pbr, raster against reference under design.md §4's gates:
-// {spheres on a coated floor, the torus mesh} × {1, 3 lights} × coats {full and glossy, half and rough, full over
-// a black metal}; in the shipped sky with and without a light; and Khronos's ClearCoatTest asset (Debian's
-// assimp-testmodels) with its coat maps and coat normal maps, whose coated column must differ from its base
-// column by the coat and nothing else. Negative controls: 10 % less coat, 10 % more coat roughness, the coat
-// dropped. Failures leave both images, the heatmap and the report in build/test-output/reference_clearcoat_test/.
+// glTF's layers on pbr, raster against reference under design.md §4's gates. The clear coat
+// (KHR_materials_clearcoat): {spheres on a coated floor, the torus mesh} × {1, 3 lights} × coats {full and glossy,
+// half and rough, full over a black metal}; in the shipped sky with and without a light; and Khronos's
+// ClearCoatTest asset (Debian's assimp-testmodels) with its coat maps and coat normal maps. Negative controls: 10 %
+// less coat, 10 % more coat roughness, the coat dropped. The specular layer and ior (KHR_materials_specular,
+// KHR_materials_ior): the same stages × {an index of 1.33 and of 2.4, a half weight, a tinted F0, over a half metal},
+// in the sky too; controls: the weight 10 % less, the index 1.5 in one renderer. Failures leave both images, the
+// heatmap and the report in build/test-output/reference_gltf_layers_test/.
 #include "compare/compare_report.h"
 #include "compare/image_compare.h"
 #include "gl_fixture.h"
@@ -26,13 +28,17 @@ struct CoatCase {
     const char* name;
     float roughness, metallic;
     Clearcoat coat;
+    SpecularLayer specular{};
+    float ior = 1.5f;
 };
 
-void setCoated(Material& m, float roughness, float metallic, Clearcoat coat) {
+void setCoated(Material& m, const CoatCase& c) {
     m.baseColor = glm::clamp(m.md, 0.0f, 1.0f);
-    m.roughness = roughness;
-    m.metallic = metallic;
-    m.clearcoat = coat;
+    m.roughness = c.roughness;
+    m.metallic = c.metallic;
+    m.clearcoat = c.coat;
+    m.specular = c.specular;
+    m.ior = c.ior;
 }
 
 Scene makeCoatScene(const CoatCase& c) {
@@ -57,10 +63,10 @@ Scene makeCoatScene(const CoatCase& c) {
         scene.meshes.push_back(torus);
         importSceneMeshes(scene, "");
     }
-    for (Sphere& s : scene.spheres) setCoated(s.material, c.roughness, c.metallic, c.coat);
-    for (Plane& p : scene.planes) setCoated(p.material, c.roughness, c.metallic, c.coat);
+    for (Sphere& s : scene.spheres) setCoated(s.material, c);
+    for (Plane& p : scene.planes) setCoated(p.material, c);
     for (Mesh& m : scene.meshes)
-        for (MeshPart& part : m.parts) setCoated(part.material, c.roughness, c.metallic, c.coat);
+        for (MeshPart& part : m.parts) setCoated(part.material, c);
     scene.lights.push_back(test::pointLight({-3.0f, 5.0f, 4.0f}, glm::vec3(1.0f)));
     if (c.threeLights) {
         scene.lights[0].color = {0.7f, 0.2f, 0.2f};
@@ -75,6 +81,11 @@ std::vector<CoatCase> allCoatCases() {
         {false, false, "gloss", 0.5f, 0.0f, Clearcoat{1.0f, 0.03f}},
         {false, false, "half_rough", 0.3f, 0.0f, Clearcoat{0.5f, 0.4f}},
         {false, false, "over_metal", 0.6f, 1.0f, Clearcoat{1.0f, 0.1f}},
+        {false, false, "ior_1_33", 0.3f, 0.0f, {}, {}, 1.33f},
+        {false, false, "ior_2_4", 0.3f, 0.0f, {}, {}, 2.4f},
+        {false, false, "specular_half", 0.25f, 0.0f, {}, SpecularLayer{0.5f, glm::vec3(1.0f)}},
+        {false, false, "specular_tinted_half_metal", 0.35f, 0.5f, {}, SpecularLayer{0.8f, {1.5f, 0.6f, 0.2f}}, 1.6f},
+        {false, false, "specular_and_coat", 0.5f, 0.0f, Clearcoat{1.0f, 0.1f}, SpecularLayer{0.3f, glm::vec3(1.0f)}},
     };
     std::vector<CoatCase> cases;
     for (bool mesh : {false, true})
@@ -99,24 +110,24 @@ CompareResult compareRenders(const Scene& rasterScene, const Scene& tracedScene,
 
 }  // namespace
 
-class ReferenceClearcoat : public test::GlTest, public ::testing::WithParamInterface<CoatCase> {};
+class ReferenceGltfLayers : public test::GlTest, public ::testing::WithParamInterface<CoatCase> {};
 
-TEST_P(ReferenceClearcoat, RasterMatchesReference) {
+TEST_P(ReferenceGltfLayers, RasterMatchesReference) {
     const CoatCase& c = GetParam();
     const Scene scene = makeCoatScene(c);
-    CompareResult r = compareRenders(scene, scene, "clearcoat_" + coatCaseName(c));
+    CompareResult r = compareRenders(scene, scene, "layers_" + coatCaseName(c));
     EXPECT_TRUE(r.pass) << compareSummary(r);
     RecordProperty("interior_max", r.interior.max);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllCombinations, ReferenceClearcoat, ::testing::ValuesIn(allCoatCases()),
+INSTANTIATE_TEST_SUITE_P(AllCombinations, ReferenceGltfLayers, ::testing::ValuesIn(allCoatCases()),
                          [](const ::testing::TestParamInfo<CoatCase>& p) { return coatCaseName(p.param); });
 
-class ReferenceClearcoatControls : public test::GlTest {};
+class ReferenceGltfLayerControls : public test::GlTest {};
 
 // The gates see the coat: 10 % less of it, 10 % more coat roughness, or none at all in one renderer.
-TEST_F(ReferenceClearcoatControls, CoatChangesFail) {
-    const CoatCase c{false, false, "gloss", 0.5f, 0.0f, Clearcoat{1.0f, 0.3f}};
+TEST_F(ReferenceGltfLayerControls, CoatChangesFail) {
+    const CoatCase c{false, false, "gloss", 0.5f, 0.0f, Clearcoat{1.0f, 0.3f}, {}};
     struct Control {
         const char* what;
         Clearcoat coat;
@@ -133,11 +144,33 @@ TEST_F(ReferenceClearcoatControls, CoatChangesFail) {
     }
 }
 
+// The gates see the specular layer: its weight 10 % less, or the index 1.5 (pbr's F0) in one renderer.
+TEST_F(ReferenceGltfLayerControls, SpecularLayerChangesFail) {
+    const CoatCase c{false, false, "specular", 0.25f, 0.0f, {}, SpecularLayer{0.5f, glm::vec3(1.0f)}, 2.4f};
+    struct Control {
+        const char* what;
+        SpecularLayer layer;
+        float ior;
+    };
+    const Control controls[] = {{"weight_minus_10pct", {0.45f, glm::vec3(1.0f)}, 2.4f},
+                                {"pbrs_index", {0.5f, glm::vec3(1.0f)}, 1.5f}};
+    for (const Control& k : controls) {
+        const Scene a = makeCoatScene(c);
+        Scene b = a;
+        for (Sphere& s : b.spheres) s.material.specular = k.layer, s.material.ior = k.ior;
+        b.planes[0].material.specular = k.layer, b.planes[0].material.ior = k.ior;
+        CompareResult r = compareRenders(a, b, std::string("negative_specular_") + k.what);
+        EXPECT_FALSE(r.pass) << k.what << ": the changed layer passed the gates:\n" << compareSummary(r);
+    }
+}
+
 // Image-based light: the coat reflects the prefiltered sky at its own roughness in both renderers, with and
-// without a light; the coat dropped in one renderer fails (negative control).
-TEST_F(ReferenceClearcoatControls, SkyLitCoatMatchesAndItsAbsenceFails) {
+// without a light, and a specular layer with an index of 2.4 reads it too; the coat dropped, or pbr's own F0, in
+// one renderer fails (negative controls).
+TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
     static const auto sky = loadPrefilteredHdr(test::sourcePath("assets/environments/sky.hdr"));
-    for (bool light : {false, true}) {
+    for (int variant = 0; variant < 3; ++variant) {
+        const bool light = variant == 1, layer = variant == 2;
         Scene scene;
         scene.camera.position = {0.0f, 0.8f, 3.6f};
         scene.camera.target = {0.0f, 0.0f, 0.0f};
@@ -151,14 +184,21 @@ TEST_F(ReferenceClearcoatControls, SkyLitCoatMatchesAndItsAbsenceFails) {
         Material m;
         m.baseColor = glm::vec3(0.5f, 0.02f, 0.01f);
         m.roughness = 0.45f;
-        m.clearcoat = Clearcoat{1.0f, 0.05f};
+        m.clearcoat = Clearcoat{layer ? 0.0f : 1.0f, 0.05f};
+        if (layer) {
+            m.metallic = 0.3f;
+            m.ior = 2.4f;
+            m.specular = SpecularLayer{0.7f, {1.0f, 0.8f, 0.6f}};
+        }
         scene.spheres.push_back({"", glm::vec3(0.0f), 1.0f, m});
         if (light) scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, glm::vec3(2.0f)));
-        const std::string name = std::string("clearcoat_sky") + (light ? "_light" : "");
+        const std::string name = layer ? "specular_layer_sky" : std::string("clearcoat_sky") + (light ? "_light" : "");
         CompareResult r = compareRenders(scene, scene, name);
         EXPECT_TRUE(r.pass) << name << "\n" << compareSummary(r);
         Scene bare = scene;
         bare.spheres[0].material.clearcoat.factor = 0.0f;
+        bare.spheres[0].material.specular = SpecularLayer{};
+        bare.spheres[0].material.ior = 1.5f;
         CompareResult control = compareRenders(scene, bare, "negative_" + name);
         EXPECT_FALSE(control.pass) << name << ": the coat dropped in one renderer passed:\n" << compareSummary(control);
     }
@@ -188,7 +228,7 @@ Scene clearCoatTestScene() {
 // differs from the same file with every coat removed, and removing it from one renderer fails the gates. Held to
 // the shadow-edge gates (1 % of pixels, no hard maximum), as texture_maps_test holds this asset: its capsules'
 // silhouettes against their own tiles share one coverage id, and fail the strict maximum with or without a coat.
-TEST_F(ReferenceClearcoatControls, KhronosClearCoatTestMatchesAndShowsItsCoat) {
+TEST_F(ReferenceGltfLayerControls, KhronosClearCoatTestMatchesAndShowsItsCoat) {
     if (!std::filesystem::exists(kClearCoatTest)) GTEST_SKIP() << kClearCoatTest << " missing (assimp-testmodels)";
     const Scene scene = clearCoatTestScene();
     int coated = 0, coatMaps = 0;
