@@ -1,5 +1,5 @@
-// PathBsdf: evaluation through lighting.glsl's shadeLightScaled, clearcoatLight and shadeLightDisney, lobe sampling
-// through warp.h.
+// PathBsdf: evaluation through lighting.glsl's shadeLightScaled, shadeLightDisney and glTF's layers
+// (shadeLightPbrLayers: the specular layer and the clear coat), lobe sampling through warp.h.
 #include "trace/path/path_bsdf.h"
 
 #include "shading/lighting.h"

@@ -5,7 +5,8 @@
 // lobe by its visible normals (Heitz 2018), the diffuse lobe by the cosine. disney's anisotropic GGX lobe is
 // sampled by its visible normals in the tangent frame of anisotropyTangent, its clearcoat by GTR1's normals
 // (Burley 2012, Appendix B), its diffuse, subsurface and sheen by the cosine; pbr's clear coat (glTF's
-// KHR_materials_clearcoat) by its own GGX's visible normals around the coat's normal. Mirrors (kr) and glass (kt,
+// KHR_materials_clearcoat) by its own GGX's visible normals around the coat's normal; glTF's specular layer changes
+// only pbr's evaluation and its lobes' picking. Mirrors (kr) and glass (kt,
 // ior, refracted as the Whitted tracer refracts, total internal reflection going to the mirror) are delta
 // lobes. One lobe is picked per sample with probabilities from estimated albedos; pdf() is the mixture's.
 #pragma once
