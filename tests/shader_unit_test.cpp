@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <random>
@@ -488,6 +489,63 @@ glm::vec3 cpuCoated(const Case& c, const glm::vec3& Il, const glm::vec3& baseCol
     return shading::clearcoatLight(base, glm::vec3(c.disney1), c.L, c.V, Il, glm::vec2(c.disney0), true);
 }
 
+// The GPU's texel for case i (lighting_probe.frag writes case i at column i % kW, row i / kW from the top).
+const float* gpuOf(const ImageF& result, size_t i) { return result.pixel(int(i) % kW, kH - 1 - int(i) / kW); }
+
+// A glTF layer's sweep: the GPU's (rgb, w) against `cpu(case)` (rgb) and `cpuW(case)` to 1e-4 relative above 1,
+// every value in `csv`; then each control's changed case (`change(case&)`), run through `cpu`, must be noticed
+// in more than a tenth of the cases (a twentieth where `rare`).
+struct SweepControl {
+    const char* what;
+    std::function<void(Case&)> change;
+    bool rare = false;
+};
+void checkLayerSweep(const char* name, const std::vector<Case>& cases, const ImageF& result,
+                     const std::function<glm::vec3(const Case&)>& cpu, const std::function<float(const Case&)>& cpuW,
+                     const std::vector<SweepControl>& controls) {
+    const float tol = 1e-4f;
+    float worst = 0.0f;
+    int worstIndex = -1, failures = 0;
+    const std::string csv = test::outputPath(std::string("shader_unit_") + name + "_sweep.csv");
+    std::ofstream report(csv);
+    report << "index,model,roughness,metallic,p0,p1,p2,p3,gpu_r,cpu_r,gpu_w,cpu_w\n";
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        const float* gpu = gpuOf(result, i);
+        const glm::vec3 rgb = cpu(c);
+        const float w = cpuW(c);
+        const float err = std::max({relativeError(gpu[0], rgb.x), relativeError(gpu[1], rgb.y),
+                                    relativeError(gpu[2], rgb.z), relativeError(gpu[3], w)});
+        report << i << ',' << c.model << ',' << c.s << ',' << c.metallic;
+        for (int k = 0; k < 4; ++k) report << ',' << c.disney0[k];
+        report << ',' << gpu[0] << ',' << rgb.x << ',' << gpu[3] << ',' << w << '\n';
+        if (err > worst) {
+            worst = err;
+            worstIndex = int(i);
+        }
+        if (err > tol) ++failures;
+    }
+    ::testing::Test::RecordProperty("max_rel_error", std::to_string(worst));
+    std::printf("shader-unit %s sweep: %zu cases, max |GLSL - C++| / max(1, |C++|) = %.3g (case %d)\n", name,
+                cases.size(), worst, worstIndex);
+    EXPECT_EQ(failures, 0) << "max error " << worst << " at case " << worstIndex << "; all values in " << csv;
+    for (const SweepControl& k : controls) {
+        int noticed = 0;
+        for (size_t i = 0; i < cases.size(); ++i) {
+            Case changed = cases[i];
+            k.change(changed);
+            const float* gpu = gpuOf(result, i);
+            const glm::vec3 rgb = cpu(changed);
+            if (std::max({relativeError(gpu[0], rgb.x), relativeError(gpu[1], rgb.y), relativeError(gpu[2], rgb.z)}) >
+                tol)
+                ++noticed;
+        }
+        EXPECT_GT(noticed, int(cases.size()) / (k.rare ? 20 : 10)) << k.what << " went unnoticed";
+    }
+}
+
+const glm::vec3 kLayerIl(1.0f, 0.7f, 0.3f), kLayerBase(0.9f, 0.6f, 0.2f);
+
 }  // namespace
 
 // pbr with glTF's specular layer and ior: shadeLightPbrSpecular's GLSL and C++ agree to 1e-4 (relative above 1) over
@@ -495,101 +553,28 @@ glm::vec3 cpuCoated(const Case& c, const glm::vec3& Il, const glm::vec3& baseCol
 TEST_F(ShaderUnitTest, GlslSpecularLayerEqualsCppOverSweep) {
     const std::vector<Case> cases = makeSpecularLayerCases();
     ASSERT_GE(cases.size(), 2048u);
-    const glm::vec3 Il(1.0f, 0.7f, 0.3f), baseColor(0.9f, 0.6f, 0.2f);
-    const ImageF result = runProbe(cases, Il, baseColor, glm::vec3(0.0f));
-    const float tol = 1e-4f;
-    float worst = 0.0f;
-    int worstIndex = -1, failures = 0;
-    std::ofstream report(test::outputPath("shader_unit_specular_layer_sweep.csv"));
-    report << "index,roughness,metallic,f0r,f0g,f0b,weight,gpu_r,cpu_r,gpu_f0_g,cpu_f0_g\n";
-    for (size_t i = 0; i < cases.size(); ++i) {
-        const Case& c = cases[i];
-        const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
-        const glm::vec3 cpu = cpuSpecularLayered(c, Il, baseColor);
-        const float f0 = shading::pbrSpecularF0(baseColor, c.metallic, c.disney0).y;
-        const float err = std::max({relativeError(gpu[0], cpu.x), relativeError(gpu[1], cpu.y),
-                                    relativeError(gpu[2], cpu.z), relativeError(gpu[3], f0)});
-        report << i << ',' << c.s << ',' << c.metallic;
-        for (int k = 0; k < 4; ++k) report << ',' << c.disney0[k];
-        report << ',' << gpu[0] << ',' << cpu.x << ',' << gpu[3] << ',' << f0 << '\n';
-        if (err > worst) {
-            worst = err;
-            worstIndex = int(i);
-        }
-        if (err > tol) ++failures;
-    }
-    RecordProperty("max_rel_error", std::to_string(worst));
-    std::printf("shader-unit specular layer sweep: %zu cases, max |GLSL - C++| / max(1, |C++|) = %.3g (case %d)\n",
-                cases.size(), worst, worstIndex);
-    EXPECT_EQ(failures, 0) << "max error " << worst << " at case " << worstIndex << "; all values in "
-                           << test::outputPath("shader_unit_specular_layer_sweep.csv");
-    const char* controls[] = {"10% more F0", "10% less weight", "10% more roughness"};
-    for (int k = 0; k < 3; ++k) {
-        int noticed = 0;
-        for (size_t i = 0; i < cases.size(); ++i) {
-            Case changed = cases[i];
-            if (k == 0) changed.disney0 = glm::vec4(glm::vec3(changed.disney0) * 1.1f, changed.disney0.w);
-            if (k == 1) changed.disney0.w *= 0.9f;
-            if (k == 2) changed.s *= 1.1f;
-            const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
-            const glm::vec3 cpu = cpuSpecularLayered(changed, Il, baseColor);
-            if (std::max({relativeError(gpu[0], cpu.x), relativeError(gpu[1], cpu.y), relativeError(gpu[2], cpu.z)}) >
-                tol)
-                ++noticed;
-        }
-        EXPECT_GT(noticed, int(cases.size()) / 10) << controls[k] << " went unnoticed";
-    }
+    checkLayerSweep(
+        "specular_layer", cases, runProbe(cases, kLayerIl, kLayerBase, glm::vec3(0.0f)),
+        [](const Case& c) { return cpuSpecularLayered(c, kLayerIl, kLayerBase); },
+        [](const Case& c) { return shading::pbrSpecularF0(kLayerBase, c.metallic, c.disney0).y; },
+        {{"10% more F0", [](Case& c) { c.disney0 = glm::vec4(glm::vec3(c.disney0) * 1.1f, c.disney0.w); }},
+         {"10% less weight", [](Case& c) { c.disney0.w *= 0.9f; }},
+         {"10% more roughness", [](Case& c) { c.s *= 1.1f; }}});
 }
 
 // pbr under glTF's clear coat: clearcoatLight's GLSL and C++ agree to 1e-4 (relative above 1) over 2,048 cases,
 // and the coat's Fresnel weight too; 10 % more coat, 10 % more coat roughness and the base's normal for the coat's
-// are noticed (negative controls).
+// are noticed (negative controls; the last only where the coat's normal was tilted, half the cases).
 TEST_F(ShaderUnitTest, GlslClearcoatEqualsCppOverSweep) {
     const std::vector<Case> cases = makeCoatCases();
     ASSERT_GE(cases.size(), 2048u);
-    const glm::vec3 Il(1.0f, 0.7f, 0.3f), baseColor(0.9f, 0.6f, 0.2f);
-    const ImageF result = runProbe(cases, Il, baseColor, glm::vec3(0.0f));
-    const float tol = 1e-4f;
-    float worst = 0.0f;
-    int worstIndex = -1, failures = 0;
-    std::ofstream report(test::outputPath("shader_unit_clearcoat_sweep.csv"));
-    report << "index,roughness,metallic,coat,coat_roughness,gpu_r,cpu_r,gpu_weight,cpu_weight\n";
-    for (size_t i = 0; i < cases.size(); ++i) {
-        const Case& c = cases[i];
-        const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
-        const glm::vec3 cpu = cpuCoated(c, Il, baseColor);
-        const float weight = shading::clearcoatWeight(glm::vec3(c.disney1), c.V, c.disney0.x);
-        const float err = std::max({relativeError(gpu[0], cpu.x), relativeError(gpu[1], cpu.y),
-                                    relativeError(gpu[2], cpu.z), relativeError(gpu[3], weight)});
-        report << i << ',' << c.s << ',' << c.metallic << ',' << c.disney0.x << ',' << c.disney0.y << ',' << gpu[0]
-               << ',' << cpu.x << ',' << gpu[3] << ',' << weight << '\n';
-        if (err > worst) {
-            worst = err;
-            worstIndex = int(i);
-        }
-        if (err > tol) ++failures;
-    }
-    RecordProperty("max_rel_error", std::to_string(worst));
-    std::printf("shader-unit clearcoat sweep: %zu cases, max |GLSL - C++| / max(1, |C++|) = %.3g (case %d)\n",
-                cases.size(), worst, worstIndex);
-    EXPECT_EQ(failures, 0) << "max error " << worst << " at case " << worstIndex << "; all values in "
-                           << test::outputPath("shader_unit_clearcoat_sweep.csv");
-    const char* controls[] = {"10% more coat", "10% more coat roughness", "the base's normal for the coat's"};
-    for (int k = 0; k < 3; ++k) {
-        int noticed = 0;
-        for (size_t i = 0; i < cases.size(); ++i) {
-            Case changed = cases[i];
-            if (k == 0) changed.disney0.x *= 1.1f;
-            if (k == 1) changed.disney0.y *= 1.1f;
-            if (k == 2) changed.disney1 = glm::vec4(changed.N, 0.0f);
-            const float* gpu = result.pixel(int(i) % kW, kH - 1 - int(i) / kW);
-            const glm::vec3 cpu = cpuCoated(changed, Il, baseColor);
-            if (std::max({relativeError(gpu[0], cpu.x), relativeError(gpu[1], cpu.y), relativeError(gpu[2], cpu.z)}) >
-                tol)
-                ++noticed;
-        }
-        EXPECT_GT(noticed, int(cases.size()) / (k == 2 ? 20 : 10)) << controls[k] << " went unnoticed";
-    }
+    checkLayerSweep(
+        "clearcoat", cases, runProbe(cases, kLayerIl, kLayerBase, glm::vec3(0.0f)),
+        [](const Case& c) { return cpuCoated(c, kLayerIl, kLayerBase); },
+        [](const Case& c) { return shading::clearcoatWeight(glm::vec3(c.disney1), c.V, c.disney0.x); },
+        {{"10% more coat", [](Case& c) { c.disney0.x *= 1.1f; }},
+         {"10% more coat roughness", [](Case& c) { c.disney0.y *= 1.1f; }},
+         {"the base's normal for the coat's", [](Case& c) { c.disney1 = glm::vec4(c.N, 0.0f); }, true}});
 }
 
 namespace {
