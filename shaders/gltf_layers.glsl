@@ -74,3 +74,81 @@ SL_FN vec3 clearcoatEnvironment(vec3 base, vec3 Nc, vec3 V, vec3 prefiltered, ve
     if (!specularOn || coat.x <= 0.0f) return base;
     return base * (1.0f - clearcoatWeight(Nc, V, coat.x)) + coat.x * prefiltered * specularDFG(vec3(0.04f), dfg);
 }
+
+// glTF's KHR_materials_sheen (its "Sheen BRDF" and "Albedo scaling" sections): a layer of fibres with colour c
+// and roughness r over the base. f_sheen = c·D_Charlie·V_sheen, and the base keeps min(1 − max3(c)·E(N·V),
+// 1 − max3(c)·E(N·L)) of its light, E the sheen's directional albedo (c = 1), read from a table computed
+// numerically (shading/sheen_lut.h, sheenAlbedo). sheen = (c, r), Sheen::packed.
+
+// The fibres' α = r², r kept at least 0.07 (α 0.0049): below it D_Charlie's power 1/α grows past what a float's
+// sin² resolves, and the lobe is already a thin rim light.
+SL_FN float sheenAlpha(float roughness) {
+    float r = max(roughness, 0.07f);
+    return r * r;
+}
+
+// Conty & Kulla 2017, "Production Friendly Microfacet Sheen BRDF" (the "Charlie" sheen): fibres' normals
+// D = (2 + 1/α) sin^(1/α) θh / (2π), normalised so that ∫ D·cos θh dω = 1.
+SL_FN float D_Charlie(float NoH, float a) {
+    float invA = 1.0f / a;
+    float sin2 = max(1.0f - NoH * NoH, 0.0f);
+    return (2.0f + invA) * pow(sin2, 0.5f * invA) / (2.0f * SL_PI);
+}
+
+// Estevez & Kulla 2017's fit of the fibres' masking exponent, L(x) = a/(1 + b·x^c) + d·x + e, its five
+// coefficients interpolated between their fits at α = 1 and α = 0 by t = (1 − α)².
+SL_FN float sheenL(float x, float a) {
+    float t = (1.0f - a) * (1.0f - a);
+    float A = mix(21.5473f, 25.3245f, t);
+    float B = mix(3.82987f, 3.32435f, t);
+    float C = mix(0.19823f, 0.16801f, t);
+    float D = mix(-1.97760f, -1.27393f, t);
+    float E = mix(-4.32054f, -4.85967f, t);
+    return A / (1.0f + B * pow(x, C)) + D * x + E;
+}
+
+// Their Λ(cos θ): exp(L(cos θ)) below cos θ = 0.5, mirrored above it so that Λ falls smoothly to 0 at the normal.
+SL_FN float sheenLambda(float cosTheta, float a) {
+    if (cosTheta < 0.5f) return exp(sheenL(cosTheta, a));
+    return exp(2.0f * sheenL(0.5f, a) - sheenL(1.0f - cosTheta, a));
+}
+
+// π·f_sheen·N·L for c = 1: π·D_Charlie·V_sheen·N·L with the uncorrelated visibility V_sheen = 1 / ((1 + Λ(N·V) +
+// Λ(N·L))·4 N·V N·L), N·V kept above 1e-4 as specularGGX does; 0 where N·L <= 0. N, L, V need not be unit.
+SL_FN float sheenLobe(vec3 N, vec3 L, vec3 V, float roughness) {
+    N = normalize(N);
+    L = normalize(L);
+    V = normalize(V);
+    float NoL = dot(N, L);
+    if (NoL <= 0.0f) return 0.0f;
+    float NoV = max(dot(N, V), 1e-4f);
+    float a = sheenAlpha(roughness);
+    float D = D_Charlie(max(dot(N, normalize(L + V)), 0.0f), a);
+    return SL_PI * D / (4.0f * NoV * (1.0f + sheenLambda(NoV, a) + sheenLambda(NoL, a)));
+}
+
+// What the base keeps under the sheen seen along V and lit along L: min(1 − max3(c)·E_V, 1 − max3(c)·E_L), at
+// least 0. E exceeds 1 within a few degrees of grazing at roughness below about 0.3 (Estevez & Kulla's
+// visibility is not energy-conserving there: the table holds the lobe's true albedo), and the base is then gone.
+SL_FN float sheenScaling(vec4 sheen, float EV, float EL) {
+    float c = max(sheen.x, max(sheen.y, sheen.z));
+    return max(min(1.0f - c * EV, 1.0f - c * EL), 0.0f);
+}
+
+// One light's term `base` (the base material's, before visibility) under the sheen: base·sheenScaling +
+// c·Il·sheenLobe. EV and EL are the sheen's albedos at N·V and N·L. Sheen belongs with the diffuse term (as
+// disney's own): with it off, or c = 0, the base is returned as it is.
+SL_FN vec3 sheenLight(vec3 base, vec3 N, vec3 L, vec3 V, vec3 Il, vec4 sheen, float EV, float EL, bool diffuseOn) {
+    if (!diffuseOn || max(sheen.x, max(sheen.y, sheen.z)) <= 0.0f) return base;
+    vec3 c = vec3(sheen.x, sheen.y, sheen.z);
+    return base * sheenScaling(sheen, EV, EL) + c * Il * sheenLobe(N, L, V, sheen.w);
+}
+
+// The environment's light `base` under the sheen (split sum): base·(1 − max3(c)·E_V) + c·prefiltered·E_V, the
+// prefiltered environment looked up at the sheen's roughness along the mirror direction (as Filament does: the
+// GGX-prefiltered map stands in for a Charlie-prefiltered one; exact in a uniform environment).
+SL_FN vec3 sheenEnvironment(vec3 base, vec3 prefiltered, vec4 sheen, float EV, bool diffuseOn) {
+    if (!diffuseOn || max(sheen.x, max(sheen.y, sheen.z)) <= 0.0f) return base;
+    vec3 c = vec3(sheen.x, sheen.y, sheen.z);
+    return base * sheenScaling(sheen, EV, EV) + c * prefiltered * EV;
+}

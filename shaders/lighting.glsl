@@ -124,7 +124,7 @@ SL_FN vec3 energyCompensation(vec3 f0, vec2 dfg) {
     return vec3(1.0f) + f0 * (1.0f / max(dfg.x + dfg.y, 1e-4f) - 1.0f);
 }
 
-// glTF's material layers on pbr (the specular layer and index, the clear coat), in a file of their own.
+// glTF's material layers on pbr (the specular layer and index, the clear coat, the sheen), in a file of their own.
 #include "gltf_layers.glsl"
 
 // Burley 2012, "Physically Based Shading at Disney", and its published disney.brdf: the principled BRDF.

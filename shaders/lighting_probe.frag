@@ -10,6 +10,8 @@ uniform sampler2D t_params;   // x: s (pbr, disney: roughness), y: model (0 Phon
                               // y = 7: pbr with glTF's specular layer, t_disney0 its (f0d, weight)
                               // y = 8: pbr under glTF's clear coat, t_disney0 its (factor, roughness), t_disney1
                               // its normal
+                              // y = 10: pbr under glTF's sheen, t_disney0 its (colour, roughness), t_disney1
+                              // its albedos (E at N·V, E at N·L)
                               // y = 9: a spot light's intensity instead: N the spot's direction, L the light
                               // vector, V its attenuation (kc, kl, kq), x, z its cone scale and offset, w its range
 uniform sampler2D t_disney0;  // disney: (subsurface, specular, specularTint, anisotropic)
@@ -48,6 +50,15 @@ void main() {
         vec3 base = shadeLight(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), pbrF0(u_md, params.z), params.x,
                                SL_MODEL_PBR, true, true);
         o_result = vec4(clearcoatLight(base, Nc, L, V, u_Il, coat, true), clearcoatWeight(Nc, V, coat.x));
+        return;
+    }
+    if (model == 10) {
+        // u_md is the base colour; w: the sheen's lobe alone (sheenLobe).
+        vec4 sheen = texelFetch(t_disney0, p, 0);
+        vec2 E = texelFetch(t_disney1, p, 0).xy;
+        vec3 base = shadeLight(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), pbrF0(u_md, params.z), params.x,
+                               SL_MODEL_PBR, true, true);
+        o_result = vec4(sheenLight(base, N, L, V, u_Il, sheen, E.x, E.y, true), sheenLobe(N, L, V, sheen.w));
         return;
     }
     if (model == SL_MODEL_DISNEY) {

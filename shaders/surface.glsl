@@ -73,6 +73,29 @@ vec3 coatNormal(vec3 N) { return s_coatN == vec3(0.0f) ? N : s_coatN; }
 #else
 #define SL_COATED 0
 #endif
+#if defined(SL_SHEEN) && SL_MODEL == 2
+// pbr's sheen (gltf_layers.glsl's sheenLight): (colour, roughness), Sheen::packed, and its albedo table
+// (shading/sheen_lut.h) read texel by texel; s_sheenEV its albedo toward the viewer, set by shadeSurface.
+#define SL_SHEENED 1
+uniform vec4 u_sheen;
+uniform sampler2D t_sheenE;
+float sheenTexel(int x, int y) { return texelFetch(t_sheenE, ivec2(x, y), 0).r; }
+#include "sheen_albedo.glsl"
+float s_sheenEV = 0.0f;
+#else
+#define SL_SHEENED 0
+#endif
+// One light's term `c` of the base under glTF's layers the variant has: the sheen, then the coat over both (the
+// spec's order; local_illumination.h's shadeLightPbrLayers).
+vec3 layeredLight(vec3 c, vec3 N, vec3 L, vec3 V, vec3 Il) {
+#if SL_SHEENED
+    c = sheenLight(c, N, L, V, Il, u_sheen, s_sheenEV, sheenAlbedo(SL_SHEEN_SIZE, sheenCos(N, L), u_sheen.w), SL_DIFFUSE);
+#endif
+#if SL_COATED
+    c = clearcoatLight(c, coatNormal(N), L, V, Il, surfaceCoat(), SL_SPECULAR);
+#endif
+    return c;
+}
 uniform vec3 u_emission;  // the material's emitted radiance (design.md §8), added as the tracer's local() adds it
 // The emissive texture's linear RGB at this fragment (mesh.frag sets it; 1 elsewhere): scales u_emission.
 vec3 s_emissive = vec3(1.0f);
@@ -116,17 +139,23 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec3 base, vec2 dfg) {
 }
 #endif
 
+#if SL_IBL && (SL_COATED || SL_SHEENED)
+// The environment prefiltered at `roughness` along V mirrored about N (EnvironmentLight::prefiltered).
+vec3 environmentPrefiltered(vec3 N, vec3 V, float roughness) {
+#if SL_IBL == 2
+    return u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(iblReflect(N, V), u_iblParams.y, u_iblParams.z), roughness);
+#else
+    return u_iblRadiance.xyz;
+#endif
+}
+#endif
+
 #if SL_IBL && SL_COATED
 // The environment's light `base` under the clear coat (WhittedIntegrator::coatedEnvironment): the prefiltered
 // environment at the coat's normal and roughness.
 vec3 coatedEnvironment(vec3 base, vec3 Nc, vec3 V, vec2 coat) {
-#if SL_IBL == 2
-    vec3 prefiltered = u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(iblReflect(Nc, V), u_iblParams.y, u_iblParams.z), coat.y);
-#else
-    vec3 prefiltered = u_iblRadiance.xyz;
-#endif
     vec2 dfg = iblDFG(SL_DFG_SIZE, iblNoV(Nc, V), coat.y);
-    return clearcoatEnvironment(base, Nc, V, prefiltered, dfg, coat, SL_SPECULAR);
+    return clearcoatEnvironment(base, Nc, V, environmentPrefiltered(Nc, V, coat.y), dfg, coat, SL_SPECULAR);
 }
 #endif
 
@@ -139,10 +168,7 @@ vec3 lightTerm(int i, bool isPoint, bool isAttenuated, int kind, int planeMask, 
     // Attenuation (1, 0, 0), no range and no cone multiply by exactly 1: skipped, bit for bit the same.
     vec3 Il = isAttenuated ? lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i])
                            : u_lightColor[i].xyz;
-    vec3 c = shadeOneLight(N, L, V, Il, md, base, specScale);
-#if SL_COATED
-    c = clearcoatLight(c, coatNormal(N), L, V, Il, surfaceCoat(), SL_SPECULAR);
-#endif
+    vec3 c = layeredLight(shadeOneLight(N, L, V, Il, md, base, specScale), N, L, V, Il);
 #if SL_SHADOWS
     // vis_l multiplies diffuse + specular only; where N·L <= 0 both are already 0.
     c *= shadowVisibility(i, isPoint, kind, planeMask, layer, P, normalize(N));
@@ -164,6 +190,9 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
 #else
     vec3 specScale = vec3(1.0f);
 #endif
+#if SL_SHEENED
+    s_sheenEV = sheenAlbedo(SL_SHEEN_SIZE, sheenCos(N, V), u_sheen.w);
+#endif
 #if SL_IBL
     vec3 I = vec3(0.0f);
 #else
@@ -179,15 +208,15 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
         bool isPoint = u_lightPos[i].w != 0.0f;
         vec3 L = lightVector(u_lightPos[i].xyz, isPoint, P);
         vec3 Il = lightIntensityAt(u_lightColor[i].xyz, isPoint, u_lightAtten[i].xyz, L, u_lightSpot[i].xyz, u_lightCone[i]);
-        vec3 c = shadeOneLight(N, L, V, Il, md, base, specScale);
-#if SL_COATED
-        c = clearcoatLight(c, coatNormal(N), L, V, Il, surfaceCoat(), SL_SPECULAR);
-#endif
-        I += c;
+        I += layeredLight(shadeOneLight(N, L, V, Il, md, base, specScale), N, L, V, Il);
     }
 #endif
 #if SL_IBL
-    vec3 environment = environmentLight(N, V, md, surfaceF0(base), base, dfg) * s_ao;
+    vec3 environment = environmentLight(N, V, md, surfaceF0(base), base, dfg);
+#if SL_SHEENED
+    environment = sheenEnvironment(environment, environmentPrefiltered(N, V, u_sheen.w), u_sheen, s_sheenEV, SL_DIFFUSE);
+#endif
+    environment = environment * s_ao;
 #if SL_COATED
     environment = coatedEnvironment(environment, coatNormal(N), V, surfaceCoat());
 #endif

@@ -44,6 +44,8 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
     }
     if (m.specular.factor != before.specular.factor) o.specular.factor = m.specular.factor;
     if (m.specular.color != before.specular.color) o.specular.color = m.specular.color;
+    if (m.sheen.color != before.sheen.color) o.sheen.color = m.sheen.color;
+    if (m.sheen.roughness != before.sheen.roughness) o.sheen.roughness = m.sheen.roughness;
     for (int i = 0; i < ClearcoatOverride::kCount; ++i) {
         const float Clearcoat::*field = kClearcoatFields[i].member;
         if (m.clearcoat.*field != before.clearcoat.*field) o.clearcoat.value[i] = m.clearcoat.*field;

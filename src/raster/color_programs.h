@@ -36,7 +36,7 @@ public:
     explicit ColorProgramCache(const gl::ShaderLibrary& shaders) : shaders_(shaders) {}
 
     // The set for `variant` with the texture code of `materialMaps` (programBits: mesh.frag's SL_MATERIAL_MAPS
-    // bits and kCoatBit, 0 for none). The reference stays valid until the next prepare().
+    // bits and the layers' bits, 0 for none). The reference stays valid until the next prepare().
     const ColorPrograms& get(const ShaderVariant& variant, int materialMaps = 0);
     // One render's sets: one per (model, map set) the scene's objects use, for of(). Drops every set first when
     // there are too many to keep, so no reference it hands out is invalidated during the render. Returns the
@@ -51,15 +51,16 @@ public:
     static int materialMaps(const Material& m);
     // The bits a program for `m` is chosen by: a mesh part's materialMaps, and for a material shaded with pbr
     // kCoatBit for a clear coat (SL_CLEARCOAT) and kSpecularLayerBit for glTF's specular layer or an index other
-    // than 1.5 (SL_SPECULAR_LAYER). Valid after prepare() has taken the scene's model.
+    // than 1.5 (SL_SPECULAR_LAYER), kSheenBit for glTF's sheen (SL_SHEEN). Valid after prepare() has taken the
+    // scene's model.
     int programBits(const Material& m, bool meshPart) const;
-    static constexpr int kCoatBit = 64, kSpecularLayerBit = 256;
+    static constexpr int kCoatBit = 64, kSpecularLayerBit = 256, kSheenBit = 512;
 
 private:
     const gl::ShaderLibrary& shaders_;
     std::map<std::string, ColorPrograms> sets_;
-    static constexpr int kModels = 4;     // shading::SL_MODEL_*
-    static constexpr int kMapSets = 512;  // programBits values
+    static constexpr int kModels = 4;      // shading::SL_MODEL_*
+    static constexpr int kMapSets = 1024;  // programBits values
     // This render's sets by model × kMapSets + map bits (null: no object has them).
     std::array<const ColorPrograms*, kModels * kMapSets> chosen_{};
     int sceneModel_ = 0;

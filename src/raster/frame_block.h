@@ -71,6 +71,7 @@ inline constexpr GLuint kEmissiveUnit = 10;            // emissive
 inline constexpr GLuint kClearcoatUnit = 11;           // and the clear coat's factor,
 inline constexpr GLuint kClearcoatRoughnessUnit = 12;  // roughness
 inline constexpr GLuint kClearcoatNormalUnit = 13;     // and normal (units 0–15 exist everywhere: GL 3.3, WebGL2)
+inline constexpr GLuint kSheenLutUnit = 14;            // the sheen's albedo table (IblTextures)
 
 // The block for drawing `band` of the image `v` describes, every sample moved by `jitter` pixels (x right, y
 // down) off the pixel centre: the lights, terms, model and environment of `scene` in the layout above.

@@ -260,8 +260,8 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     const float farDepth = 1.0f;
     const bool pbr = usesPhysicallyBased(scene);  // the scene's model, or any material's own
     ibl_.prepare(scene.environment ? scene.environment->map : nullptr,
-                 pbr && (frame.iblInfo.x != kIblNone || frame.iblInfo.w != 0));
-    ibl_.bind(kIblCubeUnit, kIblDfgUnit);
+                 pbr && (frame.iblInfo.x != kIblNone || frame.iblInfo.w != 0), usesSheen(scene));
+    ibl_.bind(kIblCubeUnit, kIblDfgUnit, kSheenLutUnit);
     if (frame.iblInfo.x == kIblMap && !backdrop_) {
         // Compiled on first use: scenes without an environment map never pay for it.
         backdrop_ =

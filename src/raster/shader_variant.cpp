@@ -4,6 +4,7 @@
 #include "raster/shadow_block.h"
 #include "shading/dfg_lut.h"
 #include "shading/lighting.h"
+#include "shading/sheen_lut.h"
 
 #include <algorithm>
 
@@ -41,6 +42,7 @@ std::string ShaderVariant::defines() const {
     s += define("SL_PCF", pcf ? "1" : "0");
     s += define("SL_IBL", std::to_string(ibl));
     s += define("SL_DFG_SIZE", std::to_string(shading::kDfgLutSize));
+    s += define("SL_SHEEN_SIZE", std::to_string(shading::kSheenLutSize));
     s += define("SL_ENERGY_COMPENSATION", energyCompensation ? "1" : "0");
     s += define("SL_ENVIRONMENT", "0");  // RasterRenderer redefines it to 1 for its environment programs
     return s;
@@ -48,12 +50,13 @@ std::string ShaderVariant::defines() const {
 
 std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment) {
     std::string s = variantDefines;
-    // Bit 64 is the clear coat and bit 256 glTF's specular layer (ColorProgramCache::kCoatBit, kSpecularLayerBit),
-    // the others mesh.frag's maps.
-    const int maps = materialMaps & ~(64 | 256);
+    // Bit 64 is the clear coat, bit 256 glTF's specular layer and bit 512 its sheen (ColorProgramCache::kCoatBit,
+    // kSpecularLayerBit, kSheenBit), the others mesh.frag's maps.
+    const int maps = materialMaps & ~(64 | 256 | 512);
     if (maps) s += "#define SL_MATERIAL_MAPS " + std::to_string(maps) + "\n";
     if (materialMaps & 64) s += "#define SL_CLEARCOAT 1\n";
     if (materialMaps & 256) s += "#define SL_SPECULAR_LAYER 1\n";
+    if (materialMaps & 512) s += "#define SL_SHEEN 1\n";
     if (environment) s += "#undef SL_ENVIRONMENT\n#define SL_ENVIRONMENT 1\n";
     return s;
 }

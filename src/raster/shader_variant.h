@@ -40,8 +40,8 @@ struct ShaderVariant {
 };
 
 // The text RasterRenderer puts after the prelude of one colour program: `variantDefines`, then mesh.frag's
-// SL_MATERIAL_MAPS (`materialMaps` bits but 64 and 256, none for 0), SL_CLEARCOAT (bit 64) and SL_SPECULAR_LAYER
-// (bit 256), then, for the environment and
+// SL_MATERIAL_MAPS (`materialMaps` bits but 64, 256 and 512, none for 0), SL_CLEARCOAT (bit 64), SL_SPECULAR_LAYER
+// (bit 256) and SL_SHEEN (bit 512), then, for the environment and
 // plane-mirror programs, SL_ENVIRONMENT 1. Tests compile exactly these.
 std::string colorProgramDefines(const std::string& variantDefines, int materialMaps, bool environment);
 

@@ -7,6 +7,7 @@
 #include "scene/clearcoat.h"
 #include "scene/disney_params.h"
 #include "scene/shading_model.h"
+#include "scene/sheen.h"
 #include "scene/specular_layer.h"
 #include "scene/texture.h"
 #include "util/name_table.h"
@@ -37,6 +38,7 @@ struct Material {
                                 // roughness are pbr's)
     Clearcoat clearcoat;        // pbr: glTF's clear coat layer over the base (KHR_materials_clearcoat); none by default
     SpecularLayer specular;     // pbr: glTF's dielectric F0 tint and weight (KHR_materials_specular), with ior's F0
+    Sheen sheen;                // pbr: glTF's sheen layer over the base (KHR_materials_sheen); none by default
     glm::vec3 emission{0.0f};   // emitted radiance, linear RGB, >= 0, from both sides: an area light under the
                                 // path tracer; the other renderers add it to the surface's colour (design.md §8)
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
@@ -160,13 +162,14 @@ struct MaterialOverride {
     DisneyOverride disney;
     ClearcoatOverride clearcoat;
     SpecularLayerOverride specular;
+    SheenOverride sheen;
     // Linked fields whose values were derived when written (a Python document's "derived" list): read, but not
     // given, so that they follow the given fields again.
     uint8_t derived = 0;
 
     bool empty() const {
         return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission &&
-               !model && disney.empty() && clearcoat.empty() && specular.empty();
+               !model && disney.empty() && clearcoat.empty() && specular.empty() && sheen.empty();
     }
     // Writes the fields, then derives from the given ones what follows from them (deriveFields). Fields of both
     // models given, with no "derived" list: each as given and nothing derived (docs/scene-format.md).
@@ -203,6 +206,7 @@ struct MaterialOverride {
         disney.applyTo(m.disney);
         clearcoat.applyTo(m.clearcoat);
         specular.applyTo(m.specular);
+        sheen.applyTo(m.sheen);
     }
 };
 

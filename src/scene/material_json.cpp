@@ -34,6 +34,14 @@ SpecularLayerOverride parseSpecularLayerOverride(const JsonNode& n) {
     return o;
 }
 
+SheenOverride parseSheenOverride(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"color", "roughness"});
+    SheenOverride o;
+    if (auto f = n.find("color")) o.color = f->unitRgb();
+    if (auto f = n.find("roughness")) o.roughness = f->inRange(0.0f, 1.0f, false, false);
+    return o;
+}
+
 MaterialOverride parseMaterialOverride(const JsonNode& n) {
     n.requireObject();
     MaterialOverride m;
@@ -52,12 +60,13 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("disney")) m.disney = parseDisneyOverride(*f);
     if (auto f = n.find("clearcoat")) m.clearcoat = parseClearcoatOverride(*f);
     if (auto f = n.find("specular")) m.specular = parseSpecularLayerOverride(*f);
+    if (auto f = n.find("sheen")) m.sheen = parseSheenOverride(*f);
     return m;
 }
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
-                                       "emission", "model", "disney", "clearcoat", "specular", "derived"});
+                                       "emission", "model", "disney", "clearcoat", "specular", "sheen", "derived"});
     MaterialOverride o = parseMaterialOverride(n);
     // "derived": the fields listed were derived from the other model's when the document was written (Python's
     // documents list them): read, but not given, so that they follow the given fields again.

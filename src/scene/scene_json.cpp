@@ -307,6 +307,14 @@ OJson specularJson(const SpecularLayerOverride& o) {
     return j;
 }
 
+// glTF's sheen layer: the fields that are set.
+OJson sheenJson(const SheenOverride& o) {
+    OJson j = OJson::object();
+    if (o.color) j["color"] = vec(*o.color);
+    if (o.roughness) j["roughness"] = exact(*o.roughness);
+    return j;
+}
+
 // The given fields of `m` (a derived one is derived again on loading); `withDerived` writes the derived ones too,
 // listed under "derived", as Python's documents hold them.
 OJson materialJson(const Material& m, bool withDerived) {
@@ -338,6 +346,8 @@ OJson materialJson(const Material& m, bool withDerived) {
     // glTF's specular layer where it is off its defaults (Python's documents always).
     if (withDerived || m.specular != SpecularLayer{})
         j["specular"] = specularJson(SpecularLayerOverride{m.specular.factor, m.specular.color});
+    // glTF's sheen where there is one (Python's documents always).
+    if (withDerived || m.sheen != Sheen{}) j["sheen"] = sheenJson(SheenOverride{m.sheen.color, m.sheen.roughness});
     if (withDerived && m.derived) {
         OJson names = OJson::array();
         for (const auto& entry : kMaterialFieldNames)
@@ -364,6 +374,7 @@ OJson overrideJson(const MaterialOverride& m) {
     if (!m.disney.empty()) j["disney"] = paramsJson(m.disney);
     if (!m.clearcoat.empty()) j["clearcoat"] = paramsJson(m.clearcoat);
     if (!m.specular.empty()) j["specular"] = specularJson(m.specular);
+    if (!m.sheen.empty()) j["sheen"] = sheenJson(m.sheen);
     return j;
 }
 

@@ -17,6 +17,7 @@ using glm::clamp;
 using glm::cos;
 using glm::cross;
 using glm::dot;
+using glm::exp;
 using glm::floor;
 using glm::length;
 using glm::max;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "shading/lighting.h"
+#include "shading/sheen_lut.h"
 
 #include <cstddef>
 
@@ -32,15 +33,29 @@ struct SurfaceParams {
     // baseColor and metallic above when `layered`; ms then holds pbrSpecularF0.
     bool layered = false;
     vec4 specLayer{0.0f};
+    // pbr only: glTF's sheen (Sheen::packed) when `sheenTable` (its albedo table, sheen_lut.h) is set, and its
+    // albedo at the view direction, read once per surface point.
+    vec4 sheen{0.0f};
+    float sheenEV = 0.0f;
+    const SheenLut* sheenTable = nullptr;
 };
 
-// One light's term of a pbr surface with glTF's layers (`m.layered`, `m.coat`), before visibility.
+// Whether a pbr surface's coefficients carry any of glTF's layers (shadeLightPbrLayers shades them).
+inline bool hasPbrLayers(const SurfaceParams& m) { return m.layered || m.coat.x > 0.0f || m.sheenTable; }
+
+// One light's term of a pbr surface with glTF's layers (`m.layered`, `m.sheenTable`, `m.coat`), before visibility:
+// the base (the specular layer's mix, or pbr's own), under the sheen, under the coat (the spec's order).
 inline vec3 shadeLightPbrLayers(vec3 N, const LightSample& l, vec3 V, const SurfaceParams& m, bool diffuseOn,
                                 bool specularOn) {
-    const vec3 base = m.layered ? shadeLightPbrSpecular(N, l.L, V, l.Il, m.md, m.baseColor, m.metallic, m.s,
-                                                        m.specLayer, diffuseOn, specularOn, m.specScale)
-                                : shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, SL_MODEL_PBR, diffuseOn,
-                                                   specularOn, m.specScale);
+    vec3 base = m.layered ? shadeLightPbrSpecular(N, l.L, V, l.Il, m.md, m.baseColor, m.metallic, m.s, m.specLayer,
+                                                  diffuseOn, specularOn, m.specScale)
+                          : shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, SL_MODEL_PBR, diffuseOn, specularOn,
+                                             m.specScale);
+    if (m.sheenTable) {
+        SheenLookup sheen{m.sheenTable};
+        const float EL = sheen.at(sheen.sheenCos(N, l.L), m.sheen.w);
+        base = sheenLight(base, N, l.L, V, l.Il, m.sheen, m.sheenEV, EL, diffuseOn);
+    }
     return m.coat.x > 0.0f ? clearcoatLight(base, m.coatN, l.L, V, l.Il, m.coat, specularOn) : base;
 }
 
@@ -83,7 +98,7 @@ inline vec3 shadeLocal(vec3 N, vec3 V, const LightSample* lights, size_t lightCo
         }
         return I;
     }
-    if (model == SL_MODEL_PBR && (m.layered || m.coat.x > 0.0f)) {  // pbr with glTF's layers
+    if (model == SL_MODEL_PBR && hasPbrLayers(m)) {  // pbr with glTF's layers
         for (size_t i = 0; i < lightCount; ++i) {
             const LightSample& l = lights[i];
             if (l.visibility <= 0.0f) continue;

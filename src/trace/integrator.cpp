@@ -233,6 +233,13 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
         params.metallic = s.metallic;
         params.ms = shading::pbrSpecularF0(s.baseColor, s.metallic, params.specLayer);
     }
+    if (s.model == shading::SL_MODEL_PBR && m.sheen.on()) {
+        // glTF's sheen: its albedo at the view direction once here, at each light's in shadeLightPbrLayers.
+        shading::SheenLookup table{&shading::sheenLut()};
+        params.sheen = m.sheen.packed();
+        params.sheenTable = table.lut;
+        params.sheenEV = table.at(table.sheenCos(s.N, V), m.sheen.roughness);
+    }
     params.ma = params.ma * s.ao;
     glm::vec2 dfg(0.0f);
     if (pbr && (sc.energyCompensation || env_.lightsPbr()))
@@ -268,12 +275,16 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
             reflected ? env_.prefilteredWithMirror(R, s.roughness, *reflected) : env_.prefiltered(R, s.roughness);
         environment =
             params.layered
-                ? s.ao * shading::shadeEnvironmentPbrSpecular(
-                             params.md, params.baseColor, params.metallic, params.specLayer, env_.irradiance(s.N), pre,
-                             dfg, sc.energyCompensation ? shading::energyCompensation(params.ms, dfg) : glm::vec3(1.0f),
-                             sc.terms.diffuse, sc.terms.specular)
-                : s.ao * shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg,
-                                                   sc.energyCompensation, sc.terms.diffuse, sc.terms.specular);
+                ? shading::shadeEnvironmentPbrSpecular(
+                      params.md, params.baseColor, params.metallic, params.specLayer, env_.irradiance(s.N), pre, dfg,
+                      sc.energyCompensation ? shading::energyCompensation(params.ms, dfg) : glm::vec3(1.0f),
+                      sc.terms.diffuse, sc.terms.specular)
+                : shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg, sc.energyCompensation,
+                                            sc.terms.diffuse, sc.terms.specular);
+        if (params.sheenTable)  // the sheen reflects the prefiltered environment at its own roughness
+            environment = shading::sheenEnvironment(environment, env_.prefiltered(R, params.sheen.w), params.sheen,
+                                                    params.sheenEV, sc.terms.diffuse);
+        environment = s.ao * environment;
         if (params.coat.x > 0.0f) environment = coatedEnvironment(environment, params, V);
     }
     const bool ambientOn = sc.terms.ambient && !environmentLit;

@@ -1,6 +1,6 @@
 // glTF materials → shadelab's Phong materials (docs/gltf-import.md): metallic-roughness by the documented
-// mapping, KHR_materials_pbrSpecularGlossiness, KHR_materials_ior, KHR_materials_clearcoat and
-// KHR_materials_specular when present.
+// mapping, KHR_materials_pbrSpecularGlossiness, KHR_materials_ior, KHR_materials_clearcoat,
+// KHR_materials_specular and KHR_materials_sheen when present.
 #include "scene/gltf/gltf_materials.h"
 
 #include "scene/gltf/gltf_import.h"
@@ -83,6 +83,17 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
                 warnings.push_back(place + ".extensions.KHR_materials_specular." + key +
                                    ": not shaded yet; the factors alone are");
     }
+    // KHR_materials_sheen: the fibres' colour and roughness (pbr). Its two textures are not read yet.
+    auto sheen = gm.extensions.find("KHR_materials_sheen");
+    if (sheen != gm.extensions.end()) {
+        const tinygltf::Value& v = sheen->second;
+        m.sheen.color = colorFrom(numbersOf(v, "sheenColorFactor"), glm::vec3(0.0f));
+        m.sheen.roughness = finiteClamp(numberOr(v, "sheenRoughnessFactor", 0.0), 0.0f, 1.0f, 0.0f);
+        for (const char* key : {"sheenColorTexture", "sheenRoughnessTexture"})
+            if (v.IsObject() && v.Has(key))
+                warnings.push_back(place + ".extensions.KHR_materials_sheen." + key +
+                                   ": not shaded yet; the factors alone are");
+    }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);
@@ -120,8 +131,11 @@ Material phongFromMetallicRoughness(const glm::vec3& baseColor, float metallic, 
 std::vector<std::string> unshadedMaterialExtensions(const tinygltf::Model& model) {
     // The material extensions materialFrom reads; every other KHR_materials_* changes how a surface looks.
     static const std::set<std::string> kShaded = {"KHR_materials_pbrSpecularGlossiness",
-                                                  "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                  "KHR_materials_clearcoat", "KHR_materials_specular"};
+                                                  "KHR_materials_emissive_strength",
+                                                  "KHR_materials_ior",
+                                                  "KHR_materials_clearcoat",
+                                                  "KHR_materials_specular",
+                                                  "KHR_materials_sheen"};
     std::map<std::string, size_t> users;  // extension → materials that use it, in name order
     for (const tinygltf::Material& gm : model.materials)
         for (const auto& [name, value] : gm.extensions)

@@ -1,5 +1,6 @@
 // PathBsdf: evaluation through lighting.glsl's shadeLightScaled, shadeLightDisney and glTF's layers
-// (shadeLightPbrLayers: the specular layer and the clear coat), lobe sampling through warp.h.
+// (shadeLightPbrLayers: the specular layer, the sheen and the clear coat), lobe sampling through warp.h and
+// sheen_lut.h (the Charlie distribution's normals).
 #include "trace/path/path_bsdf.h"
 
 #include "shading/lighting.h"
@@ -47,7 +48,15 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
 
     // Estimated albedos of each lobe pick the lobe: a sample goes where the light it carries is.
     float diffuse = diffuseOn_ ? luminance(md_) : 0.0f;
-    float specular = 0.0f, coat = 0.0f;
+    float specular = 0.0f, coat = 0.0f, sheen = 0.0f;
+    if (model_ == shading::SL_MODEL_PBR && params.sheenTable) {
+        // glTF's sheen reflects max3(c)·E(N·V) of the light toward the viewer and the base keeps the rest (as the
+        // environment's light is split); its fibre normals are sampled by D_Charlie·N·H.
+        layers_ = params;
+        sheenAlpha_ = shading::sheenAlpha(params.sheen.w);
+        const glm::vec3 c(params.sheen);
+        if (diffuseOn_) sheen = std::max(luminance(c) * params.sheenEV, 0.02f * std::max(c.x, std::max(c.y, c.z)));
+    }
     if (model_ == shading::SL_MODEL_DISNEY) {
         pickDisneyLobes(NoV, diffuse, specular, coat);
     } else if (specularOn_) {
@@ -66,6 +75,11 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
             }
             specular = F;
             diffuse *= 1.0f - std::min(F, 1.0f);
+            if (sheen > 0.0f) {
+                const float keep = shading::sheenScaling(params.sheen, params.sheenEV, params.sheenEV);
+                diffuse *= keep;
+                specular *= keep;
+            }
             if (params.coat.x > 0.0f) {
                 // The coat reflects about factor·Fc(Nc·V) of the light and passes the rest to the base.
                 const glm::vec3 Nc = glm::normalize(params.coatN);
@@ -74,6 +88,7 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
                 const float w = shading::clearcoatWeight(Nc, V_, params.coat.x);
                 diffuse *= 1.0f - w;
                 specular *= 1.0f - w;
+                sheen *= 1.0f - w;
                 coat = std::max(w, 0.02f * params.coat.x);
             }
         }
@@ -96,11 +111,12 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
         }
     }
     const float mirror = nonNegative(luminance(kr_)), glass = nonNegative(luminance(kt_));
-    const float total = diffuse + specular + coat + mirror + glass;
+    const float total = diffuse + specular + coat + sheen + mirror + glass;
     if (total > 0.0f) {
         pDiffuse_ = diffuse / total;
         pSpecular_ = specular / total;
         pCoat_ = coat / total;
+        pSheen_ = sheen / total;
         pMirror_ = mirror / total;
         pGlass_ = glass / total;
     }
@@ -189,7 +205,18 @@ float PathBsdf::pdf(const glm::vec3& wi) const {
     if (pDiffuse_ > 0.0f) p += pDiffuse_ * cosineHemispherePdf(glm::dot(N_, wi));
     if (pSpecular_ > 0.0f) p += pSpecular_ * specularPdf(wi);
     if (pCoat_ > 0.0f) p += pCoat_ * coatPdf(wi);
+    if (pSheen_ > 0.0f) p += pSheen_ * sheenPdf(wi);
     return p;
+}
+
+// glTF's sheen: the Charlie distribution's density D·N·H over the reflection's Jacobian 1 / (4 V·H).
+float PathBsdf::sheenPdf(const glm::vec3& wi) const {
+    glm::vec3 H;
+    float VoH;
+    if (!halfVector(wi, H, VoH)) return 0.0f;
+    const float NoH = glm::dot(N_, H);
+    if (!(NoH > 0.0f)) return 0.0f;
+    return shading::D_Charlie(NoH, sheenAlpha_) * NoH / (4.0f * VoH);
 }
 
 glm::vec3 PathBsdf::sampleSpecular(glm::vec2 u) const {
@@ -230,6 +257,8 @@ std::optional<BsdfSample> PathBsdf::sample(const glm::vec3& u) const {
         out.wi = frame_.toWorld(sampleCosineHemisphere(uv));
     else if (pick < pDiffuse_ + pSpecular_)
         out.wi = sampleSpecular(uv);
+    else if (pick < pDiffuse_ + pSpecular_ + pSheen_)
+        out.wi = reflectAbout(V_, frame_.toWorld(shading::importanceSampleCharlie(uv.x, uv.y, sheenAlpha_)));
     else
         out.wi = sampleCoat(uv);
     // Directions under the shading or the geometric surface carry nothing back (f is 0 there, or the ray

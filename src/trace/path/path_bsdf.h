@@ -5,7 +5,8 @@
 // lobe by its visible normals (Heitz 2018), the diffuse lobe by the cosine. disney's anisotropic GGX lobe is
 // sampled by its visible normals in the tangent frame of anisotropyTangent, its clearcoat by GTR1's normals
 // (Burley 2012, Appendix B), its diffuse, subsurface and sheen by the cosine; pbr's clear coat (glTF's
-// KHR_materials_clearcoat) by its own GGX's visible normals around the coat's normal; glTF's specular layer changes
+// KHR_materials_clearcoat) by its own GGX's visible normals around the coat's normal, pbr's sheen
+// (KHR_materials_sheen) by the Charlie distribution's fibre normals; glTF's specular layer changes
 // only pbr's evaluation and its lobes' picking. Mirrors (kr) and glass (kt,
 // ior, refracted as the Whitted tracer refracts, total internal reflection going to the mirror) are delta
 // lobes. One lobe is picked per sample with probabilities from estimated albedos; pdf() is the mixture's.
@@ -50,13 +51,14 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& u) const;
 
     // Whether the non-delta part can scatter at all (light sampling is pointless without it).
-    bool hasSmooth() const { return pDiffuse_ + pSpecular_ + pCoat_ > 0.0f; }
+    bool hasSmooth() const { return pDiffuse_ + pSpecular_ + pCoat_ + pSheen_ > 0.0f; }
 
 private:
     bool halfVector(const glm::vec3& wi, glm::vec3& H, float& VoH) const;
     float specularPdf(const glm::vec3& wi) const;
     // Out of line: the other models' pdf() and evalCos() stay as small, and as inlined, as they were without disney.
     [[gnu::noinline]] float coatPdf(const glm::vec3& wi) const;
+    [[gnu::noinline]] float sheenPdf(const glm::vec3& wi) const;
     [[gnu::noinline]] glm::vec3 evalCosDisney(const glm::vec3& wi) const;
     [[gnu::noinline]] glm::vec3 evalCosLayered(const glm::vec3& wi) const;
     glm::vec3 sampleCoat(glm::vec2 u) const;
@@ -90,7 +92,8 @@ private:
         float alpha;
     };
     std::optional<Clearcoat> clearcoat_;
-    // pbr with any of glTF's layers (the coat, the specular layer and ior): the coefficients
+    float sheenAlpha_ = 0.0f;  // pbr under glTF's sheen: its fibres' α (sheenAlpha)
+    // pbr with any of glTF's layers (the coat, the specular layer and ior, the sheen): the coefficients
     // shadeLightPbrLayers reads. Absent otherwise.
     std::optional<shading::SurfaceParams> layers_;
     int model_;
@@ -100,7 +103,7 @@ private:
     bool totalInternal_ = false;  // kt goes to the mirror, as in the Whitted tracer
     glm::vec3 refracted_{0.0f};
     // Lobe picking probabilities (sum 1 unless everything is black).
-    float pDiffuse_ = 0.0f, pSpecular_ = 0.0f, pCoat_ = 0.0f, pMirror_ = 0.0f, pGlass_ = 0.0f;
+    float pDiffuse_ = 0.0f, pSpecular_ = 0.0f, pCoat_ = 0.0f, pSheen_ = 0.0f, pMirror_ = 0.0f, pGlass_ = 0.0f;
 };
 
 }  // namespace shadelab::trace
