@@ -7,6 +7,7 @@
 #include "scene/scene_load.h"
 #include "scene/view.h"
 #include "shading/lighting.h"
+#include "shading/local_illumination.h"
 #include "test_output.h"
 #include "trace/integrator.h"
 #include "trace/tile_renderer.h"
@@ -181,6 +182,49 @@ TEST(AppState, ProbePbrClearcoatPartsSumToTheCoatedShading) {
     sphere.material.clearcoat.factor = 0.0f;
     const ProbeResult bare = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
     EXPECT_GT(glm::length(p.totalPbr - bare.totalPbr), 1e-3f) << "control: the coat changes the total";
+}
+
+// glTF's sheen (under a coat): the base's two parts, the sheen's and the coat's sum to the layered shading, light by
+// light, as the tracer's shadeLightPbrLayers gives it; the report carries the sheen's part; control: the sheen
+// changes the total.
+TEST(AppState, ProbePbrSheenPartsSumToTheLayeredShading) {
+    ViewerState s = defaultState();
+    setModel(s, ShadingModel::Pbr);
+    const int w = 640, h = 360;
+    const uint32_t green = idOf(s, "matte green");
+    Sphere& sphere = s.scene.spheres[green - 1];
+    sphere.material.roughness = 0.6f;
+    sphere.material.sheen = Sheen{{1.0f, 0.8f, 0.6f}, 0.4f};
+    sphere.material.clearcoat = Clearcoat{0.5f, 0.1f};
+    // Near the rim, where the sheen shows.
+    const glm::ivec2 px = pixelOf(s.scene, w, h, sphere.center + glm::vec3(0.85f * sphere.radius, 0.3f, 0.0f));
+    const ProbeResult p = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    ASSERT_TRUE(p.hit);
+    const Material& m = sphere.material;
+    shading::SurfaceParams params =
+        shading::surfaceParams(shading::SL_MODEL_PBR, m.ma, m.md, m.ms, m.s, m.baseColor, m.metallic, m.roughness);
+    params.md = p.pbrDiffuseColor;
+    params.coat = m.clearcoat.packed();
+    params.coatN = p.N;
+    params.sheen = m.sheen.packed();
+    params.sheenTable = &shading::sheenLut();
+    params.sheenEV = shading::sheenAlbedoAt(glm::dot(glm::normalize(p.N), glm::normalize(p.V)), m.sheen.roughness);
+    glm::vec3 sum = p.ambient, sheens(0.0f);
+    for (size_t i = 0; i < p.lights.size(); ++i) {
+        const ProbeLight& l = p.lights[i];
+        const glm::vec3 one = shading::shadeLightPbrLayers(p.N, {l.L, l.Il}, p.V, params, true, true);
+        const glm::vec3 parts = l.diffusePbr + l.specularPbr + l.sheenPbr + l.clearcoatPbr;
+        EXPECT_NEAR(glm::length(parts - l.visibility * one), 0.0f, 1e-5f) << i;
+        sum += parts;
+        sheens += l.sheenPbr;
+    }
+    EXPECT_GT(sheens.x, 1e-3f) << "the sheen's part is there";
+    EXPECT_NEAR(glm::length(p.totalPbr - sum), 0.0f, 1e-5f);
+    const nlohmann::json j = nlohmann::json::parse(probeReportJson(p, s.scene, green));
+    EXPECT_NEAR(j["lights"][0]["sheen_pbr"][0].get<float>(), p.lights[0].sheenPbr.x, 1e-6f);
+    sphere.material.sheen = Sheen{};
+    const ProbeResult bare = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    EXPECT_GT(glm::length(p.totalPbr - bare.totalPbr), 1e-3f) << "control: the sheen changes the total";
 }
 
 TEST(AppState, ProbePbrColumnEqualsSharedShading) {

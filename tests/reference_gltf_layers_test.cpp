@@ -4,7 +4,9 @@
 // ClearCoatTest asset (Debian's assimp-testmodels) with its coat maps and coat normal maps. Negative controls: 10 %
 // less coat, 10 % more coat roughness, the coat dropped. The specular layer and ior (KHR_materials_specular,
 // KHR_materials_ior): the same stages × {an index of 1.33 and of 2.4, a half weight, a tinted F0, over a half metal},
-// in the sky too; controls: the weight 10 % less, the index 1.5 in one renderer. Failures leave both images, the
+// in the sky too; controls: the weight 10 % less, the index 1.5 in one renderer. The sheen (KHR_materials_sheen):
+// the same stages × {white velvet, rough and tinted, the narrowest fibres over a metal, under a coat}, in the sky
+// too; controls: 10 % less colour, 10 % more roughness, the sheen dropped. Failures leave both images, the
 // heatmap and the report in build/test-output/reference_gltf_layers_test/.
 #include "compare/compare_report.h"
 #include "compare/image_compare.h"
@@ -30,6 +32,7 @@ struct CoatCase {
     Clearcoat coat;
     SpecularLayer specular{};
     float ior = 1.5f;
+    Sheen sheen{};
 };
 
 void setCoated(Material& m, const CoatCase& c) {
@@ -39,6 +42,7 @@ void setCoated(Material& m, const CoatCase& c) {
     m.clearcoat = c.coat;
     m.specular = c.specular;
     m.ior = c.ior;
+    m.sheen = c.sheen;
 }
 
 Scene makeCoatScene(const CoatCase& c) {
@@ -86,6 +90,10 @@ std::vector<CoatCase> allCoatCases() {
         {false, false, "specular_half", 0.25f, 0.0f, {}, SpecularLayer{0.5f, glm::vec3(1.0f)}},
         {false, false, "specular_tinted_half_metal", 0.35f, 0.5f, {}, SpecularLayer{0.8f, {1.5f, 0.6f, 0.2f}}, 1.6f},
         {false, false, "specular_and_coat", 0.5f, 0.0f, Clearcoat{1.0f, 0.1f}, SpecularLayer{0.3f, glm::vec3(1.0f)}},
+        {false, false, "sheen_velvet", 0.7f, 0.0f, {}, {}, 1.5f, Sheen{glm::vec3(1.0f), 0.3f}},
+        {false, false, "sheen_rough_tinted", 0.5f, 0.0f, {}, {}, 1.5f, Sheen{{0.9f, 0.6f, 0.3f}, 0.8f}},
+        {false, false, "sheen_narrow_over_metal", 0.4f, 1.0f, {}, {}, 1.5f, Sheen{glm::vec3(0.6f), 0.07f}},
+        {false, false, "sheen_under_coat", 0.6f, 0.0f, Clearcoat{1.0f, 0.1f}, {}, 1.5f, Sheen{glm::vec3(0.8f), 0.5f}},
     };
     std::vector<CoatCase> cases;
     for (bool mesh : {false, true})
@@ -164,13 +172,33 @@ TEST_F(ReferenceGltfLayerControls, SpecularLayerChangesFail) {
     }
 }
 
+// The gates see the sheen: 10 % less of its colour, 10 % more of its roughness, or none at all in one renderer.
+TEST_F(ReferenceGltfLayerControls, SheenChangesFail) {
+    const CoatCase c{false, false, "sheen", 0.7f, 0.0f, {}, {}, 1.5f, Sheen{glm::vec3(1.0f), 0.4f}};
+    struct Control {
+        const char* what;
+        Sheen sheen;
+    };
+    const Control controls[] = {{"colour_minus_10pct", {glm::vec3(0.9f), 0.4f}},
+                                {"roughness_plus_10pct", {glm::vec3(1.0f), 0.44f}},
+                                {"dropped", {glm::vec3(0.0f), 0.4f}}};
+    for (const Control& k : controls) {
+        const Scene a = makeCoatScene(c);
+        Scene b = a;
+        for (Sphere& s : b.spheres) s.material.sheen = k.sheen;
+        b.planes[0].material.sheen = k.sheen;
+        CompareResult r = compareRenders(a, b, std::string("negative_sheen_") + k.what);
+        EXPECT_FALSE(r.pass) << k.what << ": the changed sheen passed the gates:\n" << compareSummary(r);
+    }
+}
+
 // Image-based light: the coat reflects the prefiltered sky at its own roughness in both renderers, with and
-// without a light, and a specular layer with an index of 2.4 reads it too; the coat dropped, or pbr's own F0, in
-// one renderer fails (negative controls).
+// without a light, a specular layer with an index of 2.4 reads it too, and so does a sheen at its own roughness;
+// the coat dropped, pbr's own F0, or the sheen dropped, in one renderer fails (negative controls).
 TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
     static const auto sky = loadPrefilteredHdr(test::sourcePath("assets/environments/sky.hdr"));
-    for (int variant = 0; variant < 3; ++variant) {
-        const bool light = variant == 1, layer = variant == 2;
+    for (int variant = 0; variant < 4; ++variant) {
+        const bool light = variant == 1, layer = variant == 2, sheen = variant == 3;
         Scene scene;
         scene.camera.position = {0.0f, 0.8f, 3.6f};
         scene.camera.target = {0.0f, 0.0f, 0.0f};
@@ -184,7 +212,12 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         Material m;
         m.baseColor = glm::vec3(0.5f, 0.02f, 0.01f);
         m.roughness = 0.45f;
-        m.clearcoat = Clearcoat{layer ? 0.0f : 1.0f, 0.05f};
+        m.clearcoat = Clearcoat{layer || sheen ? 0.0f : 1.0f, 0.05f};
+        if (sheen) {
+            m.baseColor = glm::vec3(0.05f, 0.02f, 0.1f);
+            m.roughness = 0.8f;
+            m.sheen = Sheen{{1.0f, 0.8f, 0.9f}, 0.4f};
+        }
         if (layer) {
             m.metallic = 0.3f;
             m.ior = 2.4f;
@@ -192,13 +225,16 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         }
         scene.spheres.push_back({"", glm::vec3(0.0f), 1.0f, m});
         if (light) scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, glm::vec3(2.0f)));
-        const std::string name = layer ? "specular_layer_sky" : std::string("clearcoat_sky") + (light ? "_light" : "");
+        const std::string name = layer   ? "specular_layer_sky"
+                                 : sheen ? "sheen_sky"
+                                         : std::string("clearcoat_sky") + (light ? "_light" : "");
         CompareResult r = compareRenders(scene, scene, name);
         EXPECT_TRUE(r.pass) << name << "\n" << compareSummary(r);
         Scene bare = scene;
         bare.spheres[0].material.clearcoat.factor = 0.0f;
         bare.spheres[0].material.specular = SpecularLayer{};
         bare.spheres[0].material.ior = 1.5f;
+        bare.spheres[0].material.sheen = Sheen{};
         CompareResult control = compareRenders(scene, bare, "negative_" + name);
         EXPECT_FALSE(control.pass) << name << ": the coat dropped in one renderer passed:\n" << compareSummary(control);
     }

@@ -113,7 +113,7 @@ void drawMaterialSection(PanelContext& ctx) {
         for (const DisneyField& field : kDisneyFields)
             changed |= ImGui::SliderFloat(field.name, &(m.disney.*field.member), 0.0f, 1.0f, "%.2f");
     }
-    // glTF's clear coat layer, shaded under pbr (disney has its own clearcoat above).
+    // glTF's layers, shaded under pbr (disney has its own clearcoat and sheen above).
     if (modelOf(m, s.scene.model) == ShadingModel::Pbr) {
         ImGui::TextDisabled("pbr: glTF clear coat (KHR_materials_clearcoat)");
         changed |= ImGui::SliderFloat("clearcoat", &m.clearcoat.factor, 0.0f, 1.0f, "%.2f");
@@ -123,6 +123,13 @@ void drawMaterialSection(PanelContext& ctx) {
         changed |= ImGui::SliderFloat("specular weight", &m.specular.factor, 0.0f, 1.0f, "%.2f");
         changed |= ImGui::ColorEdit3("specular color", glm::value_ptr(m.specular.color), colorFlags);
         m.specular.color = glm::clamp(m.specular.color, 0.0f, kMaxSpecularColor);
+        // glTF's sheen: the fibres' colour (black: none) and roughness.
+        ImGui::TextDisabled("pbr: glTF sheen (KHR_materials_sheen)");
+        changed |= ImGui::ColorEdit3("sheen color", glm::value_ptr(m.sheen.color), colorFlags);
+        m.sheen.color = glm::clamp(m.sheen.color, 0.0f, 1.0f);
+        changed |= ImGui::SliderFloat("sheen roughness", &m.sheen.roughness, 0.0f, 1.0f, "%.2f");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("velvet, cloth, dust: a rim of light at grazing angles; the colour black turns it off");
     }
     if (changed) {
         m.s = objectMaterial(s.scene, s.selected).s;  // the slider above already applied its own change

@@ -94,6 +94,7 @@ void lightTable(const ProbeResult& p, bool shadows, ShadingModel shown) {
     } else if (pbr) {
         rgbRow("diffuse (1-F)", &ProbeLight::diffusePbr);
         rgbRow("spec pi·DVF·N·L", &ProbeLight::specularPbr);
+        if (p.material.sheen.on()) rgbRow("sheen (Charlie)", &ProbeLight::sheenPbr);
         if (p.material.clearcoat.factor > 0.0f) rgbRow("clear coat", &ProbeLight::clearcoatPbr);
     } else {
         rgbRow("diffuse", &ProbeLight::diffuse);
@@ -114,7 +115,7 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
                      {"pbr", ShadingModel::Pbr},
                      {"disney", ShadingModel::Disney}};
     for (const ProbeLight& l : p.lights) {
-        cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse, cols[2].diffuse += l.diffusePbr;
+        cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse, cols[2].diffuse += l.diffusePbr + l.sheenPbr;
         cols[0].specular += l.specularPhong, cols[1].specular += l.specularBlinn,
             cols[2].specular += l.specularPbr + l.clearcoatPbr;
         cols[3].diffuse += l.diffuseDisney + l.sheenDisney;

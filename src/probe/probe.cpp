@@ -7,6 +7,7 @@
 #include "scene/view.h"
 #include "shading/local_illumination.h"
 #include "trace/integrator.h"
+#include "trace/pbr_layers.h"
 #include "trace/tile_renderer.h"
 
 #include <algorithm>
@@ -50,18 +51,11 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     // As WhittedIntegrator: the checker's second tiles change pbr's base colour (F0 stays the plane's).
     shading::SurfaceParams paramsPbr = paramsFor(shading::SL_MODEL_PBR);
     paramsPbr.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
-    paramsPbr.coat = s.coat;  // glTF's clear coat, as WhittedIntegrator::shadingParams gives it to pbr
-    paramsPbr.coatN = s.coatN;
-    if (hasSpecularLayer(m.specular, m.ior)) {  // glTF's specular layer and ior, as WhittedIntegrator's
-        paramsPbr.layered = true;
-        paramsPbr.specLayer = m.specular.packed(m.ior);
-        paramsPbr.baseColor = s.baseColor;
-        paramsPbr.metallic = m.metallic;
-        paramsPbr.ms = shading::pbrSpecularF0(s.baseColor, m.metallic, paramsPbr.specLayer);
-    }
-    // The base's terms, without the coat (the coat's part is listed on its own).
+    trace::setPbrLayers(paramsPbr, s, V);  // glTF's layers, as WhittedIntegrator::shadingParams gives them to pbr
+    // The base's terms, without the coat and the sheen (their parts are listed on their own).
     shading::SurfaceParams basePbr = paramsPbr;
     basePbr.coat = glm::vec2(0.0f);
+    basePbr.sheenTable = nullptr;
     r.pbrDiffuseColor = paramsPbr.md;
     r.pbrF0 = paramsPbr.ms;
     const int pbr = shading::SL_MODEL_PBR;
@@ -111,16 +105,28 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
         pl.Vis = shading::V_SmithGGXCorrelated(std::max(glm::dot(r.N, r.V), 1e-4f), std::max(pl.NoL, 0.0f), a);
         pl.F = shading::F_Schlick(paramsPbr.ms, std::max(glm::dot(r.V, pl.H), 0.0f));
         const shading::LightSample sample{Lraw, Il};
-        const glm::vec3 both = shading::shadeLightPbrLayers(s.N, sample, V, basePbr, true, true);
+        glm::vec3 both = shading::shadeLightPbrLayers(s.N, sample, V, basePbr, true, true);
         pl.specularPbr = vis * shading::shadeLightPbrLayers(s.N, sample, V, basePbr, false, true);
         pl.diffusePbr = vis * both - pl.specularPbr;
+        if (paramsPbr.sheenTable) {
+            // Under the sheen the base's two parts keep sheenScaling, and the sheen's lobe is the rest of the term.
+            shading::SheenLookup table{paramsPbr.sheenTable};
+            const glm::vec4 sheen = paramsPbr.sheen;
+            const float EL = table.at(table.sheenCos(s.N, Lraw), sheen.w);
+            const float keep = shading::sheenScaling(sheen, paramsPbr.sheenEV, EL);
+            both = shading::sheenLight(both, s.N, Lraw, V, Il, sheen, paramsPbr.sheenEV, EL, true);
+            pl.diffusePbr *= keep;
+            pl.specularPbr *= keep;
+            pl.sheenPbr = vis * both - pl.diffusePbr - pl.specularPbr;
+        }
         if (paramsPbr.coat.x > 0.0f) {
-            // Under the coat the base's two parts keep 1 − c·Fc, and the coat's lobe is the rest of the term.
+            // Under the coat the parts below keep 1 − c·Fc, and the coat's lobe is the rest of the term.
             const float keep = 1.0f - shading::clearcoatWeight(s.coatN, V, paramsPbr.coat.x);
             const glm::vec3 coated = vis * shading::clearcoatLight(both, s.coatN, Lraw, V, Il, paramsPbr.coat, true);
             pl.diffusePbr *= keep;
             pl.specularPbr *= keep;
-            pl.clearcoatPbr = coated - pl.diffusePbr - pl.specularPbr;
+            pl.sheenPbr *= keep;
+            pl.clearcoatPbr = coated - pl.diffusePbr - pl.specularPbr - pl.sheenPbr;
         }
         pl.diffuseDisney = vis * disneyPart(Lraw, Il, true, false);
         pl.sheenDisney = vis * disneyPart(Lraw, Il, true, true) - pl.diffuseDisney;

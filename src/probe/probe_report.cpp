@@ -75,6 +75,7 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                           {"F", vec(l.F)},
                           {"diffuse_pbr", vec(l.diffusePbr)},
                           {"specular_pbr", vec(l.specularPbr)},
+                          {"sheen_pbr", vec(l.sheenPbr)},
                           {"clearcoat_pbr", vec(l.clearcoatPbr)},
                           {"diffuse_disney", vec(l.diffuseDisney)},
                           {"sheen_disney", vec(l.sheenDisney)},

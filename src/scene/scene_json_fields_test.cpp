@@ -251,6 +251,32 @@ TEST(SceneJson, SpecularLayerReadsRoundTripsAndPacks) {
     EXPECT_EQ((SpecularLayer{1.0f, glm::vec3(100.0f)}.packed(3.0f).x), 1.0f);  // clamped
 }
 
+// glTF's sheen: read with its defaults (none), saved only where there is one, read back exactly, also as a mesh's
+// override; a misspelt field warns with a hint.
+TEST(SceneJson, SheenReadsSavesOnlyWhereThereIsOneAndRoundTrips) {
+    Scene s = parse(R"({"model": "pbr", "objects": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1,
+         "material": {"baseColor": [0.1, 0.02, 0.2], "sheen": {"color": [1, 0.75, 0.5], "roughness": 0.3}}},
+        {"type": "sphere", "center": [3, 1, 0], "radius": 1, "material": {"sheen": {"color": [0.5, 0.5, 0.5]}}},
+        {"type": "sphere", "center": [6, 1, 0], "radius": 1},
+        {"type": "mesh", "source": "torus.gltf", "material": {"sheen": {"roughness": 0.5}}}]})");
+    EXPECT_EQ(s.spheres[0].material.sheen, (Sheen{{1.0f, 0.75f, 0.5f}, 0.3f}));
+    EXPECT_EQ(s.spheres[1].material.sheen, (Sheen{glm::vec3(0.5f), 0.0f}));  // glTF's default sheen roughness
+    EXPECT_EQ(s.spheres[2].material.sheen, Sheen{});
+    EXPECT_FALSE(s.spheres[2].material.sheen.on());
+    EXPECT_EQ(s.meshes[0].material.sheen.roughness, 0.5f);
+    EXPECT_FALSE(s.meshes[0].material.sheen.color);
+    expectRoundTrip(s);
+    const std::string saved = sceneToJson(s);
+    size_t sheens = 0;
+    for (size_t at = saved.find("\"sheen\""); at != std::string::npos; at = saved.find("\"sheen\"", at + 1)) ++sheens;
+    EXPECT_EQ(sheens, 3u) << saved;  // the two sheens and the override; none where there is none
+    parse(R"({"objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 1,
+                           "material": {"sheen": {"colour": [1, 1, 1]}}}]})");
+    EXPECT_EQ(joined(gWarnings),
+              "a.json: objects[0].material.sheen: unknown field 'colour' (ignored); did you mean 'color'?\n");
+}
+
 TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {
     Scene s = parse(R"({"foo": 1, "camera": {"fovy": 30},
         "lights": [{"type": "point", "position": [0, 1, 0], "colour": [1, 0, 0]}], "raster": {"PCF": true},

@@ -51,6 +51,8 @@ struct Diff {
             f(p + ".clearcoat." + c.name, a.clearcoat.*c.member, b.clearcoat.*c.member);
         f(p + ".specular.factor", a.specular.factor, b.specular.factor);
         v(p + ".specular.color", a.specular.color, b.specular.color);
+        v(p + ".sheen.color", a.sheen.color, b.sheen.color),
+            f(p + ".sheen.roughness", a.sheen.roughness, b.sheen.roughness);
         eq(p + ".model", a.model, b.model);
     }
     void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
@@ -66,6 +68,8 @@ struct Diff {
             opt(p + ".clearcoat." + kClearcoatFields[i].name, a.clearcoat.value[i], b.clearcoat.value[i], ff);
         opt(p + ".specular.factor", a.specular.factor, b.specular.factor, ff);
         opt(p + ".specular.color", a.specular.color, b.specular.color, vv);
+        opt(p + ".sheen.color", a.sheen.color, b.sheen.color, vv);
+        opt(p + ".sheen.roughness", a.sheen.roughness, b.sheen.roughness, ff);
     }
 };
 

@@ -8,6 +8,7 @@
 #include "shading/material_maps.h"
 #include "shading/texel_decode.h"
 #include "shading/texture_sample.h"
+#include "trace/pbr_layers.h"
 
 #include <algorithm>
 #include <array>
@@ -220,26 +221,7 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
         params.metallic = s.metallic;
         params.ms = shading::disneySpecularF0(s.baseColor, s.metallic, m.disney.specular, m.disney.specularTint);
     }
-    if (s.model == shading::SL_MODEL_PBR && s.coat.x > 0.0f) {  // glTF's clear coat (disney has its own)
-        params.coat = s.coat;
-        params.coatN = s.coatN;
-    }
-    if (s.model == shading::SL_MODEL_PBR && hasSpecularLayer(m.specular, m.ior)) {
-        // glTF's specular and ior: shadeLightPbrSpecular reads the base colour and metallic here (textured, the
-        // checker's, a texel's); its F0 for the environment and the energy compensation is pbrSpecularF0's.
-        params.layered = true;
-        params.specLayer = m.specular.packed(m.ior);
-        params.baseColor = s.baseColor;
-        params.metallic = s.metallic;
-        params.ms = shading::pbrSpecularF0(s.baseColor, s.metallic, params.specLayer);
-    }
-    if (s.model == shading::SL_MODEL_PBR && m.sheen.on()) {
-        // glTF's sheen: its albedo at the view direction once here, at each light's in shadeLightPbrLayers.
-        shading::SheenLookup table{&shading::sheenLut()};
-        params.sheen = m.sheen.packed();
-        params.sheenTable = table.lut;
-        params.sheenEV = table.at(table.sheenCos(s.N, V), m.sheen.roughness);
-    }
+    if (s.model == shading::SL_MODEL_PBR) setPbrLayers(params, s, V);  // glTF's layers (disney has its own)
     params.ma = params.ma * s.ao;
     glm::vec2 dfg(0.0f);
     if (pbr && (sc.energyCompensation || env_.lightsPbr()))

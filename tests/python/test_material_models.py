@@ -110,11 +110,11 @@ def test_disney_parameters_edit_in_place_and_change_that_object_alone(pbr_defaul
 
 
 def test_a_material_extension_not_shaded_is_a_warning(tmp_path):
-    # glTF's sheen is not shaded yet; the clear coat is (control: its asset loads without a warning).
-    path = tmp_path / "sheen.gltf"
+    # glTF's transmission is not shaded yet; the clear coat is (control: its asset loads without a warning).
+    path = tmp_path / "transmission.gltf"
     path.write_text('{"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0, "materials": '
-                    '[{"extensions": {"KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1]}}}]}')
-    with pytest.warns(shadelab.ShadelabWarning, match=r"KHR_materials_sheen is not shaded"):
+                    '[{"extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}}}]}')
+    with pytest.warns(shadelab.ShadelabWarning, match=r"KHR_materials_transmission is not shaded"):
         try:
             shadelab.Scene.load(str(path))
         except shadelab.InputError:
@@ -146,6 +146,25 @@ def test_the_clearcoat_edits_in_place_under_pbr(pbr_default):
     with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.clearcoat\.factor: must be in \[0, 1\]"):
         material.clearcoat.factor = 1.5
     assert pbr_default.objects[0].material.clearcoat.factor == 1.0  # nothing lost
+
+
+def test_the_sheen_edits_in_place_under_pbr(pbr_default):
+    material = pbr_default.objects[0].material
+    assert material.sheen.color == (0.0, 0.0, 0.0) and material.sheen.roughness == 0.0  # no sheen by default
+    before = shadelab.render(pbr_default, (160, 90), coverage=True)
+    material.sheen.color = (1.0, 0.8, 0.6)
+    material.sheen.roughness = 0.3
+    after = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    cov = np.asarray(before.coverage)
+    pixels = np.asarray(before)
+    assert not np.array_equal(pixels[cov == 1], after[cov == 1])
+    assert np.array_equal(pixels[cov == 2], after[cov == 2])  # control: another sphere is untouched
+    saved = pbr_default.to_dict()["objects"][0]["material"]["sheen"]
+    assert saved["color"] == [1.0, 0.8, 0.6] or tuple(saved["color"]) == (1.0, 0.8, 0.6)
+    assert saved["roughness"] == 0.3
+    with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.sheen\.roughness: must be in \[0, 1\]"):
+        material.sheen.roughness = 1.5
+    assert pbr_default.objects[0].material.sheen.roughness == 0.3  # nothing lost
 
 
 def test_the_specular_layer_and_ior_edit_in_place_under_pbr(pbr_default):

@@ -370,17 +370,18 @@ TEST(GltfImport, TwoCylinderEngineImportsWhole) {
 // maps on ClearCoatTest, the one layered Khronos asset Debian ships). Control: a model without either says
 // nothing of the kind.
 TEST(GltfImport, AMaterialExtensionNotShadedIsSaidOnceAndTheClearcoatIsRead) {
-    const std::string sheen = R"({"extensions":{"KHR_materials_sheen":{"sheenColorFactor":[1,1,1]}}})";
+    const std::string sheen = R"({"extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})";
     const std::string path = writeGltf(
         "layers.gltf", quad(), R"([{"mesh":0}])", "[0]",
         R"(,"materials":[)" + sheen + "," + sheen +
             R"(,{"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":0.75,"clearcoatRoughnessFactor":0.2}}}])");
     const GltfImport g = importGltf(path);
     const auto lines = std::count_if(g.warnings.begin(), g.warnings.end(), [](const std::string& w) {
-        return contains(w, "KHR_materials_sheen is not shaded");
+        return contains(w, "KHR_materials_transmission is not shaded");
     });
     EXPECT_EQ(lines, 1);
-    EXPECT_TRUE(anyWarningContains(g, "KHR_materials_sheen is not shaded (2 materials use it): rendered without it"));
+    EXPECT_TRUE(
+        anyWarningContains(g, "KHR_materials_transmission is not shaded (2 materials use it): rendered without it"));
     EXPECT_FALSE(anyWarningContains(g, "KHR_materials_clearcoat"));
     REQUIRE_MODELS();
     const GltfImport coated = importGltf(model("glTF2/ClearCoat-glTF/ClearCoatTest.gltf"));
@@ -426,6 +427,30 @@ TEST(GltfImport, SpecularAndIorAreRead) {
     EXPECT_TRUE(anyWarningContains(g, "KHR_materials_specular.specularTexture: not shaded yet; the factors alone are"));
     const GltfImport plain = importGltf(writeGltf("plain.gltf", quad(), R"([{"mesh":0}])"));
     EXPECT_EQ(plain.parts[0].material.specular, SpecularLayer{});
+}
+
+// KHR_materials_sheen is read into the material (pbr's sheen colour and roughness); its textures are said to be
+// not shaded, once each; a material without it has no sheen (control).
+TEST(GltfImport, SheenIsRead) {
+    const std::string path =
+        writeGltf("sheen.gltf", quad(), R"([{"mesh":0}])", "[0]",
+                  R"(,"materials":[{"extensions":{"KHR_materials_sheen":{"sheenColorFactor":[1,0.5,0.25],)"
+                  R"("sheenRoughnessFactor":0.375,"sheenColorTexture":{"index":0}}}},{}])");
+    {  // the quad's primitive takes material 0
+        std::ifstream in(path);
+        nlohmann::json j = nlohmann::json::parse(in);
+        j["meshes"][0]["primitives"][0]["material"] = 0;
+        std::ofstream(path) << j.dump();
+    }
+    const GltfImport g = importGltf(path);
+    ASSERT_EQ(g.parts.size(), 1u);
+    const Material& m = g.parts[0].material;
+    EXPECT_EQ(m.sheen, (Sheen{{1.0f, 0.5f, 0.25f}, 0.375f}));
+    EXPECT_FALSE(anyWarningContains(g, "KHR_materials_sheen is not shaded"));
+    EXPECT_TRUE(anyWarningContains(g, "KHR_materials_sheen.sheenColorTexture: not shaded yet; the factors alone are"));
+    const GltfImport plain = importGltf(writeGltf("plain.gltf", quad(), R"([{"mesh":0}])"));
+    EXPECT_EQ(plain.parts[0].material.sheen, Sheen{});
+    EXPECT_FALSE(plain.parts[0].material.sheen.on());
 }
 
 // Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed.

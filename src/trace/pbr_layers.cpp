@@ -1,0 +1,31 @@
+// setPbrLayers: the layers' parameters from a material and its textured surface point.
+#include "trace/pbr_layers.h"
+
+#include "shading/sheen_lut.h"
+
+namespace shadelab::trace {
+
+void setPbrLayers(shading::SurfaceParams& p, const Surface& s, const glm::vec3& V) {
+    const Material& m = *s.material;
+    if (s.coat.x > 0.0f) {  // the coat's factor and roughness times its maps' texels (SurfaceSetup::at)
+        p.coat = s.coat;
+        p.coatN = s.coatN;
+    }
+    if (hasSpecularLayer(m.specular, m.ior)) {
+        // shadeLightPbrSpecular reads the base colour and metallic here (textured, the checker's, a texel's); its
+        // F0 for the environment and the energy compensation is pbrSpecularF0's.
+        p.layered = true;
+        p.specLayer = m.specular.packed(m.ior);
+        p.baseColor = s.baseColor;
+        p.metallic = s.metallic;
+        p.ms = shading::pbrSpecularF0(s.baseColor, s.metallic, p.specLayer);
+    }
+    if (m.sheen.on()) {  // its albedo toward the viewer once here, toward each light in shadeLightPbrLayers
+        shading::SheenLookup table{&shading::sheenLut()};
+        p.sheen = m.sheen.packed();
+        p.sheenTable = table.lut;
+        p.sheenEV = table.at(table.sheenCos(s.N, V), m.sheen.roughness);
+    }
+}
+
+}  // namespace shadelab::trace
