@@ -1,15 +1,57 @@
 // glTF's material layers on the pbr model (docs/lighting.md, "glTF's specular and ior", "glTF's clear coat layer"),
 // in the subset of GLSL that is also C++ with GLM, by the rules of lighting.glsl, which includes this file after
-// the microfacet functions it builds on (F_Schlick, specularGGX, specularDFG).
+// the microfacet functions it builds on (F_Schlick, specularGGX, specularDFG, D_GTR2Aniso, anisotropyTangent).
+
+// glTF's KHR_materials_anisotropy (docs/lighting.md, "glTF's anisotropy"): GGX stretched along a direction T in the
+// tangent plane, αt = mix(α, 1, s²) along T and αb = α across it, s the strength. aniso = (s, cos r, sin r),
+// Anisotropy::packed, r the direction's turn from the tangent X = anisotropyTangent(N) toward Y = N × X.
+
+// T = X·cos r + Y·sin r. N need not be unit.
+SL_FN vec3 anisotropyDirection(vec3 N, vec3 aniso) {
+    vec3 n = normalize(N);
+    vec3 X = anisotropyTangent(n);
+    return aniso.y * X + aniso.z * cross(n, X);
+}
+
+// D·V of the stretched lobe (F = 1): D_GTR2Aniso at (αt, αb) and the height-correlated anisotropic Smith visibility
+// V = 0.5 / (N·L·|(αt T·V, αb B·V, N·V)| + N·V·|(αt T·L, αb B·L, N·L)|), B = N × T (Heitz 2014; the extension's).
+// α = pbrAlpha(roughness). N, L, V, T unit, N·L > 0; N·V kept above 1e-4 as specularGGX does.
+SL_FN float anisotropicGGX(vec3 N, vec3 L, vec3 V, vec3 T, float roughness, float strength) {
+    float a = pbrAlpha(roughness);
+    float at = mix(a, 1.0f, strength * strength);
+    vec3 B = cross(N, T);
+    vec3 H = normalize(L + V);
+    float NoL = dot(N, L);
+    float NoV = max(dot(N, V), 1e-4f);
+    float D = D_GTR2Aniso(dot(N, H), dot(H, T), dot(H, B), at, a);
+    float lv = length(vec3(at * dot(T, V), a * dot(B, V), NoV));
+    float ll = length(vec3(at * dot(T, L), a * dot(B, L), NoL));
+    return D * 0.5f / (NoL * lv + NoV * ll);
+}
+
+// The normal the environment's reflection is looked up about under anisotropy (Filament's bent normal, as the
+// Khronos Sample Viewer uses it): N bent toward the normal facing V across T, the more the stronger and smoother,
+// bend = (1 − s·(1 − roughness))⁴ of N kept. N, V need not be unit.
+SL_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, vec3 aniso, float roughness) {
+    vec3 n = normalize(N);
+    vec3 v = normalize(V);
+    vec3 T = anisotropyDirection(n, aniso);
+    vec3 across = cross(cross(T, v), T);
+    float bend = 1.0f - aniso.x * (1.0f - roughness);
+    float keep = bend * bend * bend * bend;
+    return normalize(mix(across, n, keep));
+}
 
 // glTF's KHR_materials_specular with KHR_materials_ior (docs/lighting.md, "glTF's specular and ior"): the dielectric
 // and metal parts mixed by metallic as in glTF 2.0 Appendix B's mix(dielectric_brdf, metal_brdf, metallic). The
 // dielectric's Fresnel Fd = w·F_Schlick(f0d, V·H), f0d the index's F0 tinted by the specular colour and w the
 // specular factor, over its diffuse, which keeps 1 − max3(Fd) (the extension's fresnel_mix); the metal's Fresnel
 // F_Schlick(baseColor, V·H). layer = (f0d, w) (SpecularLayer::packed), md the diffuse colour baseColor·(1 −
-// metallic), specScale as shadeLightScaled's. N, L, V need not be unit.
+// metallic), specScale as shadeLightScaled's; aniso = glTF's anisotropy (its strength 0: the isotropic lobe).
+// N, L, V need not be unit.
 SL_FN vec3 shadeLightPbrSpecular(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 baseColor, float metallic,
-                                 float roughness, vec4 layer, bool diffuseOn, bool specularOn, vec3 specScale) {
+                                 float roughness, vec4 layer, vec3 aniso, bool diffuseOn, bool specularOn,
+                                 vec3 specScale) {
     N = normalize(N);
     L = normalize(L);
     V = normalize(V);
@@ -20,7 +62,9 @@ SL_FN vec3 shadeLightPbrSpecular(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 
         float VoH = max(dot(V, normalize(L + V)), 0.0f);
         vec3 Fd = layer.w * F_Schlick(vec3(layer.x, layer.y, layer.z), VoH);
         vec3 F = mix(Fd, F_Schlick(baseColor, VoH), metallic);
-        vec3 DV = specularGGX(N, L, V, vec3(1.0f), roughness);  // F_Schlick(1, ·) is 1: D·V alone
+        // F_Schlick(1, ·) is 1: D·V alone, isotropic or stretched along T.
+        vec3 DV = aniso.x > 0.0f ? vec3(anisotropicGGX(N, L, V, anisotropyDirection(N, aniso), roughness, aniso.x))
+                                 : specularGGX(N, L, V, vec3(1.0f), roughness);
         I = I * (1.0f - max(Fd.x, max(Fd.y, Fd.z))) + (SL_PI * NoL) * DV * F * specScale;
     }
     return Il * I;

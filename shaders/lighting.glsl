@@ -124,8 +124,6 @@ SL_FN vec3 energyCompensation(vec3 f0, vec2 dfg) {
     return vec3(1.0f) + f0 * (1.0f / max(dfg.x + dfg.y, 1e-4f) - 1.0f);
 }
 
-// glTF's material layers on pbr (the specular layer and index, the clear coat, the sheen), in a file of their own.
-#include "gltf_layers.glsl"
 
 // Burley 2012, "Physically Based Shading at Disney", and its published disney.brdf: the principled BRDF.
 // Schlick's weight (1 − u)⁵, u clamped to [0, 1], the fifth power multiplied out.
@@ -274,6 +272,10 @@ SL_FN vec3 shadeLightDisney(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 baseColor, flo
     }
     return Il * (SL_PI * NoL) * f;
 }
+
+// glTF's material layers on pbr (the specular layer and index, the clear coat, the sheen, the anisotropy), in a file
+// of their own, after the microfacet and anisotropic functions they build on.
+#include "gltf_layers.glsl"
 
 // One light's contribution Il ⊙ (md·max(N·L,0) + ms·spec), before visibility. N, L, V need not be unit:
 // both renderers hand in raw vectors and this normalises them, so the order of operations is shared.

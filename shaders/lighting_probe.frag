@@ -7,7 +7,8 @@ uniform sampler2D t_L;        // xyz: L
 uniform sampler2D t_V;        // xyz: V
 uniform sampler2D t_params;   // x: s (pbr, disney: roughness), y: model (0 Phong, 1 Blinn-Phong, 2 pbr, 3 disney),
                               // z: metallic
-                              // y = 7: pbr with glTF's specular layer, t_disney0 its (f0d, weight)
+                              // y = 7: pbr with glTF's specular layer, t_disney0 its (f0d, weight), t_disney1
+                              // its anisotropy (strength, cos, sin)
                               // y = 8: pbr under glTF's clear coat, t_disney0 its (factor, roughness), t_disney1
                               // its normal
                               // y = 10: pbr under glTF's sheen, t_disney0 its (colour, roughness), t_disney1
@@ -38,7 +39,8 @@ void main() {
     if (model == 7) {
         // u_md is the base colour; w: the layered F0's green (pbrSpecularF0).
         vec4 layer = texelFetch(t_disney0, p, 0);
-        vec3 I = shadeLightPbrSpecular(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), u_md, params.z, params.x, layer,
+        vec3 aniso = texelFetch(t_disney1, p, 0).xyz;
+        vec3 I = shadeLightPbrSpecular(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), u_md, params.z, params.x, layer, aniso,
                                        true, true, vec3(1.0f));
         o_result = vec4(I, pbrSpecularF0(u_md, params.z, layer).y);
         return;

@@ -32,9 +32,11 @@ uniform vec4 u_disney1;
 float s_metallic = 0.0f;
 float surfaceMetallic() { return s_mapped ? s_metallic : u_metallic; }
 #if defined(SL_SPECULAR_LAYER) && SL_MODEL == 2
-// pbr with glTF's specular layer and index (lighting.glsl's shadeLightPbrSpecular): (f0d, w), SpecularLayer::packed.
+// pbr with glTF's specular layer and index, or anisotropic (lighting.glsl's shadeLightPbrSpecular): (f0d, w),
+// SpecularLayer::packed.
 #define SL_LAYERED 1
 uniform vec4 u_specLayer;
+uniform vec3 u_aniso;  // glTF's anisotropy (Anisotropy::packed): (strength, cos, sin) of its direction's turn
 #else
 #define SL_LAYERED 0
 #endif
@@ -54,8 +56,8 @@ vec3 shadeOneLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 base, vec3 spe
     return shadeLightDisney(N, L, V, Il, base, surfaceMetallic(), surfaceS(), u_disney0, u_disney1, SL_DIFFUSE,
                             SL_SPECULAR, specScale);
 #elif SL_LAYERED
-    return shadeLightPbrSpecular(N, L, V, Il, md, base, surfaceMetallic(), surfaceS(), u_specLayer, SL_DIFFUSE,
-                                 SL_SPECULAR, specScale);
+    return shadeLightPbrSpecular(N, L, V, Il, md, base, surfaceMetallic(), surfaceS(), u_specLayer, u_aniso,
+                                 SL_DIFFUSE, SL_SPECULAR, specScale);
 #else
     return shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
 #endif
@@ -120,7 +122,12 @@ vec2 dfgTexel(int x, int y) { return texelFetch(t_iblDfg, ivec2(x, y), 0).rg; }
 // base colour and u_s the roughness. disney takes it as pbr does (docs/lighting.md).
 vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec3 base, vec2 dfg) {
 #if SL_IBL == 2
+#if SL_LAYERED
+    // Anisotropic: the reflection about the bent normal (gltf_layers.glsl, anisotropicBentNormal).
+    vec3 R = u_aniso.x > 0.0f ? iblReflect(anisotropicBentNormal(N, V, u_aniso, surfaceS()), V) : iblReflect(N, V);
+#else
     vec3 R = iblReflect(N, V);
+#endif
     vec3 sh[9];
     for (int i = 0; i < 9; ++i) sh[i] = u_iblSH[i].xyz;
     vec3 irradiance = u_iblParams.x * iblIrradianceSH(sh, iblRotate(normalize(N), u_iblParams.y, u_iblParams.z));

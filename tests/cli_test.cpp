@@ -419,6 +419,22 @@ TEST(Cli, StrictMakesAnInputWarningAnErrorAndWritesNothing) {
     EXPECT_TRUE(fs::exists(out));
 }
 
+// A glTF file is a scene under phong: its sheen (pbr's layer) would vanish without a word. One warning line names
+// the layer and says how to see it (an error under --strict); with --model pbr there is nothing to say (control).
+TEST(Cli, LayersAnotherModelHidesAreSaidOnce) {
+    const std::string model = test::sourcePath("assets/models/layers/sheen_grid.gltf");
+    const std::string out = test::outputPath("layers_hidden.png");
+    const Result phong = run("render " + model + " -o " + out + " --size 64x36");
+    EXPECT_EQ(phong.code, 0) << phong.out;
+    EXPECT_EQ(lineCount(phong.out), 1) << phong.out;
+    EXPECT_NE(phong.out.find("sheen_grid.gltf: glTF's sheen shades only under pbr"), std::string::npos) << phong.out;
+    EXPECT_NE(phong.out.find("--model pbr"), std::string::npos) << phong.out;
+    EXPECT_EQ(run("render " + model + " -o " + out + " --size 64x36 --strict").code, 1);
+    const Result pbr = run("render " + model + " -o " + out + " --size 64x36 --model pbr --strict");
+    EXPECT_EQ(pbr.code, 0) << pbr.out;
+    EXPECT_EQ(pbr.out, "");
+}
+
 TEST(CliCompare, ExitCodesFollowTheGates) {
     std::string scene = test::sourcePath("assets/scenes/default.json");
     std::string a = test::outputPath("cmp_a.png"), b = test::outputPath("cmp_b.png"), c = test::outputPath("cmp_c.png");

@@ -6,7 +6,10 @@
 // KHR_materials_ior): the same stages × {an index of 1.33 and of 2.4, a half weight, a tinted F0, over a half metal},
 // in the sky too; controls: the weight 10 % less, the index 1.5 in one renderer. The sheen (KHR_materials_sheen):
 // the same stages × {white velvet, rough and tinted, the narrowest fibres over a metal, under a coat}, in the sky
-// too; controls: 10 % less colour, 10 % more roughness, the sheen dropped. Failures leave both images, the
+// too; controls: 10 % less colour, 10 % more roughness, the sheen dropped. The anisotropy
+// (KHR_materials_anisotropy): a metal, a turned plastic, under a coat, and in the sky; controls: the direction turned
+// by 0.1 rad, the anisotropy dropped. shadelab's generated layer grids
+// (tools/make_layer_gltf.py); control: the layers stripped in one renderer. Failures leave both images, the
 // heatmap and the report in build/test-output/reference_gltf_layers_test/.
 #include "compare/compare_report.h"
 #include "compare/image_compare.h"
@@ -16,6 +19,7 @@
 #include "scene/scene_load.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 using namespace shadelab;
@@ -33,6 +37,7 @@ struct CoatCase {
     SpecularLayer specular{};
     float ior = 1.5f;
     Sheen sheen{};
+    Anisotropy anisotropy{};
 };
 
 void setCoated(Material& m, const CoatCase& c) {
@@ -43,6 +48,7 @@ void setCoated(Material& m, const CoatCase& c) {
     m.specular = c.specular;
     m.ior = c.ior;
     m.sheen = c.sheen;
+    m.anisotropy = c.anisotropy;
 }
 
 Scene makeCoatScene(const CoatCase& c) {
@@ -94,6 +100,9 @@ std::vector<CoatCase> allCoatCases() {
         {false, false, "sheen_rough_tinted", 0.5f, 0.0f, {}, {}, 1.5f, Sheen{{0.9f, 0.6f, 0.3f}, 0.8f}},
         {false, false, "sheen_narrow_over_metal", 0.4f, 1.0f, {}, {}, 1.5f, Sheen{glm::vec3(0.6f), 0.07f}},
         {false, false, "sheen_under_coat", 0.6f, 0.0f, Clearcoat{1.0f, 0.1f}, {}, 1.5f, Sheen{glm::vec3(0.8f), 0.5f}},
+        {false, false, "aniso_metal", 0.35f, 1.0f, {}, {}, 1.5f, {}, Anisotropy{0.8f, 0.0f}},
+        {false, false, "aniso_turned_plastic", 0.3f, 0.0f, {}, {}, 1.5f, {}, Anisotropy{0.6f, 1.0f}},
+        {false, false, "aniso_under_coat", 0.4f, 1.0f, Clearcoat{1.0f, 0.05f}, {}, 1.5f, {}, Anisotropy{1.0f, -0.5f}},
     };
     std::vector<CoatCase> cases;
     for (bool mesh : {false, true})
@@ -133,63 +142,51 @@ INSTANTIATE_TEST_SUITE_P(AllCombinations, ReferenceGltfLayers, ::testing::Values
 
 class ReferenceGltfLayerControls : public test::GlTest {};
 
+namespace {
+
+// One negative control: makeCoatScene(c) rendered by the rasterizer against the same scene with `change` made to
+// every sphere's and the floor's material in the tracer must fail the gates.
+void expectChangeFails(const CoatCase& c, const std::string& name, const std::function<void(Material&)>& change) {
+    const Scene a = makeCoatScene(c);
+    Scene b = a;
+    for (Sphere& s : b.spheres) change(s.material);
+    change(b.planes[0].material);
+    CompareResult r = compareRenders(a, b, "negative_" + name);
+    EXPECT_FALSE(r.pass) << name << ": the change passed the gates:\n" << compareSummary(r);
+}
+
+}  // namespace
+
 // The gates see the coat: 10 % less of it, 10 % more coat roughness, or none at all in one renderer.
 TEST_F(ReferenceGltfLayerControls, CoatChangesFail) {
     const CoatCase c{false, false, "gloss", 0.5f, 0.0f, Clearcoat{1.0f, 0.3f}, {}};
-    struct Control {
-        const char* what;
-        Clearcoat coat;
-    };
-    const Control controls[] = {
-        {"factor_minus_10pct", {0.9f, 0.3f}}, {"roughness_plus_10pct", {1.0f, 0.33f}}, {"dropped", {0.0f, 0.3f}}};
-    for (const Control& k : controls) {
-        const Scene a = makeCoatScene(c);
-        Scene b = a;
-        for (Sphere& s : b.spheres) s.material.clearcoat = k.coat;
-        b.planes[0].material.clearcoat = k.coat;
-        CompareResult r = compareRenders(a, b, std::string("negative_clearcoat_") + k.what);
-        EXPECT_FALSE(r.pass) << k.what << ": the changed coat passed the gates:\n" << compareSummary(r);
-    }
+    for (const auto& [what, coat] : {std::pair{"factor_minus_10pct", Clearcoat{0.9f, 0.3f}},
+                                     {"roughness_plus_10pct", Clearcoat{1.0f, 0.33f}},
+                                     {"dropped", Clearcoat{0.0f, 0.3f}}})
+        expectChangeFails(c, std::string("clearcoat_") + what, [&](Material& m) { m.clearcoat = coat; });
 }
 
 // The gates see the specular layer: its weight 10 % less, or the index 1.5 (pbr's F0) in one renderer.
 TEST_F(ReferenceGltfLayerControls, SpecularLayerChangesFail) {
     const CoatCase c{false, false, "specular", 0.25f, 0.0f, {}, SpecularLayer{0.5f, glm::vec3(1.0f)}, 2.4f};
-    struct Control {
-        const char* what;
-        SpecularLayer layer;
-        float ior;
-    };
-    const Control controls[] = {{"weight_minus_10pct", {0.45f, glm::vec3(1.0f)}, 2.4f},
-                                {"pbrs_index", {0.5f, glm::vec3(1.0f)}, 1.5f}};
-    for (const Control& k : controls) {
-        const Scene a = makeCoatScene(c);
-        Scene b = a;
-        for (Sphere& s : b.spheres) s.material.specular = k.layer, s.material.ior = k.ior;
-        b.planes[0].material.specular = k.layer, b.planes[0].material.ior = k.ior;
-        CompareResult r = compareRenders(a, b, std::string("negative_specular_") + k.what);
-        EXPECT_FALSE(r.pass) << k.what << ": the changed layer passed the gates:\n" << compareSummary(r);
-    }
+    expectChangeFails(c, "specular_weight_minus_10pct", [](Material& m) { m.specular.factor = 0.45f; });
+    expectChangeFails(c, "specular_pbrs_index", [](Material& m) { m.ior = 1.5f; });
 }
 
 // The gates see the sheen: 10 % less of its colour, 10 % more of its roughness, or none at all in one renderer.
 TEST_F(ReferenceGltfLayerControls, SheenChangesFail) {
     const CoatCase c{false, false, "sheen", 0.7f, 0.0f, {}, {}, 1.5f, Sheen{glm::vec3(1.0f), 0.4f}};
-    struct Control {
-        const char* what;
-        Sheen sheen;
-    };
-    const Control controls[] = {{"colour_minus_10pct", {glm::vec3(0.9f), 0.4f}},
-                                {"roughness_plus_10pct", {glm::vec3(1.0f), 0.44f}},
-                                {"dropped", {glm::vec3(0.0f), 0.4f}}};
-    for (const Control& k : controls) {
-        const Scene a = makeCoatScene(c);
-        Scene b = a;
-        for (Sphere& s : b.spheres) s.material.sheen = k.sheen;
-        b.planes[0].material.sheen = k.sheen;
-        CompareResult r = compareRenders(a, b, std::string("negative_sheen_") + k.what);
-        EXPECT_FALSE(r.pass) << k.what << ": the changed sheen passed the gates:\n" << compareSummary(r);
-    }
+    for (const auto& [what, sheen] : {std::pair{"colour_minus_10pct", Sheen{glm::vec3(0.9f), 0.4f}},
+                                      {"roughness_plus_10pct", Sheen{glm::vec3(1.0f), 0.44f}},
+                                      {"dropped", Sheen{glm::vec3(0.0f), 0.4f}}})
+        expectChangeFails(c, std::string("sheen_") + what, [&](Material& m) { m.sheen = sheen; });
+}
+
+// The gates see the anisotropy: its direction turned by 0.1 rad, or none at all, in one renderer.
+TEST_F(ReferenceGltfLayerControls, AnisotropyChangesFail) {
+    const CoatCase c{false, false, "aniso", 0.35f, 1.0f, {}, {}, 1.5f, {}, Anisotropy{0.8f, 0.3f}};
+    expectChangeFails(c, "anisotropy_turned_0_1_rad", [](Material& m) { m.anisotropy.rotation = 0.4f; });
+    expectChangeFails(c, "anisotropy_dropped", [](Material& m) { m.anisotropy.strength = 0.0f; });
 }
 
 // Image-based light: the coat reflects the prefiltered sky at its own roughness in both renderers, with and
@@ -197,8 +194,8 @@ TEST_F(ReferenceGltfLayerControls, SheenChangesFail) {
 // the coat dropped, pbr's own F0, or the sheen dropped, in one renderer fails (negative controls).
 TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
     static const auto sky = loadPrefilteredHdr(test::sourcePath("assets/environments/sky.hdr"));
-    for (int variant = 0; variant < 4; ++variant) {
-        const bool light = variant == 1, layer = variant == 2, sheen = variant == 3;
+    for (int variant = 0; variant < 5; ++variant) {
+        const bool light = variant == 1, layer = variant == 2, sheen = variant == 3, aniso = variant == 4;
         Scene scene;
         scene.camera.position = {0.0f, 0.8f, 3.6f};
         scene.camera.target = {0.0f, 0.0f, 0.0f};
@@ -212,7 +209,13 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         Material m;
         m.baseColor = glm::vec3(0.5f, 0.02f, 0.01f);
         m.roughness = 0.45f;
-        m.clearcoat = Clearcoat{layer || sheen ? 0.0f : 1.0f, 0.05f};
+        m.clearcoat = Clearcoat{layer || sheen || aniso ? 0.0f : 1.0f, 0.05f};
+        if (aniso) {
+            m.baseColor = glm::vec3(0.9f, 0.9f, 0.92f);
+            m.metallic = 1.0f;
+            m.roughness = 0.3f;
+            m.anisotropy = Anisotropy{0.9f, 0.0f};
+        }
         if (sheen) {
             m.baseColor = glm::vec3(0.05f, 0.02f, 0.1f);
             m.roughness = 0.8f;
@@ -227,6 +230,7 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         if (light) scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, glm::vec3(2.0f)));
         const std::string name = layer   ? "specular_layer_sky"
                                  : sheen ? "sheen_sky"
+                                 : aniso ? "anisotropy_sky"
                                          : std::string("clearcoat_sky") + (light ? "_light" : "");
         CompareResult r = compareRenders(scene, scene, name);
         EXPECT_TRUE(r.pass) << name << "\n" << compareSummary(r);
@@ -235,6 +239,7 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         bare.spheres[0].material.specular = SpecularLayer{};
         bare.spheres[0].material.ior = 1.5f;
         bare.spheres[0].material.sheen = Sheen{};
+        bare.spheres[0].material.anisotropy = Anisotropy{};
         CompareResult control = compareRenders(scene, bare, "negative_" + name);
         EXPECT_FALSE(control.pass) << name << ": the coat dropped in one renderer passed:\n" << compareSummary(control);
     }
@@ -285,4 +290,32 @@ TEST_F(ReferenceGltfLayerControls, KhronosClearCoatTestMatchesAndShowsItsCoat) {
     CompareResult control =
         compareRenders(scene, bare, "negative_clearcoat_khronos_test", 360, 480, test::kShadowEdgeGates);
     EXPECT_FALSE(control.pass) << "the asset without its coat passed the gates:\n" << compareSummary(control);
+}
+
+// shadelab's own layer grids (tools/make_layer_gltf.py, in the spirit of Khronos's ClearCoatTest, SheenTest and
+// IORTestGrid): each loads with no warning, renders the same in both renderers under pbr, and shows its layer: the
+// grid with every layer stripped in one renderer fails the gates (negative control).
+TEST_F(ReferenceGltfLayerControls, LayerGridsMatchAndShowTheirLayers) {
+    for (const char* name : {"clearcoat_grid", "sheen_grid", "ior_grid", "specular_grid", "anisotropy_grid"}) {
+        static std::vector<std::string> warnings;
+        warnings.clear();
+        Scene scene = loadScene(test::sourcePath(std::string("assets/models/layers/") + name + ".gltf"),
+                                [](const std::string& w) { warnings.push_back(w); });
+        EXPECT_TRUE(warnings.empty()) << name << ": " << (warnings.empty() ? "" : warnings.front());
+        scene.model = ShadingModel::Pbr;
+        CompareResult r = compareRenders(scene, scene, std::string("grid_") + name, 320, 180);
+        EXPECT_TRUE(r.pass) << name << "\n" << compareSummary(r);
+        Scene bare = scene;
+        for (Mesh& m : bare.meshes)
+            for (MeshPart& p : m.parts) {
+                p.material.clearcoat = Clearcoat{};
+                p.material.sheen = Sheen{};
+                p.material.specular = SpecularLayer{};
+                p.material.ior = 1.5f;
+                p.material.anisotropy = Anisotropy{};
+            }
+        CompareResult control = compareRenders(scene, bare, std::string("negative_grid_") + name, 320, 180);
+        EXPECT_FALSE(control.pass) << name << ": the grid without its layers passed the gates:\n"
+                                   << compareSummary(control);
+    }
 }

@@ -6,6 +6,7 @@
 #include "gl_fixture.h"
 #include "image/encode.h"
 #include "raster/render_target.h"
+#include "scene/anisotropy.h"
 #include "shading/lighting.h"
 #include "shading/sheen_lut.h"
 #include "test_output.h"
@@ -438,7 +439,7 @@ constexpr int kCoatedPbr = 8;  // lighting_probe.frag's case for pbr under the c
 constexpr int kSpecularLayered = 7;  // lighting_probe.frag's case for pbr with glTF's specular layer
 
 // The specular layer sweep: pbr's roughness and metallic (0, 1 or between), a dielectric F0 from an index in
-// [1, 3] tinted by a colour in [0, 2] (clamped to 1), and a weight in [0, 1].
+// [1, 3] tinted by a colour in [0, 2] (clamped to 1), and a weight in [0, 1]; glTF's anisotropy in half the cases.
 std::vector<Case> makeSpecularLayerCases() {
     std::mt19937 rng(20261207);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -453,6 +454,8 @@ std::vector<Case> makeSpecularLayerCases() {
         glm::vec3 f0;
         for (int k = 0; k < 3; ++k) f0[k] = std::min(r * r * 2.0f * unit(rng), 1.0f);
         c.disney0 = glm::vec4(f0, unit(rng));
+        // glTF's anisotropy in half the cases: a strength and a turn of the direction (Anisotropy::packed).
+        if ((i / 6) % 2) c.disney1 = glm::vec4(Anisotropy{unit(rng), 6.3f * unit(rng) - 3.15f}.packed(), 0.0f);
         cases.push_back(c);
     }
     return cases;
@@ -460,7 +463,8 @@ std::vector<Case> makeSpecularLayerCases() {
 
 glm::vec3 cpuSpecularLayered(const Case& c, const glm::vec3& Il, const glm::vec3& baseColor) {
     return shading::shadeLightPbrSpecular(c.N, c.L, c.V, Il, shading::pbrDiffuseColor(baseColor, c.metallic), baseColor,
-                                          c.metallic, c.s, c.disney0, true, true, glm::vec3(1.0f));
+                                          c.metallic, c.s, c.disney0, glm::vec3(c.disney1), true, true,
+                                          glm::vec3(1.0f));
 }
 
 // The clear coat sweep: pbr's roughness and metallic, the coat's factor and roughness uniform in [0, 1] (the
@@ -579,8 +583,9 @@ const glm::vec3 kLayerIl(1.0f, 0.7f, 0.3f), kLayerBase(0.9f, 0.6f, 0.2f);
 
 }  // namespace
 
-// pbr with glTF's specular layer and ior: shadeLightPbrSpecular's GLSL and C++ agree to 1e-4 (relative above 1) over
-// 2,048 cases, and pbrSpecularF0 too; 10 % more F0, 10 % less weight and 10 % more roughness are noticed.
+// pbr with glTF's specular layer and ior, and its anisotropy: shadeLightPbrSpecular's GLSL and C++ agree to 1e-4
+// (relative above 1) over 2,048 cases, and pbrSpecularF0 too; 10 % more F0, 10 % less weight, 10 % more roughness
+// and the anisotropy's direction turned by 0.1 rad are noticed.
 TEST_F(ShaderUnitTest, GlslSpecularLayerEqualsCppOverSweep) {
     const std::vector<Case> cases = makeSpecularLayerCases();
     ASSERT_GE(cases.size(), 2048u);
@@ -590,7 +595,13 @@ TEST_F(ShaderUnitTest, GlslSpecularLayerEqualsCppOverSweep) {
         [](const Case& c) { return shading::pbrSpecularF0(kLayerBase, c.metallic, c.disney0).y; },
         {{"10% more F0", [](Case& c) { c.disney0 = glm::vec4(glm::vec3(c.disney0) * 1.1f, c.disney0.w); }},
          {"10% less weight", [](Case& c) { c.disney0.w *= 0.9f; }},
-         {"10% more roughness", [](Case& c) { c.s *= 1.1f; }}});
+         {"10% more roughness", [](Case& c) { c.s *= 1.1f; }},
+         {"anisotropy turned by 0.1 rad",
+          [](Case& c) {
+              const float r = std::atan2(c.disney1.z, c.disney1.y) + 0.1f;
+              if (c.disney1.x > 0.0f) c.disney1 = glm::vec4(Anisotropy{c.disney1.x, r}.packed(), 0.0f);
+          },
+          true}});
 }
 
 // pbr under glTF's clear coat: clearcoatLight's GLSL and C++ agree to 1e-4 (relative above 1) over 2,048 cases,

@@ -12,28 +12,30 @@ import numpy as np
 SLICES, STACKS, RADIUS = 64, 33, 0.45
 
 
-def sphere():
-    pos, nrm = [(0.0, RADIUS, 0.0)], [(0.0, 1.0, 0.0)]
-    for i in range(1, STACKS):
-        th = math.pi * i / STACKS
-        for j in range(SLICES):
-            ph = 2 * math.pi * j / SLICES
+def sphere(slices=SLICES, stacks=STACKS, radius=RADIUS):
+    """A UV sphere about the origin (tools/make_layer_gltf.py uses it too): positions, unit normals and triangle
+    indices, counter-clockwise seen from outside."""
+    pos, nrm = [(0.0, radius, 0.0)], [(0.0, 1.0, 0.0)]
+    for i in range(1, stacks):
+        th = math.pi * i / stacks
+        for j in range(slices):
+            ph = 2 * math.pi * j / slices
             n = (math.sin(th) * math.cos(ph), math.cos(th), math.sin(th) * math.sin(ph))
-            pos.append(tuple(RADIUS * c for c in n))
+            pos.append(tuple(radius * c for c in n))
             nrm.append(n)
-    pos.append((0.0, -RADIUS, 0.0))
+    pos.append((0.0, -radius, 0.0))
     nrm.append((0.0, -1.0, 0.0))
     south = len(pos) - 1
-    ring = lambda i, j: 1 + (i - 1) * SLICES + (j % SLICES)
+    ring = lambda i, j: 1 + (i - 1) * slices + (j % slices)
     idx = []
-    for j in range(SLICES):
+    for j in range(slices):
         idx += [0, ring(1, j + 1), ring(1, j)]
-    for i in range(1, STACKS - 1):
-        for j in range(SLICES):
+    for i in range(1, stacks - 1):
+        for j in range(slices):
             a, b, c, d = ring(i, j), ring(i, j + 1), ring(i + 1, j), ring(i + 1, j + 1)
             idx += [a, b, d, a, d, c]
-    for j in range(SLICES):
-        idx += [south, ring(STACKS - 1, j), ring(STACKS - 1, j + 1)]
+    for j in range(slices):
+        idx += [south, ring(stacks - 1, j), ring(stacks - 1, j + 1)]
     return np.array(pos, "<f4"), np.array(nrm, "<f4"), np.array(idx, "<u4")
 
 

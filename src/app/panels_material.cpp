@@ -130,6 +130,12 @@ void drawMaterialSection(PanelContext& ctx) {
         changed |= ImGui::SliderFloat("sheen roughness", &m.sheen.roughness, 0.0f, 1.0f, "%.2f");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("velvet, cloth, dust: a rim of light at grazing angles; the colour black turns it off");
+        // glTF's anisotropy: the highlight stretched along a direction turned from the tangent.
+        ImGui::TextDisabled("pbr: glTF anisotropy (KHR_materials_anisotropy)");
+        changed |= ImGui::SliderFloat("anisotropy", &m.anisotropy.strength, 0.0f, 1.0f, "%.2f");
+        changed |= ImGui::SliderAngle("aniso rotation", &m.anisotropy.rotation, -180.0f, 180.0f);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the direction the highlight stretches along, turned from the sphere's parallels");
     }
     if (changed) {
         m.s = objectMaterial(s.scene, s.selected).s;  // the slider above already applied its own change

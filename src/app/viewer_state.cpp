@@ -46,6 +46,8 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
     if (m.specular.color != before.specular.color) o.specular.color = m.specular.color;
     if (m.sheen.color != before.sheen.color) o.sheen.color = m.sheen.color;
     if (m.sheen.roughness != before.sheen.roughness) o.sheen.roughness = m.sheen.roughness;
+    if (m.anisotropy.strength != before.anisotropy.strength) o.anisotropy.strength = m.anisotropy.strength;
+    if (m.anisotropy.rotation != before.anisotropy.rotation) o.anisotropy.rotation = m.anisotropy.rotation;
     for (int i = 0; i < ClearcoatOverride::kCount; ++i) {
         const float Clearcoat::*field = kClearcoatFields[i].member;
         if (m.clearcoat.*field != before.clearcoat.*field) o.clearcoat.value[i] = m.clearcoat.*field;

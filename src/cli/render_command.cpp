@@ -19,6 +19,7 @@
 #include "raster/offscreen.h"
 #include "render/memory_budget.h"
 #include "scene/scene_load.h"
+#include "scene/scene_models.h"
 #include "trace/first_hit_passes.h"
 #include "trace/path/path_render.h"
 #include "trace/trace_image.h"
@@ -176,6 +177,11 @@ int render(const RenderOptions& o, std::string& doing) {
     if (o.camera) scene.camera = chooseCamera(scene, *o.camera, o.input);
     if (o.model) scene.model = *o.model;
     if (o.terms) scene.terms = *o.terms;
+    // A glTF file is a scene of its own under the lecture's phong: its layers would vanish without a word.
+    if (const std::string layers = layersNotShown(scene); !layers.empty())
+        (o.strict ? failOnWarning : printWarning)(
+            o.input + ": glTF's " + layers + (layers.find(',') == std::string::npos ? " shades" : " shade") +
+            " only under pbr, not under the model this render gives the objects that carry it (--model pbr shows it)");
     o.raster.applyTo(scene.raster);
     if (needRaster && scene.lights.size() > size_t(kMaxLights))
         throw InputError(o.input, "lights", "the rasterizer takes at most " + std::to_string(kMaxLights) + " lights");

@@ -47,7 +47,7 @@ int ColorProgramCache::materialMaps(const Material& m) {
 int ColorProgramCache::programBits(const Material& m, bool meshPart) const {
     const bool pbr = modelOf(m) == modelIndex(ShadingModel::Pbr);  // glTF's layers shade pbr alone
     return (meshPart ? materialMaps(m) : 0) | (pbr && m.clearcoat.factor > 0.0f ? kCoatBit : 0) |
-           (pbr && hasSpecularLayer(m.specular, m.ior) ? kSpecularLayerBit : 0) | (pbr && m.sheen.on() ? kSheenBit : 0);
+           (pbr && usesLayeredPbr(m) ? kSpecularLayerBit : 0) | (pbr && m.sheen.on() ? kSheenBit : 0);
 }
 
 const ColorPrograms& ColorProgramCache::get(const ShaderVariant& variant, int materialMaps) {

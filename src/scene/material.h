@@ -4,6 +4,7 @@
 // model's are given (docs/scene-format.md, "Materials under each model").
 #pragma once
 
+#include "scene/anisotropy.h"
 #include "scene/clearcoat.h"
 #include "scene/disney_params.h"
 #include "scene/shading_model.h"
@@ -39,6 +40,7 @@ struct Material {
     Clearcoat clearcoat;        // pbr: glTF's clear coat layer over the base (KHR_materials_clearcoat); none by default
     SpecularLayer specular;     // pbr: glTF's dielectric F0 tint and weight (KHR_materials_specular), with ior's F0
     Sheen sheen;                // pbr: glTF's sheen layer over the base (KHR_materials_sheen); none by default
+    Anisotropy anisotropy;      // pbr: glTF's anisotropic GGX lobe (KHR_materials_anisotropy); isotropic by default
     glm::vec3 emission{0.0f};   // emitted radiance, linear RGB, >= 0, from both sides: an area light under the
                                 // path tracer; the other renderers add it to the surface's colour (design.md §8)
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
@@ -163,6 +165,7 @@ struct MaterialOverride {
     ClearcoatOverride clearcoat;
     SpecularLayerOverride specular;
     SheenOverride sheen;
+    AnisotropyOverride anisotropy;
     // Linked fields whose values were derived when written (a Python document's "derived" list): read, but not
     // given, so that they follow the given fields again.
     uint8_t derived = 0;
@@ -207,7 +210,12 @@ struct MaterialOverride {
         clearcoat.applyTo(m.clearcoat);
         specular.applyTo(m.specular);
         sheen.applyTo(m.sheen);
+        anisotropy.applyTo(m.anisotropy);
     }
 };
+
+// Whether a pbr material is shaded by glTF's layered function (shadeLightPbrSpecular: Appendix B's dielectric and
+// metal mix) rather than pbr's own: its specular layer or index are off their defaults, or it is anisotropic.
+inline bool usesLayeredPbr(const Material& m) { return hasSpecularLayer(m.specular, m.ior) || m.anisotropy.on(); }
 
 }  // namespace shadelab

@@ -42,6 +42,15 @@ SheenOverride parseSheenOverride(const JsonNode& n) {
     return o;
 }
 
+AnisotropyOverride parseAnisotropyOverride(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"strength", "rotation"});
+    AnisotropyOverride o;
+    if (auto f = n.find("strength")) o.strength = f->inRange(0.0f, 1.0f, false, false);
+    if (auto f = n.find("rotation"))
+        o.rotation = f->inRange(-kMaxAnisotropyRotation, kMaxAnisotropyRotation, false, false);
+    return o;
+}
+
 MaterialOverride parseMaterialOverride(const JsonNode& n) {
     n.requireObject();
     MaterialOverride m;
@@ -61,12 +70,14 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("clearcoat")) m.clearcoat = parseClearcoatOverride(*f);
     if (auto f = n.find("specular")) m.specular = parseSpecularLayerOverride(*f);
     if (auto f = n.find("sheen")) m.sheen = parseSheenOverride(*f);
+    if (auto f = n.find("anisotropy")) m.anisotropy = parseAnisotropyOverride(*f);
     return m;
 }
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
-                                       "emission", "model", "disney", "clearcoat", "specular", "sheen", "derived"});
+                                       "emission", "model", "disney", "clearcoat", "specular", "sheen", "anisotropy",
+                                       "derived"});
     MaterialOverride o = parseMaterialOverride(n);
     // "derived": the fields listed were derived from the other model's when the document was written (Python's
     // documents list them): read, but not given, so that they follow the given fields again.

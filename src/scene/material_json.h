@@ -21,6 +21,8 @@ ClearcoatOverride parseClearcoatOverride(const JsonNode& n);
 SpecularLayerOverride parseSpecularLayerOverride(const JsonNode& n);
 // A material's "sheen" object: glTF's sheen layer, `color` (RGB, each in [0, 1]) and `roughness` in [0, 1].
 SheenOverride parseSheenOverride(const JsonNode& n);
+// A material's "anisotropy" object: glTF's anisotropy, `strength` in [0, 1] and `rotation` in radians.
+AnisotropyOverride parseAnisotropyOverride(const JsonNode& n);
 // The largest specularColor a scene file takes (glTF allows more than 1; F0 is clamped to 1 after the tint).
 inline constexpr float kMaxSpecularColor = 100.0f;
 // A material object of the file: its fields (unknown keys warned about) and its "derived" list.

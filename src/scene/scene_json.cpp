@@ -315,6 +315,14 @@ OJson sheenJson(const SheenOverride& o) {
     return j;
 }
 
+// glTF's anisotropy: the fields that are set.
+OJson anisotropyJson(const AnisotropyOverride& o) {
+    OJson j = OJson::object();
+    if (o.strength) j["strength"] = exact(*o.strength);
+    if (o.rotation) j["rotation"] = exact(*o.rotation);
+    return j;
+}
+
 // The given fields of `m` (a derived one is derived again on loading); `withDerived` writes the derived ones too,
 // listed under "derived", as Python's documents hold them.
 OJson materialJson(const Material& m, bool withDerived) {
@@ -348,6 +356,9 @@ OJson materialJson(const Material& m, bool withDerived) {
         j["specular"] = specularJson(SpecularLayerOverride{m.specular.factor, m.specular.color});
     // glTF's sheen where there is one (Python's documents always).
     if (withDerived || m.sheen != Sheen{}) j["sheen"] = sheenJson(SheenOverride{m.sheen.color, m.sheen.roughness});
+    // glTF's anisotropy where there is any (Python's documents always).
+    if (withDerived || m.anisotropy != Anisotropy{})
+        j["anisotropy"] = anisotropyJson(AnisotropyOverride{m.anisotropy.strength, m.anisotropy.rotation});
     if (withDerived && m.derived) {
         OJson names = OJson::array();
         for (const auto& entry : kMaterialFieldNames)
@@ -375,6 +386,7 @@ OJson overrideJson(const MaterialOverride& m) {
     if (!m.clearcoat.empty()) j["clearcoat"] = paramsJson(m.clearcoat);
     if (!m.specular.empty()) j["specular"] = specularJson(m.specular);
     if (!m.sheen.empty()) j["sheen"] = sheenJson(m.sheen);
+    if (!m.anisotropy.empty()) j["anisotropy"] = anisotropyJson(m.anisotropy);
     return j;
 }
 

@@ -8,6 +8,8 @@
 #include "util/input_error.h"
 
 #include <gtest/gtest.h>
+
+#include <cfloat>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -275,6 +277,46 @@ TEST(SceneJson, SheenReadsSavesOnlyWhereThereIsOneAndRoundTrips) {
                            "material": {"sheen": {"colour": [1, 1, 1]}}}]})");
     EXPECT_EQ(joined(gWarnings),
               "a.json: objects[0].material.sheen: unknown field 'colour' (ignored); did you mean 'color'?\n");
+}
+
+// glTF's anisotropy: read (a strength, a negative turn), saved only where there is one, read back exactly, also as a
+// mesh's override; its packing holds the turn's cosine and sine.
+TEST(SceneJson, AnisotropyReadsRoundTripsAndPacks) {
+    Scene s = parse(R"({"model": "pbr", "objects": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"anisotropy": {"strength": 0.75, "rotation": -1.25}}},
+        {"type": "sphere", "center": [3, 1, 0], "radius": 1},
+        {"type": "mesh", "source": "torus.gltf", "material": {"anisotropy": {"strength": 0.5}}}]})");
+    EXPECT_EQ(s.spheres[0].material.anisotropy, (Anisotropy{0.75f, -1.25f}));
+    EXPECT_EQ(s.spheres[1].material.anisotropy, Anisotropy{});
+    EXPECT_FALSE(s.spheres[1].material.anisotropy.on());
+    EXPECT_FALSE(usesLayeredPbr(s.spheres[1].material));
+    EXPECT_TRUE(usesLayeredPbr(s.spheres[0].material));
+    EXPECT_EQ(s.meshes[0].material.anisotropy.strength, 0.5f);
+    EXPECT_FALSE(s.meshes[0].material.anisotropy.rotation);
+    expectRoundTrip(s);
+    const std::string saved = sceneToJson(s);
+    size_t count = 0;
+    for (size_t at = saved.find("\"anisotropy\""); at != std::string::npos; at = saved.find("\"anisotropy\"", at + 1))
+        ++count;
+    EXPECT_EQ(count, 2u) << saved;  // the anisotropy and the override; none where there is none
+    const glm::vec3 p = s.spheres[0].material.anisotropy.packed();
+    EXPECT_EQ(p.x, 0.75f);
+    EXPECT_NEAR(p.y, std::cos(-1.25f), 1e-7f);
+    EXPECT_NEAR(p.z, std::sin(-1.25f), 1e-7f);
+}
+
+// The largest float is saved as its shortest text, 3.4028235e+38, a double just above FLT_MAX that rounds to it:
+// it loads again (found by the scene fuzzer); a number past the rounding boundary is still refused (control).
+TEST(SceneJson, TheLargestFloatSavedLoadsAgain) {
+    const auto mesh = [](const char* scale) {
+        return std::string(R"({"objects": [{"type": "mesh", "source": "m.glb", "transform": {"scale": )") + scale +
+               "}}]}";
+    };
+    Scene s = parse(mesh("3.4028234e38"));
+    EXPECT_EQ(s.meshes[0].transform[0][0], FLT_MAX);
+    expectRoundTrip(s);
+    EXPECT_EQ(parse(mesh("3.4028235e38")).meshes[0].transform[0][0], FLT_MAX);
+    EXPECT_THROW(parse(mesh("3.4028236e38")), InputError);
 }
 
 TEST(SceneJson, UnknownFieldsWarnWithAHintAndStillLoad) {

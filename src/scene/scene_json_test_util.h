@@ -53,6 +53,8 @@ struct Diff {
         v(p + ".specular.color", a.specular.color, b.specular.color);
         v(p + ".sheen.color", a.sheen.color, b.sheen.color),
             f(p + ".sheen.roughness", a.sheen.roughness, b.sheen.roughness);
+        f(p + ".anisotropy.strength", a.anisotropy.strength, b.anisotropy.strength);
+        f(p + ".anisotropy.rotation", a.anisotropy.rotation, b.anisotropy.rotation);
         eq(p + ".model", a.model, b.model);
     }
     void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
@@ -70,6 +72,8 @@ struct Diff {
         opt(p + ".specular.color", a.specular.color, b.specular.color, vv);
         opt(p + ".sheen.color", a.sheen.color, b.sheen.color, vv);
         opt(p + ".sheen.roughness", a.sheen.roughness, b.sheen.roughness, ff);
+        opt(p + ".anisotropy.strength", a.anisotropy.strength, b.anisotropy.strength, ff);
+        opt(p + ".anisotropy.rotation", a.anisotropy.rotation, b.anisotropy.rotation, ff);
     }
 };
 

@@ -5,6 +5,8 @@
 
 #include "scene/scene.h"
 
+#include <string>
+
 namespace shadelab {
 
 // Whether any sphere, plane or mesh part of `scene` has a material for which `pred(material, model)` holds, the
@@ -36,6 +38,27 @@ inline bool usesSheen(const Scene& scene) {
 // take the environment's light.
 inline bool usesPhysicallyBased(const Scene& scene) {
     return usesModel(scene, ShadingModel::Pbr) || usesModel(scene, ShadingModel::Disney);
+}
+
+// The glTF layers that objects of `scene` carry but that their model does not shade (only pbr shades them): "clear
+// coat", "specular layer", "sheen", "anisotropy", those present, joined by ", "; empty when every layer shows. An index
+// alone is not counted: it also sets the tracers' refraction under every model.
+inline std::string layersNotShown(const Scene& scene) {
+    bool coat = false, specular = false, sheen = false, anisotropy = false;
+    anyMaterial(scene, [&](const Material& m, ShadingModel own) {
+        if (own != ShadingModel::Pbr) {
+            coat |= m.clearcoat.factor > 0.0f;
+            specular |= m.specular != SpecularLayer{};
+            sheen |= m.sheen.on();
+            anisotropy |= m.anisotropy.on();
+        }
+        return false;
+    });
+    std::string names;
+    for (const auto& [on, name] :
+         {std::pair{coat, "clear coat"}, {specular, "specular layer"}, {sheen, "sheen"}, {anisotropy, "anisotropy"}})
+        if (on) names += std::string(names.empty() ? "" : ", ") + name;
+    return names;
 }
 
 }  // namespace shadelab

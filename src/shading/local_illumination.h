@@ -29,10 +29,11 @@ struct SurfaceParams {
     // geometry's or the coat's normal map's (clearcoatLight).
     vec2 coat{0.0f};
     vec3 coatN{0.0f};
-    // pbr only: glTF's specular layer and index (SpecularLayer::packed), shaded by shadeLightPbrSpecular with
-    // baseColor and metallic above when `layered`; ms then holds pbrSpecularF0.
+    // pbr only: glTF's specular layer and index (SpecularLayer::packed) and its anisotropy, shaded by
+    // shadeLightPbrSpecular with baseColor and metallic above when `layered`; ms then holds pbrSpecularF0.
     bool layered = false;
     vec4 specLayer{0.0f};
+    vec3 aniso{0.0f};  // glTF's anisotropy (Anisotropy::packed), read with the layer; strength 0: isotropic
     // pbr only: glTF's sheen (Sheen::packed) when `sheenTable` (its albedo table, sheen_lut.h) is set, and its
     // albedo at the view direction, read once per surface point.
     vec4 sheen{0.0f};
@@ -48,7 +49,7 @@ inline bool hasPbrLayers(const SurfaceParams& m) { return m.layered || m.coat.x 
 inline vec3 shadeLightPbrLayers(vec3 N, const LightSample& l, vec3 V, const SurfaceParams& m, bool diffuseOn,
                                 bool specularOn) {
     vec3 base = m.layered ? shadeLightPbrSpecular(N, l.L, V, l.Il, m.md, m.baseColor, m.metallic, m.s, m.specLayer,
-                                                  diffuseOn, specularOn, m.specScale)
+                                                  m.aniso, diffuseOn, specularOn, m.specScale)
                           : shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, SL_MODEL_PBR, diffuseOn, specularOn,
                                              m.specScale);
     if (m.sheenTable) {

@@ -185,7 +185,7 @@ glm::vec3 WhittedIntegrator::environmentSpecularWeight(const Surface& s, glm::ve
         : s.mapped ? s.ms
                    : shading::pbrF0(m.baseColor, m.metallic) + m.metallic * m.baseColor * (s.tex - 1.0f);
     const glm::vec2 dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), s.roughness);
-    if (s.model == shading::SL_MODEL_PBR && hasSpecularLayer(m.specular, m.ior)) {  // glTF's specular layer
+    if (s.model == shading::SL_MODEL_PBR && usesLayeredPbr(m)) {  // glTF's specular layer or anisotropy
         const glm::vec4 layer = m.specular.packed(m.ior);
         const glm::vec3 layeredF0 = shading::pbrSpecularF0(s.baseColor, s.metallic, layer);
         const glm::vec3 Ed = layer.w * shading::specularDFG(glm::vec3(layer), dfg);
@@ -252,9 +252,13 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     const bool environmentLit = env_.lightsPbr() && shading::physicallyBased(s.model);
     glm::vec3 environment(0.0f);
     if (environmentLit && sc.terms.ambient) {
-        const glm::vec3 R = shading::IblLookup{}.iblReflect(s.N, V);
-        const glm::vec3 pre =
-            reflected ? env_.prefilteredWithMirror(R, s.roughness, *reflected) : env_.prefiltered(R, s.roughness);
+        shading::IblLookup ibl;
+        // Anisotropic: the reflection about the bent normal, of the prefiltered environment alone (as the rasterizer).
+        const bool bent = params.layered && params.aniso.x > 0.0f;
+        const glm::vec3 R = bent ? ibl.iblReflect(shading::anisotropicBentNormal(s.N, V, params.aniso, s.roughness), V)
+                                 : ibl.iblReflect(s.N, V);
+        const glm::vec3 pre = reflected && !bent ? env_.prefilteredWithMirror(R, s.roughness, *reflected)
+                                                 : env_.prefiltered(R, s.roughness);
         environment =
             params.layered
                 ? shading::shadeEnvironmentPbrSpecular(
@@ -264,8 +268,9 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
                 : shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg, sc.energyCompensation,
                                             sc.terms.diffuse, sc.terms.specular);
         if (params.sheenTable)  // the sheen reflects the prefiltered environment at its own roughness
-            environment = shading::sheenEnvironment(environment, env_.prefiltered(R, params.sheen.w), params.sheen,
-                                                    params.sheenEV, sc.terms.diffuse);
+            environment =
+                shading::sheenEnvironment(environment, env_.prefiltered(ibl.iblReflect(s.N, V), params.sheen.w),
+                                          params.sheen, params.sheenEV, sc.terms.diffuse);
         environment = s.ao * environment;
         if (params.coat.x > 0.0f) environment = coatedEnvironment(environment, params, V);
     }

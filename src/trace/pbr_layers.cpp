@@ -11,11 +11,12 @@ void setPbrLayers(shading::SurfaceParams& p, const Surface& s, const glm::vec3& 
         p.coat = s.coat;
         p.coatN = s.coatN;
     }
-    if (hasSpecularLayer(m.specular, m.ior)) {
+    if (usesLayeredPbr(m)) {
         // shadeLightPbrSpecular reads the base colour and metallic here (textured, the checker's, a texel's); its
         // F0 for the environment and the energy compensation is pbrSpecularF0's.
         p.layered = true;
         p.specLayer = m.specular.packed(m.ior);
+        p.aniso = m.anisotropy.packed();
         p.baseColor = s.baseColor;
         p.metallic = s.metallic;
         p.ms = shading::pbrSpecularF0(s.baseColor, s.metallic, p.specLayer);

@@ -11,10 +11,14 @@
 
 namespace shadelab {
 
-// x as a float, or nothing when that float would not be finite (NaN, ±inf, or beyond ±FLT_MAX).
+// x as a float, or nothing when that float would not be finite (NaN, ±inf, or rounding beyond ±FLT_MAX). A double
+// just above FLT_MAX, below FLT_MAX + half its ulp (2^103), rounds to FLT_MAX: the shortest text of FLT_MAX that
+// shadelab saves, 3.4028235e+38, reads back as such a double, and must load again.
 inline std::optional<float> finiteFloat(double x) {
-    if (!(std::fabs(x) <= double(FLT_MAX))) return std::nullopt;
-    return float(x);
+    const double a = std::fabs(x);
+    if (a <= double(FLT_MAX)) return float(x);
+    if (a < double(FLT_MAX) + std::ldexp(1.0, 103)) return x > 0.0 ? FLT_MAX : -FLT_MAX;
+    return std::nullopt;
 }
 
 // x clamped to [lo, hi] (in double, before narrowing), or `fallback` when x is NaN or infinite.

@@ -167,6 +167,27 @@ def test_the_sheen_edits_in_place_under_pbr(pbr_default):
     assert pbr_default.objects[0].material.sheen.roughness == 0.3  # nothing lost
 
 
+def test_the_anisotropy_edits_in_place_under_pbr(pbr_default):
+    material = pbr_default.objects[0].material
+    assert material.anisotropy.strength == 0.0 and material.anisotropy.rotation == 0.0  # isotropic by default
+    before = shadelab.render(pbr_default, (160, 90), coverage=True)
+    material.anisotropy.strength = 0.8
+    stretched = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    material.anisotropy.rotation = 1.2
+    turned = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    cov = np.asarray(before.coverage)
+    pixels = np.asarray(before)
+    assert not np.array_equal(pixels[cov == 1], stretched[cov == 1])
+    assert not np.array_equal(stretched[cov == 1], turned[cov == 1])
+    assert np.array_equal(pixels[cov == 2], turned[cov == 2])  # control: another sphere is untouched
+    saved = pbr_default.to_dict()["objects"][0]["material"]["anisotropy"]
+    assert saved == {"strength": 0.8, "rotation": 1.2} or (abs(saved["strength"] - 0.8) < 1e-6
+                                                           and abs(saved["rotation"] - 1.2) < 1e-6)
+    with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.anisotropy\.strength: must be in \[0, 1\]"):
+        material.anisotropy.strength = 2
+    assert pbr_default.objects[0].material.anisotropy.strength == pytest.approx(0.8)  # nothing lost
+
+
 def test_the_specular_layer_and_ior_edit_in_place_under_pbr(pbr_default):
     material = pbr_default.objects[0].material
     assert material.specular.factor == 1.0 and material.specular.color == (1.0, 1.0, 1.0)  # glTF's defaults

@@ -404,19 +404,24 @@ TEST(GltfImport, AMaterialExtensionNotShadedIsSaidOnceAndTheClearcoatIsRead) {
     EXPECT_FALSE(anyWarningContains(plain, "is not shaded"));
 }
 
+// A quad whose one primitive takes material 0 of `materials` (a glTF "materials" array, JSON), written as `name`.
+std::string quadWithMaterial(const std::string& name, const std::string& materials) {
+    const std::string path = writeGltf(name, quad(), R"([{"mesh":0}])", "[0]", R"(,"materials":)" + materials);
+    std::ifstream in(path);
+    nlohmann::json j = nlohmann::json::parse(in);
+    in.close();
+    j["meshes"][0]["primitives"][0]["material"] = 0;
+    std::ofstream(path) << j.dump();
+    return path;
+}
+
 // KHR_materials_specular and KHR_materials_ior are read into the material (pbr's F0 tint and weight, the index);
 // their textures are said to be not shaded, once each; a material without them keeps the defaults (control).
 TEST(GltfImport, SpecularAndIorAreRead) {
-    const std::string path =
-        writeGltf("specular.gltf", quad(), R"([{"mesh":0}])", "[0]",
-                  R"(,"materials":[{"extensions":{"KHR_materials_ior":{"ior":1.33},"KHR_materials_specular":)"
-                  R"({"specularFactor":0.5,"specularColorFactor":[2,1,0.5],"specularTexture":{"index":0}}}},{}])");
-    {  // the quad's primitive takes material 0
-        std::ifstream in(path);
-        nlohmann::json j = nlohmann::json::parse(in);
-        j["meshes"][0]["primitives"][0]["material"] = 0;
-        std::ofstream(path) << j.dump();
-    }
+    const std::string path = quadWithMaterial(
+        "specular.gltf", R"([{"extensions":{"KHR_materials_ior":{"ior":1.33},"KHR_materials_specular":)"
+                         R"({"specularFactor":0.5,"specularColorFactor":[2,1,0.5],)"
+                         R"("specularTexture":{"index":0}}}},{}])");
     const GltfImport g = importGltf(path);
     ASSERT_EQ(g.parts.size(), 1u);
     const Material& m = g.parts[0].material;
@@ -433,15 +438,8 @@ TEST(GltfImport, SpecularAndIorAreRead) {
 // not shaded, once each; a material without it has no sheen (control).
 TEST(GltfImport, SheenIsRead) {
     const std::string path =
-        writeGltf("sheen.gltf", quad(), R"([{"mesh":0}])", "[0]",
-                  R"(,"materials":[{"extensions":{"KHR_materials_sheen":{"sheenColorFactor":[1,0.5,0.25],)"
-                  R"("sheenRoughnessFactor":0.375,"sheenColorTexture":{"index":0}}}},{}])");
-    {  // the quad's primitive takes material 0
-        std::ifstream in(path);
-        nlohmann::json j = nlohmann::json::parse(in);
-        j["meshes"][0]["primitives"][0]["material"] = 0;
-        std::ofstream(path) << j.dump();
-    }
+        quadWithMaterial("sheen.gltf", R"([{"extensions":{"KHR_materials_sheen":{"sheenColorFactor":[1,0.5,0.25],)"
+                                       R"("sheenRoughnessFactor":0.375,"sheenColorTexture":{"index":0}}}},{}])");
     const GltfImport g = importGltf(path);
     ASSERT_EQ(g.parts.size(), 1u);
     const Material& m = g.parts[0].material;
@@ -451,6 +449,18 @@ TEST(GltfImport, SheenIsRead) {
     const GltfImport plain = importGltf(writeGltf("plain.gltf", quad(), R"([{"mesh":0}])"));
     EXPECT_EQ(plain.parts[0].material.sheen, Sheen{});
     EXPECT_FALSE(plain.parts[0].material.sheen.on());
+}
+
+// KHR_materials_anisotropy is read into the material (its strength and turn); its texture is said to be not shaded.
+TEST(GltfImport, AnisotropyIsRead) {
+    const std::string path =
+        quadWithMaterial("aniso.gltf", R"([{"extensions":{"KHR_materials_anisotropy":{"anisotropyStrength":0.625,)"
+                                       R"("anisotropyRotation":1.5,"anisotropyTexture":{"index":0}}}}])");
+    const GltfImport g = importGltf(path);
+    ASSERT_EQ(g.parts.size(), 1u);
+    EXPECT_EQ(g.parts[0].material.anisotropy, (Anisotropy{0.625f, 1.5f}));
+    EXPECT_FALSE(anyWarningContains(g, "KHR_materials_anisotropy is not shaded"));
+    EXPECT_TRUE(anyWarningContains(g, "KHR_materials_anisotropy.anisotropyTexture: not shaded yet"));
 }
 
 // Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed.

@@ -1,6 +1,6 @@
 // glTF materials → shadelab's Phong materials (docs/gltf-import.md): metallic-roughness by the documented
 // mapping, KHR_materials_pbrSpecularGlossiness, KHR_materials_ior, KHR_materials_clearcoat,
-// KHR_materials_specular and KHR_materials_sheen when present.
+// KHR_materials_specular, KHR_materials_sheen and KHR_materials_anisotropy when present.
 #include "scene/gltf/gltf_materials.h"
 
 #include "scene/gltf/gltf_import.h"
@@ -94,6 +94,19 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
                 warnings.push_back(place + ".extensions.KHR_materials_sheen." + key +
                                    ": not shaded yet; the factors alone are");
     }
+    // KHR_materials_anisotropy: the lobe's stretch and its direction's turn from the tangent (pbr). Its texture is
+    // not read yet.
+    auto aniso = gm.extensions.find("KHR_materials_anisotropy");
+    if (aniso != gm.extensions.end()) {
+        const tinygltf::Value& v = aniso->second;
+        m.anisotropy.strength = finiteClamp(numberOr(v, "anisotropyStrength", 0.0), 0.0f, 1.0f, 0.0f);
+        m.anisotropy.rotation =
+            finiteClamp(numberOr(v, "anisotropyRotation", 0.0), -kMaxAnisotropyRotation, kMaxAnisotropyRotation, 0.0f);
+        if (v.IsObject() && v.Has("anisotropyTexture"))
+            warnings.push_back(place +
+                               ".extensions.KHR_materials_anisotropy.anisotropyTexture: not shaded yet; the "
+                               "factors alone are");
+    }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);
@@ -135,7 +148,8 @@ std::vector<std::string> unshadedMaterialExtensions(const tinygltf::Model& model
                                                   "KHR_materials_ior",
                                                   "KHR_materials_clearcoat",
                                                   "KHR_materials_specular",
-                                                  "KHR_materials_sheen"};
+                                                  "KHR_materials_sheen",
+                                                  "KHR_materials_anisotropy"};
     std::map<std::string, size_t> users;  // extension → materials that use it, in name order
     for (const tinygltf::Material& gm : model.materials)
         for (const auto& [name, value] : gm.extensions)

@@ -1,5 +1,6 @@
 // χ² test of PathBsdf's mixture under glTF's clear coat (pbr's diffuse, its GGX lobe and the coat's GGX lobe
-// around the coat's own normal), and with glTF's specular layer (its picking probabilities), through sample() and
+// around the coat's own normal), with glTF's specular layer (its picking probabilities) and with its anisotropy (the
+// GGX lobe stretched along a turned direction, sampled by its visible normals in that frame), through sample() and
 // pdf(), as disney_sampling_test.cpp does for disney; its negative control claims the density of a coat rougher than
 // the one sampled. A glossy coat's lobe is a few thousandths of cos θ wide: each bin's expected count is integrated on
 // a 96² grid.
@@ -30,6 +31,7 @@ struct CoatCase {
     glm::vec2 coat;
     glm::vec3 coatN;        // the coat's normal (the base's is +z)
     glm::vec4 layer{0.0f};  // glTF's specular layer (f0d, weight); none here when the weight is 0
+    glm::vec3 aniso{0.0f};  // glTF's anisotropy (Anisotropy::packed), with the layer (the layered function)
 };
 
 // The BSDF on the plane z = 0 seen from V under pbr with the case's coat.
@@ -46,6 +48,7 @@ PathBsdf makeCoated(Material& m, Surface& s, const glm::vec3& V, const CoatCase&
     if (c.layer.w > 0.0f) {
         p.layered = true;
         p.specLayer = c.layer;
+        p.aniso = c.aniso;
         p.baseColor = m.baseColor;
         p.metallic = c.metallic;
         p.ms = shading::pbrSpecularF0(m.baseColor, c.metallic, c.layer);
@@ -84,6 +87,8 @@ TEST(ClearcoatSampling, TheMixtureMatchesItsPdf) {
         {{0.0f, 0.5f, {1.0f, 0.15f}, kTilted}, false},                         // a coat normal map's tilt
         {{0.3f, 0.4f, {0.0f, 0.0f}, kUp, {0.15f, 0.1f, 0.05f, 0.6f}}, true},   // glTF's specular layer alone
         {{0.0f, 0.4f, {1.0f, 0.3f}, kUp, {0.02f, 0.02f, 0.02f, 0.5f}}, true},  // the layer under a coat
+        {{1.0f, 0.4f, {0.0f, 0.0f}, kUp, {0.04f, 0.04f, 0.04f, 1.0f}, Anisotropy{0.8f, 0.4f}.packed()}, true},
+        {{0.0f, 0.3f, {0.0f, 0.0f}, kUp, {0.04f, 0.04f, 0.04f, 1.0f}, Anisotropy{1.0f, -1.2f}.packed()}, true},
     };
     for (const Seen& k : cases)
         for (glm::vec3 V : {kOblique, kUp}) {
@@ -93,6 +98,14 @@ TEST(ClearcoatSampling, TheMixtureMatchesItsPdf) {
             EXPECT_GT(r.pValue, kAlpha) << "V.z " << V.z << ", metallic " << c.metallic << ", coat " << c.coat.x
                                         << " rough " << c.coat.y << ": " << r.summary();
         }
+}
+
+// glTF's anisotropy: the stretched lobe's density claimed with its direction turned by 0.3 rad is noticed.
+TEST(ClearcoatSampling, NegativeControlTurnedAnisotropyPdfFails) {
+    const CoatCase sampled{1.0f, 0.4f, {0.0f, 0.0f}, kUp, {0.04f, 0.04f, 0.04f, 1.0f}, Anisotropy{0.8f, 0.4f}.packed()};
+    const CoatCase turned{1.0f, 0.4f, {0.0f, 0.0f}, kUp, {0.04f, 0.04f, 0.04f, 1.0f}, Anisotropy{0.8f, 0.7f}.packed()};
+    const Chi2Result r = testCoated(sampled, kOblique, &turned);
+    EXPECT_LT(r.pValue, kAlpha) << r.summary();
 }
 
 TEST(ClearcoatSampling, NegativeControlWrongCoatPdfFails) {

@@ -35,15 +35,15 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
     if (model_ == shading::SL_MODEL_DISNEY) {
         const glm::vec3 X = shading::anisotropyTangent(N_);
         const glm::vec2 a = shading::disneyAnisoAlpha(s_, params.disney0.w);
-        disney_ = DisneyLobes{params.baseColor,
-                              params.metallic,
-                              params.disney0,
-                              params.disney1,
-                              X,
-                              glm::cross(N_, X),
-                              a.x,
-                              a.y,
+        disney_ = DisneyLobes{params.baseColor, params.metallic, params.disney0, params.disney1,
                               shading::disneyClearcoatAlpha(params.disney1.w)};
+        stretched_ = Stretched{X, glm::cross(N_, X), a.x, a.y};
+    }
+    if (model_ == shading::SL_MODEL_PBR && params.layered && params.aniso.x > 0.0f) {
+        // glTF's anisotropy: GGX stretched to mix(α, 1, strength²) along its direction, α across it.
+        const glm::vec3 T = shading::anisotropyDirection(N_, params.aniso);
+        const float a = shading::pbrAlpha(s_);
+        stretched_ = Stretched{T, glm::cross(N_, T), glm::mix(a, 1.0f, params.aniso.x * params.aniso.x), a};
     }
 
     // Estimated albedos of each lobe pick the lobe: a sample goes where the light it carries is.
@@ -174,8 +174,9 @@ float PathBsdf::specularPdf(const glm::vec3& wi) const {
     float VoH;
     if (!halfVector(wi, H, VoH)) return 0.0f;
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return powerCosinePdf(glm::dot(N_, H), s_) / (4.0f * VoH);
-    if (model_ == shading::SL_MODEL_DISNEY)
-        return ggxAnisoVisibleNormalPdf(toTangentFrame(V_), toTangentFrame(H), disney_->ax, disney_->ay) / (4.0f * VoH);
+    if (stretched_)  // disney's lobe, or pbr's under glTF's anisotropy
+        return ggxAnisoVisibleNormalPdf(toTangentFrame(V_), toTangentFrame(H), stretched_->ax, stretched_->ay) /
+               (4.0f * VoH);
     return ggxVisibleNormalPdf(frame_.toLocal(V_), frame_.toLocal(H), alpha_) / (4.0f * VoH);
 }
 
@@ -222,11 +223,11 @@ float PathBsdf::sheenPdf(const glm::vec3& wi) const {
 glm::vec3 PathBsdf::sampleSpecular(glm::vec2 u) const {
     if (model_ == shading::SL_MODEL_PHONG) return Frame(reflectAbout(V_, N_)).toWorld(samplePowerCosine(u, s_));
     if (model_ == shading::SL_MODEL_BLINN_PHONG) return reflectAbout(V_, frame_.toWorld(samplePowerCosine(u, s_)));
-    if (model_ == shading::SL_MODEL_DISNEY) {
+    if (stretched_) {
         const glm::vec3 v = toTangentFrame(V_);
         if (v.z <= 0.0f) return glm::vec3(0.0f);
-        const glm::vec3 h = sampleGgxAnisoVisibleNormal(v, disney_->ax, disney_->ay, u);
-        return reflectAbout(V_, h.x * disney_->tangentX + h.y * disney_->tangentY + h.z * N_);
+        const glm::vec3 h = sampleGgxAnisoVisibleNormal(v, stretched_->ax, stretched_->ay, u);
+        return reflectAbout(V_, h.x * stretched_->tangentX + h.y * stretched_->tangentY + h.z * N_);
     }
     const glm::vec3 v = frame_.toLocal(V_);
     if (v.z <= 0.0f) return glm::vec3(0.0f);

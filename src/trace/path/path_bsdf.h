@@ -63,7 +63,7 @@ private:
     [[gnu::noinline]] glm::vec3 evalCosLayered(const glm::vec3& wi) const;
     glm::vec3 sampleCoat(glm::vec2 u) const;
     glm::vec3 toTangentFrame(const glm::vec3& v) const {
-        return {glm::dot(v, disney_->tangentX), glm::dot(v, disney_->tangentY), glm::dot(v, N_)};
+        return {glm::dot(v, stretched_->tangentX), glm::dot(v, stretched_->tangentY), glm::dot(v, N_)};
     }
     glm::vec3 sampleSpecular(glm::vec2 u) const;
     void pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const;
@@ -74,17 +74,22 @@ private:
     float s_;               // exponent, or roughness under pbr
     float alpha_ = 0.0f;    // pbr: GGX α
     glm::vec3 specScale_{1.0f};
-    // disney only (made by the constructor under that model): its inputs to shadeLightDisney, the anisotropic
-    // lobe's tangents (anisotropyTangent and N × it), its widths and the clearcoat's GTR1 width. Absent under the
-    // other models, which then pay nothing for it.
+    // disney only (made by the constructor under that model): its inputs to shadeLightDisney and the clearcoat's GTR1
+    // width. Absent under the other models, which then pay nothing for it.
     struct DisneyLobes {
         glm::vec3 baseColor;
         float metallic;
         glm::vec4 params0, params1;
-        glm::vec3 tangentX, tangentY;
-        float ax, ay, coatAlpha;
+        float coatAlpha;
     };
     std::optional<DisneyLobes> disney_;
+    // An anisotropic GGX lobe (disney's, and pbr's under glTF's anisotropy): its tangents (X and N × X) and its widths
+    // along them, sampled by their visible normals in that frame. Absent for an isotropic pbr lobe.
+    struct Stretched {
+        glm::vec3 tangentX, tangentY;
+        float ax, ay;
+    };
+    std::optional<Stretched> stretched_;
     // pbr under glTF's clear coat only: its (factor, roughness), the frame around its unit normal and its GGX α.
     struct Clearcoat {
         glm::vec2 coat;
