@@ -1,33 +1,37 @@
 #!/usr/bin/env bash
-# Layer benchmark: Khronos's ClearCoatTest.gltf (Debian's assimp-testmodels) rendered headless at 1920x1080 under
-# pbr, with its KHR_materials_clearcoat shaded, against the same asset with every material extension stripped
-# (a copy of the asset with the .gltf edited): whole process, PAIRS interleaved pairs (default 15,
-# the order alternating) after one warm-up each. Prints the medians of wall and CPU time (user + system) and the
-# ratios. Target: coated <= 1.3x stripped.
+# Layer benchmark: a glTF asset with material layers rendered headless at 1920x1080 under pbr, its layers shaded,
+# against the same asset with every material extension stripped (a copy of the asset with the .gltf edited): whole
+# process, PAIRS interleaved pairs (default 15, the order alternating) after one warm-up each. Prints the medians of
+# wall and CPU time (user + system) and the ratios. Usage: bench/render_layers.sh [ASSET.gltf]; the default is
+# Khronos's ClearCoatTest.gltf (Debian's assimp-testmodels); shadelab's grids are in assets/models/layers/.
+# Target: layered <= 1.3x stripped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-dir=/usr/share/assimp/models/glTF2/ClearCoat-glTF
-[[ -f "$dir/ClearCoatTest.gltf" ]] || { echo "render_clearcoat.sh: $dir missing (apt-get install assimp-testmodels)" >&2; exit 1; }
+asset=$(realpath "${1:-/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf}")
+dir=$(dirname "$asset")
+name=$(basename "$asset")
+[[ -f "$asset" ]] || { echo "render_layers.sh: $asset missing (apt-get install assimp-testmodels)" >&2; exit 1; }
 [[ -x build/shadelab ]] || scripts/build.sh
-[[ -x /usr/bin/time ]] || { echo "render_clearcoat.sh: /usr/bin/time missing (apt-get install time)" >&2; exit 1; }
+[[ -x /usr/bin/time ]] || { echo "render_layers.sh: /usr/bin/time missing (apt-get install time)" >&2; exit 1; }
 pairs=${PAIRS:-15}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 mkdir "$out/stripped"
 cp "$dir"/* "$out/stripped/"
-rm "$out/stripped/ClearCoatTest.gltf"
-/usr/bin/python3 - "$dir/ClearCoatTest.gltf" "$out/stripped/ClearCoatTest.gltf" <<'PY'
+rm "$out/stripped/$name"
+/usr/bin/python3 - "$asset" "$out/stripped/$name" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 for m in d.get("materials", []):
     m.pop("extensions", None)
-d.pop("extensionsUsed", None)
+d["extensionsUsed"] = [e for e in d.get("extensionsUsed", []) if not e.startswith("KHR_materials_")]
 json.dump(d, open(sys.argv[2], "w"))
 PY
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "asset: $asset"
 run() {  # coated|stripped -> appends "wall cpu" (seconds) to $out/$1.txt
-  local model="$dir/ClearCoatTest.gltf"
-  [[ $1 == stripped ]] && model="$out/stripped/ClearCoatTest.gltf"
+  local model="$asset"
+  [[ $1 == stripped ]] && model="$out/stripped/$name"
   /usr/bin/time -f "%e %U %S" -o "$out/t" build/shadelab render "$model" -o "$out/$1.png" --size 1920x1080 \
     --model pbr
   awk '{printf "%s %.3f\n", $1, $2 + $3}' "$out/t" >> "$out/$1.txt"
