@@ -3,14 +3,24 @@
 // the microfacet functions it builds on (F_Schlick, specularGGX, specularDFG, D_GTR2Aniso, anisotropyTangent).
 
 // glTF's KHR_materials_anisotropy (docs/lighting.md, "glTF's anisotropy"): GGX stretched along a direction T in the
-// tangent plane, αt = mix(α, 1, s²) along T and αb = α across it, s the strength. aniso = (s, cos r, sin r),
-// Anisotropy::packed, r the direction's turn from the tangent X = anisotropyTangent(N) toward Y = N × X.
+// tangent plane, αt = mix(α, 1, s²) along T and αb = α across it, s the strength. Packed per material as
+// (s, cos r, sin r) (Anisotropy::packed), r the direction's turn from the tangent X toward the bitangent Y; per point
+// as (T, s), T from anisotropyDirection.
 
-// T = X·cos r + Y·sin r. N need not be unit.
-SL_FN vec3 anisotropyDirection(vec3 N, vec3 aniso) {
+// T = X·cos r + Y·sin r: X the mesh's tangent (xyz, w the bitangent's sign) made orthogonal to N, Y = w·(N × X); where
+// there is none (a zero tangent: spheres, planes, meshes without texture coordinates), X = anisotropyTangent(N) and
+// Y = N × X. N need not be unit.
+SL_FN vec3 anisotropyDirection(vec3 N, vec4 tangent, vec3 aniso) {
     vec3 n = normalize(N);
+    vec3 t = vec3(tangent.x, tangent.y, tangent.z);
+    vec3 inPlane = t - dot(n, t) * n;
     vec3 X = anisotropyTangent(n);
-    return aniso.y * X + aniso.z * cross(n, X);
+    float handed = 1.0f;
+    if (dot(inPlane, inPlane) > 1e-12f) {
+        X = normalize(inPlane);
+        handed = tangent.w < 0.0f ? -1.0f : 1.0f;
+    }
+    return aniso.y * X + (aniso.z * handed) * cross(n, X);
 }
 
 // D·V of the stretched lobe (F = 1): D_GTR2Aniso at (αt, αb) and the height-correlated anisotropic Smith visibility
@@ -31,13 +41,13 @@ SL_FN float anisotropicGGX(vec3 N, vec3 L, vec3 V, vec3 T, float roughness, floa
 
 // The normal the environment's reflection is looked up about under anisotropy (Filament's bent normal, as the
 // Khronos Sample Viewer uses it): N bent toward the normal facing V across T, the more the stronger and smoother,
-// bend = (1 − s·(1 − roughness))⁴ of N kept. N, V need not be unit.
-SL_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, vec3 aniso, float roughness) {
+// bend = (1 − s·(1 − roughness))⁴ of N kept; aniso = (T, s). N, V need not be unit.
+SL_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, vec4 aniso, float roughness) {
     vec3 n = normalize(N);
     vec3 v = normalize(V);
-    vec3 T = anisotropyDirection(n, aniso);
+    vec3 T = vec3(aniso.x, aniso.y, aniso.z);
     vec3 across = cross(cross(T, v), T);
-    float bend = 1.0f - aniso.x * (1.0f - roughness);
+    float bend = 1.0f - aniso.w * (1.0f - roughness);
     float keep = bend * bend * bend * bend;
     return normalize(mix(across, n, keep));
 }
@@ -47,10 +57,10 @@ SL_FN vec3 anisotropicBentNormal(vec3 N, vec3 V, vec3 aniso, float roughness) {
 // dielectric's Fresnel Fd = w·F_Schlick(f0d, V·H), f0d the index's F0 tinted by the specular colour and w the
 // specular factor, over its diffuse, which keeps 1 − max3(Fd) (the extension's fresnel_mix); the metal's Fresnel
 // F_Schlick(baseColor, V·H). layer = (f0d, w) (SpecularLayer::packed), md the diffuse colour baseColor·(1 −
-// metallic), specScale as shadeLightScaled's; aniso = glTF's anisotropy (its strength 0: the isotropic lobe).
+// metallic), specScale as shadeLightScaled's; aniso = glTF's anisotropy (T, s) (s = 0: the isotropic lobe).
 // N, L, V need not be unit.
 SL_FN vec3 shadeLightPbrSpecular(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 baseColor, float metallic,
-                                 float roughness, vec4 layer, vec3 aniso, bool diffuseOn, bool specularOn,
+                                 float roughness, vec4 layer, vec4 aniso, bool diffuseOn, bool specularOn,
                                  vec3 specScale) {
     N = normalize(N);
     L = normalize(L);
@@ -63,7 +73,7 @@ SL_FN vec3 shadeLightPbrSpecular(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 
         vec3 Fd = layer.w * F_Schlick(vec3(layer.x, layer.y, layer.z), VoH);
         vec3 F = mix(Fd, F_Schlick(baseColor, VoH), metallic);
         // F_Schlick(1, ·) is 1: D·V alone, isotropic or stretched along T.
-        vec3 DV = aniso.x > 0.0f ? vec3(anisotropicGGX(N, L, V, anisotropyDirection(N, aniso), roughness, aniso.x))
+        vec3 DV = aniso.w > 0.0f ? vec3(anisotropicGGX(N, L, V, vec3(aniso.x, aniso.y, aniso.z), roughness, aniso.w))
                                  : specularGGX(N, L, V, vec3(1.0f), roughness);
         I = I * (1.0f - max(Fd.x, max(Fd.y, Fd.z))) + (SL_PI * NoL) * DV * F * specScale;
     }

@@ -39,7 +39,8 @@ void main() {
     if (model == 7) {
         // u_md is the base colour; w: the layered F0's green (pbrSpecularF0).
         vec4 layer = texelFetch(t_disney0, p, 0);
-        vec3 aniso = texelFetch(t_disney1, p, 0).xyz;
+        vec3 turn = texelFetch(t_disney1, p, 0).xyz;  // Anisotropy::packed
+        vec4 aniso = vec4(anisotropyDirection(N, vec4(0.0f), turn), turn.x);
         vec3 I = shadeLightPbrSpecular(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), u_md, params.z, params.x, layer, aniso,
                                        true, true, vec3(1.0f));
         o_result = vec4(I, pbrSpecularF0(u_md, params.z, layer).y);

@@ -84,6 +84,7 @@ void main() {
 #endif
     vec3 N = gl_FrontFacing ? v2f_normal : -v2f_normal;
     vec3 V = u_eye.xyz - v2f_position;
+    s_tangent = v2f_tangent;  // anisotropy's direction turns from it (surface.glsl)
 #ifdef SL_MATERIAL_MAPS
     float alpha = u_alpha.x;
 #if (SL_MATERIAL_MAPS & 1) != 0

@@ -19,6 +19,8 @@ vec3 s_ma = vec3(0.0f);
 vec3 s_ms = vec3(0.0f);
 float s_s = 0.0f;
 float s_ao = 1.0f;
+// The mesh's interpolated tangent (xyz, w the bitangent's sign; mesh.frag sets it), zero elsewhere: anisotropy's X.
+vec4 s_tangent = vec4(0.0f);
 uniform float u_s;
 vec3 surfaceMs() { return s_mapped ? s_ms : u_ms + u_msTex * (s_tex - 1.0f); }
 vec3 surfaceMa() { return s_mapped ? s_ma : u_ma * s_tex; }
@@ -37,6 +39,7 @@ float surfaceMetallic() { return s_mapped ? s_metallic : u_metallic; }
 #define SL_LAYERED 1
 uniform vec4 u_specLayer;
 uniform vec3 u_aniso;  // glTF's anisotropy (Anisotropy::packed): (strength, cos, sin) of its direction's turn
+vec4 s_aniso = vec4(0.0f);  // this fragment's (T, strength), set by shadeSurface (gltf_layers.glsl)
 #else
 #define SL_LAYERED 0
 #endif
@@ -56,7 +59,7 @@ vec3 shadeOneLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 md, vec3 base, vec3 spe
     return shadeLightDisney(N, L, V, Il, base, surfaceMetallic(), surfaceS(), u_disney0, u_disney1, SL_DIFFUSE,
                             SL_SPECULAR, specScale);
 #elif SL_LAYERED
-    return shadeLightPbrSpecular(N, L, V, Il, md, base, surfaceMetallic(), surfaceS(), u_specLayer, u_aniso,
+    return shadeLightPbrSpecular(N, L, V, Il, md, base, surfaceMetallic(), surfaceS(), u_specLayer, s_aniso,
                                  SL_DIFFUSE, SL_SPECULAR, specScale);
 #else
     return shadeLightScaled(N, L, V, Il, md, surfaceMs(), surfaceS(), SL_MODEL, SL_DIFFUSE, SL_SPECULAR, specScale);
@@ -124,7 +127,7 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec3 base, vec2 dfg) {
 #if SL_IBL == 2
 #if SL_LAYERED
     // Anisotropic: the reflection about the bent normal (gltf_layers.glsl, anisotropicBentNormal).
-    vec3 R = u_aniso.x > 0.0f ? iblReflect(anisotropicBentNormal(N, V, u_aniso, surfaceS()), V) : iblReflect(N, V);
+    vec3 R = s_aniso.w > 0.0f ? iblReflect(anisotropicBentNormal(N, V, s_aniso, surfaceS()), V) : iblReflect(N, V);
 #else
     vec3 R = iblReflect(N, V);
 #endif
@@ -199,6 +202,9 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
 #endif
 #if SL_SHEENED
     s_sheenEV = sheenAlbedo(SL_SHEEN_SIZE, sheenCos(N, V), u_sheen.w);
+#endif
+#if SL_LAYERED
+    s_aniso = vec4(anisotropyDirection(N, s_tangent, u_aniso), u_aniso.x);
 #endif
 #if SL_IBL
     vec3 I = vec3(0.0f);

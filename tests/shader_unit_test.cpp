@@ -462,9 +462,10 @@ std::vector<Case> makeSpecularLayerCases() {
 }
 
 glm::vec3 cpuSpecularLayered(const Case& c, const glm::vec3& Il, const glm::vec3& baseColor) {
-    return shading::shadeLightPbrSpecular(c.N, c.L, c.V, Il, shading::pbrDiffuseColor(baseColor, c.metallic), baseColor,
-                                          c.metallic, c.s, c.disney0, glm::vec3(c.disney1), true, true,
-                                          glm::vec3(1.0f));
+    return shading::shadeLightPbrSpecular(
+        c.N, c.L, c.V, Il, shading::pbrDiffuseColor(baseColor, c.metallic), baseColor, c.metallic, c.s, c.disney0,
+        glm::vec4(shading::anisotropyDirection(c.N, glm::vec4(0.0f), glm::vec3(c.disney1)), c.disney1.x), true, true,
+        glm::vec3(1.0f));
 }
 
 // The clear coat sweep: pbr's roughness and metallic, the coat's factor and roughness uniform in [0, 1] (the

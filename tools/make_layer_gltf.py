@@ -28,15 +28,16 @@ SLICES, STACKS, RADIUS, SPACING = 24, 13, 0.4, 1.0
 
 
 def sphere():
-    """The grid's UV sphere (make_sphere_grid_glb.py's, smaller), with 16-bit indices."""
-    pos, nrm, idx = uv_sphere(SLICES, STACKS, RADIUS)
-    return pos, nrm, idx.astype("<u2")
+    """The grid's UV sphere (make_sphere_grid_glb.py's, smaller, with texture coordinates for anisotropy's
+    tangents), with 16-bit indices."""
+    pos, nrm, idx, uv = uv_sphere(SLICES, STACKS, RADIUS, uvs=True)
+    return pos, nrm, idx.astype("<u2"), uv
 
 
 def grid(title, rows, columns, material):
     """The document for a grid: `material(row, column)` gives each sphere's glTF material (its name included)."""
-    pos, nrm, idx = sphere()
-    blob = pos.tobytes() + nrm.tobytes() + idx.tobytes()
+    pos, nrm, idx, uv = sphere()
+    blob = pos.tobytes() + nrm.tobytes() + uv.tobytes() + idx.tobytes()
     extensions = set()
     materials, meshes, nodes = [], [], []
     for r in range(len(rows)):
@@ -45,7 +46,8 @@ def grid(title, rows, columns, material):
             extensions.update(m.get("extensions", {}).keys())
             materials.append(m)
             meshes.append({"name": m["name"], "primitives": [
-                {"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": len(materials) - 1}]})
+                {"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3,
+                 "material": len(materials) - 1}]})
             x = (c - 0.5 * (len(columns) - 1)) * SPACING
             y = (0.5 * (len(rows) - 1) - r) * SPACING
             nodes.append({"name": m["name"], "mesh": len(meshes) - 1, "translation": [x, y, 0.0]})
@@ -73,13 +75,16 @@ def grid(title, rows, columns, material):
         "bufferViews": [
             {"buffer": 0, "byteOffset": 0, "byteLength": pos.nbytes, "target": 34962},
             {"buffer": 0, "byteOffset": pos.nbytes, "byteLength": nrm.nbytes, "target": 34962},
-            {"buffer": 0, "byteOffset": pos.nbytes + nrm.nbytes, "byteLength": idx.nbytes, "target": 34963},
+            {"buffer": 0, "byteOffset": pos.nbytes + nrm.nbytes, "byteLength": uv.nbytes, "target": 34962},
+            {"buffer": 0, "byteOffset": pos.nbytes + nrm.nbytes + uv.nbytes, "byteLength": idx.nbytes,
+             "target": 34963},
         ],
         "accessors": [
             {"bufferView": 0, "componentType": 5126, "count": len(pos), "type": "VEC3",
              "min": [-RADIUS, -RADIUS, -RADIUS], "max": [RADIUS, RADIUS, RADIUS]},
             {"bufferView": 1, "componentType": 5126, "count": len(nrm), "type": "VEC3"},
-            {"bufferView": 2, "componentType": 5123, "count": len(idx), "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5126, "count": len(uv), "type": "VEC2"},
+            {"bufferView": 3, "componentType": 5123, "count": len(idx), "type": "SCALAR"},
         ],
     }
     return doc

@@ -12,21 +12,26 @@ import numpy as np
 SLICES, STACKS, RADIUS = 64, 33, 0.45
 
 
-def sphere(slices=SLICES, stacks=STACKS, radius=RADIUS):
+def sphere(slices=SLICES, stacks=STACKS, radius=RADIUS, uvs=False):
     """A UV sphere about the origin (tools/make_layer_gltf.py uses it too): positions, unit normals and triangle
-    indices, counter-clockwise seen from outside."""
-    pos, nrm = [(0.0, radius, 0.0)], [(0.0, 1.0, 0.0)]
+    indices, counter-clockwise seen from outside; with `uvs`, texture coordinates too (u = φ/2π around, v = θ/π from
+    the north pole), each ring then closed by a seam vertex of its own at u = 1, so that tangents made from them
+    run along the parallels everywhere."""
+    ring_size = slices + 1 if uvs else slices
+    pos, nrm, uv = [(0.0, radius, 0.0)], [(0.0, 1.0, 0.0)], [(0.5, 0.0)]
     for i in range(1, stacks):
         th = math.pi * i / stacks
-        for j in range(slices):
+        for j in range(ring_size):
             ph = 2 * math.pi * j / slices
             n = (math.sin(th) * math.cos(ph), math.cos(th), math.sin(th) * math.sin(ph))
             pos.append(tuple(radius * c for c in n))
             nrm.append(n)
+            uv.append((j / slices, i / stacks))
     pos.append((0.0, -radius, 0.0))
     nrm.append((0.0, -1.0, 0.0))
+    uv.append((0.5, 1.0))
     south = len(pos) - 1
-    ring = lambda i, j: 1 + (i - 1) * slices + (j % slices)
+    ring = (lambda i, j: 1 + (i - 1) * ring_size + j) if uvs else (lambda i, j: 1 + (i - 1) * slices + (j % slices))
     idx = []
     for j in range(slices):
         idx += [0, ring(1, j + 1), ring(1, j)]
@@ -36,7 +41,8 @@ def sphere(slices=SLICES, stacks=STACKS, radius=RADIUS):
             idx += [a, b, d, a, d, c]
     for j in range(slices):
         idx += [south, ring(stacks - 1, j), ring(stacks - 1, j + 1)]
-    return np.array(pos, "<f4"), np.array(nrm, "<f4"), np.array(idx, "<u4")
+    out = (np.array(pos, "<f4"), np.array(nrm, "<f4"), np.array(idx, "<u4"))
+    return out + (np.array(uv, "<f4"),) if uvs else out
 
 
 def main():

@@ -33,7 +33,7 @@ struct SurfaceParams {
     // shadeLightPbrSpecular with baseColor and metallic above when `layered`; ms then holds pbrSpecularF0.
     bool layered = false;
     vec4 specLayer{0.0f};
-    vec3 aniso{0.0f};  // glTF's anisotropy (Anisotropy::packed), read with the layer; strength 0: isotropic
+    vec4 aniso{0.0f};  // glTF's anisotropy here, (T, strength) (anisotropyDirection); strength 0: isotropic
     // pbr only: glTF's sheen (Sheen::packed) when `sheenTable` (its albedo table, sheen_lut.h) is set, and its
     // albedo at the view direction, read once per surface point.
     vec4 sheen{0.0f};

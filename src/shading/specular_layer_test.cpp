@@ -35,7 +35,7 @@ TEST(SpecularLayer, PbrsOwnLayerIsPbrForDielectricsAndMetals) {
         const float metallic = i % 2 ? 1.0f : 0.0f, roughness = unit(rng);
         const vec3 md = pbrDiffuseColor(base, metallic);
         const vec3 layered = shadeLightPbrSpecular(N, L, V, vec3(1.0f), md, base, metallic, roughness, kPbrLayer,
-                                                   vec3(0.0f), true, true, vec3(1.0f));
+                                                   vec4(0.0f), true, true, vec3(1.0f));
         const vec3 pbr =
             shadeLight(N, L, V, vec3(1.0f), md, pbrF0(base, metallic), roughness, SL_MODEL_PBR, true, true);
         worst = std::max(worst, relative(layered, pbr));
@@ -45,7 +45,7 @@ TEST(SpecularLayer, PbrsOwnLayerIsPbrForDielectricsAndMetals) {
     // Negative control: another F0 is not pbr.
     const vec3 N(0.0f, 0.0f, 1.0f), L = normalize(vec3(0.3f, 0.0f, 1.0f)), V = normalize(vec3(-0.3f, 0.0f, 1.0f));
     const vec3 other = shadeLightPbrSpecular(N, L, V, vec3(1.0f), vec3(0.5f), vec3(0.5f), 0.0f, 0.3f,
-                                             vec4(0.1f, 0.1f, 0.1f, 1.0f), vec3(0.0f), true, true, vec3(1.0f));
+                                             vec4(0.1f, 0.1f, 0.1f, 1.0f), vec4(0.0f), true, true, vec3(1.0f));
     EXPECT_GT(relative(other, shadeLight(N, L, V, vec3(1.0f), vec3(0.5f), vec3(0.04f), 0.3f, SL_MODEL_PBR, true, true)),
               1e-3f);
 }
@@ -56,9 +56,9 @@ TEST(SpecularLayer, WeightZeroHasNoSpecularAndAFullDiffuse) {
         const vec3 N = randomVector(rng), L = randomVector(rng), V = randomVector(rng);
         const vec4 none(0.04f, 0.04f, 0.04f, 0.0f);
         const vec3 all = shadeLightPbrSpecular(N, L, V, vec3(1.0f), vec3(0.6f), vec3(0.6f), 0.0f, 0.4f, none,
-                                               vec3(0.0f), true, true, vec3(1.0f));
+                                               vec4(0.0f), true, true, vec3(1.0f));
         const vec3 diffuse = shadeLightPbrSpecular(N, L, V, vec3(1.0f), vec3(0.6f), vec3(0.6f), 0.0f, 0.4f, none,
-                                                   vec3(0.0f), true, false, vec3(1.0f));
+                                                   vec4(0.0f), true, false, vec3(1.0f));
         EXPECT_EQ(all, diffuse) << i;
     }
 }
@@ -72,7 +72,7 @@ TEST(SpecularLayer, HeadOnTheDielectricReflectsItsF0) {
             const float r = (ior - 1.0f) / (ior + 1.0f), f0 = r * r;
             const vec4 layer(f0, f0, f0, w);
             const vec3 spec = shadeLightPbrSpecular(N, N, N, vec3(1.0f), vec3(0.0f), vec3(0.0f), 0.0f, 0.3f, layer,
-                                                    vec3(0.0f), false, true, vec3(1.0f));
+                                                    vec4(0.0f), false, true, vec3(1.0f));
             const vec3 lobe = SL_PI * specularGGX(N, N, N, vec3(1.0f), 0.3f);  // D·V·π, F = 1
             EXPECT_NEAR(spec.x / lobe.x, w * f0, 1e-6f) << "ior " << ior << ", weight " << w;
             if (ior != 1.5f) {
@@ -87,9 +87,9 @@ TEST(SpecularLayer, TheDiffuseKeepsOneMinusTheLargestFresnel) {
     const vec3 N(0.0f, 0.0f, 1.0f), L = normalize(vec3(0.5f, 0.0f, 1.0f)), V = normalize(vec3(-0.2f, 0.3f, 1.0f));
     const vec4 tinted(0.2f, 0.05f, 0.01f, 0.8f);
     const vec3 md(0.5f);
-    const vec3 both = shadeLightPbrSpecular(N, L, V, vec3(1.0f), md, vec3(0.5f), 0.0f, 0.4f, tinted, vec3(0.0f), true,
+    const vec3 both = shadeLightPbrSpecular(N, L, V, vec3(1.0f), md, vec3(0.5f), 0.0f, 0.4f, tinted, vec4(0.0f), true,
                                             true, vec3(1.0f));
-    const vec3 spec = shadeLightPbrSpecular(N, L, V, vec3(1.0f), md, vec3(0.5f), 0.0f, 0.4f, tinted, vec3(0.0f), false,
+    const vec3 spec = shadeLightPbrSpecular(N, L, V, vec3(1.0f), md, vec3(0.5f), 0.0f, 0.4f, tinted, vec4(0.0f), false,
                                             true, vec3(1.0f));
     const vec3 diffuse = both - spec;
     EXPECT_NEAR(diffuse.x, diffuse.y, 1e-6f);
@@ -113,29 +113,38 @@ TEST(Anisotropy, StrengthZeroIsTheIsotropicLobeAndTheLobeStretchesAlongItsDirect
         if (dot(N, L) < 0.05f) L = -L;
         if (dot(N, L) < 0.05f || dot(N, V) < 0.05f) continue;
         const float roughness = 0.1f + 0.9f * unit(rng), r = 6.0f * unit(rng);
-        const vec3 off(0.0f, std::cos(r), std::sin(r)), on(0.7f, std::cos(r), std::sin(r));
+        const vec4 off(anisotropyDirection(N, vec4(0.0f), vec3(0.0f, std::cos(r), std::sin(r))), 0.0f);
+        const vec3 on = anisotropyDirection(N, vec4(0.0f), vec3(0.7f, std::cos(r), std::sin(r)));
         const vec3 iso = shadeLightPbrSpecular(N, L, V, vec3(1.0f), vec3(0.3f), vec3(0.3f), 0.2f, roughness, kPbrLayer,
-                                               vec3(0.0f), true, true, vec3(1.0f));
+                                               vec4(0.0f), true, true, vec3(1.0f));
         EXPECT_EQ(shadeLightPbrSpecular(N, L, V, vec3(1.0f), vec3(0.3f), vec3(0.3f), 0.2f, roughness, kPbrLayer, off,
                                         true, true, vec3(1.0f)),
                   iso);
-        const float stretched = anisotropicGGX(N, L, V, anisotropyDirection(N, off), roughness, 0.0f);
+        const float stretched = anisotropicGGX(N, L, V, vec3(off), roughness, 0.0f);
         const float ggx = specularGGX(N, L, V, vec3(1.0f), roughness).x;
         EXPECT_NEAR(stretched, ggx, 1e-5f * std::max(1.0f, ggx)) << "roughness " << roughness;
         const vec3 halfTurn(0.7f, std::cos(r + SL_PI), std::sin(r + SL_PI));
-        const float a = anisotropicGGX(N, L, V, anisotropyDirection(N, on), roughness, 0.7f);
-        const float b = anisotropicGGX(N, L, V, anisotropyDirection(N, halfTurn), roughness, 0.7f);
+        const float a = anisotropicGGX(N, L, V, on, roughness, 0.7f);
+        const float b = anisotropicGGX(N, L, V, anisotropyDirection(N, vec4(0.0f), halfTurn), roughness, 0.7f);
         EXPECT_NEAR(a, b, 1e-4f * std::max(1.0f, a));
     }
     // Head-on view, the light 30° off the mirror direction along T and then across it: the lobe reaches further
     // along T (αt = mix(α, 1, s²) > α).
     const vec3 N(0.0f, 0.0f, 1.0f), V = N;
     const vec3 aniso(0.8f, 1.0f, 0.0f), turned(0.8f, 0.0f, 1.0f);  // turns of 0 and π/2
-    const vec3 T = anisotropyDirection(N, aniso), B = cross(N, T);
+    const vec3 T = anisotropyDirection(N, vec4(0.0f), aniso), B = cross(N, T);
     const float t = std::sin(0.52f), c = std::cos(0.52f);
     const vec3 alongT = c * N + t * T, acrossT = c * N + t * B;
     EXPECT_GT(anisotropicGGX(N, alongT, V, T, 0.3f, 0.8f), 2.0f * anisotropicGGX(N, acrossT, V, T, 0.3f, 0.8f));
-    const vec3 T2 = anisotropyDirection(N, turned);
+    const vec3 T2 = anisotropyDirection(N, vec4(0.0f), turned);
     EXPECT_GT(anisotropicGGX(N, acrossT, V, T2, 0.3f, 0.8f), 2.0f * anisotropicGGX(N, alongT, V, T2, 0.3f, 0.8f));
     EXPECT_LT(anisotropicGGX(N, acrossT, V, T, 0.3f, 0.8f), anisotropicGGX(N, alongT, V, T, 0.3f, 0.8f));
+    // A mesh's tangent sets X (made orthogonal to N), its w the bitangent's side: a quarter-turn goes toward
+    // w·(N × X); a zero tangent falls back to anisotropyTangent(N).
+    const vec4 meshTangent(0.0f, 1.0f, 0.3f, -1.0f);
+    const vec3 X = anisotropyDirection(N, meshTangent, vec3(1.0f, 1.0f, 0.0f));
+    EXPECT_NEAR(length(X - vec3(0.0f, 1.0f, 0.0f)), 0.0f, 1e-6f);
+    const vec3 Y = anisotropyDirection(N, meshTangent, vec3(1.0f, 0.0f, 1.0f));
+    EXPECT_NEAR(length(Y - vec3(1.0f, 0.0f, 0.0f)), 0.0f, 1e-6f);  // −(N × X) = −(−x) = +x
+    EXPECT_EQ(anisotropyDirection(N, vec4(0.0f), vec3(1.0f, 1.0f, 0.0f)), anisotropyTangent(N));
 }

@@ -254,7 +254,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     if (environmentLit && sc.terms.ambient) {
         shading::IblLookup ibl;
         // Anisotropic: the reflection about the bent normal, of the prefiltered environment alone (as the rasterizer).
-        const bool bent = params.layered && params.aniso.x > 0.0f;
+        const bool bent = params.layered && params.aniso.w > 0.0f;
         const glm::vec3 R = bent ? ibl.iblReflect(shading::anisotropicBentNormal(s.N, V, params.aniso, s.roughness), V)
                                  : ibl.iblReflect(s.N, V);
         const glm::vec3 pre = reflected && !bent ? env_.prefilteredWithMirror(R, s.roughness, *reflected)

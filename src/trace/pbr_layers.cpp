@@ -16,7 +16,7 @@ void setPbrLayers(shading::SurfaceParams& p, const Surface& s, const glm::vec3& 
         // F0 for the environment and the energy compensation is pbrSpecularF0's.
         p.layered = true;
         p.specLayer = m.specular.packed(m.ior);
-        p.aniso = m.anisotropy.packed();
+        p.aniso = glm::vec4(shading::anisotropyDirection(s.N, s.tangent, m.anisotropy.packed()), m.anisotropy.strength);
         p.baseColor = s.baseColor;
         p.metallic = s.metallic;
         p.ms = shading::pbrSpecularF0(s.baseColor, s.metallic, p.specLayer);

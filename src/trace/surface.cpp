@@ -169,6 +169,7 @@ Surface SurfaceSetup::at(const Ray& ray, const Hit& hit, int depth) const {
                        hit.b2 * g.tangents[g.indices[i + 2]];
             };
             s.coatN = s.N;  // the coat follows the geometry, not the base's normal map
+            if (m.anisotropy.on()) s.tangent = tangent();
             if (m.normalTexture) {
                 const glm::vec3 n = shading::mapNormal(N, tangent(), mapTexel(ray, hit, depth, m.normalTexture),
                                                        m.normalTexture.strength);

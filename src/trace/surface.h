@@ -39,6 +39,9 @@ struct Surface {
     // the geometry's (the interpolated one, not the base's normal map), or its own normal map's.
     glm::vec2 coat{0.0f};
     glm::vec3 coatN{0.0f};
+    // A mesh's interpolated tangent here (xyz, w the bitangent's sign) for an anisotropic material; zero elsewhere
+    // (anisotropyDirection then takes the tangent from the normal).
+    glm::vec4 tangent{0.0f};
 };
 
 // How a primary ray's unnormalised direction D = forward + x·right + y·up changes per pixel step of the

@@ -344,12 +344,13 @@ private:
                                  std::to_string(materials_.size()) + " materials)");
         MeshPart part;
         part.material = prim.material >= 0 ? materials_[size_t(prim.material)] : defaultMaterial_;
-        // A normal map (the base's, or the clear coat's) needs tangents: the file's, or generated from its
-        // coordinate set (mesh_tangents.h).
+        // A normal map (the base's, or the clear coat's) needs tangents, and so does anisotropy (its direction turns
+        // from the tangent): the file's, or generated from the map's coordinate set, TEXCOORD_0 for anisotropy
+        // (mesh_tangents.h).
         const TextureBinding& nt =
             part.material.normalTexture ? part.material.normalTexture : part.material.clearcoatNormalTexture;
-        if (nt && geo.tangents.empty()) {
-            const std::vector<glm::vec2>& uvs = nt.texCoord == 1 ? geo.texcoords1 : geo.texcoords0;
+        if ((nt || part.material.anisotropy.on()) && geo.tangents.empty()) {
+            const std::vector<glm::vec2>& uvs = nt && nt.texCoord == 1 ? geo.texcoords1 : geo.texcoords0;
             if (uvs.size() == geo.positions.size())
                 geo.tangents = generateTangents(geo.positions, geo.normals, uvs, geo.indices);
         }

@@ -461,6 +461,25 @@ TEST(GltfImport, AnisotropyIsRead) {
     EXPECT_EQ(g.parts[0].material.anisotropy, (Anisotropy{0.625f, 1.5f}));
     EXPECT_FALSE(anyWarningContains(g, "KHR_materials_anisotropy is not shaded"));
     EXPECT_TRUE(anyWarningContains(g, "KHR_materials_anisotropy.anisotropyTexture: not shaded yet"));
+    // Its direction turns from the tangent: generated from TEXCOORD_0 for the grid's anisotropic spheres; the
+    // clear coat grid's spheres, with no normal map and no anisotropy, get none (control).
+    const auto tangentsOf = [](const char* name, int& anisotropic, int& withTangents) {
+        const GltfImport imported = importGltf(std::string(SHADELAB_SOURCE_DIR) + "/assets/models/layers/" + name);
+        for (const MeshPart& p : imported.parts) {
+            const bool has = p.geometry->tangents.size() == p.geometry->positions.size();
+            if (p.material.anisotropy.on()) {
+                ++anisotropic;
+                EXPECT_TRUE(has) << name << ": an anisotropic part without tangents";
+            }
+            withTangents += has;
+        }
+    };
+    int anisotropic = 0, withTangents = 0;
+    tangentsOf("anisotropy_grid.gltf", anisotropic, withTangents);
+    EXPECT_EQ(anisotropic, 12);
+    int none = 0, coatTangents = 0;
+    tangentsOf("clearcoat_grid.gltf", none, coatTangents);
+    EXPECT_EQ(coatTangents, 0);
 }
 
 // Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed.

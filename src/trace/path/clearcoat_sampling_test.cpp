@@ -48,7 +48,7 @@ PathBsdf makeCoated(Material& m, Surface& s, const glm::vec3& V, const CoatCase&
     if (c.layer.w > 0.0f) {
         p.layered = true;
         p.specLayer = c.layer;
-        p.aniso = c.aniso;
+        p.aniso = glm::vec4(shading::anisotropyDirection(s.N, glm::vec4(0.0f), c.aniso), c.aniso.x);
         p.baseColor = m.baseColor;
         p.metallic = c.metallic;
         p.ms = shading::pbrSpecularF0(m.baseColor, c.metallic, c.layer);

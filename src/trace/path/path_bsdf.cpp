@@ -39,11 +39,11 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
                               shading::disneyClearcoatAlpha(params.disney1.w)};
         stretched_ = Stretched{X, glm::cross(N_, X), a.x, a.y};
     }
-    if (model_ == shading::SL_MODEL_PBR && params.layered && params.aniso.x > 0.0f) {
-        // glTF's anisotropy: GGX stretched to mix(α, 1, strength²) along its direction, α across it.
-        const glm::vec3 T = shading::anisotropyDirection(N_, params.aniso);
+    if (model_ == shading::SL_MODEL_PBR && params.layered && params.aniso.w > 0.0f) {
+        // glTF's anisotropy: GGX stretched to mix(α, 1, strength²) along its direction T, α across it.
+        const glm::vec3 T(params.aniso);
         const float a = shading::pbrAlpha(s_);
-        stretched_ = Stretched{T, glm::cross(N_, T), glm::mix(a, 1.0f, params.aniso.x * params.aniso.x), a};
+        stretched_ = Stretched{T, glm::cross(N_, T), glm::mix(a, 1.0f, params.aniso.w * params.aniso.w), a};
     }
 
     // Estimated albedos of each lobe pick the lobe: a sample goes where the light it carries is.
