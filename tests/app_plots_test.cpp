@@ -4,6 +4,7 @@
 #include "app/lobe_plot.h"
 #include "app/specular_lobe.h"
 #include "shading/lighting.h"
+#include "shading/sheen_lut.h"
 
 #include <gtest/gtest.h>
 
@@ -160,7 +161,7 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
     settings.phongExponent = 64.0f;
     settings.roughness = 1.0f;
     const AlbedoPlot plot = makeAlbedoPlot(settings);
-    ASSERT_EQ(plot.curves.size(), 10u);
+    ASSERT_EQ(plot.curves.size(), 11u);
     for (float v : plot.curves[0].albedo) EXPECT_NEAR(v, 1.0f, 3e-3f);  // Lambert
     EXPECT_NEAR(plot.curves[1].albedo.front(), 2.0f / 65.0f, 2e-3f);    // Phong: 2/(s+1)
     EXPECT_NEAR(plot.curves[2].albedo.front(), 66.0f / 65.0f, 5e-3f);   // normalised
@@ -185,6 +186,18 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
     EXPECT_GT(plot.curves[9].albedo.front(), 0.005f);
     EXPECT_LT(plot.curves[9].albedo.front(), 0.05f);
     EXPECT_GT(plot.curves[9].albedo.back(), plot.curves[9].albedo.front());
+    // glTF's sheen alone: the albedo the renderers read from their table (to 0.03 on the plot's coarse quadrature,
+    // up to 80°), rising toward grazing; another roughness's table row does not match (negative control).
+    EXPECT_EQ(plot.curves[10].label, "glTF sheen  roughness 0.50");
+    float offRow = 0.0f;
+    for (size_t i = 0; i < plot.viewAngles.size(); ++i) {
+        if (plot.viewAngles[i] > 80.0f) continue;
+        const float mu = std::cos(plot.viewAngles[i] * float(M_PI) / 180.0f);
+        EXPECT_NEAR(plot.curves[10].albedo[i], shading::sheenAlbedoAt(mu, 0.5f), 0.03f) << plot.viewAngles[i];
+        offRow = std::max(offRow, std::abs(plot.curves[10].albedo[i] - shading::sheenAlbedoAt(mu, 0.2f)));
+    }
+    EXPECT_GT(offRow, 0.05f);
+    EXPECT_GT(plot.curves[10].albedo.back(), plot.curves[10].albedo.front());
     // The hook: a curve from any shade function.
     AlbedoPlot copy = plot;
     addAlbedoCurve(copy, "half Lambert",

@@ -89,6 +89,13 @@ AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& in) {
     const auto withCoat = disney(0.0f, d0, coat, false, true), without = disney(0.0f, d0, d1, false, true);
     std::snprintf(label, sizeof label, "Disney clearcoat");
     addAlbedoCurve(plot, label, [=](const vec3& L, const vec3& V) { return withCoat(L, V) - without(L, V); });
+    // glTF's sheen on pbr: the Charlie lobe alone, white, at the material's sheen roughness; it reflects more the
+    // nearer the view grazes, and its base keeps the rest (1 − E).
+    const float sheenRoughness = std::clamp(plot.settings.sheenRoughness, 0.0f, 1.0f);
+    std::snprintf(label, sizeof label, "glTF sheen  roughness %.2f", double(sheenRoughness));
+    addAlbedoCurve(plot, label, [sheenRoughness](const vec3& L, const vec3& V) {
+        return sheenLobe(vec3(0.0f, 0.0f, 1.0f), L, V, sheenRoughness);
+    });
     return plot;
 }
 

@@ -15,12 +15,14 @@ struct AlbedoPlotSettings {
     float phongExponent = 32.0f;  // Phong s; Blinn-Phong at equivalentBlinnExponent(s), as in the lobe plot
     float roughness = 0.5f;       // pbr, the GGX curve (a white metal: F0 = 1, no diffuse), and disney's
     float clearcoatGloss = 1.0f;  // disney, the clearcoat curve
+    float sheenRoughness = 0.5f;  // pbr, glTF's sheen curve
     int angles = 20;              // view angles θv from 0 to 88°
     shading::AlbedoQuadrature quadrature{96, 48};
 
     bool operator==(const AlbedoPlotSettings& o) const {
         return phongExponent == o.phongExponent && roughness == o.roughness && clearcoatGloss == o.clearcoatGloss &&
-               angles == o.angles && quadrature.theta == o.quadrature.theta && quadrature.phi == o.quadrature.phi;
+               sheenRoughness == o.sheenRoughness && angles == o.angles && quadrature.theta == o.quadrature.theta &&
+               quadrature.phi == o.quadrature.phi;
     }
 };
 
@@ -41,7 +43,8 @@ using AlbedoShade = std::function<float(const shading::vec3& L, const shading::v
 
 // Lambert (white, the reference line at 1), Phong and Blinn-Phong with ms = 1, each as the lecture's lobe and
 // normalised ((s+2)/2, (s+8)/8), GGX as a white metal without compensation and with it, then disney's lobes: its
-// diffuse on white (with the retro-reflection that rises toward grazing), a white metal, and the clearcoat alone.
+// diffuse on white (with the retro-reflection that rises toward grazing), a white metal, and the clearcoat alone;
+// then glTF's sheen lobe alone (white, pbr's layer), whose albedo the renderers read from their table.
 AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& settings);
 
 // Adds a curve integrated from `shade` at the plot's angles: the hook for curves this file does not know, e.g.

@@ -240,6 +240,7 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     wanted.phongExponent = phongExponent;
     wanted.roughness = m.roughness;
     wanted.clearcoatGloss = m.disney.clearcoatGloss;
+    wanted.sheenRoughness = m.sheen.roughness;
     if (!f.albedo || !(f.albedo->settings == wanted)) f.albedo = makeAlbedoPlot(wanted);
     drawAlbedo(*f.albedo, width, 140.0f * scale, scale);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
