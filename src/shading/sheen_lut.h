@@ -18,7 +18,7 @@ struct SheenLut {
 inline constexpr int kSheenLutSize = 64;       // texels per side: N·V × roughness (the albedo is steep near grazing)
 inline constexpr int kSheenLutSamples = 1024;  // Hammersley samples per texel
 
-// Computes the table (about 0.1 s on one core at the defaults).
+// Computes the table (about 40 ms on one core at the defaults).
 SheenLut computeSheenLut(int size = kSheenLutSize, int samples = kSheenLutSamples);
 
 // The table at the defaults, computed on first use (thread-safe) and kept.
