@@ -65,6 +65,12 @@ def render_handle(core: _shadelab._Renderer, handle: _shadelab._Scene, size: Siz
             _checks.optional_word("view_transform", view_transform),
             clamp.int64(_checks.optional_whole("seed", seed)))
     image: _shadelab.Image = _checks.call(clamp, core.render, *args)
+    layers = handle.layers_not_shown()
+    if layers:
+        # The command line's note: glTF's layers vanish without a word under another model than pbr.
+        verb = "shade" if "," in layers else "shades"
+        warn([f"glTF's {layers} {verb} only under pbr, not under the model this render gives the objects that carry "
+              f"it (scene.model = \"pbr\" shows it)"], stacklevel=3)
     if image.non_finite_pixels:
         # The command line's warning, in the same words: no image goes black in silence.
         warn([f"{renderer}: {image._non_finite_message}"], stacklevel=3)

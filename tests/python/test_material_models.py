@@ -167,6 +167,20 @@ def test_the_sheen_edits_in_place_under_pbr(pbr_default):
     assert pbr_default.objects[0].material.sheen.roughness == 0.3  # nothing lost
 
 
+def test_layers_another_model_hides_are_said_once():
+    # A glTF grid of sheens rendered under the lecture's phong: one ShadelabWarning names the layer and the way to
+    # see it; under pbr nothing is said (control).
+    scene = shadelab.Scene.load(str(shadelab.data.folder() / "models" / "layers" / "sheen_grid.gltf"))
+    scene.model = "phong"
+    with pytest.warns(shadelab.ShadelabWarning, match=r"glTF's sheen shades only under pbr.*scene\.model = \"pbr\""):
+        shadelab.render(scene, (32, 18))
+    scene.model = "pbr"
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", shadelab.ShadelabWarning)
+        shadelab.render(scene, (32, 18))
+
+
 def test_the_anisotropy_edits_in_place_under_pbr(pbr_default):
     material = pbr_default.objects[0].material
     assert material.anisotropy.strength == 0.0 and material.anisotropy.rotation == 0.0  # isotropic by default
