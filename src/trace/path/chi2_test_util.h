@@ -4,6 +4,7 @@
 // statistic's p-value comes from the Wilson–Hilferty normal approximation of the χ² distribution. Test-only.
 #pragma once
 
+#include "trace/path/sample_rng.h"
 #include "trace/path/warp.h"
 
 #include <cmath>
@@ -15,6 +16,19 @@
 #include <vector>
 
 namespace shadelab::trace::test {
+
+// What the lobes' χ² tests draw and hold to: 400,000 samples each, and a significance of 1e-3 (a false alarm over
+// a file's tests stays rare).
+inline constexpr int kChi2Samples = 400000;
+inline constexpr double kChi2Alpha = 1e-3;
+
+// Sample k's three uniform numbers from the path tracer's own generator, one stream per test file (`seed`).
+inline glm::vec3 sampleNumbers(int k, uint32_t seed) {
+    SampleRng rng;
+    rng.pixel = uint32_t(k);
+    rng.seed = seed;
+    return glm::vec3(rng.draw(0, 0));
+}
 
 struct Chi2Result {
     double statistic = 0.0;

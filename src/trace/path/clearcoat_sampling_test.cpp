@@ -7,7 +7,6 @@
 #include "shading/local_illumination.h"
 #include "trace/path/chi2_test_util.h"
 #include "trace/path/path_bsdf.h"
-#include "trace/path/sample_rng.h"
 
 #include <gtest/gtest.h>
 
@@ -16,15 +15,10 @@ namespace {
 
 using test::Chi2Result;
 
-constexpr int kSamples = 400000;
-constexpr double kAlpha = 1e-3;
+constexpr int kSamples = test::kChi2Samples;
+constexpr double kAlpha = test::kChi2Alpha;
 
-glm::vec3 numbers(int k) {
-    SampleRng rng;
-    rng.pixel = uint32_t(k);
-    rng.seed = 2612u;
-    return glm::vec3(rng.draw(0, 0));
-}
+glm::vec3 numbers(int k) { return test::sampleNumbers(k, 2612u); }
 
 struct CoatCase {
     float metallic, roughness;

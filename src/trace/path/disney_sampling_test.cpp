@@ -4,7 +4,6 @@
 #include "shading/local_illumination.h"
 #include "trace/path/chi2_test_util.h"
 #include "trace/path/path_bsdf.h"
-#include "trace/path/sample_rng.h"
 
 #include <gtest/gtest.h>
 
@@ -13,15 +12,10 @@ namespace {
 
 using test::Chi2Result;
 
-constexpr int kSamples = 400000;
-constexpr double kAlpha = 1e-3;  // as path_sampling_test: a false alarm over the file's tests stays rare
+constexpr int kSamples = test::kChi2Samples;
+constexpr double kAlpha = test::kChi2Alpha;
 
-glm::vec3 numbers(int k) {
-    SampleRng rng;
-    rng.pixel = uint32_t(k);
-    rng.seed = 4242u;
-    return glm::vec3(rng.draw(0, 0));
-}
+glm::vec3 numbers(int k) { return test::sampleNumbers(k, 4242u); }
 
 const glm::vec3 kOblique = glm::normalize(glm::vec3(0.5f, 0.2f, 0.6f));
 
