@@ -57,8 +57,9 @@ void bindScene(py::module_& m) {
         .def("to_document", [](const SceneHandle& h) { return jsonTextToPython(sceneToJson(h.scene(), true)); })
         .def("save", [](const SceneHandle& h, const std::string& path) { saveSceneJson(h.scene(), path); })
         .def("copy", [](const SceneHandle& h) { return SceneHandle(h); })
-        .def("layers_not_shown", [](const SceneHandle& h) { return layersNotShown(h.scene()); },
-             "glTF's layers that objects carry but their model does not shade (scene_models.h), \"\" for none")
+        .def(
+            "layers_not_shown", [](const SceneHandle& h) { return layersNotShown(h.scene()); },
+            "glTF's layers that objects carry but their model does not shade (scene_models.h), \"\" for none")
         .def_property_readonly("base_dir", &SceneHandle::baseDir)
         .def_property_readonly("allow_external_paths", &SceneHandle::allowExternalPaths)
         .def_property_readonly("triangles", [](const SceneHandle& h) {
