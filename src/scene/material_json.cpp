@@ -1,6 +1,7 @@
-// Reading materials from a scene file (material_json.h).
+// Materials in scene files (material_json.h): reading them, and writing a material or an override back.
 #include "scene/material_json.h"
 
+#include "scene/json_write.h"
 #include "scene/scene_json.h"
 #include "scene/scene_limits.h"
 
@@ -115,6 +116,114 @@ Material parseMaterial(const JsonNode& object, const NamedMaterials& named) {
         o.applyTo(m);
     }
     return m;
+}
+
+// ---- Writing -----------------------------------------------------------------------------------------------
+
+namespace {
+
+using OJson = nlohmann::ordered_json;
+using json_write::exact;
+using json_write::vec;
+
+// A group of parameters (the principled BRDF's, the clear coat's): those that are set (an override).
+template <class O>
+OJson paramsJson(const O& o) {
+    OJson j = OJson::object();
+    for (int i = 0; i < O::kCount; ++i)
+        if (o.value[i]) j[O::fields()[i].name] = exact(*o.value[i]);
+    return j;
+}
+
+// glTF's specular layer: the fields that are set.
+OJson specularJson(const SpecularLayerOverride& o) {
+    OJson j = OJson::object();
+    if (o.factor) j["factor"] = exact(*o.factor);
+    if (o.color) j["color"] = vec(*o.color);
+    return j;
+}
+
+// glTF's sheen layer: the fields that are set.
+OJson sheenJson(const SheenOverride& o) {
+    OJson j = OJson::object();
+    if (o.color) j["color"] = vec(*o.color);
+    if (o.roughness) j["roughness"] = exact(*o.roughness);
+    return j;
+}
+
+// glTF's anisotropy: the fields that are set.
+OJson anisotropyJson(const AnisotropyOverride& o) {
+    OJson j = OJson::object();
+    if (o.strength) j["strength"] = exact(*o.strength);
+    if (o.rotation) j["rotation"] = exact(*o.rotation);
+    return j;
+}
+
+}  // namespace
+
+OJson materialJson(const Material& m, bool withDerived) {
+    OJson j = OJson::object();
+    // A material that gives fields of both models reads back with nothing derived: then every value is written,
+    // so that it reads back exactly.
+    const bool both = (~m.derived & kPhongFields) && (~m.derived & kPbrFields);
+    const auto put = [&](MaterialField field, OJson value) {
+        if (withDerived || both || !(m.derived & field)) j[nameOf(kMaterialFieldNames, field)] = std::move(value);
+    };
+    put(kFieldMa, vec(m.ma));
+    put(kFieldMd, vec(m.md));
+    put(kFieldMs, vec(m.ms));
+    put(kFieldS, exact(m.s));
+    j["kr"] = vec(m.kr);
+    j["kt"] = vec(m.kt);
+    j["ior"] = exact(m.ior);
+    put(kFieldBaseColor, vec(m.baseColor));
+    put(kFieldMetallic, exact(m.metallic));
+    put(kFieldRoughness, exact(m.roughness));
+    if (m.emission != glm::vec3(0.0f)) j["emission"] = vec(m.emission);  // written only for emitters
+    if (m.model) j["model"] = toString(*m.model);                        // only a material's own
+    // The principled BRDF's parameters where they matter: a disney material, or any left off their defaults; in
+    // Python's documents always, so that they can be edited in place.
+    if (withDerived || m.model == ShadingModel::Disney || m.disney != DisneyParams{})
+        j["disney"] = paramsJson(DisneyOverride::all(m.disney));
+    // The clear coat where there is one (Python's documents always, to be edited in place).
+    if (withDerived || m.clearcoat != Clearcoat{}) j["clearcoat"] = paramsJson(ClearcoatOverride::all(m.clearcoat));
+    // glTF's specular layer where it is off its defaults (Python's documents always).
+    if (withDerived || m.specular != SpecularLayer{})
+        j["specular"] = specularJson(SpecularLayerOverride{m.specular.factor, m.specular.color});
+    // glTF's sheen where there is one (Python's documents always).
+    if (withDerived || m.sheen != Sheen{}) j["sheen"] = sheenJson(SheenOverride{m.sheen.color, m.sheen.roughness});
+    // glTF's anisotropy where there is any (Python's documents always).
+    if (withDerived || m.anisotropy != Anisotropy{})
+        j["anisotropy"] = anisotropyJson(AnisotropyOverride{m.anisotropy.strength, m.anisotropy.rotation});
+    if (withDerived && m.derived) {
+        OJson names = OJson::array();
+        for (const auto& entry : kMaterialFieldNames)
+            if (m.derived & entry.value) names.push_back(entry.name);
+        j["derived"] = std::move(names);
+    }
+    return j;
+}
+
+OJson overrideJson(const MaterialOverride& m) {
+    OJson j = OJson::object();
+    if (m.ma) j["ma"] = vec(*m.ma);
+    if (m.md) j["md"] = vec(*m.md);
+    if (m.ms) j["ms"] = vec(*m.ms);
+    if (m.s) j["s"] = exact(*m.s);
+    if (m.kr) j["kr"] = vec(*m.kr);
+    if (m.kt) j["kt"] = vec(*m.kt);
+    if (m.ior) j["ior"] = exact(*m.ior);
+    if (m.baseColor) j["baseColor"] = vec(*m.baseColor);
+    if (m.metallic) j["metallic"] = exact(*m.metallic);
+    if (m.roughness) j["roughness"] = exact(*m.roughness);
+    if (m.emission) j["emission"] = vec(*m.emission);
+    if (m.model) j["model"] = toString(*m.model);
+    if (!m.disney.empty()) j["disney"] = paramsJson(m.disney);
+    if (!m.clearcoat.empty()) j["clearcoat"] = paramsJson(m.clearcoat);
+    if (!m.specular.empty()) j["specular"] = specularJson(m.specular);
+    if (!m.sheen.empty()) j["sheen"] = sheenJson(m.sheen);
+    if (!m.anisotropy.empty()) j["anisotropy"] = anisotropyJson(m.anisotropy);
+    return j;
 }
 
 }  // namespace shadelab

@@ -1,5 +1,6 @@
-// Reading a scene file's materials (docs/scene-format.md, "Materials"): an object's inline fields or the name of
-// one of the file's "materials", the "derived" list, and the rule by which one model's fields derive the other's.
+// A scene file's materials (docs/scene-format.md, "Materials"): reading an object's inline fields or the name of
+// one of the file's "materials", the "derived" list, and the rule by which one model's fields derive the other's;
+// writing a material or a mesh's override back.
 // parseMaterialOverride (the fields alone, which scripts share) is declared in scene_json.h.
 #pragma once
 
@@ -31,5 +32,11 @@ MaterialOverride parseMaterialFields(const JsonNode& n);
 MaterialOverride parseMaterialRef(const JsonNode& n, const NamedMaterials& named);
 // The material of `object` (its "material", when it has one), with what its given fields derive.
 Material parseMaterial(const JsonNode& object, const NamedMaterials& named);
+
+// A material as a scene file holds it: its given fields (a derived one is derived again on loading); `withDerived`
+// writes the derived ones too, listed under "derived", as Python's documents hold them.
+nlohmann::ordered_json materialJson(const Material& m, bool withDerived);
+// A mesh's material override as a scene file holds it: the fields it sets.
+nlohmann::ordered_json overrideJson(const MaterialOverride& m);
 
 }  // namespace shadelab

@@ -2,12 +2,13 @@
 // path in errors; saving writes every field, so a saved file documents itself and loads back exactly.
 // Mesh geometry is not touched here: loadScene() (scene_load.h) imports it.
 //
-// Sections: 1. loading camera, lights (materials: material_json.cpp)   2. loading objects
+// Sections: 1. loading camera, lights (materials, read and written: material_json.cpp)   2. loading objects
 //           3. the light reader scripts share; parseSceneJson
-//           4. saving (exact floats, layout)      5. sceneToJson, saveSceneJson
+//           4. saving (the layout; exact floats: json_write.h)      5. sceneToJson, saveSceneJson
 #include "scene/scene_json.h"
 
 #include "scene/json_reader.h"
+#include "scene/json_write.h"
 #include "scene/material_json.h"
 #include "scene/raster_override.h"
 #include "scene/scene_limits.h"
@@ -264,131 +265,8 @@ Scene parseSceneDocument(const JsonNode& root) {
 namespace {
 
 using OJson = nlohmann::ordered_json;
-
-// The shortest decimal that reads back as exactly `f`, as a double: 0.1f is written "0.1", not
-// "0.10000000149011612". The loader reads a double and rounds it to float, so check that path. Where the
-// standard library has no floating-point to_chars (the web build's libc++), the shortest of %.1g .. %.9g that
-// reads back as `f` (9 significant digits always do) is the same number.
-double exact(float f) {
-    char buf[64];
-#if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
-    auto r = std::to_chars(buf, buf + sizeof buf, f);
-    double d = 0.0;
-    if (r.ec != std::errc() || std::from_chars(buf, r.ptr, d).ec != std::errc() || static_cast<float>(d) != f)
-        return static_cast<double>(f);
-    return d;
-#else
-    if (!std::isfinite(f)) return static_cast<double>(f);
-    for (int digits = 1; digits <= 9; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(f));
-        const double d = std::strtod(buf, nullptr);
-        if (static_cast<float>(d) == f) return d;
-    }
-    return static_cast<double>(f);
-#endif
-}
-
-OJson vec(const glm::vec3& v) { return OJson::array({exact(v.x), exact(v.y), exact(v.z)}); }
-
-// A group of parameters (the principled BRDF's, the clear coat's): those that are set (an override).
-template <class O>
-OJson paramsJson(const O& o) {
-    OJson j = OJson::object();
-    for (int i = 0; i < O::kCount; ++i)
-        if (o.value[i]) j[O::fields()[i].name] = exact(*o.value[i]);
-    return j;
-}
-
-// glTF's specular layer: the fields that are set.
-OJson specularJson(const SpecularLayerOverride& o) {
-    OJson j = OJson::object();
-    if (o.factor) j["factor"] = exact(*o.factor);
-    if (o.color) j["color"] = vec(*o.color);
-    return j;
-}
-
-// glTF's sheen layer: the fields that are set.
-OJson sheenJson(const SheenOverride& o) {
-    OJson j = OJson::object();
-    if (o.color) j["color"] = vec(*o.color);
-    if (o.roughness) j["roughness"] = exact(*o.roughness);
-    return j;
-}
-
-// glTF's anisotropy: the fields that are set.
-OJson anisotropyJson(const AnisotropyOverride& o) {
-    OJson j = OJson::object();
-    if (o.strength) j["strength"] = exact(*o.strength);
-    if (o.rotation) j["rotation"] = exact(*o.rotation);
-    return j;
-}
-
-// The given fields of `m` (a derived one is derived again on loading); `withDerived` writes the derived ones too,
-// listed under "derived", as Python's documents hold them.
-OJson materialJson(const Material& m, bool withDerived) {
-    OJson j = OJson::object();
-    // A material that gives fields of both models reads back with nothing derived: then every value is written,
-    // so that it reads back exactly.
-    const bool both = (~m.derived & kPhongFields) && (~m.derived & kPbrFields);
-    const auto put = [&](MaterialField field, OJson value) {
-        if (withDerived || both || !(m.derived & field)) j[nameOf(kMaterialFieldNames, field)] = std::move(value);
-    };
-    put(kFieldMa, vec(m.ma));
-    put(kFieldMd, vec(m.md));
-    put(kFieldMs, vec(m.ms));
-    put(kFieldS, exact(m.s));
-    j["kr"] = vec(m.kr);
-    j["kt"] = vec(m.kt);
-    j["ior"] = exact(m.ior);
-    put(kFieldBaseColor, vec(m.baseColor));
-    put(kFieldMetallic, exact(m.metallic));
-    put(kFieldRoughness, exact(m.roughness));
-    if (m.emission != glm::vec3(0.0f)) j["emission"] = vec(m.emission);  // written only for emitters
-    if (m.model) j["model"] = toString(*m.model);                        // only a material's own
-    // The principled BRDF's parameters where they matter: a disney material, or any left off their defaults; in
-    // Python's documents always, so that they can be edited in place.
-    if (withDerived || m.model == ShadingModel::Disney || m.disney != DisneyParams{})
-        j["disney"] = paramsJson(DisneyOverride::all(m.disney));
-    // The clear coat where there is one (Python's documents always, to be edited in place).
-    if (withDerived || m.clearcoat != Clearcoat{}) j["clearcoat"] = paramsJson(ClearcoatOverride::all(m.clearcoat));
-    // glTF's specular layer where it is off its defaults (Python's documents always).
-    if (withDerived || m.specular != SpecularLayer{})
-        j["specular"] = specularJson(SpecularLayerOverride{m.specular.factor, m.specular.color});
-    // glTF's sheen where there is one (Python's documents always).
-    if (withDerived || m.sheen != Sheen{}) j["sheen"] = sheenJson(SheenOverride{m.sheen.color, m.sheen.roughness});
-    // glTF's anisotropy where there is any (Python's documents always).
-    if (withDerived || m.anisotropy != Anisotropy{})
-        j["anisotropy"] = anisotropyJson(AnisotropyOverride{m.anisotropy.strength, m.anisotropy.rotation});
-    if (withDerived && m.derived) {
-        OJson names = OJson::array();
-        for (const auto& entry : kMaterialFieldNames)
-            if (m.derived & entry.value) names.push_back(entry.name);
-        j["derived"] = std::move(names);
-    }
-    return j;
-}
-
-OJson overrideJson(const MaterialOverride& m) {
-    OJson j = OJson::object();
-    if (m.ma) j["ma"] = vec(*m.ma);
-    if (m.md) j["md"] = vec(*m.md);
-    if (m.ms) j["ms"] = vec(*m.ms);
-    if (m.s) j["s"] = exact(*m.s);
-    if (m.kr) j["kr"] = vec(*m.kr);
-    if (m.kt) j["kt"] = vec(*m.kt);
-    if (m.ior) j["ior"] = exact(*m.ior);
-    if (m.baseColor) j["baseColor"] = vec(*m.baseColor);
-    if (m.metallic) j["metallic"] = exact(*m.metallic);
-    if (m.roughness) j["roughness"] = exact(*m.roughness);
-    if (m.emission) j["emission"] = vec(*m.emission);
-    if (m.model) j["model"] = toString(*m.model);
-    if (!m.disney.empty()) j["disney"] = paramsJson(m.disney);
-    if (!m.clearcoat.empty()) j["clearcoat"] = paramsJson(m.clearcoat);
-    if (!m.specular.empty()) j["specular"] = specularJson(m.specular);
-    if (!m.sheen.empty()) j["sheen"] = sheenJson(m.sheen);
-    if (!m.anisotropy.empty()) j["anisotropy"] = anisotropyJson(m.anisotropy);
-    return j;
-}
+using json_write::exact;
+using json_write::vec;
 
 bool isScalar(const OJson& j) { return (!j.is_object() && !j.is_array()) || j.empty(); }
 
