@@ -15,7 +15,9 @@ using test::Chi2Result;
 constexpr int kSamples = test::kChi2Samples;
 constexpr double kAlpha = test::kChi2Alpha;
 
-glm::vec3 numbers(int k) { return test::sampleNumbers(k, 4242u); }
+constexpr uint32_t kSeed = 4242u;  // this file's stream of numbers
+
+glm::vec3 numbers(int k) { return test::sampleNumbers(k, kSeed); }
 
 const glm::vec3 kOblique = glm::normalize(glm::vec3(0.5f, 0.2f, 0.6f));
 
@@ -75,12 +77,7 @@ Chi2Result testDisney(const DisneyCase& c, const glm::vec3& V, const DisneyCase*
     const PathBsdf bsdf = makeDisney(m, s, V, c.metallic, c.roughness, c.d0, c.d1);
     const DisneyCase& k = claimedCase ? *claimedCase : c;
     const PathBsdf claimed = makeDisney(m2, s2, V, k.metallic, k.roughness, k.d0, k.d1);
-    return test::chi2Directions(
-        [&](int i) -> std::optional<glm::vec3> {
-            const auto b = bsdf.sample(numbers(i));
-            return b ? std::optional<glm::vec3>(b->wi) : std::nullopt;
-        },
-        [&](const glm::vec3& w) { return w.z > 0.0f ? claimed.pdf(w) : 0.0f; }, kSamples);
+    return test::chi2OfMixture(bsdf, claimed, kSeed);
 }
 
 const glm::vec4 kD0(0.0f, 0.5f, 0.0f, 0.0f), kD1(0.0f, 0.5f, 0.0f, 1.0f);  // Disney's defaults
