@@ -206,3 +206,54 @@ SL_FN vec3 sheenEnvironment(vec3 base, vec3 prefiltered, vec4 sheen, float EV, b
     vec3 c = vec3(sheen.x, sheen.y, sheen.z);
     return base * sheenScaling(sheen, EV, EV) + c * prefiltered * EV;
 }
+
+// glTF's KHR_materials_transmission with KHR_materials_volume (docs/lighting.md, "glTF's transmission and volume"):
+// the dielectric's diffuse lobe gives up the share t of its light to a GGX lobe through the surface (the spec's
+// mix(diffuse_brdf, specular_btdf, t) inside fresnel_mix), its roughness the material's times transmission.y
+// (transmissionPacked). tc = md·t is the transmitted colour, md the diffuse colour baseColor·(1 − metallic);
+// the rest of md, md·(1 − t), stays diffuse. A thin wall (transmission.z = 0) lets light straight through; a volume
+// refracts it by η = transmission.z and absorbs along the way (Volume::transmittance, `tint`).
+
+// The direction light arrives from through the surface at the point seen along −V: −V through a thin wall, V
+// refracted into the volume by η (Snell's law; −V where η would reflect it totally). N, V need not be unit.
+SL_FN vec3 transmissionDirection(vec3 N, vec3 V, vec4 transmission) {
+    vec3 v = normalize(V);
+    if (transmission.z <= 0.0f) return -v;
+    vec3 T = refract(-v, normalize(N), transmission.z);
+    return dot(T, T) > 0.0f ? normalize(T) : -v;
+}
+
+// One light's transmitted term for a light behind the surface (N·L < 0): Il·tc·tint·π·|N·L|·D·V(L', V)·(1 −
+// max3(Fd(V·H'))), the GGX lobe of the mirrored light L' = L − 2(N·L)N (the thin wall's BTDF, as the Khronos
+// Sample Viewer evaluates every punctual light through the surface), Fd the dielectric's Fresnel of the specular
+// layer (layer = (f0d, w), SpecularLayer::packed) that the diffuse lobe also gives up. Part of the diffuse term:
+// 0 with it off; without the specular term nothing is reflected away. N, L, V need not be unit.
+SL_FN vec3 transmissionLight(vec3 N, vec3 L, vec3 V, vec3 Il, vec3 tc, vec3 tint, vec4 layer, float roughness,
+                             bool diffuseOn, bool specularOn) {
+    N = normalize(N);
+    L = normalize(L);
+    V = normalize(V);
+    float NoL = dot(N, L);
+    if (!diffuseOn || NoL >= 0.0f) return vec3(0.0f);
+    vec3 Lm = L - (2.0f * NoL) * N;
+    float keep = 1.0f;
+    if (specularOn) {
+        vec3 Fd = layer.w * F_Schlick(vec3(layer.x, layer.y, layer.z), max(dot(V, normalize(Lm + V)), 0.0f));
+        keep = 1.0f - max(Fd.x, max(Fd.y, Fd.z));
+    }
+    return Il * tc * tint * ((-SL_PI * NoL) * keep) * specularGGX(N, Lm, V, vec3(1.0f), roughness);
+}
+
+// The environment's (or a traced ray's) light through the surface, `through` the radiance arriving along
+// transmissionDirection (times the volume's tint where the caller applies it): tc·through·(1 − max3(E_d)), E_d =
+// w·(f0d·A + B) the dielectric's split-sum reflection, as the diffuse lobe keeps in
+// shadeEnvironmentPbrSpecular. Part of the diffuse term.
+SL_FN vec3 transmissionEnvironment(vec3 tc, vec3 through, vec4 layer, vec2 dfg, bool diffuseOn, bool specularOn) {
+    if (!diffuseOn) return vec3(0.0f);
+    float keep = 1.0f;
+    if (specularOn) {
+        vec3 Ed = layer.w * specularDFG(vec3(layer.x, layer.y, layer.z), dfg);
+        keep = 1.0f - max(Ed.x, max(Ed.y, Ed.z));
+    }
+    return tc * through * keep;
+}

@@ -40,6 +40,11 @@ float surfaceMetallic() { return s_mapped ? s_metallic : u_metallic; }
 uniform vec4 u_specLayer;
 uniform vec3 u_aniso;  // glTF's anisotropy (Anisotropy::packed): (strength, cos, sin) of its direction's turn
 vec4 s_aniso = vec4(0.0f);  // this fragment's (T, strength), set by shadeSurface (gltf_layers.glsl)
+// glTF's transmission and volume (transmissionPacked; factor 0: none) and the volume's tint over its thickness
+// (transmissionTint); s_transmitColor the transmitted colour md·t, set by shadeSurface.
+uniform vec4 u_transmission;
+uniform vec3 u_transmitTint;
+vec3 s_transmitColor = vec3(0.0f);
 #else
 #define SL_LAYERED 0
 #endif
@@ -90,9 +95,14 @@ float s_sheenEV = 0.0f;
 #else
 #define SL_SHEENED 0
 #endif
-// One light's term `c` of the base under glTF's layers the variant has: the sheen, then the coat over both (the
-// spec's order; local_illumination.h's shadeLightPbrLayers).
+// One light's term `c` of the base under glTF's layers the variant has: the light through a transmitting base, the
+// sheen, then the coat over both (the spec's order; local_illumination.h's shadeLightPbrLayers).
 vec3 layeredLight(vec3 c, vec3 N, vec3 L, vec3 V, vec3 Il) {
+#if SL_LAYERED
+    // A light behind a transmitting surface, through it: part of the base, under the sheen and the coat.
+    if (u_transmission.x > 0.0f)
+        c += transmissionLight(N, L, V, Il, s_transmitColor, u_transmitTint, u_specLayer, surfaceS() * u_transmission.y, SL_DIFFUSE, SL_SPECULAR);
+#endif
 #if SL_SHEENED
     c = sheenLight(c, N, L, V, Il, u_sheen, s_sheenEV, sheenAlbedo(SL_SHEEN_SIZE, sheenCos(N, L), u_sheen.w), SL_DIFFUSE);
 #endif
@@ -149,15 +159,17 @@ vec3 environmentLight(vec3 N, vec3 V, vec3 md, vec3 f0, vec3 base, vec2 dfg) {
 }
 #endif
 
-#if SL_IBL && (SL_COATED || SL_SHEENED)
-// The environment prefiltered at `roughness` along V mirrored about N (EnvironmentLight::prefiltered).
-vec3 environmentPrefiltered(vec3 N, vec3 V, float roughness) {
+#if SL_IBL && (SL_COATED || SL_SHEENED || SL_LAYERED)
+// The environment prefiltered at `roughness` along the unit direction D (EnvironmentLight::prefiltered).
+vec3 environmentAlong(vec3 D, float roughness) {
 #if SL_IBL == 2
-    return u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(iblReflect(N, V), u_iblParams.y, u_iblParams.z), roughness);
+    return u_iblParams.x * iblPrefiltered(u_iblInfo.y, u_iblInfo.z, iblRotate(D, u_iblParams.y, u_iblParams.z), roughness);
 #else
     return u_iblRadiance.xyz;
 #endif
 }
+// The same along V mirrored about N.
+vec3 environmentPrefiltered(vec3 N, vec3 V, float roughness) { return environmentAlong(iblReflect(N, V), roughness); }
 #endif
 
 #if SL_IBL && SL_COATED
@@ -205,6 +217,10 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
 #endif
 #if SL_LAYERED
     s_aniso = vec4(anisotropyDirection(N, s_tangent, u_aniso), u_aniso.x);
+    if (u_transmission.x > 0.0f) {  // md splits into what stays diffuse and what passes through
+        s_transmitColor = md * u_transmission.x;
+        md = md * (1.0f - u_transmission.x);
+    }
 #endif
 #if SL_IBL
     vec3 I = vec3(0.0f);
@@ -226,6 +242,12 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
 #endif
 #if SL_IBL
     vec3 environment = environmentLight(N, V, md, surfaceF0(base), base, dfg);
+#if SL_LAYERED
+    // The environment through a transmitting surface, along −V or refracted (the rasterizer sees nothing else behind).
+    if (u_transmission.x > 0.0f)
+        environment += transmissionEnvironment(s_transmitColor, u_transmitTint * environmentAlong(transmissionDirection(N, V, u_transmission), surfaceS() * u_transmission.y),
+                                               u_specLayer, dfg, SL_DIFFUSE, SL_SPECULAR);
+#endif
 #if SL_SHEENED
     environment = sheenEnvironment(environment, environmentPrefiltered(N, V, u_sheen.w), u_sheen, s_sheenEV, SL_DIFFUSE);
 #endif

@@ -8,8 +8,11 @@
 #include "scene/material_json.h"
 
 #include <imgui.h>
+
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 
 #include <string>
 
@@ -136,6 +139,26 @@ void drawMaterialSection(PanelContext& ctx) {
         changed |= ImGui::SliderAngle("aniso rotation", &m.anisotropy.rotation, -180.0f, 180.0f);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the direction the highlight stretches along, turned from the sphere's parallels");
+        // glTF's transmission and volume: light through the surface, and the medium inside it.
+        ImGui::TextDisabled("pbr: glTF transmission and volume (KHR_materials_transmission, _volume)");
+        changed |= ImGui::SliderFloat("transmission", &m.transmission.factor, 0.0f, 1.0f, "%.2f");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the share of the diffuse light that passes through, tinted by the base colour");
+        changed |=
+            ImGui::SliderFloat("thickness", &m.volume.thickness, 0.0f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("0: a thin wall, light passes straight through; more: a solid that refracts by ior");
+        // 0 on the slider is an infinite distance: a medium that absorbs nothing.
+        float distance = std::isfinite(m.volume.attenuationDistance) ? m.volume.attenuationDistance : 0.0f;
+        if (ImGui::SliderFloat("atten distance", &distance, 0.0f, 100.0f, distance > 0.0f ? "%.2f" : "none",
+                               ImGuiSliderFlags_Logarithmic)) {
+            m.volume.attenuationDistance = distance > 0.0f ? distance : std::numeric_limits<float>::infinity();
+            changed = true;
+        }
+        changed |= ImGui::ColorEdit3("atten color", glm::value_ptr(m.volume.attenuationColor), colorFlags);
+        m.volume.attenuationColor = glm::clamp(m.volume.attenuationColor, 0.0f, 1.0f);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("what is left of white light after the attenuation distance inside");
     }
     if (changed) {
         m.s = objectMaterial(s.scene, s.selected).s;  // the slider above already applied its own change

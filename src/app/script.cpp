@@ -93,7 +93,7 @@ const ActionInfo kActions[] = {
      }},
     {"setMaterial",
      {"object", "ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness", "model", "disney",
-      "clearcoat", "specular", "sheen", "anisotropy"},
+      "clearcoat", "specular", "sheen", "anisotropy", "transmission", "volume"},
      [](const JsonNode& a) -> Action {
          return SetMaterial{objectField(a), parseMaterialOverride(a)};
      }},

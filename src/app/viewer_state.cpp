@@ -48,6 +48,12 @@ void setMeshMaterial(Mesh& mesh, const Material& before, const Material& m) {
     if (m.sheen.roughness != before.sheen.roughness) o.sheen.roughness = m.sheen.roughness;
     if (m.anisotropy.strength != before.anisotropy.strength) o.anisotropy.strength = m.anisotropy.strength;
     if (m.anisotropy.rotation != before.anisotropy.rotation) o.anisotropy.rotation = m.anisotropy.rotation;
+    if (m.transmission.factor != before.transmission.factor) o.transmission.factor = m.transmission.factor;
+    if (m.volume.thickness != before.volume.thickness) o.volume.thickness = m.volume.thickness;
+    if (m.volume.attenuationDistance != before.volume.attenuationDistance)
+        o.volume.attenuationDistance = m.volume.attenuationDistance;
+    if (m.volume.attenuationColor != before.volume.attenuationColor)
+        o.volume.attenuationColor = m.volume.attenuationColor;
     for (int i = 0; i < ClearcoatOverride::kCount; ++i) {
         const float Clearcoat::*field = kClearcoatFields[i].member;
         if (m.clearcoat.*field != before.clearcoat.*field) o.clearcoat.value[i] = m.clearcoat.*field;

@@ -29,7 +29,8 @@ bool sameOverride(const MaterialOverride& a, const MaterialOverride& b) {
     return a.ma == b.ma && a.md == b.md && a.ms == b.ms && a.s == b.s && a.kr == b.kr && a.kt == b.kt &&
            a.ior == b.ior && a.baseColor == b.baseColor && a.metallic == b.metallic && a.roughness == b.roughness &&
            a.emission == b.emission && a.model == b.model && a.disney == b.disney && a.clearcoat == b.clearcoat &&
-           a.specular == b.specular && a.sheen == b.sheen && a.anisotropy == b.anisotropy;
+           a.specular == b.specular && a.sheen == b.sheen && a.anisotropy == b.anisotropy &&
+           a.transmission == b.transmission && a.volume == b.volume;
 }
 
 // As scene_load.cpp resolves a mesh's source.

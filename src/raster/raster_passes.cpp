@@ -43,6 +43,8 @@ void RasterRenderer::setMaterial(const gl::Program& p, const Material& m, uint32
     p.set("u_specLayer", m.specular.packed(m.ior));  // glTF's specular layer and ior (SL_SPECULAR_LAYER)
     p.set("u_sheen", m.sheen.packed());              // glTF's sheen (SL_SHEEN)
     p.set("u_aniso", m.anisotropy.packed());         // glTF's anisotropy (SL_SPECULAR_LAYER)
+    p.set("u_transmission", transmissionPacked(m));  // glTF's transmission and volume (SL_SPECULAR_LAYER)
+    p.set("u_transmitTint", transmissionTint(m));
     p.set("u_objectId", objectId);
     p.set("u_kr", m.kr);  // planes' mirrors and objects' cubes
     // Base-colour texture (mesh.frag): F0 = u_ms + u_msTex·(tex − 1) under pbr, as the tracer's local().

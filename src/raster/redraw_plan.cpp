@@ -27,7 +27,7 @@ void addTexture(KeyBytes& k, const TextureBinding& t) {
 // The web build's 32-bit WebAssembly has other sizes and relies on the native builds to remind.)
 #if UINTPTR_MAX == UINT64_MAX
 static_assert(sizeof(TextureBinding) == 56, "a new TextureBinding field: add it to addTexture");
-static_assert(sizeof(Material) == 664, "a new Material field: add it to materialKey");
+static_assert(sizeof(Material) == 688, "a new Material field: add it to materialKey");
 #endif
 
 KeyBytes materialKey(const Material& m) {
@@ -35,7 +35,8 @@ KeyBytes materialKey(const Material& m) {
     k.add(m.ma).add(m.md).add(m.ms).add(m.s).add(m.kr).add(m.kt).add(m.ior);
     k.add(m.baseColor).add(m.metallic).add(m.roughness).add(m.emission);
     k.add(m.disney.lobes0()).add(m.disney.lobes1()).add(m.clearcoat.packed()).add(m.specular.packed(m.ior));
-    k.add(m.sheen.packed()).add(m.anisotropy.packed());
+    k.add(m.sheen.packed()).add(m.anisotropy.packed()).add(m.transmission.factor);
+    k.add(m.volume.thickness).add(m.volume.attenuationDistance).add(m.volume.attenuationColor);
     for (const TextureBinding* t :
          {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.occlusionTexture, &m.emissiveTexture,
           &m.clearcoatTexture, &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture})

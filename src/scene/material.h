@@ -11,6 +11,8 @@
 #include "scene/sheen.h"
 #include "scene/specular_layer.h"
 #include "scene/texture.h"
+#include "scene/transmission.h"
+#include "scene/volume.h"
 #include "util/name_table.h"
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include <cstdint>
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <optional>
 
 namespace shadelab {
@@ -41,6 +44,8 @@ struct Material {
     SpecularLayer specular;     // pbr: glTF's dielectric F0 tint and weight (KHR_materials_specular), with ior's F0
     Sheen sheen;                // pbr: glTF's sheen layer over the base (KHR_materials_sheen); none by default
     Anisotropy anisotropy;      // pbr: glTF's anisotropic GGX lobe (KHR_materials_anisotropy); isotropic by default
+    Transmission transmission;  // pbr: glTF's light through the surface (KHR_materials_transmission); none by default
+    Volume volume;              // pbr: glTF's medium inside a transmitting surface (KHR_materials_volume); thin
     glm::vec3 emission{0.0f};   // emitted radiance, linear RGB, >= 0, from both sides: an area light under the
                                 // path tracer; the other renderers add it to the surface's colour (design.md §8)
     // glTF baseColorTexture (linear RGBA after sRGB decoding): multiplies baseColor under pbr and md, ma under
@@ -166,13 +171,16 @@ struct MaterialOverride {
     SpecularLayerOverride specular;
     SheenOverride sheen;
     AnisotropyOverride anisotropy;
+    TransmissionOverride transmission;
+    VolumeOverride volume;
     // Linked fields whose values were derived when written (a Python document's "derived" list): read, but not
     // given, so that they follow the given fields again.
     uint8_t derived = 0;
 
     bool empty() const {
         return !ma && !md && !ms && !s && !kr && !kt && !ior && !baseColor && !metallic && !roughness && !emission &&
-               !model && disney.empty() && clearcoat.empty() && specular.empty() && sheen.empty();
+               !model && disney.empty() && clearcoat.empty() && specular.empty() && sheen.empty() &&
+               anisotropy.empty() && transmission.empty() && volume.empty();
     }
     // Writes the fields, then derives from the given ones what follows from them (deriveFields). Fields of both
     // models given, with no "derived" list: each as given and nothing derived (docs/scene-format.md).
@@ -211,11 +219,29 @@ struct MaterialOverride {
         specular.applyTo(m.specular);
         sheen.applyTo(m.sheen);
         anisotropy.applyTo(m.anisotropy);
+        transmission.applyTo(m.transmission);
+        volume.applyTo(m.volume);
     }
 };
 
 // Whether a pbr material is shaded by glTF's layered function (shadeLightPbrSpecular: Appendix B's dielectric and
-// metal mix) rather than pbr's own: its specular layer or index are off their defaults, or it is anisotropic.
-inline bool usesLayeredPbr(const Material& m) { return hasSpecularLayer(m.specular, m.ior) || m.anisotropy.on(); }
+// metal mix) rather than pbr's own: its specular layer or index are off their defaults, it is anisotropic, or it
+// transmits.
+inline bool usesLayeredPbr(const Material& m) {
+    return hasSpecularLayer(m.specular, m.ior) || m.anisotropy.on() || m.transmission.on();
+}
+
+// The renderers' packing of glTF's transmission and volume (shaders/gltf_layers.glsl, transmissionLight): (factor,
+// the roughness scale clamp(2·ior − 2, 0, 1) of the transmitted lobe, η = 1/ior into a volume or 0 through a thin
+// wall, 0). The scale narrows the lobe as the index nears 1, where a slab no longer bends light (the Khronos
+// Sample Viewer's applyIorToRoughness).
+inline glm::vec4 transmissionPacked(const Material& m) {
+    return {m.transmission.factor, std::clamp(2.0f * m.ior - 2.0f, 0.0f, 1.0f), m.volume.on() ? 1.0f / m.ior : 0.0f,
+            0.0f};
+}
+
+// What a transmitting volume leaves of each colour over its thickness (the rasterizer's and the local lights'
+// path length through it; the tracers follow the real path inside); 1 for a thin wall.
+inline glm::vec3 transmissionTint(const Material& m) { return m.volume.transmittance(m.volume.thickness); }
 
 }  // namespace shadelab

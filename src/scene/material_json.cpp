@@ -5,6 +5,8 @@
 #include "scene/scene_json.h"
 #include "scene/scene_limits.h"
 
+#include <cmath>
+
 namespace shadelab {
 
 namespace {
@@ -52,6 +54,22 @@ AnisotropyOverride parseAnisotropyOverride(const JsonNode& n) {
     return o;
 }
 
+TransmissionOverride parseTransmissionOverride(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"factor"});
+    TransmissionOverride o;
+    if (auto f = n.find("factor")) o.factor = f->inRange(0.0f, 1.0f, false, false);
+    return o;
+}
+
+VolumeOverride parseVolumeOverride(const JsonNode& n) {
+    n.requireObject().warnUnknownKeys({"thickness", "attenuationDistance", "attenuationColor"});
+    VolumeOverride o;
+    if (auto f = n.find("thickness")) o.thickness = f->inRange(0.0f, kMaxVolumeLength, false, false);
+    if (auto f = n.find("attenuationDistance")) o.attenuationDistance = f->inRange(0.0f, kMaxVolumeLength, true, false);
+    if (auto f = n.find("attenuationColor")) o.attenuationColor = f->unitRgb();
+    return o;
+}
+
 MaterialOverride parseMaterialOverride(const JsonNode& n) {
     n.requireObject();
     MaterialOverride m;
@@ -72,13 +90,16 @@ MaterialOverride parseMaterialOverride(const JsonNode& n) {
     if (auto f = n.find("specular")) m.specular = parseSpecularLayerOverride(*f);
     if (auto f = n.find("sheen")) m.sheen = parseSheenOverride(*f);
     if (auto f = n.find("anisotropy")) m.anisotropy = parseAnisotropyOverride(*f);
+    if (auto f = n.find("transmission")) m.transmission = parseTransmissionOverride(*f);
+    if (auto f = n.find("volume")) m.volume = parseVolumeOverride(*f);
     return m;
 }
 
 MaterialOverride parseMaterialFields(const JsonNode& n) {
-    n.requireObject().warnUnknownKeys({"ma", "md", "ms", "s", "kr", "kt", "ior", "baseColor", "metallic", "roughness",
-                                       "emission", "model", "disney", "clearcoat", "specular", "sheen", "anisotropy",
-                                       "derived"});
+    n.requireObject().warnUnknownKeys({"ma",       "md",         "ms",           "s",         "kr",
+                                       "kt",       "ior",        "baseColor",    "metallic",  "roughness",
+                                       "emission", "model",      "disney",       "clearcoat", "specular",
+                                       "sheen",    "anisotropy", "transmission", "volume",    "derived"});
     MaterialOverride o = parseMaterialOverride(n);
     // "derived": the fields listed were derived from the other model's when the document was written (Python's
     // documents list them): read, but not given, so that they follow the given fields again.
@@ -159,6 +180,23 @@ OJson anisotropyJson(const AnisotropyOverride& o) {
     return j;
 }
 
+// glTF's transmission: its factor when set.
+OJson transmissionJson(const TransmissionOverride& o) {
+    OJson j = OJson::object();
+    if (o.factor) j["factor"] = exact(*o.factor);
+    return j;
+}
+
+// glTF's volume: the fields that are set, an infinite attenuation distance (absorbing nothing) left out.
+OJson volumeJson(const VolumeOverride& o) {
+    OJson j = OJson::object();
+    if (o.thickness) j["thickness"] = exact(*o.thickness);
+    if (o.attenuationDistance && std::isfinite(*o.attenuationDistance))
+        j["attenuationDistance"] = exact(*o.attenuationDistance);
+    if (o.attenuationColor) j["attenuationColor"] = vec(*o.attenuationColor);
+    return j;
+}
+
 }  // namespace
 
 OJson materialJson(const Material& m, bool withDerived) {
@@ -195,6 +233,12 @@ OJson materialJson(const Material& m, bool withDerived) {
     // glTF's anisotropy where there is any (Python's documents always).
     if (withDerived || m.anisotropy != Anisotropy{})
         j["anisotropy"] = anisotropyJson(AnisotropyOverride{m.anisotropy.strength, m.anisotropy.rotation});
+    // glTF's transmission and volume where there are any (Python's documents always).
+    if (withDerived || m.transmission != Transmission{})
+        j["transmission"] = transmissionJson(TransmissionOverride{m.transmission.factor});
+    if (withDerived || m.volume != Volume{})
+        j["volume"] =
+            volumeJson(VolumeOverride{m.volume.thickness, m.volume.attenuationDistance, m.volume.attenuationColor});
     if (withDerived && m.derived) {
         OJson names = OJson::array();
         for (const auto& entry : kMaterialFieldNames)
@@ -223,6 +267,8 @@ OJson overrideJson(const MaterialOverride& m) {
     if (!m.specular.empty()) j["specular"] = specularJson(m.specular);
     if (!m.sheen.empty()) j["sheen"] = sheenJson(m.sheen);
     if (!m.anisotropy.empty()) j["anisotropy"] = anisotropyJson(m.anisotropy);
+    if (!m.transmission.empty()) j["transmission"] = transmissionJson(m.transmission);
+    if (!m.volume.empty()) j["volume"] = volumeJson(m.volume);
     return j;
 }
 

@@ -24,6 +24,11 @@ SpecularLayerOverride parseSpecularLayerOverride(const JsonNode& n);
 SheenOverride parseSheenOverride(const JsonNode& n);
 // A material's "anisotropy" object: glTF's anisotropy, `strength` in [0, 1] and `rotation` in radians.
 AnisotropyOverride parseAnisotropyOverride(const JsonNode& n);
+// A material's "transmission" object: glTF's transmission, `factor` in [0, 1].
+TransmissionOverride parseTransmissionOverride(const JsonNode& n);
+// A material's "volume" object: glTF's volume, `thickness` >= 0, `attenuationDistance` > 0 (absent: infinite) and
+// `attenuationColor` (RGB, each in [0, 1]).
+VolumeOverride parseVolumeOverride(const JsonNode& n);
 // The largest specularColor a scene file takes (glTF allows more than 1; F0 is clamped to 1 after the tint).
 inline constexpr float kMaxSpecularColor = 100.0f;
 // A material object of the file: its fields (unknown keys warned about) and its "derived" list.

@@ -41,22 +41,26 @@ inline bool usesPhysicallyBased(const Scene& scene) {
 }
 
 // The glTF layers that objects of `scene` carry but that their model does not shade (only pbr shades them): "clear
-// coat", "specular layer", "sheen", "anisotropy", those present, joined by ", "; empty when every layer shows. An index
-// alone is not counted: it also sets the tracers' refraction under every model.
+// coat", "specular layer", "sheen", "anisotropy", "transmission", those present, joined by ", "; empty when every layer
+// shows. An index alone is not counted: it also sets the tracers' refraction under every model.
 inline std::string layersNotShown(const Scene& scene) {
-    bool coat = false, specular = false, sheen = false, anisotropy = false;
+    bool coat = false, specular = false, sheen = false, anisotropy = false, transmission = false;
     anyMaterial(scene, [&](const Material& m, ShadingModel own) {
         if (own != ShadingModel::Pbr) {
             coat |= m.clearcoat.factor > 0.0f;
             specular |= m.specular != SpecularLayer{};
             sheen |= m.sheen.on();
             anisotropy |= m.anisotropy.on();
+            transmission |= m.transmission.on();
         }
         return false;
     });
     std::string names;
-    for (const auto& [on, name] :
-         {std::pair{coat, "clear coat"}, {specular, "specular layer"}, {sheen, "sheen"}, {anisotropy, "anisotropy"}})
+    for (const auto& [on, name] : {std::pair{coat, "clear coat"},
+                                   {specular, "specular layer"},
+                                   {sheen, "sheen"},
+                                   {anisotropy, "anisotropy"},
+                                   {transmission, "transmission"}})
         if (on) names += std::string(names.empty() ? "" : ", ") + name;
     return names;
 }

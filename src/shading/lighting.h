@@ -25,6 +25,7 @@ using glm::min;
 using glm::mix;
 using glm::normalize;
 using glm::pow;
+using glm::refract;
 using glm::sqrt;
 using glm::vec2;
 using glm::vec3;

@@ -39,19 +39,28 @@ struct SurfaceParams {
     vec4 sheen{0.0f};
     float sheenEV = 0.0f;
     const SheenLut* sheenTable = nullptr;
+    // pbr only: glTF's transmission and volume (transmissionPacked; factor 0: none), the transmitted colour md·t
+    // (md above then holds md·(1 − t)) and the volume's tint over its thickness (transmissionLight).
+    vec4 transmission{0.0f};
+    vec3 transmitColor{0.0f};
+    vec3 transmitTint{1.0f};
 };
 
 // Whether a pbr surface's coefficients carry any of glTF's layers (shadeLightPbrLayers shades them).
 inline bool hasPbrLayers(const SurfaceParams& m) { return m.layered || m.coat.x > 0.0f || m.sheenTable; }
 
 // One light's term of a pbr surface with glTF's layers (`m.layered`, `m.sheenTable`, `m.coat`), before visibility:
-// the base (the specular layer's mix, or pbr's own), under the sheen, under the coat (the spec's order).
+// the base (the specular layer's mix, or pbr's own, with the light through it when it transmits), under the sheen,
+// under the coat (the spec's order).
 inline vec3 shadeLightPbrLayers(vec3 N, const LightSample& l, vec3 V, const SurfaceParams& m, bool diffuseOn,
                                 bool specularOn) {
     vec3 base = m.layered ? shadeLightPbrSpecular(N, l.L, V, l.Il, m.md, m.baseColor, m.metallic, m.s, m.specLayer,
                                                   m.aniso, diffuseOn, specularOn, m.specScale)
                           : shadeLightScaled(N, l.L, V, l.Il, m.md, m.ms, m.s, SL_MODEL_PBR, diffuseOn, specularOn,
                                              m.specScale);
+    if (m.transmission.x > 0.0f)  // a light behind the surface, through it (part of the base, under the layers)
+        base += transmissionLight(N, l.L, V, l.Il, m.transmitColor, m.transmitTint, m.specLayer, m.s * m.transmission.y,
+                                  diffuseOn, specularOn);
     if (m.sheenTable) {
         SheenLookup sheen{m.sheenTable};
         const float EL = sheen.at(sheen.sheenCos(N, l.L), m.sheen.w);

@@ -224,7 +224,7 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     if (s.model == shading::SL_MODEL_PBR) setPbrLayers(params, s, V);  // glTF's layers (disney has its own)
     params.ma = params.ma * s.ao;
     glm::vec2 dfg(0.0f);
-    if (pbr && (sc.energyCompensation || env_.lightsPbr()))
+    if (pbr && (sc.energyCompensation || env_.lightsPbr() || params.transmission.x > 0.0f))
         dfg = env_.dfg(shading::IblLookup{}.iblNoV(s.N, V), s.roughness);
     if (pbr && sc.energyCompensation) params.specScale = shading::energyCompensation(params.ms, dfg);
     if (dfgOut) *dfgOut = dfg;
@@ -239,7 +239,8 @@ glm::vec3 WhittedIntegrator::coatedEnvironment(const glm::vec3& base, const shad
     return shading::clearcoatEnvironment(base, params.coatN, V, pre, dfg, params.coat, scene_.scene().terms.specular);
 }
 
-glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree) const {
+glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree,
+                                   const glm::vec3* transmitted) const {
     const Scene& sc = scene_.scene();
     const Material& m = *s.material;
     // The lecture's step 0, as surface.glsl's shadeSurface: no light term on, the surface's unlit colour.
@@ -250,6 +251,19 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     const shading::SurfaceParams params = shadingParams(s, V, &dfg);
     // The environment replaces the constant ambient of pbr surfaces (design.md §8: what global light replaces).
     const bool environmentLit = env_.lightsPbr() && shading::physicallyBased(s.model);
+    // glTF's transmission: what arrives through the surface, a traced ray's radiance or, as the rasterizer reads
+    // it, the environment along the transmitted direction times the volume's tint.
+    const bool transmits = params.transmission.x > 0.0f;
+    glm::vec3 through(0.0f);
+    if (transmits && (transmitted || (environmentLit && sc.terms.ambient))) {
+        const glm::vec3 Lt =
+            transmitted
+                ? *transmitted
+                : params.transmitTint * env_.prefiltered(shading::transmissionDirection(s.N, V, params.transmission),
+                                                         params.s * params.transmission.y);
+        through = shading::transmissionEnvironment(params.transmitColor, Lt, params.specLayer, dfg, sc.terms.diffuse,
+                                                   sc.terms.specular);
+    }
     glm::vec3 environment(0.0f);
     if (environmentLit && sc.terms.ambient) {
         shading::IblLookup ibl;
@@ -267,6 +281,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
                       sc.terms.diffuse, sc.terms.specular)
                 : shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg, sc.energyCompensation,
                                             sc.terms.diffuse, sc.terms.specular);
+        environment += through;  // under the sheen and the coat, as the base's own light
+        through = glm::vec3(0.0f);
         if (params.sheenTable)  // the sheen reflects the prefiltered environment at its own roughness
             environment =
                 shading::sheenEnvironment(environment, env_.prefiltered(ibl.iblReflect(s.N, V), params.sheen.w),
@@ -289,11 +305,17 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
             const LightAt at = lightAt(l, s.P);
             ls.L = at.L;
             ls.Il = at.Il;
-            // Only a light that could contribute (N·L > 0, and inside a spot's cone and a light's range) needs a
-            // shadow ray: otherwise its term is 0.
-            const bool reaches = glm::dot(s.N, ls.L) > 0.0f && ls.Il != glm::vec3(0.0f);
-            ls.visibility = sc.terms.shadows && lit && reaches ? visibility(s, l) : 1.0f;
-            if (recording && sc.terms.shadows && lit && reaches) noteShadow(*tree, s, first + k, ls.visibility);
+            // Only a light that could contribute (N·L > 0, or behind a transmitting surface, and inside a spot's
+            // cone and a light's range) needs a shadow ray: otherwise its term is 0. One behind is sought from the
+            // far side of the surface.
+            const float NoL = glm::dot(s.N, ls.L);
+            const bool behind = transmits && NoL < 0.0f;
+            const bool reaches = (NoL > 0.0f || behind) && ls.Il != glm::vec3(0.0f);
+            std::optional<Surface> other;
+            if (behind) other = underside(s);
+            const Surface& from = other ? *other : s;
+            ls.visibility = sc.terms.shadows && lit && reaches ? visibility(from, l) : 1.0f;
+            if (recording && sc.terms.shadows && lit && reaches) noteShadow(*tree, from, first + k, ls.visibility);
         }
         shading::TermFlags terms{ambientOn && first == 0, sc.terms.diffuse, sc.terms.specular};
         const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, s.model, terms);
@@ -301,7 +323,7 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         first += count;
     } while (first < sc.lights.size());
     // An emitter's own light (design.md §8), as surface.glsl adds u_emission.
-    return (environmentLit ? I + environment : I) + m.emission * s.emissive;
+    return (environmentLit ? I + environment : I) + through + m.emission * s.emissive;
 }
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,
@@ -320,15 +342,30 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
         tree.current = self;
     }
     auto over = [&](const glm::vec3& c) { return alpha < 1.0f ? c * alpha + behind * (1.0f - alpha) : c; };
+    const Material& m = *s.material;
+    // glTF's transmission (pbr): a volume's inside only passes light out (its surface is shaded from outside).
+    const bool transmits = s.model == shading::SL_MODEL_PBR && m.transmission.on();
+    if (transmits && m.volume.on() && !s.entering) return over(leaveVolume(ray, hit, s, depth, weight, tree));
     if (!scene_.scene().terms.reflections || depth >= maxDepth_) return over(local(ray, s, nullptr, &tree));
 
-    const Material& m = *s.material;
     const glm::vec3 V = -ray.dir;
     const glm::vec3 N = glm::normalize(s.N);
     const float NoV = glm::dot(N, V);
     const float eps = scene_.epsilon();
+    // The light through a transmitting surface, traced: straight on through a thin wall, refracted into a volume
+    // (absorbed on the way out, leaveVolume). local() weighs it as the rasterizer weighs the environment there.
+    std::optional<glm::vec3> through;
+    if (transmits && scene_.scene().terms.diffuse) {
+        const glm::vec4 packed = transmissionPacked(m);
+        const glm::vec3 share = m.transmission.factor * (1.0f - s.metallic) * s.baseColor;
+        if (admit(weight * share, tree))
+            through = transmittedRadiance(Ray{s.P - eps * s.Nf, shading::transmissionDirection(N, V, packed)},
+                                          depth + 1, weight * share, tree, s.roughness * packed.y);
+        tree.current = self;
+    }
+    const glm::vec3* transmitted = through ? &*through : nullptr;
     glm::vec3 reflectWeight = m.kr;
-    glm::vec3 transmitted(0.0f);
+    glm::vec3 refracted(0.0f);
     if (positive(m.kt)) {
         // Snell's law, n1 sin θ1 = n2 sin θ2, as a vector (Heckbert 1989, "Writing a ray tracer" in Glassner):
         // T = −η V + (η cos θ1 − cos θ2) N with η = n1/n2 and cos² θ2 = 1 − η² (1 − cos² θ1).
@@ -338,7 +375,7 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
             reflectWeight += m.kt;  // total internal reflection: the transmitted energy is reflected
         } else if (admit(weight * m.kt, tree)) {
             const glm::vec3 T = glm::normalize(-eta * V + (eta * NoV - std::sqrt(cos2)) * N);
-            transmitted =
+            refracted =
                 m.kt * radiance(Ray{s.P - eps * s.Nf, T}, depth + 1, weight * m.kt, tree, TreeRayKind::Refracted);
         }
     }
@@ -361,17 +398,49 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
         if (next) {
             const glm::vec3 Lr = shade(reflectedRay, *next, depth + 1, weight * rayWeight, tree);
             tree.current = self;
-            I = local(ray, s, mirror > 0.0f ? &Lr : nullptr, &tree);
+            I = local(ray, s, mirror > 0.0f ? &Lr : nullptr, &tree, transmitted);
             I += reflectWeight * Lr;
         } else {
             tree.current = self;
-            I = local(ray, s, nullptr, &tree);
+            I = local(ray, s, nullptr, &tree, transmitted);
             I += reflectWeight * env_.escaping(R);
         }
     } else {
-        I = local(ray, s, nullptr, &tree);
+        I = local(ray, s, nullptr, &tree, transmitted);
     }
-    return over(I + transmitted);
+    return over(I + refracted);
+}
+
+glm::vec3 WhittedIntegrator::transmittedRadiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree,
+                                                 float roughness) const {
+    const std::optional<Hit> hit = visibleHit(ray, 0.0f, depth);
+    const int parent = tree.current;
+    if (tree.record) note(tree, TreeRayKind::Refracted, depth, ray, hit, weight);
+    glm::vec3 L;
+    if (hit)
+        L = shade(ray, *hit, depth, weight, tree);
+    else
+        L = env_.lightsPbr() ? env_.prefiltered(ray.dir, roughness) : env_.escaping(ray.dir);
+    tree.current = parent;
+    return L;
+}
+
+glm::vec3 WhittedIntegrator::leaveVolume(const Ray& ray, const Hit& hit, const Surface& s, int depth,
+                                         const glm::vec3& weight, Tree& tree) const {
+    const Material& m = *s.material;
+    const glm::vec3 absorbed = m.volume.transmittance(hit.t);  // the ray's direction is unit: t is the distance
+    const float roughness = s.roughness * transmissionPacked(m).y;
+    // N faces the ray, inside; out of the medium n1/n2 = ior. Past the critical angle the light stays inside.
+    const glm::vec3 N = glm::normalize(s.N);
+    glm::vec3 dir = glm::refract(ray.dir, N, m.ior);
+    const bool inside = !(glm::dot(dir, dir) > 0.0f);
+    dir = inside ? glm::reflect(ray.dir, N) : glm::normalize(dir);
+    // Out of depth or budget: the environment the ray would leave toward, as the rasterizer reads it.
+    if (!scene_.scene().terms.reflections || depth >= maxDepth_ || !admit(weight * absorbed, tree))
+        return absorbed * (env_.lightsPbr() ? env_.prefiltered(dir, roughness) : env_.escaping(dir));
+    const float eps = scene_.epsilon();
+    const Ray next{inside ? s.P + eps * s.Nf : s.P - eps * s.Nf, dir};
+    return absorbed * transmittedRadiance(next, depth + 1, weight * absorbed, tree, roughness);
 }
 
 }  // namespace shadelab::trace

@@ -82,7 +82,18 @@ private:
     PrimarySample primary(const Ray& ray, Tree& tree) const;
     glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree, TreeRayKind kind) const;
     glm::vec3 shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight, Tree& tree) const;
-    glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree) const;
+    // `transmitted`, when given, is the radiance a ray traced through a transmitting pbr surface brought back
+    // (glTF's transmission), read in place of the environment along the transmitted direction.
+    glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree,
+                    const glm::vec3* transmitted = nullptr) const;
+    // Radiance arriving along a ray through a transmitting surface, `depth` bounces from the camera: the object it
+    // meets, shaded, or the environment prefiltered at the transmitted lobe's `roughness` (the rasterizer's lookup).
+    glm::vec3 transmittedRadiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree,
+                                  float roughness) const;
+    // Light leaving a transmitting volume at `hit`, seen from inside along `ray`: absorbed over the way in
+    // (Beer–Lambert), then refracted out by the index (or reflected back in past the critical angle).
+    glm::vec3 leaveVolume(const Ray& ray, const Hit& hit, const Surface& s, int depth, const glm::vec3& weight,
+                          Tree& tree) const;
     // The environment's light `base` on a pbr surface under its clear coat (params.coat): the coat reflects the
     // prefiltered environment at its own normal and roughness, not the objects around it (docs/lighting.md).
     glm::vec3 coatedEnvironment(const glm::vec3& base, const shading::SurfaceParams& params, const glm::vec3& V) const;

@@ -21,6 +21,12 @@ void setPbrLayers(shading::SurfaceParams& p, const Surface& s, const glm::vec3& 
         p.metallic = s.metallic;
         p.ms = shading::pbrSpecularF0(s.baseColor, s.metallic, p.specLayer);
     }
+    if (m.transmission.on()) {  // the diffuse colour split between the diffuse lobe and the transmitted one
+        p.transmission = transmissionPacked(m);
+        p.transmitColor = p.md * m.transmission.factor;
+        p.transmitTint = transmissionTint(m);
+        p.md = p.md * (1.0f - m.transmission.factor);
+    }
     if (m.sheen.on()) {  // its albedo toward the viewer once here, toward each light in shadeLightPbrLayers
         shading::SheenLookup table{&shading::sheenLut()};
         p.sheen = m.sheen.packed();

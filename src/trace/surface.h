@@ -44,6 +44,13 @@ struct Surface {
     glm::vec4 tangent{0.0f};
 };
 
+// The same surface seen from its other side: shadow rays toward a light behind a transmitting surface start there.
+inline Surface underside(const Surface& s) {
+    Surface other = s;
+    other.Nf = -s.Nf;
+    return other;
+}
+
 // How a primary ray's unnormalised direction D = forward + x·right + y·up changes per pixel step of the
 // sampled image (shading::cameraRayDirection): dDdx = (2·tan(fovY/2)/height)·right, dDdy = −(…)·up. With it
 // the tracer selects a texture's mip level from exact ray differentials (Igehy 1999), as the rasterizer does

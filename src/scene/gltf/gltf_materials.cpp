@@ -1,6 +1,7 @@
 // glTF materials → shadelab's Phong materials (docs/gltf-import.md): metallic-roughness by the documented
 // mapping, KHR_materials_pbrSpecularGlossiness, KHR_materials_ior, KHR_materials_clearcoat,
-// KHR_materials_specular, KHR_materials_sheen and KHR_materials_anisotropy when present.
+// KHR_materials_specular, KHR_materials_sheen, KHR_materials_anisotropy, KHR_materials_transmission and
+// KHR_materials_volume when present.
 #include "scene/gltf/gltf_materials.h"
 
 #include "scene/gltf/gltf_import.h"
@@ -107,6 +108,31 @@ Material materialFrom(const tinygltf::Material& gm, const std::string& place, st
                                ".extensions.KHR_materials_anisotropy.anisotropyTexture: not shaded yet; the "
                                "factors alone are");
     }
+    // KHR_materials_transmission: the share of the diffuse light that passes through (pbr). Its texture is not read
+    // yet.
+    auto transmission = gm.extensions.find("KHR_materials_transmission");
+    if (transmission != gm.extensions.end()) {
+        const tinygltf::Value& v = transmission->second;
+        m.transmission.factor = finiteClamp(numberOr(v, "transmissionFactor", 0.0), 0.0f, 1.0f, 0.0f);
+        if (v.IsObject() && v.Has("transmissionTexture"))
+            warnings.push_back(place +
+                               ".extensions.KHR_materials_transmission.transmissionTexture: not shaded yet; the "
+                               "factor alone is");
+    }
+    // KHR_materials_volume: the medium's thickness for the rasterizer and its absorption (pbr, with transmission).
+    // Its thickness texture is not read yet.
+    auto volume = gm.extensions.find("KHR_materials_volume");
+    if (volume != gm.extensions.end()) {
+        const tinygltf::Value& v = volume->second;
+        m.volume.thickness = finiteClamp(numberOr(v, "thicknessFactor", 0.0), 0.0f, kMaxVolumeLength, 0.0f);
+        const double distance = numberOr(v, "attenuationDistance", -1.0);
+        if (distance > 0.0 && distance <= double(kMaxVolumeLength)) m.volume.attenuationDistance = float(distance);
+        m.volume.attenuationColor = colorFrom(numbersOf(v, "attenuationColor"), glm::vec3(1.0f));
+        if (v.IsObject() && v.Has("thicknessTexture"))
+            warnings.push_back(place +
+                               ".extensions.KHR_materials_volume.thicknessTexture: not shaded yet; the factor alone "
+                               "is");
+    }
     auto ior = gm.extensions.find("KHR_materials_ior");
     if (ior != gm.extensions.end()) {
         const double value = numberOr(ior->second, "ior", 1.5);
@@ -149,7 +175,9 @@ std::vector<std::string> unshadedMaterialExtensions(const tinygltf::Model& model
                                                   "KHR_materials_clearcoat",
                                                   "KHR_materials_specular",
                                                   "KHR_materials_sheen",
-                                                  "KHR_materials_anisotropy"};
+                                                  "KHR_materials_anisotropy",
+                                                  "KHR_materials_transmission",
+                                                  "KHR_materials_volume"};
     std::map<std::string, size_t> users;  // extension → materials that use it, in name order
     for (const tinygltf::Material& gm : model.materials)
         for (const auto& [name, value] : gm.extensions)

@@ -31,6 +31,15 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
       specularOn_(terms.specular) {
     const Material& m = *s.material;
     if (model_ == shading::SL_MODEL_PBR) alpha_ = shading::pbrAlpha(s_);
+    const bool transmitting = model_ == shading::SL_MODEL_PBR && params.transmission.x > 0.0f;
+    if (transmitting && m.volume.on() && !s.entering) {
+        // Inside a transmitting volume the light only leaves it, refracted by the index (as the Whitted tracer's
+        // leaveVolume), about a micro-normal of the transmitted lobe.
+        through_ =
+            Through{glm::vec3(1.0f), shading::pbrAlpha(s_ * params.transmission.y), m.ior, true, params.specLayer};
+        pVolume_ = 1.0f;
+        return;
+    }
     const float NoV = std::clamp(glm::dot(N_, V_), 0.0f, 1.0f);
     if (model_ == shading::SL_MODEL_DISNEY) {
         const glm::vec3 X = shading::anisotropyTangent(N_);
@@ -48,7 +57,13 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
 
     // Estimated albedos of each lobe pick the lobe: a sample goes where the light it carries is.
     float diffuse = diffuseOn_ ? luminance(md_) : 0.0f;
-    float specular = 0.0f, coat = 0.0f, sheen = 0.0f;
+    float specular = 0.0f, coat = 0.0f, sheen = 0.0f, transmit = 0.0f;
+    if (transmitting && diffuseOn_) {
+        // glTF's transmission takes its share of the diffuse lobe's light (md here is what stays diffuse).
+        through_ = Through{params.transmitColor, shading::pbrAlpha(s_ * params.transmission.y), params.transmission.z,
+                           false, params.specLayer};
+        transmit = luminance(params.transmitColor * params.transmitTint);
+    }
     if (model_ == shading::SL_MODEL_PBR && params.sheenTable) {
         // glTF's sheen reflects max3(c)·E(N·V) of the light toward the viewer and the base keeps the rest (as the
         // environment's light is split); its fibre normals are sampled by D_Charlie·N·H.
@@ -75,10 +90,12 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
             }
             specular = F;
             diffuse *= 1.0f - std::min(F, 1.0f);
+            transmit *= 1.0f - std::min(F, 1.0f);
             if (sheen > 0.0f) {
                 const float keep = shading::sheenScaling(params.sheen, params.sheenEV, params.sheenEV);
                 diffuse *= keep;
                 specular *= keep;
+                transmit *= keep;
             }
             if (params.coat.x > 0.0f) {
                 // The coat reflects about factor·Fc(Nc·V) of the light and passes the rest to the base.
@@ -88,6 +105,7 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
                 const float w = shading::clearcoatWeight(Nc, V_, params.coat.x);
                 diffuse *= 1.0f - w;
                 specular *= 1.0f - w;
+                transmit *= 1.0f - w;
                 sheen *= 1.0f - w;
                 coat = std::max(w, 0.02f * params.coat.x);
             }
@@ -110,9 +128,16 @@ PathBsdf::PathBsdf(const Surface& s, const shading::SurfaceParams& params, const
             }
         }
     }
+    if (through_) {
+        // Evaluated by the layered function; a volume's light is refracted (sampled alone, never evaluated).
+        if (!layers_) layers_ = params;
+        if (through_->eta > 0.0f) layers_->transmission.x = 0.0f;
+    }
+    const bool thin = through_ && !(through_->eta > 0.0f);
     const float mirror = nonNegative(luminance(kr_)), glass = nonNegative(luminance(kt_));
-    const float total = diffuse + specular + coat + sheen + mirror + glass;
+    const float total = diffuse + specular + coat + sheen + mirror + glass + transmit;
     if (total > 0.0f) {
+        (thin ? pThin_ : pVolume_) = transmit / total;
         pDiffuse_ = diffuse / total;
         pSpecular_ = specular / total;
         pCoat_ = coat / total;
@@ -202,6 +227,8 @@ glm::vec3 PathBsdf::sampleCoat(glm::vec2 u) const {
 }
 
 float PathBsdf::pdf(const glm::vec3& wi) const {
+    // Below the surface only the thin wall's transmitted lobe reaches.
+    if (pThin_ > 0.0f && glm::dot(N_, wi) < 0.0f) return pThin_ * thinPdf(wi);
     float p = 0.0f;
     if (pDiffuse_ > 0.0f) p += pDiffuse_ * cosineHemispherePdf(glm::dot(N_, wi));
     if (pSpecular_ > 0.0f) p += pSpecular_ * specularPdf(wi);
@@ -218,6 +245,48 @@ float PathBsdf::sheenPdf(const glm::vec3& wi) const {
     const float NoH = glm::dot(N_, H);
     if (!(NoH > 0.0f)) return 0.0f;
     return shading::D_Charlie(NoH, sheenAlpha_) * NoH / (4.0f * VoH);
+}
+
+// The thin wall's transmitted lobe: the GGX reflection's visible-normal density at the lobe's α of wi mirrored back
+// above the surface (the mirror keeps solid angle).
+float PathBsdf::thinPdf(const glm::vec3& wi) const {
+    glm::vec3 H;
+    float VoH;
+    if (!halfVector(wi - 2.0f * glm::dot(wi, N_) * N_, H, VoH)) return 0.0f;
+    return ggxVisibleNormalPdf(frame_.toLocal(V_), frame_.toLocal(H), through_->alpha) / (4.0f * VoH);
+}
+
+// Light through a volume's surface, in or out: V refracted about a micro-normal drawn from the transmitted lobe's
+// visible normals, weighted by Smith's G1 of the way on (Heitz 2018's estimator) and, going in, by what the
+// dielectric's Fresnel leaves (1 − max3(Fd), as the diffuse lobe). Leaving past the critical angle the light is
+// reflected back inside.
+std::optional<BsdfSample> PathBsdf::sampleThrough(glm::vec2 u) const {
+    const Through& t = *through_;
+    const glm::vec3 v = frame_.toLocal(V_);
+    if (!(v.z > 0.0f)) return std::nullopt;
+    const glm::vec3 m = frame_.toWorld(sampleGgxVisibleNormal(v, t.alpha, u));
+    BsdfSample out;
+    out.delta = true;
+    const glm::vec3 refracted = glm::refract(-V_, m, t.eta);
+    if (!(glm::dot(refracted, refracted) > 0.0f)) {
+        if (!t.leaving) return std::nullopt;
+        out.wi = glm::normalize(reflectAbout(V_, m));
+        const float cosOut = glm::dot(out.wi, N_);
+        if (!(cosOut > 0.0f) || !(glm::dot(out.wi, Nf_) > 0.0f)) return std::nullopt;
+        out.weight = glm::vec3(ggxG1(cosOut, t.alpha) / pVolume_);
+        return out;
+    }
+    out.wi = glm::normalize(refracted);
+    const float cosOut = -glm::dot(out.wi, N_);
+    if (!(cosOut > 0.0f) || !(glm::dot(out.wi, Nf_) < 0.0f)) return std::nullopt;
+    float keep = 1.0f;
+    if (!t.leaving && specularOn_) {
+        const glm::vec3 Fd = t.layer.w * shading::F_Schlick(glm::vec3(t.layer), std::max(glm::dot(V_, m), 0.0f));
+        keep = 1.0f - std::max(Fd.x, std::max(Fd.y, Fd.z));
+    }
+    out.weight = t.color * (keep * ggxG1(cosOut, t.alpha) / pVolume_);
+    out.transmitted = true;
+    return out;
 }
 
 glm::vec3 PathBsdf::sampleSpecular(glm::vec2 u) const {
@@ -253,18 +322,34 @@ std::optional<BsdfSample> PathBsdf::sample(const glm::vec3& u) const {
         return out;
     }
     pick -= pGlass_;
+    if (pick < pVolume_) return sampleThrough(uv);
+    pick -= pVolume_;
     if (!hasSmooth()) return std::nullopt;
-    if (pick < pDiffuse_)
+    bool below = false;
+    if (pick < pDiffuse_) {
         out.wi = frame_.toWorld(sampleCosineHemisphere(uv));
-    else if (pick < pDiffuse_ + pSpecular_)
+    } else if (pick < pDiffuse_ + pSpecular_) {
         out.wi = sampleSpecular(uv);
-    else if (pick < pDiffuse_ + pSpecular_ + pSheen_)
+    } else if (pick < pDiffuse_ + pSpecular_ + pSheen_) {
         out.wi = reflectAbout(V_, frame_.toWorld(shading::importanceSampleCharlie(uv.x, uv.y, sheenAlpha_)));
-    else
+    } else if (pick < pDiffuse_ + pSpecular_ + pSheen_ + pThin_) {
+        // The thin wall's lobe: a GGX reflection at its α mirrored through the surface.
+        const glm::vec3 v = frame_.toLocal(V_);
+        if (!(v.z > 0.0f)) return std::nullopt;
+        const glm::vec3 r = reflectAbout(V_, frame_.toWorld(sampleGgxVisibleNormal(v, through_->alpha, uv)));
+        out.wi = r - 2.0f * glm::dot(r, N_) * N_;
+        below = true;
+    } else {
         out.wi = sampleCoat(uv);
-    // Directions under the shading or the geometric surface carry nothing back (f is 0 there, or the ray
-    // would start inside the object).
-    if (!(glm::dot(out.wi, N_) > 0.0f) || !(glm::dot(out.wi, Nf_) > 0.0f)) return std::nullopt;
+    }
+    // Directions on the wrong side of the shading or the geometric surface carry nothing back (f is 0 there, or
+    // the ray would start inside the object): above for reflections, below for the thin wall's transmission.
+    if (below) {
+        if (!(glm::dot(out.wi, N_) < 0.0f) || !(glm::dot(out.wi, Nf_) < 0.0f)) return std::nullopt;
+        out.transmitted = true;
+    } else if (!(glm::dot(out.wi, N_) > 0.0f) || !(glm::dot(out.wi, Nf_) > 0.0f)) {
+        return std::nullopt;
+    }
     out.pdf = pdf(out.wi);
     if (!(out.pdf > 0.0f)) return std::nullopt;
     out.weight = evalCos(out.wi) / out.pdf;

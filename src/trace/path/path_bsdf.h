@@ -7,7 +7,10 @@
 // (Burley 2012, Appendix B), its diffuse, subsurface and sheen by the cosine; pbr's clear coat (glTF's
 // KHR_materials_clearcoat) by its own GGX's visible normals around the coat's normal, pbr's sheen
 // (KHR_materials_sheen) by the Charlie distribution's fibre normals; glTF's specular layer changes
-// only pbr's evaluation and its lobes' picking. Mirrors (kr) and glass (kt,
+// only pbr's evaluation and its lobes' picking. glTF's transmission through a thin wall is the GGX lobe mirrored
+// through the surface, sampled by its visible normals as the specular lobe; into a volume it is a refraction about
+// a sampled micro-normal, and out of one a refraction by the index, both delta-like (no light sampling through
+// them; the integrator absorbs along the way inside). Mirrors (kr) and glass (kt,
 // ior, refracted as the Whitted tracer refracts, total internal reflection going to the mirror) are delta
 // lobes. One lobe is picked per sample with probabilities from estimated albedos; pdf() is the mixture's.
 #pragma once
@@ -51,7 +54,10 @@ public:
     std::optional<BsdfSample> sample(const glm::vec3& u) const;
 
     // Whether the non-delta part can scatter at all (light sampling is pointless without it).
-    bool hasSmooth() const { return pDiffuse_ + pSpecular_ + pCoat_ + pSheen_ > 0.0f; }
+    bool hasSmooth() const { return pDiffuse_ + pSpecular_ + pCoat_ + pSheen_ + pThin_ > 0.0f; }
+    // Whether the non-delta part reaches below the surface (glTF's transmission through a thin wall): light behind
+    // it is sampled, from its far side.
+    bool transmits() const { return pThin_ > 0.0f; }
 
 private:
     bool halfVector(const glm::vec3& wi, glm::vec3& H, float& VoH) const;
@@ -66,6 +72,8 @@ private:
         return {glm::dot(v, stretched_->tangentX), glm::dot(v, stretched_->tangentY), glm::dot(v, N_)};
     }
     glm::vec3 sampleSpecular(glm::vec2 u) const;
+    [[gnu::noinline]] float thinPdf(const glm::vec3& wi) const;
+    std::optional<BsdfSample> sampleThrough(glm::vec2 u) const;
     void pickDisneyLobes(float NoV, float& diffuse, float& specular, float& coat) const;
 
     Frame frame_;           // around the unit shading normal
@@ -98,6 +106,16 @@ private:
     };
     std::optional<Clearcoat> clearcoat_;
     float sheenAlpha_ = 0.0f;  // pbr under glTF's sheen: its fibres' α (sheenAlpha)
+    // pbr under glTF's transmission: the transmitted colour (md·t; through a thin wall times the volume's tint of 1)
+    // and the transmitted lobe's GGX α; into a volume η = 1/ior, out of one (`leaving`) η = ior.
+    struct Through {
+        glm::vec3 color;
+        float alpha;
+        float eta;
+        bool leaving;
+        glm::vec4 layer;  // the specular layer (SpecularLayer::packed) whose Fresnel the light gives up
+    };
+    std::optional<Through> through_;
     // pbr with any of glTF's layers (the coat, the specular layer and ior, the sheen): the coefficients
     // shadeLightPbrLayers reads. Absent otherwise.
     std::optional<shading::SurfaceParams> layers_;
@@ -109,6 +127,7 @@ private:
     glm::vec3 refracted_{0.0f};
     // Lobe picking probabilities (sum 1 unless everything is black).
     float pDiffuse_ = 0.0f, pSpecular_ = 0.0f, pCoat_ = 0.0f, pSheen_ = 0.0f, pMirror_ = 0.0f, pGlass_ = 0.0f;
+    float pThin_ = 0.0f, pVolume_ = 0.0f;  // glTF's transmission: the thin wall's lobe, the volume's refraction
 };
 
 }  // namespace shadelab::trace

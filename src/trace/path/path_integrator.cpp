@@ -91,6 +91,10 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
         if (bounce == 0) out.coverage = scene_.coverageId(*hit);
         const Surface s = surfaces_.at(ray, *hit, bounce == 0 ? 0 : 1);
         const Material& m = *s.material;
+        // Leaving a transmitting volume (glTF's volume): what the medium let through on the way (Beer–Lambert; the
+        // ray's direction is unit, so t is the distance).
+        if (s.model == shading::SL_MODEL_PBR && m.transmission.on() && m.volume.on() && !s.entering)
+            beta *= m.volume.transmittance(hit->t);
         if (positive(m.emission)) {
             const float w = prevPdf > 0.0f ? weightBsdf(prevPdf, emitters_.pdfHit(ray, *hit)) : 1.0f;
             add(beta * m.emission * s.emissive * w, scattered);  // s.emissive: the emissive texture, or 1
@@ -105,15 +109,19 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
 
         const glm::vec3 V = -ray.dir;
         const PathBsdf bsdf(s, whitted_.shadingParams(s, V), V, s.model, terms);
-        const glm::vec3 above = s.P + eps * s.Nf;
+        const glm::vec3 above = s.P + eps * s.Nf, below = s.P - eps * s.Nf;
         if (bsdf.hasSmooth()) {
-            // Point, spot and directional lights: the Whitted tracer's terms, π·f·N·L·Il·vis (design.md §7, §8).
+            // Point, spot and directional lights: the Whitted tracer's terms, π·f·N·L·Il·vis (design.md §7, §8). A
+            // light behind a thin transmitting wall is sought from its far side.
             for (const Light& l : sc.lights) {
                 const LightAt at = lightAt(l, s.P);
                 if (!positive(at.Il)) continue;  // outside a spot's cone or a light's range: no shadow ray
-                const glm::vec3 f = bsdf.evalCos(glm::normalize(at.L));
+                const glm::vec3 Ld = glm::normalize(at.L);
+                const glm::vec3 f = bsdf.evalCos(Ld);
                 if (!positive(f)) continue;
-                if (sc.terms.shadows && whitted_.visibility(s, l) <= 0.0f) continue;
+                if (sc.terms.shadows && (glm::dot(Ld, s.Nf) < 0.0f ? whitted_.visibility(underside(s), l)
+                                                                   : whitted_.visibility(s, l)) <= 0.0f)
+                    continue;
                 add(beta * f * kPi * at.Il, scattered + 1);
             }
             // One sample of the emissive objects and the environment, drawn from the shadow ray's own origin:
@@ -124,10 +132,12 @@ PathSample PathIntegrator::trace(const Ray& cameraRay, const SampleRng& rng) con
             if (!emitters_.empty() && settings_.estimator != PathEstimator::Bsdf) {
                 if (const std::optional<EmitterSample> e =
                         emitters_.sample(above, rng.draw(uint32_t(bounce), kGroupEmitter))) {
-                    const glm::vec3 f = glm::dot(e->wi, s.Nf) > 0.0f ? bsdf.evalCos(e->wi) : glm::vec3(0.0f);
+                    const bool down = !(glm::dot(e->wi, s.Nf) > 0.0f);
+                    const glm::vec3 f = !down || bsdf.transmits() ? bsdf.evalCos(e->wi) : glm::vec3(0.0f);
                     if (positive(f)) {
                         const float tMax = e->environment ? INFINITY : e->distance * (1.0f - 1e-3f) - eps;
-                        if (!sc.terms.shadows || !(tMax > 0.0f) || !scene_.occluded(Ray{above, e->wi}, tMax)) {
+                        if (!sc.terms.shadows || !(tMax > 0.0f) ||
+                            !scene_.occluded(Ray{down ? below : above, e->wi}, tMax)) {
                             const glm::vec3 Le = e->environment ? whitted_.environment().escaping(e->wi) : e->Le;
                             const float w = weightLight(e->pdf, bsdf.pdf(e->wi));
                             add(beta * f * Le * (w / e->pdf), scattered + 1);
