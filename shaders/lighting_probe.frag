@@ -13,6 +13,8 @@ uniform sampler2D t_params;   // x: s (pbr, disney: roughness), y: model (0 Phon
                               // its normal
                               // y = 10: pbr under glTF's sheen, t_disney0 its (colour, roughness), t_disney1
                               // its albedos (E at N·V, E at N·L)
+                              // y = 11: pbr under glTF's transmission, t_disney0 its specular layer (f0d,
+                              // weight), t_disney1 (transmissionPacked's factor, roughness scale, η; the tint)
                               // y = 9: a spot light's intensity instead: N the spot's direction, L the light
                               // vector, V its attenuation (kc, kl, kq), x, z its cone scale and offset, w its range
 uniform sampler2D t_disney0;  // disney: (subsurface, specular, specularTint, anisotropic)
@@ -62,6 +64,20 @@ void main() {
         vec3 base = shadeLight(N, L, V, u_Il, pbrDiffuseColor(u_md, params.z), pbrF0(u_md, params.z), params.x,
                                SL_MODEL_PBR, true, true);
         o_result = vec4(sheenLight(base, N, L, V, u_Il, sheen, E.x, E.y, true), sheenLobe(N, L, V, sheen.w));
+        return;
+    }
+    if (model == 11) {
+        // u_md is the base colour; w: the environment through (of a radiance 0.7) plus half the direction's y.
+        vec4 layer = texelFetch(t_disney0, p, 0);
+        vec4 t = texelFetch(t_disney1, p, 0);
+        vec3 md = pbrDiffuseColor(u_md, params.z);
+        vec3 tc = md * t.x;
+        vec3 I = shadeLightPbrSpecular(N, L, V, u_Il, md * (1.0f - t.x), u_md, params.z, params.x, layer, vec4(0.0f),
+                                       true, true, vec3(1.0f)) +
+                 transmissionLight(N, L, V, u_Il, tc, vec3(t.w), layer, params.x * t.y, true, true);
+        vec4 tp = vec4(t.x, t.y, t.z, 0.0f);
+        float through = transmissionEnvironment(tc, vec3(0.7f), layer, vec2(params.x, params.z), true, true).y;
+        o_result = vec4(I, through + 0.5f * transmissionDirection(N, V, tp).y);
         return;
     }
     if (model == SL_MODEL_DISNEY) {

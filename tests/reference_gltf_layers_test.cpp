@@ -38,6 +38,8 @@ struct CoatCase {
     float ior = 1.5f;
     Sheen sheen{};
     Anisotropy anisotropy{};
+    Transmission transmission{};
+    Volume volume{};
 };
 
 void setCoated(Material& m, const CoatCase& c) {
@@ -49,6 +51,8 @@ void setCoated(Material& m, const CoatCase& c) {
     m.ior = c.ior;
     m.sheen = c.sheen;
     m.anisotropy = c.anisotropy;
+    m.transmission = c.transmission;
+    m.volume = c.volume;
 }
 
 Scene makeCoatScene(const CoatCase& c) {
@@ -103,6 +107,20 @@ std::vector<CoatCase> allCoatCases() {
         {false, false, "aniso_metal", 0.35f, 1.0f, {}, {}, 1.5f, {}, Anisotropy{0.8f, 0.0f}},
         {false, false, "aniso_turned_plastic", 0.3f, 0.0f, {}, {}, 1.5f, {}, Anisotropy{0.6f, 1.0f}},
         {false, false, "aniso_under_coat", 0.4f, 1.0f, Clearcoat{1.0f, 0.05f}, {}, 1.5f, {}, Anisotropy{1.0f, -0.5f}},
+        {false, false, "transmit_thin", 0.4f, 0.0f, {}, {}, 1.5f, {}, {}, Transmission{1.0f}},
+        {false,
+         false,
+         "transmit_half_volume",
+         0.3f,
+         0.0f,
+         {},
+         {},
+         1.4f,
+         {},
+         {},
+         Transmission{0.5f},
+         Volume{1.0f, 0.8f, {0.9f, 0.5f, 0.3f}}},
+        {false, false, "transmit_under_coat", 0.6f, 0.0f, Clearcoat{1.0f, 0.1f}, {}, 1.5f, {}, {}, Transmission{0.8f}},
     };
     std::vector<CoatCase> cases;
     for (bool mesh : {false, true})
@@ -189,13 +207,38 @@ TEST_F(ReferenceGltfLayerControls, AnisotropyChangesFail) {
     expectChangeFails(c, "anisotropy_dropped", [](Material& m) { m.anisotropy.strength = 0.0f; });
 }
 
+// The gates see the light through: 10 % less transmission, the volume's tint dropped, or no transmission at all in
+// one renderer (three lights: one of them behind the spheres).
+TEST_F(ReferenceGltfLayerControls, TransmissionChangesFail) {
+    const CoatCase c{false,
+                     true,
+                     "transmission",
+                     0.4f,
+                     0.0f,
+                     {},
+                     {},
+                     1.5f,
+                     {},
+                     {},
+                     Transmission{0.8f},
+                     Volume{1.0f, 1.0f, {0.9f, 0.4f, 0.2f}}};
+    expectChangeFails(c, "transmission_minus_10pct", [](Material& m) { m.transmission.factor = 0.72f; });
+    expectChangeFails(c, "transmission_tint_dropped", [](Material& m) { m.volume.attenuationColor = glm::vec3(1.0f); });
+    expectChangeFails(c, "transmission_dropped", [](Material& m) { m.transmission.factor = 0.0f; });
+}
+
 // Image-based light: the coat reflects the prefiltered sky at its own roughness in both renderers, with and
 // without a light, a specular layer with an index of 2.4 reads it too, and so does a sheen at its own roughness;
 // the coat dropped, pbr's own F0, or the sheen dropped, in one renderer fails (negative controls).
 TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
     static const auto sky = loadPrefilteredHdr(test::sourcePath("assets/environments/sky.hdr"));
-    for (int variant = 0; variant < 5; ++variant) {
+    for (int variant = 0; variant < 7; ++variant) {
         const bool light = variant == 1, layer = variant == 2, sheen = variant == 3, aniso = variant == 4;
+        // Transmission: a clear ball of index 1 in the sky (light passes straight through both renderers' ways: the
+        // rasterizer's lookup along −V, the Whitted tracer's ray in and out), and a clear glass ball in a uniform
+        // environment (any way through reads the same radiance). The rasterizer does not see a thin shell's far
+        // side, which the Whitted tracer shades: no thin shell here (the local terms above hold it).
+        const bool thin = variant == 5, volume = variant == 6;
         Scene scene;
         scene.camera.position = {0.0f, 0.8f, 3.6f};
         scene.camera.target = {0.0f, 0.0f, 0.0f};
@@ -206,10 +249,22 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         env.map = sky;
         env.rotation = 30.0f;
         scene.environment = env;
+        if (volume) {
+            scene.environment = Environment{};
+            scene.background = glm::vec3(0.6f, 0.7f, 0.9f);
+        }
+        if (thin || volume) scene.maxDepth = 8;
         Material m;
         m.baseColor = glm::vec3(0.5f, 0.02f, 0.01f);
         m.roughness = 0.45f;
-        m.clearcoat = Clearcoat{layer || sheen || aniso ? 0.0f : 1.0f, 0.05f};
+        m.clearcoat = Clearcoat{layer || sheen || aniso || thin || volume ? 0.0f : 1.0f, 0.05f};
+        if (thin || volume) {
+            m.baseColor = glm::vec3(0.9f, 0.95f, 1.0f);
+            m.roughness = 0.2f;
+            m.transmission.factor = 1.0f;
+            m.volume.thickness = 2.0f;
+            m.ior = thin ? 1.0f : 1.5f;
+        }
         if (aniso) {
             m.baseColor = glm::vec3(0.9f, 0.9f, 0.92f);
             m.metallic = 1.0f;
@@ -228,10 +283,12 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         }
         scene.spheres.push_back({"", glm::vec3(0.0f), 1.0f, m});
         if (light) scene.lights.push_back(test::pointLight({-3.0f, 4.0f, 3.0f}, glm::vec3(2.0f)));
-        const std::string name = layer   ? "specular_layer_sky"
-                                 : sheen ? "sheen_sky"
-                                 : aniso ? "anisotropy_sky"
-                                         : std::string("clearcoat_sky") + (light ? "_light" : "");
+        const std::string name = layer    ? "specular_layer_sky"
+                                 : sheen  ? "sheen_sky"
+                                 : aniso  ? "anisotropy_sky"
+                                 : thin   ? "transmission_index_1_sky"
+                                 : volume ? "transmission_volume_uniform"
+                                          : std::string("clearcoat_sky") + (light ? "_light" : "");
         CompareResult r = compareRenders(scene, scene, name);
         EXPECT_TRUE(r.pass) << name << "\n" << compareSummary(r);
         Scene bare = scene;
@@ -240,6 +297,9 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         bare.spheres[0].material.ior = 1.5f;
         bare.spheres[0].material.sheen = Sheen{};
         bare.spheres[0].material.anisotropy = Anisotropy{};
+        bare.spheres[0].material.transmission = Transmission{};
+        // In a uniform environment the light through a ball and its diffuse light are the same radiance: no control.
+        if (volume) continue;
         CompareResult control = compareRenders(scene, bare, "negative_" + name);
         EXPECT_FALSE(control.pass) << name << ": the coat dropped in one renderer passed:\n" << compareSummary(control);
     }

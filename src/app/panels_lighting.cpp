@@ -74,7 +74,9 @@ void drawLightingSection(PanelContext& ctx) {
         if (ImGui::Checkbox(kTermNames[i].name, &on)) setTerm(s, t, on);
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("raster: shadow maps, mirror planes, environment cubes; transmission (kt): reference only");
+    ImGui::TextWrapped(
+        "raster: shadow maps, mirror planes, environment cubes; transmission (kt): reference only; glTF "
+        "transmission: the environment only");
     ImGui::PopStyleColor();
 
     ImGui::TextDisabled("Progression (keys 0-5)");

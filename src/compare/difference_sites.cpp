@@ -40,6 +40,8 @@ std::string likelyCause(const Scene& scene, const CoveredObject& o) {
     const Material& m = *o.material;
     const bool reflections = scene.terms.reflections;
     if (reflections && any(m.kt)) return "transmission, which only the reference draws";
+    if (reflections && modelOf(m, scene.model) == ShadingModel::Pbr && m.transmission.on())
+        return "glTF transmission, which the rasterizer reads from the environment alone";
     if (reflections && any(m.kr) && !o.plane) return "its reflection comes from an environment cube";
     if (scene.terms.shadows && !scene.lights.empty()) return "mostly shadow-map edges";
     return "";

@@ -305,6 +305,35 @@ TEST(SceneJson, AnisotropyReadsRoundTripsAndPacks) {
     EXPECT_NEAR(p.z, std::sin(-1.25f), 1e-7f);
 }
 
+// glTF's transmission and volume: read, saved only where there are any (an infinite attenuation distance left out),
+// read back exactly, also as a mesh's override; under pbr they make the material layered, and a volume alone (no
+// transmission) does not (control).
+TEST(SceneJson, TransmissionAndVolumeReadAndRoundTrip) {
+    Scene s = parse(R"({"model": "pbr", "objects": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"transmission": {"factor": 0.875},
+         "volume": {"thickness": 2, "attenuationDistance": 0.5, "attenuationColor": [0.25, 0.5, 1]}}},
+        {"type": "sphere", "center": [3, 1, 0], "radius": 1, "material": {"volume": {"thickness": 1}}},
+        {"type": "mesh", "source": "torus.gltf", "material": {"transmission": {"factor": 0.5}}}]})");
+    EXPECT_EQ(s.spheres[0].material.transmission, Transmission{0.875f});
+    EXPECT_EQ(s.spheres[0].material.volume, (Volume{2.0f, 0.5f, {0.25f, 0.5f, 1.0f}}));
+    EXPECT_TRUE(usesLayeredPbr(s.spheres[0].material));
+    EXPECT_FALSE(usesLayeredPbr(s.spheres[1].material));
+    EXPECT_TRUE(std::isinf(s.spheres[1].material.volume.attenuationDistance));
+    EXPECT_EQ(s.meshes[0].material.transmission.factor, 0.5f);
+    expectRoundTrip(s);
+    const std::string saved = sceneToJson(s);
+    EXPECT_EQ(saved.find("inf"), std::string::npos) << saved;
+    size_t count = 0;
+    for (size_t at = saved.find("\"transmission\""); at != std::string::npos;
+         at = saved.find("\"transmission\"", at + 1))
+        ++count;
+    EXPECT_EQ(count, 2u) << saved;  // the sphere's and the override; none where there is none
+    // The packing: the factor, the lobe's roughness scale from the index, η into the volume; its tint over 2.
+    const glm::vec4 p = transmissionPacked(s.spheres[0].material);
+    EXPECT_EQ(p, glm::vec4(0.875f, 1.0f, 1.0f / 1.5f, 0.0f));
+    EXPECT_NEAR(transmissionTint(s.spheres[0].material).y, 0.5f * 0.5f * 0.5f * 0.5f, 1e-6f);
+}
+
 // The largest float is saved as its shortest text, 3.4028235e+38, a double just above FLT_MAX that rounds to it:
 // it loads again (found by the scene fuzzer); a number past the rounding boundary is still refused (control).
 TEST(SceneJson, TheLargestFloatSavedLoadsAgain) {

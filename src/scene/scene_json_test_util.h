@@ -55,6 +55,10 @@ struct Diff {
             f(p + ".sheen.roughness", a.sheen.roughness, b.sheen.roughness);
         f(p + ".anisotropy.strength", a.anisotropy.strength, b.anisotropy.strength);
         f(p + ".anisotropy.rotation", a.anisotropy.rotation, b.anisotropy.rotation);
+        f(p + ".transmission.factor", a.transmission.factor, b.transmission.factor);
+        f(p + ".volume.thickness", a.volume.thickness, b.volume.thickness);
+        f(p + ".volume.attenuationDistance", a.volume.attenuationDistance, b.volume.attenuationDistance);
+        v(p + ".volume.attenuationColor", a.volume.attenuationColor, b.volume.attenuationColor);
         eq(p + ".model", a.model, b.model);
     }
     void materialOverride(const std::string& p, const MaterialOverride& a, const MaterialOverride& b) {
@@ -74,6 +78,10 @@ struct Diff {
         opt(p + ".sheen.roughness", a.sheen.roughness, b.sheen.roughness, ff);
         opt(p + ".anisotropy.strength", a.anisotropy.strength, b.anisotropy.strength, ff);
         opt(p + ".anisotropy.rotation", a.anisotropy.rotation, b.anisotropy.rotation, ff);
+        opt(p + ".transmission.factor", a.transmission.factor, b.transmission.factor, ff);
+        opt(p + ".volume.thickness", a.volume.thickness, b.volume.thickness, ff);
+        opt(p + ".volume.attenuationDistance", a.volume.attenuationDistance, b.volume.attenuationDistance, ff);
+        opt(p + ".volume.attenuationColor", a.volume.attenuationColor, b.volume.attenuationColor, vv);
     }
 };
 

@@ -34,6 +34,13 @@ inline bool usesSheen(const Scene& scene) {
                        [](const Material& m, ShadingModel own) { return own == ShadingModel::Pbr && m.sheen.on(); });
 }
 
+// Whether any object of `scene` is shaded with pbr under glTF's transmission (the tracers weigh the light through it
+// by the DFG table, with or without an environment).
+inline bool usesTransmission(const Scene& scene) {
+    return anyMaterial(
+        scene, [](const Material& m, ShadingModel own) { return own == ShadingModel::Pbr && m.transmission.on(); });
+}
+
 // Whether any object of `scene` is shaded with a microfacet model (pbr or disney): those read the DFG table and
 // take the environment's light.
 inline bool usesPhysicallyBased(const Scene& scene) {

@@ -16,7 +16,8 @@ namespace shadelab::trace {
 EnvironmentLight::EnvironmentLight(const Scene& scene) : uniform_(scene.background) {
     // The DFG table costs tens of milliseconds the first time: only pbr scenes that read it compute it.
     const bool pbr = usesPhysicallyBased(scene);  // the scene's model, or any material's own
-    if (pbr && (scene.environment || scene.energyCompensation)) lookup_.dfg = &shading::dfgLut();
+    if (pbr && (scene.environment || scene.energyCompensation || usesTransmission(scene)))
+        lookup_.dfg = &shading::dfgLut();
     if (!scene.environment) return;
     const Environment& e = *scene.environment;
     lightsPbr_ = pbr;

@@ -110,11 +110,11 @@ def test_disney_parameters_edit_in_place_and_change_that_object_alone(pbr_defaul
 
 
 def test_a_material_extension_not_shaded_is_a_warning(tmp_path):
-    # glTF's transmission is not shaded yet; the clear coat is (control: its asset loads without a warning).
-    path = tmp_path / "transmission.gltf"
+    # glTF's iridescence is not shaded yet; the clear coat is (control: its asset loads without a warning).
+    path = tmp_path / "iridescence.gltf"
     path.write_text('{"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0, "materials": '
-                    '[{"extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}}}]}')
-    with pytest.warns(shadelab.ShadelabWarning, match=r"KHR_materials_transmission is not shaded"):
+                    '[{"extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 1}}}]}')
+    with pytest.warns(shadelab.ShadelabWarning, match=r"KHR_materials_iridescence is not shaded"):
         try:
             shadelab.Scene.load(str(path))
         except shadelab.InputError:
@@ -165,6 +165,27 @@ def test_the_sheen_edits_in_place_under_pbr(pbr_default):
     with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.sheen\.roughness: must be in \[0, 1\]"):
         material.sheen.roughness = 1.5
     assert pbr_default.objects[0].material.sheen.roughness == 0.3  # nothing lost
+
+
+def test_transmission_and_volume_edit_in_place_under_pbr(pbr_default):
+    material = pbr_default.objects[0].material
+    assert material.transmission.factor == 0.0 and material.volume.thickness == 0.0  # none by default
+    assert "attenuationDistance" not in pbr_default.to_dict()["objects"][0]["material"]["volume"]  # infinite
+    before = shadelab.render(pbr_default, (160, 90), coverage=True)
+    material.transmission.factor = 1.0
+    material.volume.thickness = 1.0
+    material.volume.attenuationDistance = 0.5
+    material.volume.attenuationColor = (0.2, 0.6, 0.3)
+    after = np.asarray(shadelab.render(pbr_default, (160, 90)))
+    cov = np.asarray(before.coverage)
+    pixels = np.asarray(before)
+    assert not np.array_equal(pixels[cov == 1], after[cov == 1])
+    assert np.array_equal(pixels[cov == 2], after[cov == 2])  # control: another sphere is untouched
+    saved = pbr_default.to_dict()["objects"][0]["material"]
+    assert saved["transmission"]["factor"] == 1.0 and saved["volume"]["attenuationDistance"] == 0.5
+    with pytest.raises(shadelab.InputError, match=r"objects\[0\]\.material\.transmission\.factor: must be in \[0, 1\]"):
+        material.transmission.factor = 2
+    assert pbr_default.objects[0].material.transmission.factor == 1.0  # nothing lost
 
 
 def test_layers_another_model_hides_are_said_once():

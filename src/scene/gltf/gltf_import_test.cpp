@@ -2,6 +2,7 @@
 // Generator files from Debian's assimp-testmodels, broken files, and tiny glTFs written by the tests.
 #include "scene/gltf/gltf_test_util.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -366,22 +367,22 @@ TEST(GltfImport, TwoCylinderEngineImportsWhole) {
 }
 
 // A material extension that is not shaded is said once per file, not dropped in silence (here two materials
-// with a sheen); one that is shaded, the clear coat, is not mentioned and is read (factor, roughness, and its
+// with iridescence); one that is shaded, the clear coat, is not mentioned and is read (factor, roughness, and its
 // maps on ClearCoatTest, the one layered Khronos asset Debian ships). Control: a model without either says
 // nothing of the kind.
 TEST(GltfImport, AMaterialExtensionNotShadedIsSaidOnceAndTheClearcoatIsRead) {
-    const std::string sheen = R"({"extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})";
+    const std::string sheen = R"({"extensions":{"KHR_materials_iridescence":{"iridescenceFactor":1}}})";
     const std::string path = writeGltf(
         "layers.gltf", quad(), R"([{"mesh":0}])", "[0]",
         R"(,"materials":[)" + sheen + "," + sheen +
             R"(,{"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":0.75,"clearcoatRoughnessFactor":0.2}}}])");
     const GltfImport g = importGltf(path);
     const auto lines = std::count_if(g.warnings.begin(), g.warnings.end(), [](const std::string& w) {
-        return contains(w, "KHR_materials_transmission is not shaded");
+        return contains(w, "KHR_materials_iridescence is not shaded");
     });
     EXPECT_EQ(lines, 1);
     EXPECT_TRUE(
-        anyWarningContains(g, "KHR_materials_transmission is not shaded (2 materials use it): rendered without it"));
+        anyWarningContains(g, "KHR_materials_iridescence is not shaded (2 materials use it): rendered without it"));
     EXPECT_FALSE(anyWarningContains(g, "KHR_materials_clearcoat"));
     REQUIRE_MODELS();
     const GltfImport coated = importGltf(model("glTF2/ClearCoat-glTF/ClearCoatTest.gltf"));
@@ -480,6 +481,31 @@ TEST(GltfImport, AnisotropyIsRead) {
     int none = 0, coatTangents = 0;
     tangentsOf("clearcoat_grid.gltf", none, coatTangents);
     EXPECT_EQ(coatTangents, 0);
+}
+
+// KHR_materials_transmission and KHR_materials_volume: the factor, the thickness, the attenuation distance and
+// colour are read, and neither is said to be not shaded; their textures are said not to be read. Control: a
+// volume with no distance absorbs nothing (infinite).
+TEST(GltfImport, TransmissionAndVolumeAreRead) {
+    const std::string path = quadWithMaterial(
+        "transmission.gltf",
+        R"([{"extensions":{"KHR_materials_transmission":{"transmissionFactor":0.75,"transmissionTexture":{"index":0}},)"
+        R"("KHR_materials_volume":{"thicknessFactor":0.5,"attenuationDistance":2.5,)"
+        R"("attenuationColor":[0.5,0.25,1],"thicknessTexture":{"index":0}}}},)"
+        R"({"extensions":{"KHR_materials_volume":{"thicknessFactor":1}}}])");
+    const GltfImport g = importGltf(path);
+    ASSERT_GE(g.parts.size(), 1u);
+    const Material& m = g.parts[0].material;
+    EXPECT_EQ(m.transmission, Transmission{0.75f});
+    EXPECT_EQ(m.volume, (Volume{0.5f, 2.5f, {0.5f, 0.25f, 1.0f}}));
+    EXPECT_FALSE(anyWarningContains(g, "KHR_materials_transmission is not shaded"));
+    EXPECT_FALSE(anyWarningContains(g, "KHR_materials_volume is not shaded"));
+    EXPECT_TRUE(anyWarningContains(g, "KHR_materials_transmission.transmissionTexture: not shaded yet"));
+    EXPECT_TRUE(anyWarningContains(g, "KHR_materials_volume.thicknessTexture: not shaded yet"));
+    Volume defaults;
+    defaults.thickness = 1.0f;
+    EXPECT_TRUE(std::isinf(defaults.attenuationDistance));
+    EXPECT_EQ(defaults.transmittance(5.0f), glm::vec3(1.0f));
 }
 
 // Buffer URIs that leave the model's folder (../ or absolute) are refused unless allowed.

@@ -103,16 +103,17 @@ inline Chi2Result chi2Directions(const std::function<std::optional<glm::vec3>(in
 }
 
 // A scattering mixture's sample() (sample k drawing sampleNumbers(k, seed)) against `claimed`'s pdf() over the
-// upper hemisphere, kChi2Samples samples, each bin's expected count integrated on `sub` × `sub` cells: the lobe
-// tests' χ² of a whole BSDF (PathBsdf), `claimed` the same BSDF or a wrong one for a negative control.
+// upper hemisphere (the whole sphere for a mixture that also transmits, `sphere`), kChi2Samples samples, each bin's
+// expected count integrated on `sub` × `sub` cells: the lobe tests' χ² of a whole BSDF (PathBsdf), `claimed` the
+// same BSDF or a wrong one for a negative control.
 template <class Bsdf>
-Chi2Result chi2OfMixture(const Bsdf& sampled, const Bsdf& claimed, uint32_t seed, int sub = 24) {
+Chi2Result chi2OfMixture(const Bsdf& sampled, const Bsdf& claimed, uint32_t seed, int sub = 24, bool sphere = false) {
     return chi2Directions(
         [&](int k) -> std::optional<glm::vec3> {
             const auto b = sampled.sample(sampleNumbers(k, seed));
             return b ? std::optional<glm::vec3>(b->wi) : std::nullopt;
         },
-        [&](const glm::vec3& w) { return w.z > 0.0f ? claimed.pdf(w) : 0.0f; }, kChi2Samples, 20, 40, sub);
+        [&](const glm::vec3& w) { return sphere || w.z > 0.0f ? claimed.pdf(w) : 0.0f; }, kChi2Samples, 20, 40, sub);
 }
 
 }  // namespace shadelab::trace::test
