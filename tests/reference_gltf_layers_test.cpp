@@ -356,7 +356,8 @@ TEST_F(ReferenceGltfLayerControls, KhronosClearCoatTestMatchesAndShowsItsCoat) {
 // IORTestGrid): each loads with no warning, renders the same in both renderers under pbr, and shows its layer: the
 // grid with every layer stripped in one renderer fails the gates (negative control).
 TEST_F(ReferenceGltfLayerControls, LayerGridsMatchAndShowTheirLayers) {
-    for (const char* name : {"clearcoat_grid", "sheen_grid", "ior_grid", "specular_grid", "anisotropy_grid"}) {
+    for (const char* name : {"clearcoat_grid", "sheen_grid", "ior_grid", "specular_grid", "anisotropy_grid",
+                             "transmission_grid", "attenuation_grid"}) {
         static std::vector<std::string> warnings;
         warnings.clear();
         Scene scene = loadScene(test::sourcePath(std::string("assets/models/layers/") + name + ".gltf"),
@@ -373,6 +374,8 @@ TEST_F(ReferenceGltfLayerControls, LayerGridsMatchAndShowTheirLayers) {
                 p.material.specular = SpecularLayer{};
                 p.material.ior = 1.5f;
                 p.material.anisotropy = Anisotropy{};
+                p.material.transmission = Transmission{};
+                p.material.volume = Volume{};
             }
         CompareResult control = compareRenders(scene, bare, std::string("negative_grid_") + name, 320, 180);
         EXPECT_FALSE(control.pass) << name << ": the grid without its layers passed the gates:\n"

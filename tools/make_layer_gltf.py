@@ -13,6 +13,11 @@ states its values, a directional KHR_lights_punctual light and a camera that fra
                           specularColorFactor white, red, 2x white (rows), at ior 1.5
     anisotropy_grid.gltf  KHR_materials_anisotropy: anisotropyStrength 0, 0.25, 0.5, 0.75, 1 (columns) x
                           anisotropyRotation 0, pi/4, pi/2 (rows), a steel of roughness 0.35
+    transmission_grid.gltf  KHR_materials_transmission: transmissionFactor 0, 0.25, 0.5, 0.75, 1 (columns) x
+                          roughness 0, 0.2, 0.5 (rows), thin walls of a pale blue
+    attenuation_grid.gltf KHR_materials_volume: attenuationDistance 0.1, 0.3, 1, 3 and none (columns) x
+                          attenuationColor orange, green, blue (rows), fully transmitting balls of index 1.5 and
+                          roughness 0.1 as thick as they are wide (0.8)
 Grid rows run down the image (+y up, the first row on top), columns left to right. Deterministic: the same bytes
 on every run (tests/CMakeLists.txt's layer_assets_reproducible compares them with assets/models/layers/).
 Regenerate with
@@ -143,13 +148,37 @@ def anisotropy_grid():
                 [0.0, 0.25, 0.5, 0.75, 1.0], material)
 
 
+def transmission_grid():
+    def material(rough, factor):
+        return {"name": f"transmission {factor} roughness {rough}", "pbrMetallicRoughness": pbr((0.8, 0.9, 1.0), rough),
+                "extensions": {"KHR_materials_transmission": {"transmissionFactor": factor}}}
+    return grid("KHR_materials_transmission: factor x roughness", [0.0, 0.2, 0.5], [0.0, 0.25, 0.5, 0.75, 1.0],
+                material)
+
+
+def attenuation_grid():
+    colours = [("orange", (1.0, 0.5, 0.1)), ("green", (0.3, 0.9, 0.4)), ("blue", (0.2, 0.4, 1.0))]
+
+    def material(colour, distance):
+        name, rgb = colour
+        volume = {"thicknessFactor": 2 * RADIUS, "attenuationColor": list(rgb)}
+        if distance is not None:
+            volume["attenuationDistance"] = distance
+        return {"name": f"attenuation {name} distance {distance if distance is not None else 'none'}",
+                "pbrMetallicRoughness": pbr((1.0, 1.0, 1.0), 0.1),
+                "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                               "KHR_materials_volume": volume}}
+    return grid("KHR_materials_volume: attenuation distance x colour", colours, [0.1, 0.3, 1.0, 3.0, None], material)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--output", required=True, help="folder to write the grids into (created)")
     args = ap.parse_args()
     os.makedirs(args.output, exist_ok=True)
     for name, doc in [("clearcoat_grid", clearcoat_grid()), ("sheen_grid", sheen_grid()), ("ior_grid", ior_grid()),
-                      ("specular_grid", specular_grid()), ("anisotropy_grid", anisotropy_grid())]:
+                      ("specular_grid", specular_grid()), ("anisotropy_grid", anisotropy_grid()),
+                      ("transmission_grid", transmission_grid()), ("attenuation_grid", attenuation_grid())]:
         path = os.path.join(args.output, name + ".gltf")
         tmp = path + ".tmp"
         with open(tmp, "w") as f:
