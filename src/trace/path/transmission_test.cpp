@@ -126,9 +126,10 @@ TEST(TransmissionVolume, BeerLambertThroughTheCentreMatchesTheClosedForm) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(whitted[c], expected[c], 1e-4f) << "Whitted, channel " << c;
     const test::PathRun r = test::pathRun(scene, test::small(8, 8, 16, 8));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.mean[c], expected[c], 2e-3) << "path, channel " << c;
-    std::printf("Beer-Lambert through the centre: expected (%.5f %.5f %.5f), Whitted (%.5f %.5f %.5f), path (%.5f "
-                "%.5f %.5f)\n",
-                expected.x, expected.y, expected.z, whitted.x, whitted.y, whitted.z, r.mean.x, r.mean.y, r.mean.z);
+    std::printf(
+        "Beer-Lambert through the centre: expected (%.5f %.5f %.5f), Whitted (%.5f %.5f %.5f), path (%.5f "
+        "%.5f %.5f)\n",
+        expected.x, expected.y, expected.z, whitted.x, whitted.y, whitted.z, r.mean.x, r.mean.y, r.mean.z);
     if (::testing::Test::HasFailure()) test::writeEvidence("transmission_beer_lambert", r.render->image());
 
     // The rasterizer's approximation (no ray traced: reflections off) absorbs over the thickness alone.
