@@ -227,6 +227,41 @@ TEST(AppState, ProbePbrSheenPartsSumToTheLayeredShading) {
     EXPECT_GT(glm::length(p.totalPbr - bare.totalPbr), 1e-3f) << "control: the sheen changes the total";
 }
 
+// glTF's transmission in the probe: a light behind a transmitting sphere shines through it, listed as its own part;
+// the parts still sum to the pbr total, the report carries it, and without the transmission the total changes
+// (control).
+TEST(AppState, ProbePbrTransmissionIsTheLightThrough) {
+    ViewerState s = defaultState();
+    setModel(s, ShadingModel::Pbr);
+    s.scene.terms.shadows = false;  // the sphere itself would hide the light behind it
+    const int w = 640, h = 360;
+    const uint32_t green = idOf(s, "matte green");
+    Sphere& sphere = s.scene.spheres[green - 1];
+    sphere.material.roughness = 0.5f;
+    sphere.material.transmission = Transmission{0.8f};
+    Light back;
+    back.name = "behind";
+    back.position = sphere.center - 4.0f * glm::normalize(s.scene.camera.position - sphere.center);
+    back.color = glm::vec3(1.0f);
+    s.scene.lights.push_back(back);
+    const glm::ivec2 px = pixelOf(s.scene, w, h, sphere.center);
+    const ProbeResult p = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    ASSERT_TRUE(p.hit);
+    glm::vec3 sum = p.ambient;
+    for (const ProbeLight& l : p.lights)
+        sum += l.diffusePbr + l.specularPbr + l.transmissionPbr + l.sheenPbr + l.clearcoatPbr;
+    EXPECT_NEAR(glm::length(p.totalPbr - sum), 0.0f, 1e-5f);
+    const ProbeLight& behind = p.lights.back();
+    EXPECT_LT(behind.NoL, 0.0f);
+    EXPECT_GT(behind.transmissionPbr.y, 1e-3f) << "the light behind shines through";
+    EXPECT_EQ(behind.diffusePbr, glm::vec3(0.0f));
+    const nlohmann::json j = nlohmann::json::parse(probeReportJson(p, s.scene, green));
+    EXPECT_NEAR(j["lights"][p.lights.size() - 1]["transmission_pbr"][1].get<float>(), behind.transmissionPbr.y, 1e-6f);
+    sphere.material.transmission = Transmission{};
+    const ProbeResult bare = probePixel(trace::TraceScene(s.scene), w, h, px.x, px.y);
+    EXPECT_GT(glm::length(p.totalPbr - bare.totalPbr), 1e-3f) << "control: the transmission changes the total";
+}
+
 TEST(AppState, ProbePbrColumnEqualsSharedShading) {
     ViewerState s = defaultState();
     setModel(s, ShadingModel::Pbr);

@@ -82,7 +82,12 @@ void lightTable(const ProbeResult& p, bool shadows, ShadingModel shown) {
         for (size_t i = 0; i < p.lights.size(); ++i) {
             ImGui::TableSetColumnIndex(int(i) + 1);
             const ProbeLight& l = p.lights[i];
-            ImGui::TextUnformatted(l.NoL <= 0.0f ? "faces away" : l.visibility > 0.0f ? "yes" : "no: in shadow");
+            // A light behind a transmitting pbr surface shines through it when nothing blocks it.
+            const bool through = shown == ShadingModel::Pbr && p.material.transmission.on() && l.NoL < 0.0f;
+            ImGui::TextUnformatted(through         ? (l.visibility > 0.0f ? "behind: through" : "behind, in shadow")
+                                   : l.NoL <= 0.0f ? "faces away"
+                                   : l.visibility > 0.0f ? "yes"
+                                                         : "no: in shadow");
         }
     }
     if (disney) {
@@ -94,6 +99,7 @@ void lightTable(const ProbeResult& p, bool shadows, ShadingModel shown) {
     } else if (pbr) {
         rgbRow("diffuse (1-F)", &ProbeLight::diffusePbr);
         rgbRow("spec pi·DVF·N·L", &ProbeLight::specularPbr);
+        if (p.material.transmission.on()) rgbRow("through (transmission)", &ProbeLight::transmissionPbr);
         if (p.material.sheen.on()) rgbRow("sheen (Charlie)", &ProbeLight::sheenPbr);
         if (p.material.clearcoat.factor > 0.0f) rgbRow("clear coat", &ProbeLight::clearcoatPbr);
     } else {
@@ -115,7 +121,8 @@ void totalsTable(const ProbeResult& p, ShadingModel current, Encoding encoding) 
                      {"pbr", ShadingModel::Pbr},
                      {"disney", ShadingModel::Disney}};
     for (const ProbeLight& l : p.lights) {
-        cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse, cols[2].diffuse += l.diffusePbr + l.sheenPbr;
+        cols[0].diffuse += l.diffuse, cols[1].diffuse += l.diffuse,
+            cols[2].diffuse += l.diffusePbr + l.sheenPbr + l.transmissionPbr;
         cols[0].specular += l.specularPhong, cols[1].specular += l.specularBlinn,
             cols[2].specular += l.specularPbr + l.clearcoatPbr;
         cols[3].diffuse += l.diffuseDisney + l.sheenDisney;

@@ -52,10 +52,11 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
     shading::SurfaceParams paramsPbr = paramsFor(shading::SL_MODEL_PBR);
     paramsPbr.md = shading::pbrDiffuseColor(s.baseColor, m.metallic);
     trace::setPbrLayers(paramsPbr, s, V);  // glTF's layers, as WhittedIntegrator::shadingParams gives them to pbr
-    // The base's terms, without the coat and the sheen (their parts are listed on their own).
+    // The base's terms, without the coat, the sheen and the light through (their parts are listed on their own).
     shading::SurfaceParams basePbr = paramsPbr;
     basePbr.coat = glm::vec2(0.0f);
     basePbr.sheenTable = nullptr;
+    basePbr.transmission.x = 0.0f;
     r.pbrDiffuseColor = paramsPbr.md;
     r.pbrF0 = paramsPbr.ms;
     const int pbr = shading::SL_MODEL_PBR;
@@ -80,7 +81,11 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
         const glm::vec3 Lraw = at.L;
         const glm::vec3 Il = at.Il;
         const bool lit = glm::dot(s.N, Lraw) > 0.0f;  // the terms are 0 on the unlit side: no ray needed
-        const float vis = scene.terms.shadows && lit ? integrator.visibility(s, light) : 1.0f;
+        // A light behind a transmitting pbr surface shines through it, and is sought from its far side.
+        const bool behind = !lit && paramsPbr.transmission.x > 0.0f;
+        const float vis = scene.terms.shadows && (lit || behind)
+                              ? integrator.visibility(behind ? trace::underside(s) : s, light)
+                              : 1.0f;
         samples.push_back({Lraw, Il, vis});
         ProbeLight pl;
         pl.name = light.name;
@@ -108,6 +113,13 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
         glm::vec3 both = shading::shadeLightPbrLayers(s.N, sample, V, basePbr, true, true);
         pl.specularPbr = vis * shading::shadeLightPbrLayers(s.N, sample, V, basePbr, false, true);
         pl.diffusePbr = vis * both - pl.specularPbr;
+        if (paramsPbr.transmission.x > 0.0f) {  // glTF's transmission: the light through, part of the base
+            const glm::vec3 through =
+                shading::transmissionLight(s.N, Lraw, V, Il, paramsPbr.transmitColor, paramsPbr.transmitTint,
+                                           paramsPbr.specLayer, paramsPbr.s * paramsPbr.transmission.y, true, true);
+            both += through;
+            pl.transmissionPbr = vis * through;
+        }
         if (paramsPbr.sheenTable) {
             // Under the sheen the base's two parts keep sheenScaling, and the sheen's lobe is the rest of the term.
             shading::SheenLookup table{paramsPbr.sheenTable};
@@ -117,7 +129,8 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
             both = shading::sheenLight(both, s.N, Lraw, V, Il, sheen, paramsPbr.sheenEV, EL, true);
             pl.diffusePbr *= keep;
             pl.specularPbr *= keep;
-            pl.sheenPbr = vis * both - pl.diffusePbr - pl.specularPbr;
+            pl.transmissionPbr *= keep;
+            pl.sheenPbr = vis * both - pl.diffusePbr - pl.specularPbr - pl.transmissionPbr;
         }
         if (paramsPbr.coat.x > 0.0f) {
             // Under the coat the parts below keep 1 − c·Fc, and the coat's lobe is the rest of the term.
@@ -126,7 +139,8 @@ ProbeResult probeRay(const trace::TraceScene& traced, const trace::Ray& ray, Pro
             pl.diffusePbr *= keep;
             pl.specularPbr *= keep;
             pl.sheenPbr *= keep;
-            pl.clearcoatPbr = coated - pl.diffusePbr - pl.specularPbr - pl.sheenPbr;
+            pl.transmissionPbr *= keep;
+            pl.clearcoatPbr = coated - pl.diffusePbr - pl.specularPbr - pl.sheenPbr - pl.transmissionPbr;
         }
         pl.diffuseDisney = vis * disneyPart(Lraw, Il, true, false);
         pl.sheenDisney = vis * disneyPart(Lraw, Il, true, true) - pl.diffuseDisney;

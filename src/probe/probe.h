@@ -38,7 +38,9 @@ struct ProbeLight {
     glm::vec3 F{0.0f};           // F_Schlick(F0, V·H)
     glm::vec3 diffusePbr{0.0f};  // vis_l · Il ⊙ (1 − F) ⊙ c_diff · N·L (plain c_diff · N·L with specular off)
     glm::vec3 specularPbr{0.0f};  // vis_l · Il ⊙ π · D · Vis · F · N·L
-    // Under glTF's sheen the two above keep sheenScaling and this is the sheen's lobe, c·π·f_sheen·Il·N·L.
+    // Under glTF's transmission, a light behind the surface through it: Il ⊙ c_diff·t·tint · π·D·V(L′, V)·|N·L|.
+    glm::vec3 transmissionPbr{0.0f};
+    // Under glTF's sheen the three above keep sheenScaling and this is the sheen's lobe, c·π·f_sheen·Il·N·L.
     glm::vec3 sheenPbr{0.0f};
     // Under glTF's clear coat the parts above keep (1 − c·Fc) and this is the coat's lobe, c·π·f_coat·Il·Nc·L.
     glm::vec3 clearcoatPbr{0.0f};

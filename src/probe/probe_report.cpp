@@ -76,6 +76,7 @@ std::string probeReportJson(const ProbeResult& p, const Scene& scene, uint32_t c
                           {"diffuse_pbr", vec(l.diffusePbr)},
                           {"specular_pbr", vec(l.specularPbr)},
                           {"sheen_pbr", vec(l.sheenPbr)},
+                          {"transmission_pbr", vec(l.transmissionPbr)},
                           {"clearcoat_pbr", vec(l.clearcoatPbr)},
                           {"diffuse_disney", vec(l.diffuseDisney)},
                           {"sheen_disney", vec(l.sheenDisney)},
