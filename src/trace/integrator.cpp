@@ -147,6 +147,13 @@ __attribute__((always_inline)) inline Ray WhittedIntegrator::shadowRay(const Sur
     return shadow;
 }
 
+float WhittedIntegrator::visibilityBehind(const Surface& s, const Light& light, Tree* record, size_t index) const {
+    const Surface other = underside(s);
+    const float v = visibility(other, light);
+    if (record) noteShadow(*record, other, index, v);
+    return v;
+}
+
 float WhittedIntegrator::visibility(const Surface& s, const Light& light) const {
     float tMax = 0.0f;
     const Ray shadow = shadowRay(s, light, tMax);
@@ -231,6 +238,17 @@ shading::SurfaceParams WhittedIntegrator::shadingParams(const Surface& s, glm::v
     return params;
 }
 
+glm::vec3 WhittedIntegrator::lightThrough(const Surface& s, const shading::SurfaceParams& params, const glm::vec3& V,
+                                          const glm::vec2& dfg, const glm::vec3* transmitted) const {
+    const Scene& sc = scene_.scene();
+    const glm::vec3 Lt = transmitted ? *transmitted
+                                     : params.transmitTint *
+                                           env_.prefiltered(shading::transmissionDirection(s.N, V, params.transmission),
+                                                            params.s * params.transmission.y);
+    return shading::transmissionEnvironment(params.transmitColor, Lt, params.specLayer, dfg, sc.terms.diffuse,
+                                            sc.terms.specular);
+}
+
 glm::vec3 WhittedIntegrator::coatedEnvironment(const glm::vec3& base, const shading::SurfaceParams& params,
                                                const glm::vec3& V) const {
     shading::IblLookup ibl;  // (its functions are not const: the shared GLSL text has no const methods)
@@ -255,15 +273,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
     // it, the environment along the transmitted direction times the volume's tint.
     const bool transmits = params.transmission.x > 0.0f;
     glm::vec3 through(0.0f);
-    if (transmits && (transmitted || (environmentLit && sc.terms.ambient))) {
-        const glm::vec3 Lt =
-            transmitted
-                ? *transmitted
-                : params.transmitTint * env_.prefiltered(shading::transmissionDirection(s.N, V, params.transmission),
-                                                         params.s * params.transmission.y);
-        through = shading::transmissionEnvironment(params.transmitColor, Lt, params.specLayer, dfg, sc.terms.diffuse,
-                                                   sc.terms.specular);
-    }
+    if (transmits && (transmitted || (environmentLit && sc.terms.ambient)))
+        through = lightThrough(s, params, V, dfg, transmitted);
     glm::vec3 environment(0.0f);
     if (environmentLit && sc.terms.ambient) {
         shading::IblLookup ibl;
@@ -281,8 +292,10 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
                       sc.terms.diffuse, sc.terms.specular)
                 : shading::shadeEnvironment(params.md, params.ms, env_.irradiance(s.N), pre, dfg, sc.energyCompensation,
                                             sc.terms.diffuse, sc.terms.specular);
-        environment += through;  // under the sheen and the coat, as the base's own light
-        through = glm::vec3(0.0f);
+        if (transmits) {  // under the sheen and the coat, as the base's own light
+            environment += through;
+            through = glm::vec3(0.0f);
+        }
         if (params.sheenTable)  // the sheen reflects the prefiltered environment at its own roughness
             environment =
                 shading::sheenEnvironment(environment, env_.prefiltered(ibl.iblReflect(s.N, V), params.sheen.w),
@@ -306,16 +319,16 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
             ls.L = at.L;
             ls.Il = at.Il;
             // Only a light that could contribute (N·L > 0, or behind a transmitting surface, and inside a spot's
-            // cone and a light's range) needs a shadow ray: otherwise its term is 0. One behind is sought from the
-            // far side of the surface.
-            const float NoL = glm::dot(s.N, ls.L);
-            const bool behind = transmits && NoL < 0.0f;
-            const bool reaches = (NoL > 0.0f || behind) && ls.Il != glm::vec3(0.0f);
-            std::optional<Surface> other;
-            if (behind) other = underside(s);
-            const Surface& from = other ? *other : s;
-            ls.visibility = sc.terms.shadows && lit && reaches ? visibility(from, l) : 1.0f;
-            if (recording && sc.terms.shadows && lit && reaches) noteShadow(*tree, from, first + k, ls.visibility);
+            // cone and a light's range) needs a shadow ray: otherwise its term is 0.
+            const bool front = glm::dot(s.N, ls.L) > 0.0f;
+            const bool reaches = (front || transmits) && ls.Il != glm::vec3(0.0f);
+            if (front || !reaches) {
+                ls.visibility = sc.terms.shadows && lit && reaches ? visibility(s, l) : 1.0f;
+                if (recording && sc.terms.shadows && lit && reaches) noteShadow(*tree, s, first + k, ls.visibility);
+            } else {  // behind a transmitting surface: sought from its far side (out of the common path)
+                ls.visibility =
+                    sc.terms.shadows && lit ? visibilityBehind(s, l, recording ? tree : nullptr, first + k) : 1.0f;
+            }
         }
         shading::TermFlags terms{ambientOn && first == 0, sc.terms.diffuse, sc.terms.specular};
         const glm::vec3 batch = shading::shadeLocal(s.N, V, samples, count, params, sc.ambient, s.model, terms);
@@ -323,7 +336,8 @@ glm::vec3 WhittedIntegrator::local(const Ray& ray, const Surface& s, const glm::
         first += count;
     } while (first < sc.lights.size());
     // An emitter's own light (design.md §8), as surface.glsl adds u_emission.
-    return (environmentLit ? I + environment : I) + through + m.emission * s.emissive;
+    if (transmits) I += through;
+    return (environmentLit ? I + environment : I) + m.emission * s.emissive;
 }
 
 glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight,

@@ -86,6 +86,14 @@ private:
     // (glTF's transmission), read in place of the environment along the transmitted direction.
     glm::vec3 local(const Ray& ray, const Surface& s, const glm::vec3* reflected, Tree* tree,
                     const glm::vec3* transmitted = nullptr) const;
+    // The light through a transmitting pbr surface (glTF's transmission) seen along V: `transmitted` (a traced ray's
+    // radiance) or the environment along the transmitted direction times the volume's tint, weighed as the diffuse
+    // lobe (transmissionEnvironment). Out of line: surfaces that do not transmit never call it.
+    [[gnu::noinline]] glm::vec3 lightThrough(const Surface& s, const shading::SurfaceParams& params, const glm::vec3& V,
+                                             const glm::vec2& dfg, const glm::vec3* transmitted) const;
+    // vis_l toward a light behind a transmitting surface, sought from its far side (appended to `record`'s tree as
+    // light `index` when given). Out of line, as lightThrough.
+    [[gnu::noinline]] float visibilityBehind(const Surface& s, const Light& light, Tree* record, size_t index) const;
     // Radiance arriving along a ray through a transmitting surface, `depth` bounces from the camera: the object it
     // meets, shaded, or the environment prefiltered at the transmitted lobe's `roughness` (the rasterizer's lookup).
     glm::vec3 transmittedRadiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree,
