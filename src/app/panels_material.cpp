@@ -140,7 +140,7 @@ void drawMaterialSection(PanelContext& ctx) {
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the direction the highlight stretches along, turned from the sphere's parallels");
         // glTF's transmission and volume: light through the surface, and the medium inside it.
-        ImGui::TextDisabled("pbr: glTF transmission and volume (KHR_materials_transmission, _volume)");
+        ImGui::TextDisabled("pbr: glTF transmission, volume (KHR_materials_*)");
         changed |= ImGui::SliderFloat("transmission", &m.transmission.factor, 0.0f, 1.0f, "%.2f");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the share of the diffuse light that passes through, tinted by the base colour");

@@ -140,6 +140,32 @@ TEST(TransmissionVolume, BeerLambertThroughTheCentreMatchesTheClosedForm) {
     EXPECT_GT(std::abs(approx.y - expected.y), 0.05f) << "the thickness's tint passed for the path's";
 }
 
+// A factor of 0 is pbr exactly, whatever the volume says: the same colours bit for bit in the Whitted tracer and the
+// path tracer as the ball with no transmission and no volume; a factor of 0.1 differs (control).
+TEST(TransmissionVolume, AFactorOfZeroIsPbrExactly) {
+    Scene zero = glassBall(kGreen, 0.5f, 2.0f);
+    zero.terms.specular = true;
+    zero.camera.fovY = 40.0f;
+    zero.spheres[0].material.baseColor = glm::vec3(0.6f, 0.3f, 0.2f);
+    zero.spheres[0].material.roughness = 0.4f;
+    zero.spheres[0].material.transmission.factor = 0.0f;
+    Scene plain = zero;
+    plain.spheres[0].material.volume = Volume{};
+    Scene some = zero;
+    some.spheres[0].material.transmission.factor = 0.1f;
+    const TraceScene tz(zero), tp(plain), ts(some);
+    const WhittedIntegrator wz(tz, 8), wp(tp, 8), ws(ts, 8);
+    for (const glm::vec3& d : {glm::vec3(0.0f, 0.0f, -1.0f), glm::normalize(glm::vec3(0.2f, 0.1f, -1.0f))}) {
+        const Ray ray{zero.camera.position, d};
+        const glm::vec3 a = wz.radiance(ray, 0);
+        EXPECT_EQ(a, wp.radiance(ray, 0));
+        EXPECT_NE(a, ws.radiance(ray, 0)) << "control: a factor of 0.1";
+    }
+    const test::PathRun a = test::pathRun(zero, test::small(8, 8, 4, 4));
+    const test::PathRun b = test::pathRun(plain, test::small(8, 8, 4, 4));
+    EXPECT_EQ(a.mean, b.mean);
+}
+
 // The white furnace: a clear ball (white, smooth, nothing absorbed) sends on all the light it takes, reflected or
 // through, and vanishes against a uniform environment; an absorbing one (negative control) does not.
 TEST(TransmissionVolume, AClearGlassBallVanishesInTheFurnace) {
