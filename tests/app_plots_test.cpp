@@ -3,6 +3,7 @@
 #include "app/albedo_plot.h"
 #include "app/lobe_plot.h"
 #include "app/specular_lobe.h"
+#include "scene/material.h"
 #include "shading/lighting.h"
 #include "shading/sheen_lut.h"
 
@@ -86,6 +87,56 @@ TEST(LobePlot, HalfWidthReadFromTheDataShrinksAsShininessGrows) {
     const auto hw = [&](LobeModel m) { return halfWidthAtHalfMaximum(plot.curves[size_t(m)].value, 90.0f); };
     EXPECT_NEAR(hw(LobeModel::BlinnEquivalent), hw(LobeModel::Phong), 0.05f);
     EXPECT_GT(hw(LobeModel::BlinnSame), 1.8f * hw(LobeModel::Phong));
+}
+
+// The pbr lobe follows glTF's layers: a clear coat adds its sharp lobe (the polar curve at the mirror direction gains
+// against the base's broad one), anisotropy changes the lobe in the plane of incidence, and a transmitting material's
+// light through the surface is drawn below it, peaking straight through (at θo = θi from −N), on one scale with the
+// reflection. Controls: no layer leaves the curve as before and draws nothing below.
+TEST(LobePlot, ThePbrLobeFollowsGltfsLayers) {
+    Material base;
+    base.baseColor = glm::vec3(0.8f, 0.3f, 0.2f);
+    base.roughness = 0.6f;
+    const auto plotOf = [](const Material& m) {
+        LobePlotSettings settings;
+        settings.incidence = 40.0f;
+        settings.roughness = m.roughness;
+        settings.metallic = m.metallic;
+        settings.baseColor = m.baseColor;
+        settings.layered = usesLayeredPbr(m);
+        settings.specLayer = m.specular.packed(m.ior);
+        settings.aniso = m.anisotropy.packed();
+        settings.coat = m.clearcoat.packed();
+        settings.transmission = transmissionPacked(m);
+        return makeLobePlot(settings);
+    };
+    const LobePlot plain = plotOf(base);
+    const LobeCurve& p = plain.curves[size_t(LobeModel::Pbr)];
+    EXPECT_TRUE(p.through.empty());
+    // The mirror direction's value against a broad direction's, both relative to the peak.
+    const int mirror = int(std::lround((40.0f + 90.0f) / 180.0f * float(plain.settings.polarSamples - 1)));
+    const int broad = int(std::lround((10.0f + 90.0f) / 180.0f * float(plain.settings.polarSamples - 1)));
+    Material coated = base;
+    coated.clearcoat = Clearcoat{1.0f, 0.05f};
+    const LobeCurve& c = plotOf(coated).curves[size_t(LobeModel::Pbr)];
+    EXPECT_LT(c.polar[size_t(broad)] / c.polar[size_t(mirror)], 0.5f * p.polar[size_t(broad)] / p.polar[size_t(mirror)])
+        << "the coat's sharp lobe at the mirror direction";
+    EXPECT_NE(c.label.find("+ coat"), std::string::npos);
+    Material brushed = base;
+    brushed.anisotropy = Anisotropy{0.9f, 0.0f};
+    EXPECT_NE(plotOf(brushed).curves[size_t(LobeModel::Pbr)].polar, p.polar);
+    Material glass = base;
+    glass.roughness = 0.2f;  // a narrow lobe: its off-specular shift stays small
+    glass.transmission = Transmission{1.0f};
+    const LobePlot through = plotOf(glass);
+    const LobeCurve& t = through.curves[size_t(LobeModel::Pbr)];
+    ASSERT_EQ(t.through.size(), size_t(through.settings.polarSamples));
+    const size_t top = size_t(std::max_element(t.through.begin(), t.through.end()) - t.through.begin());
+    EXPECT_NEAR(through.polarAngleAt(int(top)), 40.0f, 2.0f) << "straight through, mirrored";
+    EXPECT_FLOAT_EQ(std::max(*std::max_element(t.through.begin(), t.through.end()),
+                             *std::max_element(t.polar.begin(), t.polar.end())),
+                    1.0f);
+    EXPECT_NE(t.label.find("+ through"), std::string::npos);
 }
 
 TEST(LobePlot, TheOldRescaledAxisAndAConstantLobeFailTheCheck) {

@@ -27,8 +27,16 @@ float lobeValue(LobeModel model, float parameter, const LobePlotSettings& s, dou
         case LobeModel::BlinnSame:
         case LobeModel::BlinnEquivalent: return specularBlinnPhong(N, L, V, parameter);
         case LobeModel::Pbr: {
-            const vec3 f0 = pbrF0(s.baseColor, s.metallic);
-            const vec3 spec = SL_PI * std::max(dot(N, L), 0.0f) * specularGGX(N, L, V, f0, parameter);
+            vec3 spec;
+            if (s.layered) {  // glTF's specular layer and index, and its anisotropy
+                const vec4 aniso(anisotropyDirection(N, vec4(0.0f), s.aniso), s.aniso.x);
+                spec = shadeLightPbrSpecular(N, L, V, vec3(1.0f), vec3(0.0f), s.baseColor, s.metallic, parameter,
+                                             s.specLayer, aniso, false, true, vec3(1.0f));
+            } else {
+                const vec3 f0 = pbrF0(s.baseColor, s.metallic);
+                spec = SL_PI * std::max(dot(N, L), 0.0f) * specularGGX(N, L, V, f0, parameter);
+            }
+            if (s.coat.x > 0.0f) spec = clearcoatLight(spec, N, L, V, vec3(1.0f), s.coat, true);
             return (spec.x + spec.y + spec.z) / 3.0f;
         }
         case LobeModel::Disney: {
@@ -38,6 +46,17 @@ float lobeValue(LobeModel model, float parameter, const LobePlotSettings& s, dou
         }
     }
     return 0.0f;
+}
+
+// pbr's light through a transmitting surface toward a viewer below it at θo from −N, for the light above at −θi:
+// transmissionLight seen from that side (its normal −N, the light behind), the mean of its RGB.
+float throughValue(const LobePlotSettings& s, double thetaO) {
+    using namespace shading;
+    const vec3 N(0.0f, 0.0f, 1.0f), L = inPlane(-double(s.incidence)), V = -inPlane(-thetaO);
+    const vec3 tc = pbrDiffuseColor(s.baseColor, s.metallic) * s.transmission.x;
+    const vec3 I = transmissionLight(-N, L, V, vec3(1.0f), tc, vec3(1.0f), s.specLayer, s.roughness * s.transmission.y,
+                                     true, true);
+    return (I.x + I.y + I.z) / 3.0f;
 }
 
 }  // namespace
@@ -83,7 +102,9 @@ LobePlot makeLobePlot(const LobePlotSettings& in) {
                 break;
             case LobeModel::Pbr:
                 c.parameter = s.roughness;
-                std::snprintf(label, sizeof label, "GGX  pbr, roughness %.2f", double(s.roughness));
+                std::snprintf(label, sizeof label, "GGX  pbr, roughness %.2f%s%s%s", double(s.roughness),
+                              s.layered && s.aniso.x > 0.0f ? " + aniso" : "", s.coat.x > 0.0f ? " + coat" : "",
+                              s.transmission.x > 0.0f ? " + through" : "");
                 break;
             case LobeModel::Disney:
                 c.parameter = s.roughness;
@@ -103,10 +124,20 @@ LobePlot makeLobePlot(const LobePlotSettings& in) {
         c.peak = lobeValue(c.model, c.parameter, s, double(s.incidence));
         for (float v : c.polar) c.peak = std::max(c.peak, v);
         for (float v : c.value) c.peak = std::max(c.peak, v);
-        if (c.peak > 0.0f) {
-            for (float& v : c.polar) v /= c.peak;
+        if (c.peak > 0.0f)
             for (float& v : c.value) v /= c.peak;
+        // The light through a transmitting surface, on the polar plot's scale with the reflection.
+        float polarPeak = c.peak;
+        if (c.model == LobeModel::Pbr && s.transmission.x > 0.0f) {
+            c.through.resize(size_t(s.polarSamples));
+            for (int i = 0; i < s.polarSamples; ++i) {
+                c.through[size_t(i)] = throughValue(s, plot.polarAngleAt(i));
+                polarPeak = std::max(polarPeak, c.through[size_t(i)]);
+            }
+            for (float& v : c.through) v /= polarPeak;
         }
+        if (polarPeak > 0.0f)
+            for (float& v : c.polar) v /= polarPeak;
         plot.curves.push_back(std::move(c));
     }
     return plot;

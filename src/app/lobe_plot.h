@@ -19,6 +19,14 @@ struct LobePlotSettings {
     glm::vec3 baseColor{0.7f};    // pbr: F0 = mix(0.04, baseColor, metallic)
     // disney: the material's parameters (DisneyParams::lobes0, lobes1), Burley's defaults unless set
     glm::vec4 disney0{0.0f, 0.5f, 0.0f, 0.0f}, disney1{0.0f, 0.5f, 0.0f, 1.0f};
+    // pbr under glTF's layers, packed as the renderers pack them (scene/material.h): `layered` (usesLayeredPbr) with
+    // the specular layer and index (SpecularLayer::packed) and the anisotropy (Anisotropy::packed); the clear coat
+    // (Clearcoat::packed; factor 0: none) and the transmission (transmissionPacked; factor 0: none).
+    bool layered = false;
+    glm::vec4 specLayer{0.04f, 0.04f, 0.04f, 1.0f};
+    glm::vec3 aniso{0.0f};
+    glm::vec2 coat{0.0f};
+    glm::vec4 transmission{0.0f};
     float incidence = 30.0f;  // θi: the angle between N and L, [0, 89]
     float axis = 90.0f;       // the Cartesian plot's angle axis runs from 0 to this (zoom), (0, 90]
     int samples = 361;        // points per Cartesian curve, first at 0, last at `axis`
@@ -35,6 +43,9 @@ struct LobeCurve {
     float peak = 0.0f;         // the largest value over the plane of incidence (the curve is scaled by 1/peak)
     std::vector<float> value;  // Cartesian: lobe / peak at the angle between R and V, `samples` points
     std::vector<float> polar;  // polar: lobe / peak at outgoing angle θo, `polarSamples` points
+    // pbr under glTF's transmission only: the lobe through the surface seen from below at θo (measured from −N),
+    // `polarSamples` points; then `polar` and this share one scale, the larger of the two peaks. Empty otherwise.
+    std::vector<float> through;
 };
 
 // Both views of the five lobes. In the plane of incidence L lies at −θi from N and R at +θi. The Cartesian
@@ -42,8 +53,9 @@ struct LobeCurve {
 // fixed axis [0, axis] whatever the material (so that as s grows the lobe visibly narrows). The polar view
 // sweeps V over θo ∈ [−90°, 90°] (the textbook figure: radius = lobe value). Each lobe is the specular term
 // the renderers add for one light of intensity 1 (Phong/Blinn-Phong: the lecture's term; pbr: π·f_spec·N·L,
-// the mean of its RGB; disney: its specular and clearcoat lobes, π·f·N·L, V in the tangent's plane), divided by
-// its peak so the shapes compare; `peak` keeps the scale.
+// the mean of its RGB, under glTF's specular layer, anisotropy and clear coat when the material has them; disney: its
+// specular and clearcoat lobes, π·f·N·L, V in the tangent's plane), divided by its peak so the shapes compare;
+// `peak` keeps the scale. A transmitting pbr material's light through the surface is drawn below it (`through`).
 struct LobePlot {
     LobePlotSettings settings;
     std::vector<LobeCurve> curves;    // kLobeModels curves, in LobeModel order

@@ -86,11 +86,14 @@ void drawCartesian(const LobePlot& plot, float width, float height, float scale)
 void drawPolar(const LobePlot& plot, const PlaneOfIncidence* probe, float width, float height, float scale) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    const float base = 18.0f * scale;
+    const float radius = std::min(0.5f * width - 14.0f * scale, (height - base - 22.0f * scale) / 1.08f);
+    // A transmitting pbr material's light through the surface is drawn below it: the plot grows by a radius.
+    const std::vector<float>& through = plot.curves[size_t(LobeModel::Pbr)].through;
+    if (!through.empty()) height += radius;
     const ImVec2 p1(p0.x + width, p0.y + height);
     dl->AddRectFilled(p0, p1, kBackground);
-    const float base = 18.0f * scale;
-    const ImVec2 c(p0.x + 0.5f * width, p1.y - base);
-    const float radius = std::min(0.5f * width - 14.0f * scale, (height - base - 22.0f * scale) / 1.08f);
+    const ImVec2 c(p0.x + 0.5f * width, p0.y + height - base - (through.empty() ? 0.0f : radius));
     auto at = [&](glm::vec2 d, float r) { return ImVec2(c.x + d.x * r * radius, c.y - d.y * r * radius); };
     dl->AddRectFilled(ImVec2(p0.x, c.y), p1, IM_COL32(45, 42, 38, 255));  // the material below the surface
     dl->AddLine(ImVec2(p0.x, c.y), ImVec2(p1.x, c.y), IM_COL32(160, 150, 130, 255), 1.5f * scale);
@@ -105,6 +108,17 @@ void drawPolar(const LobePlot& plot, const PlaneOfIncidence* probe, float width,
         for (size_t i = 0; i < curve.polar.size(); ++i)
             pts.push_back(at(polarDirection(plot.polarAngleAt(int(i))), std::min(curve.polar[i], 1.0f)));
         dl->AddPolyline(pts.data(), int(pts.size()), kLobeColors[size_t(m)], 0, kLobeThickness[size_t(m)] * scale);
+    }
+    if (!through.empty()) {  // below the surface, θo measured from −N
+        std::vector<ImVec2> pts;
+        for (size_t k = 0; k < through.size(); ++k) {
+            const glm::vec2 d = polarDirection(plot.polarAngleAt(int(k)));
+            pts.push_back(at({d.x, -d.y}, std::min(through[k], 1.0f)));
+        }
+        const size_t pbr = size_t(LobeModel::Pbr);
+        dl->AddPolyline(pts.data(), int(pts.size()), kLobeColors[pbr], 0, kLobeThickness[pbr] * scale);
+        dl->AddText(ImVec2(p0.x + 4.0f * scale, p1.y - ImGui::GetTextLineHeight() - 2.0f * scale),
+                    IM_COL32(200, 190, 170, 255), "through the surface (pbr)");
     }
     const float i = plot.settings.incidence;
     const ImU32 white = IM_COL32(235, 235, 235, 255), yellow = IM_COL32(255, 225, 90, 255);
@@ -202,6 +216,11 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     settings.baseColor = m.baseColor;
     settings.disney0 = m.disney.lobes0();
     settings.disney1 = m.disney.lobes1();
+    settings.layered = usesLayeredPbr(m);
+    settings.specLayer = m.specular.packed(m.ior);
+    settings.aniso = m.anisotropy.packed();
+    settings.coat = m.clearcoat.packed();
+    settings.transmission = transmissionPacked(m);
     settings.axis = f.lobeAxis;
     if (probePlane) {
         settings.incidence = probePlane->incidence;
