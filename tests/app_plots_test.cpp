@@ -118,7 +118,8 @@ TEST(LobePlot, ThePbrLobeFollowsGltfsLayers) {
     const int broad = int(std::lround((10.0f + 90.0f) / 180.0f * float(plain.settings.polarSamples - 1)));
     Material coated = base;
     coated.clearcoat = Clearcoat{1.0f, 0.05f};
-    const LobeCurve& c = plotOf(coated).curves[size_t(LobeModel::Pbr)];
+    const LobePlot coatPlot = plotOf(coated);
+    const LobeCurve& c = coatPlot.curves[size_t(LobeModel::Pbr)];
     EXPECT_LT(c.polar[size_t(broad)] / c.polar[size_t(mirror)], 0.5f * p.polar[size_t(broad)] / p.polar[size_t(mirror)])
         << "the coat's sharp lobe at the mirror direction";
     EXPECT_NE(c.label.find("+ coat"), std::string::npos);
