@@ -28,15 +28,18 @@ def lobe(model: ModelName = "phong", s: float = 32.0, light_angle: float = 45.0,
          roughness: float | None = None) -> tuple[NDArray[np.float64], NDArray[np.float32]]:
     """The specular lobe in the plane of incidence: (view angles in degrees from N, values). L lies at
     `light_angle` degrees from N on the negative side; N = +z. Phong and Blinn-Phong give their specular
-    factor; pbr the GGX BRDF times N·L (its roughness from s as the scene file maps it unless given)."""
+    factor; pbr the GGX BRDF times N·L, disney its specular lobes times N·L (their roughness from s as the scene
+    file maps it unless given)."""
     phi = np.radians(np.linspace(-90.0, 90.0, samples))
     V = np.stack([np.sin(phi), np.zeros_like(phi), np.cos(phi)], axis=-1)
     t = np.radians(light_angle)
     N = np.array([0.0, 0.0, 1.0])
     L = np.array([-np.sin(t), 0.0, np.cos(t)])
+    r = roughness if roughness is not None else (2.0 / (max(s, 0.0) + 2.0)) ** 0.25
     if model == "pbr":
-        r = roughness if roughness is not None else (2.0 / (max(s, 0.0) + 2.0)) ** 0.25
         values = lighting.pbr(N, L, V, base_color=1.0, metallic=1.0, roughness=r)[..., 0] * max(np.cos(t), 0.0)
+    elif model == "disney":  # its specular lobes alone, of a white metal; already times N·L
+        values = lighting.disney(N, L, V, base_color=1.0, metallic=1.0, roughness=r, diffuse_lobes=False)[..., 0]
     else:
         values = lighting.shade(N, L, V, Il=1.0, md=0.0, ms=1.0, s=s, model=model, diffuse=False)[..., 0]
     return np.degrees(phi), values

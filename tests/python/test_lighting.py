@@ -193,3 +193,18 @@ def test_disney_equals_burleys_formulas(sets):
     assert np.allclose(d + s, got, atol=1e-5)
     with pytest.raises(ValueError, match="use shadelab.lighting.disney"):
         lighting.shade([0, 0, 1], [0, 0, 1], [0, 0, 1], model="disney")
+
+
+def test_the_lobe_plot_draws_every_model_and_narrows_with_s():
+    # plots.lobe for each model the notebook offers: narrow lobes peak at the mirror direction (45°; a rough
+    # microfacet lobe's peak moves off toward grazing, as it should), and every lobe narrows as s grows.
+    from shadelab import plots
+    for model in ("phong", "blinn-phong", "pbr", "disney"):
+        widths = []
+        for s in (4.0, 64.0, 512.0):
+            angles, values = plots.lobe(model, s=s, light_angle=45.0)
+            if s >= 64.0:
+                assert abs(angles[int(np.argmax(values))] - 45.0) < 2.0, (model, s)
+            widths.append(int((values >= 0.5 * values.max()).sum()))
+        assert widths[0] > widths[1] > widths[2], (model, widths)
+    assert plots.lobe_image("disney", s=64).width == 256

@@ -57,6 +57,7 @@ def test_phong_lab_executes_from_a_temporary_folder(outside):
     text = "".join("".join(o.get("text", "")) for o in outputs)
     assert "bytes of PNG for the scene" in text and "N·L" in text
     assert "shininess slider: log2(s) from 0 to 10, continuous_update=False" in text
+    assert "the shininess slider changes the picture under phong, blinn-phong, pbr, disney" in text
 
 
 def test_a_repository_path_fails_from_there(outside):
