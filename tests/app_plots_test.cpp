@@ -98,16 +98,8 @@ TEST(LobePlot, ThePbrLobeFollowsGltfsLayers) {
     base.baseColor = glm::vec3(0.8f, 0.3f, 0.2f);
     base.roughness = 0.6f;
     const auto plotOf = [](const Material& m) {
-        LobePlotSettings settings;
+        LobePlotSettings settings = lobeSettingsOf(m);
         settings.incidence = 40.0f;
-        settings.roughness = m.roughness;
-        settings.metallic = m.metallic;
-        settings.baseColor = m.baseColor;
-        settings.layered = usesLayeredPbr(m);
-        settings.specLayer = m.specular.packed(m.ior);
-        settings.aniso = m.anisotropy.packed();
-        settings.coat = m.clearcoat.packed();
-        settings.transmission = transmissionPacked(m);
         return makeLobePlot(settings);
     };
     const LobePlot plain = plotOf(base);

@@ -143,6 +143,21 @@ LobePlot makeLobePlot(const LobePlotSettings& in) {
     return plot;
 }
 
+LobePlotSettings lobeSettingsOf(const Material& m) {
+    LobePlotSettings s;
+    s.roughness = m.roughness;
+    s.metallic = m.metallic;
+    s.baseColor = m.baseColor;
+    s.disney0 = m.disney.lobes0();
+    s.disney1 = m.disney.lobes1();
+    s.layered = usesLayeredPbr(m);
+    s.specLayer = m.specular.packed(m.ior);
+    s.aniso = m.anisotropy.packed();
+    s.coat = m.clearcoat.packed();
+    s.transmission = transmissionPacked(m);
+    return s;
+}
+
 float halfWidthAtHalfMaximum(const std::vector<float>& value, float axis) {
     if (value.size() < 2) return axis;
     const float half = 0.5f * value.front();

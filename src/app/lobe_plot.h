@@ -3,6 +3,8 @@
 // panel draws. No ImGui: panels_lobe.cpp draws these. The values come from shaders/lighting.glsl's functions.
 #pragma once
 
+#include "scene/material.h"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -64,6 +66,10 @@ struct LobePlot {
 };
 
 LobePlot makeLobePlot(const LobePlotSettings& settings);
+
+// The settings for material `m`'s lobes: its roughness, metallic, base colour, disney's parameters and glTF's layers,
+// packed as the renderers pack them; the exponent, the incidence and the view left at their defaults.
+LobePlotSettings lobeSettingsOf(const Material& m);
 
 // The half-width at half maximum of a Cartesian curve read from its data: the angle (degrees) where `value`
 // first falls below half of value[0], linearly interpolated between samples spread evenly over [0, axis].

@@ -209,18 +209,8 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
 
     if (!ImGui::TreeNodeEx("Specular lobe", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const float width = ImGui::GetContentRegionAvail().x;  // inside the tree node's indent
-    LobePlotSettings settings;
+    LobePlotSettings settings = lobeSettingsOf(m);
     settings.phongExponent = phongExponent;
-    settings.roughness = m.roughness;
-    settings.metallic = m.metallic;
-    settings.baseColor = m.baseColor;
-    settings.disney0 = m.disney.lobes0();
-    settings.disney1 = m.disney.lobes1();
-    settings.layered = usesLayeredPbr(m);
-    settings.specLayer = m.specular.packed(m.ior);
-    settings.aniso = m.anisotropy.packed();
-    settings.coat = m.clearcoat.packed();
-    settings.transmission = transmissionPacked(m);
     settings.axis = f.lobeAxis;
     if (probePlane) {
         settings.incidence = probePlane->incidence;
