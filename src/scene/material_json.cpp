@@ -6,6 +6,7 @@
 #include "scene/scene_limits.h"
 
 #include <cmath>
+#include <limits>
 
 namespace shadelab {
 
@@ -65,7 +66,11 @@ VolumeOverride parseVolumeOverride(const JsonNode& n) {
     n.requireObject().warnUnknownKeys({"thickness", "attenuationDistance", "attenuationColor"});
     VolumeOverride o;
     if (auto f = n.find("thickness")) o.thickness = f->inRange(0.0f, kMaxVolumeLength, false, false);
-    if (auto f = n.find("attenuationDistance")) o.attenuationDistance = f->inRange(0.0f, kMaxVolumeLength, true, false);
+    // null: infinite, absorbing nothing (what an absent distance means in a material, said where it must replace
+    // a finite one: a mesh's override of its glTF material).
+    if (auto f = n.find("attenuationDistance"))
+        o.attenuationDistance = f->json().is_null() ? std::numeric_limits<float>::infinity()
+                                                    : f->inRange(0.0f, kMaxVolumeLength, true, false);
     if (auto f = n.find("attenuationColor")) o.attenuationColor = f->unitRgb();
     return o;
 }
@@ -187,12 +192,15 @@ OJson transmissionJson(const TransmissionOverride& o) {
     return j;
 }
 
-// glTF's volume: the fields that are set, an infinite attenuation distance (absorbing nothing) left out.
-OJson volumeJson(const VolumeOverride& o) {
+// glTF's volume: the fields that are set. An infinite attenuation distance (absorbing nothing) is left out of a
+// material, where that is its default, and written as null in an override, where it replaces a finite one.
+OJson volumeJson(const VolumeOverride& o, bool override) {
     OJson j = OJson::object();
     if (o.thickness) j["thickness"] = exact(*o.thickness);
     if (o.attenuationDistance && std::isfinite(*o.attenuationDistance))
         j["attenuationDistance"] = exact(*o.attenuationDistance);
+    else if (o.attenuationDistance && override)
+        j["attenuationDistance"] = nullptr;
     if (o.attenuationColor) j["attenuationColor"] = vec(*o.attenuationColor);
     return j;
 }
@@ -237,8 +245,8 @@ OJson materialJson(const Material& m, bool withDerived) {
     if (withDerived || m.transmission != Transmission{})
         j["transmission"] = transmissionJson(TransmissionOverride{m.transmission.factor});
     if (withDerived || m.volume != Volume{})
-        j["volume"] =
-            volumeJson(VolumeOverride{m.volume.thickness, m.volume.attenuationDistance, m.volume.attenuationColor});
+        j["volume"] = volumeJson(
+            VolumeOverride{m.volume.thickness, m.volume.attenuationDistance, m.volume.attenuationColor}, false);
     if (withDerived && m.derived) {
         OJson names = OJson::array();
         for (const auto& entry : kMaterialFieldNames)
@@ -268,7 +276,7 @@ OJson overrideJson(const MaterialOverride& m) {
     if (!m.sheen.empty()) j["sheen"] = sheenJson(m.sheen);
     if (!m.anisotropy.empty()) j["anisotropy"] = anisotropyJson(m.anisotropy);
     if (!m.transmission.empty()) j["transmission"] = transmissionJson(m.transmission);
-    if (!m.volume.empty()) j["volume"] = volumeJson(m.volume);
+    if (!m.volume.empty()) j["volume"] = volumeJson(m.volume, true);
     return j;
 }
 

@@ -26,8 +26,8 @@ SheenOverride parseSheenOverride(const JsonNode& n);
 AnisotropyOverride parseAnisotropyOverride(const JsonNode& n);
 // A material's "transmission" object: glTF's transmission, `factor` in [0, 1].
 TransmissionOverride parseTransmissionOverride(const JsonNode& n);
-// A material's "volume" object: glTF's volume, `thickness` >= 0, `attenuationDistance` > 0 (absent: infinite) and
-// `attenuationColor` (RGB, each in [0, 1]).
+// A material's "volume" object: glTF's volume, `thickness` >= 0, `attenuationDistance` > 0 (absent or null: infinite)
+// and `attenuationColor` (RGB, each in [0, 1]).
 VolumeOverride parseVolumeOverride(const JsonNode& n);
 // The largest specularColor a scene file takes (glTF allows more than 1; F0 is clamped to 1 after the tint).
 inline constexpr float kMaxSpecularColor = 100.0f;

@@ -313,13 +313,17 @@ TEST(SceneJson, TransmissionAndVolumeReadAndRoundTrip) {
         {"type": "sphere", "center": [0, 1, 0], "radius": 1, "material": {"transmission": {"factor": 0.875},
          "volume": {"thickness": 2, "attenuationDistance": 0.5, "attenuationColor": [0.25, 0.5, 1]}}},
         {"type": "sphere", "center": [3, 1, 0], "radius": 1, "material": {"volume": {"thickness": 1}}},
-        {"type": "mesh", "source": "torus.gltf", "material": {"transmission": {"factor": 0.5}}}]})");
+        {"type": "mesh", "source": "torus.gltf", "material": {"transmission": {"factor": 0.5},
+         "volume": {"attenuationDistance": null}}}]})");
     EXPECT_EQ(s.spheres[0].material.transmission, Transmission{0.875f});
     EXPECT_EQ(s.spheres[0].material.volume, (Volume{2.0f, 0.5f, {0.25f, 0.5f, 1.0f}}));
     EXPECT_TRUE(usesLayeredPbr(s.spheres[0].material));
     EXPECT_FALSE(usesLayeredPbr(s.spheres[1].material));
     EXPECT_TRUE(std::isinf(s.spheres[1].material.volume.attenuationDistance));
     EXPECT_EQ(s.meshes[0].material.transmission.factor, 0.5f);
+    // A mesh's override says "absorbs nothing" as null, so that it replaces its glTF material's finite distance.
+    ASSERT_TRUE(s.meshes[0].material.volume.attenuationDistance);
+    EXPECT_TRUE(std::isinf(*s.meshes[0].material.volume.attenuationDistance));
     expectRoundTrip(s);
     const std::string saved = sceneToJson(s);
     EXPECT_EQ(saved.find("inf"), std::string::npos) << saved;
