@@ -2,8 +2,7 @@
 // cube of the scene rendered from the object's centre (src/raster/environment_cubes.h) and R the mirror
 // direction of V about N. An approximation of the tracer's kr ⊙ I(reflected ray): the cube is seen from
 // the centre, not from the surface point, so nearby objects are misplaced (docs/lighting.md).
-uniform samplerCube t_environment;
-uniform vec3 u_kr;
+uniform vec3 u_kr;  // t_environment is surface.glsl's (glTF's transmission reads the cube too)
 
 vec3 environmentReflection(vec3 N, vec3 V) {
     vec3 n = normalize(N);

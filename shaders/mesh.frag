@@ -5,6 +5,9 @@
 // non-opaque alpha mode and bit 128 for any of the clear coat's three maps (5–7): each
 // part's program holds the code of its own maps only, since llvmpipe's compile time grows with every inlined
 // sampler and it runs the code of every branch, taken or not.
+#if SL_ENVIRONMENT
+#define SL_CUBE 1  // this object's environment cube (surface.glsl)
+#endif
 #include "surface.glsl"
 #ifdef SL_MATERIAL_MAPS
 #include "material_maps.glsl"

@@ -1,5 +1,8 @@
 // Sphere impostor: intersect the pixel's primary ray with the exact sphere, as the tracer does, and write
 // its depth. Exact silhouette and normal, no tessellation.
+#if SL_ENVIRONMENT
+#define SL_CUBE 1  // this object's environment cube (surface.glsl)
+#endif
 #include "surface.glsl"
 #if SL_ENVIRONMENT
 #include "environment.glsl"

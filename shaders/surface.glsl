@@ -48,6 +48,12 @@ vec3 s_transmitColor = vec3(0.0f);
 #else
 #define SL_LAYERED 0
 #endif
+#ifdef SL_CUBE
+// The object's environment cube (src/raster/environment_cubes.h; sphere.frag and mesh.frag define SL_CUBE in their
+// environment programs): the scene around it, rendered from its centre without it. environment.glsl reflects it
+// (kr); a transmitting pbr surface sees it through itself.
+uniform samplerCube t_environment;
+#endif
 // The F0 of the environment's light and of the energy compensation: under disney its own from the base colour
 // `base` here (disneySpecularF0), under glTF's specular layer pbrSpecularF0, else surfaceMs().
 vec3 surfaceF0(vec3 base) {
@@ -172,6 +178,21 @@ vec3 environmentAlong(vec3 D, float roughness) {
 vec3 environmentPrefiltered(vec3 N, vec3 V, float roughness) { return environmentAlong(iblReflect(N, V), roughness); }
 #endif
 
+#if SL_IBL && SL_LAYERED
+// What a transmitting surface sees through itself along D at the transmitted lobe's roughness: the environment
+// prefiltered there; with the object's cube, the cube (what lies behind: the floor, the other objects) stands in
+// for the prefilter's mirror level, weighted as EnvironmentLight::prefilteredWithMirror weighs a traced ray's
+// radiance, so smooth glass shows what is behind it sharply and rough glass the blurred environment.
+vec3 lightBehind(vec3 D, float roughness) {
+#ifdef SL_CUBE
+    float steps = float(u_iblInfo.z - 1);
+    float w = max(0.0f, 1.0f - clamp(roughness, 0.0f, 1.0f) * steps);
+    if (w > 0.0f) return mix(environmentAlong(D, 1.0f / steps), texture(t_environment, D).rgb, w);
+#endif
+    return environmentAlong(D, roughness);
+}
+#endif
+
 #if SL_IBL && SL_COATED
 // The environment's light `base` under the clear coat (WhittedIntegrator::coatedEnvironment): the prefiltered
 // environment at the coat's normal and roughness.
@@ -245,7 +266,7 @@ vec3 shadeSurface(vec3 P, vec3 N, vec3 V, vec3 md, vec3 base) {
 #if SL_LAYERED
     // The environment through a transmitting surface, along −V or refracted (the rasterizer sees nothing else behind).
     if (u_transmission.x > 0.0f)
-        environment += transmissionEnvironment(s_transmitColor, u_transmitTint * environmentAlong(transmissionDirection(N, V, u_transmission), surfaceS() * u_transmission.y),
+        environment += transmissionEnvironment(s_transmitColor, u_transmitTint * lightBehind(transmissionDirection(N, V, u_transmission), surfaceS() * u_transmission.y),
                                                u_specLayer, dfg, SL_DIFFUSE, SL_SPECULAR);
 #endif
 #if SL_SHEENED

@@ -76,7 +76,7 @@ void drawLightingSection(PanelContext& ctx) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped(
         "raster: shadow maps, mirror planes, environment cubes; transmission (kt): reference only; glTF "
-        "transmission: the environment only");
+        "transmission: the environment and, in one, a cube");
     ImGui::PopStyleColor();
 
     ImGui::TextDisabled("Progression (keys 0-5)");

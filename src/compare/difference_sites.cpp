@@ -41,7 +41,7 @@ std::string likelyCause(const Scene& scene, const CoveredObject& o) {
     const bool reflections = scene.terms.reflections;
     if (reflections && any(m.kt)) return "transmission, which only the reference draws";
     if (reflections && modelOf(m, scene.model) == ShadingModel::Pbr && m.transmission.on())
-        return "glTF transmission, which the rasterizer reads from the environment alone";
+        return "glTF transmission, which the rasterizer reads from the environment or an environment cube";
     if (reflections && any(m.kr) && !o.plane) return "its reflection comes from an environment cube";
     if (scene.terms.shadows && !scene.lights.empty()) return "mostly shadow-map edges";
     return "";

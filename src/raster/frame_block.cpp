@@ -5,6 +5,7 @@
 #include "scene/light_at.h"
 #include "scene/scene_models.h"
 #include "shading/lighting.h"
+#include "shading/prefilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -78,6 +79,7 @@ FrameBlock makeFrameBlock(const Scene& scene, const ViewSetup& v, Band band, glm
             for (int i = 0; i < 9; ++i) f.iblSH[i] = glm::vec4(e.map->sh[size_t(i)], 0.0f);
         } else {
             f.iblInfo.x = kIblUniform;
+            f.iblInfo.z = shading::prefilterLevels(256);  // the levels EnvironmentLight::mirrorWeight reads
         }
     }
     return f;

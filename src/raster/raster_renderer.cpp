@@ -146,12 +146,17 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
     shadows_.setEpsilon(secondaryRayEpsilon(scene, scene.camera.position));
 }
 
-// Reflective spheres and mesh parts (kr > 0, reflections on): one environment cube each, rendered from its
-// centre with the image's programs, re-rendered only when something but the camera changes.
+// Reflective spheres and mesh parts (kr > 0, reflections on), and in an environment those glTF's transmission lets
+// the light through under pbr: one environment cube each, rendered from its centre with the image's programs,
+// re-rendered only when something but the camera changes.
 void RasterRenderer::prepareEnvironments(const Scene& scene, const FrameBlock& frame) {
     probes_.clear();
     if (!(frame.flags.w & kPassMirrors)) return;
-    const auto reflective = [](const Material& m) { return m.kr.x > 0.0f || m.kr.y > 0.0f || m.kr.z > 0.0f; };
+    const bool lit = scene.environment.has_value();  // the light through reads a cube only in an environment
+    const auto reflective = [&](const Material& m) {
+        return m.kr.x > 0.0f || m.kr.y > 0.0f || m.kr.z > 0.0f ||
+               (lit && m.transmission.on() && modelOf(m, scene.model) == ShadingModel::Pbr);
+    };
     for (size_t i = 0; i < scene.spheres.size() && probes_.size() < size_t(kMaxEnvironmentCubes); ++i) {
         const Sphere& s = scene.spheres[i];
         if (reflective(s.material)) probes_.push_back({int(i), -1, s.center, 0.5f * s.radius});

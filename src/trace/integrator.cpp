@@ -368,13 +368,19 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
     const float eps = scene_.epsilon();
     // The light through a transmitting surface, traced: straight on through a thin wall, refracted into a volume
     // (absorbed on the way out, leaveVolume). local() weighs it as the rasterizer weighs the environment there.
+    // In an environment the traced radiance stands in for the prefiltered lookup's mirror level, as the reflected
+    // ray's does (and the rasterizer's environment cube): from the roughness where that level's weight is 0 on, the
+    // lookup alone, and no ray.
     std::optional<glm::vec3> through;
     if (transmits && scene_.scene().terms.diffuse) {
         const glm::vec4 packed = transmissionPacked(m);
+        const float roughness = s.roughness * packed.y;
         const glm::vec3 share = m.transmission.factor * (1.0f - s.metallic) * s.baseColor;
-        if (admit(weight * share, tree))
-            through = transmittedRadiance(Ray{s.P - eps * s.Nf, shading::transmissionDirection(N, V, packed)},
-                                          depth + 1, weight * share, tree, s.roughness * packed.y);
+        const glm::vec3 D = shading::transmissionDirection(N, V, packed);
+        if ((!env_.lightsPbr() || env_.mirrorWeight(roughness) > 0.0f) && admit(weight * share, tree)) {
+            through = transmittedRadiance(Ray{s.P - eps * s.Nf, D}, depth + 1, weight * share, tree);
+            if (env_.lightsPbr()) through = env_.prefilteredWithMirror(D, roughness, *through);
+        }
         tree.current = self;
     }
     const glm::vec3* transmitted = through ? &*through : nullptr;
@@ -425,16 +431,11 @@ glm::vec3 WhittedIntegrator::shade(const Ray& ray, const Hit& hit, int depth, co
     return over(I + refracted);
 }
 
-glm::vec3 WhittedIntegrator::transmittedRadiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree,
-                                                 float roughness) const {
+glm::vec3 WhittedIntegrator::transmittedRadiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const {
     const std::optional<Hit> hit = visibleHit(ray, 0.0f, depth);
     const int parent = tree.current;
     if (tree.record) note(tree, TreeRayKind::Refracted, depth, ray, hit, weight);
-    glm::vec3 L;
-    if (hit)
-        L = shade(ray, *hit, depth, weight, tree);
-    else
-        L = env_.lightsPbr() ? env_.prefiltered(ray.dir, roughness) : env_.escaping(ray.dir);
+    const glm::vec3 L = hit ? shade(ray, *hit, depth, weight, tree) : env_.escaping(ray.dir);
     tree.current = parent;
     return L;
 }
@@ -443,18 +444,17 @@ glm::vec3 WhittedIntegrator::leaveVolume(const Ray& ray, const Hit& hit, const S
                                          const glm::vec3& weight, Tree& tree) const {
     const Material& m = *s.material;
     const glm::vec3 absorbed = m.volume.transmittance(hit.t);  // the ray's direction is unit: t is the distance
-    const float roughness = s.roughness * transmissionPacked(m).y;
     // N faces the ray, inside; out of the medium n1/n2 = ior. Past the critical angle the light stays inside.
     const glm::vec3 N = glm::normalize(s.N);
     glm::vec3 dir = glm::refract(ray.dir, N, m.ior);
     const bool inside = !(glm::dot(dir, dir) > 0.0f);
     dir = inside ? glm::reflect(ray.dir, N) : glm::normalize(dir);
-    // Out of depth or budget: the environment the ray would leave toward, as the rasterizer reads it.
+    // Out of depth or budget: the environment the ray would leave toward.
     if (!scene_.scene().terms.reflections || depth >= maxDepth_ || !admit(weight * absorbed, tree))
-        return absorbed * (env_.lightsPbr() ? env_.prefiltered(dir, roughness) : env_.escaping(dir));
+        return absorbed * env_.escaping(dir);
     const float eps = scene_.epsilon();
     const Ray next{inside ? s.P + eps * s.Nf : s.P - eps * s.Nf, dir};
-    return absorbed * transmittedRadiance(next, depth + 1, weight * absorbed, tree, roughness);
+    return absorbed * transmittedRadiance(next, depth + 1, weight * absorbed, tree);
 }
 
 }  // namespace shadelab::trace

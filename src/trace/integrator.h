@@ -95,9 +95,8 @@ private:
     // light `index` when given). Out of line, as lightThrough.
     [[gnu::noinline]] float visibilityBehind(const Surface& s, const Light& light, Tree* record, size_t index) const;
     // Radiance arriving along a ray through a transmitting surface, `depth` bounces from the camera: the object it
-    // meets, shaded, or the environment prefiltered at the transmitted lobe's `roughness` (the rasterizer's lookup).
-    glm::vec3 transmittedRadiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree,
-                                  float roughness) const;
+    // meets, shaded, or the environment along it.
+    glm::vec3 transmittedRadiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree) const;
     // Light leaving a transmitting volume at `hit`, seen from inside along `ray`: absorbed over the way in
     // (Beer–Lambert), then refracted out by the index (or reflected back in past the critical angle).
     glm::vec3 leaveVolume(const Ray& ray, const Hit& hit, const Surface& s, int depth, const glm::vec3& weight,
