@@ -162,6 +162,22 @@ class ReferenceGltfLayerControls : public test::GlTest {};
 
 namespace {
 
+// A pbr scene in the shipped sky (turned by `rotation` degrees), seen from `eye` toward the origin, 40° high.
+Scene skyStage(const glm::vec3& eye, float rotation) {
+    static const auto sky = loadPrefilteredHdr(test::sourcePath("assets/environments/sky.hdr"));
+    Scene scene;
+    scene.camera.position = eye;
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.camera.fovY = 40.0f;
+    scene.model = ShadingModel::Pbr;
+    Environment env;
+    env.hdr = "sky.hdr";
+    env.map = sky;
+    env.rotation = rotation;
+    scene.environment = env;
+    return scene;
+}
+
 // One negative control: makeCoatScene(c) rendered by the rasterizer against the same scene with `change` made to
 // every sphere's and the floor's material in the tracer must fail the gates.
 void expectChangeFails(const CoatCase& c, const std::string& name, const std::function<void(Material&)>& change) {
@@ -231,7 +247,6 @@ TEST_F(ReferenceGltfLayerControls, TransmissionChangesFail) {
 // without a light, a specular layer with an index of 2.4 reads it too, and so does a sheen at its own roughness;
 // the coat dropped, pbr's own F0, or the sheen dropped, in one renderer fails (negative controls).
 TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
-    static const auto sky = loadPrefilteredHdr(test::sourcePath("assets/environments/sky.hdr"));
     for (int variant = 0; variant < 7; ++variant) {
         const bool light = variant == 1, layer = variant == 2, sheen = variant == 3, aniso = variant == 4;
         // Transmission: a clear ball of index 1 in the sky (light passes straight through both renderers' ways: the
@@ -239,16 +254,7 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
         // uniform environment (any way through reads the same radiance). The rasterizer does not see a thin shell's far
         // side, which the Whitted tracer shades: no thin shell here (the local terms above hold it).
         const bool thin = variant == 5, volume = variant == 6;
-        Scene scene;
-        scene.camera.position = {0.0f, 0.8f, 3.6f};
-        scene.camera.target = {0.0f, 0.0f, 0.0f};
-        scene.camera.fovY = 40.0f;
-        scene.model = ShadingModel::Pbr;
-        Environment env;
-        env.hdr = "sky.hdr";
-        env.map = sky;
-        env.rotation = 30.0f;
-        scene.environment = env;
+        Scene scene = skyStage({0.0f, 0.8f, 3.6f}, 30.0f);
         if (volume) {
             scene.environment = Environment{};
             scene.background = glm::vec3(0.6f, 0.7f, 0.9f);
@@ -314,16 +320,7 @@ TEST_F(ReferenceGltfLayerControls, SkyLitLayersMatchAndTheirAbsenceFails) {
 // red ball behind a clear one of index 1 shows red at the clear ball's centre, in the rasterizer as in the Whitted
 // tracer's ray; without the red ball (control) the centre shows the sky and the floor's grey, in both.
 TEST_F(ReferenceGltfLayerControls, GlassShowsWhatLiesBehindItInTheRasterizer) {
-    static const auto sky = loadPrefilteredHdr(test::sourcePath("assets/environments/sky.hdr"));
-    Scene scene;
-    scene.camera.position = {0.0f, 0.3f, 4.0f};
-    scene.camera.target = {0.0f, 0.0f, 0.0f};
-    scene.camera.fovY = 40.0f;
-    scene.model = ShadingModel::Pbr;
-    Environment env;
-    env.hdr = "sky.hdr";
-    env.map = sky;
-    scene.environment = env;
+    Scene scene = skyStage({0.0f, 0.3f, 4.0f}, 0.0f);
     scene.maxDepth = 8;
     Material glass;
     glass.baseColor = glm::vec3(1.0f);
