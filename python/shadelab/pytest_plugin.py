@@ -12,6 +12,10 @@ fails the test in plain words. A check's name is a plain file name, so that its 
 folders: a name with '/' or '\\', or "." or "..", is refused with a ValueError. Before a check runs, the plugin
 deletes that check's own evidence from an earlier run, by the four exact names it writes, and nothing else.
 
+A render made with coverage=True carries the object each pixel shows, so a failure also says which objects the
+differing pixels lie on (by name when check() is given the scene: check(image, name, scene=scene)). The baseline
+PNG carries no object ids: the render's own say where the pixels are.
+
 Baselines are written only with --shadelab-update-baselines (every check's) or
 --shadelab-update-baselines=failed (only those that fail), never by a failing test, and never when the new
 PNG is byte for byte the old one. A baseline's sidecar <name>.json records the GL_RENDERER and version it was
@@ -26,6 +30,7 @@ from __future__ import annotations
 import json
 import os
 import re
+import shlex
 import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Mapping
@@ -43,6 +48,7 @@ if TYPE_CHECKING:
 
 _UPDATE = "--shadelab-update-baselines"
 _MODES = ("all", "failed")  # what --shadelab-update-baselines[=MODE] rewrites: every check's baseline, or the failing
+_SPELT = pytest.StashKey[bool]()  # set when pytest_load_initial_conftests spelt the bare flag "=all"
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -64,12 +70,48 @@ def pytest_load_initial_conftests(early_config: pytest.Config, parser: pytest.Pa
     # The bare flag takes no value: spelt "=all" here, before pytest's full parse, a test path after it stays a
     # test path instead of being read as the flag's value.
     args[:] = [f"{_UPDATE}=all" if arg == _UPDATE else arg for arg in args]
+    early_config.stash[_SPELT] = True
 
 
 def pytest_configure(config: pytest.Config) -> None:
     mode = config.getoption(_UPDATE)
+    if mode is not None and _SPELT not in config.stash and _gave_back_a_test_path(config, mode):
+        mode = "all"
+        config.option.shadelab_update_baselines = mode
     if mode is not None and mode not in _MODES:
         raise pytest.UsageError(f"{_UPDATE}: expected all or failed (or no value, for all), got {mode!r}")
+
+
+def _gave_back_a_test_path(config: pytest.Config, value: str) -> bool:
+    """Whether the bare flag swallowed the test path after it; if so, gives the path back to the run's paths.
+
+    Loaded from a conftest's pytest_plugins, the plugin is registered while pytest loads the conftests, so its
+    pytest_load_initial_conftests never runs: the bare flag stays bare and pytest's full parse reads
+    `--shadelab-update-baselines tests/` as the value "tests/". The words pytest parsed, its addopts first as
+    it reads them, show whether the value followed the bare flag ("=some", one word with the flag, stays a
+    usage error)."""
+    words = [*shlex.split(os.environ.get("PYTEST_ADDOPTS", "")), *config.getini("addopts"),
+             *config.invocation_params.args]
+    at = next((i for i in range(len(words) - 1) if words[i] == _UPDATE and words[i + 1] == value), None)
+    if at is None:
+        return False
+    paths = list(config.option.file_or_dir or [])
+    if paths:  # back where it stood: after the paths given before the flag
+        before = list(words[:at])
+        place = 0
+        for path in paths:
+            if path not in before:
+                break
+            before.remove(path)
+            place += 1
+        config.args = paths[:place] + [value] + paths[place:]
+    else:  # without it pytest fell back to testpaths or the current folder
+        config.args = [value]
+        source = getattr(pytest.Config, "ArgsSource", None)  # pytest >= 7.2
+        if source is not None:
+            config.args_source = source.ARGS
+    config.option.file_or_dir = list(config.args)
+    return True
 
 
 def _safe(text: str) -> str:
@@ -102,6 +144,9 @@ def _size_text(size: tuple[int, int] | list[int]) -> str:
     return f"{size[0]}x{size[1]}"
 
 
+_CHANNELS = {"R": "red", "G": "green", "B": "blue", "A": "alpha"}  # the report's channel letters, in words
+
+
 def _plain_reasons(report: dict[str, Any]) -> list[str]:
     """The failed gates in plain words. A baseline PNG has no object ids (coverage), so every pixel is compared
     under the gates: what the binary's report calls the "interior" region is here the whole image."""
@@ -113,13 +158,79 @@ def _plain_reasons(report: dict[str, Any]) -> list[str]:
                      f"({100 * region['fraction_over_threshold']:.2f}%) differ by more than {gates['threshold']}/255 "
                      f"in a colour channel; at most {allowed} ({100 * gates['max_fraction_over']:.2f}%) may")
     if region["over_hard_max"] > 0:
+        channel = _CHANNELS.get(region["max_channel"], region["max_channel"])
         lines.append(f"{region['over_hard_max']} pixels differ by more than {gates['hard_max']}/255, which no pixel "
-                     f"may; the largest difference is {region['max']}/255 in {region['max_channel']} at pixel "
+                     f"may; the largest difference is {region['max']}/255 in the {channel} channel at pixel "
                      f"(x={region['max_x']}, y={region['max_y']}) from the top left")
     if gates["max_mean"] is not None and region["mean"] > gates["max_mean"]:
         lines.append(f"the pixels differ by {region['mean']:.3f}/255 on average; at most {gates['max_mean']}/255 "
                      f"is allowed")
     return lines or list(report["reasons"])  # any other gate in the binary's words
+
+
+def _object_labels(scene: shadelab.Scene | None) -> list[str]:
+    """Labels for coverage ids 1, 2, ...: "'red plastic' (sphere 1)", or "sphere 3" for an unnamed object, as
+    the viewer and the binary label them (scene.objects lists spheres, planes and meshes in coverage id order)."""
+    if scene is None:
+        return []
+    labels: list[str] = []
+    counts: dict[str, int] = {}  # objects of each kind so far
+    for obj in scene.to_dict()["objects"]:
+        kind = str(obj.get("type", "object"))
+        counts[kind] = counts.get(kind, 0) + 1
+        where = f"{kind} {counts[kind]}"
+        labels.append(f"{obj['name']!r} ({where})" if obj.get("name") else where)
+    return labels
+
+
+def _where_they_differ(image: shadelab.Image, baseline: Path, report: dict[str, Any],
+                       scene: shadelab.Scene | None) -> str | None:
+    """Which objects the differing pixels lie on, one line, from the render's coverage (the baseline PNG has
+    none); for a render without coverage, how to get that line; None for an image read from a file or array."""
+    import numpy as np
+
+    if image.coverage is None:
+        if image.source in ("file", "array"):
+            return None  # no scene behind it to name
+        return ("to learn which objects these pixels lie on, render with coverage=True and pass the scene: "
+                "check(image, name, scene=scene)")
+    ours, theirs = image.to_uint8(), shadelab.Image.open(str(baseline)).to_uint8()
+    channels = min(ours.shape[2], theirs.shape[2])
+    difference = np.abs(ours[..., :channels].astype(np.int16) - theirs[..., :channels]).max(axis=2)
+    threshold = report["gates"]["threshold"]
+    differing, what = difference > threshold, f"by more than {threshold}/255"  # the pixels the first gate counts
+    if not differing.any():
+        differing, what = difference > 0, "at all"  # a failure of the mean gate alone
+    ids, counts = np.unique(image.coverage[differing], return_counts=True)
+    order = np.argsort(-counts, kind="stable")
+    labels = _object_labels(scene)
+
+    def label(object_id: int, first: bool) -> str:
+        if object_id == 0:
+            return "the background"
+        if object_id > len(labels):  # no scene given (or fewer objects than the render had): its place in the list
+            return f"scene.objects[{object_id - 1}]"
+        return f"object {labels[object_id - 1]}" if first else labels[object_id - 1]
+
+    total = int(counts.sum())
+    top = [(int(ids[i]), int(counts[i])) for i in order]  # the most differing pixels first
+    shown, rest = top[:3], top[3:]
+    others = [f"{n} on {label(i, False)}" for i, n in shown[1:]]
+    if rest:
+        others.append(f"{sum(n for _, n in rest)} elsewhere")
+    if total == 1:
+        line = f"the one pixel that differs {what} lies on {label(top[0][0], True)}"
+    elif len(top) == 1:
+        line = f"the {total} pixels that differ {what} all lie on {label(top[0][0], True)}"
+    elif 2 * top[0][1] > total:
+        line = (f"the {total} pixels that differ {what} lie mostly on {label(top[0][0], True)}: {top[0][1]} of "
+                f"them; " + ", ".join(others))
+    else:
+        line = (f"the {total} pixels that differ {what} lie on several objects: {top[0][1]} on "
+                f"{label(top[0][0], True)}, " + ", ".join(others))
+    if scene is None and any(i > 0 for i, _ in top):
+        line += " (check(image, name, scene=scene) names them)"
+    return line
 
 
 class ImageRegression:
@@ -168,13 +279,17 @@ class ImageRegression:
         return evidence
 
     def check(self, image: ImageLike, name: str | None = None, *,
-              gates: Mapping[str, float | None] | None = None) -> shadelab.CompareReport:
+              gates: Mapping[str, float | None] | None = None,
+              scene: shadelab.Scene | None = None) -> shadelab.CompareReport:
         """Compares `image` (a shadelab.Image, or anything shadelab.compare takes) with the baseline `name`
         (default: the test's name) under `gates` (design.md §4's by default; a dict overrides some) and
         returns the CompareReport. Fails the test, leaving the evidence, when the gates are not met or the sizes
-        differ. With --shadelab-update-baselines it first rewrites the baseline (=failed: only when the check
-        would fail; never when the PNG is byte for byte the same); the report is then against the baseline as
-        it stands."""
+        differ; for a render made with coverage=True the failure says which objects the differing pixels lie
+        on, named from `scene` (the scene rendered) when given. With --shadelab-update-baselines it first
+        rewrites the baseline (=failed: only when the check would fail; never when the PNG is byte for byte the
+        same); the report is then against the baseline as it stands."""
+        if scene is not None and not isinstance(scene, shadelab.Scene):
+            raise TypeError(f"shadelab_regression.check: scene must be a shadelab.Scene, got {type(scene).__name__}")
         name = _safe(self._request.node.name) if name is None else _check_name(name)
         baseline = self.baseline_path(name)
         if not isinstance(image, shadelab.Image):
@@ -207,7 +322,8 @@ class ImageRegression:
                 outcome.heatmap.save(f"{stem}-heat.png")
                 _write_json(Path(f"{stem}-report.json"), outcome.report)
                 files += ", -heat.png (where they differ), -report.json (the numbers)"
-                lines = "".join(f"  - {line}\n" for line in _plain_reasons(outcome.report))
+                where = _where_they_differ(image, baseline, outcome.report, scene)
+                lines = "".join(f"  - {line}\n" for line in [*_plain_reasons(outcome.report), where] if line)
                 why = f"the render differs from the baseline {baseline}:\n{lines}"
             pytest.fail(f"{name}: {why}evidence in {evidence}: {files}\n"
                         f"If the change is intended, rewrite the baseline with {_UPDATE}=failed.", pytrace=False)

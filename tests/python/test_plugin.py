@@ -1,10 +1,12 @@
 """The pytest plugin's shadelab_regression fixture, run on inner test sessions (pytester): it passes on an
 unchanged render, fails on a changed one (the negative control) leaving its evidence in a folder git ignores,
-fails in plain words on a render of another size, writes baselines only with --shadelab-update-baselines
-(=failed: only the failing ones; never a byte-identical one), returns a report in every mode and warns when the
-GL_RENDERER differs from the baseline's."""
+fails in plain words on a render of another size, names the objects the differing pixels lie on, writes
+baselines only with --shadelab-update-baselines (=failed: only the failing ones; never a byte-identical one; the
+bare flag also when a conftest loads the plugin), returns a report in every mode and warns when the GL_RENDERER
+differs from the baseline's."""
 
 import json
+import re
 import shutil
 import subprocess
 
@@ -328,9 +330,131 @@ def test_failure_messages_are_in_plain_words(pytester):
     result = run(pytester)
     result.assert_outcomes(failed=1)
     failure = result.stdout.str()
-    for jargon in ("interior", "coverage", "band"):
+    for jargon in ("interior", "band", "no coverage", "coverage id", "coverage differs"):
         assert jargon not in failure, jargon
-    assert "pixels differ by more than 16/255, which no pixel may; the largest difference is" in failure
+    assert re.search(r"pixels differ by more than 16/255, which no pixel may; the largest difference is \d+/255 in "
+                     r"the (red|green|blue) channel at pixel \(x=\d+, y=\d+\) from the top left", failure), failure
+    # A render without coverage says how to learn the objects (the word is render()'s keyword here).
+    assert "to learn which objects these pixels lie on, render with coverage=True and pass the scene" in failure
     # The negative control: the binary's own words, in the evidence's report, do use them.
     report = (pytester.path / "shadelab-evidence" / "test_render" / "default-report.json").read_text()
     assert "interior" in report and "coverage" in report
+
+
+# -- the objects the differing pixels lie on -----------------------------------------------------------------------
+
+OBJECTS = """
+import shadelab
+
+def test_render(shadelab_regression):
+    scene = shadelab.data.scene("default")
+    {edit}
+    image = shadelab.render(scene, size=(96, 64), coverage={coverage})
+    shadelab_regression.check(image, "default", scene={scene})
+"""
+
+
+def write_objects(pytester, edit="pass", coverage=True, scene="scene"):
+    pytester.makepyfile(test_inner=OBJECTS.format(edit=edit, coverage=coverage, scene=scene))
+
+
+def objects_line(result):
+    """The failure's line about objects, after checking that it counts the pixels the first gate counts."""
+    text = result.stdout.str()
+    over = re.search(r"- (\d+) of 6144 pixels \(.*\) differ by more than 3/255", text)
+    line = next(line for line in text.splitlines() if "pixels that differ by more than 3/255" in line)
+    counted = re.search(r"- the (\d+) pixels that differ by more than 3/255 ", line)
+    assert over and counted and counted.group(1) == over.group(1), text
+    return line
+
+
+def test_the_failure_names_the_object_the_pixels_lie_on(pytester):
+    # The default scene's objects: spheres 'red plastic', 'shiny blue', 'matte green', 'gold', 'mirror', then the
+    # plane 'floor'. The baseline PNG has no object ids; the render's coverage says where the pixels are.
+    write_objects(pytester)
+    run(pytester, "--shadelab-update-baselines").assert_outcomes(passed=1)
+    write_objects(pytester, edit="scene.objects[0].material.md = (0.1, 0.8, 0.1)")
+    result = run(pytester)
+    result.assert_outcomes(failed=1)
+    line = objects_line(result)
+    assert re.search(r"lie (mostly )?on object 'red plastic' \(sphere 1\)", line), line
+    assert "shiny blue" not in line and "floor" not in line, line
+    # The negative control: another object's material changed, the line names that one and not the first.
+    write_objects(pytester, edit="scene.objects[1].material.md = (0.8, 0.8, 0.1)")
+    result = run(pytester)
+    result.assert_outcomes(failed=1)
+    line = objects_line(result)
+    assert re.search(r"lie (mostly )?on object 'shiny blue' \(sphere 2\)", line), line
+    assert "red plastic" not in line, line
+    # Without the scene, the objects are named by their place in scene.objects, with a word on how to name them.
+    write_objects(pytester, edit="scene.objects[1].material.md = (0.8, 0.8, 0.1)", scene=None)
+    line = objects_line(run(pytester))
+    assert re.search(r"lie (mostly )?on scene\.objects\[1\]", line), line
+    assert line.endswith("(check(image, name, scene=scene) names them)"), line
+    # Without coverage there is nothing to name them by: the failure says how to get it instead.
+    write_objects(pytester, edit="scene.objects[1].material.md = (0.8, 0.8, 0.1)", coverage=False)
+    result = run(pytester)
+    result.assert_outcomes(failed=1)
+    assert "pixels that differ by more than" not in result.stdout.str()
+    result.stdout.fnmatch_lines(["*  - to learn which objects these pixels lie on, render with coverage=True and "
+                                 "pass the scene: check(image, name, scene=scene)"])
+
+
+def test_a_scene_that_is_no_scene_is_refused(pytester):
+    write_objects(pytester, scene="scene.to_dict()")
+    result = run(pytester, "--shadelab-update-baselines")
+    result.assert_outcomes(failed=1)
+    result.stdout.fnmatch_lines(["*TypeError: shadelab_regression.check: scene must be a shadelab.Scene, got dict"])
+    assert not (pytester.path / "baselines").exists()
+
+
+# -- the bare flag when a conftest loads the plugin -----------------------------------------------------------------
+
+def test_the_bare_flag_works_when_a_conftest_loads_the_plugin(pytester):
+    # No -p: the conftest's pytest_plugins loads the plugin, after pytest_load_initial_conftests has run.
+    pytester.makeconftest('pytest_plugins = ["shadelab.pytest_plugin"]')
+    pytester.makepyfile(test_inner=ARRAY_TEST.format(name="x"), test_other=ARRAY_TEST.format(name="other"))
+    baselines = pytester.path / "baselines"
+
+    def conftest_run(*args):
+        return pytester.runpytest("-p", "no:cacheprovider", *args)
+
+    # The negative control: without the flag, nothing is written.
+    conftest_run("test_inner.py").assert_outcomes(failed=1)
+    assert not baselines.exists()
+    # The bare flag followed by a test path: the path stays a path (only that file runs) and "all" is the mode.
+    result = conftest_run("--shadelab-update-baselines", "test_inner.py")
+    result.assert_outcomes(passed=1)
+    result.stdout.fnmatch_lines(["*shadelab: 1 baseline(s) rewritten*", "*x.png"])
+    assert sorted(p.name for p in baselines.iterdir()) == ["x.json", "x.png"]
+    # A path before it and one after: both run, in the order given.
+    (baselines / "x.png").unlink()
+    result = conftest_run("-v", "test_other.py", "--shadelab-update-baselines", "test_inner.py")
+    result.assert_outcomes(passed=2)
+    result.stdout.fnmatch_lines(["*test_other.py::test_render PASSED*", "*test_inner.py::test_render PASSED*"])
+    assert (baselines / "x.png").exists() and (baselines / "other.png").exists()
+    # The bare flag last, and =failed, work as they do under -p; an unknown mode is still a usage error.
+    for path in baselines.iterdir():
+        path.unlink()
+    conftest_run("--shadelab-update-baselines").assert_outcomes(passed=2)
+    assert (baselines / "x.png").exists() and (baselines / "other.png").exists()
+    conftest_run("--shadelab-update-baselines=failed", "test_inner.py").assert_outcomes(passed=1)
+    result = conftest_run("--shadelab-update-baselines=some", "test_inner.py")
+    assert result.ret == pytest.ExitCode.USAGE_ERROR
+    result.stderr.fnmatch_lines(["*expected all or failed (or no value, for all), got 'some'"])
+
+
+def test_the_bare_flag_under_a_conftest_needs_the_path_given_back(pytester, monkeypatch):
+    # The negative control for the test above: without giving the path back, pytest's parse reads the test path as
+    # the flag's value, and the run stops with a usage error.
+    import shadelab.pytest_plugin
+
+    monkeypatch.setattr(shadelab.pytest_plugin, "_gave_back_a_test_path", lambda config, value: False)
+    pytester.makeconftest('pytest_plugins = ["shadelab.pytest_plugin"]')
+    pytester.makepyfile(test_inner=ARRAY_TEST.format(name="x"))
+    result = pytester.runpytest("-p", "no:cacheprovider", "--shadelab-update-baselines", "test_inner.py")
+    assert result.ret == pytest.ExitCode.USAGE_ERROR
+    result.stderr.fnmatch_lines(["*expected all or failed (or no value, for all), got 'test_inner.py'"])
+    assert not (pytester.path / "baselines").exists()
+    # Under -p the plugin spells the bare flag "=all" before the parse, so it needs no giving back.
+    run(pytester, "--shadelab-update-baselines", "test_inner.py").assert_outcomes(passed=1)
