@@ -94,11 +94,11 @@ def foreign_libraries(module):
             if not wheel_libs.SYSTEM_LIBRARIES.match(name) and package not in Path(path).resolve().parents}
 
 
-def hiding_prefix():
-    """A command prefix that runs its command in a private mount namespace with Debian's copies of HIDDEN replaced
-    by empty files, or None where user namespaces are not allowed."""
+def hiding_prefix(hidden=HIDDEN):
+    """A command prefix that runs its command in a private mount namespace with Debian's copies of `hidden`
+    replaced by empty files, or None where user namespaces are not allowed."""
     binds = []
-    for name in HIDDEN:
+    for name in hidden:
         real = os.path.realpath(f"/usr/lib/{os.uname().machine}-linux-gnu/{name}")
         if os.path.exists(real):
             binds.append(f"mount --bind /dev/null {real}")
@@ -170,6 +170,35 @@ def test_renders_the_binarys_bytes_from_another_folder_with_debians_libraries_hi
     control = subprocess.run([*prefix, sys.executable, "-c", "import shadelab"], capture_output=True, text=True,
                              env=dict(clean_env(work), PYTHONPATH=str(build_module().parent.parent)))
     assert control.returncode != 0 and "libOpenEXR-3_1.so.30" in control.stderr, control.stderr[-2000:]
+
+
+NO_GL = r"""
+import shadelab
+scene = shadelab.data.scene("default")
+print("trace", shadelab.render(scene, (32, 18), renderer="trace").to_uint8().shape)
+try:
+    shadelab.render(scene, (32, 18))
+except Exception as e:
+    print("raster:", e)
+"""
+
+
+def test_without_libegl_or_libosmesa_the_tracers_work_and_raster_says_why_not(venv, work):
+    # libEGL and libOSMesa are loaded at run time (not linked): with both hidden the package still imports and
+    # traces, and the rasterizer's error names what is missing.
+    prefix = hiding_prefix(["libEGL.so.1", "libOSMesa.so.8"])
+    if prefix is None:
+        pytest.skip("user namespaces are not allowed here: the GL libraries cannot be hidden")
+    p = subprocess.run([*prefix, str(venv / "bin" / "python"), "-c", NO_GL], capture_output=True, text=True,
+                       cwd=work, env=clean_env(work))
+    assert p.returncode == 0, p.stderr[-3000:]
+    assert "trace (18, 32, 3)" in p.stdout or "trace (18, 32, 4)" in p.stdout, p.stdout
+    (raster,) = [line for line in p.stdout.splitlines() if line.startswith("raster:")]
+    assert "libEGL.so.1 not found" in raster and "libOSMesa" in raster, raster
+    # The negative control: with the libraries there, the same script rasterizes.
+    p = subprocess.run([str(venv / "bin" / "python"), "-c", NO_GL], capture_output=True, text=True, cwd=work,
+                       env=clean_env(work))
+    assert p.returncode == 0 and "raster:" not in p.stdout, p.stdout + p.stderr[-2000:]
 
 
 def test_the_notebook_runs_on_a_kernel_of_the_venv(venv, work):
