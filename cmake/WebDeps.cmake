@@ -3,7 +3,7 @@
 # header-only libraries the web build needs (glm, nlohmann-json, tinygltf, stb) are reached through a folder of
 # links to exactly those headers in the build tree, and are given the same target names the native build gets
 # from find_package, so the modules' CMakeLists stay as they are. tinygltf and stb are compiled from their
-# headers in one unit of the web target (web/src/third_party.cpp), where the native build links Debian's libraries.
+# headers in src/third_party/, as natively.
 set(SHADELAB_WEB_INCLUDE ${PROJECT_BINARY_DIR}/web-include)
 file(MAKE_DIRECTORY ${SHADELAB_WEB_INCLUDE})
 foreach(entry glm nlohmann tiny_gltf.h stb)
@@ -23,9 +23,7 @@ add_library(glm::glm INTERFACE IMPORTED)
 target_include_directories(glm::glm SYSTEM INTERFACE ${SHADELAB_WEB_INCLUDE})
 add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
 target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE ${SHADELAB_WEB_INCLUDE})
-add_library(PkgConfig::STB INTERFACE IMPORTED)
-target_include_directories(PkgConfig::STB SYSTEM INTERFACE ${SHADELAB_WEB_INCLUDE}/stb)
-add_library(PkgConfig::TINYGLTF INTERFACE IMPORTED)
-target_include_directories(PkgConfig::TINYGLTF SYSTEM INTERFACE ${SHADELAB_WEB_INCLUDE} ${SHADELAB_WEB_INCLUDE}/stb)
+set(SHADELAB_STB_INCLUDE ${SHADELAB_WEB_INCLUDE}/stb)  # for src/third_party/, as the native build's find_path
+set(SHADELAB_TINYGLTF_INCLUDE ${SHADELAB_WEB_INCLUDE})
 # No threads in the page: every tracer runs with one thread per Web Worker (parallelFor then runs inline).
 add_library(Threads::Threads INTERFACE IMPORTED)

@@ -17,7 +17,8 @@ packages=(
   nlohmann-json3-dev                                    # JSON
   xvfb xauth assimp-testmodels valgrind                 # test tools and real glTF test data
   pybind11-dev python3-dev python3-numpy python3-pytest # the Python package (build/python) and its tests
-  python3-setuptools python3-pip python3-venv           # `pip install .` offline, with Debian's build tools
+  python3-setuptools python3-wheel python3-pip python3-venv # `pip install .` / `pip wheel .` offline, with Debian's tools
+  patchelf                                              # the wheel carries OpenEXR and zlib (tools/wheel_libs.py)
   jupyter-nbconvert python3-ipykernel python3-ipywidgets # the notebook, executed by the tests
   python3-distributed                                   # Dask: the batch-sweep example and its test
   python3-mypy                                          # the package's type checks (mypy --strict, stubtest)

@@ -1,9 +1,9 @@
 // EGL headless contexts: the device platform (EGL_EXT_platform_device) and Mesa's surfaceless
 // platform, OpenGL 3.3 core, or OpenGL ES 3 for checking the ES dialect. Contexts are made current with no
 // surface (EGL_KHR_surfaceless_context).
+#include "gl/egl_library.h"
 #include "gl/headless_context.h"
 
-#include <EGL/egl.h>
 #include <EGL/eglext.h>
 
 #include <cstring>
@@ -37,7 +37,7 @@ bool hasExtension(const char* list, const char* name) {
 
 template <typename Fn>
 Fn eglProc(const char* name) {
-    return reinterpret_cast<Fn>(eglGetProcAddress(name));
+    return reinterpret_cast<Fn>(eglLibrary().getProcAddress(name));
 }
 
 class EglContext : public HeadlessContext {
@@ -51,19 +51,19 @@ public:
     // current. Throws on failure; the destructor then releases whatever was made.
     void init(bool es = false) {
         EGLint major = 0, minor = 0;
-        if (!eglInitialize(display_, &major, &minor))
-            throw std::runtime_error("eglInitialize failed: " + eglErrorName(eglGetError()));
+        if (!egl_.initialize(display_, &major, &minor))
+            throw std::runtime_error("eglInitialize failed: " + eglErrorName(egl_.getError()));
         initialized_ = true;
         const char* api = es ? "OpenGL ES 3" : "OpenGL 3.3 core";
-        if (!eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API))
+        if (!egl_.bindApi(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API))
             throw std::runtime_error(std::string("eglBindAPI for ") + api + " failed");
 
         EGLConfig config = nullptr;
         EGLint count = 0;
         const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
                                         0, EGL_NONE};
-        if (!eglChooseConfig(display_, configAttribs, &config, 1, &count) || count == 0) {
-            if (!hasExtension(eglQueryString(display_, EGL_EXTENSIONS), "EGL_KHR_no_config_context"))
+        if (!egl_.chooseConfig(display_, configAttribs, &config, 1, &count) || count == 0) {
+            if (!hasExtension(egl_.queryString(display_, EGL_EXTENSIONS), "EGL_KHR_no_config_context"))
                 throw std::runtime_error(std::string("no EGL config supports ") + api);
             config = EGL_NO_CONFIG_KHR;
         }
@@ -71,40 +71,42 @@ public:
             EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
             EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
         const EGLint esAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
-        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, es ? esAttribs : coreAttribs);
+        context_ = egl_.createContext(display_, config, EGL_NO_CONTEXT, es ? esAttribs : coreAttribs);
         if (context_ == EGL_NO_CONTEXT)
             throw std::runtime_error(std::string("eglCreateContext (") + api +
-                                     ") failed: " + eglErrorName(eglGetError()));
-        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
-            throw std::runtime_error("eglMakeCurrent without a surface failed: " + eglErrorName(eglGetError()));
-        finishContextInfo(info_, [](const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); });
+                                     ") failed: " + eglErrorName(egl_.getError()));
+        if (!egl_.makeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            throw std::runtime_error("eglMakeCurrent without a surface failed: " + eglErrorName(egl_.getError()));
+        finishContextInfo(info_,
+                          [](const char* name) { return reinterpret_cast<void*>(eglLibrary().getProcAddress(name)); });
     }
 
     void makeCurrent() override {
-        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
-            throw std::runtime_error("eglMakeCurrent failed: " + eglErrorName(eglGetError()));
+        if (!egl_.makeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            throw std::runtime_error("eglMakeCurrent failed: " + eglErrorName(egl_.getError()));
     }
     void release() override {
-        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT))
-            throw std::runtime_error("eglMakeCurrent(EGL_NO_CONTEXT) failed: " + eglErrorName(eglGetError()));
+        if (!egl_.makeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT))
+            throw std::runtime_error("eglMakeCurrent(EGL_NO_CONTEXT) failed: " + eglErrorName(egl_.getError()));
     }
 
     ~EglContext() override {
         if (context_ != EGL_NO_CONTEXT) {
-            eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-            eglDestroyContext(display_, context_);
+            egl_.makeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+            egl_.destroyContext(display_, context_);
         }
-        if (initialized_) eglTerminate(display_);
+        if (initialized_) egl_.terminate(display_);
     }
 
 private:
+    const EglLibrary& egl_ = eglLibrary();  // throws, before anything is made, where libEGL is missing
     EGLDisplay display_;
     EGLContext context_ = EGL_NO_CONTEXT;
     bool initialized_ = false;
 };
 
 PFNEGLGETPLATFORMDISPLAYEXTPROC platformDisplayFn(const char* needed) {
-    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    const char* client = eglLibrary().queryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasExtension(client, needed)) throw std::runtime_error(std::string(needed) + " not supported");
     auto fn = eglProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
     if (!fn) throw std::runtime_error("eglGetPlatformDisplayEXT missing");

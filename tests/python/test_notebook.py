@@ -58,6 +58,14 @@ def test_phong_lab_executes_from_a_temporary_folder(outside):
     assert "bytes of PNG for the scene" in text and "N·L" in text
     assert "shininess slider: log2(s) from 0 to 10, continuous_update=False" in text
     assert "the shininess slider changes the picture under phong, blinn-phong, pbr, disney" in text
+    # The slider cell's pictures are saved with the notebook (display outputs, updated in place), so nbviewer and
+    # HTML exports show the last picture and lobe. The last render is disney at s = 512 (the test cell's last move),
+    # not the first one the cell displayed: the saved outputs follow the updates.
+    slider = next(c for c in executed["cells"] if "FloatSlider" in "".join(c["source"]))
+    shown = [o["data"]["image/png"] for o in slider["outputs"] if "image/png" in o.get("data", {})]
+    assert len(shown) == 2, [o["output_type"] for o in slider["outputs"]]
+    first = [o for o in outputs if "image/png" in o.get("data", {})]
+    assert all(png not in [f["data"]["image/png"] for f in first[:1]] for png in shown)
 
 
 def test_a_repository_path_fails_from_there(outside):
