@@ -28,6 +28,7 @@ from wheel.bdist_wheel import bdist_wheel
 
 ROOT = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT / "tools"))
+sys.dont_write_bytecode = True  # no tools/__pycache__ in the source tree
 import wheel_libs  # noqa: E402  (tools/, beside this file)
 
 # The platform tag the module built in this run can claim (wheel_libs.platform_tag), set by build_ext.
