@@ -18,7 +18,7 @@ from conftest import SOURCE_DIR
 NOTEBOOKS = SOURCE_DIR / "docs" / "notebooks"
 
 
-def execute(notebook, folder):
+def execute(notebook, folder, config=NOTEBOOKS / "nbconvert_config.py"):
     """Runs `notebook` (a path inside `folder`, where its kernel starts) headlessly; the completed process."""
     jupyter = shutil.which("jupyter")
     if not jupyter:
@@ -28,7 +28,7 @@ def execute(notebook, folder):
     env["PYTHONPATH"] = os.pathsep.join(os.path.abspath(p) for p in env.get("PYTHONPATH", "").split(os.pathsep) if p)
     env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
     return subprocess.run([jupyter, "nbconvert", "--to", "notebook", "--execute", "--config",
-                           str(NOTEBOOKS / "nbconvert_config.py"), "--ExecutePreprocessor.timeout=300",
+                           str(config), "--ExecutePreprocessor.timeout=300",
                            "--output-dir", str(folder / "executed"), str(notebook)],
                           capture_output=True, text=True, env=env, cwd=folder)
 
@@ -64,6 +64,12 @@ def test_phong_lab_executes_from_a_temporary_folder(outside):
     slider = next(c for c in executed["cells"] if "FloatSlider" in "".join(c["source"]))
     shown = [o["data"]["image/png"] for o in slider["outputs"] if "image/png" in o.get("data", {})]
     assert len(shown) == 2, [o["output_type"] for o in slider["outputs"]]
+    words = "".join("".join(o["data"]["text/markdown"]) for o in slider["outputs"] if "text/markdown" in o.get("data", {}))
+    assert words == "shininess **s = 512** (log2 s = 9), model **disney**", words
+    # The widgets' own state is saved too (metadata.widgets, in nbclient's format): the slider at its last value.
+    state = executed["metadata"]["widgets"]["application/vnd.jupyter.widget-state+json"]["state"]
+    sliders = [m["state"] for m in state.values() if m["model_name"] == "FloatSliderModel"]
+    assert [(s["value"], s["min"], s["max"], s["continuous_update"]) for s in sliders] == [(9, 0, 10, False)], sliders
     first = [o for o in outputs if "image/png" in o.get("data", {})]
     assert all(png not in [f["data"]["image/png"] for f in first[:1]] for png in shown)
 
@@ -79,3 +85,17 @@ def test_a_repository_path_fails_from_there(outside):
     notebook.write_text(json.dumps(source))
     p = execute(notebook, outside)
     assert p.returncode != 0 and "default.json" in p.stderr, p.stderr[-3000:]
+
+
+def test_without_the_configs_state_hand_over_no_widget_state_is_saved(outside):
+    # The negative control of the saved widget state: the same config with its old-protocol hand-over undone.
+    config = outside / "config_without_state.py"
+    config.write_text(f"exec(open({str(NOTEBOOKS / 'nbconvert_config.py')!r}).read())\n"
+                      "nbclient.client.NotebookClient.handle_comm_msg = _handle_comm_msg\n")
+    notebook = outside / "phong-lab.ipynb"
+    shutil.copyfile(NOTEBOOKS / "phong-lab.ipynb", notebook)
+    p = execute(notebook, outside, config)
+    assert p.returncode == 0, p.stderr[-3000:]
+    executed = json.loads((outside / "executed" / "phong-lab.ipynb").read_text())
+    state = executed["metadata"].get("widgets", {}).get("application/vnd.jupyter.widget-state+json", {})
+    assert not [m for m in state.get("state", {}).values() if m["model_name"] == "FloatSliderModel"]
