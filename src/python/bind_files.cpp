@@ -18,6 +18,7 @@ void bindFiles(py::module_& m) {
         [](const std::string& path, const py::bytes& data) {
             const std::string bytes = data;
             py::gil_scoped_release release;
+            createOutputFolder(path);
             writeFileAtomic(path, bytes);
         },
         py::arg("path"), py::arg("data"));

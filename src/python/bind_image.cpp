@@ -7,6 +7,7 @@
 #include "python/bindings.h"
 #include "python/image_data.h"
 #include "util/input_error.h"
+#include "util/output_file.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -299,6 +300,7 @@ In Jupyter an image shows itself.)")
                     if (!exr) throw UsageError("exr_precision: only for an .exr path (this one writes a PNG)");
                 }
                 try {
+                    createOutputFolder(path.string());  // as `render -o out/x.png` does
                     if (exr)
                         writeExr(path.string(), exrFromImage(i.linear), precision.value_or(ExrPrecision::Float));
                     else

@@ -6,6 +6,7 @@
 #include "python/scene_handle.h"
 #include "scene/scene_json.h"
 #include "scene/scene_models.h"
+#include "util/output_file.h"
 
 #include <pybind11/stl.h>
 
@@ -55,7 +56,11 @@ void bindScene(py::module_& m) {
             "Parses `document` as a scene file: (replaced, warnings); the scene is unchanged when it raises")
         .def("to_json", [](const SceneHandle& h) { return sceneToJson(h.scene()); })
         .def("to_document", [](const SceneHandle& h) { return jsonTextToPython(sceneToJson(h.scene(), true)); })
-        .def("save", [](const SceneHandle& h, const std::string& path) { saveSceneJson(h.scene(), path); })
+        .def("save",
+             [](const SceneHandle& h, const std::string& path) {
+                 createOutputFolder(path);  // as `render -o out/x.png` does
+                 saveSceneJson(h.scene(), path);
+             })
         .def("copy", [](const SceneHandle& h) { return SceneHandle(h); })
         .def(
             "layers_not_shown", [](const SceneHandle& h) { return layersNotShown(h.scene()); },

@@ -31,15 +31,20 @@ void refuseInputAsOutput(const std::string& path, const std::string& flag, const
     }
 }
 
-void checkOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs) {
+void createOutputFolder(const std::string& path) {
     if (isStdout(path)) return;
-    refuseInputAsOutput(path, flag, inputs);
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     std::error_code ec;
     if (!folder.empty() && !std::filesystem::exists(folder, ec)) {
         std::filesystem::create_directories(folder, ec);
         if (ec) throw InputError(path, "cannot create its folder " + folder.string() + ": " + ec.message());
     }
+}
+
+void checkOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs) {
+    if (isStdout(path)) return;
+    refuseInputAsOutput(path, flag, inputs);
+    createOutputFolder(path);
     checkWritableTarget(path);
 }
 

@@ -17,6 +17,11 @@ bool isStdout(const std::string& path);
 // that do not exist are skipped; their own read reports them.
 void refuseInputAsOutput(const std::string& path, const std::string& flag, const std::vector<std::string>& inputs);
 
+// Creates the folder of the output `path` with its parents when missing (so that `render -o out/x.png` and
+// Python's `image.save("out/x.png")` work in a fresh clone). Throws InputError naming `path` when it cannot
+// ("cannot create its folder out: Permission denied"). Nothing for stdout or a bare file name.
+void createOutputFolder(const std::string& path);
+
 // refuseInputAsOutput; then the output's folder is created with its parents when missing (so that
 // `render -o out/x.png` works in a fresh clone); then checkWritableTarget (an existing non-regular file, a
 // read-only folder), so a command fails before it renders. A path through an existing file is refused

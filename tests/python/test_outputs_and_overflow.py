@@ -77,3 +77,21 @@ def test_compare_report_names_do_not_escape_through_a_device(out_dir):
     # Negative control: an ordinary stem writes both files.
     heat, json_path = report.save(out_dir / "ok")
     assert os.path.exists(heat) and os.path.exists(json_path)
+
+
+def test_saving_into_a_missing_folder_creates_it_as_the_command_line_does(tmp_path):
+    # The README's first snippet saves to out/python.png in a fresh clone, where out/ does not exist yet.
+    scene = shadelab.Scene.from_dict(SCENE)
+    image = shadelab.render(scene, (16, 12))
+    image.save(tmp_path / "out" / "python.png")
+    image.save(tmp_path / "out" / "deeper" / "linear.exr")
+    scene.save(tmp_path / "scenes" / "copy.json")
+    assert (tmp_path / "out" / "python.png").read_bytes() == image.to_png()
+    assert (tmp_path / "out" / "deeper" / "linear.exr").stat().st_size > 0
+    assert shadelab.Scene.load(tmp_path / "scenes" / "copy.json").to_dict() == scene.to_dict()
+    # The negative control: a folder that cannot be made (its parent is a file) is one OSError naming the path,
+    # and nothing is written.
+    (tmp_path / "file").write_text("x")
+    with pytest.raises(OSError, match=r"file/sub/out\.png: cannot create its folder .*file/sub"):
+        image.save(tmp_path / "file" / "sub" / "out.png")
+    assert (tmp_path / "file").read_text() == "x"
