@@ -150,10 +150,8 @@ def run_outside(python, work, prefix=()):
 
 
 def test_renders_the_binarys_bytes_from_another_folder_with_debians_libraries_hidden(venv, work, binary):
-    prefix = hiding_prefix()
-    if prefix is None:
-        pytest.skip("user namespaces are not allowed here: Debian's libraries cannot be hidden")
-    p, folder = run_outside(venv / "bin" / "python", work, prefix)
+    prefix = hiding_prefix()  # None where user namespaces are not allowed: the checks then run unhidden
+    p, folder = run_outside(venv / "bin" / "python", work, prefix or ())
     assert p.returncode == 0, p.stderr[-3000:]
     assert f"shadelab from {venv}" in p.stdout
     mapped = p.stdout.splitlines()
@@ -166,6 +164,9 @@ def test_renders_the_binarys_bytes_from_another_folder_with_debians_libraries_hi
                         "--size", "64x36", "--renderer", renderer], check=True, capture_output=True)
         assert (folder / f"default-{renderer}.png").read_bytes() == ref.read_bytes(), renderer
     assert (folder / "layers.exr").read_bytes()[:4] == b"\x76\x2f\x31\x01"  # OpenEXR's magic number
+    if prefix is None:
+        pytest.skip("rendered from the wheel, but user namespaces are not allowed here: Debian's libraries could "
+                    "not be hidden, so the import without them is unchecked")
     # The negative control: the build tree's module, which links Debian's OpenEXR, does not even import there.
     control = subprocess.run([*prefix, sys.executable, "-c", "import shadelab"], capture_output=True, text=True,
                              env=dict(clean_env(work), PYTHONPATH=str(build_module().parent.parent)))
