@@ -79,8 +79,9 @@ std::vector<ExrLayer> surfaceLayers(SurfacePasses p) {
 // `display`: what the pixels are encoded with (render::displayOf, or Standard for a comparison).
 Frame rasterize(const Scene& scene, const render::RenderRequest& request, const DisplaySettings& display,
                 bool keepLinear, StageTimer& timer) {
-    raster::RasterRenderer renderer;
-    timer.stage("shader compile");
+    // One render: each program is compiled by the draw that needs it (a shader error is reported from there).
+    raster::RasterRenderer renderer(gl::ShaderLibrary(), raster::ProgramCheck::OnFirstUse);
+    timer.stage("renderer set-up");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");
     raster::OffscreenOptions options = render::toOffscreen(request, scene);

@@ -119,7 +119,8 @@ ImageData Renderer::rasterize(const Scene& scene, const render::RenderRequest& r
     std::shared_ptr<GlSession> gl = session();
     gl->run([&] {
         if (!raster_) {
-            raster_ = std::make_unique<raster::RasterRenderer>();
+            // Each program compiled by the first render that needs it (a shader error surfaces there).
+            raster_ = std::make_unique<raster::RasterRenderer>(gl::ShaderLibrary(), raster::ProgramCheck::OnFirstUse);
             uploaded_.reset();
         }
         std::vector<std::shared_ptr<const MeshGeometry>> geometry = geometryOf(scene);

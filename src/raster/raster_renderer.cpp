@@ -74,26 +74,28 @@ KeyBytes environmentSharedKey(const Scene& scene, const FrameBlock& frame) {
 
 }  // namespace
 
-RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders)
+RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders, ProgramCheck check)
     : shaders_(shaders.withDialect(gl::currentContextDialect())),
       programs_(shaders_),
       shadows_(shaders_),
       partial_(shaders_) {
-    // Compile errors surface here, not at a later draw: every variant is the same source with different
-    // constants, so these two (without shadows; with every optional block) check all of it. llvmpipe
-    // generates code lazily at the first draw, so variants a scene never uses cost little.
-    ShaderVariant local;
-    ShaderVariant full;
-    full.shadows = full.pcf = full.moreLights = true;
-    full.lights = 3;
-    full.shadowKind = {kShadowOrtho, kShadowPerspective, kShadowCube};
-    full.planes = 1;
-    full.planeMask = {1, 1, 1};
-    for (const ShaderVariant* v : {&local, &full}) {
-        const ColorPrograms& set = programs_.get(*v);
-        for (int k = 0; k < ColorPrograms::kKinds; ++k) set.get(ColorPrograms::Kind(k));
+    if (check == ProgramCheck::AtStart) {
+        // Compile errors surface here, not at a later draw: every variant is the same source with different
+        // constants, so these two (without shadows; with every optional block) check all of it. llvmpipe
+        // generates code lazily at the first draw, but keeps each linked program's IR.
+        ShaderVariant local;
+        ShaderVariant full;
+        full.shadows = full.pcf = full.moreLights = true;
+        full.lights = 3;
+        full.shadowKind = {kShadowOrtho, kShadowPerspective, kShadowCube};
+        full.planes = 1;
+        full.planeMask = {1, 1, 1};
+        for (const ShaderVariant* v : {&local, &full}) {
+            const ColorPrograms& set = programs_.get(*v);
+            for (int k = 0; k < ColorPrograms::kKinds; ++k) set.get(ColorPrograms::Kind(k));
+        }
+        glUseProgram(0);
     }
-    glUseProgram(0);
     // Environment cubes are sampled bilinearly across face edges: desktop core profiles leave this off, ES 3.0
     // and WebGL2 always filter across edges and have no such switch.
     if (shaders_.dialect() == gl::ShaderDialect::Glsl330) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);

@@ -80,7 +80,7 @@ render::RenderRequest rasterRequest(int width, int height) {
 
 PageLab::PageLab(const std::string& canvas)
     : context_(canvas),
-      renderer_(std::make_unique<raster::RasterRenderer>()),
+      renderer_(std::make_unique<raster::RasterRenderer>(gl::ShaderLibrary(), raster::ProgramCheck::OnFirstUse)),
       view_(std::make_unique<app::ImageView>(gl::ShaderLibrary())) {
     renderer_->setPartialRedraw(true);  // bit for bit a full draw (redraw_plan.h), as in the viewer
 }
