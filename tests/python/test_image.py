@@ -79,8 +79,9 @@ def test_png_round_trip(scene, out_dir):
     assert back.source == "file" and back.size == (64, 48)
     assert np.array_equal(back.to_uint8(), image.to_uint8())
     assert image._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n"
-    with pytest.raises(OSError, match="no_such_dir"):
-        image.save(out_dir / "no_such_dir" / "x.png")
+    (out_dir / "a_file").write_text("x")  # a missing folder is made; one under a file cannot be
+    with pytest.raises(OSError, match="a_file/sub/x.png: cannot create its folder"):
+        image.save(out_dir / "a_file" / "sub" / "x.png")
 
 
 def test_exr_round_trip(scene, out_dir):
@@ -114,8 +115,9 @@ def test_exr_refusals(source_dir, out_dir):
         image.save(out_dir / "x.png", exr_precision="half")
     with pytest.raises(TypeError, match="exr_precision: expected a string, got int"):
         image.save(out_dir / "x.exr", exr_precision=16)
-    with pytest.raises(OSError, match="no_such_dir"):
-        image.save(out_dir / "no_such_dir" / "x.exr")
+    (out_dir / "a_file").write_text("x")
+    with pytest.raises(OSError, match="a_file/sub/x.exr: cannot create its folder"):
+        image.save(out_dir / "a_file" / "sub" / "x.exr")
     # Never over an input: the scene file a live Scene was read from, through a link named .exr.
     source = out_dir / "src.json"
     source.write_text((source_dir / "assets" / "scenes" / "default.json").read_text())
