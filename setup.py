@@ -70,8 +70,11 @@ class CMakeBuild(build_ext):
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(self.cmake_module(), target)
-        copies = wheel_libs.bundle(target, target.parent)
-        PORTABLE_TAG[:] = [wheel_libs.platform_tag(copies)]
+        try:
+            copies = wheel_libs.bundle(target, target.parent)
+            PORTABLE_TAG[:] = [wheel_libs.platform_tag(copies)]
+        except RuntimeError as e:  # one line naming what is missing, not a traceback
+            raise SystemExit(f"shadelab: {e}") from None
         print(f"shadelab: packaged {target.name} with {len(copies) - 1} libraries in shadelab/{wheel_libs.FOLDER}/, "
               f"tag {PORTABLE_TAG[0]}", file=sys.stderr)
 

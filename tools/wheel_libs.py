@@ -104,6 +104,8 @@ def bundle(module, package_dir):
     """Copies the libraries `module` needs beyond the system's into `package_dir`/_libs/, sets run paths so the
     module finds them there (and they find each other), puts each one's licence beside it (`_libs/licences/`), and
     returns the files the wheel's tag depends on."""
+    if not shutil.which("patchelf"):
+        raise RuntimeError("patchelf is missing (apt-get install patchelf; scripts/install-deps.sh installs it)")
     libs = Path(package_dir) / FOLDER
     libs.mkdir(parents=True, exist_ok=True)
     copies = []
