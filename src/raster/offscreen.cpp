@@ -62,6 +62,14 @@ OffscreenResult renderOffscreen(RasterRenderer& renderer, const Scene& scene, co
     const int outRowsPerBand =
         std::max(1, (o.height + bandCount(hiW, hiH, o.maxTargetBytes) - 1) / bandCount(hiW, hiH, o.maxTargetBytes));
     const int coverageSample = k / 2;  // the tracer's choice: the pixel centre when k is odd
+    // Only the linear image hands the alpha on; the 8-bit conversion reads RGB. The caller's choice comes
+    // back at the end (the viewer's own frames keep theirs).
+    struct AlphaChoice {
+        RasterRenderer& renderer;
+        const bool before = renderer.targetAlpha();
+        ~AlphaChoice() { renderer.setTargetAlpha(before); }
+    } restore{renderer};
+    renderer.setTargetAlpha(o.keepLinear);
     ImageF hiStrip, loStrip;
     std::vector<uint32_t> bandCoverage;
     for (int outTop = 0; outTop < o.height; outTop += outRowsPerBand) {

@@ -118,6 +118,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     std::vector<size_t> blended;  // alphaMode BLEND parts, drawn last
     glDisable(GL_CULL_FACE);      // two-sided lighting: back faces are lit with the flipped normal
     glBindVertexArray(geometry_.meshVao.id());
+    TriangleBatches batches(batchTriangles_);
     for (size_t k = 0; k < geometry_.ranges.size(); ++k) {
         const DrawRange& r = geometry_.ranges[k];
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
@@ -129,7 +130,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
             blended.push_back(k);
             continue;
         }
-        drawRange(scene, options, k);
+        drawRange(scene, options, k, batches);
     }
 
     // Spheres: back faces of the bounding cube cover the footprint from outside and inside.
@@ -196,7 +197,7 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         glEnable(GL_BLEND);  // the coverage attachment is integer: blending leaves it alone
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
-        for (size_t k : blended) drawRange(scene, options, k);
+        for (size_t k : blended) drawRange(scene, options, k, batches);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
@@ -205,14 +206,14 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     glUseProgram(0);
 }
 
-void RasterRenderer::drawRange(const Scene& scene, const PassOptions& options, size_t k) const {
+void RasterRenderer::drawRange(const Scene& scene, const PassOptions& options, size_t k,
+                               TriangleBatches& batches) const {
     const DrawRange& r = geometry_.ranges[k];
     const Material& m = scene.meshes[r.mesh].parts[r.part].material;
     const gl::Program& p = objectProgram(programs_.of(m, true), ColorPrograms::Mesh, ColorPrograms::MeshEnvironment, -1,
                                          int(k), options);  // prepared by render()
     setMaterial(p, m, meshCoverageId(scene, r.mesh), programs_.modelOf(m), scene.normalized);
-    glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
+    batches.draw(r.firstIndex, r.indexCount);
 }
 
 }  // namespace shadelab::raster

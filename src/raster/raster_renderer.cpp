@@ -293,7 +293,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
         if (!mirrored) continue;
         if (mirrorTargets_.size() <= mirrors) mirrorTargets_.emplace_back();
         RenderTarget& t = mirrorTargets_[mirrors];
-        t.resize(width, band.rows, false);
+        t.resize(width, band.rows, false, false);  // plane.frag reads its colour only
         t.bind();
         glClearBufferfv(GL_COLOR, 0, background);
         glClearBufferfv(GL_DEPTH, 0, &farDepth);
@@ -342,7 +342,7 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
         partial_.forget();
     }
 
-    out.resize(width, band.rows, withCoverage);
+    out.resize(width, band.rows, withCoverage, &out == &target_ ? targetAlpha_ : true);
     out.bind();
     glClearBufferfv(GL_COLOR, 0, background);
     if (out.hasCoverage()) glClearBufferuiv(GL_COLOR, 1, noObject);

@@ -48,11 +48,12 @@ bool readsRedInteger() {
 
 }  // namespace
 
-void RenderTarget::resize(int width, int height, bool withCoverage) {
-    if (width == width_ && height == height_ && fbo_ && withCoverage == hasCoverage()) return;
+void RenderTarget::resize(int width, int height, bool withCoverage, bool withAlpha) {
+    if (width == width_ && height == height_ && fbo_ && withCoverage == hasCoverage() && withAlpha == withAlpha_)
+        return;
     width_ = width;
     height_ = height;
-    color_ = makeTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
+    withAlpha_ = withAlpha;
     coverage_ = withCoverage ? makeTexture(GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, width, height) : gl::Texture();
     depth_ = gl::Renderbuffer::create();
     glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
@@ -61,12 +62,22 @@ void RenderTarget::resize(int width, int height, bool withCoverage) {
 
     fbo_ = gl::Framebuffer::create();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
     if (coverage_) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, coverage_.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GLenum(coverage_ ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
     glDrawBuffers(2, buffers);
-    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    const auto attachColor = [&](GLint internalFormat, GLenum format) {
+        color_ = makeTexture(internalFormat, format, GL_FLOAT, width, height);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+        return glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    };
+    GLenum status = GL_FRAMEBUFFER_UNSUPPORTED;
+    if (!withAlpha && gl::currentContextDialect() == gl::ShaderDialect::Glsl330) {
+        status = attachColor(GL_RGB32F, GL_RGB);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            while (glGetError() != GL_NO_ERROR) {}  // a GL that refuses the format may say so; RGBA32F follows
+    }
+    if (status != GL_FRAMEBUFFER_COMPLETE) status = attachColor(GL_RGBA32F, GL_RGBA);
     // OpenGL ES 3.0 renders into RGBA32F only with EXT_color_buffer_float (WebGL2: the extension of that name).
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("raster framebuffer incomplete (status 0x" + std::to_string(status) + ") at " +

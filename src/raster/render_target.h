@@ -1,6 +1,6 @@
-// RenderTarget: the rasterizer's own framebuffer (design.md §2): RGBA32F linear colour, R32UI coverage
-// ids (only when asked for: they cost 4 bytes a pixel) and a 32-bit float depth buffer. Never the default
-// framebuffer or an EGL surface.
+// RenderTarget: the rasterizer's own framebuffer (design.md §2): RGBA32F linear colour (RGB32F when the alpha
+// is not wanted and the GL renders to it), R32UI coverage ids (only when asked for: they cost 4 bytes a pixel)
+// and a 32-bit float depth buffer. Never the default framebuffer or an EGL surface.
 #pragma once
 
 #include "gl/objects.h"
@@ -14,8 +14,11 @@ namespace shadelab::raster {
 
 class RenderTarget {
 public:
-    // Reallocates only when the size or the coverage choice changes. Needs a current context.
-    void resize(int width, int height, bool withCoverage);
+    // Reallocates only when the size, the coverage or the alpha choice changes. Needs a current context.
+    // withAlpha false: RGB32F colour where the framebuffer is complete with it (desktop Mesa's is; OpenGL ES and
+    // WebGL2 render to no three-channel float format, and get RGBA32F), a quarter less memory for an image
+    // whose alpha nobody reads. Read back as RGBA, its alpha is 1.
+    void resize(int width, int height, bool withCoverage, bool withAlpha = true);
     void bind() const;
     int width() const { return width_; }
     int height() const { return height_; }
@@ -38,6 +41,7 @@ public:
 
 private:
     int width_ = 0, height_ = 0;
+    bool withAlpha_ = true;  // as asked: the texture may have alpha anyway (see resize)
     gl::Framebuffer fbo_;
     gl::Texture color_;
     gl::Texture coverage_;

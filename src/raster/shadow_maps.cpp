@@ -2,6 +2,7 @@
 #include "raster/shadow_maps.h"
 
 #include "raster/shadow_fit.h"
+#include "raster/triangle_batches.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -96,11 +97,11 @@ void ShadowMaps::drawLayer(const Scene& scene, const std::vector<DrawRange>& ran
     glUseProgram(meshDepth_.id());
     meshDepth_.set("u_lightViewProj", vp, gl::Program::Uniform::Required);
     glBindVertexArray(meshVao);
+    TriangleBatches batches(batchTriangles_);
     for (const DrawRange& r : ranges) {
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
         if (outsideClip(vp, r.lo, r.hi)) continue;  // per part, per layer (cube faces cull most parts)
-        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(r.firstIndex * sizeof(uint32_t)));
+        batches.draw(r.firstIndex, r.indexCount);
     }
 
     // Sphere impostors ray-cast from the light: back faces of the bounding cube, as in the colour pass.

@@ -8,6 +8,7 @@
 #include "raster/draw_range.h"
 #include "raster/raster_limits.h"
 #include "raster/shadow_block.h"
+#include "raster/triangle_batches.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -47,6 +48,7 @@ private:
     gl::Framebuffer fbo_;
     int size_ = 0, allocatedLayers_ = 0, layerCount_ = 0;
     ShadowBlock block_{};
+    size_t batchTriangles_ = TriangleBatches::sizeForCurrentContext();
 };
 
 }  // namespace shadelab::raster
