@@ -76,6 +76,8 @@ void checkError(const char* what);
 #define glBindVertexArray shadelab_glBindVertexArray
 #define glEnableVertexAttribArray shadelab_glEnableVertexAttribArray
 #define glVertexAttribPointer shadelab_glVertexAttribPointer
+#define glDisableVertexAttribArray shadelab_glDisableVertexAttribArray
+#define glVertexAttrib4f shadelab_glVertexAttrib4f
 #define glDrawArrays shadelab_glDrawArrays
 #define glDrawElements shadelab_glDrawElements
 #define glCreateShader shadelab_glCreateShader

@@ -77,7 +77,7 @@ KeyBytes environmentSharedKey(const Scene& scene, const FrameBlock& frame) {
 RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders, ProgramCheck check)
     : shaders_(shaders.withDialect(gl::currentContextDialect())),
       programs_(shaders_),
-      shadows_(shaders_),
+      shadows_(shaders_, check == ProgramCheck::AtStart),
       partial_(shaders_) {
     if (check == ProgramCheck::AtStart) {
         // Compile errors surface here, not at a later draw: every variant is the same source with different

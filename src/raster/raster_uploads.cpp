@@ -33,12 +33,23 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
         glBindVertexArray(0);
         return;
     }
-    // Positions, normals, TEXCOORD_0, TEXCOORD_1 and tangents (five planar arrays; zeros for parts without
-    // texture coordinates or tangents), and one index buffer rebased per part.
+    // Positions, normals, then TEXCOORD_0, TEXCOORD_1 and tangents where any part has them (planar arrays; zeros
+    // for the parts without), and one index buffer rebased per part. An array no part has is left out: its
+    // attribute reads the constant 0 instead (a model without textures, as most CAD models are, uploads 24
+    // bytes a vertex instead of 56).
+    bool anyUv0 = false, anyUv1 = false, anyTangents = false;
+    for (const Mesh& m : scene.meshes)
+        for (const MeshPart& p : m.parts) {
+            const size_t n = p.geometry->positions.size();
+            anyUv0 = anyUv0 || (n > 0 && p.geometry->texcoords0.size() == n);
+            anyUv1 = anyUv1 || (n > 0 && p.geometry->texcoords1.size() == n);
+            anyTangents = anyTangents || (n > 0 && p.geometry->tangents.size() == n);
+        }
     const size_t uvOffset = vertexCount * 2 * sizeof(glm::vec3);
-    const size_t uv1Offset = uvOffset + vertexCount * sizeof(glm::vec2);
-    const size_t tangentOffset = uv1Offset + vertexCount * sizeof(glm::vec2);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(tangentOffset + vertexCount * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
+    const size_t uv1Offset = uvOffset + (anyUv0 ? vertexCount * sizeof(glm::vec2) : 0);
+    const size_t tangentOffset = uv1Offset + (anyUv1 ? vertexCount * sizeof(glm::vec2) : 0);
+    const size_t vertexBytes = tangentOffset + (anyTangents ? vertexCount * sizeof(glm::vec4) : 0);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertexBytes), nullptr, GL_STATIC_DRAW);
     std::vector<glm::vec2> zeros;
     std::vector<glm::vec4> zeros4;
     std::set<const Texture*> textures;
@@ -61,12 +72,14 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
                 glBufferSubData(GL_ARRAY_BUFFER, GLintptr(offset + vBase * sizeof(glm::vec2)),
                                 GLsizeiptr(n * sizeof(glm::vec2)), has ? uv.data() : zeros.data());
             };
-            uvs(g.texcoords0, uvOffset);
-            uvs(g.texcoords1, uv1Offset);
-            const bool hasTangents = g.tangents.size() == n;
-            if (!hasTangents) zeros4.assign(n, glm::vec4(0.0f));
-            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(tangentOffset + vBase * sizeof(glm::vec4)),
-                            GLsizeiptr(n * sizeof(glm::vec4)), hasTangents ? g.tangents.data() : zeros4.data());
+            if (anyUv0) uvs(g.texcoords0, uvOffset);
+            if (anyUv1) uvs(g.texcoords1, uv1Offset);
+            if (anyTangents) {
+                const bool hasTangents = g.tangents.size() == n;
+                if (!hasTangents) zeros4.assign(n, glm::vec4(0.0f));
+                glBufferSubData(GL_ARRAY_BUFFER, GLintptr(tangentOffset + vBase * sizeof(glm::vec4)),
+                                GLsizeiptr(n * sizeof(glm::vec4)), hasTangents ? g.tangents.data() : zeros4.data());
+            }
             const Material& mat = m.parts[pi].material;
             for (const TextureBinding* b : {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture,
                                             &mat.occlusionTexture, &mat.emissiveTexture})
@@ -85,12 +98,21 @@ void RasterRenderer::uploadMeshes(const Scene& scene) {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3),
                           reinterpret_cast<const void*>(vertexCount * sizeof(glm::vec3)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), reinterpret_cast<const void*>(uvOffset));
-    glEnableVertexAttribArray(3);
-    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), reinterpret_cast<const void*>(uv1Offset));
-    glEnableVertexAttribArray(4);
-    glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), reinterpret_cast<const void*>(tangentOffset));
+    // An attribute without an array reads the context's constant value, set here to the zeros it stands for
+    // (the default would give a tangent w = 1).
+    const auto array = [](GLuint location, bool present, GLint size, size_t stride, size_t offset) {
+        if (present) {
+            glEnableVertexAttribArray(location);
+            glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, GLsizei(stride),
+                                  reinterpret_cast<const void*>(offset));
+        } else {
+            glDisableVertexAttribArray(location);
+            glVertexAttrib4f(location, 0.0f, 0.0f, 0.0f, 0.0f);
+        }
+    };
+    array(2, anyUv0, 2, sizeof(glm::vec2), uvOffset);
+    array(3, anyUv1, 2, sizeof(glm::vec2), uv1Offset);
+    array(4, anyTangents, 4, sizeof(glm::vec4), tangentOffset);
     glBindVertexArray(0);
     textures_.prune(textures);
     gl::checkError("RasterRenderer::uploadMeshes");

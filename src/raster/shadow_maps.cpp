@@ -13,14 +13,19 @@
 
 namespace shadelab::raster {
 
-ShadowMaps::ShadowMaps(const gl::ShaderLibrary& shaders) {
-    meshDepth_ = gl::Program::build(shaders, "shadow_mesh.vert", "shadow_depth.frag");
-    sphereDepth_ = gl::Program::build(shaders, "shadow_sphere.vert", "shadow_sphere.frag");
+ShadowMaps::ShadowMaps(const gl::ShaderLibrary& shaders, bool buildNow) : shaders_(&shaders) {
+    if (buildNow) buildPrograms();
     ubo_ = gl::Buffer::create();
     glBindBuffer(GL_UNIFORM_BUFFER, ubo_.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(ShadowBlock), &block_, GL_DYNAMIC_DRAW);  // defined even if unused
     fbo_ = gl::Framebuffer::create();
     allocate(1, 1);
+}
+
+void ShadowMaps::buildPrograms() {
+    if (meshDepth_.id()) return;
+    meshDepth_ = gl::Program::build(*shaders_, "shadow_mesh.vert", "shadow_depth.frag");
+    sphereDepth_ = gl::Program::build(*shaders_, "shadow_sphere.vert", "shadow_sphere.frag");
 }
 
 void ShadowMaps::allocate(int size, int layers) {
@@ -69,6 +74,7 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
     glBindBuffer(GL_UNIFORM_BUFFER, ubo_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(ShadowBlock), &block_);
     if (layers == 0) return;
+    buildPrograms();
 
     // Depth-only passes: no colour attachment, a trivial fragment shader for meshes, both faces cast.
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());

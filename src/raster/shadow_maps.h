@@ -17,8 +17,10 @@ namespace shadelab::raster {
 
 class ShadowMaps {
 public:
-    // Builds the depth-only programs; needs a current GL 3.3 core context.
-    explicit ShadowMaps(const gl::ShaderLibrary& shaders);
+    // Needs a current GL 3.3 core context. The depth-only programs are built now when `buildNow` (the viewer's
+    // check at start: a shader error shows before anything draws), else by the first render that has layers
+    // to draw (a one-shot render without shadows never compiles them). `shaders` must outlive this object.
+    ShadowMaps(const gl::ShaderLibrary& shaders, bool buildNow);
 
     // Renders every layer fitShadows (shadow_fit.h) fits for the scene's first kMaxShadowedLights lights
     // (casters: meshes and spheres; planes occlude analytically in the shader) and uploads the block. Leaves the
@@ -38,11 +40,13 @@ public:
     const ShadowBlock& block() const { return block_; }
 
 private:
+    void buildPrograms();
     void allocate(int size, int layers);
     void drawLayer(const Scene& scene, const std::vector<DrawRange>& ranges, GLuint meshVao, GLuint cubeVao,
                    int layer) const;
 
-    gl::Program meshDepth_, sphereDepth_;
+    const gl::ShaderLibrary* shaders_;
+    gl::Program meshDepth_, sphereDepth_;  // empty until buildPrograms
     gl::Buffer ubo_;
     gl::Texture maps_;
     gl::Framebuffer fbo_;

@@ -6,6 +6,9 @@
 // - A colour target without alpha (RenderTarget::resize) holds the same RGB as one with it, reads back alpha 1,
 //   and renderOffscreen's 8-bit image is the same through either. Control: the target with alpha keeps a
 //   cleared alpha that the one without does not.
+// - A vertex array no mesh part has (texture coordinates, tangents) is left out of the upload and its attribute
+//   reads a constant 0: the torus without them draws exactly as with arrays of zeros. Control: one normal
+//   changed in those arrays' copy changes the image.
 #include "gl/gl_api.h"
 #include "gl_fixture.h"
 #include "image/png.h"
@@ -13,6 +16,7 @@
 #include "raster/raster_renderer.h"
 #include "raster/render_target.h"
 #include "raster/triangle_batches.h"
+#include "scene/mesh_geometry.h"
 #include "scene/scene_load.h"
 #include "test_output.h"
 
@@ -142,9 +146,9 @@ void savePair(const ImageF& a, const ImageF& b, const std::string& name) {
 
 }  // namespace
 
-class RasterBatchesTest : public test::GlTest {};
+class RasterMemoryTest : public test::GlTest {};
 
-TEST_F(RasterBatchesTest, BatchedDrawsEqualWholeDraws) {
+TEST_F(RasterMemoryTest, BatchedDrawsEqualWholeDraws) {
     TriangleSoup soup;
     makeSoup(soup, 1500);
     // Uneven ranges, as a model's parts are: batches fill across them and cut inside them.
@@ -168,14 +172,14 @@ TEST_F(RasterBatchesTest, BatchedDrawsEqualWholeDraws) {
     test::expectNoGlErrors("drawing the soup");
 }
 
-TEST_F(RasterBatchesTest, LlvmpipeGetsBatchesAndTheSizeIsNamed) {
+TEST_F(RasterMemoryTest, LlvmpipeGetsBatchesAndTheSizeIsNamed) {
     const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     const size_t expected =
         renderer.find("llvmpipe") != std::string::npos ? raster::TriangleBatches::kSoftwareBatch : size_t(0);
     EXPECT_EQ(raster::TriangleBatches::sizeForCurrentContext(), expected) << renderer;
 }
 
-TEST_F(RasterBatchesTest, ATargetWithoutAlphaHoldsTheSameColour) {
+TEST_F(RasterMemoryTest, ATargetWithoutAlphaHoldsTheSameColour) {
     raster::RenderTarget withAlpha, withoutAlpha;
     withAlpha.resize(kSize, kSize, false, true);
     withoutAlpha.resize(kSize, kSize, false, false);
@@ -207,4 +211,40 @@ TEST_F(RasterBatchesTest, ATargetWithoutAlphaHoldsTheSameColour) {
         writePng(test::outputPath("torus_rgba_target.png"), rgba.pixels);
     }
     EXPECT_EQ(rgba.linear.width, 160);
+}
+
+TEST_F(RasterMemoryTest, ArraysNoPartHasReadAsZeros) {
+    Scene scene = loadScene(test::sourcePath("assets/scenes/torus.json"));
+    ASSERT_FALSE(scene.meshes.empty());
+    raster::RasterRenderer r;
+    raster::OffscreenOptions o;
+    o.width = 200;
+    o.height = 120;
+    const auto render = [&](const Scene& s) {
+        r.uploadMeshes(s);
+        return raster::renderOffscreen(r, s, o).pixels;
+    };
+    for (const MeshPart& part : scene.meshes[0].parts) ASSERT_TRUE(part.geometry->texcoords0.empty());
+    const Image8 without = render(scene);
+    // The same parts with every optional array present, all zeros.
+    const auto withZeroArrays = [](Scene s, bool nudgeANormal) {
+        for (Mesh& m : s.meshes)
+            for (MeshPart& part : m.parts) {
+                MeshGeometry g = *part.geometry;
+                g.texcoords0.assign(g.positions.size(), glm::vec2(0.0f));
+                g.texcoords1.assign(g.positions.size(), glm::vec2(0.0f));
+                g.tangents.assign(g.positions.size(), glm::vec4(0.0f));
+                if (nudgeANormal)
+                    for (size_t i = 0; i < g.normals.size(); i += 7) g.normals[i] = -g.normals[i];
+                part.geometry = shareGeometry(std::move(g));
+            }
+        return s;
+    };
+    const Image8 with = render(withZeroArrays(scene, false));
+    EXPECT_EQ(without.data, with.data) << "images in " << test::outputPath("");
+    if (without.data != with.data) {
+        writePng(test::outputPath("torus_arrays_left_out.png"), without);
+        writePng(test::outputPath("torus_zero_arrays.png"), with);
+    }
+    EXPECT_NE(with.data, render(withZeroArrays(scene, true)).data) << "control: changed normals must show";
 }
