@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config libgtest-dev        # build and test
+  ccache                                                # keeps compiled objects between builds (CMakeLists.txt)
   clang-format                                          # scripts/check-format.sh (Debian 12: clang-format 14)
   libglfw3-dev                                          # window
   libglm-dev                                            # math

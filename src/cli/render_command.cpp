@@ -81,6 +81,7 @@ Frame rasterize(const Scene& scene, const render::RenderRequest& request, const 
                 bool keepLinear, StageTimer& timer) {
     // One render: each program is compiled by the draw that needs it (a shader error is reported from there).
     raster::RasterRenderer renderer(gl::ShaderLibrary(), raster::ProgramCheck::OnFirstUse);
+    renderer.setTriangleBatches(true);
     timer.stage("renderer set-up");
     renderer.uploadMeshes(scene);
     timer.stage("mesh upload");

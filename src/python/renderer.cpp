@@ -121,6 +121,7 @@ ImageData Renderer::rasterize(const Scene& scene, const render::RenderRequest& r
         if (!raster_) {
             // Each program compiled by the first render that needs it (a shader error surfaces there).
             raster_ = std::make_unique<raster::RasterRenderer>(gl::ShaderLibrary(), raster::ProgramCheck::OnFirstUse);
+            raster_->setTriangleBatches(true);  // one image per call, as the CLI's render
             uploaded_.reset();
         }
         std::vector<std::shared_ptr<const MeshGeometry>> geometry = geometryOf(scene);

@@ -140,7 +140,8 @@ void RasterRenderer::prepareShadows(const Scene& scene, int width, int height) {
     }
     if (key != shadowKey_) {
         shadows_.render(scene, settings, geometry_.ranges,
-                        geometry_.meshVao ? geometry_.meshVao.id() : geometry_.emptyVao.id(), geometry_.cubeVao.id());
+                        geometry_.meshVao ? geometry_.meshVao.id() : geometry_.emptyVao.id(), geometry_.cubeVao.id(),
+                        batchTriangles_);
         shadowKey_ = std::move(key);
         report_.shadowMaps = true;
     }

@@ -70,6 +70,11 @@ public:
     // Whether target() keeps an alpha channel (the default): renders that read only the colour drop it and
     // draw into RGB32F where the GL allows (RenderTarget::resize), 8 MiB less at 1920x1080.
     void setTargetAlpha(bool on) { targetAlpha_ = on; }
+    // Whether the mesh passes draw in flushed batches where that pays (TriangleBatches::sizeForCurrentContext):
+    // one-shot renders (the CLI, Python) turn it on; a window's frames leave it off, since llvmpipe's raster
+    // threads woken hundreds of times a frame beside the X server made the viewer's 2CylinderEngine frame
+    // 144 → 199 ms, while a one-shot render of it got faster and 22 MiB smaller.
+    void setTriangleBatches(bool on) { batchTriangles_ = on ? TriangleBatches::sizeForCurrentContext() : 0; }
     bool targetAlpha() const { return targetAlpha_; }
     // The next draw is a full one (a benchmark's forced redraw).
     void invalidate() { partial_.forget(); }
@@ -131,7 +136,7 @@ private:
     RenderTarget target_;
     RenderTarget sampleTarget_;  // drawSample's
     PartialRedraw partial_;      // what target_ holds, when a partial redraw may start from it
-    const size_t batchTriangles_ = TriangleBatches::sizeForCurrentContext();  // the mesh passes' batches
+    size_t batchTriangles_ = 0;  // the mesh passes' batches (setTriangleBatches)
     bool targetAlpha_ = true;
     bool environmentsRendered_ = false;
     DrawReport report_;

@@ -64,7 +64,7 @@ void ShadowMaps::allocate(int size, int layers) {
 }
 
 void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, const std::vector<DrawRange>& ranges,
-                        GLuint meshVao, GLuint cubeVao) {
+                        GLuint meshVao, GLuint cubeVao, size_t batchTriangles) {
     const ShadowFit fit = fitShadows(scene, casterBounds(scene, ranges), settings);
     block_ = fit.block;
     const int size = block_.info.z, layers = fit.layers;
@@ -87,13 +87,13 @@ void ShadowMaps::render(const Scene& scene, const RasterSettings& settings, cons
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    for (int layer = 0; layer < layers; ++layer) drawLayer(scene, ranges, meshVao, cubeVao, layer);
+    for (int layer = 0; layer < layers; ++layer) drawLayer(scene, ranges, meshVao, cubeVao, layer, batchTriangles);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::checkError("ShadowMaps::render");
 }
 
 void ShadowMaps::drawLayer(const Scene& scene, const std::vector<DrawRange>& ranges, GLuint meshVao, GLuint cubeVao,
-                           int layer) const {
+                           int layer, size_t batchTriangles) const {
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, maps_.id(), 0, layer);
     const float farDepth = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &farDepth);
@@ -103,7 +103,7 @@ void ShadowMaps::drawLayer(const Scene& scene, const std::vector<DrawRange>& ran
     glUseProgram(meshDepth_.id());
     meshDepth_.set("u_lightViewProj", vp, gl::Program::Uniform::Required);
     glBindVertexArray(meshVao);
-    TriangleBatches batches(batchTriangles_);
+    TriangleBatches batches(batchTriangles);
     for (const DrawRange& r : ranges) {
         if (r.mesh >= scene.meshes.size() || r.part >= scene.meshes[r.mesh].parts.size()) continue;
         if (outsideClip(vp, r.lo, r.hi)) continue;  // per part, per layer (cube faces cull most parts)

@@ -25,8 +25,9 @@ public:
     // Renders every layer fitShadows (shadow_fit.h) fits for the scene's first kMaxShadowedLights lights
     // (casters: meshes and spheres; planes occlude analytically in the shader) and uploads the block. Leaves the
     // framebuffer unbound. meshVao draws `ranges`; cubeVao holds the 36-vertex unit cube of the sphere impostors.
+    // batchTriangles: the mesh draws' TriangleBatches size (0: whole).
     void render(const Scene& scene, const RasterSettings& settings, const std::vector<DrawRange>& ranges,
-                GLuint meshVao, GLuint cubeVao);
+                GLuint meshVao, GLuint cubeVao, size_t batchTriangles);
 
     // The shadow-ray offset ε (scene/ray_epsilon.h) scales with the box of casters and eye, so it follows the
     // camera; the maps do not depend on it. Updates the block only (no depth pass) when it changed.
@@ -42,8 +43,8 @@ public:
 private:
     void buildPrograms();
     void allocate(int size, int layers);
-    void drawLayer(const Scene& scene, const std::vector<DrawRange>& ranges, GLuint meshVao, GLuint cubeVao,
-                   int layer) const;
+    void drawLayer(const Scene& scene, const std::vector<DrawRange>& ranges, GLuint meshVao, GLuint cubeVao, int layer,
+                   size_t batchTriangles) const;
 
     const gl::ShaderLibrary* shaders_;
     gl::Program meshDepth_, sphereDepth_;  // empty until buildPrograms
@@ -52,7 +53,6 @@ private:
     gl::Framebuffer fbo_;
     int size_ = 0, allocatedLayers_ = 0, layerCount_ = 0;
     ShadowBlock block_{};
-    size_t batchTriangles_ = TriangleBatches::sizeForCurrentContext();
 };
 
 }  // namespace shadelab::raster

@@ -7,7 +7,7 @@
 // the binned scene stays the size of a batch and shading overlaps set-up: peak 184.3 → 162.0 MiB and 0.51 →
 // 0.46 s for that render (bench/README.md, "Headless render"). GL keeps the order of draws across a flush, so
 // the image is the same bit for bit. A hardware driver would pay one submission per batch and gain nothing, so
-// there the ranges are drawn whole.
+// there the ranges are drawn whole; so are a window's frames (RasterRenderer::setTriangleBatches).
 #pragma once
 
 #include <cstddef>
