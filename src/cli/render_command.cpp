@@ -97,17 +97,25 @@ Frame rasterize(const Scene& scene, const render::RenderRequest& request, const 
 Frame traceReference(const Scene& scene, const render::RenderRequest& request, const DisplaySettings& display,
                      bool keepLinear, StageTimer& timer) {
     const trace::TraceSettings settings = render::toTrace(request, scene);
+    // An 8-bit output is converted tile by tile as the tracer delivers (no float image); EXR keeps the floats.
+    const trace::TraceEncoding encoding{request.encoding, display};
     trace::TraceOutput out;
     {
         ProgressBar bar("tracing");
-        out = trace::traceImage(scene, settings, [&bar](float f) { bar.update(f); });
+        out = trace::traceImage(
+            scene, settings, [&bar](float f) { bar.update(f); }, keepLinear ? nullptr : &encoding);
     }
     timer.stage("trace");
     Frame f;
-    f.rendered.pixels = toImage8(out.color, request.encoding, display, &f.rendered.nonFinite);
+    if (keepLinear) {
+        f.rendered.pixels = toImage8(out.color, request.encoding, display, &f.rendered.nonFinite);
+        f.linear = std::move(out.color);
+        timer.stage("conversion");
+    } else {
+        f.rendered.pixels = std::move(out.pixels);
+        f.rendered.nonFinite = out.nonFinite;
+    }
     f.rendered.coverage = std::move(out.coverage);
-    if (keepLinear) f.linear = std::move(out.color);
-    timer.stage("conversion");
     return f;
 }
 

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -117,6 +118,45 @@ TEST(TraceDeterminism, ThreadCountsAndTilesGiveIdenticalBytes) {
     bits ^= 1u;
     std::memcpy(&flipped.color.rgba[4 * 1000], &bits, 4);
     EXPECT_FALSE(identical(base, flipped, "control_bit", false));
+}
+
+// The 8-bit pixels converted tile by tile as they arrive (TraceEncoding) are toImage8 of the float image, byte
+// for byte, with the same count of non-finite pixels, for odd tile sizes, supersampling, both encodings and an
+// exposure with the filmic curve. Control: another exposure gives other bytes.
+TEST(TraceDeterminism, PixelsEncodedPerTileEqualTheWholeImagesConversion) {
+    const TraceScene ts(busyScene());
+    DisplaySettings filmic;
+    filmic.exposure = 0.7;
+    filmic.transform = ViewTransform::Filmic;
+    for (const auto& [encoding, display] :
+         {std::pair{Encoding::Srgb, DisplaySettings{}}, std::pair{Encoding::Linear, DisplaySettings{}},
+          std::pair{Encoding::Srgb, filmic}}) {
+        for (const int spp : {1, 4}) {
+            TraceSettings s = settings(161, 91, 2, spp);
+            s.tileSize = 13;
+            uint64_t nonFinite = 0;
+            const Image8 whole = toImage8(traceImage(ts, s).color, encoding, display, &nonFinite);
+            const TraceEncoding encode{encoding, display};
+            const TraceOutput tiled = traceImage(ts, s, {}, &encode);
+            EXPECT_TRUE(tiled.color.rgba.empty());
+            EXPECT_EQ(tiled.pixels.width, 161);
+            EXPECT_EQ(tiled.pixels.channels, 3);
+            EXPECT_EQ(tiled.nonFinite, nonFinite);
+            EXPECT_EQ(tiled.pixels.data, whole.data) << "encoding " << int(encoding) << ", spp " << spp;
+            if (tiled.pixels.data != whole.data) {
+                const std::filesystem::path dir(SHADELAB_TEST_OUTPUT_DIR);
+                std::filesystem::create_directories(dir);
+                writePng((dir / "encoded_per_tile.png").string(), tiled.pixels);
+                writePng((dir / "encoded_whole.png").string(), whole);
+                std::printf("evidence: %s\n", dir.string().c_str());
+            }
+        }
+    }
+    DisplaySettings brighter;
+    brighter.exposure = 1.0;
+    const TraceEncoding other{Encoding::Srgb, brighter};
+    EXPECT_NE(traceImage(ts, settings(161, 91, 2), {}, &other).pixels.data,
+              toImage8(traceImage(ts, settings(161, 91, 2)).color, Encoding::Srgb, DisplaySettings{}, nullptr).data);
 }
 
 TEST(TraceDeterminism, SupersamplingAveragesTheFixedGrid) {
