@@ -9,7 +9,8 @@
 #   path         assets/scenes/default.json path traced, 64x36, 1 spp       (PathRender::renderPixel)
 #   coherent     2CylinderEngine: a primary ray per pixel + a shadow ray per hit at 160x90 (trace_bench)
 #   incoherent   2CylinderEngine: one cosine-distributed bounce per hit at 160x90 (trace_bench)
-#   bvh_build    loading 2CylinderEngine and building its BVH, every thread (the whole process)
+#   bvh_build    loading 2CylinderEngine and building its BVH, every thread: the whole `shadelab render
+#                --renderer trace` process at 8x8 (not trace_bench's, which links Embree where it is installed)
 #   png_encode   320x180 frames to PNG, clean and noisy, one band           (encodePngBands)
 # Counts depend on the compiler and its flags: the baseline is for the Release build of scripts/build.sh on
 # Debian 12's g++, and this runs only against such a build (ctest registers it in Release builds only).
@@ -73,7 +74,7 @@ kernel() {
             ;;
         bvh_build)
             toggles=()  # the whole process, every builder thread: loading the model and building its BVH
-            cmd=("$build/bench/trace_bench" --only engine --runs 1 --threads 1 --size 8x8 --engine "$engine" --no-embree)
+            cmd=("$build/shadelab" render "$engine" --renderer trace --threads 1 --size 8x8 -o "$out/b.png")
             ;;
         png_encode)
             toggles=("shadelab::detail::encodePngBands(shadelab::Image8 const&, int)")
