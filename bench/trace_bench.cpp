@@ -109,6 +109,16 @@ struct RayCounts {
     uint64_t primary = 0, hits = 0, occluded = 0;
 };
 
+RayCounts sum(const std::vector<RayCounts>& perRow) {
+    RayCounts total;
+    for (const RayCounts& c : perRow) {
+        total.primary += c.primary;
+        total.hits += c.hits;
+        total.occluded += c.occluded;
+    }
+    return total;
+}
+
 // The shadow ray of a hit: from P offset along the geometric normal on the viewer's side, toward light 0.
 bool shadowRay(const Scene& scene, glm::vec3 P, glm::vec3 Ng, glm::vec3 dir, float eps, trace::Ray& out, float& tMax) {
     if (glm::dot(Ng, dir) > 0.0f) Ng = -Ng;
@@ -147,13 +157,7 @@ RayCounts traceOurs(const trace::TraceScene& ts, const ViewSetup& view, int thre
         }
         perRow[size_t(y)] = c;
     });
-    RayCounts total;
-    for (const RayCounts& c : perRow) {
-        total.primary += c.primary;
-        total.hits += c.hits;
-        total.occluded += c.occluded;
-    }
-    return total;
+    return sum(perRow);
 }
 
 #ifdef SHADELAB_HAVE_EMBREE
@@ -190,13 +194,7 @@ RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, cons
         }
         perRow[size_t(y)] = c;
     });
-    RayCounts total;
-    for (const RayCounts& c : perRow) {
-        total.primary += c.primary;
-        total.hits += c.hits;
-        total.occluded += c.occluded;
-    }
-    return total;
+    return sum(perRow);
 }
 
 // The same rays through Embree's 8-wide packet API (rtcIntersect8 / rtcOccluded8), which the issue names as the
@@ -262,13 +260,7 @@ RayCounts traceEmbree8(const EmbreeScene& es, const Scene& scene, float eps, con
         }
         perRow[size_t(y)] = c;
     });
-    RayCounts total;
-    for (const RayCounts& c : perRow) {
-        total.primary += c.primary;
-        total.hits += c.hits;
-        total.occluded += c.occluded;
-    }
-    return total;
+    return sum(perRow);
 }
 #endif
 
