@@ -29,8 +29,11 @@ Image8 renderOffline(raster::RasterRenderer& raster, const Scene& scene, const r
         case render::Engine::Trace:
         case render::Engine::Both: break;
     }
-    const trace::TraceOutput out = trace::traceImage(scene, render::toTrace(request, scene));
-    return toImage8(out.color, request.encoding, render::displayOf(request, scene), nonFinite);
+    // Converted tile by tile as the tracer delivers, as the command line's render does: no float image.
+    const trace::TraceEncoding encoding{request.encoding, render::displayOf(request, scene)};
+    trace::TraceOutput out = trace::traceImage(scene, render::toTrace(request, scene), {}, &encoding);
+    if (nonFinite) *nonFinite += out.nonFinite;
+    return std::move(out.pixels);
 }
 
 }  // namespace shadelab::app
