@@ -49,8 +49,9 @@ int main(int argc, char** argv) try {
     render.addSamples(spp);
     std::printf("%s at %dx%d, %d spp on 2 threads: traced in %.0f ms\n", path.c_str(), w, h, spp, msSince(t0));
 
-    // The preview's cost, in two parts: the render's image and the variance of each pixel (what
-    // trace::denoisedImage prepares), and the filter itself (image/denoise.h).
+    // The preview's cost, in two parts: the render's image and the noise of each pixel the filter stops at
+    // (what trace::denoisedImage prepares: luminanceVariance, then stopVariance), and the filter itself
+    // (image/denoise.h) with the preview's settings for the render's samples (previewSettings).
     std::vector<double> passMs, statsMs, statsCpuMs, filterMs, filterCpuMs, denoiseMs, denoiseCpuMs;
     SurfacePasses passes;
     ImageF denoised;
@@ -61,12 +62,12 @@ int main(int argc, char** argv) try {
         t0 = Clock::now();
         double c0 = cpuMs();
         const ImageF image = render.image();
-        const std::vector<float> variance = trace::luminanceVariance(render);
+        const std::vector<float> variance = trace::stopVariance(render, trace::luminanceVariance(render));
         statsMs.push_back(msSince(t0));
         statsCpuMs.push_back(cpuMs() - c0);
         const Clock::time_point t1 = Clock::now();
         const double c1 = cpuMs();
-        denoised = denoise(image, variance, passes, ds);
+        denoised = denoise(image, variance, passes, trace::previewSettings(render.samples(), ds));
         filterMs.push_back(msSince(t1));
         filterCpuMs.push_back(cpuMs() - c1);
         denoiseMs.push_back(msSince(t0));

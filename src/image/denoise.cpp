@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -24,8 +25,8 @@ constexpr int kRowsPerTask = 4;
 // each pass beyond its edges (filterStrip), which should stay few beside its own.
 constexpr int kMinStripRows = 64;
 
-// The colour c / (1 + L) (see denoise()) of n pixels, their variance, and their albedo over σ_a; loops over
-// pointers that alias nothing, which the compiler vectorises.
+// The colour of n pixels, their variance, and their albedo over σ_a; loops over pointers that alias nothing,
+// which the compiler vectorises.
 void prepareColour(int n, const float* __restrict rgba, const float* __restrict variance,
                    const float* __restrict albedo, float invA, float* __restrict r, float* __restrict g,
                    float* __restrict b, float* __restrict v, float* __restrict ar, float* __restrict ag,
@@ -36,13 +37,11 @@ void prepareColour(int n, const float* __restrict rgba, const float* __restrict 
         // bitwise & of two bools is deliberate (clang's -Wbitwise-instead-of-logical would have &&).
         const bool finite =
             bool(unsigned(std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & unsigned(std::abs(variance[x]) <= FLT_MAX));
-        const float l = std::max(0.0f, kLumR * c[0] + kLumG * c[1] + kLumB * c[2]), k = 1.0f / (1.0f + l);
-        r[x] = finite ? c[0] * k : 0.0f;
-        g[x] = finite ? c[1] * k : 0.0f;
-        b[x] = finite ? c[2] * k : 0.0f;
+        r[x] = finite ? c[0] : 0.0f;
+        g[x] = finite ? c[1] : 0.0f;
+        b[x] = finite ? c[2] : 0.0f;
         // Variances below 1e-20 (a standard error of 1e-10) are none: nothing denormal enters the sums.
-        const float vk = variance[x] * (k * k) * (k * k);
-        v[x] = (finite & (vk > 1e-20f)) ? vk : 0.0f;
+        v[x] = (finite & (variance[x] > 1e-20f)) ? variance[x] : 0.0f;
         // A pixel whose colour is not finite lends nothing: its albedo guide is infinite, as the padding's.
         // (Added rather than chosen, once for three: GCC 12 vectorises the loop only so.)
         const float outside = finite ? 0.0f : INFINITY;
@@ -61,33 +60,93 @@ void prepareNormal(int n, const float* __restrict normal, float* __restrict nx, 
     }
 }
 
-// The depth change per pixel step along one axis: the smaller of the two one-sided differences, so that a
-// silhouette (a jump on one side only) does not count as slope; 0 where the image has no neighbour. A
-// missing neighbour's difference is infinite (`up` is then the row itself, `upMissing` infinite).
-float alongOf(float before, float after) { return std::min(before, after) <= FLT_MAX ? std::min(before, after) : 0.0f; }
-
-void prepareDepth(int w, const float* __restrict z, const float* __restrict up, float upMissing,
-                  const float* __restrict down, float downMissing, float sigmaDepth, float* __restrict depth,
-                  float* __restrict slope) {
-    const auto at = [&](int x, float left, float right) {
-        const float vertical = alongOf(std::abs(up[x] - z[x]) + upMissing, std::abs(down[x] - z[x]) + downMissing);
-        depth[x] = z[x];
-        slope[x] = sigmaDepth * std::max(alongOf(left, right), vertical);
-    };
-    at(0, INFINITY, w > 1 ? std::abs(z[1] - z[0]) : INFINITY);
-    for (int x = 1; x + 1 < w; ++x) at(x, std::abs(z[x - 1] - z[x]), std::abs(z[x + 1] - z[x]));
-    if (w > 1) at(w - 1, std::abs(z[w - 2] - z[w - 1]), INFINITY);
+// The guides' depth as 1/z, which is affine in the image's coordinates over any plane: a tap is compared with
+// the plane through the pixel (its value plus the gradient times the tap's offset), so that a wall seen at a
+// grazing angle is smoothed as much along its depth as across it. The gradient along an axis is the smaller of
+// the two one-sided differences, so that a silhouette (a jump on one side only) does not count as slope; 0
+// where the image has no neighbour (a missing neighbour's difference is infinite: `up` is then the row
+// itself, `upMissing` infinite). The background (depth 0) has 1/z = 0.
+void inverseDepthRow(int n, const float* __restrict z, float* __restrict out) {
+    for (int x = 0; x < n; ++x) out[x] = z[x] > 0.0f ? 1.0f / z[x] : 0.0f;
 }
 
-// Row y of the prepared image: the colour and the guides, padding included.
+float gradientOf(float before, float after) {
+    const float g = std::abs(before) <= std::abs(after) ? before : after;
+    return std::abs(g) <= FLT_MAX ? g : 0.0f;
+}
+
+// `iz`, `up`, `down`: rows of 1/z (inverseDepthRow), `up` and `down` the row itself where the image has none.
+void prepareDepth(int w, const float* __restrict iz, const float* __restrict up, float upMissing,
+                  const float* __restrict down, float downMissing, float sigmaDepth, float* __restrict depth,
+                  float* __restrict gradX, float* __restrict gradY, float* __restrict slope) {
+    const auto at = [&](int x, float left, float right) {
+        const float horizontal = gradientOf(left, right);
+        const float vertical = gradientOf(iz[x] - up[x] + upMissing, down[x] - iz[x] + downMissing);
+        depth[x] = iz[x];
+        gradX[x] = horizontal;
+        gradY[x] = vertical;
+        slope[x] = sigmaDepth * std::max(std::abs(horizontal), std::abs(vertical));
+    };
+    at(0, INFINITY, w > 1 ? iz[1] - iz[0] : INFINITY);
+    for (int x = 1; x + 1 < w; ++x) at(x, iz[x] - iz[x - 1], iz[x + 1] - iz[x]);
+    if (w > 1) at(w - 1, iz[w - 1] - iz[w - 2], INFINITY);
+}
+
+// One row's luminance (0 where the colour or its variance is not finite) and its weight (1, or 0 there).
+void luminanceRow(int n, const float* __restrict rgba, const float* __restrict variance, float* __restrict lum,
+                  float* __restrict weight) {
+    for (int x = 0; x < n; ++x) {
+        const float* c = rgba + 4 * x;
+        const bool finite =
+            bool(unsigned(std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & unsigned(std::abs(variance[x]) <= FLT_MAX));
+        lum[x] = finite ? kLumR * c[0] + kLumG * c[1] + kLumB * c[2] : 0.0f;
+        weight[x] = finite ? 1.0f : 0.0f;
+    }
+}
+
+// Row y of the first pass's luminance guide: each pixel's luminance averaged with its 3x3 neighbours' (B-spline
+// weights 1/4, 1/2, 1/4 each way, normalised over the finite pixels inside the image). Compared at the first
+// pass, where the colour is the raw estimate, it tells an edge from noise about three times as surely.
+// `scratch`: 4·(w + 2) floats.
+void prepareLuminance(const ImageF& color, const std::vector<float>& variance, int y, float* __restrict scratch,
+                      float* __restrict out) {
+    const int w = color.width, h = color.height;
+    // The rows' luminance and weight summed vertically (1/4, 1/2, 1/4), then across: one zero each side.
+    float* __restrict sumL = scratch + 1;
+    float* __restrict sumW = sumL + (w + 2);
+    float* __restrict lum = sumW + (w + 2);
+    float* __restrict weight = lum + (w + 2);
+    sumL[-1] = sumL[w] = sumW[-1] = sumW[w] = 0.0f;
+    for (int x = 0; x < w; ++x) sumL[x] = sumW[x] = 0.0f;
+    for (int j = -1; j <= 1; ++j) {
+        if (y + j < 0 || y + j >= h) continue;
+        const size_t row = size_t(y + j) * size_t(w);
+        luminanceRow(w, &color.rgba[4 * row], &variance[row], lum, weight);
+        const float k = kB3[j + 1];
+        for (int x = 0; x < w; ++x) {
+            sumL[x] += k * lum[x];
+            sumW[x] += k * weight[x];
+        }
+    }
+    for (int x = 0; x < w; ++x) {
+        const float l = 0.25f * sumL[x - 1] + 0.5f * sumL[x] + 0.25f * sumL[x + 1];
+        const float wt = 0.25f * sumW[x - 1] + 0.5f * sumW[x] + 0.25f * sumW[x + 1];
+        out[x] = wt > 0.0f ? l / wt : 0.0f;
+    }
+}
+
+// Row y of the prepared image: the colour and the guides, padding included. `scratch`: scratchFloats(w) floats.
+constexpr size_t scratchFloats(int w) { return 4 * size_t(w + 2); }
+
 void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
-                const SurfacePasses& g, const DenoiseSettings& s, int y) {
+                const SurfacePasses& g, const DenoiseSettings& s, float* scratch, int y) {
     const int w = layout.width(), h = layout.height(), pad = layout.pad(), end = layout.stride() - pad;
     float* p[kImagePlanes];
     for (int k = 0; k < kImagePlanes; ++k) p[k] = layout.image(k, y);
     const auto fillOutside = [&](int x) {
         for (int k = kColour; k < kColour + kColourPlanes; ++k) p[k][x] = 0.0f;
-        p[kNx][x] = p[kNy][x] = p[kNz][x] = p[kDepth][x] = p[kSlope][x] = 0.0f;
+        p[kNx][x] = p[kNy][x] = p[kNz][x] = p[kDepth][x] = p[kLuminance][x] = 0.0f;
+        p[kGradX][x] = p[kGradY][x] = p[kSlope][x] = 0.0f;
         p[kAlbedoR][x] = p[kAlbedoG][x] = p[kAlbedoB][x] = INFINITY;
     };
     for (int x = -pad; x < 0; ++x) fillOutside(x);
@@ -97,9 +156,14 @@ void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vec
     prepareColour(w, &color.rgba[4 * row], &variance[row], &g.albedo[3 * row], 1.0f / s.sigmaAlbedo, p[kColour],
                   p[kColour + 1], p[kColour + 2], p[kColour + 3], p[kAlbedoR], p[kAlbedoG], p[kAlbedoB]);
     prepareNormal(w, &g.normal[3 * row], p[kNx], p[kNy], p[kNz]);
+    prepareLuminance(color, variance, y, scratch, p[kLuminance]);
     const float* z = &g.depth[row];
-    prepareDepth(w, z, y > 0 ? z - w : z, y > 0 ? 0.0f : INFINITY, y + 1 < h ? z + w : z, y + 1 < h ? 0.0f : INFINITY,
-                 s.sigmaDepth, p[kDepth], p[kSlope]);
+    float* const iz[3] = {scratch, scratch + w, scratch + 2 * size_t(w)};
+    inverseDepthRow(w, z, iz[1]);
+    if (y > 0) inverseDepthRow(w, z - w, iz[0]);
+    if (y + 1 < h) inverseDepthRow(w, z + w, iz[2]);
+    prepareDepth(w, iz[1], y > 0 ? iz[0] : iz[1], y > 0 ? 0.0f : INFINITY, y + 1 < h ? iz[2] : iz[1],
+                 y + 1 < h ? 0.0f : INFINITY, s.sigmaDepth, p[kDepth], p[kGradX], p[kGradY], p[kSlope]);
 }
 
 void filterStripBaseline(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
@@ -133,8 +197,9 @@ ImageF denoiseWith(DenoiseIsa isa, const ImageF& color, const std::vector<float>
     const int strips = std::max(1, std::min(threads, h / kMinStripRows));
     const DenoiseLayout layout(color.width, h, s.iterations, strips);
     parallelFor((h + kRowsPerTask - 1) / kRowsPerTask, threads, [&](int task) {
+        const std::unique_ptr<float[]> scratch(new float[scratchFloats(color.width)]);
         for (int y = task * kRowsPerTask; y < std::min(h, (task + 1) * kRowsPerTask); ++y)
-            prepareRow(layout, color, variance, guides, s, y);
+            prepareRow(layout, color, variance, guides, s, scratch.get(), y);
     });
     ImageF out(color.width, h);
     parallelFor(strips, threads, [&](int strip) {

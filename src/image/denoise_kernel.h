@@ -32,7 +32,12 @@ void filterRow(const DenoiseLayout& layout, const float* const in[3], const floa
     const int w = layout.width(), stride = layout.stride();
     const float *r = in[1], *g = r + stride, *b = g + stride, *v = b + stride;
     const float *nx = layout.image(kNx, y), *ny = nx + stride, *nz = ny + stride, *z = nz + stride, *ar = z + stride,
-                *ag = ar + stride, *ab = ag + stride, *slope = ab + stride;
+                *ag = ar + stride, *ab = ag + stride, *lumGuide = ab + stride, *gradX = lumGuide + stride,
+                *gradY = gradX + stride, *slope = gradY + stride;
+    // The first pass compares the luminance's 3x3 means (DenoiseLayout's kLuminance), whose noise is that of a
+    // mean of nine pixels: Σ w² = (3/8)² of one pixel's variance.
+    const bool prefiltered = step == 1;
+    const float noiseScale = prefiltered ? 0.375f : 1.0f;
 
     // The rows of the variance's blur (SVGF: a steadier estimate of the noise to stop at), the 3x3 B-spline at
     // step 1 normalised over the pixels inside the image.
@@ -48,7 +53,7 @@ void filterRow(const DenoiseLayout& layout, const float* const in[3], const floa
     // The taps other than the centre, as offsets from it in the colour and in the guides: rows outside the
     // image have none, columns outside it are the padding, which weighs 0.
     ptrdiff_t colourOffset[8], guideOffset[8];
-    float tapWeight[8], tapInvDist[8];
+    float tapWeight[8], tapInvDist[8], tapDx[8], tapDy[8];
     int taps = 0;
     for (int j = -1; j <= 1; ++j) {
         if (!in[j + 1]) continue;
@@ -57,6 +62,8 @@ void filterRow(const DenoiseLayout& layout, const float* const in[3], const floa
             colourOffset[taps] = (in[j + 1] - r) + ptrdiff_t(i * step);
             guideOffset[taps] = ptrdiff_t(j * step) * kImagePlanes * stride + ptrdiff_t(i * step);
             tapWeight[taps] = kB3[i + 1] * kB3[j + 1];
+            tapDx[taps] = float(i * step);
+            tapDy[taps] = float(j * step);
             tapInvDist[taps++] = 1.0f / std::sqrt(float(i * i + j * j));
         }
     }
@@ -78,12 +85,12 @@ void filterRow(const DenoiseLayout& layout, const float* const in[3], const floa
             1.0f - (column == 0.0f ? V::splat(0.25f) : F{}) - (column == float(w - 1) ? V::splat(0.25f) : F{});
         const F vp = V::load(v + x);
         const F noise = V::sqrt(V::max(V::min(blurred / (blurRowSum * columnSum), vp), F{}));
-        const F invL = 1.0f / (s.sigmaLuminance * noise + 1e-6f);
-        const F zp = V::load(z + x);
+        const F invL = 1.0f / (s.sigmaLuminance * noiseScale * noise + 1e-6f);
+        const F zp = V::load(z + x), gxp = V::load(gradX + x), gyp = V::load(gradY + x);
         const F invZ = 1.0f / (V::load(slope + x) * float(step) + 1e-3f * V::abs(zp) + 1e-6f);
 
         const F rp = V::load(r + x), gp = V::load(g + x), bp = V::load(b + x);
-        const F lp = kLumR * rp + kLumG * gp + kLumB * bp;
+        const F lp = prefiltered ? V::load(lumGuide + x) : kLumR * rp + kLumG * gp + kLumB * bp;
         const F nxp = V::load(nx + x), nyp = V::load(ny + x), nzp = V::load(nz + x);
         const F arp = V::load(ar + x), agp = V::load(ag + x), abp = V::load(ab + x);
         // The centre tap: its kernel weight (1/2 · 1/2) times e^0.
@@ -92,11 +99,12 @@ void filterRow(const DenoiseLayout& layout, const float* const in[3], const floa
         for (int t = 0; t < taps; ++t) {
             const ptrdiff_t c = ptrdiff_t(x) + colourOffset[t], q = ptrdiff_t(x) + guideOffset[t];
             const F rq = V::load(r + c), gq = V::load(g + c), bq = V::load(b + c);
-            const F lq = kLumR * rq + kLumG * gq + kLumB * bq;
+            const F lq = prefiltered ? V::load(lumGuide + q) : kLumR * rq + kLumG * gq + kLumB * bq;
             const F dn = 1.0f - (nxp * V::load(nx + q) + nyp * V::load(ny + q) + nzp * V::load(nz + q));
             // Summed as a tree: the sum is on the path from the loads to the weight, which bounds the loop.
             const F e = (V::abs(lp - lq) * invL + sn * V::max(dn, F{})) +
-                        ((V::abs(zp - V::load(z + q)) * (invZ * tapInvDist[t]) + V::abs(arp - V::load(ar + q))) +
+                        ((V::abs(zp + gxp * tapDx[t] + gyp * tapDy[t] - V::load(z + q)) * (invZ * tapInvDist[t]) +
+                          V::abs(arp - V::load(ar + q))) +
                          (V::abs(agp - V::load(ag + q)) + V::abs(abp - V::load(ab + q))));
             const F wq = tapWeight[t] * V::expNeg(e);
             sw += wq;
@@ -111,12 +119,14 @@ void filterRow(const DenoiseLayout& layout, const float* const in[3], const floa
         V::store(out + x, keep ? sr * inv : rp);
         V::store(out + stride + x, keep ? sg * inv : gp);
         V::store(out + 2 * stride + x, keep ? sb * inv : bp);
-        V::store(out + 3 * stride + x, keep ? sv * inv * inv : vp);
+        // The carried variance has the input's floor (1e-20): below it, products with the weights go denormal.
+        const F carried = sv * inv * inv;
+        V::store(out + 3 * stride + x, keep ? (carried > 1e-20f ? carried : F{}) : vp);
     }
 }
 
-// Row y of the result from the last pass's output row `c` (red plane; the others `stride` apart):
-// c' / (1 − L') (denoise()), alpha kept; a pixel whose colour or variance is not finite is its input.
+// Row y of the result from the last pass's output row `c` (red plane; the others `stride` apart), alpha
+// kept; a pixel whose colour or variance is not finite is its input.
 inline void finishRow(const DenoiseLayout& layout, const float* c, const ImageF& color,
                       const std::vector<float>& variance, ImageF& out, int y) {
     const int stride = layout.stride();
@@ -128,11 +138,9 @@ inline void finishRow(const DenoiseLayout& layout, const float* c, const ImageF&
             for (int k = 0; k < 4; ++k) o[k] = in[k];
             continue;
         }
-        const float r = c[x], g = c[stride + x], b = c[2 * stride + x];
-        const float k = 1.0f / std::max(1.0f - (kLumR * r + kLumG * g + kLumB * b), 1e-6f);
-        o[0] = r * k;
-        o[1] = g * k;
-        o[2] = b * k;
+        o[0] = c[x];
+        o[1] = c[stride + x];
+        o[2] = c[2 * stride + x];
         o[3] = in[3];
     }
 }

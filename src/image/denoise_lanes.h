@@ -66,12 +66,12 @@ struct Lanes {
     }
 
     // e^-x for x >= 0, within 8e-5 relative: 2^t with t = −x·log2 e split as i + f, i = trunc(t), f in (−1, 0],
-    // 2^f by its cubic minimax polynomial (relative error), scaled by 2^i through the exponent bits. From x = 20
-    // on (a weight of 2e-9), and for x not a number, it is 0: smaller weights would only make denormal products
-    // (w², w·var), which cost a hundred cycles each on x86.
+    // 2^f by its cubic minimax polynomial (relative error), scaled by 2^i through the exponent bits. From x = 16
+    // on (a weight of 1e-7), and for x not a number, it is 0: smaller weights would only make denormal products
+    // (w²·var with a variance near the filter's floor of 1e-20), which cost a hundred cycles each on x86.
     [[gnu::always_inline]] static F expNeg(F x) {
-        const I inRange = x < 20.0f;
-        const F t = min(x, splat(20.0f)) * -1.44269504f;
+        const I inRange = x < 16.0f;
+        const F t = min(x, splat(16.0f)) * -1.44269504f;
         const I i = __builtin_convertvector(t, I);
         const F f = t - __builtin_convertvector(i, F);
         const F p = ((0.0390121117f * f + 0.230069950f) * f + 0.691020429f) * f + 0.999925196f;

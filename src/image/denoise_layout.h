@@ -18,9 +18,9 @@
 
 namespace shadelab::denoise_detail {
 
-// A row's planes in the prepared image, in order. The colour (c / (1 + L) per channel and the variance of its
+// A row's planes in the prepared image, in order. The colour (linear RGB and the variance of its
 // luminance) comes first, as in a ring's rows; the guides are read by every tap (the normal, the depth and the
-// albedo over σ_a) or only at the centre pixel (σ_z times the depth slope).
+// albedo over σ_a) or only at the centre pixel (the depth's gradient).
 enum Plane : int {
     kColour,  // r, g, b, v
     kNx = kColour + 4,
@@ -30,6 +30,9 @@ enum Plane : int {
     kAlbedoR,
     kAlbedoG,
     kAlbedoB,
+    kLuminance,  // the first pass's: the luminance's 3x3 B-spline mean, a steadier value to stop at
+    kGradX,      // the depth guide's (1/z) gradient along x and y, and σ_z times its steepest
+    kGradY,
     kSlope,
     kImagePlanes
 };

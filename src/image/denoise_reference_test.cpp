@@ -75,25 +75,41 @@ ImageF reference(const Input& in, const DenoiseSettings& s, const std::function<
     for (size_t i = 0; i < n; ++i) {
         const float* p = &in.color.rgba[4 * i];
         finite[i] = std::isfinite(p[0] + p[1] + p[2]) && std::isfinite(in.variance[i]);
-        const double k = 1.0 / (1.0 + std::max(0.0, kLum[0] * p[0] + kLum[1] * p[1] + kLum[2] * p[2]));
-        for (int ch = 0; ch < 3; ++ch) c[4 * i + size_t(ch)] = finite[i] ? p[ch] * k : 0.0;
-        const double v = in.variance[i] * k * k * k * k;
-        c[4 * i + 3] = finite[i] && v > 1e-20 ? v : 0.0;
+        for (int ch = 0; ch < 3; ++ch) c[4 * i + size_t(ch)] = finite[i] ? p[ch] : 0.0;
+        c[4 * i + 3] = finite[i] && in.variance[i] > 1e-20f ? in.variance[i] : 0.0;
     }
+    // The depth guide as 1/z (0 on the background) and its gradient along x and y: the one-sided difference
+    // of smaller magnitude, 0 without a neighbour.
+    const auto inverse = [&](int x, int y) {
+        const double z = in.guides.depth[at(x, y)];
+        return z > 0.0 ? 1.0 / z : 0.0;
+    };
+    std::vector<double> gradient[2] = {std::vector<double>(n), std::vector<double>(n)};
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const double z = in.guides.depth[at(x, y)];
-            double along[2] = {0.0, 0.0};
+        for (int x = 0; x < w; ++x)
             for (int axis = 0; axis < 2; ++axis) {
                 double best = INFINITY;
                 for (int sgn : {-1, 1}) {
                     const int qx = x + (axis == 0 ? sgn : 0), qy = y + (axis == 1 ? sgn : 0);
-                    if (qx >= 0 && qy >= 0 && qx < w && qy < h)
-                        best = std::min(best, std::abs(in.guides.depth[at(qx, qy)] - z));
+                    if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+                    const double d = sgn * (inverse(qx, qy) - inverse(x, y));
+                    if (std::abs(d) < std::abs(best)) best = d;
                 }
-                along[axis] = std::isfinite(best) ? best : 0.0;
+                gradient[axis][at(x, y)] = std::isfinite(best) ? best : 0.0;
             }
-            slope[at(x, y)] = std::max(along[0], along[1]);
+    for (size_t i = 0; i < n; ++i) slope[i] = std::max(std::abs(gradient[0][i]), std::abs(gradient[1][i]));
+    // The first pass's luminance: the 3x3 B-spline mean of the finite pixels inside the image.
+    std::vector<double> prefiltered(n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            double sum = 0.0, weight = 0.0;
+            for (int j = -1; j <= 1; ++j)
+                for (int i = -1; i <= 1; ++i)
+                    if (x + i >= 0 && y + j >= 0 && x + i < w && y + j < h && finite[at(x + i, y + j)]) {
+                        sum += kB3[i + 1] * kB3[j + 1] * lum(c, at(x + i, y + j));
+                        weight += kB3[i + 1] * kB3[j + 1];
+                    }
+            prefiltered[at(x, y)] = weight > 0.0 ? sum / weight : 0.0;
         }
     for (int k = 0; k < s.iterations; ++k) {
         const int step = stepOf(k);
@@ -109,10 +125,13 @@ ImageF reference(const Input& in, const DenoiseSettings& s, const std::function<
                             blur += kB3[i + 1] * kB3[j + 1] * c[4 * at(x + i, y + j) + 3];
                             blurWeight += kB3[i + 1] * kB3[j + 1];
                         }
-                const double invL =
-                    1.0 /
-                    (s.sigmaLuminance * std::sqrt(std::max(0.0, std::min(blur / blurWeight, c[4 * p + 3]))) + 1e-6);
-                const double z = in.guides.depth[p];
+                // The first pass stops at the prefiltered luminance, whose noise is (3/8) of a pixel's.
+                const bool first = step == 1;
+                const double invL = 1.0 / (s.sigmaLuminance * (first ? 0.375 : 1.0) *
+                                               std::sqrt(std::max(0.0, std::min(blur / blurWeight, c[4 * p + 3]))) +
+                                           1e-6);
+                const auto luminance = [&](size_t i) { return first ? prefiltered[i] : lum(c, i); };
+                const double z = inverse(x, y);
                 const double invZ = 1.0 / (s.sigmaDepth * slope[p] * step + 1e-3 * std::abs(z) + 1e-6);
                 double sum[4] = {0.0, 0.0, 0.0, 0.0}, wsum = 0.0;
                 for (int j = -1; j <= 1; ++j)
@@ -129,25 +148,28 @@ ImageF reference(const Input& in, const DenoiseSettings& s, const std::function<
                                 albedo += std::abs(double(in.guides.albedo[3 * p + size_t(a)]) -
                                                    in.guides.albedo[3 * q + size_t(a)]);
                             }
-                            e = std::abs(lum(c, p) - lum(c, q)) * invL + s.sigmaNormal * std::max(0.0, 1.0 - dot) +
-                                std::abs(z - in.guides.depth[q]) * invZ / std::sqrt(double(i * i + j * j)) +
+                            // Depth: the tap against the plane through the pixel, 1/z being affine over a plane.
+                            const double plane = z + gradient[0][p] * i * step + gradient[1][p] * j * step;
+                            e = std::abs(luminance(p) - luminance(q)) * invL +
+                                s.sigmaNormal * std::max(0.0, 1.0 - dot) +
+                                std::abs(plane - inverse(qx, qy)) * invZ / std::sqrt(double(i * i + j * j)) +
                                 albedo / s.sigmaAlbedo;
                         }
-                        const double weight = kB3[i + 1] * kB3[j + 1] * (e < 20.0 ? std::exp(-e) : 0.0);
+                        const double weight = kB3[i + 1] * kB3[j + 1] * (e < 16.0 ? std::exp(-e) : 0.0);
                         wsum += weight;
                         for (int ch = 0; ch < 3; ++ch) sum[ch] += weight * c[4 * q + size_t(ch)];
                         sum[3] += weight * weight * c[4 * q + 3];
                     }
                 for (int ch = 0; ch < 3; ++ch) next[4 * p + size_t(ch)] = sum[ch] / wsum;
-                next[4 * p + 3] = sum[3] / (wsum * wsum);
+                const double v = sum[3] / (wsum * wsum);
+                next[4 * p + 3] = v > 1e-20 ? v : 0.0;
             }
         c = std::move(next);
     }
     ImageF out = in.color;
     for (size_t i = 0; i < n; ++i) {
         if (!finite[i]) continue;
-        const double k = 1.0 / std::max(1.0 - lum(c, i), 1e-6);
-        for (int ch = 0; ch < 3; ++ch) out.rgba[4 * i + size_t(ch)] = float(c[4 * i + size_t(ch)] * k);
+        for (int ch = 0; ch < 3; ++ch) out.rgba[4 * i + size_t(ch)] = float(c[4 * i + size_t(ch)]);
     }
     return out;
 }

@@ -25,53 +25,133 @@ std::shared_ptr<const TraceScene> cornell() {
 
 PathSettings settings(int spp, uint32_t seed) {
     PathSettings s;
-    s.width = 64;
-    s.height = 36;
+    s.width = 128;
+    s.height = 72;
     s.spp = spp;
     s.threads = 2;
     s.seed = seed;
     return s;
 }
 
-// sqrt(Σ (a − r)² / Σ r²) over RGB, the lamp (above 1 in the reference) left out: it is not noise.
-double relativeRmse(const ImageF& a, const ImageF& ref) {
+// A reference of 2 × 128 samples at 128x72: the mean of two renders of other seeds, and per pixel and channel
+// the variance of that mean, |A − B|² / 4 (exact in expectation for any sampler), which the error below
+// subtracts so that 256 samples serve as well as thousands.
+struct Reference {
+    ImageF image;
+    std::vector<double> variance;
+};
+
+const Reference& reference() {
+    static const Reference ref = [] {
+        PathRender a(cornell(), settings(128, 1)), b(cornell(), settings(128, 2));
+        a.addSamples(128);
+        b.addSamples(128);
+        Reference r{a.image(), {}};
+        const ImageF other = b.image();
+        for (size_t i = 0; i < r.image.rgba.size(); i += 4)
+            for (size_t c = 0; c < 3; ++c) {
+                const double d = double(r.image.rgba[i + c]) - other.rgba[i + c];
+                r.image.rgba[i + c] = 0.5f * (r.image.rgba[i + c] + other.rgba[i + c]);
+                r.variance.push_back(0.25 * d * d);
+            }
+        return r;
+    }();
+    return ref;
+}
+
+// sqrt(Σ (|a − r|² − var r) / Σ (|r|² − var r)) over RGB, the lamp (above 1 in the reference) left out: it is
+// not noise. With r = μ + ε, the squared error against the converged image μ, without the reference's noise.
+double relativeRmse(const ImageF& a, const Reference& ref) {
     double num = 0.0, den = 0.0;
-    for (size_t i = 0; i < a.rgba.size(); i += 4) {
-        if (ref.rgba[i] > 1.0f) continue;
-        for (int c = 0; c < 3; ++c) {
-            const double d = double(a.rgba[i + size_t(c)]) - ref.rgba[i + size_t(c)];
-            num += d * d;
-            den += double(ref.rgba[i + size_t(c)]) * ref.rgba[i + size_t(c)];
+    for (size_t i = 0, k = 0; i < a.rgba.size(); i += 4, k += 3) {
+        if (ref.image.rgba[i] > 1.0f) continue;
+        for (size_t c = 0; c < 3; ++c) {
+            const double d = double(a.rgba[i + c]) - ref.image.rgba[i + c], r = ref.image.rgba[i + c];
+            num += d * d - ref.variance[k + c];
+            den += r * r - ref.variance[k + c];
         }
     }
-    return std::sqrt(num / den);
+    return std::sqrt(std::max(0.0, num / den));
+}
+
+// Σ a / Σ r over the same pixels: the image's brightness against the reference's.
+double brightness(const ImageF& a, const Reference& ref) {
+    double num = 0.0, den = 0.0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4) {
+        if (ref.image.rgba[i] > 1.0f) continue;
+        for (size_t c = 0; c < 3; ++c) {
+            num += a.rgba[i + c];
+            den += ref.image.rgba[i + c];
+        }
+    }
+    return num / den;
 }
 
 TEST(PathDenoise, TheCornellBoxAt16SamplesHalvesItsErrorAndABlurDoesNot) {
     const auto scene = cornell();
-    PathRender ref(scene, settings(1024, 1));
-    ref.addSamples(1024);
     PathRender noisy(scene, settings(16, 0));
     noisy.addSamples(16);
-    const SurfacePasses passes = firstHitPasses(*scene, 64, 36, 2);
-    const ImageF reference = ref.image(), raw = noisy.image(), denoised = denoisedImage(noisy, passes);
+    const SurfacePasses passes = firstHitPasses(*scene, 128, 72, 2);
+    const ImageF raw = noisy.image(), denoised = denoisedImage(noisy, passes);
     DenoiseSettings blur;
     blur.sigmaLuminance = 1e6f;
     blur.sigmaNormal = 0.0f;
     blur.sigmaDepth = 1e6f;
     blur.sigmaAlbedo = 1e6f;
     const ImageF blurred = denoisedImage(noisy, passes, blur);
-    const double eRaw = relativeRmse(raw, reference), eDen = relativeRmse(denoised, reference),
-                 eBlur = relativeRmse(blurred, reference);
-    std::printf("relative RMSE against 1024 spp: raw %.4f, denoised %.4f (%.2f of raw), blur %.4f\n", eRaw, eDen,
+    const double eRaw = relativeRmse(raw, reference()), eDen = relativeRmse(denoised, reference()),
+                 eBlur = relativeRmse(blurred, reference());
+    std::printf("relative RMSE against 2 x 128 spp: raw %.4f, denoised %.4f (%.2f of raw), blur %.4f\n", eRaw, eDen,
                 eDen / eRaw, eBlur);
     EXPECT_LT(eDen, 0.5 * eRaw);
     EXPECT_GT(eBlur, 0.5 * eRaw) << "the negative control: a blur across edges must not pass";
     if (::testing::Test::HasFailure()) {
         test::writeEvidence("path_denoise_raw", raw);
         test::writeEvidence("path_denoise_denoised", denoised);
-        test::writeEvidence("path_denoise_reference", reference);
+        test::writeEvidence("path_denoise_reference", reference().image);
     }
+}
+
+TEST(PathDenoise, AtFourSamplesTheDenoisedBoxKeepsItsBrightness) {
+    // Most of a 4-sample pixel's samples miss the few bright paths, and its sample variance is then small: a
+    // filter that stopped at each pixel's own noise with the usual width would keep those pixels dark. The
+    // preview pulls each pixel's noise toward its neighbours' and widens the stop at few samples
+    // (stopVariance, previewSettings), and so keeps the light the render found.
+    const auto scene = cornell();
+    const SurfacePasses passes = firstHitPasses(*scene, 128, 72, 2);
+    double preview = 0.0, ownNoise = 0.0, raw = 0.0;
+    constexpr int kSeeds = 4;
+    for (uint32_t seed = 10; seed < 10 + kSeeds; ++seed) {
+        PathRender noisy(scene, settings(4, seed));
+        noisy.addSamples(4);
+        raw += brightness(noisy.image(), reference()) / kSeeds;
+        preview += brightness(denoisedImage(noisy, passes), reference()) / kSeeds;
+        ownNoise += brightness(denoise(noisy.image(), luminanceVariance(noisy), passes), reference()) / kSeeds;
+    }
+    std::printf(
+        "brightness against the reference at 4 spp (%d seeds): raw %.4f, preview %.4f, the filter at "
+        "each pixel's own noise %.4f\n",
+        kSeeds, raw, preview, ownNoise);
+    EXPECT_NEAR(raw, 1.0, 0.03) << "the raw estimate is unbiased";
+    EXPECT_NEAR(preview, 1.0, 0.03);
+    EXPECT_LT(ownNoise, 0.95) << "the negative control: stopping at each pixel's own noise darkens";
+}
+
+TEST(PathDenoise, TheFirstPassOfOneSampleIsSmoothedToo) {
+    // One sample a pixel has no sample variance: the neighbours' spread stands in for it (stopVariance), so the
+    // viewer's first pass is already a preview.
+    const auto scene = cornell();
+    PathRender noisy(scene, settings(1, 0));
+    noisy.addSamples(1);
+    const SurfacePasses passes = firstHitPasses(*scene, 128, 72, 2);
+    const double eRaw = relativeRmse(noisy.image(), reference()),
+                 eDen = relativeRmse(denoisedImage(noisy, passes), reference());
+    // The negative control: with no noise to stop at, every difference is an edge and nothing moves.
+    const ImageF unchanged = denoise(noisy.image(), luminanceVariance(noisy), passes);
+    const double eUnchanged = relativeRmse(unchanged, reference());
+    std::printf("1 spp: raw %.4f, denoised %.4f; without the neighbours' spread %.4f\n", eRaw, eDen, eUnchanged);
+    EXPECT_LT(eDen, 0.3 * eRaw);
+    EXPECT_GT(eUnchanged, 0.9 * eRaw) << "the control: with no noise measured, next to nothing is smoothed";
 }
 
 TEST(PathDenoise, AnImageWithoutVisibleNoiseComesBackWithinOneStep) {

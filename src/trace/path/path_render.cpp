@@ -180,7 +180,7 @@ PathOutput pathTraceImage(std::shared_ptr<const TraceScene> scene, const PathSet
         DenoiseSettings d;
         d.threads = render.settings().threads;
         out.raw = std::move(out.color);
-        out.color = denoise(out.raw, out.variance, out.passes, d);
+        out.color = denoisedImage(render, out.variance, out.passes, d);
     }
     return out;
 }
