@@ -87,29 +87,33 @@ std::vector<float> stopVariance(const PathRender& render, std::vector<float> var
     });
     parallelFor(bands, render.settings().threads, [&](int band) {
         const int first = band * kRowsPerTask, end = std::min(h, first + kRowsPerTask);
-        // The standard errors of rows y − 1, y and y + 1, and their sums down each column.
-        std::vector<float> rows(3 * width), column(width);
+        // The standard errors of rows y − 1, y and y + 1, their sums down each column (one zero column each
+        // side) and each pixel's samples. Plain loops over whole rows, which the compiler vectorises.
+        std::vector<float> rows(3 * width), columns(width + 2), samples(width);
         float* above = rows.data();
         float* here = above + width;
         float* below = here + width;
+        float* column = columns.data() + 1;
         if (first > 0) std::copy_n(&edges[2 * size_t(band) * width], width, above);
         standardErrors(first, here);
         for (int y = first; y < end; ++y) {
             if (y + 1 < end) standardErrors(y + 1, below);
             if (y + 1 == end && end < h) std::copy_n(&edges[(2 * size_t(band) + 1) * width], width, below);
-            const bool hasAbove = y > 0, hasBelow = y + 1 < h;
-            for (size_t x = 0; x < width; ++x)
-                column[x] = here[x] + (hasAbove ? above[x] : 0.0f) + (hasBelow ? below[x] : 0.0f);
-            const float rowsIn = 1.0f + float(hasAbove) + float(hasBelow);
-            for (int x = 0; x < w; ++x) {
-                const int x0 = std::max(0, x - 1), x1 = std::min(w - 1, x + 1);
-                float sum = 0.0f;
-                for (int i = x0; i <= x1; ++i) sum += column[size_t(i)];
-                const float mean = sum / (rowsIn * float(x1 - x0 + 1));
-                const float n = float(render.pixelSamples(x, y));
-                const float se = (n * here[size_t(x)] + kPriorSamples * mean) / (n + kPriorSamples);
-                variance[size_t(y) * width + size_t(x)] = se * se;
-            }
+            const float up = y > 0 ? 1.0f : 0.0f, down = y + 1 < h ? 1.0f : 0.0f;
+            for (size_t x = 0; x < width; ++x) column[x] = here[x] + up * above[x] + down * below[x];
+            for (int x = 0; x < w; ++x) samples[size_t(x)] = float(render.pixelSamples(x, y));
+            // The mean over the 3x3 pixels inside the image: 3 columns but at the image's sides.
+            const float rowsIn = 1.0f + up + down, inner = 1.0f / (3.0f * rowsIn);
+            float* out = &variance[size_t(y) * width];
+            const auto at = [&](size_t x, float inverseCount) {
+                const float mean = (column[x - 1] + column[x] + column[x + 1]) * inverseCount;
+                const float se = (samples[x] * here[x] + kPriorSamples * mean) / (samples[x] + kPriorSamples);
+                out[x] = se * se;
+            };
+            for (size_t x = 1; x + 1 < width; ++x) at(x, inner);
+            const float side = 1.0f / (float(std::min(w, 2)) * rowsIn);
+            at(0, side);
+            if (w > 1) at(width - 1, side);
             std::swap(above, here);
             std::swap(here, below);
         }
