@@ -25,6 +25,13 @@ constexpr int kRowsPerTask = 4;
 // each pass beyond its edges (filterStrip), which should stay few beside its own.
 constexpr int kMinStripRows = 64;
 
+// Whether a pixel (its RGBA at `c`) takes part: its colour and its variance are finite. std::isfinite, written
+// so that the loops calling it vectorise (no branch): not a number and infinity both fail. The bitwise & of
+// two bools is deliberate (clang's -Wbitwise-instead-of-logical would have &&).
+inline bool takesPart(const float* c, float variance) {
+    return bool(unsigned(std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & unsigned(std::abs(variance) <= FLT_MAX));
+}
+
 // The colour of n pixels, their variance, and their albedo over σ_a; loops over pointers that alias nothing,
 // which the compiler vectorises.
 void prepareColour(int n, const float* __restrict rgba, const float* __restrict variance,
@@ -33,10 +40,7 @@ void prepareColour(int n, const float* __restrict rgba, const float* __restrict 
                    float* __restrict ab) {
     for (int x = 0; x < n; ++x) {
         const float* c = rgba + 4 * x;
-        // std::isfinite, written so that it vectorises (no branch): not a number and infinity both fail. The
-        // bitwise & of two bools is deliberate (clang's -Wbitwise-instead-of-logical would have &&).
-        const bool finite =
-            bool(unsigned(std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & unsigned(std::abs(variance[x]) <= FLT_MAX));
+        const bool finite = takesPart(c, variance[x]);
         r[x] = finite ? c[0] : 0.0f;
         g[x] = finite ? c[1] : 0.0f;
         b[x] = finite ? c[2] : 0.0f;
@@ -60,22 +64,23 @@ void prepareNormal(int n, const float* __restrict normal, float* __restrict nx, 
     }
 }
 
-// The guides' depth as 1/z, which is affine in the image's coordinates over any plane: a tap is compared with
-// the plane through the pixel (its value plus the gradient times the tap's offset), so that a wall seen at a
-// grazing angle is smoothed as much along its depth as across it. The gradient along an axis is the smaller of
-// the two one-sided differences, so that a silhouette (a jump on one side only) does not count as slope; 0
-// where the image has no neighbour (a missing neighbour's difference is infinite: `up` is then the row
-// itself, `upMissing` infinite). The background (depth 0) has 1/z = 0.
+// 1/z of a row of depths; the background (depth 0) has 0.
 void inverseDepthRow(int n, const float* __restrict z, float* __restrict out) {
     for (int x = 0; x < n; ++x) out[x] = z[x] > 0.0f ? 1.0f / z[x] : 0.0f;
 }
 
+// The one-sided difference of smaller magnitude; 0 when both are infinite (no neighbour either side).
 float gradientOf(float before, float after) {
     const float g = std::abs(before) <= std::abs(after) ? before : after;
     return std::abs(g) <= FLT_MAX ? g : 0.0f;
 }
 
-// `iz`, `up`, `down`: rows of 1/z (inverseDepthRow), `up` and `down` the row itself where the image has none.
+// The guides' depth as 1/z, which is affine in the image's coordinates over any plane: a tap is compared with
+// the plane through the pixel (its value plus the gradient times the tap's offset), so that a wall seen at a
+// grazing angle is smoothed as much along its depth as across it. The gradient along an axis is the smaller of
+// the two one-sided differences, so that a silhouette (a jump on one side only) does not count as slope; 0
+// where the image has no neighbour. `iz`, `up`, `down`: rows of 1/z (inverseDepthRow); where the image has no
+// row above, `up` is the row itself and `upMissing` infinite (its difference then loses), and alike below.
 void prepareDepth(int w, const float* __restrict iz, const float* __restrict up, float upMissing,
                   const float* __restrict down, float downMissing, float sigmaDepth, float* __restrict depth,
                   float* __restrict gradX, float* __restrict gradY, float* __restrict slope) {
@@ -97,8 +102,7 @@ void luminanceRow(int n, const float* __restrict rgba, const float* __restrict v
                   float* __restrict weight) {
     for (int x = 0; x < n; ++x) {
         const float* c = rgba + 4 * x;
-        const bool finite =
-            bool(unsigned(std::abs(c[0] + c[1] + c[2]) <= FLT_MAX) & unsigned(std::abs(variance[x]) <= FLT_MAX));
+        const bool finite = takesPart(c, variance[x]);
         lum[x] = finite ? kLumR * c[0] + kLumG * c[1] + kLumB * c[2] : 0.0f;
         weight[x] = finite ? 1.0f : 0.0f;
     }
@@ -107,7 +111,9 @@ void luminanceRow(int n, const float* __restrict rgba, const float* __restrict v
 // Row y of the first pass's luminance guide: each pixel's luminance averaged with its 3x3 neighbours' (B-spline
 // weights 1/4, 1/2, 1/4 each way, normalised over the finite pixels inside the image). Compared at the first
 // pass, where the colour is the raw estimate, it tells an edge from noise about three times as surely.
-// `scratch`: 4·(w + 2) floats.
+// `scratch`: scratchFloats(w) floats (prepareRow's 1/z rows use it after).
+constexpr size_t scratchFloats(int w) { return 4 * size_t(w + 2); }
+
 void prepareLuminance(const ImageF& color, const std::vector<float>& variance, int y, float* __restrict scratch,
                       float* __restrict out) {
     const int w = color.width, h = color.height;
@@ -136,8 +142,6 @@ void prepareLuminance(const ImageF& color, const std::vector<float>& variance, i
 }
 
 // Row y of the prepared image: the colour and the guides, padding included. `scratch`: scratchFloats(w) floats.
-constexpr size_t scratchFloats(int w) { return 4 * size_t(w + 2); }
-
 void prepareRow(const DenoiseLayout& layout, const ImageF& color, const std::vector<float>& variance,
                 const SurfacePasses& g, const DenoiseSettings& s, float* scratch, int y) {
     const int w = layout.width(), h = layout.height(), pad = layout.pad(), end = layout.stride() - pad;

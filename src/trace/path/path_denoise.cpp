@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace shadelab::trace {
 namespace {
@@ -127,17 +128,25 @@ DenoiseSettings previewSettings(int samples, DenoiseSettings settings) {
     return settings;
 }
 
-ImageF denoisedImage(const PathRender& render, const std::vector<float>& variance, const SurfacePasses& passes,
-                     const DenoiseSettings& settings) {
+namespace {
+
+// Both overloads': `variance` is taken over (stopVariance works in place on it).
+ImageF denoiseWithVariance(const PathRender& render, std::vector<float> variance, const SurfacePasses& passes,
+                           const DenoiseSettings& settings) {
     DenoiseSettings s = previewSettings(render.samples(), settings);
     if (s.threads == 0) s.threads = render.settings().threads;
-    return denoise(render.image(), stopVariance(render, variance), passes, s);
+    return denoise(render.image(), stopVariance(render, std::move(variance)), passes, s);
+}
+
+}  // namespace
+
+ImageF denoisedImage(const PathRender& render, const std::vector<float>& variance, const SurfacePasses& passes,
+                     const DenoiseSettings& settings) {
+    return denoiseWithVariance(render, variance, passes, settings);
 }
 
 ImageF denoisedImage(const PathRender& render, const SurfacePasses& passes, const DenoiseSettings& settings) {
-    DenoiseSettings s = previewSettings(render.samples(), settings);
-    if (s.threads == 0) s.threads = render.settings().threads;
-    return denoise(render.image(), stopVariance(render, luminanceVariance(render)), passes, s);
+    return denoiseWithVariance(render, luminanceVariance(render), passes, settings);
 }
 
 }  // namespace shadelab::trace
