@@ -94,29 +94,26 @@ struct JoinAll {
     }
 };
 
-// Rows [y0, y1); the pixels whose RGB is not all finite are added to `nonFinite` (one sum catches them:
-// NaN or ±inf in any channel makes it NaN or ±inf).
-// A display that is not Standard goes through displayValue first; Standard keeps the bare lookup (and its
-// speed). The non-finite count reads the raw values either way.
-void encodeRows(const ImageF& img, const Thresholds& t, const DisplaySettings& display, Image8& out, int y0, int y1,
-                uint64_t& nonFinite) {
-    const size_t w = size_t(img.width);
+// `rows` rows of `width` RGBA floats (`srcStride` floats apart) into RGB8 (`dstStride` bytes apart); the pixels
+// whose RGB is not all finite are added to `nonFinite` (one sum catches them: NaN or ±inf in any channel makes
+// it NaN or ±inf). A display that is not Standard goes through displayValue first; Standard keeps the bare lookup
+// (and its speed). The non-finite count reads the raw values either way.
+void encodeRows(const float* src, size_t srcStride, uint8_t* dst, size_t dstStride, size_t width, int rows,
+                const Thresholds& t, const DisplaySettings& display, uint64_t& nonFinite) {
     const bool standard = display.isStandard();
     const float scale = display.scale();
     const int transform = transformCode(display.transform);
     uint64_t bad = 0;
-    for (int y = y0; y < y1; ++y) {
-        const float* src = img.rgba.data() + size_t(y) * w * 4;
-        uint8_t* dst = out.data.data() + size_t(y) * w * 3;
+    for (int y = 0; y < rows; ++y, src += srcStride, dst += dstStride) {
         if (standard) {
-            for (size_t x = 0; x < w; ++x) {
+            for (size_t x = 0; x < width; ++x) {
                 dst[3 * x + 0] = t.code(src[4 * x + 0]);
                 dst[3 * x + 1] = t.code(src[4 * x + 1]);
                 dst[3 * x + 2] = t.code(src[4 * x + 2]);
                 bad += std::isfinite(src[4 * x + 0] + src[4 * x + 1] + src[4 * x + 2]) ? 0 : 1;
             }
         } else {
-            for (size_t x = 0; x < w; ++x) {
+            for (size_t x = 0; x < width; ++x) {
                 for (size_t c = 0; c < 3; ++c)
                     dst[3 * x + c] = t.code(view::viewChannel(src[4 * x + c], scale, transform));
                 bad += std::isfinite(src[4 * x + 0] + src[4 * x + 1] + src[4 * x + 2]) ? 0 : 1;
@@ -124,6 +121,14 @@ void encodeRows(const ImageF& img, const Thresholds& t, const DisplaySettings& d
         }
     }
     nonFinite += bad;
+}
+
+// Rows [y0, y1) of a whole image.
+void encodeImageRows(const ImageF& img, const Thresholds& t, const DisplaySettings& display, Image8& out, int y0,
+                     int y1, uint64_t& nonFinite) {
+    const size_t w = size_t(img.width);
+    encodeRows(img.rgba.data() + size_t(y0) * w * 4, w * 4, out.data.data() + size_t(y0) * w * 3, w * 3, w, y1 - y0, t,
+               display, nonFinite);
 }
 
 }  // namespace
@@ -172,20 +177,27 @@ Image8 toImage8(const ImageF& img, Encoding e, const DisplaySettings& display, u
     threads = std::min(threads, std::max(1, img.height));
     std::vector<uint64_t> bad(size_t(threads), 0);  // one counter per thread: no sharing, no atomics
     if (threads <= 1) {
-        encodeRows(img, t, display, out, 0, img.height, bad[0]);
+        encodeImageRows(img, t, display, out, 0, img.height, bad[0]);
     } else {
         std::vector<std::thread> pool;
         JoinAll joinAll{pool};  // joins even if starting a thread throws
         for (int i = 1; i < threads; ++i) {
             int y0 = int(int64_t(img.height) * i / threads), y1 = int(int64_t(img.height) * (i + 1) / threads);
-            pool.emplace_back(encodeRows, std::cref(img), std::cref(t), std::cref(display), std::ref(out), y0, y1,
+            pool.emplace_back(encodeImageRows, std::cref(img), std::cref(t), std::cref(display), std::ref(out), y0, y1,
                               std::ref(bad[size_t(i)]));
         }
-        encodeRows(img, t, display, out, 0, int(int64_t(img.height) / threads), bad[0]);
+        encodeImageRows(img, t, display, out, 0, int(int64_t(img.height) / threads), bad[0]);
     }
     if (nonFinite)
         for (uint64_t b : bad) *nonFinite += b;
     return out;
+}
+
+void encodeRgbaRows(const float* src, size_t srcStride, uint8_t* dst, size_t dstStride, int width, int rows, Encoding e,
+                    const DisplaySettings& display, uint64_t* nonFinite) {
+    uint64_t bad = 0;
+    encodeRows(src, srcStride, dst, dstStride, size_t(width), rows, thresholdsFor(e), display, bad);
+    if (nonFinite) *nonFinite += bad;
 }
 
 std::string nonFiniteMessage(uint64_t nonFinite, uint64_t pixels) {

@@ -7,6 +7,7 @@
 #include "image/image.h"
 #include "image/view_transform.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -36,6 +37,12 @@ float displayEncoded(float linear, Encoding e, const DisplaySettings& display);
 // such pixels is added to *nonFinite, which every front end passes and reports (nonFiniteMessage), so that no image
 // goes black without a word.
 Image8 toImage8(const ImageF& img, Encoding e, const DisplaySettings& display, uint64_t* nonFinite);
+
+// The same conversion for a block of rows, into place (one calling thread): `rows` rows of `width` RGBA floats,
+// `srcStride` floats apart, become RGB8 rows `dstStride` bytes apart, byte for byte what toImage8 writes for
+// them. For renderers that convert each tile as it finishes rather than keep a float image.
+void encodeRgbaRows(const float* src, size_t srcStride, uint8_t* dst, size_t dstStride, int width, int rows, Encoding e,
+                    const DisplaySettings& display, uint64_t* nonFinite);
 
 // "N of M pixels (P %) have no finite value (NaN or infinity) and are written black or white": the one
 // wording of that report, for the command line's warning, the viewer's status line and Python's warning.

@@ -1,5 +1,6 @@
-// traceImage: the one-shot CPU reference render, Scene → linear float image + coverage ids, built on
-// ProgressiveTrace. For the CLI and tests; the viewer drives ProgressiveTrace itself.
+// traceImage: the one-shot CPU reference render, Scene → linear float image (or 8-bit pixels) + coverage ids, on
+// the calling thread and helpers sharing one TraceJob. For the CLI and tests; the viewer drives
+// ProgressiveTrace, which hands tiles out as they finish.
 #pragma once
 
 #include "image/encode.h"
@@ -21,7 +22,7 @@ struct TraceOutput {
     std::vector<uint32_t> coverage;  // width × height ids (scene/coverage.h); empty unless settings.coverage
 };
 
-// Asks traceImage for 8-bit pixels instead of the float image: each tile goes through toImage8 as it arrives,
+// Asks traceImage for 8-bit pixels instead of the float image: each tile is converted as it is finished,
 // so no float copy of the whole image is made (at 1920x1080 that copy was 32 MiB of fresh pages, about 60 ms
 // of page faults on the development VM). The bytes are toImage8's of the whole image: it converts pixel by pixel.
 struct TraceEncoding {
@@ -29,9 +30,9 @@ struct TraceEncoding {
     DisplaySettings display;
 };
 
-// Renders with resolveThreads(settings) workers. `progress`, when set, is called on the calling thread
-// with the finished fraction in [0, 1] each time tiles arrive (at most every ~50 ms while waiting), and
-// once with 1 at the end. Throws std::invalid_argument for bad settings, before any work.
+// Renders with resolveThreads(settings) workers, the calling thread one of them. `progress`, when set, is called
+// on the calling thread with the finished fraction in [0, 1] after one of its tiles when 50 ms have passed since
+// the last call, and once with 1 at the end. Throws std::invalid_argument for bad settings, before any work.
 // With `encode`, fills pixels and nonFinite instead of color.
 TraceOutput traceImage(const TraceScene& scene, const TraceSettings& settings,
                        const std::function<void(float)>& progress = {}, const TraceEncoding* encode = nullptr);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/objects.h"
+#include "trace/accel/sphere_group.h"
 #include "trace/ray.h"
 
 #include <cstddef>
@@ -33,13 +34,9 @@ public:
     bool empty() const { return count_ == 0; }
 
 private:
-    // Four spheres side by side, sphere 4·g + lane in lane `lane` of group g, so one SSE register holds one
-    // coordinate of all four (structure of arrays). The lanes after the last sphere hold NaN, which every
-    // test misses, so the loop needs no tail.
-    struct alignas(16) Group {
-        float cx[4], cy[4], cz[4], r[4];
-    };
-    std::vector<Group> groups_;
+    // Sphere 4·g + lane in lane `lane` of group g. The lanes after the last sphere hold NaN, which every test
+    // misses, so the loop needs no tail.
+    std::vector<SphereGroup> groups_;
     size_t count_ = 0;
 };
 
