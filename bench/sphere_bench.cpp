@@ -2,7 +2,8 @@
 // same rays for sets of 4 to 512 spheres, one thread; it chose kFlatSphereLimit (trace/accel/sphere_set.h).
 // The spheres lie on a floor at spheres40.json's density (the area grows with the count), seen by camera rays
 // from spheres40's eye, and shadow rays run from points on the spheres to its key light. Each figure is the
-// median of `runs` passes, flat and tree alternated, and the ratio flat / tree is of the same run.
+// median of `runs` passes, flat and tree alternated, and the ratio flat / tree is of the same run. The flat pass
+// runs in AVX2 where the CPU has it; SHADELAB_BVH_ISA=sse2 times the baseline pass.
 // usage: sphere_bench [runs]   (default 9)
 #include "bench_timing.h"
 #include "trace/accel/sphere_set.h"

@@ -1,8 +1,9 @@
-// SphereGroup: four spheres tested against one ray at once. shading::intersectSphere written out for four lanes
-// in SSE2 (x86-64's baseline), the same operations in the same order, so every lane rounds as the scalar function
-// does; elsewhere a scalar loop over the same layout. The flat pass (SphereList) runs it over every group of a
-// small set, the sphere tree (SphereSet) over the groups in the leaves a ray reaches. Translation units that
-// include it are built with -ffp-contract=off (src/trace/CMakeLists.txt), so the compiler fuses neither version.
+// SphereGroup: eight spheres side by side, and the baseline test of one ray against four of them at once:
+// shading::intersectSphere written out for four lanes in SSE2 (x86-64's baseline), the same operations in the same
+// order, so every lane rounds as the scalar function does; elsewhere a scalar loop over the same layout. The flat
+// pass (SphereList) runs it over the halves of every group; sphere_list_avx2.cpp tests whole groups in AVX2.
+// Translation units that include it are built with -ffp-contract=off (src/trace/CMakeLists.txt), so the compiler
+// fuses neither version.
 #pragma once
 
 #include "trace/accel/simd4.h"
@@ -18,14 +19,21 @@
 
 namespace shadelab::trace {
 
-// Four spheres side by side, structure of arrays, so one SSE register holds one coordinate of all four. Lanes
-// without a sphere hold NaN, which every test misses.
-struct alignas(16) SphereGroup {
-    float cx[4], cy[4], cz[4], r[4];
+struct SphereHit {
+    float t;         // ray parameter
+    uint32_t index;  // into Scene::spheres
+};
+
+// Eight spheres, structure of arrays: one AVX register, or two SSE registers (lanes 0-3 and 4-7), holds one
+// coordinate of all eight. Lanes without a sphere hold NaN, which every test misses.
+inline constexpr int kSphereGroupLanes = 8;
+struct alignas(32) SphereGroup {
+    float cx[8], cy[8], cz[8], r[8];
 
     static SphereGroup empty() {
-        const float nan = std::numeric_limits<float>::quiet_NaN();
-        return {{nan, nan, nan, nan}, {nan, nan, nan, nan}, {nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        SphereGroup g;
+        for (int k = 0; k < kSphereGroupLanes; ++k) g.set(k, glm::vec4(std::numeric_limits<float>::quiet_NaN()));
+        return g;
     }
     void set(int lane, const glm::vec4& centreRadius) {
         cx[lane] = centreRadius.x;
@@ -58,47 +66,60 @@ inline __m128 dot3(__m128 ax, __m128 ay, __m128 az, __m128 bx, __m128 by, __m128
 
 }  // namespace sphere_group_detail
 
-// shaders/lighting.glsl's intersectSphere in four lanes: t > tMin, or -1 on a miss. GLM's min(x, y) is
-// y < x ? y : x, which is _mm_min_ps(y, x); max(x, y) is x < y ? y : x, which is _mm_max_ps(y, x), NaN and
-// signed zeros included.
-inline __m128 intersectGroup(const GroupRay& r, const SphereGroup& g) {
+// shaders/lighting.glsl's intersectSphere in four lanes, in two steps. The first (reach) computes the squared
+// distance test, which most spheres fail for any one ray; only when some lane passes does the second (finish)
+// take the square root and the division. Together the same operations as the scalar function, in its order.
+struct GroupReach {
+    __m128 ocx, ocy, ocz, rr, b, disc;
+    int reached;  // bit k: lane k's disc is not < 0 (a NaN goes on, as in the scalar code)
+};
+
+// Lanes 4·half .. 4·half + 3 of the group.
+inline GroupReach reachGroup(const GroupRay& r, const SphereGroup& g, int half) {
+    using sphere_group_detail::dot3;
+    const int o = 4 * half;
+    GroupReach q;
+    q.ocx = _mm_sub_ps(r.ox, _mm_load_ps(g.cx + o));
+    q.ocy = _mm_sub_ps(r.oy, _mm_load_ps(g.cy + o));
+    q.ocz = _mm_sub_ps(r.oz, _mm_load_ps(g.cz + o));
+    const __m128 radius = _mm_load_ps(g.r + o);
+    q.rr = _mm_mul_ps(radius, radius);
+    q.b = dot3(q.ocx, q.ocy, q.ocz, r.dx, r.dy, r.dz);
+    const __m128 px = _mm_sub_ps(q.ocx, _mm_mul_ps(q.b, r.dx));
+    const __m128 py = _mm_sub_ps(q.ocy, _mm_mul_ps(q.b, r.dy));
+    const __m128 pz = _mm_sub_ps(q.ocz, _mm_mul_ps(q.b, r.dz));
+    q.disc = _mm_sub_ps(q.rr, dot3(px, py, pz, px, py, pz));
+    q.reached = _mm_movemask_ps(_mm_cmpnlt_ps(q.disc, _mm_setzero_ps()));
+    return q;
+}
+
+// t > tMin, or -1 on a miss. GLM's min(x, y) is y < x ? y : x, which is _mm_min_ps(y, x); max(x, y) is
+// x < y ? y : x, which is _mm_max_ps(y, x), NaN and signed zeros included.
+inline __m128 finishGroup(const GroupRay& r, const GroupReach& q) {
     using sphere_group_detail::dot3;
     using sphere_group_detail::select;
     const __m128 zero = _mm_setzero_ps(), minusOne = _mm_set1_ps(-1.0f);
-    const __m128 ocx = _mm_sub_ps(r.ox, _mm_load_ps(g.cx));
-    const __m128 ocy = _mm_sub_ps(r.oy, _mm_load_ps(g.cy));
-    const __m128 ocz = _mm_sub_ps(r.oz, _mm_load_ps(g.cz));
-    const __m128 radius = _mm_load_ps(g.r);
-    const __m128 rr = _mm_mul_ps(radius, radius);
-    const __m128 b = dot3(ocx, ocy, ocz, r.dx, r.dy, r.dz);
-    const __m128 px = _mm_sub_ps(ocx, _mm_mul_ps(b, r.dx));
-    const __m128 py = _mm_sub_ps(ocy, _mm_mul_ps(b, r.dy));
-    const __m128 pz = _mm_sub_ps(ocz, _mm_mul_ps(b, r.dz));
-    const __m128 disc = _mm_sub_ps(rr, dot3(px, py, pz, px, py, pz));
-    const __m128 reached = _mm_cmpnlt_ps(disc, zero);  // !(disc < 0): a NaN goes on, as in the scalar code
-    const __m128 sq = _mm_sqrt_ps(disc);
-    const __m128 c = _mm_sub_ps(dot3(ocx, ocy, ocz, ocx, ocy, ocz), rr);
-    const __m128 minusB = _mm_xor_ps(b, _mm_set1_ps(-0.0f));
-    const __m128 q = select(_mm_cmpgt_ps(b, zero), _mm_sub_ps(minusB, sq), _mm_add_ps(minusB, sq));
-    const __m128 t0 = _mm_and_ps(_mm_cmpneq_ps(q, zero), _mm_div_ps(c, q));  // q != 0 ? c / q : +0
-    const __m128 tNear = _mm_min_ps(q, t0);
-    const __m128 tFar = _mm_max_ps(q, t0);
+    const __m128 reached = _mm_cmpnlt_ps(q.disc, zero);
+    const __m128 sq = _mm_sqrt_ps(q.disc);
+    const __m128 c = _mm_sub_ps(dot3(q.ocx, q.ocy, q.ocz, q.ocx, q.ocy, q.ocz), q.rr);
+    const __m128 minusB = _mm_xor_ps(q.b, _mm_set1_ps(-0.0f));
+    const __m128 qq = select(_mm_cmpgt_ps(q.b, zero), _mm_sub_ps(minusB, sq), _mm_add_ps(minusB, sq));
+    const __m128 t0 = _mm_and_ps(_mm_cmpneq_ps(qq, zero), _mm_div_ps(c, qq));  // q != 0 ? c / q : +0
+    const __m128 tNear = _mm_min_ps(qq, t0);
+    const __m128 tFar = _mm_max_ps(qq, t0);
     const __m128 t = select(_mm_cmpgt_ps(tNear, r.tMin), tNear, select(_mm_cmpgt_ps(tFar, r.tMin), tFar, minusOne));
     return select(reached, t, minusOne);
 }
 
-// The lanes hit at tMin < t < tMax (bit k for lane k), their distances in t[4].
-inline unsigned groupHits(const GroupRay& r, const SphereGroup& g, float tMax, float* t) {
-    const __m128 ts = intersectGroup(r, g);
-    _mm_storeu_ps(t, ts);
-    return unsigned(_mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(ts, r.tMin), _mm_cmplt_ps(ts, _mm_set1_ps(tMax)))));
-}
-
-// The same with t <= tMax: a closest-hit search keeps lanes that tie with its best so far.
-inline unsigned groupHitsUpTo(const GroupRay& r, const SphereGroup& g, float tMax, float* t) {
-    const __m128 ts = intersectGroup(r, g);
-    _mm_storeu_ps(t, ts);
-    return unsigned(_mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(ts, r.tMin), _mm_cmple_ps(ts, _mm_set1_ps(tMax)))));
+// Whether some lane of the group is hit at tMin < t < tMax.
+inline bool groupHitsAny(const GroupRay& r, const SphereGroup& g, float tMax) {
+    for (int half = 0; half < 2; ++half) {
+        const GroupReach q = reachGroup(r, g, half);
+        if (!q.reached) continue;
+        const __m128 t = finishGroup(r, q);
+        if (_mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(t, r.tMin), _mm_cmplt_ps(t, _mm_set1_ps(tMax))))) return true;
+    }
+    return false;
 }
 
 #else
@@ -110,22 +131,13 @@ struct GroupRay {
 
 inline GroupRay groupRay(const Ray& ray, float tMin) { return {ray, tMin}; }
 
-inline unsigned groupHits(const GroupRay& r, const SphereGroup& g, float tMax, float* t) {
-    unsigned mask = 0;
-    for (int k = 0; k < 4; ++k) {
-        t[k] = shading::intersectSphere(r.ray.origin, r.ray.dir, glm::vec3(g.cx[k], g.cy[k], g.cz[k]), g.r[k], r.tMin);
-        if (t[k] > r.tMin && t[k] < tMax) mask |= 1u << k;
+inline bool groupHitsAny(const GroupRay& r, const SphereGroup& g, float tMax) {
+    for (int k = 0; k < kSphereGroupLanes; ++k) {
+        const float t =
+            shading::intersectSphere(r.ray.origin, r.ray.dir, glm::vec3(g.cx[k], g.cy[k], g.cz[k]), g.r[k], r.tMin);
+        if (t > r.tMin && t < tMax) return true;
     }
-    return mask;
-}
-
-inline unsigned groupHitsUpTo(const GroupRay& r, const SphereGroup& g, float tMax, float* t) {
-    unsigned mask = 0;
-    for (int k = 0; k < 4; ++k) {
-        t[k] = shading::intersectSphere(r.ray.origin, r.ray.dir, glm::vec3(g.cx[k], g.cy[k], g.cz[k]), g.r[k], r.tMin);
-        if (t[k] > r.tMin && t[k] <= tMax) mask |= 1u << k;
-    }
-    return mask;
+    return false;
 }
 
 #endif

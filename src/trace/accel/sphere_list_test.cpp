@@ -119,38 +119,56 @@ struct ScalarLoop {
     }
 };
 
+// The flat pass's instruction sets this build and CPU can run: SSE2 always, AVX2 where available.
+std::vector<BvhIsa> flatIsas() {
+    std::vector<BvhIsa> isas{BvhIsa::Sse2};
+    if (bvhIsaAvailable(BvhIsa::Avx2)) isas.push_back(BvhIsa::Avx2);
+    return isas;
+}
+
 TEST(SphereList, FlatPassMatchesTheTreeAndTheScalarLoopBitForBit) {
-    for (const size_t count : {44u, 43u, 1u}) {  // full groups, a padded last group, one sphere
-        std::vector<Sphere> spheres = awkwardSpheres();
-        spheres.resize(count);
-        const std::vector<Ray> rays = awkwardRays(spheres, 11u + uint32_t(count));
-        const SphereSet flat(spheres, spheres.size()), tree(spheres, 0);
-        ASSERT_TRUE(flat.flat());
-        ASSERT_FALSE(tree.flat());
-        std::ofstream evidence(evidencePath("sphere_list_" + std::to_string(count) + ".txt"));
-        const size_t vsTree = disagreements(flat, tree, rays, &evidence);
-        const size_t vsLoop = disagreements(flat, ScalarLoop{spheres}, rays, &evidence);
-        EXPECT_EQ(vsTree, 0u) << count << " spheres; first rays in "
-                              << evidencePath("sphere_list_" + std::to_string(count) + ".txt");
-        EXPECT_EQ(vsLoop, 0u) << count << " spheres";
-        size_t hits = 0;
-        for (const Ray& r : rays) hits += flat.closestHit(r, 0.0f, INFINITY).has_value();
-        EXPECT_GT(hits, rays.size() / 4) << "the rays must hit often enough to test anything";
-    }
+    // Whole groups of eight, a padded last group, a padded half, one sphere.
+    for (const BvhIsa isa : flatIsas())
+        for (const size_t count : {40u, 44u, 43u, 1u}) {
+            std::vector<Sphere> spheres = awkwardSpheres();
+            spheres.resize(count);
+            const std::vector<Ray> rays = awkwardRays(spheres, 11u + uint32_t(count));
+            const SphereSet flat(spheres, spheres.size(), isa), tree(spheres, 0);
+            ASSERT_TRUE(flat.flat());
+            ASSERT_FALSE(tree.flat());
+            const std::string name = std::string("sphere_list_") + bvhIsaName(isa) + "_" + std::to_string(count);
+            std::ofstream evidence(evidencePath(name + ".txt"));
+            const size_t vsTree = disagreements(flat, tree, rays, &evidence);
+            const size_t vsLoop = disagreements(flat, ScalarLoop{spheres}, rays, &evidence);
+            EXPECT_EQ(vsTree, 0u) << bvhIsaName(isa) << ", " << count << " spheres; first rays in "
+                                  << evidencePath(name + ".txt");
+            EXPECT_EQ(vsLoop, 0u) << bvhIsaName(isa) << ", " << count << " spheres";
+            size_t hits = 0;
+            for (const Ray& r : rays) hits += flat.closestHit(r, 0.0f, INFINITY).has_value();
+            EXPECT_GT(hits, rays.size() / 4) << "the rays must hit often enough to test anything";
+        }
 }
 
 TEST(SphereList, ExactTiesGoToTheLowerIndexAcrossLanes) {
-    // The same sphere at indices 2, 5 (another lane) and 6: the nearest is always index 2.
-    std::vector<Sphere> s(8, Sphere{"", {10, 10, 10}, 0.5f, {}});
-    for (const int k : {2, 5, 6}) s[size_t(k)] = Sphere{"", {0, 0, -3}, 1.0f, {}};
-    const SphereList list(s);
-    const std::optional<SphereHit> h = list.closestHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, INFINITY);
-    ASSERT_TRUE(h);
-    EXPECT_EQ(h->index, 2u);
-    EXPECT_EQ(h->t, 2.0f);
-    EXPECT_FALSE(list.closestHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, 2.0f)) << "a hit at tMax itself is no hit";
-    EXPECT_TRUE(list.anyHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, 2.5f));
-    EXPECT_FALSE(list.anyHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, 2.0f));
+    // The same sphere at indices 2, 5 (the other SSE half), 6 and 11 (the next group): the nearest is always 2.
+    for (const BvhIsa isa : flatIsas()) {
+        std::vector<Sphere> s(16, Sphere{"", {10, 10, 10}, 0.5f, {}});
+        for (const int k : {2, 5, 6, 11}) s[size_t(k)] = Sphere{"", {0, 0, -3}, 1.0f, {}};
+        const SphereList list(s, isa);
+        const std::optional<SphereHit> h = list.closestHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, INFINITY);
+        ASSERT_TRUE(h) << bvhIsaName(isa);
+        EXPECT_EQ(h->index, 2u) << bvhIsaName(isa);
+        EXPECT_EQ(h->t, 2.0f);
+        EXPECT_FALSE(list.closestHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, 2.0f)) << "a hit at tMax itself is no hit";
+        EXPECT_TRUE(list.anyHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, 2.5f));
+        EXPECT_FALSE(list.anyHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, 2.0f));
+        // Only the later copies left: the nearest is the lowest of them, 5, in the other half.
+        s[2] = Sphere{"", {10, 10, 10}, 0.5f, {}};
+        const std::optional<SphereHit> later =
+            SphereList(s, isa).closestHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, INFINITY);
+        ASSERT_TRUE(later);
+        EXPECT_EQ(later->index, 5u) << bvhIsaName(isa);
+    }
     EXPECT_FALSE(SphereList{}.closestHit(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, INFINITY));
 }
 
@@ -159,7 +177,9 @@ TEST(SphereList, NegativeControlOneSphereMovedByOneFloatStepDisagrees) {
     std::vector<Sphere> moved = spheres;
     moved[17].radius = std::nextafter(moved[17].radius, INFINITY);
     const std::vector<Ray> rays = awkwardRays(spheres, 12u);
-    EXPECT_GT(disagreements(SphereSet(moved, moved.size()), SphereSet(spheres, 0), rays), 10u);
+    for (const BvhIsa isa : flatIsas())
+        EXPECT_GT(disagreements(SphereSet(moved, moved.size(), isa), SphereSet(spheres, 0), rays), 10u)
+            << bvhIsaName(isa);
 }
 
 }  // namespace

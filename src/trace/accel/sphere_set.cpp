@@ -11,7 +11,7 @@
 
 namespace shadelab::trace {
 
-SphereSet::SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit) : count_(spheres.size()) {
+SphereSet::SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit, BvhIsa isa) : count_(spheres.size()) {
     std::vector<Bounds> boxes;
     boxes.reserve(spheres.size());
     for (const Sphere& s : spheres) {
@@ -26,7 +26,7 @@ SphereSet::SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit) : cou
         bounds_.extend(b);
     }
     if (spheres.size() <= flatLimit) {
-        flat_ = SphereList(spheres);
+        flat_ = SphereList(spheres, isa);
         return;
     }
     BvhBuildOptions options;

@@ -16,15 +16,18 @@
 
 namespace shadelab::trace {
 
-// Up to this many spheres a flat pass over all of them beats the BVH walk; from about 24 on the walk culls
-// enough to win, and on spheres40.json (40) the flat pass took 2.7 times the walk's instructions
-// (bench/README.md, "Spheres: a flat pass or the tree", measured with sphere_bench).
-inline constexpr size_t kFlatSphereLimit = 16;
+// Up to this many spheres a flat pass over all of them beats the BVH walk. The pass skips the square root and the
+// division for four or eight spheres at once when the ray's line misses them all, so it costs about a cheap box
+// test per sphere: on sphere_bench's rays it takes 0.5-0.6 of the walk's time at 40 spheres in AVX2, 0.6-0.7 in
+// SSE2, and still 0.8 at 64 in SSE2 (bench/README.md, "Spheres: a flat pass or the tree").
+inline constexpr size_t kFlatSphereLimit = 64;
 
 class SphereSet {
 public:
-    // `flatLimit`: the largest set tested flat (the tests compare both ways on one set).
-    explicit SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit = kFlatSphereLimit);
+    // `flatLimit`: the largest set tested flat (the tests compare both ways on one set); `isa`: the flat pass's
+    // instruction set (SphereList).
+    explicit SphereSet(const std::vector<Sphere>& spheres, size_t flatLimit = kFlatSphereLimit,
+                       BvhIsa isa = defaultBvhIsa());
 
     // The nearest intersectSphere(origin, dir, centre, radius, tMin) result below tMax; an exact tie goes
     // to the lower sphere index, as a loop over the spheres in scene order gives.
