@@ -5,6 +5,7 @@
 #include "trace/trace_image.h"
 
 #include "trace/trace_job.h"
+#include "util/fresh_buffer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -35,7 +36,7 @@ TraceOutput traceImage(const TraceScene& scene, const TraceSettings& settings,
         out.pixels.width = settings.width;
         out.pixels.height = settings.height;
         out.pixels.channels = 3;
-        out.pixels.data.resize(pixelCount * 3);
+        resizeFresh(out.pixels.data, pixelCount * 3);
     } else {
         out.color = ImageF(settings.width, settings.height);
     }
