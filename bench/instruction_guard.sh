@@ -8,6 +8,7 @@
 #   whitted      bench/spheres40.json traced at 160x90, 1 thread           (trace::renderTile)
 #   path         assets/scenes/default.json path traced, 64x36, 1 spp       (PathRender::renderPixel)
 #   coherent     2CylinderEngine: a primary ray per pixel + a shadow ray per hit at 160x90 (trace_bench)
+#   packets      the same rays as coherent, as packets of eight (TraceScene::intersect8 / occluded8)
 #   incoherent   2CylinderEngine: one cosine-distributed bounce per hit at 160x90 (trace_bench)
 #   bvh_build    loading 2CylinderEngine and building its BVH, every thread: the whole `shadelab render
 #                --renderer trace` process at 8x8 (not trace_bench's, which links Embree where it is installed)
@@ -36,7 +37,7 @@ if [[ ${1:-} == -h || ${1:-} == --help ]]; then
     sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'
     exit 0
 fi
-all=(whitted path coherent incoherent bvh_build png_encode)
+all=(whitted path coherent packets incoherent bvh_build png_encode)
 kernels=("$@")
 [[ ${#kernels[@]} -gt 0 ]] || kernels=("${all[@]}")
 [[ $tolerance =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "instruction_guard: TOLERANCE must be a number" >&2; exit 2; }
@@ -65,6 +66,10 @@ kernel() {
             ;;
         coherent)
             toggles=("*traceOurs*")
+            cmd=("$build/bench/trace_bench" --only engine --runs 1 --threads 1 --size 160x90 --engine "$engine" --no-embree)
+            ;;
+        packets)
+            toggles=("shadelab::trace::TraceScene::intersect8(*" "shadelab::trace::TraceScene::occluded8(*")
             cmd=("$build/bench/trace_bench" --only engine --runs 1 --threads 1 --size 160x90 --engine "$engine" --no-embree)
             ;;
         incoherent)

@@ -160,6 +160,39 @@ RayCounts traceOurs(const trace::TraceScene& ts, const ViewSetup& view, int thre
     return sum(perRow);
 }
 
+// The same rays as packets of eight neighbouring pixels of a row, the shadow rays of their hits as one packet
+// (TraceScene::intersect8 / occluded8): the shape of traceEmbree8, for the comparison with Embree's packets.
+RayCounts traceOurPackets(const trace::TraceScene& ts, const ViewSetup& view, int threads) {
+    const Scene& scene = ts.scene();
+    const trace::MeshBvh& mb = *ts.meshBvh();
+    std::vector<RayCounts> perRow(size_t(view.height));
+    parallelRows(view.height, threads, [&](int y) {
+        RayCounts c;
+        for (int x0 = 0; x0 < view.width; x0 += 8) {
+            trace::Ray rays[8], shadow[8];
+            float tMax[8];
+            unsigned valid = 0, shadowValid = 0;
+            for (int k = 0; k < 8 && x0 + k < view.width; ++k) {
+                rays[k] = trace::sampleRay(view, 1, x0 + k, y, 0, 0);
+                valid |= 1u << k;
+                ++c.primary;
+            }
+            std::optional<trace::Hit> hits[8];
+            ts.intersect8(rays, valid, hits);
+            for (int k = 0; k < 8; ++k) {
+                if (!hits[k]) continue;
+                ++c.hits;
+                if (shadowRay(scene, rays[k].origin + hits[k]->t * rays[k].dir, mb.geometricNormal(hits[k]->index),
+                              rays[k].dir, ts.epsilon(), shadow[k], tMax[k]))
+                    shadowValid |= 1u << k;
+            }
+            if (shadowValid) c.occluded += uint64_t(__builtin_popcount(ts.occluded8(shadow, tMax, shadowValid)));
+        }
+        perRow[size_t(y)] = c;
+    });
+    return sum(perRow);
+}
+
 #ifdef SHADELAB_HAVE_EMBREE
 RayCounts traceEmbree(const EmbreeScene& es, const Scene& scene, float eps, const ViewSetup& view, int threads) {
     std::vector<RayCounts> perRow(size_t(view.height));
@@ -307,6 +340,25 @@ void benchEngine(const Options& o) {
                 o.threads, (unsigned long long)c.primary, (unsigned long long)c.hits, (unsigned long long)c.occluded);
     const double oursMedian = median(ours);
     std::printf("shadelab: median of %d: %.2f Mrays/s\n", o.runs, oursMedian);
+    std::vector<double> oursPackets;
+    RayCounts cp;
+    for (int r = 0; r < o.runs; ++r) {
+        t0 = Clock::now();
+        cp = traceOurPackets(ts, view, o.threads);
+        const double s = seconds(t0, Clock::now());
+        oursPackets.push_back(mraysPerSecond(cp, s));
+        std::printf("  shadelab packets run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, oursPackets.back());
+    }
+    if (cp.primary != c.primary || cp.hits != c.hits || cp.occluded != c.occluded) {
+        std::fprintf(stderr,
+                     "trace_bench: the packets found other hits than single rays (%llu/%llu against %llu/%llu)\n",
+                     (unsigned long long)cp.hits, (unsigned long long)cp.occluded, (unsigned long long)c.hits,
+                     (unsigned long long)c.occluded);
+        std::exit(1);
+    }
+    const double oursPacketsMedian = median(oursPackets);
+    std::printf("shadelab packets (TraceScene::intersect8 / occluded8): median of %d: %.2f Mrays/s\n", o.runs,
+                oursPacketsMedian);
 #ifdef SHADELAB_HAVE_EMBREE
     t0 = Clock::now();
     const EmbreeScene es(scene);
@@ -338,7 +390,8 @@ void benchEngine(const Options& o) {
         "median of %d: %.2f Mrays/s\n",
         (unsigned long long)e.primary, (unsigned long long)e.hits, (unsigned long long)e.occluded, o.runs,
         median(packets));
-    std::printf("ratio shadelab / embree packets: %.2f (target >= 1.0)\n", oursMedian / median(packets));
+    std::printf("ratio shadelab / embree packets: %.2f single rays, %.2f packets (target >= 1.0)\n",
+                oursMedian / median(packets), oursPacketsMedian / median(packets));
 #else
     std::printf("embree: not built (install libembree-dev and reconfigure for the comparison)\n");
 #endif

@@ -34,15 +34,15 @@ void TraceScene::prepare() {
     epsilon_ = secondaryRayEpsilon(scene_, scene_.camera.position);
 }
 
-std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
-    // Once per ray: only the kinds of object the scene has are asked, and the meshes answer through an
-    // out-parameter, the spheres too (an optional built and copied there stalled on a partial store).
-    Hit best;
+inline bool TraceScene::nearestAnalytic(const Ray& ray, Hit& best) const {
+    // Once per ray: only the kinds of object the scene has are asked, and the spheres answer through an
+    // out-parameter (an optional built and copied there stalled on a partial store).
     best.t = INFINITY;
     bool found = false;
     SphereHit s;
     if (spheres_->size() != 0 && spheres_->closestHit(ray, 0.0f, INFINITY, s)) {
         best.t = s.t;
+        best.kind = HitKind::Sphere;
         best.index = s.index;
         found = true;
     }
@@ -56,6 +56,12 @@ std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
             found = true;
         }
     }
+    return found;
+}
+
+std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
+    Hit best;
+    bool found = nearestAnalytic(ray, best);
     MeshHit m;
     if (meshes_->closestHit(ray, best.t, m)) {
         best = Hit{m.t, HitKind::Triangle, m.slot, m.b0, m.b1, m.b2};
@@ -65,12 +71,47 @@ std::optional<Hit> TraceScene::intersect(const Ray& ray) const {
     return best;
 }
 
-bool TraceScene::occluded(const Ray& ray, float tMax) const {
+void TraceScene::intersect8(const Ray* rays, unsigned valid, std::optional<Hit>* out) const {
+    Hit best[8];
+    float bound[8] = {};
+    unsigned found = 0;
+    for (unsigned v = valid & 0xFFu; v; v &= v - 1) {
+        const int k = __builtin_ctz(v);
+        if (nearestAnalytic(rays[k], best[k])) found |= 1u << k;
+        bound[k] = best[k].t;
+    }
+    MeshHit m[8];
+    const unsigned meshHits = meshes_->closestHit8(rays, bound, valid, m);
+    for (unsigned v = valid & 0xFFu; v; v &= v - 1) {
+        const int k = __builtin_ctz(v);
+        if ((meshHits >> k) & 1)
+            out[k] = Hit{m[k].t, HitKind::Triangle, m[k].slot, m[k].b0, m[k].b1, m[k].b2};
+        else if ((found >> k) & 1)
+            out[k] = best[k];
+        else
+            out[k] = std::nullopt;
+    }
+}
+
+inline bool TraceScene::occludedByAnalytic(const Ray& ray, float tMax) const {
     for (const Plane& p : scene_.planes) {
         const float t = shading::intersectPlane(ray.origin, ray.dir, p.normal, p.offset, 0.0f);
         if (t > 0.0f && t < tMax) return true;
     }
-    return spheres_->anyHit(ray, 0.0f, tMax) || meshes_->anyHit(ray, tMax);
+    return spheres_->anyHit(ray, 0.0f, tMax);
+}
+
+bool TraceScene::occluded(const Ray& ray, float tMax) const {
+    return occludedByAnalytic(ray, tMax) || meshes_->anyHit(ray, tMax);
+}
+
+unsigned TraceScene::occluded8(const Ray* rays, const float* tMax, unsigned valid) const {
+    unsigned occluded = 0;
+    for (unsigned v = valid & 0xFFu; v; v &= v - 1) {
+        const int k = __builtin_ctz(v);
+        if (occludedByAnalytic(rays[k], tMax[k])) occluded |= 1u << k;
+    }
+    return occluded | meshes_->anyHit8(rays, tMax, valid & ~occluded);
 }
 
 uint32_t TraceScene::coverageId(const Hit& hit) const {

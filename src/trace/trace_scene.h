@@ -47,6 +47,11 @@ public:
     // Whether anything lies on the ray at 0 < t < tMax. Transmissive surfaces block too (hard shadows of
     // glass are black, a documented simplification of Whitted 1980's kt-weighted shadow rays).
     bool occluded(const Ray& ray, float tMax) const;
+    // intersect(rays[k]) for up to eight rays at once (bit k of `valid`), into out[k]; the meshes take them as one
+    // packet (MeshBvh::closestHit8), which pays for coherent rays: camera rays of neighbouring pixels.
+    void intersect8(const Ray* rays, unsigned valid, std::optional<Hit>* out) const;
+    // occluded(rays[k], tMax[k]) for up to eight rays at once: bit k set where ray k is occluded.
+    unsigned occluded8(const Ray* rays, const float* tMax, unsigned valid) const;
 
     // Coverage id of the object hit (scene/coverage.h).
     uint32_t coverageId(const Hit& hit) const;
@@ -63,6 +68,10 @@ public:
 
 private:
     void prepare();
+    // The nearest sphere or plane hit (t > 0) into `best` (best.t is INFINITY without one); false without one.
+    bool nearestAnalytic(const Ray& ray, Hit& best) const;
+    // Whether a plane or a sphere lies on the ray at 0 < t < tMax.
+    bool occludedByAnalytic(const Ray& ray, float tMax) const;
 
     Scene scene_;
     std::shared_ptr<const MeshBvh> meshes_;

@@ -250,4 +250,42 @@ bool MeshBvh::anyHit(const Ray& ray, float tMax, BvhIsa isa) const {
                        AnyTriangleLeaf<watertight_detail::BaselineTag>{data, makeWatertightRay(ray), tMax});
 }
 
+unsigned MeshBvh::closestHit8(const Ray* rays, const float* tMax, unsigned valid, MeshHit* out) const {
+    valid &= 0xFFu;
+    if (bvh_.empty() || !valid) return 0;
+    unsigned found = 0;
+    if (isa_ != BvhIsa::Avx2) {
+        for (; valid; valid &= valid - 1) {
+            const int k = __builtin_ctz(valid);
+            if (closestHitWith(rays[k], tMax[k], isa_, out[k])) found |= 1u << k;
+        }
+        return found;
+    }
+    TriangleLeafHit best[8];
+    for (int k = 0; k < 8; ++k)
+        best[k] = TriangleLeafHit{(valid >> k) & 1 ? tMax[k] : 0.0f, UINT32_MAX, 0.0f, 0.0f, 0.0f};
+    closestTriangle8Avx2(bvh_.nodes.data(), rays, valid, TriangleLeafData{positions_.data(), source_.data()}, best);
+    for (; valid; valid &= valid - 1) {
+        const int k = __builtin_ctz(valid);
+        if (best[k].slot == UINT32_MAX) continue;
+        out[k] = MeshHit{best[k].t, best[k].slot, best[k].b0, best[k].b1, best[k].b2};
+        found |= 1u << k;
+    }
+    return found;
+}
+
+unsigned MeshBvh::anyHit8(const Ray* rays, const float* tMax, unsigned valid) const {
+    valid &= 0xFFu;
+    if (bvh_.empty() || !valid) return 0;
+    if (isa_ == BvhIsa::Avx2)
+        return anyTriangle8Avx2(bvh_.nodes.data(), rays, tMax, valid,
+                                TriangleLeafData{positions_.data(), source_.data()});
+    unsigned occluded = 0;
+    for (; valid; valid &= valid - 1) {
+        const int k = __builtin_ctz(valid);
+        if (anyHit(rays[k], tMax[k], isa_)) occluded |= 1u << k;
+    }
+    return occluded;
+}
+
 }  // namespace shadelab::trace

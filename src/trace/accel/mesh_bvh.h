@@ -71,6 +71,14 @@ public:
     }
     bool anyHit(const Ray& ray, float tMax, BvhIsa isa) const;
 
+    // closestHit(rays[k], tMax[k], out[k]) for up to eight rays at once (bit k of `valid`); returns the rays hit
+    // (bit k). With the AVX2 walks the rays go through the tree as one packet (closestTriangle8Avx2): camera
+    // rays of neighbouring pixels, and their shadow rays, share most node visits. Each answer is the single-ray
+    // walk's bit for bit; the baseline walks take the rays one by one.
+    unsigned closestHit8(const Ray* rays, const float* tMax, unsigned valid, MeshHit* out) const;
+    // anyHit(rays[k], tMax[k]) for up to eight rays at once: bit k set where ray k is occluded.
+    unsigned anyHit8(const Ray* rays, const float* tMax, unsigned valid) const;
+
     // Triangles kept (finite, not degenerate), and slots: a triangle cut by spatial splits fills several.
     size_t triangleCount() const { return triangles_; }
     size_t slotCount() const { return part_.size(); }
