@@ -85,8 +85,22 @@ PrimarySample WhittedIntegrator::recordPrimary(const Ray& ray, RayTreeRecord& re
     return s;
 }
 
+void WhittedIntegrator::primary8(const Ray* rays, unsigned valid, PrimarySample* out,
+                                 const std::atomic<bool>* cancel) const {
+    std::optional<Hit> hits[8];
+    surfaces_.visibleHits8(rays, valid, hits);
+    for (unsigned v = valid & 0xFFu; v; v &= v - 1) {
+        const int k = __builtin_ctz(v);
+        Tree tree{limits_.maxRays < 0 ? std::numeric_limits<int64_t>::max() : limits_.maxRays, cancel, {}};
+        out[k] = primaryAt(rays[k], hits[k], tree);
+    }
+}
+
 PrimarySample WhittedIntegrator::primary(const Ray& ray, Tree& tree) const {
-    const std::optional<Hit> hit = visibleHit(ray, 0.0f, 0);
+    return primaryAt(ray, visibleHit(ray, 0.0f, 0), tree);
+}
+
+PrimarySample WhittedIntegrator::primaryAt(const Ray& ray, const std::optional<Hit>& hit, Tree& tree) const {
     if (tree.record) note(tree, TreeRayKind::Primary, 0, ray, hit, glm::vec3(1.0f));
     if (!hit) return {env_.escaping(ray.dir), kBackgroundId};
     return {shade(ray, *hit, 0, glm::vec3(1.0f), tree), scene_.coverageId(*hit)};

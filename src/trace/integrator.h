@@ -41,6 +41,9 @@ public:
     // One camera sample. `cancel`, when set, is read before every secondary ray: once it is true no
     // further child is traced, so the call returns within about one shade() of it.
     PrimarySample primary(const Ray& ray, const std::atomic<bool>* cancel = nullptr, TreeStats* stats = nullptr) const;
+    // primary(rays[k], cancel) for up to eight camera samples (bit k of `valid`) into out[k], the same colours:
+    // their first hits are found as one packet (TraceScene::intersect8), which pays for neighbouring pixels.
+    void primary8(const Ray* rays, unsigned valid, PrimarySample* out, const std::atomic<bool>* cancel = nullptr) const;
     // The same sample, returning the same colour, with every ray it traces written to `record` (cleared
     // first): the ray view's tree (ray_tree_record.h).
     PrimarySample recordPrimary(const Ray& ray, RayTreeRecord& record, TreeStats* stats = nullptr) const;
@@ -80,6 +83,8 @@ private:
     Ray shadowRay(const Surface& s, const Light& light, float& tMax) const;
     struct Tree;  // one sample's budget, cancel flag and stats, and the record when one is kept
     PrimarySample primary(const Ray& ray, Tree& tree) const;
+    // The sample of a camera ray whose first visible hit is known.
+    PrimarySample primaryAt(const Ray& ray, const std::optional<Hit>& hit, Tree& tree) const;
     glm::vec3 radiance(const Ray& ray, int depth, const glm::vec3& weight, Tree& tree, TreeRayKind kind) const;
     glm::vec3 shade(const Ray& ray, const Hit& hit, int depth, const glm::vec3& weight, Tree& tree) const;
     // `transmitted`, when given, is the radiance a ray traced through a transmitting pbr surface brought back

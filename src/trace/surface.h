@@ -74,6 +74,15 @@ public:
         if (!masks_ && !(after > 0.0f)) return scene_.intersect(ray);
         return visibleHitMasked(ray, after, depth);
     }
+    // visibleHit(rays[k], 0, 0) for up to eight camera rays (bit k of `valid`), into out[k]: as one packet
+    // (TraceScene::intersect8) where no part is alpha-masked, one by one otherwise.
+    void visibleHits8(const Ray* rays, unsigned valid, std::optional<Hit>* out) const {
+        if (!masks_) return scene_.intersect8(rays, valid, out);
+        for (unsigned v = valid & 0xFFu; v; v &= v - 1) {
+            const int k = __builtin_ctz(v);
+            out[k] = visibleHitMasked(rays[k], 0.0f, 0);
+        }
+    }
     void setPixelFootprint(const PixelFootprint& f) { footprint_ = f; }
 
 private:

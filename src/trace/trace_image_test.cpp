@@ -193,6 +193,38 @@ TEST(TraceDeterminism, SupersamplingAveragesTheFixedGrid) {
     EXPECT_FALSE(sameBits(out.color.rgba, traceImage(ts, settings(W, H, 2, 1)).color.rgba));
 }
 
+TEST(TraceDeterminism, OneSampleImagesFromPacketsEqualEachPixelsOwnSample) {
+    // At one sample per pixel the camera rays of eight neighbouring pixels find their first hits as one packet
+    // (WhittedIntegrator::primary8); every pixel must be what primary() gives its ray alone, bit for bit (a
+    // colour of -0 written as +0, as the k×k sum does), with meshes, spheres and a plane in view.
+    const Scene sc = busyScene();
+    const TraceScene ts(sc);
+    const WhittedIntegrator wi(ts, sc.maxDepth);
+    const int W = 61, H = 37;  // tiles whose width is not a multiple of eight
+    const TraceOutput out = traceImage(ts, settings(W, H, 2));
+    const ViewSetup v = makeViewSetup(sc, W, H);
+    size_t bad = 0, hitMesh = 0;
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) {
+            const PrimarySample ps = wi.primary(sampleRay(v, 1, i, j, 0, 0));
+            const glm::vec3 c = glm::vec3(0.0f) + ps.color;
+            const float* p = out.color.pixel(i, j);
+            bad += !(std::memcmp(p, &c.x, 4) == 0 && std::memcmp(p + 1, &c.y, 4) == 0 &&
+                     std::memcmp(p + 2, &c.z, 4) == 0 && out.coverage[size_t(j * W + i)] == ps.coverage);
+            hitMesh += ps.coverage > sc.spheres.size() + sc.planes.size();
+        }
+    EXPECT_EQ(bad, 0u);
+    EXPECT_GT(hitMesh, 50u) << "the meshes must be in view";
+    // Negative control: the comparison sees a pixel shifted by one (its neighbour's sample).
+    size_t moved = 0;
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i + 1 < W; ++i) {
+            const glm::vec3 c = wi.primary(sampleRay(v, 1, i + 1, j, 0, 0)).color;
+            moved += std::memcmp(out.color.pixel(i, j), &c.x, 4) != 0;
+        }
+    EXPECT_GT(moved, 100u);
+}
+
 // Runs `pt` to completion, checking delivery and progress on the way; returns the assembled image.
 TraceOutput collect(ProgressiveTrace& pt, const TraceSettings& s) {
     TraceOutput out;
