@@ -26,15 +26,6 @@ void closestTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData 
 // Whether any triangle is hit at 0 < t < tMax.
 bool anyTriangleAvx2(const BvhNode* nodes, const Ray& ray, TriangleLeafData data, float tMax);
 
-// The same for up to eight rays at once (bit k of `valid`: rays[k], best[k]; the other entries are not read),
-// walked through the tree as one packet (coherent rays share its node visits); each ray's answer is
-// closestTriangleAvx2's bit for bit.
-void closestTriangle8Avx2(const BvhNode* nodes, const Ray* rays, unsigned valid, TriangleLeafData data,
-                          TriangleLeafHit* best);
-// anyTriangleAvx2 for up to eight rays at once, each with its own tMax: bit k set where ray k is occluded.
-unsigned anyTriangle8Avx2(const BvhNode* nodes, const Ray* rays, const float* tMax, unsigned valid,
-                          TriangleLeafData data);
-
 // The per-ray constants the walks above use, for tests: makeBoxRay's and makeWatertightRay's, bit for bit.
 void rayConstantsAvx2(const Ray& ray, BoxRay& box, WatertightRay& wt);
 

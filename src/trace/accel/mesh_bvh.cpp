@@ -3,6 +3,7 @@
 // small fixed stack; no allocation and no virtual calls per ray.
 #include "trace/accel/mesh_bvh.h"
 
+#include "trace/accel/bvh_packet_avx2.h"
 #include "trace/accel/bvh_traverse.h"
 #include "trace/accel/bvh_traverse_avx2.h"
 #include "trace/accel/leaf_positions.h"
