@@ -327,28 +327,28 @@ void benchEngine(const Options& o) {
                 1e3 * seconds(t0, Clock::now()));
     printTreeStats("engine BVH", ts.meshBvh()->bvh());
     const ViewSetup view = makeViewSetup(ts.scene(), o.width, o.height);
-    std::vector<double> ours;
+    // o.runs timed runs of `trace` (it returns the rays it traced, the last run's kept in `counts`): Mrays/s each.
+    auto timedRuns = [&o](const char* label, auto&& trace, RayCounts& counts) {
+        std::vector<double> rates;
+        for (int r = 0; r < o.runs; ++r) {
+            const auto start = Clock::now();
+            counts = trace();
+            const double s = seconds(start, Clock::now());
+            rates.push_back(mraysPerSecond(counts, s));
+            std::printf("  %s run %d: %.3f s, %.2f Mrays/s\n", label, r + 1, s, rates.back());
+        }
+        return rates;
+    };
     RayCounts c;
-    for (int r = 0; r < o.runs; ++r) {
-        t0 = Clock::now();
-        c = traceOurs(ts, view, o.threads);
-        const double s = seconds(t0, Clock::now());
-        ours.push_back(mraysPerSecond(c, s));
-        std::printf("  shadelab run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, ours.back());
-    }
+    const std::vector<double> ours = timedRuns(
+        "shadelab", [&] { return traceOurs(ts, view, o.threads); }, c);
     std::printf("engine %dx%d, %d threads: %llu primary + %llu shadow rays (%llu occluded)\n", o.width, o.height,
                 o.threads, (unsigned long long)c.primary, (unsigned long long)c.hits, (unsigned long long)c.occluded);
     const double oursMedian = median(ours);
     std::printf("shadelab: median of %d: %.2f Mrays/s\n", o.runs, oursMedian);
-    std::vector<double> oursPackets;
     RayCounts cp;
-    for (int r = 0; r < o.runs; ++r) {
-        t0 = Clock::now();
-        cp = traceOurPackets(ts, view, o.threads);
-        const double s = seconds(t0, Clock::now());
-        oursPackets.push_back(mraysPerSecond(cp, s));
-        std::printf("  shadelab packets run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, oursPackets.back());
-    }
+    const std::vector<double> oursPackets = timedRuns(
+        "shadelab packets", [&] { return traceOurPackets(ts, view, o.threads); }, cp);
     if (cp.primary != c.primary || cp.hits != c.hits || cp.occluded != c.occluded) {
         std::fprintf(stderr,
                      "trace_bench: the packets found other hits than single rays (%llu/%llu against %llu/%llu)\n",
@@ -363,28 +363,16 @@ void benchEngine(const Options& o) {
     t0 = Clock::now();
     const EmbreeScene es(scene);
     std::printf("embree %s: built in %.1f ms\n", RTC_VERSION_STRING, 1e3 * seconds(t0, Clock::now()));
-    std::vector<double> theirs;
     RayCounts e;
-    for (int r = 0; r < o.runs; ++r) {
-        t0 = Clock::now();
-        e = traceEmbree(es, scene, ts.epsilon(), view, o.threads);
-        const double s = seconds(t0, Clock::now());
-        theirs.push_back(mraysPerSecond(e, s));
-        std::printf("  embree run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, theirs.back());
-    }
+    const std::vector<double> theirs = timedRuns(
+        "embree", [&] { return traceEmbree(es, scene, ts.epsilon(), view, o.threads); }, e);
     std::printf("embree: %llu primary + %llu shadow rays (%llu occluded)\n", (unsigned long long)e.primary,
                 (unsigned long long)e.hits, (unsigned long long)e.occluded);
     const double embreeMedian = median(theirs);
     std::printf("embree: median of %d: %.2f Mrays/s\n", o.runs, embreeMedian);
     std::printf("ratio shadelab / embree: %.2f (target >= 0.5)\n", oursMedian / embreeMedian);
-    std::vector<double> packets;
-    for (int r = 0; r < o.runs; ++r) {
-        t0 = Clock::now();
-        e = traceEmbree8(es, scene, ts.epsilon(), view, o.threads);
-        const double s = seconds(t0, Clock::now());
-        packets.push_back(mraysPerSecond(e, s));
-        std::printf("  embree packets run %d: %.3f s, %.2f Mrays/s\n", r + 1, s, packets.back());
-    }
+    const std::vector<double> packets = timedRuns(
+        "embree packets", [&] { return traceEmbree8(es, scene, ts.epsilon(), view, o.threads); }, e);
     std::printf(
         "embree packets (rtcIntersect8 / rtcOccluded8): %llu primary + %llu shadow rays (%llu occluded); "
         "median of %d: %.2f Mrays/s\n",
