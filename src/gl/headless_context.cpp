@@ -8,6 +8,7 @@
 #include "util/input_error.h"
 
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 namespace shadelab::gl {
@@ -32,7 +33,9 @@ void finishContextInfo(ContextInfo& info, void* (*getProc)(const char*)) {
     installDebugOutput(getProc);  // Debug and sanitizer builds only; Release leaves the context as it is
 }
 
-std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced, std::vector<std::string>* log) {
+namespace {
+
+GlBackend resolveForced(GlBackend forced) {
     if (forced == GlBackend::Auto) {
         if (const char* env = std::getenv(kGlBackendEnv); env && *env) {
             const std::optional<GlBackend> named = parseGlBackend(env);
@@ -42,6 +45,27 @@ std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced, std::ve
             forced = *named;
         }
     }
+    return forced;
+}
+
+bool gpuDeviceNodePresent() {
+    std::error_code ec;
+    if (std::filesystem::exists("/dev/nvidia0", ec)) return true;
+    for (std::filesystem::directory_iterator it("/dev/dri", ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().filename().string().rfind("renderD", 0) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
+bool softwareContextExpected(GlBackend forced) {
+    if (resolveForced(forced) == GlBackend::OSMesa) return true;
+    if (const char* soft = std::getenv("LIBGL_ALWAYS_SOFTWARE"); soft && *soft && std::string(soft) != "0") return true;
+    return !gpuDeviceNodePresent();
+}
+
+std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced, std::vector<std::string>* log) {
+    forced = resolveForced(forced);
     struct Attempt {
         GlBackend backend;
         std::unique_ptr<HeadlessContext> (*create)();

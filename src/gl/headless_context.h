@@ -62,6 +62,11 @@ protected:
 std::unique_ptr<HeadlessContext> createHeadlessContext(GlBackend forced = GlBackend::Auto,
                                                        std::vector<std::string>* log = nullptr);
 
+// Whether createHeadlessContext(forced) will give Mesa's software rasterizer, judged before creating it and
+// without loading a driver: OSMesa forced, LIBGL_ALWAYS_SOFTWARE set, or no GPU device node (/dev/dri/renderD*,
+// /dev/nvidia0). A guess for choosing set-up work that pays only on the CPU, never for correctness.
+bool softwareContextExpected(GlBackend forced = GlBackend::Auto);
+
 // Backend implementations (egl_context.cpp, osmesa_context.cpp). Each throws std::runtime_error with
 // a short reason on failure and leaves nothing current.
 std::unique_ptr<HeadlessContext> createEglDeviceContext();

@@ -7,6 +7,7 @@
 #include "scene/sample_grid.h"
 #include "scene/scene_load.h"
 #include "trace/accel/mesh_bvh.h"
+#include "util/heap_warmup.h"
 #include "util/input_error.h"
 
 #include <sys/resource.h>
@@ -26,6 +27,10 @@ constexpr uint64_t kProcessBytes = 10 * kMiB;
 // A headless GL context with the rasterizer's programs compiled: a 1x1 raster render without shadow maps
 // peaks at 92 to 107 MiB on llvmpipe (its JIT and its shader cache) before any image is counted.
 constexpr uint64_t kGlContextBytes = 104 * kMiB;
+// Of that, what llvmpipe (Mesa 22.3, LLVM 15) takes from the creating thread's heap while the context starts
+// and its first programs compile: the heap grew 24.5 to 26 MiB beyond the render's images (strace of brk
+// while rendering 2CylinderEngine at three sizes, blocks up to 32 MiB served from the heap).
+constexpr uint64_t kSoftwareContextHeapBytes = 24 * kMiB;
 constexpr uint64_t kTraceBytesPerTriangle =
     128;  // MeshBvh: 8-wide nodes, positions, ids (about 85 kept) and build scratch
 // Spatial splits, on scenes small enough for them, add slots and their pass's scratch: peak RSS of a 2CylinderEngine
@@ -77,6 +82,9 @@ uint64_t requestBytes(const RenderRequest& r, RenderOutput output) {
     if (r.engine == Engine::Both) bytes += pixels * kBothBytesPerPixel;
     return bytes;
 }
+
+// A block's bytes if the heap serves it, else 0.
+uint64_t heapBlock(uint64_t bytes) { return bytes <= kHeapWarmupLargestBlock ? bytes : 0; }
 
 uint64_t triangles(const Scene& scene) {
     uint64_t n = 0;
@@ -198,6 +206,13 @@ std::optional<std::string> memoryProblem(const Scene& scene, const RenderRequest
     return "a " + std::to_string(request.width) + "x" + std::to_string(request.height) + " " +
            toString(request.engine) + " render of this scene needs about " + memoryText(need, true) +
            ", over the limit of " + memoryText(limit);
+}
+
+uint64_t softwareRasterHeapBytes(const RenderRequest& request) {
+    if (!rasterizes(request)) return 0;
+    const uint64_t samples = bandSamples(request);
+    return kSoftwareContextHeapBytes + heapBlock(samples * 12) + heapBlock(samples * 4) +
+           heapBlock(pixelsOf(request) * 3);
 }
 
 std::string memoryText(uint64_t bytes, bool roundUp) {

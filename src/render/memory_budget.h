@@ -46,6 +46,12 @@ uint64_t estimateRenderBytes(const Scene& scene, const RenderRequest& request, R
 std::optional<std::string> memoryProblem(const Scene& scene, const RenderRequest& request,
                                          RenderOutput output = RenderOutput::Png);
 
+// What a raster render of this request allocates from the rendering thread's heap on Mesa's software
+// rasterizer, counting only blocks that a HeapWarmup lets glibc serve from the heap (util/heap_warmup.h): the context's
+// own share and the band's RGB32F colour and depth targets and the 8-bit image. `shadelab render` makes that much ready
+// while the context starts; 0 when the request draws nothing.
+uint64_t softwareRasterHeapBytes(const RenderRequest& request);
+
 // Bytes as the messages give them: whole MiB ("512 MiB", rounded up when `roundUp`), or bytes below 1 MiB.
 std::string memoryText(uint64_t bytes, bool roundUp = false);
 

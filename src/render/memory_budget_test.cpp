@@ -181,3 +181,17 @@ TEST(MemoryBudget, TheDefaultIsHalfOfMemoryWithinTheAddressSpaceLimit) {
     r.maxMemory = 123 * kMiB;
     EXPECT_EQ(render::memoryLimit(r), 123 * kMiB);
 }
+
+// What the CLI warms for a software raster render: the context's share, the colour and depth targets and the
+// 8-bit image; nothing for a trace; and a band's target, not the whole image's, once the image is drawn in bands.
+TEST(MemoryBudget, TheSoftwareRasterHeapIsTheContextTheTargetsAndTheImage) {
+    const uint64_t hd = render::softwareRasterHeapBytes(request(Engine::Raster, 1920, 1080));
+    EXPECT_EQ(hd, 24 * kMiB + uint64_t(1920) * 1080 * (12 + 4 + 3));
+    EXPECT_EQ(render::softwareRasterHeapBytes(request(Engine::Trace, 1920, 1080)), 0u);
+    EXPECT_EQ(render::softwareRasterHeapBytes(request(Engine::Path, 1920, 1080)), 0u);
+    EXPECT_LT(render::softwareRasterHeapBytes(request(Engine::Raster, 320, 180)), hd);
+    // 8K is four-plus bands of about 2 M samples each: the targets stay near 1080p's, the image grows.
+    const uint64_t eightK = render::softwareRasterHeapBytes(request(Engine::Raster, 7680, 4320));
+    EXPECT_LT(eightK, hd + uint64_t(7680) * 4320 * 3);
+    EXPECT_GT(eightK, uint64_t(7680) * 4320 * 3);
+}
