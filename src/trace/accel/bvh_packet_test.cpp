@@ -70,6 +70,44 @@ std::vector<Ray> packetRays(const std::vector<SceneTri>& tris, const Bounds& b, 
 // Bounds cut short on some rays: 0 (nothing), a fraction of the way, open.
 float boundOf(size_t i) { return i % 5 == 0 ? INFINITY : i % 7 == 0 ? 0.0f : 0.05f * float(i % 40); }
 
+// Each packet of `rays` (every third one partial) against the single-ray walks, with the negative control.
+void expectPacketsMatchSingleRays(const MeshBvh& bvh, const std::vector<Ray>& rays) {
+    size_t hits = 0, occluded = 0, badClosest = 0, badAny = 0, control = 0;
+    for (size_t first = 0; first + 8 <= rays.size(); first += 8) {
+        // Whole packets, and every third one partial (some lanes not asked).
+        const unsigned valid = (first / 8) % 3 == 2 ? 0xB5u : 0xFFu;
+        float tMax[8];
+        for (int k = 0; k < 8; ++k) tMax[k] = boundOf(first + size_t(k));
+        MeshHit out[8];
+        const unsigned found = bvh.closestHit8(&rays[first], tMax, valid, out);
+        const unsigned blocked = bvh.anyHit8(&rays[first], tMax, valid);
+        for (int k = 0; k < 8; ++k) {
+            const Ray& ray = rays[first + size_t(k)];
+            const bool asked = (valid >> k) & 1;
+            const std::optional<MeshHit> single = bvh.closestHit(ray, tMax[k]);
+            const std::optional<MeshHit> packet =
+                asked && (found >> k) & 1 ? std::optional<MeshHit>(out[k]) : std::nullopt;
+            if (!asked) {
+                badClosest += (found >> k) & 1;
+                badAny += (blocked >> k) & 1;
+                continue;
+            }
+            hits += single.has_value();
+            occluded += (blocked >> k) & 1;
+            const bool same = sameHit(bvh, single, packet);
+            badClosest += !same;
+            if (!same) ADD_FAILURE() << describe(first + size_t(k), ray) << " closest hit differs";
+            badAny += bvh.anyHit(ray, tMax[k]) != bool((blocked >> k) & 1);
+            if (packet) control += !sameHit(bvh, bvh.closestHit(ray, std::nextafter(packet->t, 0.0f)), packet);
+        }
+    }
+    std::printf("%s: %zu rays, %zu hits, %zu occluded\n", bvhIsaName(defaultBvhIsa()), rays.size(), hits, occluded);
+    EXPECT_GT(hits, rays.size() / 8) << "too few hits to test anything";
+    EXPECT_EQ(badClosest, 0u);
+    EXPECT_EQ(badAny, 0u);
+    EXPECT_EQ(control, hits) << "the comparison cannot see a changed hit";
+}
+
 TEST(BvhPacket, EightRaysAtOnceFindTheirOwnHitsBitForBit) {
     std::vector<Scene> scenes;
     scenes.push_back(soupScene(20000, 77u));
@@ -77,40 +115,46 @@ TEST(BvhPacket, EightRaysAtOnceFindTheirOwnHitsBitForBit) {
     if (std::filesystem::exists(path)) scenes.push_back(loadScene(path));
     for (const Scene& sc : scenes) {
         const MeshBvh bvh(sc);
-        const std::vector<Ray> rays = packetRays(sceneTriangles(sc), bvh.bounds(), 5u);
-        size_t hits = 0, occluded = 0, badClosest = 0, badAny = 0, control = 0;
-        for (size_t first = 0; first + 8 <= rays.size(); first += 8) {
-            // Whole packets, and every third one partial (some lanes not asked).
-            const unsigned valid = (first / 8) % 3 == 2 ? 0xB5u : 0xFFu;
-            float tMax[8];
-            for (int k = 0; k < 8; ++k) tMax[k] = boundOf(first + size_t(k));
-            MeshHit out[8];
-            const unsigned found = bvh.closestHit8(&rays[first], tMax, valid, out);
-            const unsigned blocked = bvh.anyHit8(&rays[first], tMax, valid);
-            for (int k = 0; k < 8; ++k) {
-                const Ray& ray = rays[first + size_t(k)];
-                const bool asked = (valid >> k) & 1;
-                const std::optional<MeshHit> single = bvh.closestHit(ray, tMax[k]);
-                const std::optional<MeshHit> packet =
-                    asked && (found >> k) & 1 ? std::optional<MeshHit>(out[k]) : std::nullopt;
-                if (!asked) {
-                    badClosest += (found >> k) & 1;
-                    badAny += (blocked >> k) & 1;
-                    continue;
-                }
-                hits += single.has_value();
-                occluded += (blocked >> k) & 1;
-                badClosest += !sameHit(bvh, single, packet);
-                badAny += bvh.anyHit(ray, tMax[k]) != bool((blocked >> k) & 1);
-                if (packet) control += !sameHit(bvh, bvh.closestHit(ray, std::nextafter(packet->t, 0.0f)), packet);
-            }
-        }
-        std::printf("%s: %zu rays, %zu hits, %zu occluded\n", bvhIsaName(defaultBvhIsa()), rays.size(), hits, occluded);
-        EXPECT_GT(hits, rays.size() / 8) << "too few hits to test anything";
-        EXPECT_EQ(badClosest, 0u);
-        EXPECT_EQ(badAny, 0u);
-        EXPECT_EQ(control, hits) << "the comparison cannot see a changed hit";
+        expectPacketsMatchSingleRays(bvh, packetRays(sceneTriangles(sc), bvh.bounds(), 5u));
     }
+}
+
+// A grid of 0.1-unit squares, two triangles each, and packets whose rays all reach the same few leaves (so the
+// leaf is tested once for the packet) straight down onto vertices, edges and the squares' diagonals, where an edge
+// function is exactly 0 and a ray must leave the packet's leaf test for its own: mixed with rays inside the
+// triangles, tilted ones, and rays that start below the grid (no hit).
+TEST(BvhPacket, RaysThroughEdgesAndCornersLeaveThePacketsLeafTest) {
+    Scene sc;
+    sc.meshes.push_back(Mesh{});
+    MeshGeometry g;
+    constexpr int kN = 12;
+    for (int j = 0; j <= kN; ++j)
+        for (int i = 0; i <= kN; ++i) g.positions.push_back(glm::vec3(0.1f * float(i), 0.1f * float(j), 0.0f));
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const uint32_t a = uint32_t(j * (kN + 1) + i), b = a + 1, c = a + kN + 1, d = c + 1;
+            for (uint32_t v : {a, b, d, a, d, c}) g.indices.push_back(v);
+        }
+    sc.meshes[0].parts.push_back(MeshPart{shareGeometry(std::move(g)), Material{}});
+    const MeshBvh bvh(sc);
+    std::vector<Ray> rays;
+    const float offsets[8][2] = {{0, 0},         {0.5f, 0},      {0, 0.5f}, {0.5f, 0.5f},
+                                 {0.25f, 0.75f}, {0.75f, 0.25f}, {1, 1},    {1, 0.5f}};
+    for (int j = 1; j < kN - 1; ++j)
+        for (int i = 1; i < kN - 1; ++i)
+            for (int variant = 0; variant < 3; ++variant)
+                for (const auto& o : offsets) {
+                    // On the grid's own float coordinates: vertices, edge midpoints, the diagonal.
+                    const glm::vec3 at(0.1f * (float(i) + o[0]), 0.1f * (float(j) + o[1]), 1.0f);
+                    const glm::vec3 dir = variant == 0   ? glm::vec3(0, 0, -1)
+                                          : variant == 1 ? glm::vec3(0.001f * o[0], -0.002f * o[1], -1)
+                                                         : glm::vec3(0, 0, 1);  // away from the grid
+                    rays.push_back(Ray{variant == 1 ? at
+                                                    : glm::vec3(0.1f * float(i), 0.1f * float(j), 1.0f) +
+                                                          glm::vec3(0.1f * o[0], 0.1f * o[1], 0.0f),
+                                       dir});
+                }
+    expectPacketsMatchSingleRays(bvh, rays);
 }
 
 // The whole scene's packets: spheres, a plane and triangles, with the ties between kinds that intersect() settles.
