@@ -188,16 +188,23 @@ void walkPacket(const BvhNode* nodes, const PacketRay8& r, const Frustum8* frust
     }
 }
 
-// The packet's lanes: the rays of `valid` that can walk together (bit k), their box-test constants in `r`, all
-// eight lanes at once: reciprocals() and makeBoxRay8's nudged products, lane for lane the same operations. The
-// rays whose products overflow (hitsExact8's case) are left to the caller.
-inline unsigned makePacket(const Ray* rays, unsigned valid, PacketRay8& r) {
-    alignas(32) float lanes[6][8] = {};  // ox oy oz dx dy dz of each ray
+// The rays of `valid` as rows of lanes: ox oy oz dx dy dz, lane k ray k, zeros elsewhere (stored as six vectors:
+// an initialiser compiled to a `rep stos`, whose start-up cost showed in the packet's profile).
+inline void gatherLanes(const Ray* rays, unsigned valid, float (*lanes)[8]) {
+    for (int row = 0; row < 6; ++row) _mm256_store_ps(lanes[row], _mm256_setzero_ps());
     for (unsigned v = valid & 0xFFu; v; v &= v - 1) {
         const int k = __builtin_ctz(v);
         lanes[0][k] = rays[k].origin.x, lanes[1][k] = rays[k].origin.y, lanes[2][k] = rays[k].origin.z;
         lanes[3][k] = rays[k].dir.x, lanes[4][k] = rays[k].dir.y, lanes[5][k] = rays[k].dir.z;
     }
+}
+
+// The packet's lanes: the rays of `valid` that can walk together (bit k), their box-test constants in `r`, all
+// eight lanes at once: reciprocals() and makeBoxRay8's nudged products, lane for lane the same operations. The
+// rays whose products overflow (hitsExact8's case) are left to the caller.
+inline unsigned makePacket(const Ray* rays, unsigned valid, PacketRay8& r) {
+    alignas(32) float lanes[6][8];  // ox oy oz dx dy dz of each ray
+    gatherLanes(rays, valid, lanes);
     const __m256 signBit = _mm256_set1_ps(-0.0f);
     __m256 finite = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
     for (int a = 0; a < 3; ++a) {
@@ -225,8 +232,10 @@ inline unsigned makePacket(const Ray* rays, unsigned valid, PacketRay8& r) {
 // model on a background reach none).
 struct PacketLeafRays {
     const Ray* rays;
-    LeafRay4 leaf[8];
     unsigned made = 0;
+    LeafRay4 leaf[8];  // lane k valid where bit k of `made` is: left uninitialised, not zeroed per packet
+
+    explicit PacketLeafRays(const Ray* r) : rays(r) {}
 
     const LeafRay4& operator[](int k) {
         if (!((made >> k) & 1)) {
@@ -255,12 +264,8 @@ struct PacketLeaf8 {
 
 // False when the rays of `packet` do not share their axis order.
 inline bool makePacketLeaf(const Ray* rays, unsigned packet, PacketLeaf8& p) {
-    alignas(32) float lanes[6][8] = {};  // ox oy oz dx dy dz of each ray
-    for (unsigned v = packet; v; v &= v - 1) {
-        const int k = __builtin_ctz(v);
-        lanes[0][k] = rays[k].origin.x, lanes[1][k] = rays[k].origin.y, lanes[2][k] = rays[k].origin.z;
-        lanes[3][k] = rays[k].dir.x, lanes[4][k] = rays[k].dir.y, lanes[5][k] = rays[k].dir.z;
-    }
+    alignas(32) float lanes[6][8];  // ox oy oz dx dy dz of each ray
+    gatherLanes(rays, packet, lanes);
     const __m256 signBit = _mm256_set1_ps(-0.0f);
     const __m256 d[3] = {_mm256_load_ps(lanes[3]), _mm256_load_ps(lanes[4]), _mm256_load_ps(lanes[5])};
     const __m256 ax = _mm256_andnot_ps(signBit, d[0]), ay = _mm256_andnot_ps(signBit, d[1]),
@@ -457,7 +462,7 @@ void closestTriangle8Avx2(const BvhNode* nodes, const Ray* rays, unsigned valid,
         closestTriangleAvx2(nodes, rays[k], data, best[k]);
     }
     if (!packet) return;
-    PacketLeafRays leaf{rays, {}, 0};
+    PacketLeafRays leaf(rays);
     alignas(32) float bound[8], t[8];
     for (int k = 0; k < 8; ++k) bound[k] = t[k] = (packet >> k) & 1 ? best[k].t : -INFINITY;
     unsigned live = packet;
@@ -482,7 +487,7 @@ unsigned anyTriangle8Avx2(const BvhNode* nodes, const Ray* rays, const float* tM
         if (anyTriangleAvx2(nodes, rays[k], data, tMax[k])) occluded |= 1u << k;
     }
     if (!packet) return occluded;
-    PacketLeafRays leaf{rays, {}, 0};
+    PacketLeafRays leaf(rays);
     alignas(32) float t[8];
     for (int k = 0; k < 8; ++k) t[k] = (packet >> k) & 1 ? tMax[k] : -INFINITY;
     unsigned live = packet;
