@@ -47,9 +47,10 @@ public:
     HeapWarmup& operator=(const HeapWarmup&) = delete;
 
 private:
-    size_t bytes_ = 0;  // reserved, or 0 when the warm-up declined
-    uintptr_t begin_ = 0, end_ = 0;
-    std::atomic<bool> started_{false};
+    // Unused where the warm-up is not built (no glibc: the web build).
+    [[maybe_unused]] size_t bytes_ = 0;  // reserved, or 0 when the warm-up declined
+    [[maybe_unused]] uintptr_t begin_ = 0, end_ = 0;
+    [[maybe_unused]] std::atomic<bool> started_{false};
     std::thread helper_;
 };
 
