@@ -136,8 +136,8 @@ void binPrims(const BvhPrim* prims, uint32_t n, const Grid& g, Bins& out) {
 
 class Builder {
 public:
-    Builder(std::vector<BvhPrim>& prims, const BvhBuildOptions& o, int threads)
-        : prims_(prims.data()),
+    Builder(BvhPrim* prims, const BvhBuildOptions& o, int threads)
+        : prims_(prims),
           threads_(threads),
           bins_(std::min(std::max(o.bins, 2), kMaxBins)),
           maxLeaf_(uint32_t(std::min(std::max(o.maxLeafSize, 1), int(kMaxLeafCount)))),
@@ -452,13 +452,17 @@ private:
 
 }  // namespace
 
-Bvh buildBvh(std::vector<BvhPrim>& prims, const BvhBuildOptions& options) {
-    if (prims.empty()) return Bvh{};
-    SHADELAB_CHECK_LT(prims.size(), size_t(kMaxBvhPrimitives));
+Bvh buildBvh(BvhPrim* prims, size_t count, const BvhBuildOptions& options) {
+    if (count == 0) return Bvh{};
+    SHADELAB_CHECK_LT(count, size_t(kMaxBvhPrimitives));
     int threads = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());
     threads = std::max(1, std::min(threads, 64));
-    if (prims.size() < kMinQueuedBuild) threads = 1;
-    return Builder(prims, options, threads).build(uint32_t(prims.size()));
+    if (count < kMinQueuedBuild) threads = 1;
+    return Builder(prims, options, threads).build(uint32_t(count));
+}
+
+Bvh buildBvh(std::vector<BvhPrim>& prims, const BvhBuildOptions& options) {
+    return buildBvh(prims.data(), prims.size(), options);
 }
 
 Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options) {

@@ -104,6 +104,8 @@ struct Bvh {
 // Builds over `prims` (boxes not empty, fewer than kMaxBvhPrimitives) and reorders them into leaf order:
 // afterwards prims[k] is the primitive at leaf slot k. An empty input gives an empty Bvh.
 Bvh buildBvh(std::vector<BvhPrim>& prims, const BvhBuildOptions& options = {});
+// The same on an array of `count` references that the caller owns (reordered in place).
+Bvh buildBvh(BvhPrim* prims, size_t count, const BvhBuildOptions& options = {});
 // The same over plain boxes (one per primitive); fills Bvh::order.
 Bvh buildBvh(const std::vector<Bounds>& boxes, const BvhBuildOptions& options = {});
 

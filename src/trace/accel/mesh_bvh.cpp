@@ -61,7 +61,9 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
         kept[size_t(r) + 1] = count;
     });
     for (int r = 0; r < threads; ++r) kept[size_t(r) + 1] += kept[size_t(r)];
-    std::vector<BvhPrim> prims(kept[size_t(threads)]);
+    // On huge pages and sized without a zero fill (aligned_allocators.h): the ranges below write every element,
+    // each thread's pages first touched by that thread.
+    std::vector<BvhPrim, HugePageAllocator<BvhPrim>> prims(kept[size_t(threads)]);
     std::vector<Bounds> rangeBounds(static_cast<size_t>(threads));
     forRanges(total, threads, [&](int r, uint32_t begin, uint32_t end) {
         BvhPrim* out = prims.data() + kept[size_t(r)];
@@ -92,8 +94,10 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
             const MeshGeometry& g = *geometry_[ref.id2];
             for (size_t k = 0; k < 3; ++k) c[k] = g.positions[g.indices[3 * size_t(ref.id) + k]];
         };
-        prims = spatialSplitReferences(std::move(prims), corners,
-                                       SpatialSplitOptions{options.spatialSplitBudget, 1e-5f, pad, threads});
+        const std::vector<BvhPrim> split =
+            spatialSplitReferences(std::vector<BvhPrim>(prims.begin(), prims.end()), corners,
+                                   SpatialSplitOptions{options.spatialSplitBudget, 1e-5f, pad, threads});
+        prims.assign(split.begin(), split.end());
     }
     for (BvhPrim& b : prims)
         for (int a = 0; a < 3; ++a) {
@@ -104,7 +108,7 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     bounds_.hi += glm::vec3(pad);
     BvhBuildOptions leafOptions = options;
     leafOptions.maxLeafSize = std::min(options.maxLeafSize, int(kMaxMeshLeafSize));
-    bvh_ = buildBvh(prims, leafOptions);
+    bvh_ = buildBvh(prims.data(), prims.size(), leafOptions);
 
     // Store what the traversal and shading read in leaf order, so a leaf's triangles are contiguous in memory;
     // normals stay in the scene's geometry (interpolatedNormal reads them through the part). The ids first,
@@ -118,7 +122,7 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
             source_[slot] = partFirst_[prims[slot].id2] + prims[slot].id;
         }
     });
-    std::vector<BvhPrim>().swap(prims);
+    decltype(prims)().swap(prims);
     // Each slot's place in its leaf, from the leaf references, then the positions by leaf (leaf_positions.h).
     lane_.resize(n);
     for (const BvhNode& node : bvh_.nodes)
@@ -126,7 +130,9 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
             if (isLeafRef(ref))
                 for (uint32_t j = 0; j < leafCount(ref); ++j)
                     lane_[leafFirst(ref) + j] = uint8_t(j << 4 | leafCount(ref));
-    positions_.assign(9 * size_t(n) + kLeafRowPadding, 0.0f);
+    // Every slot writes its nine floats below; only the padding is set here (no zero fill of the whole array).
+    positions_.resize(9 * size_t(n) + kLeafRowPadding);
+    std::fill(positions_.end() - ptrdiff_t(kLeafRowPadding), positions_.end(), 0.0f);
     forRanges(n, threads, [&](int, uint32_t begin, uint32_t end) {
         for (uint32_t slot = begin; slot < end; ++slot) {
             const MeshGeometry& g = *geometry_[part_[slot]];
