@@ -29,7 +29,7 @@ constexpr uint64_t kProcessBytes = 10 * kMiB;
 constexpr uint64_t kGlContextBytes = 104 * kMiB;
 // Of that, what llvmpipe (Mesa 22.3, LLVM 15) takes from the creating thread's heap while the context starts
 // and its first programs compile: the heap grew 24.5 to 26 MiB beyond the render's images (strace of brk
-// while rendering 2CylinderEngine at three sizes, blocks up to 32 MiB served from the heap).
+// while rendering 2CylinderEngine at three sizes, with HeapWarmup's malloc settings).
 constexpr uint64_t kSoftwareContextHeapBytes = 24 * kMiB;
 constexpr uint64_t kTraceBytesPerTriangle =
     128;  // MeshBvh: 8-wide nodes, positions, ids (about 85 kept) and build scratch

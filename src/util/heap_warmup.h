@@ -8,14 +8,14 @@
 // idle through the 100 ms of GL context creation just before.
 //
 // What it does: glibc's malloc is told to serve blocks up to kHeapWarmupLargestBlock from the heap instead of
-// fresh mappings, and to keep freed heap memory (M_MMAP_THRESHOLD, M_TRIM_THRESHOLD); a block of
-// `bytes` is allocated and freed at once, so that the heap's top holds that much untouched address space, and
-// transparent huge pages are asked for over it; populate() then has a helper thread fault it all in at once
+// fresh mappings, and to keep freed heap memory (M_MMAP_THRESHOLD, M_TRIM_THRESHOLD); a block of `bytes` is
+// allocated and freed at once, so that the heap's top holds that much untouched address space, and transparent
+// huge pages are asked for over it; populate() then has a helper thread fault it all in at once
 // (MADV_POPULATE_WRITE). The thread's later allocations are carved from pages that are already there.
 // Reserving costs no memory; populating makes the range resident, so the caller populates only once it knows
-// the work will go ahead (the scene has loaded), and a refused input never costs the warmed memory. Everything is
-// advice: where the kernel or the C library declines (no glibc, an older kernel, huge pages off), allocations behave as
-// before.
+// the work will go ahead (the scene has loaded), and a refused input never costs the warmed memory. Everything
+// is advice: where the kernel or the C library declines (no glibc, an older kernel, huge pages off),
+// allocations behave as before.
 //
 // Process-wide and not undone (the malloc settings stay), so for one-shot commands only, never a library call;
 // and `bytes` should not exceed what the process will allocate, because populated pages count as resident.

@@ -94,6 +94,7 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
             const MeshGeometry& g = *geometry_[ref.id2];
             for (size_t k = 0; k < 3; ++k) c[k] = g.positions[g.indices[3 * size_t(ref.id) + k]];
         };
+        // The pass works on plain vectors; the two copies are of scenes of at most kMaxSpatialSplitTriangles.
         const std::vector<BvhPrim> split =
             spatialSplitReferences(std::vector<BvhPrim>(prims.begin(), prims.end()), corners,
                                    SpatialSplitOptions{options.spatialSplitBudget, 1e-5f, pad, threads});
