@@ -12,6 +12,7 @@
 #include "probe/probe.h"
 #include "probe/rendering_equation.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -111,8 +112,13 @@ struct PanelContext {
 };
 
 // The left side panel, filling (0, 0, width, height) of the window.
-// `overlay`: it lies over the image (projector mode), so its background is translucent.
+// `overlay`: it lies over the image (projector mode), so its background is translucent. Beside the image
+// Dear ImGui draws no background for it: the viewer clears the panel's rectangle to sidePanelBackground()
+// first, the same colour in one clear instead of a blended quad of the panel's size every frame.
 void drawSidePanel(PanelContext& ctx, float width, float height, bool overlay);
+// The docked panel's background as Dear ImGui would blend it (the style's WindowBg, with its alpha) over
+// `under`, the window's clear colour: linear RGB, 0..1.
+std::array<float, 3> sidePanelBackground(const std::array<float, 3>& under);
 // Sections of the side panel.
 void drawSceneSection(PanelContext& ctx);
 void drawLightingSection(PanelContext& ctx);

@@ -311,13 +311,25 @@ void Viewer::compose() {
     // The image pass covers its rectangle; clear only what it leaves (a whole-window clear costs ~1 ms).
     const bool letterboxed = layout_.fbRect.y > 0 || layout_.fbRect.height < shape_.fbHeight ||
                              layout_.fbRect.x + layout_.fbRect.width < shape_.fbWidth;
-    glClearColor(0.09f, 0.09f, 0.10f, 1.0f);
+    const std::array<float, 3> clear = {0.09f, 0.09f, 0.10f};
+    // The docked side panel's background is this clear's too (drawSidePanel leaves it out).
+    const int panelPixels =
+        layout_.panelOverlays ? 0 : std::min(int(std::lround(layout_.panelWidth * layout_.fbScale)), shape_.fbWidth);
+    glClearColor(clear[0], clear[1], clear[2], 1.0f);
     if (letterboxed) {
         glDisable(GL_SCISSOR_TEST);
         glClear(GL_COLOR_BUFFER_BIT);
-    } else if (layout_.fbRect.x > 0) {
+    } else if (layout_.fbRect.x > panelPixels) {
         glEnable(GL_SCISSOR_TEST);
-        glScissor(0, 0, layout_.fbRect.x, shape_.fbHeight);
+        glScissor(panelPixels, 0, layout_.fbRect.x - panelPixels, shape_.fbHeight);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+    }
+    if (panelPixels > 0) {
+        const std::array<float, 3> bg = sidePanelBackground(clear);
+        glClearColor(bg[0], bg[1], bg[2], 1.0f);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, panelPixels, shape_.fbHeight);
         glClear(GL_COLOR_BUFFER_BIT);
         glDisable(GL_SCISSOR_TEST);
     }
