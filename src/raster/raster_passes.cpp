@@ -3,6 +3,7 @@
 #include "raster/raster_renderer.h"
 
 #include "raster/frame_block.h"
+#include "raster/plane_footprint.h"
 #include "scene/coverage.h"
 #include "shading/local_illumination.h"
 
@@ -149,13 +150,19 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     }
     glDisable(GL_CULL_FACE);
 
-    // Planes last, over the whole viewport: plane.frag casts the ray and writes the exact hit's depth, as the
-    // spheres' shader does.
+    // Planes last, over the part of the viewport where rays can hit them: plane.frag casts the ray and writes the
+    // exact hit's depth, as the spheres' shader does.
     glBindVertexArray(geometry_.emptyVao.id());
     const glm::vec3 eye(frame.eye);
+    GLint viewport[4] = {0, 0, 0, 0};
+    if (!scene.planes.empty()) glGetIntegerv(GL_VIEWPORT, viewport);
+    const PlaneCamera camera{eye, glm::vec3(frame.forward), glm::vec3(frame.right), glm::vec3(frame.up),
+                             frame.viewport};
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         if (int(i) == options.skipPlane || skipped(planeCoverageId(scene, i))) continue;  // a mirror: not itself
         const Plane& p = scene.planes[i];
+        const PlaneFootprint footprint = planeFootprint(camera, viewport[2], viewport[3], p.normal, p.offset);
+        if (footprint.count == 0) continue;  // every ray misses it
         const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
         const gl::Program& planeProgram =
             programs_.of(p.material).get(mirror >= 0 ? ColorPrograms::PlaneMirror : ColorPrograms::Plane);
@@ -182,7 +189,8 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         planeProgram.set("u_md2", md2);
         planeProgram.set("u_baseColor2", c.md2);
         planeProgram.set("u_checkerSize", c.size);
-        glDrawArrays(GL_TRIANGLES, 0, 3);  // the viewport (plane.vert); plane.frag finds the hit
+        planeProgram.set("u_planeFan", footprint.corners, 5, gl::Program::Uniform::Required);
+        glDrawArrays(GL_TRIANGLES, 0, 3 * (footprint.count - 2));  // the fan (plane.vert); plane.frag finds the hit
     }
 
     // alphaMode BLEND (docs/gltf-import.md): over everything opaque, farthest part first by its bounds'
