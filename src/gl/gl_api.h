@@ -103,7 +103,6 @@ void checkError(const char* what);
 #define glUniform1ui shadelab_glUniform1ui
 #define glUniform1f shadelab_glUniform1f
 #define glUniform2f shadelab_glUniform2f
-#define glUniform2fv shadelab_glUniform2fv
 #define glUniform3f shadelab_glUniform3f
 #define glUniform3fv shadelab_glUniform3fv
 #define glUniform4iv shadelab_glUniform4iv

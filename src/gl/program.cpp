@@ -144,9 +144,6 @@ void Program::set(const char* name, const glm::mat4& v, Uniform need) const {
 void Program::set(const char* name, const glm::ivec4* v, int count, Uniform need) const {
     glUniform4iv(location(name, need), count, glm::value_ptr(v[0]));
 }
-void Program::set(const char* name, const glm::vec2* v, int count, Uniform need) const {
-    glUniform2fv(location(name, need), count, glm::value_ptr(v[0]));
-}
 void Program::set(const char* name, const glm::vec4* v, int count, Uniform need) const {
     glUniform4fv(location(name, need), count, glm::value_ptr(v[0]));
 }

@@ -37,9 +37,8 @@ public:
     void set(const char* name, const glm::vec3& v, Uniform need = Uniform::Optional) const;
     void set(const char* name, const glm::vec4& v, Uniform need = Uniform::Optional) const;
     void set(const char* name, const glm::mat4& v, Uniform need = Uniform::Optional) const;
-    // Arrays of `count` elements from `v` (uniform ivec4/vec2/vec4 name[count]).
+    // Arrays of `count` elements from `v` (uniform ivec4/vec4 name[count]).
     void set(const char* name, const glm::ivec4* v, int count, Uniform need = Uniform::Optional) const;
-    void set(const char* name, const glm::vec2* v, int count, Uniform need = Uniform::Optional) const;
     void set(const char* name, const glm::vec4* v, int count, Uniform need = Uniform::Optional) const;
     // A sampler uniform: the texture unit it reads (glUniform1i; a sampler set with glUniform1ui is a GL error).
     void setSampler(const char* name, GLuint unit, Uniform need = Uniform::Optional) const;

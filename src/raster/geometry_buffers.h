@@ -1,6 +1,7 @@
 // GeometryBuffers: the GL buffers RasterRenderer's passes draw from. Every mesh part's vertices and rebased
 // indices in one vertex array (uploadMeshes, raster_uploads.cpp) with the ranges that say where each part is,
-// the unit cube the impostors are drawn as, and an empty vertex array for full-screen passes.
+// the unit cube the impostors are drawn as, the planes' footprints, and an empty vertex array for full-screen
+// passes.
 #pragma once
 
 #include "gl/objects.h"
@@ -18,6 +19,8 @@ struct GeometryBuffers {
     uint64_t generation = 0;        // bumped by every mesh upload
     gl::VertexArray cubeVao;
     gl::Buffer cubeVbo;
+    gl::VertexArray planeVao;  // a plane's footprint triangles (plane_footprint.h), rewritten for every plane drawn
+    gl::Buffer planeVbo;
     gl::VertexArray emptyVao;
 };
 

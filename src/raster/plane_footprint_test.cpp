@@ -1,6 +1,7 @@
 // planeFootprint: every pixel whose ray (the shaders' own cameraRayDirection and intersectPlane, compiled as
 // C++) hits the plane lies inside the polygon, over many cameras, planes, bands and jitters; and the polygon
-// leaves out the sky where there is one.
+// leaves out the sky where there is one. sphereHole: every pixel in a hole sees the sphere, nearer than the
+// plane. footprintTriangles: they cover the footprint less the holes, and nothing in the holes.
 #include "raster/plane_footprint.h"
 
 #include "shading/lighting.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
 namespace shadelab::raster {
@@ -60,8 +62,43 @@ PlaneCamera lookAt(glm::vec3 eye, glm::vec3 target, float fovY, int width, int h
     c.forward =
         f + (2.0f * jitter.x / float(width)) * t * aspect * c.right - (2.0f * jitter.y / float(height)) * t * c.up;
     c.viewport = glm::vec4(float(width), float(height), t, 0.0f);
+    c.viewProj = glm::perspective(fovY, aspect, 0.1f, 1000.0f) * glm::lookAt(eye, eye + f, c.up);
     return c;
 }
+
+// Whether point q (normalised device coordinates) lies in one of the triangles.
+bool covered(const std::vector<glm::vec2>& tris, glm::vec2 q) {
+    for (size_t k = 0; k + 2 < tris.size(); k += 3) {
+        const glm::vec2 a = tris[k], b = tris[k + 1], c = tris[k + 2];
+        const float d0 = (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x);
+        const float d1 = (c.x - b.x) * (q.y - b.y) - (c.y - b.y) * (q.x - b.x);
+        const float d2 = (a.x - c.x) * (q.y - c.y) - (a.y - c.y) * (q.x - c.x);
+        if ((d0 >= 0.0f && d1 >= 0.0f && d2 >= 0.0f) || (d0 <= 0.0f && d1 <= 0.0f && d2 <= 0.0f)) return true;
+    }
+    return false;
+}
+
+// Whether q lies in the hole (counter-clockwise, convex).
+bool inHole(const FootprintHole& h, glm::vec2 q) {
+    if (h.count < 3) return false;
+    for (int k = 0; k < h.count; ++k) {
+        const glm::vec2 a = h.corners[k], b = h.corners[(k + 1) % h.count];
+        if ((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x) < 0.0f) return false;
+    }
+    return true;
+}
+
+// The default scene's camera, floor and five spheres at w x h.
+struct DefaultScene {
+    int w = 160, h = 90;
+    PlaneCamera camera = lookAt({0.0f, 2.5f, 9.0f}, {0.0f, 0.7f, 0.0f}, glm::radians(35.0f), 160, 90);
+    glm::vec3 n{0.0f, 1.0f, 0.0f};
+    glm::vec4 spheres[5] = {{-3.0f, 0.8f, 0.5f, 0.8f},
+                            {-1.4f, 0.6f, 1.8f, 0.6f},
+                            {0.2f, 1.0f, -0.6f, 1.0f},
+                            {1.8f, 0.7f, 1.3f, 0.7f},
+                            {3.3f, 0.9f, -0.4f, 0.9f}};
+};
 
 TEST(PlaneFootprint, TheDefaultViewLeavesOutTheSkyAndKeepsEveryFloorPixel) {
     const int w = 128, h = 72;
@@ -109,6 +146,113 @@ TEST(PlaneFootprint, RandomCamerasPlanesBandsAndJittersMissNoHit) {
         shrunk += k.covered < k.pixels;
     }
     EXPECT_GT(shrunk, 50);  // the footprint is often smaller than the viewport
+}
+
+TEST(PlaneFootprint, EveryPixelInASphereHoleSeesTheSphereBeforeThePlane) {
+    const DefaultScene d;
+    const PlaneFootprint f = planeFootprint(d.camera, d.w, d.h, d.n, 0.0f);
+    int holes = 0, holePixels = 0;
+    for (const glm::vec4& s : d.spheres) {
+        // The default scene's spheres rest on the floor (touching it); lifted a little, too.
+        const glm::vec3 centre = glm::vec3(s) + glm::vec3(0.0f, (&s - d.spheres) % 2 == 0 ? 0.0f : 0.05f, 0.0f);
+        const FootprintHole hole = sphereHole(d.camera, d.w, d.h, d.n, 0.0f, centre, s.w, f);
+        holes += hole.count > 0;
+        for (int y = 0; y < d.h; ++y)
+            for (int x = 0; x < d.w; ++x) {
+                const float fx = float(x) + 0.5f, fy = float(y) + 0.5f;
+                if (!inHole(hole, {2.0f * fx / float(d.w) - 1.0f, 2.0f * fy / float(d.h) - 1.0f})) continue;
+                ++holePixels;
+                const PlaneCamera& c = d.camera;
+                const glm::vec3 dir = shading::cameraRayDirection(c.forward, c.right, c.up, c.viewport.z, c.viewport.x,
+                                                                  c.viewport.y, fx, c.viewport.y - fy);
+                const float ts = shading::intersectSphere(c.eye, dir, centre, s.w, 0.0f);
+                const float tp = shading::intersectPlane(c.eye, dir, d.n, 0.0f, 0.0f);
+                ASSERT_GT(ts, 0.0f) << x << "," << y;
+                ASSERT_TRUE(tp < 0.0f || ts < tp) << x << "," << y;
+            }
+    }
+    EXPECT_EQ(holes, 5);
+    EXPECT_GT(holePixels, 1000);
+}
+
+TEST(PlaneFootprint, AHoleDrawnOutsideTheSilhouetteIsCaught) {
+    // Negative control for the test above: the octagon moved outward instead of inward covers misses.
+    const DefaultScene d;
+    const PlaneFootprint f = planeFootprint(d.camera, d.w, d.h, d.n, 0.0f);
+    const glm::vec3 centre(0.2f, 1.05f, -0.6f);
+    FootprintHole hole = sphereHole(d.camera, d.w, d.h, d.n, 0.0f, centre, 1.0f, f, 0.5f);
+    ASSERT_EQ(hole.count, 8);
+    glm::vec2 g(0.0f);
+    for (int k = 0; k < 8; ++k) g += hole.corners[k] / 8.0f;
+    for (int k = 0; k < 8; ++k) hole.corners[k] = g + 1.2f * (hole.corners[k] - g);
+    int misses = 0;
+    for (int y = 0; y < d.h; ++y)
+        for (int x = 0; x < d.w; ++x) {
+            const float fx = float(x) + 0.5f, fy = float(y) + 0.5f;
+            if (!inHole(hole, {2.0f * fx / float(d.w) - 1.0f, 2.0f * fy / float(d.h) - 1.0f})) continue;
+            const PlaneCamera& c = d.camera;
+            const glm::vec3 dir = shading::cameraRayDirection(c.forward, c.right, c.up, c.viewport.z, c.viewport.x,
+                                                              c.viewport.y, fx, c.viewport.y - fy);
+            misses += shading::intersectSphere(c.eye, dir, centre, 1.0f, 0.0f) < 0.0f;
+        }
+    EXPECT_GT(misses, 0);
+}
+
+TEST(PlaneFootprint, NoHoleWhereTheSphereCrossesThePlaneOrHoldsTheEye) {
+    const DefaultScene d;
+    const PlaneFootprint f = planeFootprint(d.camera, d.w, d.h, d.n, 0.0f);
+    EXPECT_EQ(sphereHole(d.camera, d.w, d.h, d.n, 0.0f, {0.0f, 0.5f, 0.0f}, 1.0f, f).count, 0);   // sunk in
+    EXPECT_EQ(sphereHole(d.camera, d.w, d.h, d.n, 0.0f, {0.0f, 0.99f, 0.0f}, 1.0f, f).count, 0);  // sunk a little
+    EXPECT_EQ(sphereHole(d.camera, d.w, d.h, d.n, 0.0f, {0.0f, -3.0f, 0.0f}, 1.0f, f).count, 0);  // beneath
+    EXPECT_EQ(sphereHole(d.camera, d.w, d.h, d.n, 0.0f, d.camera.eye, 1.0f, f).count, 0);         // the eye inside
+    EXPECT_EQ(sphereHole(d.camera, d.w, d.h, d.n, 0.0f, {0.0f, 1.5f, 0.0f}, 1e-3f, f).count, 0);  // too small
+}
+
+TEST(PlaneFootprint, TrianglesCoverTheFootprintLessTheHolesExactly) {
+    const DefaultScene d;
+    const PlaneFootprint f = planeFootprint(d.camera, d.w, d.h, d.n, 0.0f);
+    std::vector<FootprintHole> holes;
+    for (const glm::vec4& s : d.spheres)
+        holes.push_back(sphereHole(d.camera, d.w, d.h, d.n, 0.0f, glm::vec3(s) + glm::vec3(0.0f, 0.05f, 0.0f), s.w, f));
+    // Two holes that overlap: the smaller is dropped, and its pixels stay covered.
+    FootprintHole overlapping = holes[2];
+    for (int k = 0; k < 8; ++k) overlapping.corners[k] = 0.5f * overlapping.corners[k] + 0.5f * holes[2].corners[0];
+    holes.push_back(overlapping);
+    const std::vector<glm::vec2> tris = footprintTriangles(f, holes);
+    ASSERT_EQ(tris.size() % 3, 0u);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    // Every point of the footprint outside the holes is covered, nothing outside the footprint is, and most of
+    // the holes are left out (a hole whose box meets another's is dropped, so not all of them).
+    int inFootprint = 0, holesLeftOut = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const glm::vec2 q(u(rng), u(rng));
+        bool hole = false;
+        for (const FootprintHole& h : holes) hole = hole || inHole(h, q);
+        const bool in = inside(f, 2, 2, q.x + 1.0f, q.y + 1.0f);
+        if (!in) {
+            EXPECT_FALSE(covered(tris, q)) << q.x << "," << q.y;
+        } else if (hole) {
+            holesLeftOut += !covered(tris, q);
+        } else {
+            ++inFootprint;
+            EXPECT_TRUE(covered(tris, q)) << q.x << "," << q.y;
+        }
+    }
+    EXPECT_GT(holesLeftOut, 400);
+    EXPECT_GT(inFootprint, 10000);
+    // Without holes, the footprint's fan.
+    EXPECT_EQ(footprintTriangles(f, {}).size(), size_t(3 * (f.count - 2)));
+    // Negative control: with one hole's triangles lost, its neighbours' pixels are found uncovered.
+    std::vector<glm::vec2> cut(tris.begin() + 3, tris.end());
+    int uncovered = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const glm::vec2 q(u(rng), u(rng));
+        bool hole = false;
+        for (const FootprintHole& h : holes) hole = hole || inHole(h, q);
+        uncovered += !hole && inside(f, 2, 2, q.x + 1.0f, q.y + 1.0f) && !covered(cut, q);
+    }
+    EXPECT_GT(uncovered, 0);
 }
 
 }  // namespace

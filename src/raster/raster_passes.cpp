@@ -150,19 +150,30 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
     }
     glDisable(GL_CULL_FACE);
 
-    // Planes last, over the part of the viewport where rays can hit them: plane.frag casts the ray and writes the
-    // exact hit's depth, as the spheres' shader does.
-    glBindVertexArray(geometry_.emptyVao.id());
+    // Planes last, over the part of the viewport where rays can hit them and no sphere drawn above stands in
+    // front (plane_footprint.h): plane.frag casts the ray and writes the exact hit's depth, as the spheres' shader
+    // does, so its fragments are depth-tested only after they are shaded.
+    glBindVertexArray(geometry_.planeVao.id());
+    glBindBuffer(GL_ARRAY_BUFFER, geometry_.planeVbo.id());
     const glm::vec3 eye(frame.eye);
     GLint viewport[4] = {0, 0, 0, 0};
     if (!scene.planes.empty()) glGetIntegerv(GL_VIEWPORT, viewport);
-    const PlaneCamera camera{eye, glm::vec3(frame.forward), glm::vec3(frame.right), glm::vec3(frame.up),
-                             frame.viewport};
+    const PlaneCamera camera{
+        eye, glm::vec3(frame.forward), glm::vec3(frame.right), glm::vec3(frame.up), frame.viewport, frame.viewProj};
+    std::vector<FootprintHole> holes;
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         if (int(i) == options.skipPlane || skipped(planeCoverageId(scene, i))) continue;  // a mirror: not itself
         const Plane& p = scene.planes[i];
         const PlaneFootprint footprint = planeFootprint(camera, viewport[2], viewport[3], p.normal, p.offset);
         if (footprint.count == 0) continue;  // every ray misses it
+        // Spheres drawn above, whole: in a mirrored pass they are cut at the mirror, so none makes a hole there.
+        holes.clear();
+        for (size_t s = 0; s < scene.spheres.size() && !options.mirrored; ++s)
+            if (int(s) != options.skipSphere && !skipped(sphereCoverageId(scene, s)))
+                holes.push_back(sphereHole(camera, viewport[2], viewport[3], p.normal, p.offset,
+                                           scene.spheres[s].center, scene.spheres[s].radius, footprint));
+        const std::vector<glm::vec2> triangles = footprintTriangles(footprint, holes);
+        if (triangles.empty()) continue;
         const int mirror = options.reflections && i < mirrorOfPlane_.size() ? mirrorOfPlane_[i] : -1;
         const gl::Program& planeProgram =
             programs_.of(p.material).get(mirror >= 0 ? ColorPrograms::PlaneMirror : ColorPrograms::Plane);
@@ -189,9 +200,12 @@ void RasterRenderer::drawPasses(const Scene& scene, const FrameBlock& frame, con
         planeProgram.set("u_md2", md2);
         planeProgram.set("u_baseColor2", c.md2);
         planeProgram.set("u_checkerSize", c.size);
-        planeProgram.set("u_planeFan", footprint.corners, 5, gl::Program::Uniform::Required);
-        glDrawArrays(GL_TRIANGLES, 0, 3 * (footprint.count - 2));  // the fan (plane.vert); plane.frag finds the hit
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(glm::vec2)), triangles.data(),
+                     GL_STREAM_DRAW);
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size()));  // the footprint; plane.frag finds the hit
     }
+
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
 
     // alphaMode BLEND (docs/gltf-import.md): over everything opaque, farthest part first by its bounds'
     // centre, composited with the fragment's alpha and without depth writes; the coverage id is the part's.

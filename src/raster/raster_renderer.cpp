@@ -112,6 +112,12 @@ RasterRenderer::RasterRenderer(const gl::ShaderLibrary& shaders, ProgramCheck ch
     glBufferData(GL_ARRAY_BUFFER, sizeof(cube), cube.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    geometry_.planeVao = gl::VertexArray::create();
+    geometry_.planeVbo = gl::Buffer::create();
+    glBindVertexArray(geometry_.planeVao.id());
+    glBindBuffer(GL_ARRAY_BUFFER, geometry_.planeVbo.id());
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
     geometry_.emptyVao = gl::VertexArray::create();
     glBindVertexArray(0);
     gl::checkError("RasterRenderer setup");
