@@ -189,6 +189,7 @@ std::vector<glm::vec2> footprintTriangles(const PlaneFootprint& f, std::vector<F
     std::vector<FootprintHole> kept;
     std::vector<glm::vec4> boxes;
     for (const FootprintHole& h : holes) {
+        if (kept.size() == kMaxFootprintHoles) break;  // the largest; more would cost the CPU what they save
         glm::vec2 lo, hi;
         boundsOf(h, lo, hi);
         bool overlaps = false;

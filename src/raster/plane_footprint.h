@@ -7,6 +7,7 @@
 // covered, so the picture is the same bit for bit. Pure: no GL.
 #pragma once
 
+#include <cstddef>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -51,7 +52,9 @@ FootprintHole sphereHole(const PlaneCamera& camera, int width, int height, const
                          float insetPixels = 3.0f);
 
 // Triangles (three corners each, normalised device coordinates) covering `footprint` less the holes. Holes that
-// overlap another's bounding box are left out (the larger kept), so the pieces never cross.
+// overlap another's bounding box are left out (the larger kept), so the pieces never cross, and so are all but
+// the kMaxFootprintHoles largest (a scene of many small spheres would otherwise cut thousands of slabs).
+inline constexpr size_t kMaxFootprintHoles = 32;
 std::vector<glm::vec2> footprintTriangles(const PlaneFootprint& footprint, std::vector<FootprintHole> holes);
 
 }  // namespace shadelab::raster
