@@ -145,11 +145,11 @@ FootprintHole sphereHole(const PlaneCamera& c, int width, int height, const glm:
     if (!inRange(front) || !inRange(back) || !(behind.w > 0.0)) return none;
     if (!(depthOf(behind) - depthOf(back) > 1e-5)) return none;
     // The octagon inscribed in the silhouette: the tangent circle (as sphere.vert builds it), eight points on it.
-    const glm::dvec3 nh = d / D, cc = eye + (1.0 - r * r / D2) * d;
+    const glm::dvec3 cc = eye + (1.0 - r * r / D2) * d;
     const double rho = r * std::sqrt(1.0 - r * r / D2);
-    const glm::dvec3 a = glm::normalize(std::abs(nh.x) < 0.9 ? glm::cross(nh, glm::dvec3(1.0, 0.0, 0.0))
-                                                             : glm::cross(nh, glm::dvec3(0.0, 1.0, 0.0)));
-    const glm::dvec3 b = glm::cross(nh, a);
+    const glm::dvec3 a = glm::normalize(std::abs(dir.x) < 0.9 ? glm::cross(dir, glm::dvec3(1.0, 0.0, 0.0))
+                                                              : glm::cross(dir, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 b = glm::cross(dir, a);
     glm::dvec2 p[8], g(0.0);
     for (int k = 0; k < 8; ++k) {
         const double angle = 0.78539816339744831 * k;
