@@ -138,9 +138,11 @@ class Builder {
 public:
     Builder(BvhPrim* prims, const BvhBuildOptions& o, int threads)
         : prims_(prims),
+          options_(o),
           threads_(threads),
           bins_(std::min(std::max(o.bins, 2), kMaxBins)),
           maxLeaf_(uint32_t(std::min(std::max(o.maxLeafSize, 1), int(kMaxLeafCount)))),
+          wholeLeaf_(std::min(uint32_t(std::max(o.leafTestWidth, 1)), maxLeaf_)),
           traversalCost_(o.traversalCost) {}
 
     Bvh build(uint32_t n) {
@@ -169,9 +171,6 @@ public:
     }
 
 private:
-    Builder(BvhPrim* prims, int threads, int bins, uint32_t maxLeaf, float traversalCost)
-        : prims_(prims), threads_(threads), bins_(bins), maxLeaf_(maxLeaf), traversalCost_(traversalCost) {}
-
     struct Queued {
         Range range;
         uint32_t parent;  // node index in the top array
@@ -197,7 +196,7 @@ private:
     void evaluate(Range& r, bool mayParallel) const {
         const uint32_t n = r.count();
         r.split = Split{};
-        r.leaf = n <= 1;
+        r.leaf = n <= wholeLeaf_;  // one leaf test takes them all
         if (r.leaf) return;
         if (r.depth < kMedianDepth) r.split = sahSplit(r, mayParallel && n >= kMinParallelBinning);
         if (n <= maxLeaf_ && !(r.split.cost < float(n))) {
@@ -394,10 +393,11 @@ private:
         auto work = [&] {
             for (size_t k; (k = next.fetch_add(1)) < bySize.size();) {
                 Queued& q = queue_[bySize[k]];
-                Builder sub(prims_, threads_, bins_, maxLeaf_, traversalCost_);
-                // Room for the usual subtree (about one node per 6 primitives) up front: growing by doubling
-                // would copy it and leave up to half of a 256-byte-node array as resident slack at the peak,
-                // when every subtree and the final array are alive at once. Untouched capacity stays virtual.
+                Builder sub(prims_, options_, threads_);
+                // Room for the usual subtree (about one node per 6 primitives, or 10 with four-triangle leaves) up
+                // front: growing by doubling would copy it and leave up to half of a 256-byte-node array as resident
+                // slack at the peak, when every subtree and the final array are alive at once. Untouched capacity stays
+                // virtual.
                 q.nodes.reserve(q.range.count() / 4 + 16);
                 sub.buildNode(q.range, q.nodes, false);
                 q.depth = sub.depth_;
@@ -441,9 +441,11 @@ private:
     }
 
     BvhPrim* prims_;
+    BvhBuildOptions options_;  // as given: a queued subtree's builder starts from them
     int threads_;
     int bins_;
     uint32_t maxLeaf_;
+    uint32_t wholeLeaf_;  // ranges this small are leaves without a split search
     float traversalCost_;
     uint32_t queueBelow_ = 0;
     int depth_ = 0;

@@ -79,6 +79,34 @@ TEST(BvhBuild, OptionsAndSahCostOnRandomBoxes) {
     EXPECT_FALSE(bvhIsValid(broken, boxes, 4));
 }
 
+uint32_t leavesOf(const Bvh& b) {
+    uint32_t leaves = 0;
+    for (const BvhNode& nd : b.nodes)
+        for (int k = 0; k < kBvhWidth; ++k)
+            if (nd.used(k) && isLeafRef(nd.child[k])) ++leaves;
+    return leaves;
+}
+
+TEST(BvhBuild, RangesTheLeafTestTakesWholeAreLeaves) {
+    // Clusters of four boxes in a row, far apart: the SAH with one test per primitive splits a cluster into
+    // leaves of two or one, which saves nothing when one leaf test takes four.
+    std::vector<Bounds> boxes;
+    for (int c = 0; c < 400; ++c)
+        for (int i = 0; i < 4; ++i) {
+            const glm::vec3 p(float(c % 20) * 10.0f + float(i) * 1.5f, float(c / 20) * 10.0f, 0.0f);
+            boxes.push_back(box(p, p + glm::vec3(1.0f)));
+        }
+    BvhBuildOptions o;
+    o.leafTestWidth = 4;
+    const Bvh wide = buildBvh(boxes, o);
+    EXPECT_TRUE(bvhIsValid(wide, boxes, o.maxLeafSize));
+    EXPECT_EQ(leavesOf(wide), 400u) << "one leaf per cluster";
+    // Negative control: with the default (one primitive per test) the SAH splits the clusters.
+    const Bvh narrow = buildBvh(boxes);
+    EXPECT_TRUE(bvhIsValid(narrow, boxes, o.maxLeafSize));
+    EXPECT_GT(leavesOf(narrow), 400u);
+}
+
 TEST(BvhBuild, SameTreeForAnyThreadCount) {
     std::mt19937 rng(41);
     std::uniform_real_distribution<float> u(-10.0f, 10.0f), s(0.0f, 0.5f);

@@ -109,6 +109,7 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     bounds_.hi += glm::vec3(pad);
     BvhBuildOptions leafOptions = options;
     leafOptions.maxLeafSize = std::min(options.maxLeafSize, int(kMaxMeshLeafSize));
+    leafOptions.leafTestWidth = kMaxMeshLeafSize;  // the leaf tests take four triangles in one step
     bvh_ = buildBvh(prims.data(), prims.size(), leafOptions);
 
     // Store what the traversal and shading read in leaf order, so a leaf's triangles are contiguous in memory;
