@@ -5,9 +5,9 @@
 // 4 KiB pages nearly every visit also misses the first-level TLB, and a tree of a few megabytes (2CylinderEngine:
 // 4.4 MiB of nodes, 4 MiB of positions) outgrows even the second level. Backed by 2 MiB pages the same arrays
 // need a handful of entries: the incoherent-ray benchmark ran 2 to 5 % faster (bench/README.md).
-// Which arrays ask: only the finished ones and the builder's references (the builder's per-thread subtrees stay
-// on ordinary pages, whose untouched reserve costs nothing), and only from 2 MiB (below, the rounding would cost
-// more than the pages save) up to 1 GiB. On the development VM each first touch of a 4 KiB page costs 6-12 us
+// Which arrays ask: the finished ones, the builder's references and its per-thread subtrees (whose untouched
+// reserve costs nothing on either kind of page), and only from 2 MiB (below, the rounding would cost more than
+// the pages save) up to 1 GiB. On the development VM each first touch of a 4 KiB page costs 6-12 us
 // (a paravirtualised guest), so the 4.2 M-triangle build's 430 MB of references, nodes and positions took about
 // 1 s of faults on ordinary pages; on huge pages, written by the threads that fill them and never zeroed first,
 // that build took 1.5-1.8 s instead of 2.4-3.2 s (bench/README.md, 2026-12-07). An earlier measurement, when

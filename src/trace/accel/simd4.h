@@ -39,6 +39,9 @@ inline F4 keepLanes3(F4 a) { return {_mm_and_ps(a.v, _mm_castsi128_ps(_mm_set_ep
 inline int lessEqualMask(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmple_ps(a.v, b.v)); }
 // Lanes truncated toward zero (as int(x) for x in int range).
 inline void truncate4(F4 a, int* out) { _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_cvttps_epi32(a.v)); }
+// (a1, a2, a0, a3): x y z turned one lane, so a * rotate3(a) is (xy, yz, zx).
+inline F4 rotate3(F4 a) { return {_mm_shuffle_ps(a.v, a.v, _MM_SHUFFLE(3, 0, 2, 1))}; }
+inline float lane0(F4 a) { return _mm_cvtss_f32(a.v); }
 
 #else
 
@@ -75,6 +78,8 @@ inline int lessEqualMask(F4 a, F4 b) {
 inline void truncate4(F4 a, int* out) {
     for (int k = 0; k < 4; ++k) out[k] = int(a.v[k]);
 }
+inline F4 rotate3(F4 a) { return {{a.v[1], a.v[2], a.v[0], a.v[3]}}; }
+inline float lane0(F4 a) { return a.v[0]; }
 
 #endif
 
