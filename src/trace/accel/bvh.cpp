@@ -7,10 +7,11 @@
 #include "util/check.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
-#include <numeric>
+#include <memory>
+#include <mutex>
 #include <thread>
 #include <utility>
 
@@ -164,8 +165,19 @@ public:
         // this thread; n/16 builds it 8 % faster on 2 threads (bench/README.md). A function of n alone, so the
         // nodes do not depend on the thread count.
         queueBelow_ = n >= kMinQueuedBuild ? std::max<uint32_t>(n / 16, 1024) : 0;
-        buildNode(root, bvh.nodes, true);
-        runQueue(bvh.nodes);
+        // The workers start on the subtrees as the top queues them, while this thread goes on partitioning the
+        // top (alone, but for the binning of the largest ranges); it joins them when the top is done.
+        std::vector<std::thread> pool;
+        if (queueBelow_ > 0)
+            for (int t = 1; t < threads_; ++t) pool.emplace_back([this] { buildQueued(); });
+        try {
+            buildNode(root, bvh.nodes, true);
+        } catch (...) {
+            finishTop(pool);
+            throw;
+        }
+        finishTop(pool);
+        appendQueued(bvh.nodes);
         bvh.depth = depth_;
         SHADELAB_CHECK_LT(bvh.depth, kMaxBvhDepth);
         for (int a = 0; a < 3; ++a) {
@@ -182,6 +194,7 @@ private:
         int slot;         // child slot in it
         NodeArray nodes;  // the subtree, its root at [0], indices local
         int depth = 0;
+        bool claimed = false;  // a worker has taken it (under queueMutex_)
     };
 
     // The box and centre bounds of a range, by scanning it.
@@ -387,7 +400,12 @@ private:
                 ref = makeLeafRef(c.begin, c.count());
                 depth_ = std::max(depth_, c.depth);
             } else if (top && c.count() < queueBelow_) {
-                queue_.push_back(Queued{c, index, k, {}, 0});
+                {
+                    const std::lock_guard<std::mutex> lock(queueMutex_);
+                    queue_.push_back(std::make_unique<Queued>(Queued{c, index, k, {}, 0, false}));
+                    ++unclaimed_;
+                }
+                queueReady_.notify_one();
                 ref = kLeafBit;  // set when the queue has run
             } else {
                 ref = buildNode(c, nodes, top);
@@ -397,39 +415,53 @@ private:
         return index;
     }
 
-    // Builds the queued subtrees on the worker threads, biggest first, and appends them in queue order.
-    void runQueue(FinalNodeArray& top) {
-        if (queue_.empty()) return;
-        std::vector<size_t> bySize(queue_.size());
-        std::iota(bySize.begin(), bySize.end(), size_t(0));
-        std::stable_sort(bySize.begin(), bySize.end(),
-                         [&](size_t a, size_t b) { return queue_[a].range.count() > queue_[b].range.count(); });
-        std::atomic<size_t> next{0};
-        auto work = [&] {
-            for (size_t k; (k = next.fetch_add(1)) < bySize.size();) {
-                Queued& q = queue_[bySize[k]];
-                Builder sub(prims_, options_, threads_);
-                // Room for the usual subtree (about one node per 6 primitives, or 10 with four-triangle leaves) up
-                // front: growing by doubling would copy it and leave up to half of a 256-byte-node array as resident
-                // slack at the peak, when every subtree and the final array are alive at once. Untouched capacity stays
-                // virtual.
-                q.nodes.reserve(q.range.count() / 4 + 16);
-                sub.buildNode(q.range, q.nodes, false);
-                q.depth = sub.depth_;
+    // A worker: builds queued subtrees, the largest waiting one first, until the top is done and none is left.
+    // Each subtree's nodes depend on its range alone, so which thread builds it, and when, changes nothing.
+    void buildQueued() {
+        for (;;) {
+            Queued* q = nullptr;
+            {
+                std::unique_lock<std::mutex> lock(queueMutex_);
+                queueReady_.wait(lock, [this] { return unclaimed_ > 0 || topDone_; });
+                if (unclaimed_ == 0) return;  // and the top is done
+                for (const std::unique_ptr<Queued>& c : queue_)
+                    if (!c->claimed && (!q || c->range.count() > q->range.count())) q = c.get();
+                q->claimed = true;
+                --unclaimed_;
             }
-        };
-        std::vector<std::thread> pool;
-        for (int t = 1; t < threads_; ++t) pool.emplace_back(work);
-        work();
-        for (std::thread& th : pool) th.join();
+            Builder sub(prims_, options_, threads_);
+            // Room for the usual subtree (about one node per 6 primitives, or 10 with four-triangle leaves) up
+            // front: growing by doubling would copy it and leave up to half of a 256-byte-node array as resident
+            // slack at the peak, when every subtree and the final array are alive at once. Untouched capacity
+            // stays virtual.
+            q->nodes.reserve(q->range.count() / 4 + 16);
+            sub.buildNode(q->range, q->nodes, false);
+            q->depth = sub.depth_;
+        }
+    }
 
+    // The top is built (or failed): this thread builds what is left with the workers, and waits for them.
+    void finishTop(std::vector<std::thread>& pool) {
+        {
+            const std::lock_guard<std::mutex> lock(queueMutex_);
+            topDone_ = true;
+        }
+        queueReady_.notify_all();
+        buildQueued();
+        for (std::thread& th : pool) th.join();
+    }
+
+    // Appends the built subtrees to the top's nodes in queue order (the order the top made them).
+    void appendQueued(FinalNodeArray& top) {
+        if (queue_.empty()) return;
         size_t total = top.size();
-        for (const Queued& q : queue_) total += q.nodes.size();
+        for (const std::unique_ptr<Queued>& q : queue_) total += q->nodes.size();
         top.reserve(total);
 #ifdef __GLIBC__
         size_t freed = 0;
 #endif
-        for (Queued& q : queue_) {
+        for (const std::unique_ptr<Queued>& queued : queue_) {
+            Queued& q = *queued;
             const uint32_t offset = uint32_t(top.size());
             for (BvhNode node : q.nodes) {
                 for (uint32_t& c : node.child)
@@ -464,7 +496,12 @@ private:
     float traversalCost_;
     uint32_t queueBelow_ = 0;
     int depth_ = 0;
-    std::vector<Queued> queue_;
+    // Subtrees for the workers, in the order the top made them; shared with the workers under queueMutex_.
+    std::mutex queueMutex_;
+    std::condition_variable queueReady_;
+    std::vector<std::unique_ptr<Queued>> queue_;
+    uint32_t unclaimed_ = 0;
+    bool topDone_ = false;
 };
 
 }  // namespace

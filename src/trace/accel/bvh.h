@@ -25,8 +25,9 @@
 //   The builder splits objects only; MeshBvh first cuts long triangles into spatial-split references
 //   (spatial_splits.h), so a triangle may fill several slots.
 // - Parallel build. The top of the tree is built on the calling thread, with the binning of large ranges
-//   split across threads; subtrees below a size threshold are queued and built by `threads` workers into
-//   their own node arrays, then appended in queue order. The result does not depend on the thread count or
+//   split across threads; subtrees below a size threshold are queued, and the workers build them into their
+//   own node arrays as they are queued (the calling thread joins them when the top is done), then they are
+//   appended in queue order. The result does not depend on the thread count or
 //   on scheduling: the same input gives the same nodes and the same leaf order.
 // - Memory. The builder's only scratch is the BvhPrim array the caller hands in (it becomes the leaf order);
 //   nodes are about n / 10 x 256 bytes with four-triangle leaf tests (about 26 bytes per primitive; on

@@ -100,11 +100,13 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
                                    SpatialSplitOptions{options.spatialSplitBudget, 1e-5f, pad, threads});
         prims.assign(split.begin(), split.end());
     }
-    for (BvhPrim& b : prims)
-        for (int a = 0; a < 3; ++a) {
-            b.lo[a] -= pad;
-            b.hi[a] += pad;
-        }
+    forRanges(uint32_t(prims.size()), threads, [&](int, uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i)
+            for (int a = 0; a < 3; ++a) {
+                prims[i].lo[a] -= pad;
+                prims[i].hi[a] += pad;
+            }
+    });
     bounds_.lo -= glm::vec3(pad);
     bounds_.hi += glm::vec3(pad);
     BvhBuildOptions leafOptions = options;
