@@ -129,11 +129,13 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     decltype(prims)().swap(prims);
     // Each slot's place in its leaf, from the leaf references, then the positions by leaf (leaf_positions.h).
     lane_.resize(n);
-    for (const BvhNode& node : bvh_.nodes)
-        for (uint32_t ref : node.child)
-            if (isLeafRef(ref))
-                for (uint32_t j = 0; j < leafCount(ref); ++j)
-                    lane_[leafFirst(ref) + j] = uint8_t(j << 4 | leafCount(ref));
+    forRanges(uint32_t(bvh_.nodes.size()), threads, [&](int, uint32_t begin, uint32_t end) {
+        for (uint32_t i = begin; i < end; ++i)
+            for (uint32_t ref : bvh_.nodes[i].child)
+                if (isLeafRef(ref))
+                    for (uint32_t j = 0; j < leafCount(ref); ++j)
+                        lane_[leafFirst(ref) + j] = uint8_t(j << 4 | leafCount(ref));
+    });
     // Every slot writes its nine floats below; only the padding is set here (no zero fill of the whole array).
     positions_.resize(9 * size_t(n) + kLeafRowPadding);
     std::fill(positions_.end() - ptrdiff_t(kLeafRowPadding), positions_.end(), 0.0f);

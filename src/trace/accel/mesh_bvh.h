@@ -118,13 +118,14 @@ private:
     uint32_t triangles_ = 0;
     Bvh bvh_;
     std::vector<float, HugePageAllocator<float>> positions_;  // 9 per slot, by leaf (leaf_positions.h), + padding
-    // Per slot, each written whole once sized (no zero fill: aligned_allocators.h).
-    std::vector<uint8_t, CacheLineAllocator<uint8_t>> lane_;      // its index in its leaf << 4 | the leaf's count
-    std::vector<uint32_t, CacheLineAllocator<uint32_t>> part_;    // its part
-    std::vector<uint32_t, CacheLineAllocator<uint32_t>> source_;  // its scene-order triangle
-    std::vector<uint32_t> partMesh_;                              // per flattened part
-    std::vector<uint32_t> partFirst_;                             // per flattened part: its first source index
-    std::vector<std::shared_ptr<const MeshGeometry>> geometry_;   // per flattened part, for matches()
+    // Per slot, each written whole once sized (no zero fill) by the build's threads, on huge pages from 2 MiB
+    // (aligned_allocators.h): a hit reads them at a random slot.
+    std::vector<uint8_t, HugePageAllocator<uint8_t>> lane_;      // its index in its leaf << 4 | the leaf's count
+    std::vector<uint32_t, HugePageAllocator<uint32_t>> part_;    // its part
+    std::vector<uint32_t, HugePageAllocator<uint32_t>> source_;  // its scene-order triangle
+    std::vector<uint32_t> partMesh_;                             // per flattened part
+    std::vector<uint32_t> partFirst_;                            // per flattened part: its first source index
+    std::vector<std::shared_ptr<const MeshGeometry>> geometry_;  // per flattened part, for matches()
     Bounds bounds_;
 };
 
