@@ -84,6 +84,9 @@ struct BvhBuildOptions {
     // MeshBvh only: extra references spatial splits may make, as a fraction of the triangles (spatial_splits.h);
     // 0 turns them off.
     float spatialSplitBudget = 1.0f;
+    // MeshBvh only: the most triangles spatial splits run on (kMaxSpatialSplitTriangles, mesh_bvh.h); larger
+    // scenes get the plain build. Benchmarks raise it to time the pass on large scenes.
+    size_t spatialSplitLimit = 500000;
 };
 
 // Deepest tree the builder makes, in binary splits (an 8-wide level is one to seven of them); traversal

@@ -89,12 +89,12 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     // Long triangles across the axes become several references (spatial_splits.h), below a size where the
     // sequential top of that pass would cost more than the build itself.
     triangles_ = uint32_t(prims.size());
-    if (options.spatialSplitBudget > 0.0f && prims.size() <= kMaxSpatialSplitTriangles) {
+    if (options.spatialSplitBudget > 0.0f && prims.size() <= options.spatialSplitLimit) {
         const TriangleCorners corners = [this](const BvhPrim& ref, glm::vec3 c[3]) {
             const MeshGeometry& g = *geometry_[ref.id2];
             for (size_t k = 0; k < 3; ++k) c[k] = g.positions[g.indices[3 * size_t(ref.id) + k]];
         };
-        // The pass works on plain vectors; the two copies are of scenes of at most kMaxSpatialSplitTriangles.
+        // The pass works on plain vectors; the two copies are of scenes of at most spatialSplitLimit triangles.
         const std::vector<BvhPrim> split =
             spatialSplitReferences(std::vector<BvhPrim>(prims.begin(), prims.end()), corners,
                                    SpatialSplitOptions{options.spatialSplitBudget, 1e-5f, pad, threads});

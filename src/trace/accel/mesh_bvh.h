@@ -41,6 +41,7 @@ inline constexpr int kMaxMeshLeafSize = 4;
 // it would add more than a second; large scanned or tessellated meshes are also the ones made of small,
 // well-shaped triangles that splits help least.
 inline constexpr size_t kMaxSpatialSplitTriangles = 500000;
+static_assert(BvhBuildOptions{}.spatialSplitLimit == kMaxSpatialSplitTriangles, "the option's default is this limit");
 
 class MeshBvh {
 public:
