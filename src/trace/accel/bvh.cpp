@@ -7,8 +7,8 @@
 #include "util/check.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -403,9 +403,7 @@ private:
                 {
                     const std::lock_guard<std::mutex> lock(queueMutex_);
                     queue_.push_back(std::make_unique<Queued>(Queued{c, index, k, {}, 0, false}));
-                    ++unclaimed_;
                 }
-                queueReady_.notify_one();
                 ref = kLeafBit;  // set when the queue has run
             } else {
                 ref = buildNode(c, nodes, top);
@@ -416,18 +414,24 @@ private:
     }
 
     // A worker: builds queued subtrees, the largest waiting one first, until the top is done and none is left.
-    // Each subtree's nodes depend on its range alone, so which thread builds it, and when, changes nothing.
+    // Each subtree's nodes depend on its range alone, so which thread builds it, and when, changes nothing. An idle
+    // worker looks again every 100 us: the top queues a subtree every few milliseconds, and a condition variable's
+    // wait would need a newer libstdc++ symbol (GLIBCXX_3.4.30) than the Python wheel's manylinux level allows.
     void buildQueued() {
         for (;;) {
             Queued* q = nullptr;
             {
-                std::unique_lock<std::mutex> lock(queueMutex_);
-                queueReady_.wait(lock, [this] { return unclaimed_ > 0 || topDone_; });
-                if (unclaimed_ == 0) return;  // and the top is done
+                const std::lock_guard<std::mutex> lock(queueMutex_);
                 for (const std::unique_ptr<Queued>& c : queue_)
                     if (!c->claimed && (!q || c->range.count() > q->range.count())) q = c.get();
-                q->claimed = true;
-                --unclaimed_;
+                if (q)
+                    q->claimed = true;
+                else if (topDone_)
+                    return;
+            }
+            if (!q) {
+                std::this_thread::sleep_for(std::chrono::microseconds(100));
+                continue;
             }
             Builder sub(prims_, options_, threads_);
             // Room for the usual subtree (about one node per 6 primitives, or 10 with four-triangle leaves) up
@@ -446,7 +450,6 @@ private:
             const std::lock_guard<std::mutex> lock(queueMutex_);
             topDone_ = true;
         }
-        queueReady_.notify_all();
         buildQueued();
         for (std::thread& th : pool) th.join();
     }
@@ -498,9 +501,7 @@ private:
     int depth_ = 0;
     // Subtrees for the workers, in the order the top made them; shared with the workers under queueMutex_.
     std::mutex queueMutex_;
-    std::condition_variable queueReady_;
     std::vector<std::unique_ptr<Queued>> queue_;
-    uint32_t unclaimed_ = 0;
     bool topDone_ = false;
 };
 
