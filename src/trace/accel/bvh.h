@@ -13,8 +13,9 @@
 //   (7.5 instead of 11 on the incoherent-ray benchmark), each tested in one AVX2 step.
 // - Child references are 32 bits: an interior child is a node index; a leaf is kLeafBit | first << 4 | count,
 //   a range of at most 15 primitives in leaf order. So a tree holds fewer than 2^27 primitives.
-// - Build. Binned SAH (MacDonald & Booth 1990 cost; Wald 2007 binning, 16 bins) on primitive references that
-//   carry their own box (BvhPrim, 32 bytes), so binning and partitioning read memory sequentially. A node is
+// - Build. Binned SAH (MacDonald & Booth 1990 cost; Wald 2007 binning, 16 bins: bvh_binning.h) on primitive
+//   references that carry their own box (BvhPrim, 32 bytes), so binning and partitioning read memory
+//   sequentially. A node is
 //   made by splitting its range in two by SAH, then splitting the child of largest area again, until it has
 //   eight children or every child is a leaf (the usual binary-to-wide collapse, done while building). Slots
 //   left free stay free (splitting leaves into them was measured: no faster, and a slower build).
