@@ -324,7 +324,7 @@ private:
                     const std::lock_guard<std::mutex> lock(queueMutex_);
                     queue_.push_back(std::make_unique<Queued>(Queued{c, index, k, {}, 0, false}));
                 }
-                ref = kLeafBit;  // set when the queue has run
+                ref = kLeafBit;  // set when the built subtree is appended (appendQueued)
             } else {
                 ref = buildNode(c, nodes, top);
             }
