@@ -63,7 +63,17 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     for (int r = 0; r < threads; ++r) kept[size_t(r) + 1] += kept[size_t(r)];
     // On huge pages and sized without a zero fill (aligned_allocators.h): the ranges below write every element,
     // each thread's pages first touched by that thread.
-    std::vector<BvhPrim, HugePageAllocator<BvhPrim>> prims(kept[size_t(threads)]);
+    // With spatial splits the builder gets room past the triangles for the budget's extra references: reserved
+    // here, so sizing up for the build copies nothing (pages the build never touches stay virtual).
+    const size_t triangles = kept[size_t(threads)];
+    const bool spatial = options.spatialSplitBudget > 0.0f && triangles <= options.spatialSplitLimit;
+    const size_t capacity = spatial
+                                ? std::min(triangles + size_t(double(options.spatialSplitBudget) * double(triangles)),
+                                           size_t(kMaxBvhPrimitives) - 1)
+                                : triangles;
+    std::vector<BvhPrim, HugePageAllocator<BvhPrim>> prims;
+    prims.reserve(std::max(capacity, triangles));
+    prims.resize(triangles);
     std::vector<Bounds> rangeBounds(static_cast<size_t>(threads));
     forRanges(total, threads, [&](int r, uint32_t begin, uint32_t end) {
         BvhPrim* out = prims.data() + kept[size_t(r)];
@@ -86,20 +96,6 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     // entry and be culled (SphereSet pads spheres the same way).
     const glm::vec3 extent = glm::max(glm::abs(bounds_.lo), glm::abs(bounds_.hi));
     const float pad = prims.empty() ? 0.0f : 1e-6f * std::max({extent.x, extent.y, extent.z, 1e-30f});
-    // Long triangles across the axes become several references (spatial_splits.h), below a size where the
-    // sequential top of that pass would cost more than the build itself.
-    triangles_ = uint32_t(prims.size());
-    if (options.spatialSplitBudget > 0.0f && prims.size() <= options.spatialSplitLimit) {
-        const TriangleCorners corners = [this](const BvhPrim& ref, glm::vec3 c[3]) {
-            const MeshGeometry& g = *geometry_[ref.id2];
-            for (size_t k = 0; k < 3; ++k) c[k] = g.positions[g.indices[3 * size_t(ref.id) + k]];
-        };
-        // The pass works on plain vectors; the two copies are of scenes of at most spatialSplitLimit triangles.
-        const std::vector<BvhPrim> split =
-            spatialSplitReferences(std::vector<BvhPrim>(prims.begin(), prims.end()), corners,
-                                   SpatialSplitOptions{options.spatialSplitBudget, 1e-5f, pad, threads});
-        prims.assign(split.begin(), split.end());
-    }
     forRanges(uint32_t(prims.size()), threads, [&](int, uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i)
             for (int a = 0; a < 3; ++a) {
@@ -112,7 +108,22 @@ MeshBvh::MeshBvh(const Scene& scene, const BvhBuildOptions& options) {
     BvhBuildOptions leafOptions = options;
     leafOptions.maxLeafSize = std::min(options.maxLeafSize, int(kMaxMeshLeafSize));
     leafOptions.leafTestWidth = kMaxMeshLeafSize;  // the leaf tests take four triangles in one step
-    bvh_ = buildBvh(prims.data(), prims.size(), leafOptions);
+    triangles_ = uint32_t(prims.size());
+    if (spatial && capacity > triangles) {
+        // Long triangles across the axes may become several references (spatial_splits.h); the builder says
+        // how many it made.
+        const TriangleSplitter splitter(
+            [this](const BvhPrim& ref, glm::vec3 c[3]) {
+                const MeshGeometry& g = *geometry_[ref.id2];
+                for (size_t k = 0; k < 3; ++k) c[k] = g.positions[g.indices[3 * size_t(ref.id) + k]];
+            },
+            pad);
+        prims.resize(capacity);
+        bvh_ = buildBvh(prims.data(), triangles, capacity, splitter, leafOptions);
+        prims.resize(bvh_.primitives);
+    } else {
+        bvh_ = buildBvh(prims.data(), prims.size(), leafOptions);
+    }
 
     // Store what the traversal and shading read in leaf order, so a leaf's triangles are contiguous in memory;
     // normals stay in the scene's geometry (interpolatedNormal reads them through the part). The ids first,

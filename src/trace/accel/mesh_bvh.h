@@ -36,10 +36,10 @@ bool isDegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec
 // A leaf holds at most this many triangles: the AVX2 leaf test takes them in one 4-wide step.
 inline constexpr int kMaxMeshLeafSize = 4;
 
-// Spatial splits (spatial_splits.h) run on scenes of up to this many triangles. Their pass costs about 2 µs per
-// triangle on 2 threads (0.21 s for 2CylinderEngine's 110 K, against 0.07 s for the build itself), so above this
-// it would add more than a second; large scanned or tessellated meshes are also the ones made of small,
-// well-shaped triangles that splits help least.
+// Spatial splits (bvh.h, spatial_splits.h) run on scenes of up to this many triangles. Above it, scanned or
+// tessellated meshes are the ones made of small, well-shaped triangles that splits help least, while the room
+// for extra references and the spatial binning still cost about half the plain build (the 4.2 M-triangle grid of
+// spheres: 1.5 times the plain build's time, no split taken; trace_bench --spatial times it at any size).
 inline constexpr size_t kMaxSpatialSplitTriangles = 500000;
 static_assert(BvhBuildOptions{}.spatialSplitLimit == kMaxSpatialSplitTriangles, "the option's default is this limit");
 

@@ -1,6 +1,6 @@
-// Spatial-split references (spatial_splits.h): they cover their triangles, stay inside the triangles' boxes,
-// respect the budget and the thread count, and a MeshBvh built over them finds exactly the hits of one built
-// without them.
+// Spatial splits (the builder, bvh.h, with spatial_splits.h's TriangleSplitter): the references cover their
+// triangles, stay inside the triangles' boxes, respect the room they are given, do not depend on the thread
+// count, and a MeshBvh built with them finds exactly the hits of one built without them.
 #include "trace/accel/spatial_splits.h"
 #include "trace/accel/bvh_invariants.h"
 #include "trace/accel/bvh_test_util.h"
@@ -60,12 +60,32 @@ Input inputOf(const Scene& sc) {
     return in;
 }
 
-std::vector<BvhPrim> split(const Input& in, float budget, int threads) {
-    const TriangleCorners corners = [&in](const BvhPrim& ref, glm::vec3 c[3]) {
-        for (int k = 0; k < 3; ++k) c[k] = glm::make_vec3(in.tris[ref.id].v + 3 * k);
-    };
-    return spatialSplitReferences(in.prims, corners, SpatialSplitOptions{budget, 1e-5f, 1e-6f, threads});
+struct Built {
+    Bvh bvh;
+    std::vector<BvhPrim> refs;  // in leaf order
+};
+
+// The tree over `in`'s triangles with room for `budget` extra references per triangle.
+Built build(const Input& in, float budget, int threads) {
+    const TriangleSplitter splitter(
+        [&in](const BvhPrim& ref, glm::vec3 c[3]) {
+            for (int k = 0; k < 3; ++k) c[k] = glm::make_vec3(in.tris[ref.id].v + 3 * k);
+        },
+        1e-6f);
+    std::vector<BvhPrim> refs = in.prims;
+    const size_t n = refs.size();
+    refs.resize(n + size_t(double(budget) * double(n)));
+    BvhBuildOptions o;
+    o.threads = threads;
+    o.maxLeafSize = o.leafTestWidth = 4;
+    Built b;
+    b.bvh = buildBvh(refs.data(), n, refs.size(), splitter, o);
+    refs.resize(b.bvh.primitives);
+    b.refs = std::move(refs);
+    return b;
 }
+
+std::vector<BvhPrim> split(const Input& in, float budget, int threads) { return build(in, budget, threads).refs; }
 
 std::vector<test::TrianglePiece> piecesOf(const std::vector<BvhPrim>& refs) {
     std::vector<test::TrianglePiece> pieces;
@@ -86,6 +106,15 @@ TEST(SpatialSplits, PiecesCoverTheirTrianglesInsideTheirBoxes) {
         for (int a = 0; a < 3; ++a) outside += r.lo[a] < whole.lo[a] - 1e-5f || r.hi[a] > whole.hi[a] + 1e-5f;
     }
     EXPECT_EQ(outside, 0u) << "a piece reaches outside its triangle's box";
+    // The tree over them: every reference in one leaf inside the leaf's box.
+    const Built built = build(in, 1.0f, 2);
+    std::vector<Bounds> boxes;
+    std::vector<uint32_t> order;
+    for (const BvhPrim& r : built.refs) {
+        boxes.push_back(Bounds{glm::make_vec3(r.lo), glm::make_vec3(r.hi)});
+        order.push_back(uint32_t(order.size()));
+    }
+    EXPECT_TRUE(test::bvhIsValid(built.bvh, boxes, 4, order));
 
     // Negative control: without one piece of a triangle cut in several, the check must see the hole.
     std::vector<test::TrianglePiece> pieces = piecesOf(refs);
@@ -103,15 +132,20 @@ TEST(SpatialSplits, BudgetAndThreadsDecideNothingElse) {
     EXPECT_EQ(split(in, 0.0f, 2).size(), in.tris.size()) << "a budget of 0 splits nothing";
     const std::vector<BvhPrim> small = split(in, 0.05f, 2);
     EXPECT_LE(small.size(), in.tris.size() + in.tris.size() / 20);
-    const std::vector<BvhPrim> one = split(in, 1.0f, 1);
+    const Built one = build(in, 1.0f, 1);
     for (const int threads : {2, 3}) {
-        const std::vector<BvhPrim> many = split(in, 1.0f, threads);
-        ASSERT_EQ(many.size(), one.size()) << threads << " threads";
-        EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(BvhPrim)), 0) << threads << " threads";
+        const Built many = build(in, 1.0f, threads);
+        ASSERT_EQ(many.refs.size(), one.refs.size()) << threads << " threads";
+        EXPECT_EQ(std::memcmp(many.refs.data(), one.refs.data(), one.refs.size() * sizeof(BvhPrim)), 0)
+            << threads << " threads";
+        ASSERT_EQ(many.bvh.nodes.size(), one.bvh.nodes.size()) << threads << " threads";
+        EXPECT_EQ(std::memcmp(many.bvh.nodes.data(), one.bvh.nodes.data(), one.bvh.nodes.size() * sizeof(BvhNode)), 0)
+            << threads << " threads";
     }
     // Negative control: another budget gives other references, and the comparison sees it.
     const std::vector<BvhPrim> other = split(in, 0.5f, 1);
-    EXPECT_TRUE(other.size() != one.size() || std::memcmp(other.data(), one.data(), one.size() * sizeof(BvhPrim)) != 0);
+    EXPECT_TRUE(other.size() != one.refs.size() ||
+                std::memcmp(other.data(), one.refs.data(), one.refs.size() * sizeof(BvhPrim)) != 0);
 }
 
 TEST(SpatialSplits, MeshBvhFindsTheSameHitsWithAndWithout) {
