@@ -101,11 +101,14 @@ void TriangleSplitter::binParts(const BvhPrim& ref, int axis, const float* plane
                                 Bounds* boxes) const {
     glm::vec3 c[3];
     corners_(ref, c);
-    for (int k = first; k <= last; ++k) boxes[k] = Bounds{};
+    Bounds slab[33];  // slab[k - first]
+    const int slabs = std::min(last - first, 32) + 1;
+    last = first + slabs - 1;
+    for (int k = 0; k < slabs; ++k) slab[k] = Bounds{};
     for (const glm::vec3& v : c) {
         int k = first;
         while (k < last && v[axis] > planes[k + 1]) ++k;
-        boxes[k].extend(v);
+        slab[k - first].extend(v);
     }
     for (int e = 0; e < 3; ++e) {
         const glm::vec3& p = c[e];
@@ -116,13 +119,16 @@ void TriangleSplitter::binParts(const BvhPrim& ref, int axis, const float* plane
             if (!(lo < pos && pos < hi)) continue;
             glm::vec3 x = p + (pos - p[axis]) / (q[axis] - p[axis]) * (q - p);
             x[axis] = pos;
-            boxes[k - 1].extend(x);
-            boxes[k].extend(x);
+            slab[k - 1 - first].extend(x);
+            slab[k - first].extend(x);
         }
     }
     const Bounds limit = boxOf(ref);
-    for (int k = first; k <= last; ++k)
-        if (!boxes[k].empty()) boxes[k] = intersection(grown(boxes[k], pad_), limit);
+    for (int k = 0; k < slabs; ++k)
+        if (!slab[k].empty()) {
+            const Bounds b = intersection(grown(slab[k], pad_), limit);
+            if (!b.empty()) boxes[first + k].extend(b);
+        }
 }
 
 int TriangleSplitter::split(const BvhPrim& ref, int axis, float pos, BvhPrim& below, BvhPrim& above) const {
