@@ -38,8 +38,8 @@ inline constexpr int kMaxMeshLeafSize = 4;
 
 // Spatial splits (bvh.h, spatial_splits.h) run on scenes of up to this many triangles. Above it, scanned or
 // tessellated meshes are the ones made of small, well-shaped triangles that splits help least, while the room
-// for extra references and the spatial binning still cost about half the plain build (the 4.2 M-triangle grid of
-// spheres: 1.5 times the plain build's time, no split taken; trace_bench --spatial times it at any size).
+// for extra references and the overlap tests still cost time (the 4.2 M-triangle grid of spheres: 1.0 to 1.25
+// times the plain build, no split taken; trace_bench --spatial times both at any size).
 inline constexpr size_t kMaxSpatialSplitTriangles = 500000;
 static_assert(BvhBuildOptions{}.spatialSplitLimit == kMaxSpatialSplitTriangles, "the option's default is this limit");
 
