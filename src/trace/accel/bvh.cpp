@@ -4,6 +4,7 @@
 #include "trace/accel/bvh.h"
 
 #include "trace/accel/bvh_binning.h"
+#include "trace/accel/bvh_spatial.h"
 #include "util/check.h"
 
 #include <algorithm>
@@ -105,7 +106,8 @@ public:
         }
         finishTop(pool);
         appendQueued(bvh.nodes);
-        bvh.primitives = capacity > n ? packLeaves(bvh.nodes) : n;
+        // With a splitter, buildNode puts a node's children in the order of their ranges, as packLeaves needs.
+        bvh.primitives = capacity > n ? spatial::packLeaves(bvh.nodes, prims_) : n;
         bvh.depth = depth_;
         SHADELAB_CHECK_LT(bvh.depth, kMaxBvhDepth);
         for (int a = 0; a < 3; ++a) {
@@ -260,66 +262,13 @@ private:
         return best;
     }
 
-    // The best spatial split across `axis` (SBVH): planes evenly over the range's box, each reference binned
-    // into every bin it crosses with the box of its part there (BvhReferenceSplitter::binParts), counted where
-    // it enters and where it leaves. Only planes that leave both sides with fewer references than the range,
-    // and cut no more references than the range has room for, are weighed.
+    // The best spatial split of `r` across `axis` (bvh_spatial.h), in the range's room.
     Split spatialSplit(const Range& r, int axis) const {
+        const spatial::Plane plane = spatial::bestPlane(prims_ + r.begin, r.count(), r.box, axis, binsFor(r),
+                                                        r.room - r.end, traversalCost_, *splitter_);
         Split best;
-        const float lo = r.box.lane(false, axis), extent = r.box.lane(true, axis) - lo;
-        const int bins = binsFor(r);
-        const float scale = float(bins) / extent;
-        if (!(extent > 0.0f) || !std::isfinite(scale)) return best;
-        float planes[kMaxBins + 1];
-        for (int k = 0; k <= bins; ++k) planes[k] = lo + extent * float(k) / float(bins);
-        auto binOf = [&](float x) { return std::min(std::max(int((x - lo) * scale), 0), bins - 1); };
-        // References within one bin by their boxes as lanes; the parts of the others in scalar boxes (binParts
-        // writes them as floats, and a vector load of floats just stored would stall), joined after.
-        Box4 boxes[kMaxBins];
-        Bounds parts[kMaxBins];
-        uint32_t entering[kMaxBins] = {}, leaving[kMaxBins] = {};
-        for (uint32_t i = r.begin; i < r.end; ++i) {
-            const BvhPrim& p = prims_[i];
-            const int first = binOf(p.lo[axis]), last = binOf(p.hi[axis]);
-            ++entering[first];
-            ++leaving[last];
-            if (first == last)
-                boxes[first].extend(primLo(p), primHi(p));
-            else
-                splitter_->binParts(p, axis, planes, first, last, parts);
-        }
-        for (int k = 0; k < bins; ++k)
-            if (!parts[k].empty()) boxes[k].extend(lanesOf(parts[k].lo), lanesOf(parts[k].hi));
-        const uint32_t n = r.count(), room = r.room - r.end;
-        const float parentArea = r.box.area();
-        float rightArea[kMaxBins];
-        uint32_t rightCount[kMaxBins];
-        Box4 acc;
-        uint32_t cnt = 0;
-        for (int b = bins - 1; b > 0; --b) {
-            acc.extend(boxes[b]);
-            cnt += leaving[b];
-            rightArea[b] = acc.area();
-            rightCount[b] = cnt;
-        }
-        acc = Box4();
-        cnt = 0;
-        for (int b = 0; b < bins - 1; ++b) {
-            acc.extend(boxes[b]);
-            cnt += entering[b];
-            const uint32_t right = rightCount[b + 1];
-            // Every reference enters at or left of b or leaves right of it, so cnt + right >= n.
-            if (cnt == 0 || right == 0 || cnt >= n || right >= n || cnt + right - n > room) continue;
-            const float cost =
-                traversalCost_ + (acc.area() * float(cnt) + rightArea[b + 1] * float(right)) / parentArea;
-            if (cost < best.cost) best = Split{axis, b, false, true, planes[b + 1], cost};
-        }
+        if (plane.bin >= 0) best = Split{axis, plane.bin, false, true, plane.pos, plane.cost};
         return best;
-    }
-
-    static F4 lanesOf(const glm::vec3& v) {
-        const float f[4] = {v.x, v.y, v.z, 0.0f};
-        return loadu4(f);
     }
 
     // Splits `r` as evaluate() decided into two measured, unevaluated ranges, which share its room.
@@ -327,7 +276,7 @@ private:
         std::pair<Range, Range> halves;
         if (r.split.spatial) {
             Range cut = r;
-            cut.end = cutStraddlers(r);
+            cut.end = spatial::cutStraddlers(prims_, r.begin, r.end, r.room, r.split.axis, r.split.pos, *splitter_);
             const float twice = 2.0f * r.split.pos;
             const int axis = r.split.axis;
             halves = partition(cut, [&](const BvhPrim& p) { return p.lo[axis] + p.hi[axis] < twice; });
@@ -346,31 +295,6 @@ private:
         halves.first.room = halves.first.end + share;
         halves.second.room = r.room - share;
         return halves;
-    }
-
-    // Cuts the references of `r` that straddle its spatial split's plane, each into its part below (in its
-    // place) and above (after the range's end, in its room); returns the new end.
-    uint32_t cutStraddlers(const Range& r) const {
-        const int axis = r.split.axis;
-        const float pos = r.split.pos;
-        uint32_t end = r.end;
-        for (uint32_t i = r.begin; i < r.end; ++i) {
-            BvhPrim& p = prims_[i];
-            if (!(p.lo[axis] < pos && p.hi[axis] > pos)) continue;
-            BvhPrim below, above;
-            const int sides = splitter_->split(p, axis, pos, below, above);
-            if (sides == 3 && end < r.room) {
-                p = below;
-                prims_[end++] = above;
-            } else if (sides == 1) {
-                p = below;
-            } else if (sides == 2) {
-                p = above;
-            }
-            // Both parts and no room left (the binning's count of straddlers can differ from the cut's by
-            // rounding), or neither: the reference stays whole.
-        }
-        return end;
     }
 
     // The object median across `axis` (ties by id, so the halves do not depend on the input order).
@@ -432,10 +356,8 @@ private:
     }
 
     // Hands the room past the right side's end, up to `room`, to the two evaluated sides: by their sizes, or all
-    // of it to one side if the other could not use it. The right side moves up by the left side's share. The
-    // order within a range changes no node (the splits depend on the set of references), so only the
-    // references the shift uncovers move: from the right side's front to past its end. A side that could use
-    // room gets at least what evaluate() saw.
+    // of it to one side if the other could not use it. The right side moves up by the left side's share
+    // (spatial::shiftUp). A side that could use room gets at least what evaluate() saw.
     void shareRoom(Range& left, Range& right, uint32_t room, bool parentOverlaps) const {
         const uint32_t toLeft = !mayCut(left, parentOverlaps)    ? 0
                                 : !mayCut(right, parentOverlaps) ? room - right.end
@@ -443,9 +365,7 @@ private:
         left.room = left.end;
         right.room = room;
         if (toLeft == 0) return;
-        const uint32_t moved = std::min(toLeft, right.count());
-        std::memcpy(static_cast<void*>(prims_ + right.end + toLeft - moved), prims_ + right.begin,
-                    size_t(moved) * sizeof(BvhPrim));
+        spatial::shiftUp(prims_, right.begin, right.end, toLeft);
         right.begin += toLeft;
         right.end += toLeft;
         left.room += toLeft;
@@ -562,42 +482,6 @@ private:
         }
         buildQueued();
         for (std::thread& th : pool) th.join();
-    }
-
-    // Moves the leaves' references to the front of the array in order, closing the gaps the ranges' unused room
-    // left, and renumbers the leaves; returns how many references there are. With a splitter, buildNode puts a
-    // node's children in the order of their ranges, so a depth-first walk in slot order meets the leaves in
-    // array order and each moves down at most.
-    uint32_t packLeaves(FinalNodeArray& nodes) const {
-        struct Visit {
-            uint32_t node;
-            int slot;
-        };
-        Visit stack[kMaxBvhDepth + 1];
-        int top = 0;
-        stack[0] = Visit{0, 0};
-        uint32_t packed = 0;
-        while (top >= 0) {
-            Visit& v = stack[top];
-            if (v.slot == kBvhWidth) {
-                --top;
-                continue;
-            }
-            uint32_t& ref = nodes[v.node].child[v.slot++];
-            if (!isLeafRef(ref)) {
-                SHADELAB_CHECK_LT(top, kMaxBvhDepth);
-                stack[++top] = Visit{ref, 0};
-                continue;
-            }
-            const uint32_t first = leafFirst(ref), count = leafCount(ref);
-            if (count == 0) continue;
-            SHADELAB_CHECK_LE(packed, first);
-            if (packed != first)
-                std::memmove(static_cast<void*>(prims_ + packed), prims_ + first, count * sizeof(BvhPrim));
-            ref = makeLeafRef(packed, count);
-            packed += count;
-        }
-        return packed;
     }
 
     // Appends the built subtrees to the top's nodes in queue order (the order the top made them).
