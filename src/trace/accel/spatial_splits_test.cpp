@@ -19,10 +19,10 @@ namespace {
 
 using test::SceneTri;
 
-// Small triangles scattered through a cube and, one in eight, long thin ones lying across the axes through
-// it, like 2CylinderEngine's cylinder walls among its bolts: the long ones' boxes take in many small ones, so
-// no object split separates them well. The case spatial splits are for.
-Scene sliverScene(int n, uint32_t seed) {
+// Small triangles scattered through a cube and, one in `sliverEvery`, long thin ones lying across the axes
+// through it, like 2CylinderEngine's cylinder walls among its bolts: the long ones' boxes take in many small
+// ones, so no object split separates them well. The case spatial splits are for.
+Scene sliverScene(int n, uint32_t seed, int sliverEvery = 8) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     MeshGeometry g;
@@ -30,7 +30,7 @@ Scene sliverScene(int n, uint32_t seed) {
         const glm::vec3 c(u(rng), u(rng), u(rng));
         const glm::vec3 along = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
         const glm::vec3 across = glm::normalize(glm::cross(along, glm::vec3(u(rng), u(rng), u(rng))));
-        const bool sliver = i % 8 == 0;
+        const bool sliver = i % sliverEvery == 0;
         const float length = sliver ? 1.0f : 0.02f, width = sliver ? 0.01f : 0.02f;
         const glm::vec3 v[3] = {c - length * along, c + length * along, c + width * across};
         for (const glm::vec3& q : v) {
@@ -148,16 +148,16 @@ TEST(SpatialSplits, BudgetAndThreadsDecideNothingElse) {
                 std::memcmp(other.data(), one.refs.data(), one.refs.size() * sizeof(BvhPrim)) != 0);
 }
 
-TEST(SpatialSplits, MeshBvhFindsTheSameHitsWithAndWithout) {
-    const Scene sc = sliverScene(6000, 13u);
+// A MeshBvh built with `options` finds exactly the hits of one built without spatial splits, closest and any,
+// with a negative control; returns the slots of the one with splits.
+uint32_t expectSameHits(const Scene& sc, const BvhBuildOptions& options, uint32_t seed) {
     const std::vector<SceneTri> tris = test::sceneTriangles(sc);
     BvhBuildOptions off;
     off.spatialSplitBudget = 0.0f;
-    const MeshBvh plain(sc, off), split(sc);
+    const MeshBvh plain(sc, off), split(sc, options);
     EXPECT_EQ(plain.slotCount(), plain.triangleCount());
-    EXPECT_GT(split.slotCount(), split.triangleCount() + split.triangleCount() / 10) << "nothing was split";
     EXPECT_TRUE(test::meshBvhIsValid(split, tris, kMaxMeshLeafSize));
-    const std::vector<Ray> rays = test::randomRays(tris, split.bounds(), 20000, 14u);
+    const std::vector<Ray> rays = test::randomRays(tris, split.bounds(), 20000, seed);
     size_t hits = 0, differ = 0, anyDiffer = 0, control = 0;
     for (size_t i = 0; i < rays.size(); ++i) {
         const float tMax = i % 3 == 0 ? INFINITY : 0.1f * float(i % 30);
@@ -176,6 +176,27 @@ TEST(SpatialSplits, MeshBvhFindsTheSameHitsWithAndWithout) {
     EXPECT_EQ(differ, 0u);
     EXPECT_EQ(anyDiffer, 0u);
     EXPECT_EQ(control, hits) << "the comparison cannot see a changed hit";
+    return split.slotCount();
+}
+
+TEST(SpatialSplits, MeshBvhFindsTheSameHitsWithAndWithout) {
+    const Scene sc = sliverScene(6000, 13u);
+    const uint32_t slots = expectSameHits(sc, BvhBuildOptions{}, 14u);
+    EXPECT_GT(slots, 6000u + 600u) << "nothing was split";
+}
+
+// Room for a fiftieth more references, where splits would take far more: they stop where the room runs out and
+// the tree stays whole. Every triangle long and thin: every plane cuts many, and by SAH none pays (the same tree
+// as without splits, or nearly).
+TEST(SpatialSplits, TheRoomRunsOutAndEveryTriangleLong) {
+    BvhBuildOptions fiftieth;
+    fiftieth.spatialSplitBudget = 0.02f;
+    const uint32_t few = expectSameHits(sliverScene(8000, 21u), fiftieth, 22u);
+    EXPECT_GT(few, 8000u) << "no split at all";
+    EXPECT_LE(few, 8000u + 160u) << "more references than the room allows";
+    const uint32_t all = expectSameHits(sliverScene(8000, 23u, 1), BvhBuildOptions{}, 24u);
+    EXPECT_GE(all, 8000u);
+    EXPECT_LE(all, 2 * 8000u);
 }
 
 }  // namespace
