@@ -93,40 +93,52 @@ Bounds partBox(const Polygon& p, const Bounds& limit, float pad) {
 }  // namespace
 
 // The box of the triangle's part in a slab is the box of its corners in the slab and of its edges' crossings with
-// the slab's two planes (the part is convex): three corners and at most three crossings per plane, with no
-// polygon kept. The first and last slabs reach out to infinity, so a corner outside the planes' span still
+// the slab's two planes (the part is convex): three corners, and for each edge one point per plane between its two
+// corners' slabs (a corner on a plane counts in the slab below it and, as that edge's crossing, in the one above).
+// No polygon is kept. The first and last slabs reach out to infinity, so a corner outside the planes' span still
 // counts; each box is then grown by the pad and kept within the reference's box, which bounds a part of a part
 // conservatively (split() clips exactly, for the references the tree keeps).
 void TriangleSplitter::binParts(const BvhPrim& ref, int axis, const float* planes, int first, int last,
                                 Bounds* boxes) const {
     glm::vec3 c[3];
     corners_(ref, c);
-    Bounds slab[33];  // slab[k - first]
     const int slabs = std::min(last - first, 32) + 1;
     last = first + slabs - 1;
-    for (int k = 0; k < slabs; ++k) slab[k] = Bounds{};
-    for (const glm::vec3& v : c) {
+    glm::vec3 lo[33], hi[33];  // slab k - first; only the first `slabs` are set
+    for (int k = 0; k < slabs; ++k) {
+        lo[k] = glm::vec3(INFINITY);
+        hi[k] = glm::vec3(-INFINITY);
+    }
+    auto add = [&](int k, const glm::vec3& v) {
+        lo[k] = glm::min(lo[k], v);
+        hi[k] = glm::max(hi[k], v);
+    };
+    int slabOf[3];
+    for (int i = 0; i < 3; ++i) {
         int k = first;
-        while (k < last && v[axis] > planes[k + 1]) ++k;
-        slab[k - first].extend(v);
+        while (k < last && c[i][axis] > planes[k + 1]) ++k;
+        slabOf[i] = k - first;
+        add(slabOf[i], c[i]);
     }
     for (int e = 0; e < 3; ++e) {
+        const int a = slabOf[e], b = slabOf[(e + 1) % 3];
+        if (a == b) continue;
         const glm::vec3& p = c[e];
         const glm::vec3& q = c[(e + 1) % 3];
-        const float lo = std::min(p[axis], q[axis]), hi = std::max(p[axis], q[axis]);
-        for (int k = first + 1; k <= last; ++k) {
-            const float pos = planes[k];
-            if (!(lo < pos && pos < hi)) continue;
-            glm::vec3 x = p + (pos - p[axis]) / (q[axis] - p[axis]) * (q - p);
+        const glm::vec3 d = q - p;
+        const float inv = 1.0f / d[axis];  // the corners lie in different slabs, so their coordinates differ
+        for (int k = std::min(a, b) + 1; k <= std::max(a, b); ++k) {
+            const float pos = planes[first + k];
+            glm::vec3 x = p + ((pos - p[axis]) * inv) * d;
             x[axis] = pos;
-            slab[k - 1 - first].extend(x);
-            slab[k - first].extend(x);
+            add(k - 1, x);
+            add(k, x);
         }
     }
     const Bounds limit = boxOf(ref);
     for (int k = 0; k < slabs; ++k)
-        if (!slab[k].empty()) {
-            const Bounds b = intersection(grown(slab[k], pad_), limit);
+        if (lo[k].x <= hi[k].x) {
+            const Bounds b = intersection(grown(Bounds{lo[k], hi[k]}, pad_), limit);
             if (!b.empty()) boxes[first + k].extend(b);
         }
 }
