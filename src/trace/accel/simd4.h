@@ -42,6 +42,12 @@ inline void truncate4(F4 a, int* out) { _mm_storeu_si128(reinterpret_cast<__m128
 // (a1, a2, a0, a3): x y z turned one lane, so a * rotate3(a) is (xy, yz, zx).
 inline F4 rotate3(F4 a) { return {_mm_shuffle_ps(a.v, a.v, _MM_SHUFFLE(3, 0, 2, 1))}; }
 inline float lane0(F4 a) { return _mm_cvtss_f32(a.v); }
+inline F4 set4(float x, float y, float z, float w) { return {_mm_setr_ps(x, y, z, w)}; }
+// a with lane `lane` (0-2) replaced by x.
+inline F4 withLane(F4 a, int lane, float x) {
+    const __m128 m = _mm_castsi128_ps(_mm_set_epi32(0, lane == 2 ? -1 : 0, lane == 1 ? -1 : 0, lane == 0 ? -1 : 0));
+    return {_mm_or_ps(_mm_andnot_ps(m, a.v), _mm_and_ps(m, _mm_set1_ps(x)))};
+}
 
 #else
 
@@ -80,6 +86,11 @@ inline void truncate4(F4 a, int* out) {
 }
 inline F4 rotate3(F4 a) { return {{a.v[1], a.v[2], a.v[0], a.v[3]}}; }
 inline float lane0(F4 a) { return a.v[0]; }
+inline F4 set4(float x, float y, float z, float w) { return {{x, y, z, w}}; }
+inline F4 withLane(F4 a, int lane, float x) {
+    a.v[lane] = x;
+    return a;
+}
 
 #endif
 

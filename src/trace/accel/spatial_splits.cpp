@@ -3,6 +3,7 @@
 #include "trace/accel/spatial_splits.h"
 
 #include "scene/bounds.h"
+#include "trace/accel/simd4.h"
 
 #include <algorithm>
 #include <cmath>
@@ -104,43 +105,51 @@ void TriangleSplitter::binParts(const BvhPrim& ref, int axis, const float* plane
     corners_(ref, c);
     const int slabs = std::min(last - first, 32) + 1;
     last = first + slabs - 1;
-    glm::vec3 lo[33], hi[33];  // slab k - first; only the first `slabs` are set
+    // Points as lanes x y z (the same IEEE operations as on glm::vec3, four at a time); slab k - first, only
+    // the first `slabs` set.
+    F4 lo[33], hi[33];
     for (int k = 0; k < slabs; ++k) {
-        lo[k] = glm::vec3(INFINITY);
-        hi[k] = glm::vec3(-INFINITY);
+        lo[k] = splat4(INFINITY);
+        hi[k] = splat4(-INFINITY);
     }
-    auto add = [&](int k, const glm::vec3& v) {
-        lo[k] = glm::min(lo[k], v);
-        hi[k] = glm::max(hi[k], v);
+    auto add = [&](int k, F4 v) {
+        lo[k] = min4(lo[k], v);
+        hi[k] = max4(hi[k], v);
     };
+    F4 v[3];
     int slabOf[3];
     for (int i = 0; i < 3; ++i) {
+        v[i] = set4(c[i].x, c[i].y, c[i].z, 0.0f);
         int k = first;
         while (k < last && c[i][axis] > planes[k + 1]) ++k;
         slabOf[i] = k - first;
-        add(slabOf[i], c[i]);
+        add(slabOf[i], v[i]);
     }
     for (int e = 0; e < 3; ++e) {
         const int a = slabOf[e], b = slabOf[(e + 1) % 3];
         if (a == b) continue;
         const glm::vec3& p = c[e];
-        const glm::vec3& q = c[(e + 1) % 3];
-        const glm::vec3 d = q - p;
-        const float inv = 1.0f / d[axis];  // the corners lie in different slabs, so their coordinates differ
+        const F4 d = v[(e + 1) % 3] - v[e];
+        const float inv = 1.0f / (c[(e + 1) % 3][axis] - p[axis]);  // different slabs: the coordinates differ
         for (int k = std::min(a, b) + 1; k <= std::max(a, b); ++k) {
             const float pos = planes[first + k];
-            glm::vec3 x = p + ((pos - p[axis]) * inv) * d;
-            x[axis] = pos;
+            const F4 x = withLane(v[e] + splat4((pos - p[axis]) * inv) * d, axis, pos);
             add(k - 1, x);
             add(k, x);
         }
     }
-    const Bounds limit = boxOf(ref);
-    for (int k = 0; k < slabs; ++k)
-        if (lo[k].x <= hi[k].x) {
-            const Bounds b = intersection(grown(Bounds{lo[k], hi[k]}, pad_), limit);
-            if (!b.empty()) boxes[first + k].extend(b);
-        }
+    const F4 pad = splat4(pad_);
+    const F4 limitLo = set4(ref.lo[0], ref.lo[1], ref.lo[2], 0.0f),
+             limitHi = set4(ref.hi[0], ref.hi[1], ref.hi[2], 0.0f);
+    for (int k = 0; k < slabs; ++k) {
+        if (!(lessEqualMask(lo[k], hi[k]) & 1)) continue;  // no point in this slab
+        const F4 l = max4(lo[k] - pad, limitLo), h = min4(hi[k] + pad, limitHi);
+        if ((lessEqualMask(l, h) & 7) != 7) continue;
+        float bl[4], bh[4];
+        store4(bl, l);
+        store4(bh, h);
+        boxes[first + k].extend(Bounds{{bl[0], bl[1], bl[2]}, {bh[0], bh[1], bh[2]}});
+    }
 }
 
 int TriangleSplitter::split(const BvhPrim& ref, int axis, float pos, BvhPrim& below, BvhPrim& above) const {
