@@ -20,10 +20,7 @@ struct Plane {
     float cost = INFINITY;  // SAH, in units of one primitive test
 };
 
-inline F4 lanesOf(const glm::vec3& v) {
-    const float f[4] = {v.x, v.y, v.z, 0.0f};
-    return loadu4(f);
-}
+inline F4 lanesOf(const glm::vec3& v) { return set4(v.x, v.y, v.z, 0.0f); }
 
 // The best spatial plane across `axis` (SBVH) for the `n` references at `prims` with box `box`: `bins` planes
 // evenly over the box, each reference binned into every bin it crosses with the box of its part there
