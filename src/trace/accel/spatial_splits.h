@@ -2,7 +2,8 @@
 // Hierarchies"). A long triangle lying across the axes has a box far larger than itself, which overlaps its
 // neighbours' boxes, so rays near it visit many leaves. SBVH lets a node split space instead of objects where
 // that costs less by SAH: every triangle straddling the plane becomes two references, each with the box of its
-// part on one side. The builder (bvh.h) decides where; this file cuts the triangles, by clipping.
+// part on one side. The builder (bvh.h) decides where; this file bins a triangle's parts (from its corners and edge
+// crossings) and cuts it at the chosen plane (by clipping).
 //
 // A reference carries its triangle's ids unchanged, so the tree's slots name the same triangles, some more than
 // once. The parts of a triangle cover it: each part's box is its clipped polygon's box grown by `pad` (the
@@ -22,7 +23,7 @@ namespace shadelab::trace {
 // The three corners of the triangle a reference stands for.
 using TriangleCorners = std::function<void(const BvhPrim& ref, glm::vec3 corners[3])>;
 
-// Cuts triangle references for the builder: the triangle clipped to the reference's box, then at the planes.
+// Triangle references for the builder: parts binned from corners and edge crossings, cuts clipped exactly.
 class TriangleSplitter final : public BvhReferenceSplitter {
 public:
     TriangleSplitter(TriangleCorners corners, float pad) : corners_(std::move(corners)), pad_(pad) {}
