@@ -4,6 +4,11 @@
 'use strict';
 (() => {
   const $ = (id) => document.getElementById(id);
+  // A text or a control's value written only when it changes: the same text written again still has the browser
+  // lay the page out, repaint it and composite the window (on SwiftShader, CPU work that the tracing workers feel
+  // on a 2-core machine, since every redraw writes every label).
+  const setText = (el, text) => { if (el.textContent !== text) el.textContent = text; };
+  const setValue = (el, value) => { if (el.value !== String(value)) el.value = value; };
   const view = $('view');        // the 2D canvas over the GL one: every view but Raster
   const glCanvas = $('gl');      // the rasterizer's WebGL2 canvas: Raster is drawn here, nothing read back
   const stage = $('stage');      // both canvases; the pointer's events land here
@@ -21,7 +26,7 @@
   let pool = null;              // the tracers' workers (tracer_pool.js)
   const uploads = new Map();    // path -> bytes of the files opened from disk, which the workers need too
 
-  function setMessage(line) { message = line || ''; $('message').textContent = message; }
+  function setMessage(line) { message = line || ''; setText($('message'), message); }
   function state() { return JSON.parse(lab.stateJson()); }
   function imageOf(bytes) {
     const img = new ImageData(width, height);
@@ -67,9 +72,18 @@
     if (pool.running() === 'global') globalJob = null;  // the pool stops it; Global starts again when shown
     const w = width, h = height, t0 = performance.now();
     const r = { revision: lab.referenceRevision(), width: w, height: h, image: null };
-    r.done = pool.reference(sceneMessage(), w, h, (f) => { $('progress').textContent = `reference ${Math.round(100 * f)} %`; })
+    // The progress line appears after a quarter of a second and changes at most four times a second: each change
+    // repaints and composites the window, which on SwiftShader costs the workers more than a small reference takes.
+    let shown = t0;
+    const progress = (f) => {
+      const now = performance.now();
+      if (now - shown < 250) return;
+      shown = now;
+      setText($('progress'), `reference ${Math.round(100 * f)} %`);
+    };
+    r.done = pool.reference(sceneMessage(), w, h, progress)
       .then(({ rgba, coverage }) => {
-        $('progress').textContent = '';
+        setText($('progress'), '');
         const bytes = lab.setReference(rgba, coverage, w, h);
         if (typeof bytes === 'string') throw new Error(bytes);
         r.image = imageOf(bytes);
@@ -96,7 +110,7 @@
       if (typeof bytes === 'string') { setMessage(bytes); job.reject(new Error(bytes)); return; }
       job.image = imageOf(bytes);
       job.samples = m.samples;
-      $('progress').textContent = `path traced: ${m.samples} samples per pixel`;
+      setText($('progress'), `path traced: ${m.samples} samples per pixel`);
       if (m.samples >= limit) job.resolve(job.image);
       if (globalJob === job) show();
     }, (e) => { setMessage(e.message); job.reject(e); }, limit);
@@ -108,11 +122,11 @@
 
   // Draws what the view mode shows; starts the tracers the mode needs and are not current.
   function show() {
-    $('difference-text').textContent = '';
+    setText($('difference-text'), '');
     if (mode !== 'global' && pool.running() === 'global') {  // nobody watches it
       pool.stop();
       globalJob = null;
-      $('progress').textContent = '';
+      setText($('progress'), '');
     }
     view.classList.toggle('off', mode === 'raster');
     if (mode === 'raster') { if (!glDrawn) drawGl(); return; }
@@ -137,7 +151,7 @@
       if (!ref) { ctx2d.putImageData(raster, 0, 0); return; }
       const heat = lab.differenceImage();
       if (heat.length) ctx2d.putImageData(imageOf(heat), 0, 0);
-      $('difference-text').textContent = lab.differenceText();
+      setText($('difference-text'), lab.differenceText());
     }
   }
 
@@ -177,24 +191,24 @@
   function updateControls() {
     const s = state();
     document.querySelectorAll('[data-step]').forEach((b) => b.classList.toggle('on', Number(b.dataset.step) === s.step));
-    $('model').value = s.model;
+    setValue($('model'), s.model);
     const selected = s.objects.find((o) => o.id === s.selected);
-    $('selected-label').textContent = selected ? selected.label : 'nothing';
+    setText($('selected-label'), selected ? selected.label : 'nothing');
     if (s.material) {
-      if (document.activeElement !== $('shininess')) $('shininess').value = Math.log2(Math.max(1, s.material.s));
-      $('shininess-value').textContent = s.material.s.toPrecision(4);
+      if (document.activeElement !== $('shininess')) setValue($('shininess'), Math.log2(Math.max(1, s.material.s)));
+      setText($('shininess-value'), s.material.s.toPrecision(4));
     }
     for (const field of ['ma', 'md', 'ms']) {
       const c = s.material && s.material.colors[field];
       $(field).disabled = $(field + '-color').disabled = !c;
       if (!c) continue;
-      if (document.activeElement !== $(field)) $(field).value = Math.min(1, c.intensity);
-      if (document.activeElement !== $(field + '-color')) $(field + '-color').value = hexOf(c.color);
-      $(field + '-value').textContent = c.intensity.toFixed(2);
+      if (document.activeElement !== $(field)) setValue($(field), Math.min(1, c.intensity));
+      if (document.activeElement !== $(field + '-color')) setValue($(field + '-color'), hexOf(c.color));
+      setText($(field + '-value'), c.intensity.toFixed(2));
     }
     updateLights(s.lights);
     schedulePlots(JSON.stringify([s.selected, s.model, s.material]));
-    $('caption').textContent = `${s.title || s.file} · ${s.model} · step ${s.step}`;
+    setText($('caption'), `${s.title || s.file} · ${s.model} · step ${s.step}`);
   }
 
   // '#rrggbb' for a colour whose largest channel is 1 (the split of app::splitIntensity), and back.
@@ -223,10 +237,10 @@
     }
     lights.forEach((l, i) => {
       const row = box.children[i], [color, intensity] = row.querySelectorAll('input');
-      row.querySelector('.name').textContent = `${l.name || 'light ' + (i + 1)} (${l.type})`;
-      if (document.activeElement !== color) color.value = hexOf(l.color);
-      if (document.activeElement !== intensity) intensity.value = Math.log2(Math.max(1 / 64, l.intensity));
-      row.querySelector('output').textContent = l.intensity.toPrecision(3);
+      setText(row.querySelector('.name'), `${l.name || 'light ' + (i + 1)} (${l.type})`);
+      if (document.activeElement !== color) setValue(color, hexOf(l.color));
+      if (document.activeElement !== intensity) setValue(intensity, Math.log2(Math.max(1 / 64, l.intensity)));
+      setText(row.querySelector('output'), l.intensity.toPrecision(3));
     });
     $('add-light').disabled = lights.length >= 8;
   }
@@ -460,7 +474,7 @@
       const id = lab.objectAt(x, y);
       // A selection changes no render (no revision), but the outline: the display pass runs again.
       if (id) { glDrawn = false; act({ action: 'select', object: '#' + id }); }
-      $('probe').textContent = lab.probe(x, y, width, height);
+      setText($('probe'), lab.probe(x, y, width, height));
     });
     stage.addEventListener('wheel', (e) => { e.preventDefault(); lab.zoom(-Math.sign(e.deltaY)); redraw(); }, { passive: false });
   }

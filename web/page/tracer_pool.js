@@ -1,9 +1,11 @@
 // TracerPool: the page's Web Workers, started once and kept (each costs a module instantiation, so a job must not
 // start workers). The wasm is compiled once, by the page, and handed to every worker. A reference job sends the
-// scene to every worker, and worker k traces tiles k, k + n, k + 2n, ... of it without waiting for the page
-// (the tiles are small and many, so the shares even out); a new job, or a stop, ends the old one between tiles,
-// and tiles of an old job that arrive late are dropped. The Global view's path tracer shares the rows the same
-// way (worker k: rows k, k + n, ...), a pass at a time, until another job replaces it.
+// scene to every worker; worker k traces tiles k, k + n, k + 2n, ... of the first half of the job without waiting
+// for the page, and the page hands out the second half one tile at a time, a tile to whichever worker has just
+// sent one, so a worker that runs slower (it shares its core with the page, or the machine is busy) gets fewer and
+// all finish together. A worker always has a tile in hand, so none waits for the page. A new job, or a stop, ends
+// the old one between tiles, and tiles of an old job that arrive late are dropped. The Global view's path tracer
+// shares the rows by turns (worker k: rows k, k + n, ...), a pass at a time, until another job replaces it.
 'use strict';
 class TracerPool {
   constructor(count, wasmModule) {
@@ -34,7 +36,8 @@ class TracerPool {
   reference(scene, w, h, onProgress) {
     this.stop();
     const id = this.job;
-    const job = { id, kind: 'reference', w, h, count: -1, arrived: 0, onProgress,
+    // next: the next tile to hand out, once the first worker has said how many there are and where its share ends.
+    const job = { id, kind: 'reference', w, h, count: -1, next: -1, arrived: 0, onProgress,
       rgba: new Float32Array(w * h * 4), coverage: new Uint32Array(w * h) };
     const done = new Promise((resolve, reject) => { job.resolve = resolve; job.reject = reject; });
     done.catch(() => {});
@@ -76,7 +79,10 @@ class TracerPool {
       if (job.onError) job.onError(error);
       return;
     }
-    if (m.kind === 'count') { job.count = m.count; return; }
+    if (m.kind === 'count') {
+      if (job.count < 0) { job.count = m.count; job.next = m.until; }
+      return;
+    }
     if (m.kind === 'global') { this._globalRows(job, k, m); return; }
     const t = m.tile;
     for (let y = 0; y < t.height; ++y) {
@@ -84,6 +90,7 @@ class TracerPool {
       job.coverage.set(t.coverage.subarray(y * t.width, (y + 1) * t.width), (t.y0 + y) * job.w + t.x0);
     }
     ++job.arrived;
+    if (job.next < job.count) this.workers[k].worker.postMessage({ kind: 'tile', job: job.id, index: job.next++ });
     if (job.onProgress) job.onProgress(job.arrived / job.count);
     if (job.arrived === job.count) {
       this.current = null;

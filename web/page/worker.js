@@ -48,6 +48,27 @@ function nextTask() {
   return new Promise((resolve) => { waiting.push(resolve); channel.port2.postMessage(0); });
 }
 
+// Traces the tiles queued for the reference job `mine`, sending each when done, until the queue is empty or
+// another job (or a stop) replaces it. It lets the next message in every 2 ms (nextTask), between tiles: a stop,
+// a new job, or another tile for the queue, which this loop then traces too.
+async function traceQueue(mine) {
+  mine.running = true;
+  try {
+    let resumed = performance.now();
+    while (current === mine && mine.queue.length) {
+      const i = mine.queue.shift();
+      const t = mine.tracer.traceTile(i);
+      postMessage({ kind: 'tile', job: mine.job, index: i, tile: t }, [t.rgba.buffer, t.coverage.buffer]);
+      if (performance.now() - resumed > 2) {
+        await nextTask();
+        resumed = performance.now();
+      }
+    }
+  } finally {
+    mine.running = false;
+  }
+}
+
 // Ends the job in hand (its loop sees current change and stops); the tracer stays kept for the next job.
 function drop() {
   current = null;
@@ -62,17 +83,20 @@ onmessage = async (event) => {
     if (msg.kind === 'stop') {
       drop();
     } else if (msg.kind === 'reference') {
-      // Tiles first, first + step, ... of the job (the pool's workers share them by turns), each sent when
-      // done; between tiles the next message gets in, and a stop or a new job ends this one.
+      // Tiles first, first + step, ... of the first half of the job (the pool's workers share it by turns), then
+      // the tiles the page hands out one by one as this worker's tiles arrive there (tracer_pool.js).
       drop();
-      const mine = { job: msg.job, tracer: withTracer(M, msg) };
+      const mine = { job: msg.job, tracer: withTracer(M, msg), queue: [], running: false };
       current = mine;
       const count = mine.tracer.startReference(msg.width, msg.height);
-      postMessage({ kind: 'count', job: msg.job, count });
-      for (let i = msg.first; i < count && current === mine; i += msg.step) {
-        const t = mine.tracer.traceTile(i);
-        postMessage({ kind: 'tile', job: msg.job, index: i, tile: t }, [t.rgba.buffer, t.coverage.buffer]);
-        await nextTask();
+      const until = Math.ceil(count / 2);
+      postMessage({ kind: 'count', job: msg.job, count, until });
+      for (let i = msg.first; i < until; i += msg.step) mine.queue.push(i);
+      await traceQueue(mine);
+    } else if (msg.kind === 'tile') {
+      if (current && current.job === msg.job && current.queue) {
+        current.queue.push(msg.index);
+        if (!current.running) await traceQueue(current);
       }
     } else if (msg.kind === 'global') {
       // The path tracer over this worker's share of the rows (first, first + step, ...), one sample per pixel a
