@@ -1,11 +1,12 @@
 // TracerPool: the page's Web Workers, started once and kept (each costs a module instantiation, so a job must not
 // start workers). The wasm is compiled once, by the page, and handed to every worker. A reference job sends the
 // scene to every worker; worker k traces tiles k, k + n, k + 2n, ... of the first half of the job without waiting
-// for the page, and the page hands out the second half one tile at a time, a tile to whichever worker has just
-// sent one, so a worker that runs slower (it shares its core with the page, or the machine is busy) gets fewer and
-// all finish together. A worker always has a tile in hand, so none waits for the page. A new job, or a stop, ends
-// the old one between tiles, and tiles of an old job that arrive late are dropped. The Global view's path tracer
-// shares the rows by turns (worker k: rows k, k + n, ...), a pass at a time, until another job replaces it.
+// for the page, sending what it has done every 2 ms in one message, and the page hands out the second half as the
+// tiles come in, as many to a worker as it has just sent, so a worker that runs slower (it shares its core with the
+// page, or the machine is busy) gets fewer and all finish together. A worker always has tiles in hand, so none
+// waits for the page. A new job, or a stop, ends the old one between tiles, and tiles of an old job that arrive
+// late are dropped. The Global view's path tracer shares the rows by turns (worker k: rows k, k + n, ...), a pass
+// at a time, until another job replaces it.
 'use strict';
 class TracerPool {
   constructor(count, wasmModule) {
@@ -84,13 +85,19 @@ class TracerPool {
       return;
     }
     if (m.kind === 'global') { this._globalRows(job, k, m); return; }
-    const t = m.tile;
-    for (let y = 0; y < t.height; ++y) {
-      job.rgba.set(t.rgba.subarray(y * t.width * 4, (y + 1) * t.width * 4), ((t.y0 + y) * job.w + t.x0) * 4);
-      job.coverage.set(t.coverage.subarray(y * t.width, (y + 1) * t.width), (t.y0 + y) * job.w + t.x0);
+    // A worker's batch of tiles, packed one after another in m.rgba and m.coverage.
+    for (const t of m.tiles) {
+      for (let y = 0; y < t.height; ++y) {
+        const row = (t.y0 + y) * job.w + t.x0;
+        job.rgba.set(m.rgba.subarray(t.rgba + y * t.width * 4, t.rgba + (y + 1) * t.width * 4), row * 4);
+        job.coverage.set(m.coverage.subarray(t.coverage + y * t.width, t.coverage + (y + 1) * t.width), row);
+      }
+      ++job.arrived;
     }
-    ++job.arrived;
-    if (job.next < job.count) this.workers[k].worker.postMessage({ kind: 'tile', job: job.id, index: job.next++ });
+    // As many tiles of the second half to this worker as it has just sent.
+    const more = [];
+    while (more.length < m.tiles.length && job.next < job.count) more.push(job.next++);
+    if (more.length) this.workers[k].worker.postMessage({ kind: 'tiles', job: job.id, indices: more });
     if (job.onProgress) job.onProgress(job.arrived / job.count);
     if (job.arrived === job.count) {
       this.current = null;

@@ -48,23 +48,57 @@ function nextTask() {
   return new Promise((resolve) => { waiting.push(resolve); channel.port2.postMessage(0); });
 }
 
-// Traces the tiles queued for the reference job `mine`, sending each when done, until the queue is empty or
-// another job (or a stop) replaces it. It lets the next message in every 2 ms (nextTask), between tiles: a stop,
-// a new job, or another tile for the queue, which this loop then traces too.
+// The tiles traced since the last message, packed one after another into growing scratch arrays (no allocation
+// per tile: copying each tile into a fresh array of its own took a fifth of a worker's time).
+const batch = {
+  tiles: [], rgba: new Float32Array(0), coverage: new Uint32Array(0), floats: 0, ids: 0,
+  // Appends tile `index` from the views of the module's memory that traceTile returned.
+  add(index, v) {
+    this.rgba = fit(this.rgba, this.floats + v.rgba.length);
+    this.coverage = fit(this.coverage, this.ids + v.coverage.length);
+    this.rgba.set(v.rgba, this.floats);
+    this.coverage.set(v.coverage, this.ids);
+    this.tiles.push({ index, x0: v.x0, y0: v.y0, width: v.width, height: v.height, rgba: this.floats, coverage: this.ids });
+    this.floats += v.rgba.length;
+    this.ids += v.coverage.length;
+  },
+  // Sends the tiles (copies of just the used part, transferred) and empties the batch.
+  send(job) {
+    if (!this.tiles.length) return;
+    const rgba = this.rgba.slice(0, this.floats), coverage = this.coverage.slice(0, this.ids);
+    postMessage({ kind: 'tiles', job, tiles: this.tiles, rgba, coverage }, [rgba.buffer, coverage.buffer]);
+    this.clear();
+  },
+  clear() {
+    this.tiles = [];
+    this.floats = this.ids = 0;
+  },
+};
+function fit(array, length) {
+  if (array.length >= length) return array;
+  const bigger = new array.constructor(Math.max(length, 2 * array.length));
+  bigger.set(array);
+  return bigger;
+}
+
+// Traces the tiles queued for the reference job `mine` until the queue is empty or another job (or a stop)
+// replaces it. Every 2 ms, between tiles, it sends the tiles done so far in one message and lets the next
+// message in (nextTask): a stop, a new job, or more tiles for the queue, which this loop then traces too.
 async function traceQueue(mine) {
   mine.running = true;
   try {
     let resumed = performance.now();
     while (current === mine && mine.queue.length) {
       const i = mine.queue.shift();
-      const t = mine.tracer.traceTile(i);
-      postMessage({ kind: 'tile', job: mine.job, index: i, tile: t }, [t.rgba.buffer, t.coverage.buffer]);
-      if (performance.now() - resumed > 2) {
+      batch.add(i, mine.tracer.traceTile(i));  // views, valid until the next call into the module
+      if (performance.now() - resumed > 2 || !mine.queue.length) {
+        batch.send(mine.job);
         await nextTask();
         resumed = performance.now();
       }
     }
   } finally {
+    batch.clear();  // sent before every wait; left over only when a tile threw
     mine.running = false;
   }
 }
@@ -93,9 +127,9 @@ onmessage = async (event) => {
       postMessage({ kind: 'count', job: msg.job, count, until });
       for (let i = msg.first; i < until; i += msg.step) mine.queue.push(i);
       await traceQueue(mine);
-    } else if (msg.kind === 'tile') {
+    } else if (msg.kind === 'tiles') {
       if (current && current.job === msg.job && current.queue) {
-        current.queue.push(msg.index);
+        current.queue.push(...msg.indices);
         if (!current.running) await traceQueue(current);
       }
     } else if (msg.kind === 'global') {

@@ -90,16 +90,18 @@ WorkerTracer* createTracer(const std::string& sceneJson, const std::string& base
 
 std::string createError() { return lastCreateError; }
 
-// {x0, y0, width, height, rgba: Float32Array, coverage: Uint32Array}, copies the worker can transfer.
-val traceTile(const WorkerTracer& tracer, int index) {
-    const trace::TileResult r = tracer.traceTile(index);
+// {x0, y0, width, height, rgba: Float32Array, coverage: Uint32Array}: views of the tracer's tile in the module's
+// memory, valid until the next call into the module; the worker copies them (slice) to transfer them. A copy made
+// here, with `new Float32Array(view)` per tile, took a fifth of a worker's time.
+val traceTile(WorkerTracer& tracer, int index) {
+    const trace::TileResult& r = tracer.traceTile(index);
     val out = val::object();
     out.set("x0", r.tile.x0);
     out.set("y0", r.tile.y0);
     out.set("width", r.tile.width);
     out.set("height", r.tile.height);
-    out.set("rgba", val::global("Float32Array").new_(view(r.rgba)));
-    out.set("coverage", val::global("Uint32Array").new_(view(r.coverage)));
+    out.set("rgba", view(r.rgba));
+    out.set("coverage", view(r.coverage));
     return out;
 }
 

@@ -43,11 +43,10 @@ int WorkerTracer::startReference(int width, int height) {
     return int(job_->tiles.size());
 }
 
-trace::TileResult WorkerTracer::traceTile(int index) const {
+const trace::TileResult& WorkerTracer::traceTile(int index) {
     if (!job_ || index < 0 || index >= int(job_->tiles.size())) throw std::out_of_range("no such tile");
-    trace::TileResult out;
-    job_->render(index, out);
-    return out;
+    job_->render(index, tile_);
+    return tile_;
 }
 
 void WorkerTracer::startGlobal(int width, int height) {

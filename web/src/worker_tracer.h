@@ -27,8 +27,9 @@ public:
     // The Whitted reference of a width x height request (render::RenderRequest, Engine::Trace, with coverage):
     // sets up the job and returns how many tiles it has.
     int startReference(int width, int height);
-    // Renders tile `index` of the job.
-    trace::TileResult traceTile(int index) const;
+    // Renders tile `index` of the job into the tile this tracer keeps (its buffers reused from tile to tile), valid
+    // until the next call.
+    const trace::TileResult& traceTile(int index);
 
     // The path tracer's progressive image at width x height (the scene's depth, the request's defaults);
     // addSamples adds `count` samples to every pixel, image() is the running mean, linear RGBA.
@@ -45,6 +46,7 @@ public:
 private:
     std::shared_ptr<const trace::TraceScene> scene_;
     std::unique_ptr<trace::TraceJob> job_;
+    trace::TileResult tile_;
     std::unique_ptr<trace::PathRender> path_;
 };
 
