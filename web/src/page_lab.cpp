@@ -192,7 +192,13 @@ std::string PageLab::stateJson() const {
     return j.dump();
 }
 
-std::string PageLab::sceneJson() const { return sceneToJson(state_.scene); }
+const std::string& PageLab::sceneJson() {
+    if (sceneJsonRevision_ != state_.revision) {
+        sceneJson_ = sceneToJson(state_.scene);
+        sceneJsonRevision_ = state_.revision;
+    }
+    return sceneJson_;
+}
 
 std::string PageLab::sceneDir() const { return std::filesystem::path(state_.scenePath).parent_path().string(); }
 

@@ -45,8 +45,9 @@ public:
     // lights, ambient, the objects' labels, and the warnings of the last load.
     std::string stateJson() const;
     // The scene as `Save` writes it (scene/scene_json.h), and the folder its relative model paths start from:
-    // what a worker needs to rebuild the same scene.
-    std::string sceneJson() const;
+    // what a worker needs to rebuild the same scene. The text is kept until the next change a renderer can see
+    // (revision): every reference, Global pass and link asks for it, and writing it takes milliseconds in wasm.
+    const std::string& sceneJson();
     std::string sceneDir() const;
     // The edit counter the reference depends on: a reference traced at another revision is stale. A double
     // for JavaScript (embind has no 64-bit integers here), exact to 2^53 edits.
@@ -105,6 +106,8 @@ private:
     std::vector<uint32_t> pickCoverage_;             // objectAt's read of drawRaster's ids
     std::unique_ptr<trace::TraceScene> probeScene_;  // probe's tracer scene, of state_ at probeRevision_
     uint64_t probeRevision_ = 0;
+    std::string sceneJson_;  // sceneJson() of state_ at sceneJsonRevision_ (0: none yet)
+    uint64_t sceneJsonRevision_ = 0;
     std::vector<uint8_t> rasterRgba_, referenceRgba_, globalRgba_, heatRgba_, coverageRgba_;
     std::string differenceText_;
 };
