@@ -94,10 +94,11 @@ class TracerPool {
       }
       ++job.arrived;
     }
-    // As many tiles of the second half to this worker as it has just sent.
+    // As many tiles of the second half to this worker as it has just sent, and its arrays back for the next batch.
     const more = [];
     while (more.length < m.tiles.length && job.next < job.count) more.push(job.next++);
-    if (more.length) this.workers[k].worker.postMessage({ kind: 'tiles', job: job.id, indices: more });
+    this.workers[k].worker.postMessage({ kind: 'tiles', job: job.id, indices: more, rgba: m.rgba, coverage: m.coverage },
+      [m.rgba.buffer, m.coverage.buffer]);
     if (job.onProgress) job.onProgress(job.arrived / job.count);
     if (job.arrived === job.count) {
       this.current = null;
