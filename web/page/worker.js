@@ -127,7 +127,7 @@ onmessage = async (event) => {
       drop();
     } else if (msg.kind === 'reference') {
       // Tiles first, first + step, ... of the first half of the job (the pool's workers share it by turns), then
-      // the tiles the page hands out one by one as this worker's tiles arrive there (tracer_pool.js).
+      // the tiles of the second half the page hands out as this worker's batches arrive there (tracer_pool.js).
       drop();
       const mine = { job: msg.job, tracer: withTracer(M, msg), queue: [], running: false };
       current = mine;
