@@ -4,6 +4,8 @@
 #include "compare/compare_report.h"
 #include "gl/shader_dialect.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -57,10 +59,34 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
                      : in.mode == ViewMode::Split      ? 2
                      : in.mode == ViewMode::Difference ? 3
                                                        : 0;
-    const bool outline = in.selected != 0 && in.coverage != 0;
-    const bool filmic = in.display.transform == ViewTransform::Filmic;
-    const gl::Program& program =
-        this->program(mode, in.encoding == Encoding::Srgb ? 1 : 0, outline ? 1 : 0, filmic ? 1 : 0);
+    const int srgb = in.encoding == Encoding::Srgb ? 1 : 0;
+    const int filmic = in.display.transform == ViewTransform::Filmic ? 1 : 0;
+    glBindVertexArray(vao_.id());
+    if (in.selected == 0 || in.coverage == 0) {
+        drawPass(program(mode, srgb, 0, filmic), rect, in);
+    } else if (!in.selectedBounds) {
+        drawPass(program(mode, srgb, 1, filmic), rect, in);
+    } else {
+        // The outline costs five coverage look-ups a pixel, as much as the rest of the pass: the image without it,
+        // then again with it where the selected object's pixels, two image pixels away at most, can be.
+        drawPass(program(mode, srgb, 0, filmic), rect, in);
+        const ImageRect box = outlineScissor(rect, in);
+        if (box.width > 0 && box.height > 0) {
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(box.x, box.y, box.width, box.height);
+            drawPass(program(mode, srgb, 1, filmic), rect, in);
+            glDisable(GL_SCISSOR_TEST);
+        }
+    }
+    glBindVertexArray(0);
+    for (int i = 4; i >= 0; --i) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + i));
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glUseProgram(0);
+}
+
+void ImageView::drawPass(const gl::Program& program, const ImageRect& rect, const ImageViewInputs& in) const {
     glUseProgram(program.id());
     const GLuint textures[5] = {in.raster, in.traced ? in.traced : in.raster, in.tiles, ramp_.id(), in.coverage};
     const char* samplers[5] = {"t_raster", "t_traced", "t_tiles", "t_ramp", "t_coverage"};
@@ -77,14 +103,20 @@ void ImageView::draw(const ImageRect& rect, const ImageViewInputs& in) const {
     glUniform1f(program.uniform("u_exposure"), in.display.scale());
     glUniform1f(program.uniform("u_tileSize"), float(in.tileSize));
     glUniform1ui(program.uniform("u_selected"), in.selected);
-    glBindVertexArray(vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    for (int i = 4; i >= 0; --i) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + i));
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glUseProgram(0);
+}
+
+ImageRect ImageView::outlineScissor(const ImageRect& rect, const ImageViewInputs& in) {
+    // view_image.frag's texel of window pixel p is floor((p + 0.5 - origin) * scale): the window pixels whose texels
+    // lie within two of the bounds, with a pixel to spare for the rounding, clipped to the image's rectangle.
+    const ImageRect& b = *in.selectedBounds;
+    if (b.width <= 0 || b.height <= 0) return ImageRect{};
+    const double sx = double(rect.width) / double(in.imageWidth), sy = double(rect.height) / double(in.imageHeight);
+    const int x0 = std::max(rect.x, rect.x + int(std::floor((b.x - 2) * sx)) - 1);
+    const int y0 = std::max(rect.y, rect.y + int(std::floor((b.y - 2) * sy)) - 1);
+    const int x1 = std::min(rect.x + rect.width, rect.x + int(std::ceil((b.x + b.width + 2) * sx)) + 1);
+    const int y1 = std::min(rect.y + rect.height, rect.y + int(std::ceil((b.y + b.height + 2) * sy)) + 1);
+    return x1 > x0 && y1 > y0 ? ImageRect{x0, y0, x1 - x0, y1 - y0} : ImageRect{};
 }
 
 }  // namespace shadelab::app

@@ -9,6 +9,7 @@
 #include "gl/program.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace shadelab::app {
 
@@ -25,6 +26,9 @@ struct ImageViewInputs {
     float gain = 16.0f;
     GLuint coverage = 0;    // R32UI coverage ids of the raster image, or 0
     uint32_t selected = 0;  // coverage id outlined in the image (scene/coverage.h); 0: none
+    // The image pixels (GL row order, x and y the lower-left corner) where the selected object's coverage ids can
+    // lie (RasterRenderer::objectRect), or unset: anywhere. The outline's look-ups run only around them.
+    std::optional<ImageRect> selectedBounds;
 };
 
 class ImageView {
@@ -40,6 +44,10 @@ public:
 
 private:
     gl::Program& program(int mode, int srgb, int outline, int filmic) const;
+    // One full-rectangle triangle through `program` with the inputs' textures and uniforms.
+    void drawPass(const gl::Program& program, const ImageRect& rect, const ImageViewInputs& in) const;
+    // The window pixels where the outline can show: around in.selectedBounds, inside `rect`; empty if none.
+    static ImageRect outlineScissor(const ImageRect& rect, const ImageViewInputs& in);
 
     gl::ShaderLibrary shaders_;
     mutable gl::Program programs_[4][2][2][2];  // [mode][sRGB][selection outline][filmic], built when first used

@@ -359,6 +359,10 @@ void Viewer::compose() {
     in.gain = float(state_.heatGain);
     in.coverage = raster_->target().coverageTexture();
     in.selected = state_.selected;
+    if (in.selected != 0) {
+        const raster::PixelRect r = raster_->objectRect(state_.scene, in.selected);
+        in.selectedBounds = ImageRect{r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0};
+    }
     imageView_->draw(layout_.fbRect, in);
     if (fields_.captions) drawCaptions();
     drawToast();

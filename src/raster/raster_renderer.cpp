@@ -317,6 +317,10 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
 
     std::optional<DrawKey> key;
     if (&out == &target_) {
+        if (band.top == 0 && band.rows == height)
+            targetViewProj_ = frame.viewProj;
+        else
+            targetViewProj_.reset();
         if (reusable && mirrors == 0) {
             // Everything the colour pass reads besides the materials (redraw_plan.h): the scene's part, and
             // what this renderer derives from it or holds.
@@ -359,6 +363,12 @@ void RasterRenderer::render(RenderTarget& out, const Scene& scene, int width, in
     drawPasses(scene, frame, PassOptions{});
     if (key) partial_.remember(std::move(*key));
     gl::checkError("RasterRenderer::draw");
+}
+
+PixelRect RasterRenderer::objectRect(const Scene& scene, uint32_t id) const {
+    if (!targetViewProj_) return PixelRect{0, 0, target_.width(), target_.height()};
+    return PartialRedraw::objectsRect(scene, geometry_.ranges, *targetViewProj_, {id}, target_.width(),
+                                      target_.height());
 }
 
 // The partial redraw (partial_redraw.h): the listed objects drawn again over a copy of the image's depth, only

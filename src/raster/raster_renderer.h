@@ -61,6 +61,10 @@ public:
               glm::vec2 jitter = glm::vec2(0.0f));
 
     const RenderTarget& target() const { return target_; }
+    // The pixels of target() (GL row order) where object `id`'s coverage can lie: its bounds projected with the
+    // camera of the last draw into target() (PartialRedraw::objectsRect), empty when it is off screen, all of them
+    // for a plane or after a draw of a band. The display pass outlines a selected object only there.
+    PixelRect objectRect(const Scene& scene, uint32_t id) const;
 
     // The viewer's partial redraw (docs/viewer.md, "Partial redraw"), off by default. When on, a draw of the whole
     // image at the pixel centres with coverage, after one whose inputs differed only in some objects' materials,
@@ -134,9 +138,10 @@ private:
     gl::Buffer frameUbo_;
     GeometryBuffers geometry_;
     RenderTarget target_;
-    RenderTarget sampleTarget_;  // drawSample's
-    PartialRedraw partial_;      // what target_ holds, when a partial redraw may start from it
-    size_t batchTriangles_ = 0;  // the mesh passes' batches (setTriangleBatches)
+    RenderTarget sampleTarget_;                // drawSample's
+    PartialRedraw partial_;                    // what target_ holds, when a partial redraw may start from it
+    std::optional<glm::mat4> targetViewProj_;  // the camera of target_'s last whole draw (objectRect)
+    size_t batchTriangles_ = 0;                // the mesh passes' batches (setTriangleBatches)
     bool targetAlpha_ = true;
     bool environmentsRendered_ = false;
     DrawReport report_;

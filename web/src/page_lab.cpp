@@ -232,6 +232,10 @@ void PageLab::drawRaster(int width, int height) {
     in.display = render::displayOf(request, state_.scene);
     in.coverage = target.coverageTexture();
     in.selected = state_.selected;
+    if (in.selected != 0) {
+        const raster::PixelRect r = renderer_->objectRect(state_.scene, in.selected);
+        in.selectedBounds = app::ImageRect{r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0};
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     view_->draw({0, 0, width, height}, in);
     coverageInTarget_ = true;
