@@ -91,8 +91,8 @@ WorkerTracer* createTracer(const std::string& sceneJson, const std::string& base
 std::string createError() { return lastCreateError; }
 
 // {x0, y0, width, height, rgba: Float32Array, coverage: Uint32Array}: views of the tracer's tile in the module's
-// memory, valid until the next call into the module; the worker copies them (slice) to transfer them. A copy made
-// here, with `new Float32Array(view)` per tile, took a fifth of a worker's time.
+// memory, valid until the next call into the module; the worker copies them into the arrays of its batch
+// (worker.js). A copy made here, with `new Float32Array(view)` per tile, took a fifth of a worker's time.
 val traceTile(WorkerTracer& tracer, int index) {
     const trace::TileResult& r = tracer.traceTile(index);
     val out = val::object();
