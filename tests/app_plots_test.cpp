@@ -248,3 +248,54 @@ TEST(AlbedoPlot, CurvesTellWhichModelsKeepTheirEnergy) {
                    [](const shading::vec3& L, const shading::vec3&) { return 0.5f * std::max(L.z, 0.0f); });
     EXPECT_NEAR(copy.curves.back().albedo[3], 0.5f, 2e-3f);
 }
+
+// The plot shown before lends the curves whose inputs did not change: for a change of each input, the plot
+// made with it equals the plot made from nothing, curve for curve and value for value. The curves that
+// depend on the changed input do change (so a curve lent when it should not be would be seen), and a previous
+// plot of other view angles lends nothing.
+TEST(AlbedoPlot, CurvesLentByThePreviousPlotEqualCurvesIntegratedAgain) {
+    const auto same = [](const AlbedoPlot& a, const AlbedoPlot& b) {
+        if (a.curves.size() != b.curves.size() || a.viewAngles != b.viewAngles) return false;
+        for (size_t k = 0; k < a.curves.size(); ++k)
+            if (a.curves[k].label != b.curves[k].label || a.curves[k].albedo != b.curves[k].albedo ||
+                a.curves[k].dashed != b.curves[k].dashed)
+                return false;
+        return true;
+    };
+    AlbedoPlotSettings base;
+    base.phongExponent = 40.0f;
+    base.roughness = 0.3f;
+    base.clearcoatGloss = 0.8f;
+    base.sheenRoughness = 0.4f;
+    base.quadrature = {48, 24};  // coarser than the panel's: the lending, not the integral, is under test
+    const AlbedoPlot before = makeAlbedoPlot(base);
+    struct Change {
+        const char* what;
+        void (*apply)(AlbedoPlotSettings&);
+        std::vector<size_t> changed;  // the curves that depend on it
+    };
+    const std::vector<Change> changes = {
+        {"s", [](AlbedoPlotSettings& s) { s.phongExponent = 90.0f; }, {1, 2, 3, 4}},
+        {"roughness", [](AlbedoPlotSettings& s) { s.roughness = 0.6f; }, {5, 6, 7, 8, 9}},
+        {"coat gloss", [](AlbedoPlotSettings& s) { s.clearcoatGloss = 0.2f; }, {9}},
+        {"sheen roughness", [](AlbedoPlotSettings& s) { s.sheenRoughness = 0.9f; }, {10}},
+        {"nothing", [](AlbedoPlotSettings&) {}, {}},
+    };
+    for (const Change& c : changes) {
+        AlbedoPlotSettings next = base;
+        c.apply(next);
+        const AlbedoPlot fresh = makeAlbedoPlot(next), lent = makeAlbedoPlot(next, &before);
+        EXPECT_TRUE(same(lent, fresh)) << c.what;
+        for (size_t k = 0; k < fresh.curves.size(); ++k) {
+            const bool depends = std::find(c.changed.begin(), c.changed.end(), k) != c.changed.end();
+            EXPECT_EQ(fresh.curves[k].albedo != before.curves[k].albedo, depends) << c.what << ", curve " << k;
+        }
+    }
+    // Another set of view angles: nothing is lent, and the plot is still right.
+    AlbedoPlotSettings fewer = base;
+    fewer.angles = 7;
+    EXPECT_TRUE(same(makeAlbedoPlot(fewer, &before), makeAlbedoPlot(fewer)));
+    // A normalised lobe's albedo is the lobe's times its constant.
+    for (size_t i = 0; i < before.viewAngles.size(); ++i)
+        EXPECT_FLOAT_EQ(before.curves[2].albedo[i], shading::phongNormalization(40.0f) * before.curves[1].albedo[i]);
+}

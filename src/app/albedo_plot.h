@@ -45,7 +45,9 @@ using AlbedoShade = std::function<float(const shading::vec3& L, const shading::v
 // normalised ((s+2)/2, (s+8)/8), GGX as a white metal without compensation and with it, then disney's lobes: its
 // diffuse on white (with the retro-reflection that rises toward grazing), a white metal, and the clearcoat alone;
 // then glTF's sheen lobe alone (white, pbr's layer), whose albedo the renderers read from their table.
-AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& settings);
+// `previous`, the plot shown before, lends the curves whose inputs have not changed (the same values as
+// integrating them again); the result never refers to it.
+AlbedoPlot makeAlbedoPlot(const AlbedoPlotSettings& settings, const AlbedoPlot* previous = nullptr);
 
 // Adds a curve integrated from `shade` at the plot's angles: the hook for curves this file does not know, e.g.
 // GGX with multiple-scattering energy compensation once lighting.glsl has it.

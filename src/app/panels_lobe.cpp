@@ -250,12 +250,17 @@ void drawLobePlots(PanelContext& ctx, const Material& m, float phongExponent) {
     wanted.roughness = m.roughness;
     wanted.clearcoatGloss = m.disney.clearcoatGloss;
     wanted.sheenRoughness = m.sheen.roughness;
-    if (!f.albedo || !(f.albedo->settings == wanted)) f.albedo = makeAlbedoPlot(wanted);
+    // Integrating the curves takes tens of milliseconds: while a control is held (a shininess drag) the plot
+    // keeps its curves and follows when it is let go, so the drag's frames stay the picture's.
+    const bool stale = f.albedo && !(f.albedo->settings == wanted);
+    const bool held = ImGui::IsAnyItemActive();
+    if (!f.albedo || (stale && !held)) f.albedo = makeAlbedoPlot(wanted, f.albedo ? &*f.albedo : nullptr);
     drawAlbedo(*f.albedo, width, 140.0f * scale, scale);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped(
         "White lobes (ms = 1, F0 = 1): the fraction of the light from all directions reflected "
-        "toward V. Dashed: normalised lobes.");
+        "toward V. Dashed: normalised lobes.%s",
+        stale && held ? " (Follows when the control is let go.)" : "");
     ImGui::PopStyleColor();
     ImGui::TreePop();
 }

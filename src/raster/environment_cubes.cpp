@@ -37,6 +37,8 @@ FrameBlock cubeFaceFrame(const FrameBlock& frame, const glm::vec3& centre, float
 
 void EnvironmentCubes::resize(int count, int size) {
     if (size != size_) cubes_.clear();
+    const size_t before = cubes_.size();
+    const bool newDepth = count > 0 && (!depth_ || size != depthSize_);
     size_ = size;
     while (int(cubes_.size()) < count) {
         gl::Texture t = gl::Texture::create();
@@ -53,26 +55,40 @@ void EnvironmentCubes::resize(int count, int size) {
         cubes_.push_back(std::move(t));
     }
     if (!fbo_) fbo_ = gl::Framebuffer::create();
-    if (count > 0 && (!depth_ || size != depthSize_)) {
+    if (newDepth) {
         depth_ = gl::Renderbuffer::create();
         glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
         glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, size, size);
         glBindRenderbuffer(GL_RENDERBUFFER, 0);
         depthSize_ = size;
     }
+    // Completeness is checked here, once per new texture or depth buffer, not per face drawn: under WebGL the
+    // check is a round trip to the GPU process, up to six of them a frame while a material is dragged. Every
+    // face of a cube has the same format and size, so face 0 of each new cube (or of the first, for a new
+    // depth buffer) stands for all six.
+    for (size_t cube = newDepth ? 0 : before; cube < cubes_.size(); ++cube) {
+        attachFace(int(cube), 0);
+        const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            throw std::runtime_error("environment cube framebuffer incomplete (status 0x" + std::to_string(status) +
+                                     ")");
+        if (newDepth) break;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::checkError("EnvironmentCubes::resize");
 }
 
-void EnvironmentCubes::bindFace(int cube, int face) const {
+void EnvironmentCubes::attachFace(int cube, int face) const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
                            cubes_[size_t(cube)].id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_NONE};
     glDrawBuffers(2, buffers);
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("environment cube framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+}
+
+void EnvironmentCubes::bindFace(int cube, int face) const {
+    attachFace(cube, face);
     glViewport(0, 0, size_, size_);
 }
 

@@ -32,7 +32,8 @@ FrameBlock cubeFaceFrame(const FrameBlock& frame, const glm::vec3& centre, float
 
 class EnvironmentCubes {
 public:
-    // Makes `count` RGBA16F cubes of size² texels per face (reallocating only on change).
+    // Makes `count` RGBA16F cubes of size² texels per face (reallocating only on change), and checks that
+    // what it made can be drawn into. Throws std::runtime_error when it cannot.
     void resize(int count, int size);
     // Attaches face `face` of cube `cube` (and the shared depth buffer) to the framebuffer and binds it.
     void bindFace(int cube, int face) const;
@@ -40,6 +41,8 @@ public:
     int size() const { return size_; }
 
 private:
+    void attachFace(int cube, int face) const;
+
     std::vector<gl::Texture> cubes_;
     gl::Framebuffer fbo_;
     gl::Renderbuffer depth_;

@@ -5,7 +5,9 @@
 
 #include "shading/lighting.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace shadelab::shading {
 
@@ -30,6 +32,12 @@ float directionalAlbedo(Shade shade, float NoV, AlbedoQuadrature q = {}) {
     const vec3 B(0.0f, 1.0f, 0.0f);
     const vec3 T = cross(B, A);
     const double pi = 3.14159265358979323846;
+    // The sectors' directions in the (T, B) plane, the same for every ring: computed once, not per sample.
+    std::vector<vec3> sector(size_t(std::max(q.phi, 0)));
+    for (int j = 0; j < q.phi; ++j) {
+        const double phi = 2.0 * pi * (double(j) + 0.5) / double(q.phi);
+        sector[size_t(j)] = float(std::cos(phi)) * T + float(std::sin(phi)) * B;
+    }
     double sum = 0.0;
     for (int i = 0; i < q.theta; ++i) {
         const double t = (double(i) + 0.5) / double(q.theta);
@@ -37,11 +45,7 @@ float directionalAlbedo(Shade shade, float NoV, AlbedoQuadrature q = {}) {
         const double weight = std::sin(theta) * 3.0 * pi * t * t;  // sin θ' dθ'/dt
         const float ct = float(std::cos(theta)), st = float(std::sin(theta));
         double ring = 0.0;
-        for (int j = 0; j < q.phi; ++j) {
-            const double phi = 2.0 * pi * (double(j) + 0.5) / double(q.phi);
-            const vec3 L = ct * A + st * (float(std::cos(phi)) * T + float(std::sin(phi)) * B);
-            ring += double(shade(L, V));
-        }
+        for (const vec3& d : sector) ring += double(shade(ct * A + st * d, V));
         sum += ring * weight;
     }
     return float(sum / double(q.theta) * (2.0 * pi / double(q.phi)) / pi);

@@ -250,25 +250,32 @@
   // view angle), from the viewer's plot data (app/lobe_plot.h, app/albedo_plot.h).
   const PLOT_COLOURS = ['#ffb86c', '#8be9fd', '#50fa7b', '#ff79c6', '#bd93f9'];
   // The plots are redrawn after the frame, not in it, and only when what they show changed, so that a slider
-  // drag's frames are the picture's alone; the plots follow within a tenth of a second.
-  let plotKey = null, plotTimer = null;
+  // drag's frames are the picture's alone. The lobe plot (cheap) follows within a tenth of a second; the albedo
+  // plot integrates each curve over the sphere (about 50 ms of the page's thread on a 2-core machine), so it
+  // waits until the material has rested for a fifth of a second: during a drag it would hold back every
+  // other frame.
+  const plots = {
+    lobe: { key: null, pending: null, timer: null, delay: 100, rest: false, canvas: 'lobe-plot', data: () => lab.lobePlotJson(45), draw: drawLobe },
+    albedo: { key: null, pending: null, timer: null, delay: 200, rest: true, canvas: 'albedo-plot', data: () => lab.albedoPlotJson(), draw: drawAlbedo },
+  };
   function schedulePlots(key) {
-    if (key === plotKey || plotTimer) return;
-    plotTimer = setTimeout(() => {
-      plotTimer = null;
-      const s = state(), now = JSON.stringify([s.selected, s.model, s.material]);
-      if (now === plotKey) return;
-      plotKey = now;
-      drawPlots();
-    }, 100);
-  }
-  function drawPlots() {
-    const lobe = JSON.parse(lab.lobePlotJson(45)), albedo = JSON.parse(lab.albedoPlotJson());
-    for (const [canvas, plot, draw] of [[$('lobe-plot'), lobe, drawLobe], [$('albedo-plot'), albedo, drawAlbedo]]) {
-      const g = canvas.getContext('2d');
-      g.clearRect(0, 0, canvas.width, canvas.height);
-      if (plot.curves) draw(g, canvas, plot);
+    for (const p of Object.values(plots)) {
+      if (key === p.key || (p.timer && (!p.rest || key === p.pending))) continue;  // shown, or already due
+      clearTimeout(p.timer);  // debounced: due again once the changes stop
+      p.pending = key;
+      p.timer = setTimeout(() => {
+        p.timer = null;
+        const s = state(), now = JSON.stringify([s.selected, s.model, s.material]);
+        if (now === p.key) return;
+        p.key = now;
+        drawPlot(p);
+      }, p.delay);
     }
+  }
+  function drawPlot(p) {
+    const plot = JSON.parse(p.data()), canvas = $(p.canvas), g = canvas.getContext('2d');
+    g.clearRect(0, 0, canvas.width, canvas.height);
+    if (plot.curves) p.draw(g, canvas, plot);
   }
   function legend(g, curves, x, y) {
     curves.forEach((c, k) => { g.fillStyle = PLOT_COLOURS[k % PLOT_COLOURS.length]; g.fillText(c.label, x, y + 12 * k); });

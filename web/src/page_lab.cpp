@@ -326,13 +326,14 @@ std::string PageLab::lobePlotJson(float incidence) const {
         .dump();
 }
 
-std::string PageLab::albedoPlotJson() const {
+std::string PageLab::albedoPlotJson() {
     if (state_.selected == 0) return "{}";
     const Material m = app::objectMaterial(state_.scene, state_.selected);
     app::AlbedoPlotSettings settings;
     settings.phongExponent = state_.scene.model == ShadingModel::BlinnPhong ? app::equivalentPhongExponent(m.s) : m.s;
     settings.roughness = m.roughness;
-    const app::AlbedoPlot plot = app::makeAlbedoPlot(settings);
+    albedoPlot_ = app::makeAlbedoPlot(settings, albedoPlot_ ? &*albedoPlot_ : nullptr);
+    const app::AlbedoPlot& plot = *albedoPlot_;
     Json curves = Json::array();
     for (const app::AlbedoCurve& c : plot.curves)
         curves.push_back({{"label", c.label}, {"albedo", c.albedo}, {"dashed", c.dashed}});

@@ -6,6 +6,7 @@
 // `shadelab render`: one render::RenderRequest per image, converted by render/render_request.h.
 #pragma once
 
+#include "app/albedo_plot.h"
 #include "app/image_view.h"
 #include "app/viewer_state.h"
 #include "image/image.h"
@@ -15,6 +16,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,7 +90,7 @@ public:
     // curves; `incidence` is θi in degrees. The lobe's "polar" values (over its peak) are at "polarAngles", the
     // outgoing angles θo from N (negative on L's side); the albedo's at "viewAngles".
     std::string lobePlotJson(float incidence) const;
-    std::string albedoPlotJson() const;
+    std::string albedoPlotJson();
 
     const std::string& glRenderer() const { return context_.renderer(); }
 
@@ -108,6 +110,7 @@ private:
     uint64_t probeRevision_ = 0;
     std::string sceneJson_;  // sceneJson() of state_ at sceneJsonRevision_ (0: none yet)
     uint64_t sceneJsonRevision_ = 0;
+    std::optional<app::AlbedoPlot> albedoPlot_;  // the last albedoPlotJson's: it lends the next its unchanged curves
     std::vector<uint8_t> rasterRgba_, referenceRgba_, globalRgba_, heatRgba_, coverageRgba_;
     std::string differenceText_;
 };
