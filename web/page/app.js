@@ -300,25 +300,39 @@
     });
     legend(g, plot.curves, 4, 12);
   }
+  // Lambert, Phong and its normalised lobe, Blinn-Phong and its, GGX and compensated, then disney's diffuse, metal
+  // and coat, and glTF's sheen: a lobe and its dashed normalised curve share a colour, as in the viewer's panel.
+  const ALBEDO_COLOURS = ['#aaaaaa', '#ffb86c', '#ffb86c', '#50fa7b', '#50fa7b', '#ff79c6', '#ff79c6', '#96c8e6',
+    '#bd93f9', '#c8f0fa', '#f1fa8c'];
   function drawAlbedo(g, canvas, plot) {
-    const x0 = 28, y0 = canvas.height - 16, w = canvas.width - x0 - 6, h = y0 - 6;
+    // The plot on top, the legend under it in two columns (it would hide the curves drawn over them).
+    const rows = Math.ceil(plot.curves.length / 2), legendH = 12 * rows + 4;
+    const x0 = 28, y0 = canvas.height - legendH - 16, w = canvas.width - x0 - 6, h = y0 - 6;
     const last = plot.viewAngles[plot.viewAngles.length - 1] || 90;
+    // Up to at least 1.25 (a rough disney diffuse reflects more than Lambert toward grazing), 3 at most.
+    let top = 1.25;
+    for (const c of plot.curves) for (const a of c.albedo) top = Math.max(top, Math.min(1.05 * a, 3));
+    const yOf = (a) => y0 - h * Math.min(a, top) / top;
     g.strokeStyle = '#555';
     g.strokeRect(x0, y0 - h, w, h);
+    g.beginPath(); g.moveTo(x0, yOf(1)); g.lineTo(x0 + w, yOf(1)); g.stroke();
     g.fillStyle = '#aaa';
-    g.fillText('1', 16, y0 - h + 8); g.fillText('0', 16, y0); g.fillText(`θ 0..${last}°`, x0 + w - 60, y0 + 12);
+    g.fillText('1', 16, yOf(1) + 4); g.fillText('0', 16, y0); g.fillText(`θ 0..${last}°`, x0 + w - 60, y0 + 12);
     plot.curves.forEach((c, k) => {
-      g.strokeStyle = PLOT_COLOURS[k % PLOT_COLOURS.length];
+      g.strokeStyle = ALBEDO_COLOURS[k % ALBEDO_COLOURS.length];
       g.setLineDash(c.dashed ? [4, 3] : []);
       g.beginPath();
       c.albedo.forEach((a, i) => {
-        const x = x0 + w * plot.viewAngles[i] / last, y = y0 - h * Math.min(1, a);
+        const x = x0 + w * plot.viewAngles[i] / last, y = yOf(a);
         if (i) g.lineTo(x, y); else g.moveTo(x, y);
       });
       g.stroke();
     });
     g.setLineDash([]);
-    legend(g, plot.curves, x0 + 6, y0 - h + 30);
+    plot.curves.forEach((c, k) => {
+      g.fillStyle = ALBEDO_COLOURS[k % ALBEDO_COLOURS.length];
+      g.fillText(c.label, 4 + (canvas.width / 2) * Math.floor(k / rows), y0 + 28 + 12 * (k % rows));
+    });
   }
 
   // What the last load warned about (a texture over the limit, an ignored feature), as one line.

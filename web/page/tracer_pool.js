@@ -85,18 +85,21 @@ class TracerPool {
       return;
     }
     if (m.kind === 'global') { this._globalRows(job, k, m); return; }
-    // A worker's batch of tiles, packed one after another in m.rgba and m.coverage.
-    for (const t of m.tiles) {
-      for (let y = 0; y < t.height; ++y) {
-        const row = (t.y0 + y) * job.w + t.x0;
-        job.rgba.set(m.rgba.subarray(t.rgba + y * t.width * 4, t.rgba + (y + 1) * t.width * 4), row * 4);
-        job.coverage.set(m.coverage.subarray(t.coverage + y * t.width, t.coverage + (y + 1) * t.width), row);
+    // A worker's batch of tiles: (index, x0, y0, width, height) each in m.tiles, their pixels one after another in
+    // m.rgba and m.coverage.
+    const sent = m.tiles.length / 5;
+    for (let i = 0, at = 0; i < sent; ++i) {
+      const x0 = m.tiles[5 * i + 1], y0 = m.tiles[5 * i + 2], w = m.tiles[5 * i + 3], h = m.tiles[5 * i + 4];
+      for (let y = 0; y < h; ++y, at += w) {
+        const row = (y0 + y) * job.w + x0;
+        job.rgba.set(m.rgba.subarray(4 * at, 4 * (at + w)), row * 4);
+        job.coverage.set(m.coverage.subarray(at, at + w), row);
       }
       ++job.arrived;
     }
     // As many tiles of the second half to this worker as it has just sent, and its arrays back for the next batch.
     const more = [];
-    while (more.length < m.tiles.length && job.next < job.count) more.push(job.next++);
+    while (more.length < sent && job.next < job.count) more.push(job.next++);
     this.workers[k].worker.postMessage({ kind: 'tiles', job: job.id, indices: more, rgba: m.rgba, coverage: m.coverage },
       [m.rgba.buffer, m.coverage.buffer]);
     if (job.onProgress) job.onProgress(job.arrived / job.count);

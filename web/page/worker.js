@@ -48,46 +48,27 @@ function nextTask() {
   return new Promise((resolve) => { waiting.push(resolve); channel.port2.postMessage(0); });
 }
 
-// The tiles traced since the last message, packed one after another into arrays that go to the page with the
-// message (transferred, not copied) and come back with its reply for the next batch. So tracing allocates
-// nothing in the steady state: a new array per tile took a fifth of a worker's time, and a new array per
-// message, fresh pages the kernel had to fault in, a tenth.
+// The tiles traced since the last message: the tracer packs them (WorkerTracer::TileBatch), and the worker copies the
+// batch into arrays that go to the page with the message (transferred, not copied) and come back with its reply for
+// the next batch. So tracing allocates nothing in the steady state: a new array per tile took a fifth of a worker's
+// time, and a new array per message, fresh pages the kernel had to fault in, a tenth.
 const batch = {
-  tiles: [], rgba: null, coverage: null, floats: 0, ids: 0,
   spare: [],  // {rgba, coverage} pairs the page has sent back
-  // Appends tile `index` from the views of the module's memory that traceTile returned.
-  add(index, v) {
-    if (!this.rgba) {
-      const s = this.spare.pop() || { rgba: new Float32Array(0), coverage: new Uint32Array(0) };
-      this.rgba = s.rgba;
-      this.coverage = s.coverage;
-    }
-    this.rgba = fit(this.rgba, this.floats + v.rgba.length);
-    this.coverage = fit(this.coverage, this.ids + v.coverage.length);
-    this.rgba.set(v.rgba, this.floats);
-    this.coverage.set(v.coverage, this.ids);
-    this.tiles.push({ index, x0: v.x0, y0: v.y0, width: v.width, height: v.height, rgba: this.floats, coverage: this.ids });
-    this.floats += v.rgba.length;
-    this.ids += v.coverage.length;
-  },
-  // Sends the tiles with the arrays that hold them (tiles[i].rgba and .coverage: offsets into them).
-  send(job) {
-    if (!this.tiles.length) return;
-    const { rgba, coverage } = this;
-    postMessage({ kind: 'tiles', job, tiles: this.tiles, rgba, coverage }, [rgba.buffer, coverage.buffer]);
-    this.rgba = this.coverage = null;
-    this.clear();
-  },
-  clear() {
-    this.tiles = [];
-    this.floats = this.ids = 0;
+  // Sends the tracer's batch: `tiles` holds (index, x0, y0, width, height) per tile, their pixels one after another
+  // in `rgba` and `coverage` (which may be longer than they need).
+  send(job, tracer) {
+    const v = tracer.batch();  // views of the module's memory: copied before the next call into it
+    if (!v.tiles.length) return;
+    const s = this.spare.pop() || { rgba: new Float32Array(0), coverage: new Uint32Array(0) };
+    const rgba = fit(s.rgba, v.rgba.length), coverage = fit(s.coverage, v.coverage.length), tiles = v.tiles.slice();
+    rgba.set(v.rgba);
+    coverage.set(v.coverage);
+    tracer.clearBatch();
+    postMessage({ kind: 'tiles', job, tiles, rgba, coverage }, [tiles.buffer, rgba.buffer, coverage.buffer]);
   },
 };
 function fit(array, length) {
-  if (array.length >= length) return array;
-  const bigger = new array.constructor(Math.max(length, 2 * array.length));
-  bigger.set(array);
-  return bigger;
+  return array.length >= length ? array : new array.constructor(Math.max(length, 2 * array.length));
 }
 
 // Traces the tiles queued for the reference job `mine` until the queue is empty or another job (or a stop)
@@ -98,16 +79,15 @@ async function traceQueue(mine) {
   try {
     let resumed = performance.now();
     while (current === mine && mine.queue.length) {
-      const i = mine.queue.shift();
-      batch.add(i, mine.tracer.traceTile(i));  // views, valid until the next call into the module
+      mine.tracer.traceTile(mine.queue.shift());
       if (performance.now() - resumed > 2 || !mine.queue.length) {
-        batch.send(mine.job);
+        batch.send(mine.job, mine.tracer);
         await nextTask();
         resumed = performance.now();
       }
     }
   } finally {
-    batch.clear();  // sent before every wait; left over only when a tile threw
+    mine.tracer.clearBatch();  // sent before every wait; left over only when a tile threw
     mine.running = false;
   }
 }

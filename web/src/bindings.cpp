@@ -90,18 +90,15 @@ WorkerTracer* createTracer(const std::string& sceneJson, const std::string& base
 
 std::string createError() { return lastCreateError; }
 
-// {x0, y0, width, height, rgba: Float32Array, coverage: Uint32Array}: views of the tracer's tile in the module's
-// memory, valid until the next call into the module; the worker copies them into the arrays of its batch
-// (worker.js). A copy made here, with `new Float32Array(view)` per tile, took a fifth of a worker's time.
-val traceTile(WorkerTracer& tracer, int index) {
-    const trace::TileResult& r = tracer.traceTile(index);
+// {tiles: Int32Array, rgba: Float32Array, coverage: Uint32Array}: views of the tracer's batch (WorkerTracer::TileBatch)
+// in the module's memory, valid until the next call into the module; the worker copies them into the arrays it
+// sends (worker.js).
+val tileBatch(const WorkerTracer& tracer) {
+    const WorkerTracer::TileBatch& b = tracer.batch();
     val out = val::object();
-    out.set("x0", r.tile.x0);
-    out.set("y0", r.tile.y0);
-    out.set("width", r.tile.width);
-    out.set("height", r.tile.height);
-    out.set("rgba", view(r.rgba));
-    out.set("coverage", view(r.coverage));
+    out.set("tiles", view(b.tiles));
+    out.set("rgba", view(b.rgba));
+    out.set("coverage", view(b.coverage));
     return out;
 }
 
@@ -149,7 +146,9 @@ EMSCRIPTEN_BINDINGS(shadelab) {
     emscripten::function("createTracer", &createTracer, emscripten::allow_raw_pointers());
     emscripten::class_<WorkerTracer>("Tracer")
         .function("startReference", &WorkerTracer::startReference)
-        .function("traceTile", &traceTile)
+        .function("traceTile", &WorkerTracer::traceTile)
+        .function("batch", &tileBatch)
+        .function("clearBatch", &WorkerTracer::clearBatch)
         .function("startGlobal", &WorkerTracer::startGlobal)
         .function("addGlobalSamples", &WorkerTracer::addGlobalSamples)
         .function("globalSamples", &WorkerTracer::globalSamples)

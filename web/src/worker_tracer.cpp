@@ -40,13 +40,24 @@ int WorkerTracer::startReference(int width, int height) {
         render::toTrace(requestOf(render::Engine::Trace, width, height), scene_->scene());
     trace::validate(settings);
     job_ = std::make_unique<trace::TraceJob>(*scene_, settings);
+    clearBatch();  // tiles of a job this one replaces
     return int(job_->tiles.size());
 }
 
-const trace::TileResult& WorkerTracer::traceTile(int index) {
+int WorkerTracer::traceTile(int index) {
     if (!job_ || index < 0 || index >= int(job_->tiles.size())) throw std::out_of_range("no such tile");
     job_->render(index, tile_);
-    return tile_;
+    const trace::Tile& t = tile_.tile;
+    batch_.tiles.insert(batch_.tiles.end(), {index, t.x0, t.y0, t.width, t.height});
+    batch_.rgba.insert(batch_.rgba.end(), tile_.rgba.begin(), tile_.rgba.end());
+    batch_.coverage.insert(batch_.coverage.end(), tile_.coverage.begin(), tile_.coverage.end());
+    return int(batch_.tiles.size() / 5);
+}
+
+void WorkerTracer::clearBatch() {
+    batch_.tiles.clear();
+    batch_.rgba.clear();
+    batch_.coverage.clear();
 }
 
 void WorkerTracer::startGlobal(int width, int height) {

@@ -11,6 +11,7 @@
 #include "trace/trace_job.h"
 #include "trace/trace_scene.h"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,9 +28,19 @@ public:
     // The Whitted reference of a width x height request (render::RenderRequest, Engine::Trace, with coverage):
     // sets up the job and returns how many tiles it has.
     int startReference(int width, int height);
-    // Renders tile `index` of the job into the tile this tracer keeps (its buffers reused from tile to tile), valid
-    // until the next call.
-    const trace::TileResult& traceTile(int index);
+    // The tiles traced since the last clearBatch() (or startReference), packed one after another in the order they
+    // were traced: (index, x0, y0, width, height) for each in `tiles`, their pixels in `rgba` (linear RGBA, rows
+    // from the top) and their ids in `coverage`. The worker sends a batch to the page in one message: per tile,
+    // the calls and the objects a tile of its own took were a quarter of a worker's time.
+    struct TileBatch {
+        std::vector<int32_t> tiles;
+        std::vector<float> rgba;
+        std::vector<uint32_t> coverage;
+    };
+    // Renders tile `index` of the job and appends it to the batch; returns how many tiles the batch holds.
+    int traceTile(int index);
+    const TileBatch& batch() const { return batch_; }
+    void clearBatch();
 
     // The path tracer's progressive image at width x height (the scene's depth, the request's defaults);
     // addSamples adds `count` samples to every pixel, image() is the running mean, linear RGBA.
@@ -46,7 +57,8 @@ public:
 private:
     std::shared_ptr<const trace::TraceScene> scene_;
     std::unique_ptr<trace::TraceJob> job_;
-    trace::TileResult tile_;
+    trace::TileResult tile_;  // the tile being traced, its buffers reused
+    TileBatch batch_;
     std::unique_ptr<trace::PathRender> path_;
 };
 
