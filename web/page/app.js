@@ -82,9 +82,9 @@
       setText($('progress'), `reference ${Math.round(100 * f)} %`);
     };
     r.done = pool.reference(sceneMessage(), w, h, progress)
-      .then(({ rgba, coverage }) => {
+      .then(({ rgb, coverage }) => {
         setText($('progress'), '');
-        const bytes = lab.setReference(rgba, coverage, w, h);
+        const bytes = lab.setReference(rgb, coverage, w, h);
         if (typeof bytes === 'string') throw new Error(bytes);
         r.image = imageOf(bytes);
         timings.referenceMs = performance.now() - t0;

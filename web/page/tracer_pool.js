@@ -32,14 +32,15 @@ class TracerPool {
     this.current = null;
   }
 
-  // The Whitted reference of `scene` ({sceneJson, sceneDir, files}) at w x h. Resolves with {rgba, coverage};
+  // The Whitted reference of `scene` ({sceneJson, sceneDir, files}) at w x h. Resolves with {rgb, coverage}, the
+  // 8-bit pixels as the native render encodes them and the ids;
   // onProgress(fraction) after each tile.
   reference(scene, w, h, onProgress) {
     this.stop();
     const id = this.job;
     // next: the next tile to hand out, once the first worker has said how many there are and where its share ends.
     const job = { id, kind: 'reference', w, h, count: -1, next: -1, arrived: 0, onProgress,
-      rgba: new Float32Array(w * h * 4), coverage: new Uint32Array(w * h) };
+      rgb: new Uint8Array(w * h * 3), coverage: new Uint32Array(w * h) };
     const done = new Promise((resolve, reject) => { job.resolve = resolve; job.reject = reject; });
     done.catch(() => {});
     this.current = job;
@@ -86,13 +87,13 @@ class TracerPool {
     }
     if (m.kind === 'global') { this._globalRows(job, k, m); return; }
     // A worker's batch of tiles: (index, x0, y0, width, height) each in m.tiles, their pixels one after another in
-    // m.rgba and m.coverage.
+    // m.rgb and m.coverage.
     const sent = m.tiles.length / 5;
     for (let i = 0, at = 0; i < sent; ++i) {
       const x0 = m.tiles[5 * i + 1], y0 = m.tiles[5 * i + 2], w = m.tiles[5 * i + 3], h = m.tiles[5 * i + 4];
       for (let y = 0; y < h; ++y, at += w) {
         const row = (y0 + y) * job.w + x0;
-        job.rgba.set(m.rgba.subarray(4 * at, 4 * (at + w)), row * 4);
+        job.rgb.set(m.rgb.subarray(3 * at, 3 * (at + w)), row * 3);
         job.coverage.set(m.coverage.subarray(at, at + w), row);
       }
       ++job.arrived;
@@ -100,12 +101,12 @@ class TracerPool {
     // As many tiles of the second half to this worker as it has just sent, and its arrays back for the next batch.
     const more = [];
     while (more.length < sent && job.next < job.count) more.push(job.next++);
-    this.workers[k].worker.postMessage({ kind: 'tiles', job: job.id, indices: more, rgba: m.rgba, coverage: m.coverage },
-      [m.rgba.buffer, m.coverage.buffer]);
+    this.workers[k].worker.postMessage({ kind: 'tiles', job: job.id, indices: more, rgb: m.rgb, coverage: m.coverage },
+      [m.rgb.buffer, m.coverage.buffer]);
     if (job.onProgress) job.onProgress(job.arrived / job.count);
     if (job.arrived === job.count) {
       this.current = null;
-      job.resolve({ rgba: job.rgba, coverage: job.coverage });
+      job.resolve({ rgb: job.rgb, coverage: job.coverage });
     }
   }
 }

@@ -53,18 +53,18 @@ function nextTask() {
 // the next batch. So tracing allocates nothing in the steady state: a new array per tile took a fifth of a worker's
 // time, and a new array per message, fresh pages the kernel had to fault in, a tenth.
 const batch = {
-  spare: [],  // {rgba, coverage} pairs the page has sent back
-  // Sends the tracer's batch: `tiles` holds (index, x0, y0, width, height) per tile, their pixels one after another
-  // in `rgba` and `coverage` (which may be longer than they need).
+  spare: [],  // {rgb, coverage} pairs the page has sent back
+  // Sends the tracer's batch: `tiles` holds (index, x0, y0, width, height) per tile, their 8-bit pixels one after
+  // another in `rgb` and their ids in `coverage` (both may be longer than they need).
   send(job, tracer) {
     const v = tracer.batch();  // views of the module's memory: copied before the next call into it
     if (!v.tiles.length) return;
-    const s = this.spare.pop() || { rgba: new Float32Array(0), coverage: new Uint32Array(0) };
-    const rgba = fit(s.rgba, v.rgba.length), coverage = fit(s.coverage, v.coverage.length), tiles = v.tiles.slice();
-    rgba.set(v.rgba);
+    const s = this.spare.pop() || { rgb: new Uint8Array(0), coverage: new Uint32Array(0) };
+    const rgb = fit(s.rgb, v.rgb.length), coverage = fit(s.coverage, v.coverage.length), tiles = v.tiles.slice();
+    rgb.set(v.rgb);
     coverage.set(v.coverage);
     tracer.clearBatch();
-    postMessage({ kind: 'tiles', job, tiles, rgba, coverage }, [tiles.buffer, rgba.buffer, coverage.buffer]);
+    postMessage({ kind: 'tiles', job, tiles, rgb, coverage }, [tiles.buffer, rgb.buffer, coverage.buffer]);
   },
 };
 function fit(array, length) {
@@ -117,7 +117,7 @@ onmessage = async (event) => {
       for (let i = msg.first; i < until; i += msg.step) mine.queue.push(i);
       await traceQueue(mine);
     } else if (msg.kind === 'tiles') {
-      if (msg.rgba) batch.spare.push({ rgba: msg.rgba, coverage: msg.coverage });  // any job's: reused
+      if (msg.rgb) batch.spare.push({ rgb: msg.rgb, coverage: msg.coverage });  // any job's: reused
       if (current && current.job === msg.job && current.queue) {
         current.queue.push(...msg.indices);
         if (!current.running) await traceQueue(current);

@@ -58,9 +58,9 @@ std::string drawRaster(PageLab& lab, int width, int height) {
     }
 }
 
-val setReference(PageLab& lab, const val& rgba, const val& coverage, int width, int height) {
+val setReference(PageLab& lab, const val& rgb, const val& coverage, int width, int height) {
     try {
-        return view(lab.setReference(copyArray<float>(rgba), copyArray<uint32_t>(coverage), width, height));
+        return view(lab.setReference(copyArray<uint8_t>(rgb), copyArray<uint32_t>(coverage), width, height));
     } catch (const std::exception& e) {
         return val(errorLine(e.what()));
     }
@@ -90,14 +90,14 @@ WorkerTracer* createTracer(const std::string& sceneJson, const std::string& base
 
 std::string createError() { return lastCreateError; }
 
-// {tiles: Int32Array, rgba: Float32Array, coverage: Uint32Array}: views of the tracer's batch (WorkerTracer::TileBatch)
+// {tiles: Int32Array, rgb: Uint8Array, coverage: Uint32Array}: views of the tracer's batch (WorkerTracer::TileBatch)
 // in the module's memory, valid until the next call into the module; the worker copies them into the arrays it
 // sends (worker.js).
 val tileBatch(const WorkerTracer& tracer) {
     const WorkerTracer::TileBatch& b = tracer.batch();
     val out = val::object();
     out.set("tiles", view(b.tiles));
-    out.set("rgba", view(b.rgba));
+    out.set("rgb", view(b.rgb));
     out.set("coverage", view(b.coverage));
     return out;
 }

@@ -24,6 +24,7 @@
 #include "util/input_error.h"
 #include "util/warning_capture.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -261,9 +262,11 @@ const std::vector<uint8_t>& PageLab::rasterCoverageImage() {
     return coverageRgba_;
 }
 
-const std::vector<uint8_t>& PageLab::setReference(const std::vector<float>& rgba, const std::vector<uint32_t>& coverage,
+const std::vector<uint8_t>& PageLab::setReference(const std::vector<uint8_t>& rgb, const std::vector<uint32_t>& coverage,
                                                   int width, int height) {
-    reference_ = encodeLinear(rgba, width, height, state_.scene);
+    const size_t pixels = size_t(std::max(width, 0)) * size_t(std::max(height, 0));
+    if (rgb.size() != pixels * 3 || coverage.size() != pixels) throw std::invalid_argument("image size mismatch");
+    reference_ = Image8{width, height, 3, rgb};
     referenceCoverage_ = coverage;
     toRgba(reference_, referenceRgba_);
     return referenceRgba_;

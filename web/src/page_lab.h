@@ -71,9 +71,10 @@ public:
     // `shadelab render --coverage` writes for the same render.
     const std::vector<uint8_t>& rasterCoverageImage();
 
-    // The reference the workers traced (linear RGBA floats and coverage ids, width x height), encoded as
-    // `shadelab render --renderer trace` encodes it; returns the RGBA bytes.
-    const std::vector<uint8_t>& setReference(const std::vector<float>& rgba, const std::vector<uint32_t>& coverage,
+    // The reference the workers traced: RGB bytes (encoded by them as `shadelab render --renderer trace` encodes
+    // its tiles) and coverage ids, width x height. Returns the RGBA bytes to show; throws std::invalid_argument
+    // when the sizes do not match.
+    const std::vector<uint8_t>& setReference(const std::vector<uint8_t>& rgb, const std::vector<uint32_t>& coverage,
                                              int width, int height);
     // The path tracer's running mean (linear RGBA), encoded for display with the scene's exposure and view
     // transform; returns the RGBA bytes.

@@ -36,8 +36,10 @@ WorkerTracer::WorkerTracer(const std::string& sceneJson, const std::string& base
     : scene_(std::make_shared<const trace::TraceScene>(sceneFrom(sceneJson, baseDir))) {}
 
 int WorkerTracer::startReference(int width, int height) {
-    const trace::TraceSettings settings =
-        render::toTrace(requestOf(render::Engine::Trace, width, height), scene_->scene());
+    const render::RenderRequest request = requestOf(render::Engine::Trace, width, height);
+    const trace::TraceSettings settings = render::toTrace(request, scene_->scene());
+    encoding_ = request.encoding;
+    display_ = render::displayOf(request, scene_->scene());
     trace::validate(settings);
     job_ = std::make_unique<trace::TraceJob>(*scene_, settings);
     clearBatch();  // tiles of a job this one replaces
@@ -49,14 +51,18 @@ int WorkerTracer::traceTile(int index) {
     job_->render(index, tile_);
     const trace::Tile& t = tile_.tile;
     batch_.tiles.insert(batch_.tiles.end(), {index, t.x0, t.y0, t.width, t.height});
-    batch_.rgba.insert(batch_.rgba.end(), tile_.rgba.begin(), tile_.rgba.end());
+    const size_t at = batch_.rgb.size();
+    batch_.rgb.resize(at + size_t(t.width) * size_t(t.height) * 3);
+    uint64_t nonFinite = 0;  // written black or white, as natively; the page does not count them
+    encodeRgbaRows(tile_.rgba.data(), size_t(t.width) * 4, &batch_.rgb[at], size_t(t.width) * 3, t.width, t.height,
+                   encoding_, display_, &nonFinite);
     batch_.coverage.insert(batch_.coverage.end(), tile_.coverage.begin(), tile_.coverage.end());
     return int(batch_.tiles.size() / 5);
 }
 
 void WorkerTracer::clearBatch() {
     batch_.tiles.clear();
-    batch_.rgba.clear();
+    batch_.rgb.clear();
     batch_.coverage.clear();
 }
 

@@ -6,6 +6,7 @@
 // writes. The Global view's path tracer runs here too, a pass of samples at a time.
 #pragma once
 
+#include "image/encode.h"
 #include "trace/path/path_render.h"
 #include "trace/tile_renderer.h"
 #include "trace/trace_job.h"
@@ -29,12 +30,13 @@ public:
     // sets up the job and returns how many tiles it has.
     int startReference(int width, int height);
     // The tiles traced since the last clearBatch() (or startReference), packed one after another in the order they
-    // were traced: (index, x0, y0, width, height) for each in `tiles`, their pixels in `rgba` (linear RGBA, rows
-    // from the top) and their ids in `coverage`. The worker sends a batch to the page in one message: per tile,
-    // the calls and the objects a tile of its own took were a quarter of a worker's time.
+    // were traced: (index, x0, y0, width, height) for each in `tiles`, their pixels in `rgb` (8-bit, encoded as
+    // `shadelab render --renderer trace` encodes its tiles for the PNG, rows from the top) and their ids in
+    // `coverage`. The worker sends a batch to the page in one message: per tile, the calls and the objects a tile
+    // of its own took were a quarter of a worker's time.
     struct TileBatch {
         std::vector<int32_t> tiles;
-        std::vector<float> rgba;
+        std::vector<uint8_t> rgb;
         std::vector<uint32_t> coverage;
     };
     // Renders tile `index` of the job and appends it to the batch; returns how many tiles the batch holds.
@@ -59,6 +61,8 @@ private:
     std::unique_ptr<trace::TraceJob> job_;
     trace::TileResult tile_;  // the tile being traced, its buffers reused
     TileBatch batch_;
+    Encoding encoding_ = Encoding::Srgb;  // the reference's, as the native render's request has them
+    DisplaySettings display_;
     std::unique_ptr<trace::PathRender> path_;
 };
 
