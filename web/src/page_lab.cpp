@@ -262,8 +262,8 @@ const std::vector<uint8_t>& PageLab::rasterCoverageImage() {
     return coverageRgba_;
 }
 
-const std::vector<uint8_t>& PageLab::setReference(const std::vector<uint8_t>& rgb, const std::vector<uint32_t>& coverage,
-                                                  int width, int height) {
+const std::vector<uint8_t>& PageLab::setReference(const std::vector<uint8_t>& rgb,
+                                                  const std::vector<uint32_t>& coverage, int width, int height) {
     const size_t pixels = size_t(std::max(width, 0)) * size_t(std::max(height, 0));
     if (rgb.size() != pixels * 3 || coverage.size() != pixels) throw std::invalid_argument("image size mismatch");
     reference_ = Image8{width, height, 3, rgb};
