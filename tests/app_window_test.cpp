@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -377,4 +378,46 @@ TEST(AppWindow, DisplayFlagsAndSetDisplayMatchHeadlessRenders) {
     EXPECT_TRUE(sameBytes(rendered, expectRendered)) << rendered << " vs " << expectRendered;
     EXPECT_FALSE(sameBytes(flagged, plain)) << "--exposure/--view-transform did not reach the screenshot";
     EXPECT_FALSE(sameBytes(scripted, flagged)) << "setDisplay did not change the screenshot";
+}
+
+// The side panel's kept pixels (app/panel_cache.h): while the camera orbits, most frames copy the panel's pixels
+// from the last frame that drew it, and $SHADELAB_PANEL_CACHE=verify draws it as well on those frames and compares:
+// no frame differs, also across a selection and a shininess change that redraw it. Negative control: with
+// "verify-stale" the kept pixels are served after the panel changed, and the comparison sees it.
+TEST(AppWindow, SidePanelKeptPixelsEqualThePanelDrawnAgain) {
+    REQUIRE_XVFB();
+    const std::string scene = test::sourcePath("assets/scenes/default.json");
+    std::string actions = "[";
+    for (int f = 0; f < 24; ++f) {
+        actions += std::string(f ? "," : "") + R"({"frame": )" + std::to_string(f) +
+                   R"(, "action": "orbit", "yaw": 1, "pitch": 0})";
+        if (f == 8) actions += R"(, {"frame": 8, "action": "select", "object": "red plastic"})";
+        if (f == 16) actions += R"(, {"frame": 16, "action": "setShininess", "object": "red plastic", "s": 90})";
+    }
+    const std::string script = writeText("panel_cache.json", actions + "]");
+    const auto counts = [&](const std::string& mode) {
+        Result v = view(scene + " --size " + kSize + " --frames 30 --stats --script " + script,
+                        "SHADELAB_PANEL_CACHE=" + mode + " ");
+        EXPECT_EQ(v.code, 0) << v.out;
+        size_t drawn = 0, copied = 0, whole = 0, compared = 0, differing = 0;
+        const size_t a = v.out.find("side panel             drawn in"), b = v.out.find("side panel verified");
+        EXPECT_NE(a, std::string::npos) << v.out;
+        EXPECT_NE(b, std::string::npos) << v.out;
+        if (a != std::string::npos)
+            std::sscanf(v.out.c_str() + a,
+                        "side panel drawn in %zu frames, its kept pixels copied in %zu, drawn with "
+                        "the rest in %zu",
+                        &drawn, &copied, &whole);
+        if (b != std::string::npos)
+            std::sscanf(v.out.c_str() + b, "side panel verified %zu frames compared, %zu differing", &compared,
+                        &differing);
+        return std::array<size_t, 4>{drawn, copied, compared, differing};
+    };
+    const std::array<size_t, 4> verify = counts("verify");
+    EXPECT_GE(verify[0], 3u);   // drawn at the start, after the selection and after the edit (at least)
+    EXPECT_GE(verify[1], 10u);  // most orbit frames copy the kept pixels
+    EXPECT_EQ(verify[2], verify[1]);
+    EXPECT_EQ(verify[3], 0u) << "frames whose kept panel differed from the panel drawn again";
+    const std::array<size_t, 4> stale = counts("verify-stale");
+    EXPECT_GT(stale[3], 0u) << "stale kept pixels went unnoticed";
 }

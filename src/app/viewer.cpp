@@ -38,6 +38,14 @@ int Viewer::run() {
             stats_.partialDraws, stats_.raster.count(), stats_.shadowRenders, stats_.environmentRenders);
         std::printf("shadelab:   half-size previews     %zu of %zu (the camera moving, raster.movingPreview %s)\n",
                     stats_.previewDraws, stats_.raster.count(), state_.scene.raster.movingPreview ? "on" : "off");
+        const PanelCache::Counts& panel = panelCache_->counts();
+        std::printf(
+            "shadelab:   side panel             drawn in %zu frames, its kept pixels copied in %zu, drawn with "
+            "the rest in %zu\n",
+            panel.misses, panel.hits, panel.whole);
+        if (panelCache_->mode() == PanelCache::Mode::Verify || panelCache_->mode() == PanelCache::Mode::VerifyStale)
+            std::printf("shadelab:   side panel verified    %zu frames compared, %zu differing\n", panel.verified,
+                        panel.differing);
         if (stats_.idle.count())
             std::printf("shadelab:   frame, nothing changed median %6.2f ms   p95 %6.2f ms   (%zu frames)\n",
                         stats_.idle.median(), stats_.idle.percentile(95.0), stats_.idle.count());
@@ -121,7 +129,11 @@ bool Viewer::frame() {
         ctx.status = status_.message;
         ctx.statusError = status_.error;
     }
-    ctx.frameMs = recentFrameMs();
+    if (const double now = glfwGetTime(); now - stats_.shownAt >= 0.5) {
+        stats_.shownMs = recentFrameMs();
+        stats_.shownAt = now;
+    }
+    ctx.frameMs = stats_.shownMs;
     ctx.renderWidth = layout_.renderWidth;
     ctx.renderHeight = layout_.renderHeight;
     ctx.uiScale = shape_.uiScale;
@@ -373,7 +385,7 @@ void Viewer::compose() {
                                       layout_.fbRect, shape_.fbHeight, layout_.fbScale * shape_.uiScale));
     }
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    panelCache_->render(ImGui::GetDrawData(), panelPixels, shape_.fbWidth, shape_.fbHeight);
     gl::checkError("viewer frame");
 }
 

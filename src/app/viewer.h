@@ -14,6 +14,7 @@
 #include "app/frame_stats.h"
 #include "app/global_renderer.h"
 #include "app/image_view.h"
+#include "app/panel_cache.h"
 #include "app/panels.h"
 #include "app/probe_window_place.h"
 #include "app/reference_renderer.h"
@@ -135,6 +136,7 @@ private:
     std::unique_ptr<ReferenceRenderer> reference_;
     std::unique_ptr<GlobalRenderer> global_;  // after reference_: it borrows reference_'s mesh BVH cache
     std::unique_ptr<Accumulation> accumulation_;
+    std::unique_ptr<PanelCache> panelCache_;
 
     // Layout, in window (logical) units unless named fb*.
     LayoutInput shape_;    // the window, the UI scale, the panel's switches and --size
@@ -217,6 +219,9 @@ private:
         size_t partialDraws = 0;                           // raster draws that redrew only some objects
         size_t shadowRenders = 0, environmentRenders = 0;  // raster draws that re-rendered those
         std::array<double, 64> recentMs{};
+        // The panel's frame time, held for half a second: a figure that changed every frame would be unreadable,
+        // and would make every frame's panel differ from the last (PanelCache).
+        double shownMs = 0.0, shownAt = -1.0;
     } stats_;
     double recentFrameMs() const;
 };

@@ -68,6 +68,7 @@ Viewer::Viewer(const ViewerOptions& options, ViewerState state, std::optional<Sc
         raster_ = std::make_unique<raster::RasterRenderer>(shaders);
         raster_->setPartialRedraw(true);  // a material edit redraws only the objects it changes
         imageView_ = std::make_unique<ImageView>(shaders);
+        panelCache_ = std::make_unique<PanelCache>(PanelCache::modeFromEnvironment());
         imageView_->buildAll();  // a broken shader stops the viewer before its window shows
         arrows_ = std::make_unique<ArrowOverlay>(shaders);
         reference_ = std::make_unique<ReferenceRenderer>();
