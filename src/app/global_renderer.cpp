@@ -54,7 +54,7 @@ bool GlobalRenderer::update() {
     tiles_.assign(pass->tiles);
     tiles_.upload();
     if (pass->denoised.width == width_ && pass->denoised.height == height_) {
-        denoisedSamples_ = samples_;
+        denoisedSamples_ = pass->denoisedSamples;
         denoisedImage_ = std::move(pass->denoised);
         uploadRowsFlipped(denoised_, 0, 0, width_, height_, height_, denoisedImage_.rgba.data(), flipped_);
     }

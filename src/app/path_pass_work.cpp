@@ -58,6 +58,7 @@ void PathPassWork::step(const std::atomic<bool>& cancel) {
         DenoiseSettings d;
         d.threads = threads_;
         pass.denoised = trace::denoisedImage(*render_, *guides_, d);
+        pass.denoisedSamples = pass.samples;
         denoising_ = now() - start;
         tracing_ = 0.0;
     }
@@ -66,6 +67,13 @@ void PathPassWork::step(const std::atomic<bool>& cancel) {
 
 void PathPassWork::publish(Pass pass) {
     std::lock_guard<std::mutex> lock(arrivedMutex_);
+    // A pass the window has not taken yet is replaced, but not its denoised preview when the new pass has none:
+    // on a busy machine the first pass (always denoised) could otherwise be overwritten by the second before the
+    // window saw it, and the window would show the raw estimate while it should show the preview.
+    if (arrived_ && arrived_->job == pass.job && arrived_->denoisedSamples > 0 && pass.denoisedSamples == 0) {
+        pass.denoised = std::move(arrived_->denoised);
+        pass.denoisedSamples = arrived_->denoisedSamples;
+    }
     arrived_ = std::move(pass);
 }
 

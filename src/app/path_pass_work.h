@@ -39,6 +39,7 @@ public:
         std::vector<glm::vec3> standardError;
         std::vector<uint8_t> tiles;  // tilesX × tilesY, row 0 at the top: 255 = every pixel has a sample
         ImageF denoised;             // whole passes only, and not every one (kDenoiseShare); empty otherwise
+        int denoisedSamples = 0;     // the samples per pixel `denoised` was made from (at most `samples`)
     };
 
     explicit PathPassWork(trace::MeshBvhCache& meshes) : meshes_(meshes) {}
