@@ -32,9 +32,8 @@ class TracerPool {
     this.current = null;
   }
 
-  // The Whitted reference of `scene` ({sceneJson, sceneDir, files}) at w x h. Resolves with {rgb, coverage}, the
-  // 8-bit pixels as the native render encodes them and the ids;
-  // onProgress(fraction) after each tile.
+  // The Whitted reference of `scene` ({sceneJson, sceneDir, files}) at w x h. Resolves with {rgb, coverage}: the
+  // 8-bit pixels as the native render encodes them, and the ids. onProgress(fraction) after each batch of tiles.
   reference(scene, w, h, onProgress) {
     this.stop();
     const id = this.job;
